@@ -1,0 +1,18 @@
+//! End-to-end tests of the `pounding` binary (one test binary; one module per subcommand).
+
+use std::process::Command;
+
+/// The built `pounding` binary.
+pub fn pounding() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_pounding"))
+}
+
+#[test]
+fn help_lists_subcommands() {
+    let out = pounding().arg("--help").output().unwrap();
+    assert!(out.status.success());
+    let s = String::from_utf8_lossy(&out.stdout);
+    for sub in ["lcp", "impact", "study"] {
+        assert!(s.contains(sub), "--help lacks {sub}: {s}");
+    }
+}

@@ -1,0 +1,30 @@
+//! # pounding — nonsmooth rigid-impact analysis of pounding between bridge deck segments
+//!
+//! The library follows the binding physics specification (`spec/physics.md` of the project's
+//! shared data, cited below as "spec §N"). It is organised like a paper:
+//!
+//! * [`math`] — type aliases over `nalgebra` and small planar helpers (scalar cross product, rotations).
+//! * [`lcp`] — the linear complementarity problem `w = M z + q, z ≥ 0, w ≥ 0, zᵀw = 0`, a
+//!   lexicographic Lemke solver (with fixed-size kernels for the tiny impact LCPs) and exhaustive
+//!   enumeration of complementary bases; readers/writers for the Siconos `.dat`, `LCPSET 1` and
+//!   `LCPSOL 1` formats.
+//! * [`geometry`] — annular-sector decks, their mass properties (spec §3), the S arrangement (§4) and the
+//!   impact configuration of a corner against the other deck's end face (§5).
+//! * [`contact`] — generalised force directions `w_N`, `w_T` (§6) and the Delassus matrix (§7).
+//! * [`analytic`] — the closed-form single-impact solution: stick interval `[L, U]`, modes, impulses (§9–§11).
+//! * [`impact`] — the generic multi-contact frictional impact of planar rigid bodies, solved as an LCP (§8).
+//! * [`study`] — the parametric stick/slip study of the paper (scenarios, bounds, summaries).
+//! * [`output`] — deterministic number formatting and atomic file output shared by every writer.
+//!
+//! Errors (bad input) are [`thiserror`] enums per module; numerical outcomes (ray termination,
+//! pivot limit, no impact) are *statuses* inside results, never errors and never panics.
+#![warn(missing_docs)]
+
+pub mod analytic;
+pub mod contact;
+pub mod geometry;
+pub mod impact;
+pub mod lcp;
+pub mod math;
+pub mod output;
+pub mod study;

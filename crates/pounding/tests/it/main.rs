@@ -1,0 +1,3 @@
+//! Integration tests of the `pounding` library (one test binary; one module per topic).
+
+mod common;
