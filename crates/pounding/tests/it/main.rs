@@ -1,3 +1,6 @@
 //! Integration tests of the `pounding` library (one test binary; one module per topic).
 
+mod analytic;
 mod common;
+mod contact;
+mod geometry;
