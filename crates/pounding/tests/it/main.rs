@@ -4,3 +4,4 @@ mod analytic;
 mod common;
 mod contact;
 mod geometry;
+mod lcp;
