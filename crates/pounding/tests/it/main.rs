@@ -4,4 +4,5 @@ mod analytic;
 mod common;
 mod contact;
 mod geometry;
+mod impact;
 mod lcp;
