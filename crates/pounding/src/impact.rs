@@ -672,6 +672,9 @@ pub fn solve(problem: &ImpactProblem, settings: &ImpactSettings) -> ImpactSoluti
             tt: g[3],
         };
         let s = analytic::single_impact(&gd, &laws[0], gamma_pre[0], gamma_pre[1]);
+        if !(s.normal_impulse.is_finite() && s.tangential_impulse.is_finite()) {
+            return finish(ImpactStatus::Failed, lemke_status, None, 0, ran, true);
+        }
         return finish(
             ImpactStatus::SolvedByFallback,
             lemke_status,
@@ -786,6 +789,18 @@ pub fn solve_single(
     };
     let gnp = gamma_n_pre + g.nn * ln + g.nt * lt;
     let gtp = gamma_t_pre + g.nt * ln + g.tt * lt;
+    if !(gnp.is_finite() && gtp.is_finite() && ln.is_finite() && lt.is_finite()) {
+        // non-finite input data (e.g. a NaN entry of G): nothing trustworthy to report
+        return SingleSolution {
+            status: ImpactStatus::Failed,
+            lemke_status: s.status,
+            normal_impulse: Real::NAN,
+            tangential_impulse: Real::NAN,
+            gamma_n_post: Real::NAN,
+            gamma_t_post: Real::NAN,
+            mode: ContactMode::Open,
+        };
+    }
     let n = -gamma_n_pre;
     let mode = if gtp.abs() <= analytic::STICK_TOLERANCE * n {
         ContactMode::Stick

@@ -745,3 +745,44 @@ fn lcp_modes_around_the_bounds() {
         );
     }
 }
+
+/// Non-finite data never produce a silently wrong number: the status is `failed`, numbers NaN.
+#[test]
+fn non_finite_delassus_fails_cleanly() {
+    let law = ImpactLaw::new(0.5, 0.5).unwrap();
+    let g = Delassus {
+        nn: f64::NAN,
+        nt: 0.1,
+        tt: 1.0,
+    };
+    let s = solve_single(&g, &law, -1.0, 0.3, &LemkeSettings::default());
+    assert_eq!(s.status, ImpactStatus::Failed);
+    assert!(s.normal_impulse.is_nan());
+    let s = solve_single(
+        &Delassus {
+            nn: 1.0,
+            nt: 0.1,
+            tt: 1.0,
+        },
+        &law,
+        f64::NAN,
+        0.3,
+        &LemkeSettings::default(),
+    );
+    assert_eq!(s.status, ImpactStatus::Failed);
+    let s = solve_single(
+        &Delassus {
+            nn: 1.0,
+            nt: 0.1,
+            tt: 1.0,
+        },
+        &law,
+        0.5,
+        0.3,
+        &LemkeSettings::default(),
+    );
+    assert_eq!(
+        (s.status, s.mode, s.normal_impulse),
+        (ImpactStatus::NoImpact, ContactMode::Open, 0.0)
+    );
+}
