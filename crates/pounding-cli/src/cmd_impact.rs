@@ -329,8 +329,14 @@ fn bridge_label(m: ContactMode) -> &'static str {
     }
 }
 
+/// Readable number: 7 significant digits, positional for moderate magnitudes.
 fn fmt(x: f64) -> String {
-    if x.is_finite() {
+    if x == 0.0 {
+        "0".to_string()
+    } else if x.is_finite() && (1e-3..1e6).contains(&x.abs()) {
+        let digits = (6 - x.abs().log10().floor() as i32).clamp(0, 9) as usize;
+        format!("{x:.digits$}")
+    } else if x.is_finite() {
         format!("{x:.6e}")
     } else {
         pounding::output::float_token(x)
