@@ -18,3 +18,5 @@ fn help_lists_subcommands() {
         assert!(s.contains(sub), "--help lacks {sub}: {s}");
     }
 }
+
+mod lcp;
