@@ -1,0 +1,1 @@
+//! Time-history simulation (stage 2+).
