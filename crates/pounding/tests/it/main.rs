@@ -2,3 +2,4 @@
 
 mod common;
 mod ground_motion;
+mod sim;
