@@ -48,7 +48,8 @@
 pub mod contact;
 pub mod model;
 
-use crate::geometry::{ContactCase, SArrangement};
+use crate::analytic::SlipMode;
+use crate::geometry::{ContactCase, GeometryError, SArrangement};
 use crate::ground_motion::{GroundMotion, GroundMotionError};
 use crate::lcp::{self, LcpStatus, LemkeSettings};
 use crate::math::{Real, Vector};
@@ -57,7 +58,7 @@ use model::{DeckBody, LinearSystem};
 use nalgebra::{Matrix3, Matrix6, Vector6};
 use thiserror::Error;
 
-pub use model::{Bearing, DeckMass, deck_mass};
+pub use model::Bearing;
 
 /// Bad simulation input (numerical trouble is reported in [`SimStatus`] instead).
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -75,6 +76,9 @@ pub enum SimError {
     /// Bad ground-motion input.
     #[error(transparent)]
     GroundMotion(#[from] GroundMotionError),
+    /// Invalid deck geometry (names `R1`, `beta2`, ...).
+    #[error(transparent)]
+    Geometry(#[from] GeometryError),
 }
 
 impl SimError {
@@ -378,28 +382,6 @@ impl SimSettings {
     }
 }
 
-/// Tangential outcome of one impacting contact (spec §10).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum ImpactMode {
-    /// `γ_T⁺ = 0` (within `1e-9 |γ_N⁻|`).
-    Stick,
-    /// `γ_T⁺ > 0`: each deck slides radially outward.
-    OutwardSlip,
-    /// `γ_T⁺ < 0`: each deck slides radially inward.
-    InwardSlip,
-}
-
-impl ImpactMode {
-    /// Output name: `stick`, `outward-slip`, `inward-slip`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Stick => "stick",
-            Self::OutwardSlip => "outward-slip",
-            Self::InwardSlip => "inward-slip",
-        }
-    }
-}
-
 /// One impacting contact in one impact step.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ImpactRecord {
@@ -409,8 +391,8 @@ pub struct ImpactRecord {
     pub time: Real,
     /// The contact (striking corner).
     pub contact: ContactCase,
-    /// Tangential outcome.
-    pub mode: ImpactMode,
+    /// Tangential outcome (spec §10, `|γ_T⁺| ≤ 1e-9 |γ_N⁻|` is stick).
+    pub mode: SlipMode,
     /// Pre-impact normal velocity `γ_N⁻ = w_Nᵀ u_k` (< 0, closing) \[m/s\].
     pub gamma_n_pre: Real,
     /// Pre-impact tangential velocity `γ_T⁻` (+ along τ: deck 1 relative to deck 2 toward deck 1's
@@ -494,7 +476,9 @@ pub struct SimSummary {
     pub unseating_time: Option<Real>,
     /// Which end ([`SEAT_ENDS`] index) unseated first.
     pub unseated_end: Option<usize>,
-    /// Largest penetration `max(0, −min gap)` of an active contact \[m\].
+    /// Largest penetration `max_t max(0, −min end gap)` \[m\]: the velocity-level scheme lets the
+    /// decks overlap by `O(h |γ_N⁻|)` in an impact step (the position update uses the mean of the
+    /// pre- and post-impact velocities).
     pub max_penetration: Real,
     /// `max_t |E_0 + W_in − (T + V + D_viscous + D_contact)| / max_t |E_0 + W_in|`.
     pub energy_balance_error: Real,
@@ -697,6 +681,7 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
             gmax = gmax.max(*g);
         }
         peak_close = peak_close.max(g0 - gmin);
+        max_pen = max_pen.max(-gmin);
         peak_open = peak_open.max(gmax - g0);
         peak_rot[0] = peak_rot[0].max(q[2].abs());
         peak_rot[1] = peak_rot[1].max(q[5].abs());
@@ -755,8 +740,7 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
             // W columns, Ŵ⁻¹ W, Delassus G (order N_1..N_n, T_1..T_n)
             let mut wcols = [[0.0; 6]; 4];
             for (i, a) in active.iter().take(n_act).enumerate() {
-                let (c, wn, wt) = a.as_ref().unwrap();
-                max_pen = max_pen.max(-c.gap);
+                let (_, wn, wt) = a.as_ref().unwrap();
                 wcols[i] = *wn;
                 wcols[n_act + i] = *wt;
             }
@@ -849,13 +833,7 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
                 if impacting && gam_pre[i] < -settings.impact_velocity && p[i] > 0.0 {
                     let nrm = -gam_pre[i];
                     let gt = gam_post[n + i];
-                    let mode = if gt.abs() <= 1e-9 * nrm.max(1e-300) + 1e-12 {
-                        ImpactMode::Stick
-                    } else if gt > 0.0 {
-                        ImpactMode::OutwardSlip
-                    } else {
-                        ImpactMode::InwardSlip
-                    };
+                    let mode = SlipMode::classify(gt, nrm);
                     impacts.push(ImpactRecord {
                         impact: n_impacts,
                         time: t + h,

@@ -2,7 +2,7 @@
 //! mass / stiffness / Rayleigh-damping matrices.
 
 use super::SimError;
-use crate::geometry::Deck;
+use crate::geometry::{Deck, MassProperties};
 use crate::math::{Real, Vector};
 use nalgebra::{Matrix3, Matrix6};
 
@@ -21,80 +21,24 @@ pub struct Bearing {
     pub stiffness: Real,
 }
 
-/// Mass properties of one deck as used by the simulator (spec §3).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct DeckMass {
-    /// Mass `m = ρ t β R W` \[kg\].
-    pub mass: Real,
-    /// Polar moment about the centroid `I = m (R² + W²/4 − r_c²)` \[kg m²\].
-    pub inertia: Real,
-    /// `X_m = r_c cos(β/2)` \[m\].
-    pub x_m: Real,
-    /// `Y_m = r_c sin(β/2)` \[m\].
-    pub y_m: Real,
-}
-
-/// Mass properties (spec §3):
-/// `r_c = (R + W²/(12R)) sin(β/2)/(β/2)`, `X_m = r_c cos(β/2)`, `Y_m = r_c sin(β/2)`,
-/// `m = ρ t β R W`, `I = m (R² + W²/4 − r_c²)`.
-pub fn deck_mass(deck: &Deck) -> DeckMass {
-    let (r, b, w) = (deck.radius, deck.angle, deck.width);
-    let rc = (r + w * w / (12.0 * r)) * (b / 2.0).sin() / (b / 2.0);
-    let mass = deck.density * deck.thickness * b * r * w;
-    DeckMass {
-        mass,
-        inertia: mass * (r * r + w * w / 4.0 - rc * rc),
-        x_m: rc * (b / 2.0).cos(),
-        y_m: rc * (b / 2.0).sin(),
-    }
-}
-
-/// Checks one deck's parameters; `j` (1 or 2) suffixes the names (`R1`, `beta2`, ...).
+/// Checks one deck's parameters via [`Deck::new`]; `j` (1 or 2) suffixes the names (`R1`, `beta2`, ...).
 pub(crate) fn validate_deck(deck: &Deck, j: usize) -> Result<(), SimError> {
-    let chk = |name: String, v: Real, ok: bool, reason: &str| {
-        if ok && v.is_finite() {
-            Ok(())
-        } else {
-            Err(SimError::invalid(name, v, reason))
-        }
-    };
-    chk(
-        format!("width (deck {j})"),
-        deck.width,
-        deck.width > 0.0,
-        "must be > 0",
-    )?;
-    chk(
-        format!("R{j}"),
+    Deck::new(
         deck.radius,
-        deck.radius > deck.width / 2.0,
-        "centre-line radius must exceed W/2",
-    )?;
-    chk(
-        format!("beta{j}"),
         deck.angle,
-        deck.angle > 0.0 && deck.angle < 2.0 * std::f64::consts::PI,
-        "curve angle must lie in (0, 360°)",
-    )?;
-    chk(
-        format!("thickness (deck {j})"),
+        deck.width,
         deck.thickness,
-        deck.thickness > 0.0,
-        "must be > 0",
-    )?;
-    chk(
-        format!("density (deck {j})"),
         deck.density,
-        deck.density > 0.0,
-        "must be > 0",
     )
+    .map_err(|e| SimError::Geometry(e.for_deck(j)))?;
+    Ok(())
 }
 
 /// A deck's body-fixed points in the reference pose, global frame of spec §4.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DeckBody {
     /// Mass properties.
-    pub mass: DeckMass,
+    pub mass: MassProperties,
     /// Reference centroid `G⁰` (global).
     pub centroid: Vector,
     /// Reference face midpoint `M⁰` (global): `(0, g)` for deck 1, `(0, 0)` for deck 2.
@@ -117,7 +61,7 @@ impl DeckBody {
     /// deck 1 points `M_1 + (R_1 − r cos φ, r sin φ)`, deck 2 points `M_2 + (−R_2 + r cos φ, −r sin φ)`,
     /// `r ∈ [R − W/2, R + W/2]`, `φ ∈ [0, β]`.
     pub fn new(deck: &Deck, j: usize, gap: Real) -> Self {
-        let mass = deck_mass(deck);
+        let mass = deck.mass_properties();
         let (r, w, b) = (deck.radius, deck.width, deck.angle);
         let s = if j == 1 { 1.0 } else { -1.0 };
         let face_mid = if j == 1 {
@@ -168,7 +112,7 @@ pub fn bearing_stiffness(body: &DeckBody, bearings: &[Bearing]) -> Matrix3<Real>
 
 /// Natural circular frequencies `ω_1 ≤ ω_2 ≤ ω_3` \[rad/s\] of `K φ = ω² M φ` for one deck
 /// (`M = diag(m, m, I)`).
-pub fn deck_frequencies(mass: &DeckMass, k: &Matrix3<Real>) -> [Real; 3] {
+pub fn deck_frequencies(mass: &MassProperties, k: &Matrix3<Real>) -> [Real; 3] {
     let d = nalgebra::Vector3::new(
         mass.mass.sqrt().recip(),
         mass.mass.sqrt().recip(),

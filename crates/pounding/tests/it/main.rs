@@ -1,5 +1,9 @@
 //! Integration tests of the `pounding` library (one test binary; one module per topic).
 
+mod analytic;
 mod common;
+mod contact;
+mod geometry;
 mod ground_motion;
+mod lcp;
 mod sim;

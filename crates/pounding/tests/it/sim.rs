@@ -229,6 +229,9 @@ fn bad_input_is_an_error_naming_the_parameter() {
     let ok = SimProblem::at_rest(SimModel::default_bridge(), gm.clone());
     let name = |e: SimError| match e {
         SimError::InvalidParameter { name, .. } => name,
+        SimError::Geometry(pounding::geometry::GeometryError::InvalidParameter {
+            name, ..
+        }) => name,
         other => panic!("{other:?}"),
     };
     let s = SimSettings {
@@ -291,8 +294,7 @@ fn bad_input_is_an_error_naming_the_parameter() {
     let _ = Record::uniform("x", 0.01, vec![0.0]).unwrap();
 }
 
-#[allow(dead_code)]
-fn deck(r: f64, beta_deg: f64) -> Deck {
+fn unit_deck(r: f64, beta_deg: f64) -> Deck {
     Deck {
         radius: r,
         angle: beta_deg.to_radians(),
@@ -302,10 +304,245 @@ fn deck(r: f64, beta_deg: f64) -> Deck {
     }
 }
 
-#[allow(dead_code)]
-fn arrangement(r1: f64, b1: f64, r2: f64, b2: f64) -> SArrangement {
-    SArrangement {
-        deck1: deck(r1, b1),
-        deck2: deck(r2, b2),
+/// Free decks (no bearings, no damping) in the S arrangement, ρt = 1.
+fn free_model(r1: f64, b1: f64, r2: f64, b2: f64, gap: f64, mu: f64, eps: f64) -> SimModel {
+    let arr = SArrangement {
+        deck1: unit_deck(r1, b1),
+        deck2: unit_deck(r2, b2),
+    };
+    SimModel::with_corner_bearings(arr, gap, 0.0, 0.0, 0.0, mu, eps, 1.0)
+}
+
+/// `q` of the joint-anchored pose (spec §5.2): deck j turned by θ_j about its face midpoint.
+fn joint_anchored_q(arr: &SArrangement, th1: f64, th2: f64) -> [f64; 6] {
+    let p1 = arr.deck1.mass_properties();
+    let p2 = arr.deck2.mass_properties();
+    let g1 = nalgebra::Vector2::new(arr.deck1.radius - p1.x_m, p1.y_m); // G⁰ − M⁰ (spec §4)
+    let g2 = nalgebra::Vector2::new(-arr.deck2.radius + p2.x_m, -p2.y_m);
+    let d1 = pounding::math::rotate(&g1, th1) - g1;
+    let d2 = pounding::math::rotate(&g2, th2) - g2;
+    [d1.x, d1.y, th1, d2.x, d2.y, th2]
+}
+
+/// Isolated oblique impact: deck 1 (rotated −5°) flies with velocity (vx, −1) m/s into the
+/// resting deck 2 (rotated 2°); no bearings, no ground motion. Reference: the single-impact law of
+/// the `impact` work item (geometry::configuration, contact::force_directions, analytic::single_impact)
+/// at the exact contact configuration. Returns (relative error of u⁺, sim mode, reference mode).
+fn isolated_impact(vx: f64, dt: f64) -> (f64, String, String, f64) {
+    use pounding::analytic::{ImpactLaw, single_impact};
+    use pounding::contact::{delassus_with, force_directions};
+    use pounding::geometry::{ContactCase, SigmaMode};
+    let (th1, th2) = ((-5f64).to_radians(), 2f64.to_radians());
+    let (mu, eps) = (0.5, 0.5);
+    let arr = SArrangement {
+        deck1: unit_deck(100.0, 60.0),
+        deck2: unit_deck(100.0, 60.0),
+    };
+    let cfg = arr
+        .configuration(ContactCase::Deck1Inner, th1, th2, SigmaMode::Exact)
+        .unwrap();
+    assert!(cfg.first_contact);
+    let gap = cfg.h + 31.0 / 3.0 * 1e-3; // M_1 starts ~1 cm above the contact position
+    let model = free_model(100.0, 60.0, 100.0, 60.0, gap, mu, eps);
+    let v = nalgebra::Vector2::new(vx, -1.0);
+    // Start deck 1 displaced by −v t* so that at t* its face midpoint is exactly at (0, h): the
+    // contact configuration is then the spec's joint-anchored one (spec §5.2, §15 table).
+    // t* = (31/3) ms lies 1/3 of a step after a grid point for every dt = 1 ms / 4^k.
+    let t_star = 31.0 / 3.0 * 1e-3;
+    let mut q0 = joint_anchored_q(&arr, th1, th2);
+    q0[0] -= vx * t_star;
+    let u0 = [v.x, v.y, 0.0, 0.0, 0.0, 0.0];
+    let w = force_directions(&arr, &cfg);
+    let (p1, p2) = (arr.deck1.mass_properties(), arr.deck2.mass_properties());
+    let g = delassus_with(&p1, &p2, &w);
+    // spec §15, first row (R = 100, β = 60°, θ = (−5°, 2°), deck1-inner, ρt = 1)
+    assert!((g.nn / 2.784789492e-03 - 1.0).abs() < 1e-8);
+    assert!((g.nt / 2.022511840e-03 - 1.0).abs() < 1e-8);
+    assert!((g.tt / 6.619671336e-03 - 1.0).abs() < 1e-8);
+    let gn = w.gamma_n(&u0);
+    let gt = w.gamma_t(&u0);
+    let law = ImpactLaw::new(mu, eps).unwrap();
+    let refi = single_impact(&g, &law, gn, gt);
+    let minv = [
+        1.0 / p1.mass,
+        1.0 / p1.mass,
+        1.0 / p1.inertia,
+        1.0 / p2.mass,
+        1.0 / p2.mass,
+        1.0 / p2.inertia,
+    ];
+    let u_ref: Vec<f64> = (0..6)
+        .map(|i| {
+            u0[i] + minv[i] * (w.w_n[i] * refi.normal_impulse + w.w_t[i] * refi.tangential_impulse)
+        })
+        .collect();
+    let problem = SimProblem {
+        model,
+        ground: GroundMotion::none(),
+        q0,
+        u0,
+    };
+    let settings = SimSettings {
+        dt,
+        duration: Some(t_star + 0.003),
+        history_stride: 1000000,
+        ..SimSettings::default()
+    };
+    let sol = simulate(&problem, &settings).unwrap();
+    assert_eq!(sol.status, SimStatus::Completed);
+    assert_eq!(
+        sol.summary.impacts, 1,
+        "vx = {vx}, dt = {dt}: {:?}",
+        sol.impacts
+    );
+    assert_eq!(sol.impacts.len(), 1);
+    let imp = &sol.impacts[0];
+    assert_eq!(imp.contact, ContactCase::Deck1Inner);
+    assert!(
+        (imp.time - t_star).abs() <= dt * 1.000001,
+        "{} vs {t_star}",
+        imp.time
+    );
+    let u_end = sol.history.u.last().unwrap();
+    // scale: per-component velocity scale (translations ~|v|, rotations ~|v|/k)
+    let k = (p1.inertia / p1.mass).sqrt();
+    let scale = [1.0, 1.0, 1.0 / k, 1.0, 1.0, 1.0 / k];
+    let err = (0..6)
+        .map(|i| (u_end[i] - u_ref[i]).abs() / (scale[i] * v.norm()))
+        .fold(0.0, f64::max);
+    let ln_err = (imp.impulse_n - refi.normal_impulse).abs() / refi.normal_impulse;
+    // contact dissipation equals the kinetic-energy loss of the impact (no other forces)
+    let dt_ref = pounding::analytic::energy_change(gn, gt, &refi);
+    let e = sol.summary.final_energy;
+    assert!(
+        (e.contact + dt_ref).abs() <= 0.01 * dt_ref.abs() + 1e-12,
+        "{} vs {}",
+        e.contact,
+        -dt_ref
+    );
+    assert!(
+        sol.summary.energy_balance_error < 1e-12,
+        "{}",
+        sol.summary.energy_balance_error
+    );
+    (
+        err.max(ln_err),
+        imp.mode.name().to_string(),
+        refi.mode.name().to_string(),
+        refi.normal_impulse,
+    )
+}
+
+#[test]
+fn isolated_impact_converges_to_the_single_impact_law() {
+    let mut modes = Vec::new();
+    for vx in [-2.5, 0.3, 3.5] {
+        let errs: Vec<f64> = [1e-3, 2.5e-4, 6.25e-5]
+            .iter()
+            .map(|&dt| {
+                let (e, m_sim, m_ref, _) = isolated_impact(vx, dt);
+                assert_eq!(m_sim, m_ref, "vx = {vx}, dt = {dt}");
+                e
+            })
+            .collect();
+        eprintln!("vx = {vx}: errors {errs:?}");
+        // first order in dt (event location): dividing dt by 4 divides the error by ~4
+        for w in errs.windows(2) {
+            assert!((3.5..4.5).contains(&(w[0] / w[1])), "{errs:?}");
+        }
+        assert!(errs[2] < 2e-4, "{errs:?}");
+        modes.push(isolated_impact(vx, 1e-4).2);
     }
+    // the three cases exercise the three modes (spec §15: L = −1.09, U = 2.11 for μ = 0.5)
+    assert_eq!(modes, ["slip-outward", "stick", "slip-inward"]);
+}
+
+#[test]
+fn parallel_faces_double_impact_obeys_newton_at_both_ends() {
+    // θ1 = θ2 = 0: both joint ends touch at once (spec §16, singular Delassus), frictional.
+    let model = free_model(100.0, 60.0, 200.0, 90.0, 0.01, 0.5, 0.5);
+    let v = 2.0;
+    let problem = SimProblem {
+        model: model.clone(),
+        ground: GroundMotion::none(),
+        q0: [0.0; 6],
+        u0: [0.0, -v, 0.0, 0.0, 0.0, 0.0],
+    };
+    let settings = SimSettings {
+        dt: 1e-4,
+        duration: Some(0.0075),
+        history_stride: 1,
+        ..SimSettings::default()
+    };
+    let sol = simulate(&problem, &settings).unwrap();
+    assert_eq!(sol.status, SimStatus::Completed, "{sol:?}");
+    assert_eq!(sol.summary.impacts, 1);
+    assert_eq!(sol.impacts.len(), 2, "{:?}", sol.impacts);
+    for imp in &sol.impacts {
+        assert!(imp.impulse_n > 0.0);
+        assert!(
+            (imp.gamma_n_post + 0.5 * imp.gamma_n_pre).abs() < 1e-9,
+            "{imp:?}"
+        );
+    }
+    // linear momentum along y is conserved (the impulses are internal)
+    let sys = model.linear_system().unwrap();
+    let u = sol.history.u.last().unwrap();
+    let p = sys.mass[(1, 1)] * u[1] + sys.mass[(4, 4)] * u[4];
+    assert!((p - sys.mass[(1, 1)] * -v).abs() < 1e-9 * sys.mass[(1, 1)] * v);
+    assert!(sol.summary.energy_balance_error < 1e-12);
+    assert!(sol.summary.final_energy.contact > 0.0);
+}
+
+#[test]
+fn default_scenario_runs_with_pounding_and_balanced_energy() {
+    let problem = SimProblem::at_rest(SimModel::default_bridge(), el_centro_1940());
+    let settings = SimSettings {
+        history_stride: 10,
+        ..SimSettings::default()
+    };
+    let sol = simulate(&problem, &settings).unwrap();
+    let s = &sol.summary;
+    eprintln!(
+        "steps {} impacts {} rows {} lcp {} enum {} fail {} closing {} opening {} rot {:?} slip {} seat {:?} unseated {} at {:?} pen {} ebal {:e} final {:?} maxin {}",
+        sol.steps,
+        s.impacts,
+        s.impacting_contacts,
+        sol.lcp_solves,
+        sol.lcp_enumeration_fallbacks,
+        sol.lcp_failures,
+        s.peak_joint_closing,
+        s.peak_joint_opening,
+        s.peak_rotation,
+        s.peak_slip,
+        s.peak_seat_by_end,
+        s.unseated,
+        s.unseating_time,
+        s.max_penetration,
+        s.energy_balance_error,
+        s.final_energy,
+        s.max_input_energy
+    );
+    assert_eq!(sol.steps, 53710);
+    assert_eq!(sol.status, SimStatus::Completed);
+    assert!(s.impacts > 0, "the default scenario pounds");
+    assert!(s.energy_balance_error < 1e-3, "{}", s.energy_balance_error);
+    // closing exceeds g only by the O(h |γ_N⁻|) penetration of the velocity-level time stepping
+    let vmax = sol
+        .impacts
+        .iter()
+        .map(|i| -i.gamma_n_pre)
+        .fold(0.0, f64::max);
+    assert!(
+        s.max_penetration <= 1e-3 * vmax,
+        "{} vs {vmax}",
+        s.max_penetration
+    );
+    assert!((s.peak_joint_closing - 0.05 - s.max_penetration).abs() < 1e-12);
+    assert!(
+        s.peak_joint_closing > 0.05 - 1e-3,
+        "contact means closing ≈ g"
+    );
+    // all impacts dissipate here (ε = 0.5, μ = 0.5: spec §11, no gain possible on the paper grid)
+    assert!(s.final_energy.contact > 0.0);
 }
