@@ -687,7 +687,7 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
         peak_rot[1] = peak_rot[1].max(q[5].abs());
         let m1 = pose.place(&bodies, 0, &bodies[0].face_mid) - bodies[0].face_mid;
         let m2 = pose.place(&bodies, 1, &bodies[1].face_mid) - bodies[1].face_mid;
-        let slip = -(m1.x - m2.x);
+        let slip = (m2.x - m1.x) + 0.0; // `+ 0.0` turns −0 into +0
         peak_slip = peak_slip.max(slip.abs());
         for (e, (j, pts, n_in)) in seat_pts.iter().enumerate() {
             let s = pts
