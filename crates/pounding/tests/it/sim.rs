@@ -546,3 +546,90 @@ fn default_scenario_runs_with_pounding_and_balanced_energy() {
     // all impacts dissipate here (ε = 0.5, μ = 0.5: spec §11, no gain possible on the paper grid)
     assert!(s.final_energy.contact > 0.0);
 }
+
+#[test]
+fn unseating_time_of_a_deck_pulling_away_from_the_joint() {
+    // Deck 1 translates away from the joint (+y) at v, no bearings: its joint end slides off its
+    // seat (inward normal +y) when v t = seat length; its far end moves along −(sin β, cos β)·v ŷ
+    // < 0 (onto its seat); deck 2 is at rest.
+    let mut model = free_model(100.0, 60.0, 100.0, 60.0, 0.05, 0.5, 0.5);
+    model.seat_length = 0.0123;
+    let v = 0.5;
+    let p = SimProblem {
+        model,
+        ground: GroundMotion::none(),
+        q0: [0.0; 6],
+        u0: [0.0, v, 0.0, 0.0, 0.0, 0.0],
+    };
+    let s = SimSettings {
+        dt: 1e-4,
+        duration: Some(0.05),
+        ..SimSettings::default()
+    };
+    let sol = simulate(&p, &s).unwrap();
+    let sm = &sol.summary;
+    assert!(sm.unseated);
+    assert_eq!(sm.unseated_end, Some(0), "deck1-joint");
+    let t = sm.unseating_time.unwrap();
+    assert!(
+        t >= 0.0123 / v - 1e-9 && t <= 0.0123 / v + 1e-4 + 1e-9,
+        "{t}"
+    );
+    assert!((sm.peak_seat_by_end[0] - v * 0.05).abs() < 1e-12);
+    assert!(
+        (sm.peak_seat_by_end[1] - 0.0).abs() < 1e-15,
+        "far end moves onto its seat"
+    );
+    assert_eq!(sm.peak_seat_by_end[2], 0.0);
+    assert!((sm.peak_joint_opening - v * 0.05).abs() < 1e-12);
+    assert_eq!(sm.impacts, 0);
+}
+
+#[test]
+fn energy_terms_agree_with_independent_quadrature_of_the_history() {
+    // W_in = ∫ −(M r a_g)·u dt and D_viscous = ∫ uᵀ C u dt by the trapezoidal rule over the
+    // full-resolution history, T and V from u and q: independent of the stepper's bookkeeping.
+    let problem = SimProblem::at_rest(SimModel::default_bridge(), el_centro_1940());
+    let sol = simulate(&problem, &SimSettings::default()).unwrap();
+    let sys = problem.model.linear_system().unwrap();
+    let h = &sol.history;
+    let n = h.t.len();
+    assert_eq!(n, sol.steps + 1);
+    let power_in = |i: usize| {
+        let a = problem.ground.accel(h.t[i]);
+        let u = &h.u[i];
+        -(sys.mass[(0, 0)] * (a.x * u[0] + a.y * u[1])
+            + sys.mass[(3, 3)] * (a.x * u[3] + a.y * u[4]))
+    };
+    let power_visc = |i: usize| {
+        let u = nalgebra::Vector6::from(h.u[i]);
+        u.dot(&(sys.damping * u))
+    };
+    let (mut w_in, mut d_v) = (0.0, 0.0);
+    for i in 0..n - 1 {
+        let dt = h.t[i + 1] - h.t[i];
+        w_in += 0.5 * dt * (power_in(i) + power_in(i + 1));
+        d_v += 0.5 * dt * (power_visc(i) + power_visc(i + 1));
+    }
+    let e = sol.summary.final_energy;
+    let u = nalgebra::Vector6::from(*h.u.last().unwrap());
+    let q = nalgebra::Vector6::from(*h.q.last().unwrap());
+    assert!((0.5 * u.dot(&(sys.mass * u)) - e.kinetic).abs() < 1e-9 * e.input);
+    assert!((0.5 * q.dot(&(sys.stiffness * q)) - e.potential).abs() < 1e-9 * e.input);
+    eprintln!("W_in {} vs {w_in}; D_v {} vs {d_v}", e.input, e.viscous);
+    assert!(
+        (w_in - e.input).abs() < 1e-3 * e.input,
+        "{w_in} vs {}",
+        e.input
+    );
+    assert!(
+        (d_v - e.viscous).abs() < 1e-3 * e.viscous,
+        "{d_v} vs {}",
+        e.viscous
+    );
+    // contact dissipation = the sum of the per-contact values in the impact list (no sustained
+    // contact in this run: every LCP step is an impact)
+    assert_eq!(sol.lcp_solves, sol.summary.impacts);
+    let dc: f64 = sol.impacts.iter().map(|r| r.energy_dissipated).sum();
+    assert!((dc - e.contact).abs() < 1e-9 * e.contact);
+}
