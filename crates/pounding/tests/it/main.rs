@@ -5,5 +5,6 @@ mod common;
 mod contact;
 mod geometry;
 mod ground_motion;
+mod impact;
 mod lcp;
 mod sim;
