@@ -18,4 +18,6 @@ fn help_lists_subcommands() {
         assert!(s.contains(sub), "--help lacks {sub}: {s}");
     }
 }
+
+mod lcp;
 mod simulate;
