@@ -30,9 +30,11 @@
 //! `g_i(q_k) + h γ_N,i(u_k) ≤ 0`. For the active set the impulses `P` solve the LCP of spec §8 with
 //! the Delassus matrix `G = Wᵀ Ŵ⁻¹ W`, `γ⁻ := Wᵀ u_k` in the Newton law and `γ_free := Wᵀ u_free`:
 //! ```text
-//! b = ( γ_N,free + ε γ_N⁻ ,  γ_T,free ,  0 )
-//! ξ_N = γ_N,{k+1} + ε γ_N⁻ ≥ 0 ⊥ P_N ≥ 0,   Coulomb (ε_T = 0) on γ_T,{k+1}
+//! b = ( γ_N,free + ε min(γ_N⁻, 0) ,  γ_T,free ,  0 )
+//! ξ_N = γ_N,{k+1} + ε min(γ_N⁻, 0) ≥ 0 ⊥ P_N ≥ 0,   Coulomb (ε_T = 0) on γ_T,{k+1}
 //! ```
+//! (Restitution acts only on an approaching contact; an active but receding contact — possible
+//! after a small overlap — must merely not start approaching, as in [`crate::impact`].)
 //! For an isolated impact (`h → 0`, `γ_free → γ⁻`, `Ŵ → M`) this is exactly the single-impact LCP
 //! of spec §8. The smooth part is the trapezoidal rule (θ = ½): second order, A-stable, no numerical
 //! damping; with impacts the scheme is first order in the event time.
@@ -775,7 +777,7 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
                 a[n + i][2 * n + i] = 1.0;
                 a[2 * n + i][i] = 2.0 * mu;
                 a[2 * n + i][n + i] = -1.0;
-                b[i] = gam_free[i] + eps * gam_pre[i];
+                b[i] = gam_free[i] + eps * gam_pre[i].min(0.0);
                 b[n + i] = gam_free[n + i];
             }
             let (mut z, ok, any) = solve_contact_lcp(n, &a, &b, &settings.lemke);

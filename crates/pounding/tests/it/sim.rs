@@ -492,6 +492,67 @@ fn parallel_faces_double_impact_obeys_newton_at_both_ends() {
     assert!((p - sys.mass[(1, 1)] * -v).abs() < 1e-9 * sys.mass[(1, 1)] * v);
     assert!(sol.summary.energy_balance_error < 1e-12);
     assert!(sol.summary.final_energy.contact > 0.0);
+    // Reference: the generic multi-contact impact solver (`pounding impact --problem`), two bodies
+    // touching at both joint corners (±W/2, 0), normal +y into deck 1.
+    use pounding::impact::{ContactSpec, ImpactProblem, ImpactSettings, RigidBody, solve};
+    let arr = model.arrangement;
+    let (p1, p2) = (arr.deck1.mass_properties(), arr.deck2.mass_properties());
+    let v2 = |x: f64, y: f64| nalgebra::Vector2::new(x, y);
+    let bodies = vec![
+        RigidBody {
+            name: "deck1".into(),
+            mass: p1.mass,
+            inertia: p1.inertia,
+            position: v2(arr.deck1.radius - p1.x_m, p1.y_m),
+            velocity: v2(0.0, -v),
+            omega: 0.0,
+        },
+        RigidBody {
+            name: "deck2".into(),
+            mass: p2.mass,
+            inertia: p2.inertia,
+            position: v2(-arr.deck2.radius + p2.x_m, -p2.y_m),
+            velocity: v2(0.0, 0.0),
+            omega: 0.0,
+        },
+    ];
+    let contacts = [5.0, -5.0]
+        .map(|x| ContactSpec {
+            body_a: "deck1".into(),
+            body_b: Some("deck2".into()),
+            point: v2(x, 0.0),
+            normal: v2(0.0, 1.0),
+            mu: 0.5,
+            restitution: 0.5,
+        })
+        .to_vec();
+    let r = solve(
+        &ImpactProblem::new(bodies, contacts).unwrap(),
+        &ImpactSettings::default(),
+    );
+    assert!(r.post_velocity_unique);
+    let u_ref = [
+        r.bodies[0].velocity.x,
+        r.bodies[0].velocity.y,
+        r.bodies[0].omega,
+        r.bodies[1].velocity.x,
+        r.bodies[1].velocity.y,
+        r.bodies[1].omega,
+    ];
+    let k = (p1.inertia / p1.mass).sqrt();
+    for i in 0..6 {
+        let scale = if i % 3 == 2 { v / k } else { v };
+        assert!(
+            (u[i] - u_ref[i]).abs() < 1e-4 * scale,
+            "u[{i}] = {} vs {}",
+            u[i],
+            u_ref[i]
+        );
+    }
+    assert!(
+        u_ref[2].abs() > 1e-3 * v / k,
+        "the curved decks turn after a straight impact"
+    );
 }
 
 #[test]
@@ -632,4 +693,74 @@ fn energy_terms_agree_with_independent_quadrature_of_the_history() {
     assert_eq!(sol.lcp_solves, sol.summary.impacts);
     let dc: f64 = sol.impacts.iter().map(|r| r.energy_dissipated).sum();
     assert!((dc - e.contact).abs() < 1e-9 * e.contact);
+}
+
+#[test]
+fn plastic_impact_then_sustained_contact_stays_closed_without_drift() {
+    // ε = 0, parallel faces (two contacts with a singular Delassus matrix every step), deck 2
+    // four times stiffer than deck 1: after the plastic impact deck 2's bearings push deck 1, so
+    // the joint stays closed for many steps (sustained contact, not impacts).
+    let arr = SArrangement {
+        deck1: unit_deck(100.0, 60.0),
+        deck2: unit_deck(100.0, 60.0),
+    };
+    let m = arr.deck1.mass_properties().mass;
+    let k1 = m * 4.0 * std::f64::consts::PI.powi(2) / 4.0; // T = 1 s with 4 bearings
+    let model = SimModel::with_corner_bearings(arr, 0.01, k1, 4.0 * k1, 0.0, 0.5, 0.0, 1.0);
+    let v = 0.2;
+    let p = SimProblem {
+        model,
+        ground: GroundMotion::none(),
+        q0: [0.0; 6],
+        u0: [0.0, -v, 0.0, 0.0, 0.0, 0.0],
+    };
+    let dt = 1e-3;
+    let s = SimSettings {
+        dt,
+        duration: Some(1.0),
+        ..SimSettings::default()
+    };
+    let sol = simulate(&p, &s).unwrap();
+    let sm = &sol.summary;
+    assert_eq!(sol.status, SimStatus::Completed);
+    assert_eq!(sol.lcp_failures, 0);
+    // the first impact closes both ends at once; the curved decks then rock (a straight impact
+    // turns them), so a few smaller impacts follow
+    assert!(
+        sol.impacts.len() >= 2 && sol.impacts[1].impact == 1,
+        "{:?}",
+        sol.impacts
+    );
+    assert!(
+        sol.lcp_solves > sm.impacts + 50,
+        "sustained contact: {} LCP steps",
+        sol.lcp_solves
+    );
+    let vmax = sol
+        .impacts
+        .iter()
+        .map(|i| -i.gamma_n_pre)
+        .fold(0.0, f64::max);
+    for imp in &sol.impacts {
+        assert!(
+            imp.gamma_n_post.abs() < 1e-9 * v,
+            "plastic: γ_N⁺ = 0, got {}",
+            imp.gamma_n_post
+        );
+    }
+    // no drift into the other deck while in contact: overlap bounded by the impact step's h v / 2
+    assert!(
+        sm.max_penetration <= 0.5 * dt * vmax + 1e-9,
+        "{} vs {vmax}",
+        sm.max_penetration
+    );
+    let closed = sol
+        .history
+        .end_gaps
+        .iter()
+        .filter(|g| g[0].min(g[1]) < 1e-6)
+        .count();
+    assert!(closed > 50, "joint closed during {closed} steps");
+    assert!(sm.energy_balance_error < 1e-12);
+    assert!(sm.final_energy.contact > 0.0);
 }
