@@ -5,7 +5,6 @@
 //! `summary.json`, `timing.json` and PNG plots into the output directory. Every input is validated
 //! before anything is written.
 
-use crate::sim_plots;
 use anyhow::{Context, Result, anyhow, bail};
 use pounding::geometry::{ContactCase, Deck, SArrangement};
 use pounding::ground_motion::{
@@ -21,6 +20,9 @@ use serde_json::json;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
+
+#[path = "sim_plots.rs"]
+mod sim_plots;
 
 /// Arguments of `pounding simulate`.
 #[derive(clap::Args)]

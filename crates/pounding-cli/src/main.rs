@@ -6,7 +6,6 @@ use std::process::ExitCode;
 mod cmd_impact;
 mod cmd_lcp;
 mod cmd_simulate;
-mod sim_plots;
 mod cmd_study;
 
 /// Nonsmooth rigid-impact analysis of pounding between bridge deck segments.
