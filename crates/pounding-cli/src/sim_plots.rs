@@ -4,7 +4,8 @@
 //! * `rotations.png` — plan rotations θ1, θ2;
 //! * `joint_gap.png` — the joint gap at both ends of the joint, with the impacts marked;
 //! * `impulses.png` — normal and tangential impulse of every impacting contact, by mode;
-//! * `energy.png` — the energy balance (input, stored, dissipated).
+//! * `energy.png` — the energy balance (input, stored, dissipated);
+//! * `layout.png` — plan view of the two decks, bearings, joint and axes (reference pose).
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -233,6 +234,8 @@ pub fn write_all(out: &Path, problem: &SimProblem, sol: &SimSolution) -> R {
         Ok(())
     })?;
 
+    save(out, "layout.png", (1000, 900), |root| layout(root, problem))?;
+
     save(out, "rotations.png", (1400, 500), |root| {
         line_panel(
             root,
@@ -395,5 +398,134 @@ pub fn write_all(out: &Path, problem: &SimProblem, sol: &SimSolution) -> R {
             SeriesLabelPosition::UpperLeft,
         )
     })?;
+    Ok(())
+}
+
+/// Plan view of the reference pose (spec §4): deck outlines, bearings, joint, axes.
+fn layout<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, problem: &SimProblem) -> R {
+    let m = &problem.model;
+    let g = m.gap;
+    let outline = |j: usize| -> Vec<(Real, Real)> {
+        let d = if j == 1 {
+            &m.arrangement.deck1
+        } else {
+            &m.arrangement.deck2
+        };
+        let s = if j == 1 { 1.0 } else { -1.0 };
+        let off = if j == 1 { g } else { 0.0 };
+        let pt = |r: Real, phi: Real| (s * (d.radius - r * phi.cos()), off + s * r * phi.sin());
+        let (ri, ro) = (d.radius - d.width / 2.0, d.radius + d.width / 2.0);
+        let n = 120;
+        let mut v: Vec<(Real, Real)> = (0..=n)
+            .map(|k| pt(ri, d.angle * k as Real / n as Real))
+            .collect();
+        v.extend(
+            (0..=n)
+                .rev()
+                .map(|k| pt(ro, d.angle * k as Real / n as Real)),
+        );
+        v.push(v[0]);
+        v
+    };
+    let (o1, o2) = (outline(1), outline(2));
+    let (mut lo_x, mut hi_x, mut lo_y, mut hi_y) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    for &(x, y) in o1.iter().chain(&o2) {
+        lo_x = lo_x.min(x);
+        hi_x = hi_x.max(x);
+        lo_y = lo_y.min(y);
+        hi_y = hi_y.max(y);
+    }
+    // equal scales: widen the smaller range to the drawing area's aspect ratio
+    let (w, h) = root.dim_in_pixel();
+    let pad = 0.08 * (hi_x - lo_x).max(hi_y - lo_y);
+    let (cx, cy) = ((lo_x + hi_x) / 2.0, (lo_y + hi_y) / 2.0);
+    let mut half_x = (hi_x - lo_x) / 2.0 + pad;
+    let mut half_y = (hi_y - lo_y) / 2.0 + pad;
+    let aspect = (w as Real - 80.0) / (h as Real - 100.0);
+    if half_x / half_y < aspect {
+        half_x = half_y * aspect;
+    } else {
+        half_y = half_x / aspect;
+    }
+    let mut chart = ChartBuilder::on(root)
+        .caption(
+            format!(
+                "Plan view (reference pose): joint opening g = {g} m at y = 0, {} + {} bearings",
+                m.bearings1.len(),
+                m.bearings2.len()
+            ),
+            (FAMILY, 20),
+        )
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(60)
+        .build_cartesian_2d((cx - half_x)..(cx + half_x), (cy - half_y)..(cy + half_y))
+        .map_err(e)?;
+    chart
+        .configure_mesh()
+        .x_desc("x [m] (along the joint)")
+        .y_desc("y [m] (normal to the joint, into deck 1)")
+        .label_style((FAMILY, 14))
+        .axis_desc_style((FAMILY, 15))
+        .light_line_style(RGBColor(240, 240, 240))
+        .draw()
+        .map_err(e)?;
+    for (o, c, name) in [(&o1, BLUE, "deck 1"), (&o2, RED, "deck 2")] {
+        chart
+            .draw_series(std::iter::once(Polygon::new(o.clone(), c.mix(0.15))))
+            .map_err(e)?;
+        chart
+            .draw_series(LineSeries::new(o.iter().copied(), c.stroke_width(2)))
+            .map_err(e)?
+            .label(name)
+            .legend(move |(x, y)| {
+                Rectangle::new([(x, y - 5), (x + 20, y + 5)], c.mix(0.5).filled())
+            });
+    }
+    let bearings: Vec<(Real, Real)> = m
+        .bearings1
+        .iter()
+        .map(|b| (b.point.x, b.point.y + g))
+        .chain(m.bearings2.iter().map(|b| (b.point.x, b.point.y)))
+        .collect();
+    chart
+        .draw_series(
+            bearings
+                .iter()
+                .map(|&p| TriangleMarker::new(p, 8, BLACK.filled())),
+        )
+        .map_err(e)?
+        .label("bearing (seat)")
+        .legend(|(x, y)| TriangleMarker::new((x + 10, y), 6, BLACK.filled()));
+    let w2 = m.arrangement.deck1.width / 2.0;
+    chart
+        .draw_series(std::iter::once(PathElement::new(
+            vec![(-w2 * 3.0, 0.0), (w2 * 3.0, 0.0)],
+            GREEN.stroke_width(3),
+        )))
+        .map_err(e)?
+        .label("expansion joint (contacts at x = ±W/2)")
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREEN.stroke_width(3)));
+    let style = TextStyle::from((FAMILY, 15).into_font()).color(&BLACK);
+    for (txt, x, y) in [
+        ("deck 1 (y > 0)", 0.45 * (cx + half_x), 0.35 * (cy + half_y)),
+        ("deck 2 (y < 0)", 0.45 * (cx - half_x), 0.35 * (cy - half_y)),
+    ] {
+        chart
+            .draw_series(std::iter::once(Text::new(
+                txt.to_string(),
+                (x, y),
+                style.clone(),
+            )))
+            .map_err(e)?;
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperLeft)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font((FAMILY, 15))
+        .draw()
+        .map_err(e)?;
     Ok(())
 }
