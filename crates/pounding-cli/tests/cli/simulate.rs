@@ -94,6 +94,7 @@ fn default_run_writes_every_output_deterministically() {
         "joint_gap.png",
         "impulses.png",
         "energy.png",
+        "layout.png",
     ] {
         let b = std::fs::read(out.join(png)).unwrap();
         assert!(b.len() > 10_000 && b.starts_with(b"\x89PNG"), "{png}");
