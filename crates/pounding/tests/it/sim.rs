@@ -764,3 +764,94 @@ fn plastic_impact_then_sustained_contact_stays_closed_without_drift() {
     assert!(sm.energy_balance_error < 1e-12);
     assert!(sm.final_energy.contact > 0.0);
 }
+
+#[test]
+fn varied_bridges_and_strong_motions_keep_the_invariants() {
+    // Deterministic spread of geometries, laws and intensities (incl. ε = 1, μ = 1, where an
+    // impact may gain energy, spec §11): every LCP solved, discrete energy balance exact,
+    // overlap bounded by h |γ_N⁻|, impacts only with P_N > 0 and γ_N⁻ < −1 mm/s.
+    let cases = [
+        // R1, β1, R2, β2, k1, k2, mu, eps, scale, incidence°
+        (100.0, 60.0, 100.0, 60.0, 2.02e7, 8.97e6, 0.5, 0.5, 3.0, 0.0),
+        (200.0, 120.0, 100.0, 90.0, 3.0e7, 1.0e7, 1.0, 0.9, 2.0, 30.0),
+        (
+            100.0, 90.0, 200.0, 60.0, 1.0e7, 4.0e7, 0.25, 1.0, 2.5, -45.0,
+        ),
+        (60.0, 30.0, 60.0, 30.0, 5.0e6, 1.5e7, 0.0, 0.0, 2.0, 90.0),
+        (150.0, 45.0, 80.0, 100.0, 8.0e6, 2.0e7, 1.5, 0.7, 3.0, 10.0),
+    ];
+    for (i, &(r1, b1, r2, b2, k1, k2, mu, eps, scale, inc)) in cases.iter().enumerate() {
+        let deck = |r: f64, b: f64| Deck {
+            radius: r,
+            angle: f64::to_radians(b),
+            width: 10.0,
+            thickness: 0.5,
+            density: 2500.0,
+        };
+        let arr = SArrangement {
+            deck1: deck(r1, b1),
+            deck2: deck(r2, b2),
+        };
+        let model = SimModel::with_corner_bearings(arr, 0.03, k1, k2, 0.05, mu, eps, 0.3);
+        let mut gm = el_centro_1940();
+        gm.scale_x = scale;
+        gm.scale_y = scale;
+        gm.incidence = f64::to_radians(inc);
+        let s = SimSettings {
+            dt: 2e-3,
+            duration: Some(12.0),
+            history_stride: 50,
+            ..SimSettings::default()
+        };
+        let sol = simulate(&SimProblem::at_rest(model, gm), &s).unwrap();
+        let sm = &sol.summary;
+        eprintln!(
+            "case {i}: impacts {} rows {} lcp {} enum {} fail {} pen {:.2e} ebal {:.1e} Dc {:.3e} seat {:.3} unseated {:?}",
+            sm.impacts,
+            sm.impacting_contacts,
+            sol.lcp_solves,
+            sol.lcp_enumeration_fallbacks,
+            sol.lcp_failures,
+            sm.max_penetration,
+            sm.energy_balance_error,
+            sm.final_energy.contact,
+            sm.peak_seat_displacement,
+            sm.unseating_time
+        );
+        assert_eq!(sol.status, SimStatus::Completed, "case {i}");
+        assert_eq!(sol.lcp_failures, 0, "case {i}");
+        assert!(sm.impacts > 0, "case {i}: strong motion, small gap");
+        assert!(
+            sm.energy_balance_error < 1e-10,
+            "case {i}: {}",
+            sm.energy_balance_error
+        );
+        let vmax = sol
+            .impacts
+            .iter()
+            .map(|r| -r.gamma_n_pre)
+            .fold(0.0, f64::max);
+        assert!(
+            sm.max_penetration <= s.dt * vmax + 1e-6,
+            "case {i}: {} vs {vmax}",
+            sm.max_penetration
+        );
+        for r in &sol.impacts {
+            assert!(
+                r.impulse_n > 0.0 && r.gamma_n_pre < -1e-3,
+                "case {i}: {r:?}"
+            );
+            // Newton's law holds with equality for an impacting contact that receives impulse
+            assert!(
+                (r.gamma_n_post + eps * r.gamma_n_pre).abs() < 1e-8 * (1.0 + r.gamma_n_pre.abs()),
+                "case {i}: {r:?}"
+            );
+            // Coulomb cone
+            assert!(
+                r.impulse_t.abs() <= mu * r.impulse_n * (1.0 + 1e-9) + 1e-9,
+                "case {i}: {r:?}"
+            );
+        }
+        assert_eq!(sm.unseated, sm.peak_seat_displacement > 0.3);
+    }
+}
