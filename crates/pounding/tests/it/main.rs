@@ -4,5 +4,7 @@ mod analytic;
 mod common;
 mod contact;
 mod geometry;
+mod ground_motion;
 mod impact;
 mod lcp;
+mod sim;
