@@ -19,5 +19,6 @@ fn help_lists_subcommands() {
     }
 }
 
+mod batch;
 mod lcp;
 mod simulate;

@@ -47,6 +47,7 @@
 //! so [`SimSummary::energy_balance_error`] checks the implementation's bookkeeping (a sign or
 //! scaling slip shows at O(1)); for `θ > ½` it measures the scheme's numerical dissipation.
 
+pub mod batch;
 pub mod contact;
 pub mod model;
 

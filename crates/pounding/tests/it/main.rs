@@ -1,8 +1,10 @@
 //! Integration tests of the `pounding` library (one test binary; one module per topic).
 
 mod analytic;
+mod batch;
 mod common;
 mod contact;
+mod event_exact;
 mod geometry;
 mod ground_motion;
 mod impact;
