@@ -6,3 +6,4 @@ mod contact;
 mod geometry;
 mod impact;
 mod lcp;
+mod shapes;
