@@ -20,3 +20,4 @@ fn help_lists_subcommands() {
 }
 
 mod lcp;
+mod shapes;
