@@ -17,7 +17,7 @@ use pounding::math::Vector;
 use pounding::output::json_float;
 use pounding::shape::{
     Abutment, DeckEnd, DeckShape, SkewedDeck, StraightDeck, abutment_contact, abutment_delassus,
-    abutment_problem, frictionless_pivot,
+    abutment_problem, frictionless_pivot, joint_problem,
 };
 use serde_json::{Map, Value, json};
 use std::path::PathBuf;
@@ -38,7 +38,7 @@ pub struct Args {
 #[derive(clap::Args)]
 pub struct ImpactArgs {
     /// Generic form: a JSON file with "bodies" and "contacts" (see the README).
-    #[arg(long, value_name = "FILE.json", conflicts_with_all = ["r1", "r2", "beta1", "beta2", "theta1", "theta2", "case", "mu", "eps", "ratio", "shape", "length", "skew", "abutment", "gap", "corner", "speed"])]
+    #[arg(long, value_name = "FILE.json", conflicts_with_all = ["r1", "r2", "beta1", "beta2", "theta1", "theta2", "case", "mu", "eps", "ratio", "shape", "length", "length2", "skew", "abutment", "gap", "corner", "speed"])]
     problem: Option<PathBuf>,
     /// Centre-line radius of deck 1 [m] (> W/2).
     #[arg(
@@ -119,12 +119,16 @@ pub struct ImpactArgs {
     #[arg(long, allow_negative_numbers = true)]
     opening: Option<f64>,
     /// Deck shape: curved (the default: two S-curved decks, or with --abutment deck 1 against an
-    /// abutment), straight (rectangle) or skew (parallelogram). straight and skew need --abutment.
+    /// abutment), straight (rectangle) or skew (parallelogram). straight/skew without --abutment:
+    /// two decks face to face at the joint, both joint corners striking.
     #[arg(long, value_name = "curved|straight|skew")]
     shape: Option<String>,
     /// Deck length L along the axis [m] (> 0; --shape straight|skew).
     #[arg(long, allow_negative_numbers = true)]
     length: Option<f64>,
+    /// Length of deck 2 [m] (> 0; --shape straight|skew without --abutment; default --length).
+    #[arg(long, allow_negative_numbers = true)]
+    length2: Option<f64>,
     /// Skew angle θ_s [deg] in [0, 90): end faces vs the normal of the deck axis (--shape skew).
     #[arg(long, allow_negative_numbers = true)]
     skew: Option<f64>,
@@ -156,6 +160,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
         None | Some("curved") if !args.abutment => {
             for (set, name) in [
                 (args.length.is_some(), "--length"),
+                (args.length2.is_some(), "--length2"),
                 (args.skew.is_some(), "--skew"),
             ] {
                 if set {
@@ -790,10 +795,10 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
         other => bail!("invalid shape = {other:?}: expected curved, straight or skew"),
     };
     if !a.abutment {
-        bail!(
-            "--shape {shape_name} needs --abutment (deck-to-deck impacts of straight and skew decks \
-             are not available in `pounding impact`)"
-        );
+        return run_joint(a, &shape);
+    }
+    if a.length2.is_some() {
+        bail!("--length2 is not used with --abutment (there is no deck 2)");
     }
     for (set, name) in [
         (a.r2.is_some(), "--r2"),
@@ -1163,4 +1168,180 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
     } else {
         ExitCode::SUCCESS
     })
+}
+
+/// Two straight or skew decks face to face at the joint (reference pose, zero opening): deck 1
+/// approaches along its axis at `--speed`, deck 2 rests; both joint corners strike.
+fn run_joint(a: &ImpactArgs, deck1: &DeckShape) -> Result<ExitCode> {
+    for (set, name) in [
+        (a.r2.is_some(), "--r2"),
+        (a.beta2.is_some(), "--beta2"),
+        (a.theta1.is_some(), "--theta1"),
+        (a.theta2.is_some(), "--theta2"),
+        (a.case.is_some(), "--case"),
+        (a.opening.is_some(), "--opening"),
+        (a.ratio.is_some(), "--ratio"),
+        (a.gap.is_some(), "--gap"),
+        (a.corner.is_some(), "--corner"),
+    ] {
+        if set {
+            bail!(
+                "{name} is not used for two {} decks (both joint corners strike in the reference pose)",
+                deck1.name()
+            );
+        }
+    }
+    if a.sigma_mode != "exact" {
+        bail!("--sigma-mode is not used with --shape {}", deck1.name());
+    }
+    let deck2 = match deck1 {
+        DeckShape::Straight(d) => {
+            let l2 = a.length2.unwrap_or(d.length);
+            DeckShape::Straight(
+                StraightDeck::new(l2, d.width, d.thickness, d.density)
+                    .map_err(|e| rename(e, "length", "length2"))?,
+            )
+        }
+        DeckShape::Skewed(d) => {
+            let l2 = a.length2.unwrap_or(d.length);
+            DeckShape::Skewed(
+                SkewedDeck::new(l2, d.width, d.skew, d.thickness, d.density)
+                    .map_err(|e| rename(e, "length", "length2"))?,
+            )
+        }
+        DeckShape::Curved(_) => bail!("internal: curved decks use the S-curved bridge form"),
+    };
+    let mu = need(a.mu, "mu")?;
+    let eps = need(a.eps, "eps")?;
+    let law = ImpactLaw::new(mu, eps)?;
+    let speed = a.speed.unwrap_or(1.0);
+    if !(speed.is_finite() && speed > 0.0) {
+        bail!("invalid speed = {speed}: must be finite and > 0");
+    }
+    let v1 = speed * deck1.axis_direction(DeckEnd::Joint);
+    let problem = joint_problem(deck1, &deck2, (v1, 0.0), (Vector::zeros(), 0.0), &law)?;
+    let s = impact::solve(&problem, &ImpactSettings::default());
+    let names = corner_names(deck1);
+    let face = deck1.end_face(DeckEnd::Joint);
+    let mut out = Map::new();
+    let mut input = json!({
+        "shape": deck1.name(),
+        "abutment": false,
+        "mu": json_float(mu),
+        "eps": json_float(eps),
+        "speed": json_float(speed),
+        "width": json_float(a.width),
+        "thickness": json_float(a.thickness),
+        "density": json_float(a.density),
+        "length": json_float(a.length.unwrap_or(f64::NAN)),
+        "length2": json_float(a.length2.or(a.length).unwrap_or(f64::NAN)),
+    });
+    if let (Some(sk), Value::Object(m)) = (a.skew, &mut input) {
+        m.insert("skew_deg".into(), json_float(sk));
+    }
+    out.insert("input".into(), input);
+    let decks: Vec<Value> = problem
+        .bodies()
+        .iter()
+        .zip(&s.bodies)
+        .map(|(b, v)| {
+            json!({
+                "name": b.name,
+                "mass": json_float(b.mass),
+                "inertia": json_float(b.inertia),
+                "centroid": vec_json(&b.position),
+                "velocity_pre": vec_json(&b.velocity),
+                "velocity": vec_json(&v.velocity),
+                "omega": json_float(v.omega),
+            })
+        })
+        .collect();
+    out.insert("decks".into(), Value::Array(decks));
+    let contacts: Vec<Value> = s
+        .contacts
+        .iter()
+        .enumerate()
+        .map(|(k, c)| {
+            json!({
+                "corner": names[k],
+                "point": vec_json(&face.corners[k]),
+                "normal_impulse": json_float(c.normal_impulse),
+                "tangential_impulse": json_float(c.tangential_impulse),
+                "mode": c.mode.name(),
+                "gamma_n_pre": json_float(c.gamma_n_pre),
+                "gamma_t_pre": json_float(c.gamma_t_pre),
+                "gamma_n_post": json_float(c.gamma_n_post),
+                "gamma_t_post": json_float(c.gamma_t_post),
+            })
+        })
+        .collect();
+    out.insert("contacts".into(), Value::Array(contacts));
+    out.insert(
+        "energy".into(),
+        json!({"before": json_float(s.energy_before), "after": json_float(s.energy_after)}),
+    );
+    out.insert("status".into(), json!(s.status.name()));
+    out.insert("post_velocity_unique".into(), json!(s.post_velocity_unique));
+    if a.json {
+        println!("{}", serde_json::to_string_pretty(&Value::Object(out))?);
+    } else {
+        println!(
+            "Two {} decks face to face at the joint (W = {} m{}), deck 1 approaching along its axis at {speed} m/s; μ = {mu}, ε_N = {eps}: {}",
+            deck1.name(),
+            a.width,
+            a.skew.map_or(String::new(), |sk| format!(", θ_s = {sk}°")),
+            s.status.name()
+        );
+        for (b, v) in problem.bodies().iter().zip(&s.bodies) {
+            println!(
+                "  {}: m = {} kg, I = {} kg m²: v⁺ = ({}, {}) m/s, ω⁺ = {} rad/s",
+                b.name,
+                fmt(b.mass),
+                fmt(b.inertia),
+                fmt(v.velocity.x),
+                fmt(v.velocity.y),
+                fmt(v.omega)
+            );
+        }
+        for (k, c) in s.contacts.iter().enumerate() {
+            println!(
+                "  deck 1 {} corner: {}  Λ_N = {} N s  Λ_T = {} N s  γ_N: {} → {} m/s",
+                names[k],
+                c.mode.name(),
+                fmt(c.normal_impulse),
+                fmt(c.tangential_impulse),
+                fmt(c.gamma_n_pre),
+                fmt(c.gamma_n_post)
+            );
+        }
+        println!(
+            "  kinetic energy: {} J → {} J",
+            fmt(s.energy_before),
+            fmt(s.energy_after)
+        );
+    }
+    Ok(if s.status == ImpactStatus::Failed {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
+}
+
+/// The same geometry error with the parameter renamed (deck 2's `length` is `length2`).
+fn rename(
+    e: pounding::geometry::GeometryError,
+    from: &str,
+    to: &str,
+) -> pounding::geometry::GeometryError {
+    match e {
+        pounding::geometry::GeometryError::InvalidParameter {
+            name,
+            value,
+            reason,
+        } => pounding::geometry::GeometryError::InvalidParameter {
+            name: if name == from { to.to_string() } else { name },
+            value,
+            reason,
+        },
+    }
 }

@@ -533,3 +533,81 @@ pub fn frictionless_pivot(shape: &DeckShape, end: DeckEnd) -> Option<usize> {
         None
     }
 }
+
+/// Two decks meeting face to face at the joint (reference pose, zero opening): deck 1 is the body
+/// frame itself, deck 2 the body frame turned by π about the origin (module docs), and **both**
+/// joint corners of deck 1 touch deck 2's joint face — the double impact of parallel faces
+/// (spec §16). Bodies `"deck1"` (body a) and `"deck2"` (body b); contacts at deck 1's joint corners
+/// `[c0, c1]` with the normal `(0, 1)` (from deck 2 into deck 1, the spec's `ν`), each with `law`.
+/// Centroid velocities and angular velocities are given in the global frame.
+///
+/// The joint faces must coincide: deck 2's turned corners `−c0₂`, `−c1₂` must equal deck 1's
+/// `c1₁`, `c0₁` (within `1e−9 W`), i.e. equal widths and, for skewed decks, equal skew angles
+/// (errors name `width` or `skew`).
+pub fn joint_problem(
+    deck1: &DeckShape,
+    deck2: &DeckShape,
+    state1: (Vector, Real),
+    state2: (Vector, Real),
+    law: &ImpactLaw,
+) -> Result<ImpactProblem, ImpactError> {
+    let (j1, j2) = (
+        deck1.end_face(DeckEnd::Joint),
+        deck2.end_face(DeckEnd::Joint),
+    );
+    let tol = 1e-9 * deck1.width().max(deck2.width());
+    if (j1.corners[1] + j2.corners[0]).norm() > tol || (j1.corners[0] + j2.corners[1]).norm() > tol
+    {
+        let skew = |d: &DeckShape| match d {
+            DeckShape::Skewed(s) => s.skew,
+            _ => 0.0,
+        };
+        let name = if deck1.width() != deck2.width() {
+            "width"
+        } else if skew(deck1) != skew(deck2) {
+            "skew"
+        } else {
+            "deck2"
+        };
+        return Err(ImpactError::Invalid {
+            name: name.into(),
+            reason: format!(
+                "the joint faces do not match (deck 1 joint corners {:?}, deck 2 turned by π {:?})",
+                [j1.corners[0], j1.corners[1]].map(|c| [c.x, c.y]),
+                [-j2.corners[1], -j2.corners[0]].map(|c| [c.x, c.y])
+            ),
+        });
+    }
+    let (p1, p2) = (deck1.mass_properties(), deck2.mass_properties());
+    let bodies = vec![
+        RigidBody {
+            name: "deck1".into(),
+            mass: p1.mass,
+            inertia: p1.inertia,
+            position: p1.centroid,
+            velocity: state1.0,
+            omega: state1.1,
+        },
+        RigidBody {
+            name: "deck2".into(),
+            mass: p2.mass,
+            inertia: p2.inertia,
+            position: -p2.centroid,
+            velocity: state2.0,
+            omega: state2.1,
+        },
+    ];
+    let contacts = j1
+        .corners
+        .iter()
+        .map(|&point| ContactSpec {
+            body_a: "deck1".into(),
+            body_b: Some("deck2".into()),
+            point,
+            normal: -j1.outward_normal,
+            mu: law.mu(),
+            restitution: law.eps(),
+        })
+        .collect();
+    ImpactProblem::new(bodies, contacts)
+}

@@ -330,12 +330,24 @@ fn bad_shape_input_is_named() {
         assert!(err.contains(name), "{a:?}: error {err:?} lacks {name}");
         assert!(!err.contains("panicked"), "{err}");
     }
-    // straight and skew decks need --abutment (deck-to-deck is not available for them)
+    // --length2 (deck 2) makes no sense against an abutment
     let out = run(&[
-        "--shape", "skew", "--length", "30", "--skew", "10", "--mu", "0", "--eps", "0",
+        "--shape",
+        "skew",
+        "--length",
+        "30",
+        "--length2",
+        "40",
+        "--skew",
+        "10",
+        "--abutment",
+        "--mu",
+        "0",
+        "--eps",
+        "0",
     ]);
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("--abutment"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--length2"));
     // shape options with the curved deck-to-deck form are rejected, not ignored
     let out = run(&[
         "--r1",
@@ -361,4 +373,82 @@ fn bad_shape_input_is_named() {
     ]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--gap"));
+}
+
+/// Two decks face to face (no --abutment): straight decks obey the 1-D collision law
+/// `v1⁺ = v − (1+ε) m2/(m1+m2) v`, `v2⁺ = (1+ε) m1/(m1+m2) v` (v along −y); skew decks conserve the
+/// total momentum; a bad deck-2 length names `length2`.
+#[test]
+fn two_decks_face_to_face() {
+    for (l2, eps) in [("30", 1.0), ("45", 0.5)] {
+        let es = eps.to_string();
+        let v = json_of(&[
+            "--shape",
+            "straight",
+            "--length",
+            "30",
+            "--length2",
+            l2,
+            "--mu",
+            "0",
+            "--eps",
+            &es,
+            "--speed",
+            "2",
+        ]);
+        let (m1, m2) = (f(&v["decks"][0]["mass"]), f(&v["decks"][1]["mass"]));
+        assert!(rel(m2 / m1, l2.parse::<f64>().unwrap() / 30.0) < 1e-12);
+        let v1 = -2.0 + (1.0 + eps) * m2 / (m1 + m2) * 2.0;
+        let v2 = -(1.0 + eps) * m1 / (m1 + m2) * 2.0;
+        assert!((f(&v["decks"][0]["velocity"][1]) - v1).abs() < 1e-9);
+        assert!((f(&v["decks"][1]["velocity"][1]) - v2).abs() < 1e-9);
+        assert!(f(&v["decks"][0]["omega"]).abs() < 1e-12);
+    }
+    let v = json_of(&[
+        "--shape",
+        "skew",
+        "--length",
+        "30",
+        "--length2",
+        "50",
+        "--skew",
+        "30",
+        "--mu",
+        "0.2",
+        "--eps",
+        "0.5",
+    ]);
+    let mut p = [0.0; 2];
+    for d in v["decks"].as_array().unwrap() {
+        for k in 0..2 {
+            p[k] += f(&d["mass"]) * (f(&d["velocity"][k]) - f(&d["velocity_pre"][k]));
+        }
+    }
+    let scale = f(&v["decks"][0]["mass"]);
+    assert!(
+        p[0].abs() < 1e-9 * scale && p[1].abs() < 1e-9 * scale,
+        "{p:?}"
+    );
+    let out = run(&[
+        "--shape",
+        "skew",
+        "--length",
+        "30",
+        "--length2",
+        "0",
+        "--skew",
+        "5",
+        "--mu",
+        "0",
+        "--eps",
+        "0",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("length2"));
+    let out = run(&[
+        "--shape", "skew", "--length", "30", "--skew", "5", "--corner", "acute", "--mu", "0",
+        "--eps", "0",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--corner"));
 }

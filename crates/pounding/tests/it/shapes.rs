@@ -566,3 +566,111 @@ fn pivot_criterion_for_straight_and_curved() {
         }
     }
 }
+
+/// Two decks face to face (parallel faces, both joint corners striking): straight decks of
+/// different lengths follow the 1-D collision law without rotating; skewed decks conserve total
+/// linear and angular momentum (no external impulse) and satisfy Newton's law at active corners.
+#[test]
+fn joint_double_impact_of_straight_and_skewed_decks() {
+    use pounding::shape::joint_problem;
+    let settings = ImpactSettings::default();
+    for (l1, l2, eps) in [(30.0, 30.0, 0.6), (20.0, 45.0, 0.0), (40.0, 25.0, 1.0)] {
+        let d1 = DeckShape::Straight(StraightDeck::new(l1, 10.0, 1.0, 1.0).unwrap());
+        let d2 = DeckShape::Straight(StraightDeck::new(l2, 10.0, 1.0, 1.0).unwrap());
+        let law = ImpactLaw::new(0.0, eps).unwrap();
+        let v = 0.7;
+        let pr = joint_problem(
+            &d1,
+            &d2,
+            (Vector::new(0.0, -v), 0.0),
+            (Vector::zeros(), 0.0),
+            &law,
+        )
+        .unwrap();
+        let s = impact::solve(&pr, &settings);
+        let (m1, m2) = (l1 * 10.0, l2 * 10.0);
+        let v1 = -v + (1.0 + eps) * m2 / (m1 + m2) * v;
+        let v2 = -(1.0 + eps) * m1 / (m1 + m2) * v;
+        assert!(
+            (s.bodies[0].velocity.y - v1).abs() < 1e-9 * v,
+            "{l1} {l2} {eps}"
+        );
+        assert!((s.bodies[1].velocity.y - v2).abs() < 1e-9 * v);
+        assert!(s.bodies[0].omega.abs() < 1e-10 && s.bodies[1].omega.abs() < 1e-10);
+        assert!(s.post_velocity_unique);
+    }
+    for (deg, mu, eps) in [
+        (10.0, 0.0, 0.5),
+        (30.0, 0.0, 0.0),
+        (45.0, 0.3, 0.8),
+        (60.0, 0.0, 1.0),
+    ] {
+        let d1 = DeckShape::Skewed(skewed(30.0, 10.0, deg));
+        let d2 = DeckShape::Skewed(skewed(50.0, 10.0, deg));
+        let law = ImpactLaw::new(mu, eps).unwrap();
+        let pr = joint_problem(
+            &d1,
+            &d2,
+            (1.2 * d1.axis_direction(DeckEnd::Joint), 0.01),
+            (Vector::new(0.1, 0.0), 0.0),
+            &law,
+        )
+        .unwrap();
+        let s = impact::solve(&pr, &settings);
+        assert!(matches!(
+            s.status,
+            ImpactStatus::Solved | ImpactStatus::SolvedByFallback
+        ));
+        let mom = |vel: &[(Vector, f64)]| {
+            let mut p = Vector::zeros();
+            let mut h = 0.0;
+            for (b, (v, w)) in pr.bodies().iter().zip(vel) {
+                p += b.mass * v;
+                h += b.mass * cross(&b.position, v) + b.inertia * w;
+            }
+            (p, h)
+        };
+        let pre: Vec<(Vector, f64)> = pr.bodies().iter().map(|b| (b.velocity, b.omega)).collect();
+        let post: Vec<(Vector, f64)> = s.bodies.iter().map(|b| (b.velocity, b.omega)).collect();
+        let ((p0, h0), (p1, h1)) = (mom(&pre), mom(&post));
+        let scale = pr.bodies()[0].mass * 1.2;
+        assert!((p1 - p0).norm() < 1e-9 * scale, "{deg}");
+        assert!((h1 - h0).abs() < 1e-9 * scale * 30.0, "{deg}: {h0} {h1}");
+        for c in &s.contacts {
+            if c.normal_impulse > 0.0 {
+                assert!((c.gamma_n_post + eps * c.gamma_n_pre.min(0.0)).abs() < 1e-9);
+            } else {
+                assert!(c.gamma_n_post >= -1e-12);
+            }
+        }
+        assert!(s.energy_after <= s.energy_before * (1.0 + 1e-12) || mu > 0.0);
+    }
+    // mismatched faces are rejected, naming the parameter
+    let law = ImpactLaw::new(0.0, 0.5).unwrap();
+    let z = (Vector::zeros(), 0.0);
+    let a = DeckShape::Skewed(skewed(30.0, 10.0, 20.0));
+    let name = |r: Result<ImpactProblem, impact::ImpactError>| match r.unwrap_err() {
+        impact::ImpactError::Invalid { name, .. } => name,
+    };
+    assert_eq!(
+        name(joint_problem(
+            &a,
+            &DeckShape::Skewed(skewed(30.0, 12.0, 20.0)),
+            z,
+            z,
+            &law
+        )),
+        "width"
+    );
+    assert_eq!(
+        name(joint_problem(
+            &a,
+            &DeckShape::Skewed(skewed(30.0, 10.0, 25.0)),
+            z,
+            z,
+            &law
+        )),
+        "skew"
+    );
+    assert!(joint_problem(&a, &DeckShape::Skewed(skewed(80.0, 10.0, 20.0)), z, z, &law).is_ok());
+}
