@@ -21,4 +21,5 @@ fn help_lists_subcommands() {
 
 mod batch;
 mod lcp;
+mod shapes;
 mod simulate;

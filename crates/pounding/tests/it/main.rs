@@ -9,4 +9,5 @@ mod geometry;
 mod ground_motion;
 mod impact;
 mod lcp;
+mod shapes;
 mod sim;
