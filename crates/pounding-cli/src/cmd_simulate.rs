@@ -685,7 +685,7 @@ fn summary_json(setup: &Setup, sol: &SimSolution) -> serde_json::Value {
             "pga_x_mps2": json_float(pga(&gm.along_x, gm.scale_x)),
         },
         "model": {
-            "mass_kg": [json_float(m.arrangement.deck1.mass_properties().mass), json_float(m.arrangement.deck2.mass_properties().mass)],
+            "mass_kg": m.masses().map(json_float),
             "gap_m": json_float(m.gap),
             "mu": json_float(m.friction),
             "eps_n": json_float(m.restitution),
