@@ -11,3 +11,4 @@ mod impact;
 mod lcp;
 mod shapes;
 mod sim;
+mod sim_shapes;
