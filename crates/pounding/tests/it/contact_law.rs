@@ -741,3 +741,118 @@ fn bad_parameters_are_clear_errors() {
         0.0
     );
 }
+
+// ---------------------------------------------------------------- contact end, history
+
+#[test]
+fn damped_contacts_end_when_the_force_returns_to_zero() {
+    // Kelvin: k δ + c δ̇ < 0 with δ > 0 gives no tension, and the contact is over.
+    let kv: ContactLaw = KelvinVoigt::new(1e9, 2e7).unwrap().into();
+    let ev = kv.evaluate(&LawState::default(), 1e-3, -1.0);
+    assert_eq!(ev.force, 0.0);
+    assert!(!ev.state.in_contact());
+    let p = TwoMassImpact::new(1e6, 1e6, 1.0, 0.0).unwrap();
+    let r = simulate_collision(&kv, &p, &CollisionSettings::default()).unwrap();
+    assert!(r.final_penetration > 1e-3 * r.peak_penetration, "{r:?}");
+    // Laws whose force vanishes only with δ: the contact ends at δ = 0.
+    let others: Vec<ContactLaw> = vec![
+        Hertz::new(1e11).unwrap().into(),
+        HertzDamp::new(
+            1e11,
+            HertzDamping::PerImpact {
+                chi: 1.0,
+                min_velocity: 1e-3,
+            },
+        )
+        .unwrap()
+        .into(),
+        Jankowski::new(1e11, 0.5, 5e5).unwrap().into(),
+        BilinearImpact::new(1e10, 2e9, 1e-3).unwrap().into(),
+    ];
+    for law in others {
+        let r = simulate_collision(&law, &p, &CollisionSettings::default()).unwrap();
+        assert!(
+            r.final_penetration.abs() < 1e-6 * r.peak_penetration,
+            "{}: {r:?}",
+            law.name()
+        );
+    }
+}
+
+#[test]
+fn per_impact_damping_uses_the_onset_velocity() {
+    let (k_h, chi) = (1e10, 0.8);
+    let law: ContactLaw = HertzDamp::new(
+        k_h,
+        HertzDamping::PerImpact {
+            chi,
+            min_velocity: 1e-3,
+        },
+    )
+    .unwrap()
+    .into();
+    let d = 1e-4;
+    let a = law.evaluate(&LawState::default(), d, 0.7);
+    assert_eq!(a.state.onset_velocity(), Some(0.7));
+    assert!(rel(a.force, k_h * d.powf(1.5) * (1.0 + chi)) < 1e-12);
+    // Later in the same impact the damping constant stays ζ = χ k_h / 0.7.
+    let b = law.evaluate(&a.state, 2.0 * d, 0.3);
+    assert_eq!(b.state.onset_velocity(), Some(0.7));
+    assert!(rel(b.force, k_h * (2.0 * d).powf(1.5) * (1.0 + chi * 0.3 / 0.7)) < 1e-12);
+    // Open, then a new impact records its own velocity.
+    let c = law.evaluate(&b.state, -1e-5, -0.3);
+    assert_eq!(c.state.onset_velocity(), None);
+    let e = law.evaluate(&c.state, d, 0.2);
+    assert_eq!(e.state.onset_velocity(), Some(0.2));
+    // Derivatives are the formula's: ∂F/∂δ = 1.5 δ^{1/2}(k_h + ζ δ̇), ∂F/∂δ̇ = ζ δ^{3/2}.
+    let zeta = chi * k_h / 0.7;
+    assert!(rel(b.stiffness, 1.5 * (2.0 * d).sqrt() * (k_h + zeta * 0.3)) < 1e-12);
+    assert!(rel(b.damping, zeta * (2.0 * d).powf(1.5)) < 1e-12);
+}
+
+#[test]
+fn tangents_match_finite_differences() {
+    let laws: Vec<ContactLaw> = vec![
+        KelvinVoigt::new(1e9, 1e6).unwrap().into(),
+        Hertz::new(1e11).unwrap().into(),
+        HertzDamp::new(1e11, HertzDamping::Constant { zeta: 3e10 })
+            .unwrap()
+            .into(),
+        Jankowski::new(1e11, 0.4, 1e6).unwrap().into(),
+    ];
+    let (d, v) = (1.3e-3, 0.4);
+    for law in laws {
+        let st = LawState::default();
+        let ev = law.evaluate(&st, d, v);
+        let h = 1e-9;
+        let fd_k =
+            (law.evaluate(&st, d + h, v).force - law.evaluate(&st, d - h, v).force) / (2.0 * h);
+        let hv = 1e-7;
+        let fd_c =
+            (law.evaluate(&st, d, v + hv).force - law.evaluate(&st, d, v - hv).force) / (2.0 * hv);
+        assert!(
+            rel(ev.stiffness, fd_k) < 1e-5,
+            "{}: {} vs {fd_k}",
+            law.name(),
+            ev.stiffness
+        );
+        assert!(
+            (ev.damping - fd_c).abs() <= 1e-5 * ev.damping.max(1.0),
+            "{}",
+            law.name()
+        );
+    }
+}
+
+#[test]
+fn issue_opensees_peak_force_lies_on_the_bilinear_envelope() {
+    // The issue's OpenSees figures: peak force 44.30 MN at penetration 4.04 mm; on the envelope
+    // of the derived law, K1 δy + K2 (δ − δy) at 4.04 mm must give the same force.
+    let k_h = units::kip_per_in_1_5(25_000.0);
+    let law = BilinearImpact::from_hertz(k_h, 0.6, units::INCH, 0.1)
+        .unwrap()
+        .law;
+    let f = law.envelope(4.04e-3);
+    eprintln!("envelope at 4.04 mm: {:.4} MN", f / 1e6);
+    assert!(rel(f, 44.30e6) < 1e-3);
+}
