@@ -332,6 +332,11 @@ fn jankowski_numerical_calibration_rebounds_with_target_e() {
                 .unwrap()
                 .into();
         let (e_sim, _) = collide(&law, m1, m2, 0.6, -0.1);
+        let xi = calibration::jankowski_xi(e, JankowskiCalibration::Numerical).unwrap();
+        let xj = calibration::jankowski_xi(e, JankowskiCalibration::Jankowski2005).unwrap();
+        eprintln!(
+            "jankowski e = {e}: xi numerical {xi:.6}, Jankowski (2005) {xj:.6}, e_sim = {e_sim:.8}"
+        );
         assert!(rel(e_sim, e) < 1e-6, "e {e}: {e_sim}");
     }
 }
