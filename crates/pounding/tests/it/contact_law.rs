@@ -37,6 +37,21 @@ fn hertz_damp_first_integral(chi: f64, e: f64) -> f64 {
     chi * (1.0 + e) - ((1.0 + chi) / (1.0 - chi * e)).ln()
 }
 
+/// The restitution solving the first integral for `χ > 0` (bisection on `(0, min(1, 1/χ))`,
+/// where the residual decreases from `χ − ln(1 + χ) > 0` to `−∞`).
+fn hertz_damp_exact_e(chi: f64) -> f64 {
+    let (mut lo, mut hi) = (0.0, (1.0 / chi).min(1.0));
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if hertz_damp_first_integral(chi, mid) > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
 fn collide(law: &ContactLaw, m1: f64, m2: f64, v1: f64, v2: f64) -> (f64, TwoMassImpact) {
     let p = TwoMassImpact::new(m1, m2, v1, v2).unwrap();
     let r = simulate_collision(law, &p, &CollisionSettings::default()).unwrap();
@@ -284,10 +299,14 @@ fn kelvin_numerical_calibration_rebounds_with_target_e() {
 fn hertz_damp_numerical_calibration_rebounds_with_target_e() {
     for e in ES {
         let chi = calibration::hertz_damp_chi(e, HertzDampCalibration::Numerical).unwrap();
-        let res = hertz_damp_first_integral(chi, e);
+        let e_exact = hertz_damp_exact_e(chi);
+        eprintln!(
+            "hertz-damp e = {e}: chi = {chi:.6}, exact e(chi) - e = {:.2e}",
+            e_exact - e
+        );
         assert!(
-            res.abs() < 1e-6,
-            "e {e}: chi {chi}, first-integral residual {res}"
+            (e_exact - e).abs() < 1e-7,
+            "e {e}: chi {chi}, exact {e_exact}"
         );
         let law: ContactLaw =
             HertzDamp::from_restitution(2e10, e, None, 1e-3, HertzDampCalibration::Numerical)
@@ -384,7 +403,8 @@ fn closed_form_calibrations_measured() {
         );
         // M&D and Ye checked against the exact first integral, independently of the integrator.
         let chi = calibration::muthukumar_desroches_chi(e).unwrap();
-        assert!(hertz_damp_first_integral(chi, md).abs() < 1e-6);
+        assert!((hertz_damp_exact_e(chi) - md).abs() < 1e-7);
+        assert!((hertz_damp_exact_e(calibration::ye_chi(e).unwrap()) - ye).abs() < 1e-7);
         md_err.push((md - e).abs());
     }
     // M&D (Lankarani–Nikravesh) is an e → 1 approximation: its error shrinks toward e = 1.
