@@ -281,7 +281,7 @@ fn kelvin_numerical_calibration_rebounds_with_target_e() {
         let xi = calibration::kelvin_damping_ratio(e, KelvinCalibration::Numerical).unwrap();
         // Independent exact relation of the clamped law.
         eprintln!("closed-form e(xi) - e = {:.3e}", kelvin_clamped_e(xi) - e);
-        assert!((kelvin_clamped_e(xi) - e).abs() < 1e-6, "e {e}: xi {xi}");
+        assert!((kelvin_clamped_e(xi) - e).abs() < 1e-9, "e {e}: xi {xi}");
         // A dimensional collision with other masses, stiffness and velocities.
         let (m1, m2) = (3.0e5, 7.0e5);
         let law: ContactLaw =
