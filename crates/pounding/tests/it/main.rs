@@ -3,6 +3,7 @@
 mod analytic;
 mod common;
 mod contact;
+mod contact_law;
 mod geometry;
 mod ground_motion;
 mod impact;
