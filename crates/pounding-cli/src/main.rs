@@ -6,6 +6,8 @@ use std::process::ExitCode;
 mod cmd_impact;
 mod cmd_lcp;
 mod cmd_study;
+mod figures;
+mod report;
 
 /// Nonsmooth rigid-impact analysis of pounding between bridge deck segments.
 #[derive(Parser)]
