@@ -1,7 +1,22 @@
 //! Linear complementarity problems `w = M z + q, z ≥ 0, w ≥ 0, zᵀw = 0`.
 //!
-//! CONTRACT (skeleton; the LCP work item replaces every `todo!()` and may add items, but keeps these
-//! names and signatures so that `impact` and `study` can build on them).
+//!
+//! * [`LcpProblem`] — the data (dense `M`, any `n`); [`LemkeSettings`] — validated settings;
+//!   [`Lemke`] / [`solve_fixed`] — lexicographic Lemke (dynamic size with a reusable workspace /
+//!   const-generic allocation-free kernel); [`enumerate()`] — every solution by enumerating
+//!   complementary bases (`n ≤ 12`); [`LcpSolution`] / [`FixedSolution`] with an [`LcpStatus`].
+//! * [`io`] — Siconos `.dat` (dense and sparse-block), `LCPSET 1` reader, `LCPSOL 1` writer.
+//!
+//! Bad input is an [`LcpError`]; numerical outcomes (ray termination, pivot limit, failed
+//! verification) are statuses, never panics. Only [`LcpStatus::Solved`] carries a `z` that passed
+//! a verification of all LCP conditions against the original data.
+
+pub mod enumerate;
+pub mod io;
+pub mod lemke;
+
+pub use enumerate::{EnumSettings, enumerate, enumerate_with};
+pub use lemke::{Lemke, solve_fixed};
 
 use thiserror::Error;
 
@@ -79,28 +94,130 @@ pub enum LcpStatus {
     RayTermination,
     /// The pivot limit was reached.
     MaxPivots,
-    /// A pivot was too small to trust / the end point failed verification.
+    /// The end point failed verification (rounding made the pivots untrustworthy), or the data
+    /// given to [`solve_fixed`] contained non-finite numbers.
     IllConditioned,
 }
 
-/// Settings of Lemke's method (validated; see the LCP work item for the exact fields).
-#[derive(Debug, Clone, PartialEq, Default)]
+/// Settings of Lemke's method, validated (every constructor and setter returns
+/// `Err(LcpError::Invalid)` for a value out of range).
+///
+/// | field | default | meaning |
+/// |---|---|---|
+/// | `max_pivots` | 100 000 | pivot limit (counting the pivots in which `z₀` enters and leaves); reaching it gives [`LcpStatus::MaxPivots`] |
+/// | `pivot_tol` | 1e-12 | an entry `dᵢ` of the entering column takes part in the ratio test only if `dᵢ > pivot_tol · maxₖ |dₖ|` (relative to the column, hence scale-free) |
+/// | `tie_tol` | 1e-11 | two ratios `bᵢ/dᵢ`, `bⱼ/dⱼ` tie when they differ by at most `tie_tol · ‖b‖∞ · (1/dᵢ + 1/dⱼ)` (the rounding scale of the ratios, relative to the current right-hand side); tied `B⁻¹` entries likewise relative to the tied rows' scale; the initial row ties when `qᵢ ≤ min q + tie_tol·‖q‖∞` |
+/// | `verify_tol` | 1e-9 | [`LcpStatus::Solved`] requires `maxᵢ |min(zᵢ, wᵢ)| / max(1, ‖q‖∞) ≤ verify_tol` and `z, w ≥ −verify_tol · max(1, ‖q‖∞)` |
+#[derive(Debug, Clone, PartialEq)]
 pub struct LemkeSettings {
-    // filled in by the LCP work item
+    max_pivots: usize,
+    pivot_tol: f64,
+    tie_tol: f64,
+    verify_tol: f64,
+}
+
+impl Default for LemkeSettings {
+    fn default() -> Self {
+        Self {
+            max_pivots: 100_000,
+            pivot_tol: 1e-12,
+            tie_tol: 1e-11,
+            verify_tol: 1e-9,
+        }
+    }
+}
+
+fn check_tol(name: &str, v: f64, max: f64) -> Result<f64, LcpError> {
+    if v.is_finite() && v >= 0.0 && v < max {
+        Ok(v)
+    } else {
+        Err(LcpError::Invalid(format!(
+            "LemkeSettings::{name} = {v} must be finite and in [0, {max})"
+        )))
+    }
+}
+
+impl LemkeSettings {
+    /// Settings with every field given; see the type documentation for their meaning.
+    pub fn new(
+        max_pivots: usize,
+        pivot_tol: f64,
+        tie_tol: f64,
+        verify_tol: f64,
+    ) -> Result<Self, LcpError> {
+        Self::default()
+            .with_max_pivots(max_pivots)?
+            .with_pivot_tol(pivot_tol)?
+            .with_tie_tol(tie_tol)?
+            .with_verify_tol(verify_tol)
+    }
+    /// Sets the pivot limit (any value, `0` makes every non-trivial problem end in
+    /// [`LcpStatus::MaxPivots`]).
+    pub fn with_max_pivots(mut self, max_pivots: usize) -> Result<Self, LcpError> {
+        self.max_pivots = max_pivots;
+        Ok(self)
+    }
+    /// Sets the relative pivot tolerance (finite, in `[0, 1)`).
+    pub fn with_pivot_tol(mut self, pivot_tol: f64) -> Result<Self, LcpError> {
+        self.pivot_tol = check_tol("pivot_tol", pivot_tol, 1.0)?;
+        Ok(self)
+    }
+    /// Sets the relative tie tolerance of the ratio test (finite, in `[0, 1e-3)`).
+    pub fn with_tie_tol(mut self, tie_tol: f64) -> Result<Self, LcpError> {
+        self.tie_tol = check_tol("tie_tol", tie_tol, 1e-3)?;
+        Ok(self)
+    }
+    /// Sets the verification tolerance (finite, in `[0, 1e-2)`).
+    pub fn with_verify_tol(mut self, verify_tol: f64) -> Result<Self, LcpError> {
+        self.verify_tol = check_tol("verify_tol", verify_tol, 1e-2)?;
+        Ok(self)
+    }
+    /// Pivot limit.
+    pub fn max_pivots(&self) -> usize {
+        self.max_pivots
+    }
+    /// Relative pivot tolerance.
+    pub fn pivot_tol(&self) -> f64 {
+        self.pivot_tol
+    }
+    /// Relative tie tolerance.
+    pub fn tie_tol(&self) -> f64 {
+        self.tie_tol
+    }
+    /// Verification tolerance.
+    pub fn verify_tol(&self) -> f64 {
+        self.verify_tol
+    }
+}
+
+impl LcpStatus {
+    /// `true` for [`LcpStatus::Solved`].
+    pub fn is_solved(self) -> bool {
+        self == LcpStatus::Solved
+    }
+    /// A short lower-case name (`solved`, `ray`, `max_pivots`, `ill_conditioned`).
+    pub fn name(self) -> &'static str {
+        match self {
+            LcpStatus::Solved => "solved",
+            LcpStatus::RayTermination => "ray",
+            LcpStatus::MaxPivots => "max_pivots",
+            LcpStatus::IllConditioned => "ill_conditioned",
+        }
+    }
 }
 
 /// A solution of an LCP of dynamic size.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LcpSolution {
-    /// The complementary variable `z` (meaningful only when `status == Solved`).
+    /// The complementary variable `z` (`NaN` unless `status == Solved`).
     pub z: Vec<f64>,
-    /// `w = M z + q`.
+    /// `w = M z + q`, recomputed from the original data (`NaN` unless `status == Solved`).
     pub w: Vec<f64>,
     /// Outcome.
     pub status: LcpStatus,
     /// Number of pivots, counting the pivot in which `z0` enters and the one in which it leaves.
     pub pivots: usize,
-    /// `max_i |min(z_i, w_i)| / max(1, ‖q‖_∞)`.
+    /// `max_i |min(z_i, w_i)| / max(1, ‖q‖_∞)` (`NaN` when no end point was reached).
     pub residual: f64,
 }
 
@@ -117,39 +234,4 @@ pub struct FixedSolution<const N: usize> {
     pub pivots: usize,
     /// Residual (as in [`LcpSolution::residual`]).
     pub residual: f64,
-}
-
-/// Lexicographic Lemke's method with a reusable workspace (no allocation per solve once warm).
-#[derive(Debug, Clone)]
-pub struct Lemke {
-    /// The settings in force.
-    pub settings: LemkeSettings,
-}
-
-impl Lemke {
-    /// A solver with the given settings.
-    pub fn new(settings: LemkeSettings) -> Self {
-        Self { settings }
-    }
-    /// Solves `problem`; never panics on a numerical failure (that is a status).
-    pub fn solve(&mut self, problem: &LcpProblem) -> LcpSolution {
-        let _ = problem;
-        todo!("LCP work item")
-    }
-}
-
-/// Lexicographic Lemke on a fixed-size LCP given row-major as `m[i][j]`; allocation-free.
-pub fn solve_fixed<const N: usize>(
-    m: &[[f64; N]; N],
-    q: &[f64; N],
-    settings: &LemkeSettings,
-) -> FixedSolution<N> {
-    let _ = (m, q, settings);
-    todo!("LCP work item")
-}
-
-/// All solutions found by enumerating complementary bases (`n ≤ 12`, else an error).
-pub fn enumerate(problem: &LcpProblem) -> Result<Vec<Vec<f64>>, LcpError> {
-    let _ = problem;
-    todo!("LCP work item")
 }

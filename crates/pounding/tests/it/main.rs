@@ -1,3 +1,7 @@
 //! Integration tests of the `pounding` library (one test binary; one module per topic).
 
+mod analytic;
 mod common;
+mod contact;
+mod geometry;
+mod lcp;
