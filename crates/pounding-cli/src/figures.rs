@@ -228,7 +228,7 @@ fn draw_job(study: &Study, out: &Path, svg: bool, job: &Job) -> Result<Figure, S
     };
     let png_rel = format!("figures/{name}.png");
     let png = out.join(&png_rel);
-    let tmp = out.join(format!("figures/.{name}.png.{}.tmp", std::process::id()));
+    let tmp = out.join(format!("figures/.{name}.{}.tmp.png", std::process::id()));
     {
         let root = BitMapBackend::new(&tmp, size).into_drawing_area();
         render(study, job, &root)?;
@@ -393,7 +393,7 @@ fn surface_panel<DB: DrawingBackend>(
     chart.with_projection(|mut pb| {
         pb.yaw = 0.6;
         pb.pitch = 0.35;
-        pb.scale = 0.78;
+        pb.scale = 0.74;
         pb.into_matrix()
     });
     chart
@@ -411,13 +411,13 @@ fn surface_panel<DB: DrawingBackend>(
     chart
         .draw_series([
             Text::new(
-                "θ1 [deg] →".to_string(),
-                (x1, rmin, z0 - 0.18 * (z1 - z0)),
+                "θ1 [deg]".to_string(),
+                (0.5 * (x0 + x1), rmin, z1 + 0.48 * (z1 - z0)),
                 name_style.clone(),
             ),
             Text::new(
-                "θ2 [deg] →".to_string(),
-                (x1 + 0.08 * (x1 - x0), rmin, z1),
+                "θ2 [deg]".to_string(),
+                (x1 + 0.2 * (x1 - x0), rmin, 0.5 * (z0 + z1)),
                 name_style.clone(),
             ),
             Text::new(
@@ -481,7 +481,7 @@ fn regions<DB: DrawingBackend>(
     let (top, body) = root.split_vertically(70);
     top.draw(&Text::new(
         format!(
-            "{}, ε_N = {} — post-impact mode against θ_a (striking deck; struck deck at 0) and r = γ_T⁻/γ_N⁻",
+            "{}, ε_N = {} — mode vs striking deck's θ_a (struck deck at 0)",
             geom_title(study, geom),
             tok(s.eps[eps])
         ),
@@ -648,18 +648,26 @@ fn palette(k: usize) -> RGBColor {
     P[k % P.len()]
 }
 
-/// A line chart with legend: `series = [(label, points)]`.
+/// One line of a line chart.
+struct Series {
+    label: String,
+    points: Vec<(Real, Real)>,
+    color: usize,
+    thin: bool,
+}
+
+/// A line chart with legend.
 fn line_chart<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
     x_desc: &str,
     y_desc: &str,
-    series: &[(String, Vec<(Real, Real)>)],
-    dashed_from: usize,
+    series: &[Series],
+    legend_pos: SeriesLabelPosition,
 ) -> DrawResult {
     let pts = series
         .iter()
-        .flat_map(|s| s.1.iter())
+        .flat_map(|s| s.points.iter())
         .filter(|p| p.0.is_finite() && p.1.is_finite());
     let (mut x0, mut x1, mut y0, mut y1) = (
         Real::INFINITY,
@@ -696,25 +704,39 @@ fn line_chart<DB: DrawingBackend>(
         .light_line_style(BLACK.mix(0.05))
         .draw()
         .map_err(e)?;
-    for (k, (label, points)) in series.iter().enumerate() {
-        let col = palette(if k >= dashed_from { k - dashed_from } else { k });
-        let pts: Vec<(Real, Real)> = points.iter().copied().filter(|p| p.1.is_finite()).collect();
-        let style = col.stroke_width(if k >= dashed_from { 1 } else { 3 });
+    for sr in series {
+        let col = palette(sr.color);
+        let pts: Vec<(Real, Real)> = sr
+            .points
+            .iter()
+            .copied()
+            .filter(|p| p.1.is_finite())
+            .collect();
+        let w = if sr.thin { 1 } else { 3 };
         chart
-            .draw_series(LineSeries::new(pts.clone(), style))
+            .draw_series(LineSeries::new(pts.clone(), col.stroke_width(w)))
             .map_err(e)?
-            .label(label.clone())
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], col.stroke_width(3)));
-        chart
-            .draw_series(pts.into_iter().map(|p| Circle::new(p, 4, col.filled())))
-            .map_err(e)?;
+            .label(sr.label.clone())
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], col.stroke_width(w)));
+        if sr.thin {
+            chart
+                .draw_series(
+                    pts.into_iter()
+                        .map(|p| TriangleMarker::new(p, 6, col.filled())),
+                )
+                .map_err(e)?;
+        } else {
+            chart
+                .draw_series(pts.into_iter().map(|p| Circle::new(p, 4, col.filled())))
+                .map_err(e)?;
+        }
     }
     chart
         .configure_series_labels()
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK.mix(0.3))
         .label_font(font(13))
-        .position(SeriesLabelPosition::UpperLeft)
+        .position(legend_pos)
         .draw()
         .map_err(e)?;
     Ok(())
@@ -735,7 +757,7 @@ fn overview<DB: DrawingBackend>(
     match k {
         0 => {
             let mut series = Vec::new();
-            for case in &s.cases {
+            for (ci, case) in s.cases.iter().enumerate() {
                 for upper in [false, true] {
                     let pts = mus
                         .iter()
@@ -748,10 +770,12 @@ fn overview<DB: DrawingBackend>(
                             (m, v)
                         })
                         .collect();
-                    series.push((
-                        format!("{} {}", case.name(), if upper { "U" } else { "L" }),
-                        pts,
-                    ));
+                    series.push(Series {
+                        label: format!("{} {}", case.name(), if upper { "U (thin)" } else { "L" }),
+                        points: pts,
+                        color: ci,
+                        thin: upper,
+                    });
                 }
             }
             line_chart(
@@ -760,7 +784,7 @@ fn overview<DB: DrawingBackend>(
                 "friction coefficient μ [-]",
                 &format!("r = γ_T⁻/γ_N⁻ (clamped to {range_txt})"),
                 &series,
-                usize::MAX,
+                SeriesLabelPosition::LowerLeft,
             )?;
             let mut series = Vec::new();
             for (name, idx) in [("outward slip", 0usize), ("stick", 1), ("inward slip", 2)] {
@@ -778,7 +802,12 @@ fn overview<DB: DrawingBackend>(
                         (m, 100.0 * v)
                     })
                     .collect();
-                series.push((name.to_string(), pts));
+                series.push(Series {
+                    label: name.to_string(),
+                    points: pts,
+                    color: idx,
+                    thin: false,
+                });
             }
             line_chart(
                 &panels[1],
@@ -786,7 +815,7 @@ fn overview<DB: DrawingBackend>(
                 "friction coefficient μ [-]",
                 "share of ratio range [%]",
                 &series,
-                usize::MAX,
+                SeriesLabelPosition::UpperRight,
             )
         }
         1 => {
@@ -794,9 +823,10 @@ fn overview<DB: DrawingBackend>(
                 let betas = if deck1 { &s.beta1_deg } else { &s.beta2_deg };
                 let mut bs = betas.clone();
                 bs.sort_by(Real::total_cmp);
-                let series: Vec<(String, Vec<(Real, Real)>)> = mus
+                let series: Vec<Series> = mus
                     .iter()
-                    .map(|&m| {
+                    .enumerate()
+                    .map(|(mi, &m)| {
                         let pts = bs
                             .iter()
                             .map(|&b| {
@@ -811,7 +841,12 @@ fn overview<DB: DrawingBackend>(
                                 (b, 100.0 * v)
                             })
                             .collect();
-                        (format!("μ = {}", tok(m)), pts)
+                        Series {
+                            label: format!("μ = {}", tok(m)),
+                            points: pts,
+                            color: mi,
+                            thin: false,
+                        }
                     })
                     .collect();
                 line_chart(
@@ -827,7 +862,7 @@ fn overview<DB: DrawingBackend>(
                     },
                     &format!("stick share of {range_txt} [%]"),
                     &series,
-                    usize::MAX,
+                    SeriesLabelPosition::UpperRight,
                 )?;
             }
             Ok(())
@@ -844,9 +879,10 @@ fn overview<DB: DrawingBackend>(
             }
             ratios.sort_by(Real::total_cmp);
             for (p, deck1) in [(0usize, true), (1, false)] {
-                let series: Vec<(String, Vec<(Real, Real)>)> = mus
+                let series: Vec<Series> = mus
                     .iter()
-                    .map(|&m| {
+                    .enumerate()
+                    .map(|(mi, &m)| {
                         let pts = ratios
                             .iter()
                             .map(|&q| {
@@ -865,7 +901,12 @@ fn overview<DB: DrawingBackend>(
                                 (q, 100.0 * v)
                             })
                             .collect();
-                        (format!("μ = {}", tok(m)), pts)
+                        Series {
+                            label: format!("μ = {}", tok(m)),
+                            points: pts,
+                            color: mi,
+                            thin: false,
+                        }
                     })
                     .collect();
                 line_chart(
@@ -877,7 +918,7 @@ fn overview<DB: DrawingBackend>(
                     "radius ratio R1/R2 [-]",
                     &format!("stick share of {range_txt} [%]"),
                     &series,
-                    usize::MAX,
+                    SeriesLabelPosition::UpperRight,
                 )?;
             }
             Ok(())
