@@ -5,3 +5,4 @@ mod common;
 mod contact;
 mod geometry;
 mod lcp;
+mod study;
