@@ -64,6 +64,8 @@ const UPPER: RGBColor = RGBColor(200, 40, 40);
 const GREY: RGBColor = RGBColor(200, 200, 200);
 
 type DrawResult = Result<(), String>;
+/// A triangle in chart coordinates (θ1, r, θ2).
+type Tri = [(Real, Real, Real); 3];
 
 fn e<E: std::fmt::Debug>(err: E) -> String {
     format!("{err:?}")
@@ -429,7 +431,7 @@ fn surface_panel<DB: DrawingBackend>(
         .map_err(e)?;
     // Triangles of both surfaces, painter-sorted by projected depth (farthest first).
     let at = |i: usize, j: usize| &rows[i * n2 + j].cell;
-    let mut tris: Vec<(i32, [(Real, Real, Real); 3], RGBAColor)> = Vec::new();
+    let mut tris: Vec<(i32, Tri, RGBAColor)> = Vec::new();
     let coord = chart.as_coord_spec().clone();
     for i in 0..n1.saturating_sub(1) {
         for j in 0..n2.saturating_sub(1) {

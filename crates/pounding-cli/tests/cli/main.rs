@@ -16,3 +16,4 @@ fn help_lists_subcommands() {
         assert!(s.contains(sub), "--help lacks {sub}: {s}");
     }
 }
+mod study;

@@ -45,7 +45,10 @@ fn default_text_parses_to_the_default_and_has_254016_rows() {
     assert_eq!(s.row_count(), 254_016);
     assert_eq!(s.configuration_count(), 144);
     // The empty file is the default too (every key optional).
-    assert_eq!(Scenario::from_toml("", "empty").unwrap(), Scenario::default());
+    assert_eq!(
+        Scenario::from_toml("", "empty").unwrap(),
+        Scenario::default()
+    );
     assert_eq!(s.theta1.values().len(), 21);
     assert_eq!(s.theta1.value(20), 10.0);
 }
@@ -72,9 +75,17 @@ fn bad_scenarios_name_key_and_line() {
     // unknown table
     assert_error("\n[decks]\n[solver]\nx = 1\n", "solver", 3);
     // R <= W/2 (W = 10 -> R = 5 is invalid)
-    assert_error("[decks]\nr1_m = [100.0]\nr2_m = [100.0, 5.0]\n", "decks.r2_m[1]", 3);
+    assert_error(
+        "[decks]\nr1_m = [100.0]\nr2_m = [100.0, 5.0]\n",
+        "decks.r2_m[1]",
+        3,
+    );
     // R <= W/2 through a larger width with explicit radii
-    assert_error("[decks]\nwidth_m = 300.0\nr1_m = [100.0]\n", "decks.r1_m[0]", 3);
+    assert_error(
+        "[decks]\nwidth_m = 300.0\nr1_m = [100.0]\n",
+        "decks.r1_m[0]",
+        3,
+    );
     // ... and with default radii the width is blamed
     assert_error("[decks]\n\nwidth_m = 300.0\n", "decks.width_m", 3);
     // empty lists
@@ -94,8 +105,16 @@ fn bad_scenarios_name_key_and_line() {
     // other invalid values
     assert_error("[impact]\nmu = [0.1, -0.2]\n", "impact.mu[1]", 2);
     assert_error("[impact]\neps = [1.5]\n", "impact.eps[0]", 2);
-    assert_error("[impact]\nsigma_mode = \"middle\"\n", "impact.sigma_mode", 2);
-    assert_error("[grid]\nratio_min = 3.0\nratio_max = 2.0\n", "grid.ratio_max", 3);
+    assert_error(
+        "[impact]\nsigma_mode = \"middle\"\n",
+        "impact.sigma_mode",
+        2,
+    );
+    assert_error(
+        "[grid]\nratio_min = 3.0\nratio_max = 2.0\n",
+        "grid.ratio_max",
+        3,
+    );
     assert_error("[grid]\ncases = [\"deck3-inner\"]\n", "grid.cases[0]", 2);
     assert_error("[impact]\nmu = [0.5, 0.5]\n", "impact.mu[1]", 2);
     assert_error("[decks]\nbeta1_deg = [0.0]\n", "decks.beta1_deg[0]", 2);
@@ -133,7 +152,20 @@ fn rows_are_ordered_with_theta2_innermost() {
         .map(|l| l.split(',').take(9).map(str::to_string).collect())
         .collect();
     // scenario order of r1 (200 first) and mu (0.5 first), then deck1-inner, θ1 = -6, θ2 = -6, -3, 0, 3, 6
-    assert_eq!(first[0], ["60", "90", "200", "100", "0.5", "0.5", "deck1-inner", "-6", "-6"]);
+    assert_eq!(
+        first[0],
+        [
+            "60",
+            "90",
+            "200",
+            "100",
+            "0.5",
+            "0.5",
+            "deck1-inner",
+            "-6",
+            "-6"
+        ]
+    );
     assert_eq!(first[1][8], "-3");
     assert_eq!(first[4][8], "6");
     assert_eq!(first[5][7..9], ["-4", "-6"]);
@@ -164,18 +196,150 @@ fn degenerate_diagonals_are_flagged_nan_and_agree() {
 }
 
 /// Spec §15: (R1, R2, β1, β2, θ1, θ2, case, first, σ, G·ρt (3), L, U at μ = 0.5, L, U at μ = 1).
-type RefRow = (f64, f64, f64, f64, f64, f64, &'static str, bool, f64, [f64; 3], [f64; 4]);
+type RefRow = (
+    f64,
+    f64,
+    f64,
+    f64,
+    f64,
+    f64,
+    &'static str,
+    bool,
+    f64,
+    [f64; 3],
+    [f64; 4],
+);
 const SPEC_15: [RefRow; 10] = [
-    (100., 100., 60., 60., -5., 2., "deck1-inner", true, 4.984009614, [2.784789492e-03, 2.022511840e-03, 6.619671336e-03], [-1.088778793, 2.107066801, -9.046230363, 2.696580445]),
-    (100., 100., 60., 60., 5., -2., "deck1-outer", true, -4.984009614, [2.353427721e-03, 1.500269571e-03, 7.052214505e-03], [-1.895322093, 2.429326047, -9.761282130, 3.328939753]),
-    (100., 100., 60., 60., 2., -5., "deck2-inner", true, 4.984009614, [2.784789492e-03, 2.022511840e-03, 6.619671336e-03], [-1.088778793, 2.107066801, -9.046230363, 2.696580445]),
-    (100., 100., 60., 60., -2., 5., "deck2-outer", true, -4.984009614, [2.353427721e-03, 1.500269571e-03, 7.052214505e-03], [-1.895322093, 2.429326047, -9.761282130, 3.328939753]),
-    (200., 100., 120., 90., -8., 3., "deck1-inner", true, 4.958135296, [1.800466485e-03, 1.187112898e-03, 2.499500086e-03], [-0.077848153, 1.526841852, -3.209536591, 1.850969888]),
-    (200., 100., 120., 90., 3., -8., "deck2-inner", true, 4.958135296, [1.771056088e-03, 1.140473087e-03, 2.331698922e-03], [-0.031698818, 1.477595656, -2.833629751, 1.788839369]),
-    (100., 200., 90., 60., 6., -1., "deck1-outer", true, -4.973366945, [1.600872729e-03, 1.139298725e-03, 3.903539079e-03], [-1.181806252, 2.136169180, -8.983089380, 2.760504893]),
-    (100., 200., 90., 60., 1., 7., "deck2-outer", true, -4.963486721, [1.558301656e-03, 1.059904371e-03, 3.797643886e-03], [-1.223685522, 2.125263406, -8.239630105, 2.782944623]),
-    (100., 100., 60., 60., 0., 5., "deck1-inner", false, 5.019099188, [2.727089941e-03, 1.955319894e-03, 6.679043363e-03], [-1.186845252, 2.143805278, -9.180953875, 2.765999847]),
-    (100., 100., 60., 60., 5., 0., "deck1-inner", false, 4.980973490, [2.507682464e-03, 1.556180477e-03, 6.896633777e-03], [-1.640967492, 2.284621222, -8.418983945, 3.119992373]),
+    (
+        100.,
+        100.,
+        60.,
+        60.,
+        -5.,
+        2.,
+        "deck1-inner",
+        true,
+        4.984009614,
+        [2.784789492e-03, 2.022511840e-03, 6.619671336e-03],
+        [-1.088778793, 2.107066801, -9.046230363, 2.696580445],
+    ),
+    (
+        100.,
+        100.,
+        60.,
+        60.,
+        5.,
+        -2.,
+        "deck1-outer",
+        true,
+        -4.984009614,
+        [2.353427721e-03, 1.500269571e-03, 7.052214505e-03],
+        [-1.895322093, 2.429326047, -9.761282130, 3.328939753],
+    ),
+    (
+        100.,
+        100.,
+        60.,
+        60.,
+        2.,
+        -5.,
+        "deck2-inner",
+        true,
+        4.984009614,
+        [2.784789492e-03, 2.022511840e-03, 6.619671336e-03],
+        [-1.088778793, 2.107066801, -9.046230363, 2.696580445],
+    ),
+    (
+        100.,
+        100.,
+        60.,
+        60.,
+        -2.,
+        5.,
+        "deck2-outer",
+        true,
+        -4.984009614,
+        [2.353427721e-03, 1.500269571e-03, 7.052214505e-03],
+        [-1.895322093, 2.429326047, -9.761282130, 3.328939753],
+    ),
+    (
+        200.,
+        100.,
+        120.,
+        90.,
+        -8.,
+        3.,
+        "deck1-inner",
+        true,
+        4.958135296,
+        [1.800466485e-03, 1.187112898e-03, 2.499500086e-03],
+        [-0.077848153, 1.526841852, -3.209536591, 1.850969888],
+    ),
+    (
+        200.,
+        100.,
+        120.,
+        90.,
+        3.,
+        -8.,
+        "deck2-inner",
+        true,
+        4.958135296,
+        [1.771056088e-03, 1.140473087e-03, 2.331698922e-03],
+        [-0.031698818, 1.477595656, -2.833629751, 1.788839369],
+    ),
+    (
+        100.,
+        200.,
+        90.,
+        60.,
+        6.,
+        -1.,
+        "deck1-outer",
+        true,
+        -4.973366945,
+        [1.600872729e-03, 1.139298725e-03, 3.903539079e-03],
+        [-1.181806252, 2.136169180, -8.983089380, 2.760504893],
+    ),
+    (
+        100.,
+        200.,
+        90.,
+        60.,
+        1.,
+        7.,
+        "deck2-outer",
+        true,
+        -4.963486721,
+        [1.558301656e-03, 1.059904371e-03, 3.797643886e-03],
+        [-1.223685522, 2.125263406, -8.239630105, 2.782944623],
+    ),
+    (
+        100.,
+        100.,
+        60.,
+        60.,
+        0.,
+        5.,
+        "deck1-inner",
+        false,
+        5.019099188,
+        [2.727089941e-03, 1.955319894e-03, 6.679043363e-03],
+        [-1.186845252, 2.143805278, -9.180953875, 2.765999847],
+    ),
+    (
+        100.,
+        100.,
+        60.,
+        60.,
+        5.,
+        0.,
+        "deck1-inner",
+        false,
+        4.980973490,
+        [2.507682464e-03, 1.556180477e-03, 6.896633777e-03],
+        [-1.640967492, 2.284621222, -8.418983945, 3.119992373],
+    ),
 ];
 
 fn close(got: f64, want: f64, rel: f64) -> bool {
@@ -206,14 +370,22 @@ fn spec_15_rows_appear_in_bounds_csv() {
             let num = |k: usize| f[k].parse::<f64>().unwrap();
             assert_eq!(f[9], if first { "true" } else { "false" }, "{line}");
             assert!((num(11) - sigma).abs() <= 1e-9, "sigma {line}");
-            for k in 0..3 {
-                assert!(close(num(12 + k) * rho_t, g[k], 2e-9), "G[{k}] {line}");
+            for (k, gk) in g.iter().enumerate() {
+                assert!(close(num(12 + k) * rho_t, *gk, 2e-9), "G[{k}] {line}");
             }
             assert!(close(num(15), g[1] / g[0], 1e-8), "kappa {line}");
             assert!(close(num(16), g[2] / g[0], 1e-8), "varrho {line}");
             // the table prints 9 decimals
-            assert!((num(17) - lu[2 * m]).abs() <= 1e-9, "L {line} vs {}", lu[2 * m]);
-            assert!((num(18) - lu[2 * m + 1]).abs() <= 1e-9, "U {line} vs {}", lu[2 * m + 1]);
+            assert!(
+                (num(17) - lu[2 * m]).abs() <= 1e-9,
+                "L {line} vs {}",
+                lu[2 * m]
+            );
+            assert!(
+                (num(18) - lu[2 * m + 1]).abs() <= 1e-9,
+                "U {line} vs {}",
+                lu[2 * m + 1]
+            );
             assert_eq!(f[19], "true");
             found += 1;
         }
@@ -298,8 +470,14 @@ fn lcp_agrees_everywhere_and_can_disagree() {
     assert_eq!(test_ratios(-1.0, 3.0).len(), 3);
     // Lemke mode far outside the band
     use pounding::analytic::SlipMode;
-    assert_eq!(lcp_mode(&g, &law, c.lower - 5.0), Some(SlipMode::SlipOutward));
-    assert_eq!(lcp_mode(&g, &law, c.upper + 5.0), Some(SlipMode::SlipInward));
+    assert_eq!(
+        lcp_mode(&g, &law, c.lower - 5.0),
+        Some(SlipMode::SlipOutward)
+    );
+    assert_eq!(
+        lcp_mode(&g, &law, c.upper + 5.0),
+        Some(SlipMode::SlipInward)
+    );
 }
 
 #[test]
@@ -326,15 +504,24 @@ fn summaries_match_a_recomputation_from_rows() {
         assert!(
             (sum.stick_fraction + sum.outward_fraction + sum.inward_fraction - 1.0).abs() < 1e-12
         );
-        let lmin = fc.iter().map(|r| r.cell.lower).fold(f64::INFINITY, f64::min);
+        let lmin = fc
+            .iter()
+            .map(|r| r.cell.lower)
+            .fold(f64::INFINITY, f64::min);
         assert_eq!(sum.lower_min, lmin);
-        let umax = fc.iter().map(|r| r.cell.upper).fold(f64::NEG_INFINITY, f64::max);
+        let umax = fc
+            .iter()
+            .map(|r| r.cell.upper)
+            .fold(f64::NEG_INFINITY, f64::max);
         assert_eq!(sum.upper_max, umax);
     }
     assert_eq!(shares(-20.0, 20.0, -12.0, 12.0), (0.0, 1.0, 0.0));
     assert_eq!(shares(0.0, 6.0, -12.0, 12.0), (0.5, 0.25, 0.25));
     let json: serde_json::Value = serde_json::from_str(&st.summary_json()).unwrap();
-    assert_eq!(json["summaries"].as_array().unwrap().len(), st.summaries.len());
+    assert_eq!(
+        json["summaries"].as_array().unwrap().len(),
+        st.summaries.len()
+    );
     assert_eq!(json["lcp_disagreements"], 0);
     assert_eq!(st.summary_csv().lines().count(), st.summaries.len() + 1);
 }
@@ -380,7 +567,10 @@ fn sharded_and_merged_equals_unsharded() {
 fn bytes_do_not_depend_on_the_thread_count() {
     let s = scenario(SMALL);
     let run = |threads: usize| {
-        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
         pool.install(|| {
             let st = Study::compute(SMALL.to_string(), s.clone(), &none).unwrap();
             (st.bounds_csv(), st.summary_csv(), st.summary_json())
@@ -397,11 +587,20 @@ fn claims_restate_the_paper_with_this_runs_numbers() {
     assert_eq!(get("stick-widens-with-mu").verdict, Verdict::Reproduced);
     assert_eq!(get("mu-zero-single-surface").verdict, Verdict::Reproduced);
     // Spec erratum 13: inward slip is not negligible for μ > 0.25.
-    assert_eq!(get("inward-negligible-mu-gt-0.25").verdict, Verdict::Contradicted);
+    assert_eq!(
+        get("inward-negligible-mu-gt-0.25").verdict,
+        Verdict::Contradicted
+    );
     assert!(claims.len() >= 5);
     // Without μ = 0 the single-surface claim is not tested.
     let st2 = study(&SMALL.replace("mu = [0.5, 0.0, 1.0, 0.25]", "mu = [0.5]"));
     let c2 = st2.claims();
-    assert!(c2.iter().all(|c| c.id != "mu-zero-single-surface" || c.verdict == Verdict::NotTested));
-    assert!(c2.iter().all(|c| c.id != "stick-widens-with-mu" || c.verdict == Verdict::NotTested));
+    assert!(
+        c2.iter()
+            .all(|c| c.id != "mu-zero-single-surface" || c.verdict == Verdict::NotTested)
+    );
+    assert!(
+        c2.iter()
+            .all(|c| c.id != "stick-widens-with-mu" || c.verdict == Verdict::NotTested)
+    );
 }
