@@ -821,10 +821,11 @@ fn overview<DB: DrawingBackend>(
             )
         }
         1 => {
-            for (p, deck1) in [(0usize, true), (1, false)] {
-                let betas = if deck1 { &s.beta1_deg } else { &s.beta2_deg };
-                let mut bs = betas.clone();
+            // Striking deck a (owns the corner) and struck deck b.
+            for (p, striking) in [(0usize, true), (1, false)] {
+                let mut bs: Vec<Real> = s.beta1_deg.iter().chain(&s.beta2_deg).copied().collect();
                 bs.sort_by(Real::total_cmp);
+                bs.dedup();
                 let series: Vec<Series> = mus
                     .iter()
                     .enumerate()
@@ -835,8 +836,13 @@ fn overview<DB: DrawingBackend>(
                                 let v = mean_rows(
                                     study,
                                     |q| {
-                                        q.mu == m
-                                            && (if deck1 { q.beta1_deg } else { q.beta2_deg }) == b
+                                        let deck1 = is_deck1(q.case);
+                                        let beta = if deck1 == striking {
+                                            q.beta1_deg
+                                        } else {
+                                            q.beta2_deg
+                                        };
+                                        q.mu == m && beta == b
                                     },
                                     |c| share(c).1,
                                 );
@@ -854,13 +860,13 @@ fn overview<DB: DrawingBackend>(
                 line_chart(
                     &panels[p],
                     &format!(
-                        "Mean stick share against {}",
-                        if deck1 { "β1" } else { "β2" }
+                        "Mean stick share against the {} deck's angle",
+                        if striking { "striking" } else { "struck" }
                     ),
-                    if deck1 {
-                        "deck 1 angle β1 [deg]"
+                    if striking {
+                        "β of the striking deck [deg]"
                     } else {
-                        "deck 2 angle β2 [deg]"
+                        "β of the struck deck [deg]"
                     },
                     &format!("stick share of {range_txt} [%]"),
                     &series,
@@ -870,60 +876,88 @@ fn overview<DB: DrawingBackend>(
             Ok(())
         }
         _ => {
+            let ratio = |q: &pounding::study::run::RowParams| {
+                if is_deck1(q.case) {
+                    q.r1_m / q.r2_m
+                } else {
+                    q.r2_m / q.r1_m
+                }
+            };
             let mut ratios: Vec<Real> = Vec::new();
             for &a in &s.r1_m {
                 for &b in &s.r2_m {
-                    let q = a / b;
-                    if !ratios.contains(&q) {
-                        ratios.push(q);
+                    for q in [a / b, b / a] {
+                        if !ratios.contains(&q) {
+                            ratios.push(q);
+                        }
                     }
                 }
             }
             ratios.sort_by(Real::total_cmp);
-            for (p, deck1) in [(0usize, true), (1, false)] {
-                let series: Vec<Series> = mus
-                    .iter()
-                    .enumerate()
-                    .map(|(mi, &m)| {
-                        let pts = ratios
+            let stick: Vec<Series> = mus
+                .iter()
+                .enumerate()
+                .map(|(mi, &m)| Series {
+                    label: format!("μ = {}", tok(m)),
+                    points: ratios
+                        .iter()
+                        .map(|&x| {
+                            (
+                                x,
+                                100.0
+                                    * mean_rows(
+                                        study,
+                                        |q| q.mu == m && ratio(q) == x,
+                                        |c| share(c).1,
+                                    ),
+                            )
+                        })
+                        .collect(),
+                    color: mi,
+                    thin: false,
+                })
+                .collect();
+            line_chart(
+                &panels[0],
+                "Mean stick share against the radius ratio",
+                "R_striking / R_struck [-]",
+                &format!("stick share of {range_txt} [%]"),
+                &stick,
+                SeriesLabelPosition::UpperRight,
+            )?;
+            let mut bounds = Vec::new();
+            for (mi, &m) in mus.iter().enumerate() {
+                for upper in [false, true] {
+                    bounds.push(Series {
+                        label: format!("μ = {} {}", tok(m), if upper { "U (thin)" } else { "L" }),
+                        points: ratios
                             .iter()
-                            .map(|&q| {
+                            .map(|&x| {
                                 let v = mean_rows(
                                     study,
-                                    |x| {
-                                        x.mu == m
-                                            && x.r1_m / x.r2_m == q
-                                            && matches!(
-                                                x.case,
-                                                ContactCase::Deck1Inner | ContactCase::Deck1Outer
-                                            ) == deck1
-                                    },
-                                    |c| share(c).1,
+                                    |q| q.mu == m && ratio(q) == x,
+                                    |c| (if upper { c.upper } else { c.lower }).clamp(rmin, rmax),
                                 );
-                                (q, 100.0 * v)
+                                (x, v)
                             })
-                            .collect();
-                        Series {
-                            label: format!("μ = {}", tok(m)),
-                            points: pts,
-                            color: mi,
-                            thin: false,
-                        }
-                    })
-                    .collect();
-                line_chart(
-                    &panels[p],
-                    &format!(
-                        "Mean stick share against R1/R2, {} strikes",
-                        if deck1 { "deck 1" } else { "deck 2" }
-                    ),
-                    "radius ratio R1/R2 [-]",
-                    &format!("stick share of {range_txt} [%]"),
-                    &series,
-                    SeriesLabelPosition::UpperRight,
-                )?;
+                            .collect(),
+                        color: mi,
+                        thin: upper,
+                    });
+                }
             }
-            Ok(())
+            line_chart(
+                &panels[1],
+                "Mean stick bounds against the radius ratio",
+                "R_striking / R_struck [-]",
+                &format!("r = γ_T⁻/γ_N⁻ (clamped to {range_txt})"),
+                &bounds,
+                SeriesLabelPosition::LowerRight,
+            )
         }
     }
+}
+
+fn is_deck1(c: ContactCase) -> bool {
+    matches!(c, ContactCase::Deck1Inner | ContactCase::Deck1Outer)
 }
