@@ -1,12 +1,292 @@
-//! `pounding lcp` (filled in by its work item).
+//! `pounding lcp solve|bench`: solve or benchmark LCP files (Siconos `.dat` or `LCPSET 1`).
 
+use anyhow::{Context, bail};
+use clap::{Subcommand, ValueEnum};
+use pounding::lcp::io::{self, LcpEntry, SolRecord};
+use pounding::lcp::{LcpSolution, LcpStatus, Lemke, LemkeSettings, enumerate};
+use std::hint::black_box;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::time::Instant;
 
 /// Arguments of `pounding lcp`.
 #[derive(clap::Args)]
-pub struct Args {}
+pub struct Args {
+    #[command(subcommand)]
+    cmd: LcpCmd,
+}
+
+/// Which solver to run.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
+enum Solver {
+    /// Lexicographic Lemke (one solution or a failure status per problem).
+    #[default]
+    Lemke,
+    /// Enumeration of complementary bases: every solution (n <= 12 only).
+    Enum,
+}
+
+impl Solver {
+    fn name(self) -> &'static str {
+        match self {
+            Solver::Lemke => "pounding-lemke",
+            Solver::Enum => "pounding-enum",
+        }
+    }
+}
+
+#[derive(Subcommand)]
+enum LcpCmd {
+    /// Solve every problem of FILE (a Siconos .dat LCP or an LCPSET 1 set) and write LCPSOL 1.
+    ///
+    /// Lemke writes one SOL line per problem (status 1 and nan for every z when not solved);
+    /// enum writes one SOL line per solution found (status 1 and nan when there is none).
+    /// A one-line count per status goes to stderr.
+    Solve {
+        /// Problem file: Siconos .dat (dense or sparse-block) or LCPSET 1 (detected by its first line).
+        file: PathBuf,
+        /// Solver.
+        #[arg(long, value_enum, default_value_t = Solver::Lemke)]
+        solver: Solver,
+        /// Output path (written atomically); default: standard output.
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+    /// Time the solver on every class of FILE; prints one JSON object to stdout.
+    ///
+    /// Per class: `count`, `solved`, `solves_per_s` (median of the repeats; each repeat runs the
+    /// class's solve loop, including the solver's own verification, until it has taken at least
+    /// --min-time seconds; parsing is outside the timer) and `max_residual`
+    /// (max_i |min(z_i, w_i)| / max(1, ||q||_inf) over the solved problems). Single-threaded.
+    Bench {
+        /// Problem file: Siconos .dat or LCPSET 1.
+        file: PathBuf,
+        /// Solver.
+        #[arg(long, value_enum, default_value_t = Solver::Lemke)]
+        solver: Solver,
+        /// Minimum duration of one timed repeat per class, in seconds.
+        #[arg(long, default_value_t = 0.5)]
+        min_time: f64,
+        /// Number of timed repeats per class (the median is reported).
+        #[arg(long, default_value_t = 5)]
+        repeats: usize,
+    },
+}
 
 /// Runs `pounding lcp`.
-pub fn run(_args: Args) -> anyhow::Result<ExitCode> {
-    anyhow::bail!("`pounding lcp` is not implemented yet")
+pub fn run(args: Args) -> anyhow::Result<ExitCode> {
+    match args.cmd {
+        LcpCmd::Solve { file, solver, out } => solve(&file, solver, out.as_deref()),
+        LcpCmd::Bench {
+            file,
+            solver,
+            min_time,
+            repeats,
+        } => bench(&file, solver, min_time, repeats),
+    }
+}
+
+fn read(file: &Path, solver: Solver) -> anyhow::Result<Vec<LcpEntry>> {
+    let set = io::read_any(file).with_context(|| "reading the LCP problem file".to_string())?;
+    if solver == Solver::Enum {
+        if let Some(e) = set.iter().find(|e| e.problem.dim() > 12) {
+            bail!(
+                "{}: problem {} has n = {}; --solver enum needs n <= 12 (use --solver lemke)",
+                file.display(),
+                e.id,
+                e.problem.dim()
+            );
+        }
+    }
+    Ok(set)
+}
+
+fn solve(file: &Path, solver: Solver, out: Option<&Path>) -> anyhow::Result<ExitCode> {
+    let set = read(file, solver)?;
+    let mut records = Vec::with_capacity(set.len());
+    let mut counts: Vec<(&'static str, usize)> = Vec::new();
+    let bump = |c: &mut Vec<(&'static str, usize)>, k: &'static str| {
+        if let Some(e) = c.iter_mut().find(|e| e.0 == k) {
+            e.1 += 1;
+        }
+    };
+    match solver {
+        Solver::Lemke => {
+            let mut lemke = Lemke::new(LemkeSettings::default());
+            for name in ["solved", "ray", "max_pivots", "ill_conditioned"] {
+                counts.push((name, 0));
+            }
+            for e in &set {
+                let s = lemke.solve(&e.problem);
+                bump(&mut counts, s.status.name());
+                records.push(SolRecord {
+                    id: e.id,
+                    solver: solver.name().into(),
+                    solved: s.status == LcpStatus::Solved,
+                    z: s.z,
+                });
+            }
+        }
+        Solver::Enum => {
+            for name in ["solved", "multiple_solutions", "no_solution"] {
+                counts.push((name, 0));
+            }
+            for e in &set {
+                let sols = enumerate(&e.problem)
+                    .with_context(|| format!("{}: problem {}", file.display(), e.id))?;
+                if sols.is_empty() {
+                    bump(&mut counts, "no_solution");
+                    records.push(SolRecord {
+                        id: e.id,
+                        solver: solver.name().into(),
+                        solved: false,
+                        z: vec![f64::NAN; e.problem.dim()],
+                    });
+                } else {
+                    bump(&mut counts, "solved");
+                    if sols.len() > 1 {
+                        bump(&mut counts, "multiple_solutions");
+                    }
+                    for z in sols {
+                        records.push(SolRecord {
+                            id: e.id,
+                            solver: solver.name().into(),
+                            solved: true,
+                            z,
+                        });
+                    }
+                }
+            }
+        }
+    }
+    let text = io::write_lcpsol(&records);
+    match out {
+        Some(p) => pounding::output::write_atomic(p, text.as_bytes())
+            .with_context(|| format!("writing {}", p.display()))?,
+        None => {
+            use std::io::Write;
+            std::io::stdout()
+                .write_all(text.as_bytes())
+                .context("writing to standard output")?;
+        }
+    }
+    let parts: Vec<String> = counts.iter().map(|(k, v)| format!("{k} {v}")).collect();
+    eprintln!(
+        "{}: {} problems: {}",
+        solver.name(),
+        set.len(),
+        parts.join(", ")
+    );
+    Ok(ExitCode::SUCCESS)
+}
+
+/// One class's solve loop: returns (solved count, max residual) — the work that is timed.
+fn run_class(
+    solver: Solver,
+    probs: &[&LcpEntry],
+    lemke: &mut Lemke,
+    sol: &mut LcpSolution,
+) -> (usize, f64) {
+    let mut solved = 0;
+    let mut maxres = 0.0f64;
+    match solver {
+        Solver::Lemke => {
+            for e in probs {
+                lemke.solve_into(black_box(&e.problem), sol);
+                if sol.status == LcpStatus::Solved {
+                    solved += 1;
+                    maxres = maxres.max(sol.residual);
+                }
+            }
+        }
+        Solver::Enum => {
+            for e in probs {
+                // n <= 12 was checked when reading
+                let sols = enumerate(black_box(&e.problem)).unwrap_or_default();
+                if !sols.is_empty() {
+                    solved += 1;
+                }
+                for z in &sols {
+                    maxres = maxres.max(residual(e, z));
+                }
+            }
+        }
+    }
+    (solved, maxres)
+}
+
+/// `max_i |min(z_i, w_i)| / max(1, ||q||_inf)` with `w = M z + q`.
+fn residual(e: &LcpEntry, z: &[f64]) -> f64 {
+    let p = &e.problem;
+    let n = p.dim();
+    let qn = p.q().iter().fold(1.0f64, |a, &x| a.max(x.abs()));
+    let mut r = 0.0f64;
+    for i in 0..n {
+        let w = p.q()[i] + (0..n).map(|j| p.m(i, j) * z[j]).sum::<f64>();
+        r = r.max(z[i].min(w).abs());
+    }
+    r / qn
+}
+
+fn bench(file: &Path, solver: Solver, min_time: f64, repeats: usize) -> anyhow::Result<ExitCode> {
+    if !(min_time.is_finite() && min_time > 0.0 && min_time <= 600.0) {
+        bail!("--min-time must be in (0, 600] seconds, got {min_time}");
+    }
+    if !(1..=101).contains(&repeats) {
+        bail!("--repeats must be in 1..=101, got {repeats}");
+    }
+    let set = read(file, solver)?;
+    // classes in order of first appearance
+    let mut order: Vec<&str> = Vec::new();
+    for e in &set {
+        if !order.contains(&e.class.as_str()) {
+            order.push(&e.class);
+        }
+    }
+    let mut lemke = Lemke::new(LemkeSettings::default());
+    let mut sol = lemke.solve(&set[0].problem); // warm the workspace and output vectors
+    let mut classes = Vec::new();
+    for class in order {
+        let probs: Vec<&LcpEntry> = set.iter().filter(|e| e.class == class).collect();
+        let (solved, maxres) = run_class(solver, &probs, &mut lemke, &mut sol);
+        // calibrate the number of passes so that one repeat takes >= min_time
+        let mut passes = 1usize;
+        loop {
+            let t = Instant::now();
+            for _ in 0..passes {
+                black_box(run_class(solver, &probs, &mut lemke, &mut sol));
+            }
+            let dt = t.elapsed().as_secs_f64();
+            if dt >= min_time {
+                break;
+            }
+            let grow = if dt > 0.0 {
+                (1.25 * min_time / dt).ceil()
+            } else {
+                10.0
+            };
+            passes = passes.saturating_mul((grow as usize).clamp(2, 1000));
+        }
+        let mut rates = Vec::with_capacity(repeats);
+        for _ in 0..repeats {
+            let t = Instant::now();
+            for _ in 0..passes {
+                black_box(run_class(solver, &probs, &mut lemke, &mut sol));
+            }
+            let dt = t.elapsed().as_secs_f64();
+            rates.push((passes * probs.len()) as f64 / dt);
+        }
+        rates.sort_by(f64::total_cmp);
+        let median = rates[rates.len() / 2];
+        classes.push(serde_json::json!({
+            "class": class,
+            "count": probs.len(),
+            "solved": solved,
+            "solves_per_s": pounding::output::json_float(median),
+            "max_residual": pounding::output::json_float(maxres),
+        }));
+    }
+    let out = serde_json::json!({ "classes": classes });
+    println!("{}", serde_json::to_string_pretty(&out)?);
+    Ok(ExitCode::SUCCESS)
 }

@@ -1,5 +1,7 @@
 //! End-to-end tests of the `pounding` binary (one test binary; one module per subcommand).
 
+mod impact;
+
 use std::process::Command;
 
 /// The built `pounding` binary.

@@ -37,10 +37,17 @@
 //!
 //! # Implementation
 //!
-//! One kernel does the work for every size: it operates on slices, and is inlined into
-//! [`solve_fixed`] with a compile-time `n = N` (stack arrays, loops unrolled) and into
-//! [`Lemke::solve`] with a run-time `n` (heap workspace kept between solves). [`Lemke::solve`]
-//! dispatches `n ∈ {2, 3, 4, 6, 12}` to the fixed-size kernels.
+//! The tableau is kept in *compact* form: only the `n + 1` nonbasic columns `B⁻¹A_N` and `b` are
+//! stored and each pivot exchanges a basic and a nonbasic variable (`n·(n+2)` multiply-adds per
+//! pivot instead of `n·(2n+2)` for the full tableau). A column of `B⁻¹` needed by the
+//! lexicographic rule is the stored column of `w_k` when `w_k` is nonbasic and the unit vector of
+//! its row when it is basic. The `z₀` column is never needed again after `z₀` enters (it leaves
+//! only at the end), so the first pivot is written in closed form.
+//!
+//! One kernel does the work for every size: it operates on slices and is inlined with a
+//! compile-time `n` into [`solve_fixed`] (stack arrays) and into [`Lemke::solve`] for
+//! `n ∈ {2, 3, 4, 6, 12}` (loops unrolled and vectorised by the compiler), and with a run-time `n`
+//! for the other sizes (heap workspace kept between solves, so a warm solve allocates nothing).
 
 use super::{FixedSolution, LcpProblem, LcpSolution, LcpStatus, LemkeSettings};
 
@@ -52,21 +59,23 @@ pub(crate) struct KernelOut {
     pub residual: f64,
 }
 
-/// Mutable workspace of the kernel (all slices at least as long as stated).
+/// Mutable workspace of the kernel (every slice at least as long as stated).
 pub(crate) struct Work<'a> {
-    /// `B⁻¹` (the `w` columns of the tableau), `n × n` row-major.
-    pub binv: &'a mut [f64],
-    /// `−B⁻¹ M` (the `z` columns of the tableau), `n × n` row-major.
-    pub tz: &'a mut [f64],
+    /// The first `n` nonbasic columns of the compact tableau `B⁻¹A_N`, `n × n` row-major.
+    pub t: &'a mut [f64],
+    /// The last nonbasic column, length `n`.
+    pub tx: &'a mut [f64],
     /// `B⁻¹ q`, length `n`.
     pub b: &'a mut [f64],
-    /// Basic variable of each row: `0..n` = `wᵢ`, `n..2n` = `z_{i−n}`, `2n` = `z₀`; length `n`.
-    pub basis: &'a mut [usize],
     /// Entering column, length `n`.
     pub d: &'a mut [f64],
-    /// Tied rows of the ratio test, length `n`.
-    pub ties: &'a mut [usize],
+    /// Integer scratch, length `5n + 1`: basis (row → variable), column → variable (`n + 1`),
+    /// position of each `w_k` and of each `z_k`, tied rows.
+    pub iw: &'a mut [usize],
 }
+
+/// Position code: `< ROW` a column index; `≥ ROW` the row `code − ROW`.
+const ROW: usize = 1 << 30;
 
 /// Verifies `z` against the original data and writes `w = M z + q`.
 /// Returns `(passed, residual)`; a non-finite number anywhere fails.
@@ -110,8 +119,10 @@ pub(crate) fn verify(
 
 /// The lexicographic Lemke kernel. `m` is row-major `n × n`; `z`, `w` receive the result
 /// (`NaN` unless the status is [`LcpStatus::Solved`]).
+///
+/// Variables: `w_k = k`, `z_k = n + k`, `z₀ = 2n`. Tableau convention: with `x_N` the nonbasic
+/// variables, `x_B = b − T x_N` (`T = B⁻¹A_N` for the system `[I, −M, −e] (w, z, z₀) = q`).
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
 pub(crate) fn kernel(
     n: usize,
     m: &[f64],
@@ -125,12 +136,14 @@ pub(crate) fn kernel(
     let q = &q[..n];
     let z = &mut z[..n];
     let w = &mut w[..n];
-    let binv = &mut wk.binv[..n * n];
-    let tz = &mut wk.tz[..n * n];
+    let t = &mut wk.t[..n * n];
+    let tx = &mut wk.tx[..n];
     let b = &mut wk.b[..n];
-    let basis = &mut wk.basis[..n];
     let d = &mut wk.d[..n];
-    let ties = &mut wk.ties[..n];
+    let (basis, rest) = wk.iw[..5 * n + 1].split_at_mut(n);
+    let (colvar, rest) = rest.split_at_mut(n + 1);
+    let (pos_w, rest) = rest.split_at_mut(n);
+    let (pos_z, ties) = rest.split_at_mut(n);
     let tie_tol = s.tie_tol();
     let pivot_tol = s.pivot_tol();
 
@@ -168,33 +181,32 @@ pub(crate) fn kernel(
         return fail(LcpStatus::MaxPivots, 0, z, w);
     }
 
-    // ---- tableau after the first pivot (z₀ enters in row r0; its column −e is not kept) ----
+    // ---- compact tableau after the first pivot: z₀ (column n, entries −1) replaces w_{r0} ----
+    // row r0: T = M_{r0,·}, b = −q_{r0}; rows i ≠ r0: T = M_{r0,·} − M_{i,·}, b = q_i − q_{r0};
+    // column n now holds w_{r0}: entries −1.
     let qr = q[r0];
+    let mr = &m[r0 * n..r0 * n + n];
     for i in 0..n {
-        let bi = &mut binv[i * n..i * n + n];
-        let ti = &mut tz[i * n..i * n + n];
+        let ti = &mut t[i * n..i * n + n];
+        let mi = &m[i * n..i * n + n];
         if i == r0 {
-            for j in 0..n {
-                bi[j] = if j == r0 { -1.0 } else { 0.0 };
-                ti[j] = m[r0 * n + j];
-            }
+            ti.copy_from_slice(mr);
             b[i] = -qr;
             basis[i] = 2 * n;
         } else {
             for j in 0..n {
-                bi[j] = if j == i {
-                    1.0
-                } else if j == r0 {
-                    -1.0
-                } else {
-                    0.0
-                };
-                ti[j] = m[r0 * n + j] - m[i * n + j];
+                ti[j] = mr[j] - mi[j];
             }
             b[i] = q[i] - qr;
             basis[i] = i;
         }
+        tx[i] = -1.0;
+        colvar[i] = n + i;
+        pos_z[i] = i;
+        pos_w[i] = ROW + i;
     }
+    colvar[n] = r0;
+    pos_w[r0] = n;
     let z0_row = r0;
     let mut pivots = 1usize;
     let mut entering = n + r0; // the complement of w_{r0}
@@ -203,15 +215,17 @@ pub(crate) fn kernel(
         if pivots >= s.max_pivots() {
             return fail(LcpStatus::MaxPivots, pivots, z, w);
         }
-        // entering column
-        if entering < n {
-            for i in 0..n {
-                d[i] = binv[i * n + entering];
-            }
+        // entering column (the entering variable is always nonbasic)
+        let c = if entering < n {
+            pos_w[entering]
         } else {
-            let j = entering - n;
+            pos_z[entering - n]
+        };
+        if c == n {
+            d.copy_from_slice(tx);
+        } else {
             for i in 0..n {
-                d[i] = tz[i * n + j];
+                d[i] = t[i * n + c];
             }
         }
         // ratio test: strict minimum of max(bᵢ,0)/dᵢ over dᵢ > thr (cross-multiplied)
@@ -264,47 +278,63 @@ pub(crate) fn kernel(
         } else if z0_tied {
             z0_row
         } else {
-            lexmin(n, binv, d, &mut ties[..nt], tie_tol)
+            lexmin(n, t, tx, pos_w, d, &mut ties[..nt], tie_tol)
         };
 
-        // pivot on (r, entering)
+        // exchange pivot on (r, c): the entering variable becomes basic in row r, the leaving
+        // one takes column c. Row r is divided by the pivot; the other rows lose f·(row r);
+        // column c becomes (1/p in row r, −dᵢ/p elsewhere).
         let inv = 1.0 / d[r];
         {
-            let br = &mut binv[r * n..r * n + n];
-            for x in br.iter_mut() {
-                *x *= inv;
-            }
-            let tr = &mut tz[r * n..r * n + n];
+            let tr = &mut t[r * n..r * n + n];
             for x in tr.iter_mut() {
                 *x *= inv;
             }
+            tx[r] *= inv;
             b[r] *= inv;
         }
+        let (txr, br) = (tx[r], b[r]);
         for i in 0..n {
             if i == r {
                 continue;
             }
             let f = d[i];
-            if f == 0.0 {
-                continue;
-            }
             for j in 0..n {
-                binv[i * n + j] -= f * binv[r * n + j];
-                tz[i * n + j] -= f * tz[r * n + j];
+                t[i * n + j] -= f * t[r * n + j];
             }
-            b[i] -= f * b[r];
+            tx[i] -= f * txr;
+            b[i] -= f * br;
+        }
+        if c == n {
+            for i in 0..n {
+                tx[i] = -d[i] * inv;
+            }
+            tx[r] = inv;
+        } else {
+            for i in 0..n {
+                t[i * n + c] = -d[i] * inv;
+            }
+            t[r * n + c] = inv;
         }
         let leaving = basis[r];
         basis[r] = entering;
+        if entering < n {
+            pos_w[entering] = ROW + r;
+        } else {
+            pos_z[entering - n] = ROW + r;
+        }
         pivots += 1;
         if leaving == 2 * n {
             break;
         }
-        entering = if leaving < n {
-            leaving + n
+        colvar[c] = leaving;
+        if leaving < n {
+            pos_w[leaving] = c;
+            entering = leaving + n;
         } else {
-            leaving - n
-        };
+            pos_z[leaving - n] = c;
+            entering = leaving - n;
+        }
     }
 
     // ---- z₀ left: read z off the basis and verify ----
@@ -351,35 +381,54 @@ fn fail(status: LcpStatus, pivots: usize, z: &mut [f64], w: &mut [f64]) -> Kerne
 
 /// Lexicographic tie-break among the tied rows: the lexicographic minimum of `(B⁻¹)ᵢ / dᵢ`,
 /// column by column, entries within `tie_tol` (relative to the rows' scale) counting as equal.
+/// Column `k` of `B⁻¹` is the tableau column of `w_k` if `w_k` is nonbasic, else a unit vector.
 #[cold]
 #[inline(never)]
-fn lexmin(n: usize, binv: &[f64], d: &[f64], ties: &mut [usize], tie_tol: f64) -> usize {
+fn lexmin(
+    n: usize,
+    t: &[f64],
+    tx: &[f64],
+    pos_w: &[usize],
+    d: &[f64],
+    ties: &mut [usize],
+    tie_tol: f64,
+) -> usize {
+    let binv = |i: usize, k: usize| -> f64 {
+        let p = pos_w[k];
+        if p >= ROW {
+            if p - ROW == i { 1.0 } else { 0.0 }
+        } else if p == n {
+            tx[i]
+        } else {
+            t[i * n + p]
+        }
+    };
     let mut scale = 0.0f64;
     for &i in ties.iter() {
-        for j in 0..n {
-            scale = scale.max((binv[i * n + j] / d[i]).abs());
+        for k in 0..n {
+            scale = scale.max((binv(i, k) / d[i]).abs());
         }
     }
     let tol = tie_tol * scale.max(f64::MIN_POSITIVE);
     let mut len = ties.len();
-    for col in 0..n {
+    for k in 0..n {
         let mut vmin = f64::INFINITY;
         for &i in &ties[..len] {
-            vmin = vmin.min(binv[i * n + col] / d[i]);
+            vmin = vmin.min(binv(i, k) / d[i]);
         }
-        let mut k = 0;
-        for t in 0..len {
-            let i = ties[t];
-            if binv[i * n + col] / d[i] <= vmin + tol {
-                ties[k] = i;
-                k += 1;
+        let mut kept = 0;
+        for j in 0..len {
+            let i = ties[j];
+            if binv(i, k) / d[i] <= vmin + tol {
+                ties[kept] = i;
+                kept += 1;
             }
         }
-        if k == 0 {
+        if kept == 0 {
             // only possible with NaN entries: keep the first candidate
             return ties[0];
         }
-        len = k;
+        len = kept;
         if len == 1 {
             break;
         }
@@ -398,36 +447,23 @@ pub fn solve_fixed<const N: usize>(
     q: &[f64; N],
     settings: &LemkeSettings,
 ) -> FixedSolution<N> {
-    solve_fixed_slice::<N>(m.as_flattened(), q, settings)
-}
-
-/// Fixed-size kernel on a row-major slice of length `N·N` (checked by the caller).
-#[inline]
-pub(crate) fn solve_fixed_slice<const N: usize>(
-    m: &[f64],
-    q: &[f64],
-    settings: &LemkeSettings,
-) -> FixedSolution<N> {
-    let mut binv = [[0.0f64; N]; N];
-    let mut tz = [[0.0f64; N]; N];
-    let mut b = [0.0f64; N];
-    let mut basis = [0usize; N];
-    let mut d = [0.0f64; N];
-    let mut ties = [0usize; N];
+    let mut t = [[0.0f64; N]; N];
+    let mut v = [[0.0f64; N]; 3];
+    let mut iw = [[0usize; N]; 6];
     let mut z = [0.0f64; N];
     let mut w = [0.0f64; N];
+    let [tx, b, d] = &mut v;
     let out = kernel(
         N,
-        m,
+        m.as_flattened(),
         q,
         settings,
         Work {
-            binv: binv.as_flattened_mut(),
-            tz: tz.as_flattened_mut(),
-            b: &mut b,
-            basis: &mut basis,
-            d: &mut d,
-            ties: &mut ties,
+            t: t.as_flattened_mut(),
+            tx,
+            b,
+            d,
+            iw: iw.as_flattened_mut(),
         },
         &mut z,
         &mut w,
@@ -444,8 +480,8 @@ pub(crate) fn solve_fixed_slice<const N: usize>(
 /// Lexicographic Lemke's method with a reusable workspace (no allocation per solve once warm).
 ///
 /// See the [module documentation](crate::lcp::lemke) for the algorithm, the tie rules and the verification that
-/// guards [`LcpStatus::Solved`]. Sizes `n ∈ {2, 3, 4, 6, 12}` run size-specialised kernels
-/// ([`solve_fixed`]); other sizes run the same kernel on the heap workspace.
+/// guards [`LcpStatus::Solved`]. Sizes `n ∈ {2, 3, 4, 6, 12}` run size-specialised copies of
+/// the kernel (compile-time `n`); every size uses the heap workspace kept in the solver.
 #[derive(Debug, Clone, Default)]
 pub struct Lemke {
     /// The settings in force.
@@ -486,52 +522,43 @@ impl Lemke {
         out.w.resize(n, 0.0);
         let m = problem.m_row_major();
         let q = problem.q();
-        macro_rules! fixed {
-            ($k:literal) => {{
-                let f = solve_fixed_slice::<$k>(m, q, &self.settings);
-                out.z.copy_from_slice(&f.z);
-                out.w.copy_from_slice(&f.w);
-                out.status = f.status;
-                out.pivots = f.pivots;
-                out.residual = f.residual;
-                return;
-            }};
-        }
-        match n {
-            2 => fixed!(2),
-            3 => fixed!(3),
-            4 => fixed!(4),
-            6 => fixed!(6),
-            12 => fixed!(12),
-            _ => {}
-        }
         let nn = n * n;
-        if self.ws.len() < 2 * nn + 2 * n {
-            self.ws.resize(2 * nn + 2 * n, 0.0);
+        if self.ws.len() < nn + 3 * n {
+            self.ws.resize(nn + 3 * n, 0.0);
         }
-        if self.wsi.len() < 2 * n {
-            self.wsi.resize(2 * n, 0);
+        if self.wsi.len() < 5 * n + 1 {
+            self.wsi.resize(5 * n + 1, 0);
         }
-        let (binv, rest) = self.ws.split_at_mut(nn);
-        let (tz, rest) = rest.split_at_mut(nn);
+        let (t, rest) = self.ws.split_at_mut(nn);
+        let (tx, rest) = rest.split_at_mut(n);
         let (b, d) = rest.split_at_mut(n);
-        let (basis, ties) = self.wsi.split_at_mut(n);
-        let k = kernel(
-            n,
-            m,
-            q,
-            &self.settings,
-            Work {
-                binv,
-                tz,
-                b,
-                basis,
-                d,
-                ties,
-            },
-            &mut out.z,
-            &mut out.w,
-        );
+        macro_rules! run {
+            ($k:expr) => {
+                kernel(
+                    $k,
+                    m,
+                    q,
+                    &self.settings,
+                    Work {
+                        t,
+                        tx,
+                        b,
+                        d,
+                        iw: &mut self.wsi,
+                    },
+                    &mut out.z,
+                    &mut out.w,
+                )
+            };
+        }
+        let k = match n {
+            2 => run!(2),
+            3 => run!(3),
+            4 => run!(4),
+            6 => run!(6),
+            12 => run!(12),
+            _ => run!(n),
+        };
         out.status = k.status;
         out.pivots = k.pivots;
         out.residual = k.residual;

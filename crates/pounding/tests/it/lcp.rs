@@ -616,3 +616,29 @@ fn analytic(mu: f64, eps: f64, gn: f64, gt: f64, g: [f64; 3]) -> (f64, f64, f64)
         )
     }
 }
+
+/// `lcp_tobenna.dat` (n = 40) is riddled with ratio ties. The exact rational lexicographic run
+/// takes 127 pivots; with ties detected within a tolerance over a wide range we follow exactly
+/// that path, while exact floating-point comparisons (tie_tol = 0) leave it.
+#[test]
+fn tobenna_needs_tolerant_ties() {
+    let Some(dir) = siconos_dir() else { return };
+    let p = io::read_siconos(&dir.join("lcp_tobenna.dat")).unwrap();
+    let run = |tt: f64| {
+        let s = LemkeSettings::default()
+            .with_tie_tol(tt)
+            .unwrap()
+            .with_max_pivots(5000)
+            .unwrap();
+        Lemke::new(s).solve(&p)
+    };
+    for tt in [1e-14, 1e-12, 1e-10, 1e-8, 1e-6] {
+        let sol = run(tt);
+        assert_eq!(
+            (sol.status, sol.pivots),
+            (LcpStatus::Solved, 127),
+            "tie_tol {tt}"
+        );
+    }
+    assert_ne!(run(0.0).pivots, 127);
+}

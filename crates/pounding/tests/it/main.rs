@@ -4,5 +4,6 @@ mod analytic;
 mod common;
 mod contact;
 mod geometry;
+mod impact;
 mod lcp;
 mod study;
