@@ -221,7 +221,13 @@ fn finish(
     let svg = study.scenario.output.svg || common.svg;
     let figures = if draw {
         let t = Instant::now();
-        let figs = crate::figures::draw_all(&study, out, svg, pool)?;
+        let pb = progress_bar(0, "figures");
+        let tick = |n: usize, total: usize| {
+            pb.set_length(total as u64);
+            pb.inc(n as u64);
+        };
+        let figs = crate::figures::draw_all(&study, out, svg, pool, &tick)?;
+        pb.finish_and_clear();
         eprintln!(
             "drew {} figures in {:.2} s",
             figs.iter().map(|g| g.figures.len()).sum::<usize>(),

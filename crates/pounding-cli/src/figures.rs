@@ -98,6 +98,7 @@ pub fn draw_all(
     out: &Path,
     svg: bool,
     pool: &rayon::ThreadPool,
+    progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<Vec<FigureGroup>> {
     register();
     let dir = out.join("figures");
@@ -157,7 +158,11 @@ pub fn draw_all(
     }
     let drawn: Vec<(usize, Result<Figure, String>)> = pool.install(|| {
         jobs.par_iter()
-            .map(|(g, job)| (*g, draw_job(study, out, svg, job)))
+            .map(|(g, job)| {
+                let r = draw_job(study, out, svg, job);
+                progress(1, jobs.len());
+                (*g, r)
+            })
             .collect()
     });
     for (g, fig) in drawn {
