@@ -62,6 +62,7 @@ const INWARD: RGBColor = RGBColor(142, 68, 173);
 const LOWER: RGBColor = RGBColor(31, 97, 180);
 const UPPER: RGBColor = RGBColor(200, 40, 40);
 const GREY: RGBColor = RGBColor(200, 200, 200);
+const SINGLE: RGBColor = RGBColor(110, 60, 150);
 
 type DrawResult = Result<(), String>;
 /// A triangle in chart coordinates (θ1, r, θ2).
@@ -334,28 +335,8 @@ fn surface<DB: DrawingBackend>(
         font(20),
     ))
     .map_err(e)?;
-    legend(
-        &top,
-        &[
-            (LOWER.to_rgba(), "lower bound L (outward slip below)"),
-            (UPPER.to_rgba(), "upper bound U (inward slip above)"),
-            (LOWER.mix(0.18), "pale: not the first contact"),
-        ],
-        40,
-    )?;
-    let panels = body.split_evenly((2, 2));
     let layout = pounding::study::Layout::of(s);
-    for (p, case) in ContactCase::ALL.into_iter().enumerate() {
-        let area = &panels[p];
-        let Some(ci) = s.cases.iter().position(|&c| c == case) else {
-            area.draw(&Text::new(
-                format!("{} — not in this scenario", case.name()),
-                (20, 20),
-                font(16),
-            ))
-            .map_err(e)?;
-            continue;
-        };
+    let block = |ci: usize| {
         let first = layout.index(&RowKey {
             beta1: geom[0],
             beta2: geom[1],
@@ -367,8 +348,50 @@ fn surface<DB: DrawingBackend>(
             i: 0,
             j: 0,
         });
-        let rows = &study.rows[first..first + layout.block_len()];
-        surface_panel(study, case, rows, area)?;
+        &study.rows[first..first + layout.block_len()]
+    };
+    // μ = 0 (or any law giving L = U everywhere): one dividing surface, drawn once.
+    let single = (0..s.cases.len()).all(|ci| {
+        block(ci)
+            .iter()
+            .all(|r| r.cell.lower.is_nan() || r.cell.lower == r.cell.upper)
+    });
+    if single {
+        legend(
+            &top,
+            &[
+                (
+                    SINGLE.to_rgba(),
+                    "L = U: one dividing surface (outward slip below, inward slip above)",
+                ),
+                (SINGLE.mix(0.18), "pale: not the first contact"),
+            ],
+            40,
+        )?;
+    } else {
+        legend(
+            &top,
+            &[
+                (LOWER.to_rgba(), "lower bound L (outward slip below)"),
+                (UPPER.to_rgba(), "upper bound U (inward slip above)"),
+                (LOWER.mix(0.18), "pale: not the first contact"),
+            ],
+            40,
+        )?;
+    }
+    let panels = body.split_evenly((2, 2));
+    for (p, case) in ContactCase::ALL.into_iter().enumerate() {
+        let area = &panels[p];
+        let Some(ci) = s.cases.iter().position(|&c| c == case) else {
+            area.draw(&Text::new(
+                format!("{} — not in this scenario", case.name()),
+                (20, 20),
+                font(16),
+            ))
+            .map_err(e)?;
+            continue;
+        };
+        surface_panel(study, case, block(ci), single, area)?;
     }
     Ok(())
 }
@@ -377,6 +400,7 @@ fn surface_panel<DB: DrawingBackend>(
     study: &Study,
     case: ContactCase,
     rows: &[pounding::study::Row],
+    single: bool,
     area: &DrawingArea<DB, Shift>,
 ) -> DrawResult {
     let s = &study.scenario;
@@ -452,7 +476,12 @@ fn surface_panel<DB: DrawingBackend>(
                     continue;
                 }
                 let fc = cells.iter().all(|c| c.first_contact);
-                for (upper, base) in [(false, LOWER), (true, UPPER)] {
+                let surfaces: &[(bool, RGBColor)] = if single {
+                    &[(false, SINGLE)]
+                } else {
+                    &[(false, LOWER), (true, UPPER)]
+                };
+                for &(upper, base) in surfaces {
                     let pts = tri.map(|(a, b)| {
                         let c = at(a, b);
                         let v = if upper { c.upper } else { c.lower };
