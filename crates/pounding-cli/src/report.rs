@@ -155,6 +155,7 @@ pub fn report_html(study: &Study, groups: &[FigureGroup], figures_drawn: bool) -
             let _ = write!(h, "<a href=\"#{}\">{}</a> · ", esc(&g.id), esc(&g.title));
         }
         h.push_str("</p>\n");
+        h.push_str(&paper_map(study, groups));
         for g in groups {
             let _ = writeln!(h, "<h3 id=\"{}\">{}</h3>", esc(&g.id), esc(&g.title));
             for f in &g.figures {
@@ -185,4 +186,39 @@ pub fn report_html(study: &Study, groups: &[FigureGroup], figures_drawn: bool) -
 <li>Joint-anchored placement: each deck turns about its own face midpoint; the first contact of a cell is decided geometrically (deck 1's inner corner iff θ1 &lt; −|θ2|, outer iff θ1 &gt; |θ2|, likewise for deck 2). Bounds are computed for every cell of every case; the flags mark physically possible ones.</li>\n\
 <li>lcp_agrees: Lemke's method on the single-contact impact LCP reproduces the analytic mode just below L, mid-interval and just above U.</li>\n</ul>\n</body>\n</html>\n");
     h
+}
+
+/// Where the paper's Figures 3–8 are in this report (when the scenario contains their geometries).
+fn paper_map(study: &Study, groups: &[FigureGroup]) -> String {
+    let s = &study.scenario;
+    let mut rows = String::new();
+    for (fig, b1, b2) in [
+        (3, 60.0, 60.0),
+        (4, 60.0, 90.0),
+        (5, 90.0, 60.0),
+        (6, 90.0, 90.0),
+    ] {
+        if !(s.beta1_deg.contains(&b1) && s.beta2_deg.contains(&b2)) {
+            continue;
+        }
+        let prefix = format!("g-b1-{}-b2-{}-", float_token(b1), float_token(b2));
+        let links: Vec<String> = groups
+            .iter()
+            .filter(|g| g.id.starts_with(&prefix))
+            .map(|g| format!("<a href=\"#{}\">{}</a>", esc(&g.id), esc(&g.title)))
+            .collect();
+        let _ = writeln!(
+            rows,
+            "<tr><td class=\"l\">Figure {fig} (β1 = {b1}°, β2 = {b2}°)</td><td class=\"l\">surface plots of {}</td></tr>",
+            links.join(", ")
+        );
+    }
+    if !rows.is_empty() {
+        rows.push_str("<tr><td class=\"l\">Figures 7 and 8</td><td class=\"l\">the region maps of every geometry: left column = deck 1 strikes (Figure 7), right column = deck 2 strikes (Figure 8)</td></tr>\n");
+        format!(
+            "<table>\n<tr><th class=\"l\">Paper</th><th class=\"l\">Here</th></tr>\n{rows}</table>\n"
+        )
+    } else {
+        String::new()
+    }
 }
