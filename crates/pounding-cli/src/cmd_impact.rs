@@ -5,8 +5,8 @@ use anyhow::{Context, Result, anyhow, bail};
 use pounding::analytic::{self, ImpactLaw};
 use pounding::contact::{self, Delassus};
 use pounding::geometry::{
-    ContactCase, Deck, ImpactConfiguration, MassProperties, SArrangement, SigmaMode,
-    validate_rotation,
+    ContactCase, ContactDetection, Deck, ImpactConfiguration, MassProperties, SArrangement,
+    SigmaMode, validate_rotation,
 };
 use pounding::impact::{
     self, ContactMode, ContactSpec, ImpactProblem, ImpactSettings, ImpactSolution, ImpactStatus,
@@ -110,6 +110,10 @@ pub struct ImpactArgs {
     /// Pre-impact ratio r = γ_T⁻/γ_N⁻ (evaluated with γ_N⁻ = −1): also solve the impact.
     #[arg(long, allow_negative_numbers = true)]
     ratio: Option<f64>,
+    /// Joint opening g [m] (M_1 = (0, g)): also report which corner touches first and after what
+    /// closing distance, or the overlap if the pose already interpenetrates (spec §5.5).
+    #[arg(long, allow_negative_numbers = true)]
+    opening: Option<f64>,
     /// Print JSON instead of the readable summary.
     #[arg(long)]
     json: bool,
@@ -190,6 +194,12 @@ fn run_bridge(a: &ImpactArgs) -> Result<ExitCode> {
     {
         bail!("invalid ratio = {r}: must be finite");
     }
+    if let Some(g) = a.opening
+        && !g.is_finite()
+    {
+        bail!("invalid opening = {g}: must be finite");
+    }
+    let detection = a.opening.map(|g| (g, s.detect_contact(t1r, t2r, g)));
     let (p1, p2) = (d1.mass_properties(), d2.mass_properties());
     let result = s.configuration(case, t1r, t2r, mode).map(|config| {
         let g = contact::delassus(&s, &config);
@@ -298,6 +308,24 @@ fn run_bridge(a: &ImpactArgs) -> Result<ExitCode> {
             }
         }
     }
+    if let Some((g, d)) = &detection {
+        let v = match d {
+            ContactDetection::Contact {
+                case,
+                closing_distance,
+            } => json!({"opening": json_float(*g), "first_contact_case": case.name(),
+                         "closing_distance": json_float(*closing_distance), "overlap": null}),
+            ContactDetection::Overlap { case, overlap } => {
+                json!({"opening": json_float(*g), "first_contact_case": case.name(),
+                       "closing_distance": null, "overlap": json_float(*overlap)})
+            }
+            ContactDetection::Degenerate(_) => {
+                json!({"opening": json_float(*g), "first_contact_case": null,
+                       "closing_distance": null, "overlap": null})
+            }
+        };
+        out.insert("detection".into(), v);
+    }
     if a.json {
         println!("{}", serde_json::to_string_pretty(&Value::Object(out))?);
     } else {
@@ -311,6 +339,26 @@ fn run_bridge(a: &ImpactArgs) -> Result<ExitCode> {
             mode,
             &result,
         );
+        if let Some((g, d)) = &detection {
+            match d {
+                ContactDetection::Contact {
+                    case,
+                    closing_distance,
+                } => println!(
+                    "At opening g = {g} m the first contact is {} after closing {} m.",
+                    case.name(),
+                    fmt(*closing_distance)
+                ),
+                ContactDetection::Overlap { case, overlap } => println!(
+                    "At opening g = {g} m the decks already overlap by {} m (first contact {}).",
+                    fmt(*overlap),
+                    case.name()
+                ),
+                ContactDetection::Degenerate(k) => {
+                    println!("At opening g = {g} m: degenerate pose ({}).", k.name())
+                }
+            }
+        }
     }
     Ok(if failed {
         ExitCode::from(1)
@@ -329,8 +377,14 @@ fn bridge_label(m: ContactMode) -> &'static str {
     }
 }
 
+/// Readable number: 7 significant digits, positional for moderate magnitudes.
 fn fmt(x: f64) -> String {
-    if x.is_finite() {
+    if x == 0.0 {
+        "0".to_string()
+    } else if x.is_finite() && (1e-3..1e6).contains(&x.abs()) {
+        let digits = (6 - x.abs().log10().floor() as i32).clamp(0, 9) as usize;
+        format!("{x:.digits$}")
+    } else if x.is_finite() {
         format!("{x:.6e}")
     } else {
         pounding::output::float_token(x)

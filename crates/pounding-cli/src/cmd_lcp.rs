@@ -87,7 +87,7 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
 }
 
 fn read(file: &Path, solver: Solver) -> anyhow::Result<Vec<LcpEntry>> {
-    let set = io::read_any(file).with_context(|| "reading the LCP problem file".to_string())?;
+    let set = io::read_any(file)?;
     if solver == Solver::Enum {
         if let Some(e) = set.iter().find(|e| e.problem.dim() > 12) {
             bail!(

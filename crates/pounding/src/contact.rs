@@ -65,6 +65,7 @@ impl Delassus {
 /// w_N = ( ν_x, ν_y, A_1, −ν_x, −ν_y, −A_2 )ᵀ
 /// w_T = ( τ_x, τ_y, B_1, −τ_x, −τ_y, −B_2 )ᵀ
 /// ```
+/// (The configuration carries every vector needed; `arrangement` is part of the stable signature.)
 pub fn force_directions(
     arrangement: &SArrangement,
     config: &ImpactConfiguration,

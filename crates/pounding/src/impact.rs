@@ -349,8 +349,9 @@ pub struct ImpactSolution {
     pub energy_before: Real,
     /// Kinetic energy after \[J\].
     pub energy_after: Real,
-    /// Number of distinct solutions in `(Λ_N, Λ_T)` (hence `γ⁺`) found by enumeration; `1` when
-    /// enumeration did not run, `0` when it found none.
+    /// Number of distinct solutions in `(Λ_N, Λ_T)` (hence `γ⁺`) among Lemke's and the enumerated
+    /// ones (tolerance 1e-9 of the largest impulse); `1` when enumeration did not run, `0` when no
+    /// method found a solution. A continuum of solutions is represented by its vertices.
     pub solutions: usize,
     /// Whether enumeration ran.
     pub enumerated: bool,
@@ -612,10 +613,15 @@ pub fn solve(problem: &ImpactProblem, settings: &ImpactSettings) -> ImpactSoluti
     if want_enum && let Ok(p) = LcpProblem::new(a, b) {
         enumerated = lcp::enumerate(&p).ok();
     }
-    // distinct physical solutions (Λ_N, Λ_T) and post velocities among the enumerated ones
+    // distinct physical solutions (Λ_N, Λ_T) and post velocities among the enumerated ones (plus
+    // Lemke's, which enumeration may miss when it is not a vertex of the solution set)
     let (count, unique, first) = match &enumerated {
         Some(list) => {
-            let lam: Vec<Vec<Real>> = list.iter().map(|z| impulses(z, &laws)).collect();
+            let mut lam: Vec<Vec<Real>> = Vec::with_capacity(list.len() + 1);
+            if lemke_status.is_solved() {
+                lam.push(impulses(&z, &laws));
+            }
+            lam.extend(list.iter().map(|z| impulses(z, &laws)));
             let lscale = lam
                 .iter()
                 .flatten()
@@ -672,6 +678,9 @@ pub fn solve(problem: &ImpactProblem, settings: &ImpactSettings) -> ImpactSoluti
             tt: g[3],
         };
         let s = analytic::single_impact(&gd, &laws[0], gamma_pre[0], gamma_pre[1]);
+        if !(s.normal_impulse.is_finite() && s.tangential_impulse.is_finite()) {
+            return finish(ImpactStatus::Failed, lemke_status, None, 0, ran, true);
+        }
         return finish(
             ImpactStatus::SolvedByFallback,
             lemke_status,
@@ -786,6 +795,18 @@ pub fn solve_single(
     };
     let gnp = gamma_n_pre + g.nn * ln + g.nt * lt;
     let gtp = gamma_t_pre + g.nt * ln + g.tt * lt;
+    if !(gnp.is_finite() && gtp.is_finite() && ln.is_finite() && lt.is_finite()) {
+        // non-finite input data (e.g. a NaN entry of G): nothing trustworthy to report
+        return SingleSolution {
+            status: ImpactStatus::Failed,
+            lemke_status: s.status,
+            normal_impulse: Real::NAN,
+            tangential_impulse: Real::NAN,
+            gamma_n_post: Real::NAN,
+            gamma_t_post: Real::NAN,
+            mode: ContactMode::Open,
+        };
+    }
     let n = -gamma_n_pre;
     let mode = if gtp.abs() <= analytic::STICK_TOLERANCE * n {
         ContactMode::Stick

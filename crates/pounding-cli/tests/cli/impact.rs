@@ -303,3 +303,17 @@ fn generic_bad_input_names_the_parameter() {
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("--problem"));
 }
+
+/// Contact detection at an opening (spec §5.5): h ≈ 0.6097 m for θ = (−5°, 2°).
+#[test]
+fn bridge_contact_detection_at_an_opening() {
+    let v = json_of(&bridge(&[("--opening", "1.0")], &["--json"]));
+    let d = &v["detection"];
+    assert_eq!(d["first_contact_case"], Value::from("deck1-inner"));
+    assert!((f(&d["closing_distance"]) - (1.0 - f(&v["h"]))).abs() < 1e-12);
+    assert_eq!(d["overlap"], Value::Null);
+    let v = json_of(&bridge(&[("--opening", "0.05")], &["--json"]));
+    assert!((f(&v["detection"]["overlap"]) - (f(&v["h"]) - 0.05)).abs() < 1e-12);
+    let out = bridge(&[("--opening", "nan")], &[]);
+    assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("opening"));
+}

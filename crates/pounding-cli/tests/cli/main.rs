@@ -18,4 +18,9 @@ fn help_lists_subcommands() {
         assert!(s.contains(sub), "--help lacks {sub}: {s}");
     }
 }
+<<<<<<< HEAD
 mod study;
+=======
+
+mod lcp;
+>>>>>>> impact

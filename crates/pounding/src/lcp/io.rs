@@ -25,12 +25,12 @@ use thiserror::Error;
 #[derive(Debug, Error)]
 pub enum LcpIoError {
     /// The file could not be read (missing, a directory, not UTF-8, ...).
-    #[error("cannot read {}: {source}", path.display())]
+    #[error("cannot read {}: {cause}", path.display())]
     Io {
         /// The file.
         path: PathBuf,
-        /// The cause.
-        source: std::io::Error,
+        /// The cause (part of the message, hence not a `source`).
+        cause: std::io::Error,
     },
     /// The file's contents do not follow the format.
     #[error("{file}:{line}: expected {expected}, found {found}")]
@@ -45,14 +45,14 @@ pub enum LcpIoError {
         found: String,
     },
     /// A problem read from the file is invalid (e.g. size mismatch).
-    #[error("{file}:{line}: {source}")]
+    #[error("{file}:{line}: {cause}")]
     Invalid {
         /// File name (as given).
         file: String,
         /// 1-based line number of the problem.
         line: usize,
-        /// The cause.
-        source: LcpError,
+        /// The cause (part of the message, hence not a `source`).
+        cause: LcpError,
     },
 }
 
@@ -83,9 +83,9 @@ pub struct SolRecord {
 }
 
 fn read_text(path: &Path) -> Result<String, LcpIoError> {
-    let io = |source| LcpIoError::Io {
+    let io = |cause| LcpIoError::Io {
         path: path.to_path_buf(),
-        source,
+        cause,
     };
     if path.is_dir() {
         return Err(io(std::io::Error::new(
@@ -240,10 +240,10 @@ pub fn parse_siconos(text: &str, file: &str) -> Result<LcpProblem, LcpIoError> {
     for (i, qi) in q.iter_mut().enumerate() {
         *qi = t.f64(&format!("q[{i}] of {n}"))?;
     }
-    LcpProblem::new(m, q).map_err(|source| LcpIoError::Invalid {
+    LcpProblem::new(m, q).map_err(|cause| LcpIoError::Invalid {
         file: file.to_string(),
         line: ql,
-        source,
+        cause,
     })
 }
 
@@ -469,10 +469,10 @@ pub fn parse_lcpset(text: &str, file: &str) -> Result<Vec<LcpEntry>, LcpIoError>
             }
             _ => return Err(perr(ln, "`q <n numbers>`", &format!("`{}`", qt.join(" ")))),
         };
-        let problem = LcpProblem::new(m, q).map_err(|source| LcpIoError::Invalid {
+        let problem = LcpProblem::new(m, q).map_err(|cause| LcpIoError::Invalid {
             file: file.to_string(),
             line: pl,
-            source,
+            cause,
         })?;
         out.push(LcpEntry {
             id,

@@ -29,11 +29,16 @@
 //! ray*: [`LcpStatus::RayTermination`], no solution found by this method).
 //!
 //! Every end point is **verified** against the original data before it is reported as solved:
-//! with `w = M z + q` recomputed,
+//! with `w = M z + q` recomputed and `S` the rounding scale of that evaluation,
 //!
 //! ```text
-//! residual = maxᵢ |min(zᵢ, wᵢ)| / max(1, ‖q‖∞) ≤ tol_v,     zᵢ ≥ −tol_v·max(1, ‖q‖∞),     wᵢ ≥ −tol_v·max(1, ‖q‖∞).
+//! S = max(1, ‖q‖∞, maxᵢ Σⱼ |Mᵢⱼ zⱼ|),
+//! maxᵢ |min(zᵢ, wᵢ)| ≤ tol_v·S,     zᵢ ≥ −tol_v·S,     wᵢ ≥ −tol_v·S.
 //! ```
+//!
+//! The reported residual is `maxᵢ |min(zᵢ, wᵢ)| / max(1, ‖q‖∞)`; for well-scaled data
+//! `S = max(1, ‖q‖∞)` and the test reads `residual ≤ tol_v`. (When `z` is huge — nearly singular
+//! `M` — no floating-point `z` can make `M z + q` smaller than about `ε·S`, hence the scale.)
 //!
 //! # Implementation
 //!
@@ -78,7 +83,12 @@ pub(crate) struct Work<'a> {
 const ROW: usize = 1 << 30;
 
 /// Verifies `z` against the original data and writes `w = M z + q`.
-/// Returns `(passed, residual)`; a non-finite number anywhere fails.
+///
+/// Returns `(passed, residual)` with `residual = maxᵢ |min(zᵢ, wᵢ)| / max(1, ‖q‖∞)`. The test is
+/// relative to the rounding scale of `w`,
+/// `S = max(1, ‖q‖∞, maxᵢ Σⱼ |Mᵢⱼ zⱼ|)`: it passes when `z ≥ −tol·S`, `w ≥ −tol·S` and
+/// `maxᵢ |min(zᵢ, wᵢ)| ≤ tol·S` (for well-scaled data `S = max(1, ‖q‖∞)`, i.e. `residual ≤ tol`;
+/// for huge `z` the evaluation of `M z + q` alone loses `ε·S`). A non-finite number anywhere fails.
 #[inline(always)]
 pub(crate) fn verify(
     n: usize,
@@ -96,25 +106,30 @@ pub(crate) fn verify(
     for &qi in q {
         qn = qn.max(qi.abs());
     }
-    let lo = -tol * qn;
     let mut res = 0.0f64;
-    let mut ok = true;
+    let mut scale = qn;
+    let mut lowest = 0.0f64;
+    let mut finite = true;
     for i in 0..n {
         let row = &m[i * n..i * n + n];
         let mut wi = q[i];
+        let mut si = 0.0;
         for j in 0..n {
-            wi += row[j] * z[j];
+            let p = row[j] * z[j];
+            wi += p;
+            si += p.abs();
         }
         w[i] = wi;
         let zi = z[i];
         let c = zi.min(wi).abs();
-        // `max` ignores NaN, so test finiteness explicitly through the comparisons below.
-        res = if c > res { c } else { res };
-        ok &= wi >= lo && zi >= lo && c.is_finite();
+        res = res.max(c);
+        scale = scale.max(si);
+        lowest = lowest.min(zi.min(wi));
+        finite &= c.is_finite() && si.is_finite();
     }
-    let residual = res / qn;
-    ok &= residual <= tol;
-    (ok, residual)
+    let lim = tol * scale;
+    let ok = finite && res <= lim && lowest >= -lim;
+    (ok, res / qn)
 }
 
 /// The lexicographic Lemke kernel. `m` is row-major `n × n`; `z`, `w` receive the result

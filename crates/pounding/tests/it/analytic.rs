@@ -298,3 +298,70 @@ fn no_energy_gain_on_the_paper_set() {
     assert!(max_ratio < 0.75 && max_ratio > 0.3, "{max_ratio}");
     assert!(checked > 100_000);
 }
+
+/// The spec's grid statements (§9, §10, §11) for ε = 0.5 over all cells of the paper grid, taken as
+/// the closure of the θ-square (1° grid plus points 1e-6° off each diagonal cell, where the extremes
+/// are approached): L, U ranges for μ ∈ {0.25, 0.5, 1} to the printed 2 decimals,
+/// max `G_NT²/(G_NN G_TT)` = 0.358, min `G_NN/|G_NT|` = 1.328, and for μ ∈ {0.5, 1} max L = 0.216,
+/// min U = 0.968.
+#[test]
+fn paper_grid_statements_of_the_spec() {
+    let mut lo = [[f64::MAX, f64::MIN]; 3];
+    let mut up = [[f64::MAX, f64::MIN]; 3];
+    let (mut maxc, mut minq) = (0.0f64, f64::MAX);
+    for &(r1, r2) in &[
+        (100.0, 100.0),
+        (100.0, 200.0),
+        (200.0, 100.0),
+        (200.0, 200.0),
+    ] {
+        for &b1 in &[60.0, 90.0, 120.0] {
+            for &b2 in &[60.0, 90.0, 120.0] {
+                let s = SArrangement::new(deck(r1, b1), deck(r2, b2)).unwrap();
+                for i in -10..=10 {
+                    for jj in -30i32..=32 {
+                        let t2d = jj.div_euclid(3) as f64 + 1e-6 * (jj.rem_euclid(3) - 1) as f64;
+                        if !(-10.0..=10.0).contains(&t2d) {
+                            continue;
+                        }
+                        let (t1, t2) = ((i as f64).to_radians(), t2d.to_radians());
+                        for case in ContactCase::ALL {
+                            let Ok(c) = s.configuration(case, t1, t2, SigmaMode::Exact) else {
+                                continue;
+                            };
+                            let g = delassus(&s, &c);
+                            maxc = maxc.max(g.nt * g.nt / (g.nn * g.tt));
+                            minq = minq.min(g.nn / g.nt.abs());
+                            for (k, mu) in [0.25, 0.5, 1.0].into_iter().enumerate() {
+                                let b = stick_interval(&g, &ImpactLaw::new(mu, 0.5).unwrap());
+                                lo[k] = [lo[k][0].min(b.lower), lo[k][1].max(b.lower)];
+                                up[k] = [up[k][0].min(b.upper), up[k][1].max(b.upper)];
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    let r2 = |x: f64| (x * 100.0).round() / 100.0;
+    let spec_l = [[-0.99, 0.63], [-2.60, 0.22], [-10.64, -0.70]];
+    let spec_u = [[0.83, 1.84], [0.97, 2.73], [1.19, 4.29]];
+    for k in 0..3 {
+        assert_eq!(
+            [r2(lo[k][0]), r2(lo[k][1])],
+            spec_l[k],
+            "L range {k}: {:?}",
+            lo[k]
+        );
+        assert_eq!(
+            [r2(up[k][0]), r2(up[k][1])],
+            spec_u[k],
+            "U range {k}: {:?}",
+            up[k]
+        );
+    }
+    assert_eq!((maxc * 1000.0).round() / 1000.0, 0.358);
+    assert_eq!((minq * 1000.0).round() / 1000.0, 1.328);
+    assert_eq!((lo[1][1].max(lo[2][1]) * 1000.0).round() / 1000.0, 0.216);
+    assert_eq!((up[1][0].min(up[2][0]) * 1000.0).round() / 1000.0, 0.968);
+}

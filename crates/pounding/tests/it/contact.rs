@@ -29,6 +29,12 @@ fn close(value: f64, printed: &str, what: &str) {
     };
     let decimals = mant.find('.').map_or(0, |i| mant.len() - i - 1) as i32;
     let tol = (1e-8 * p.abs()).max(0.5 * 10f64.powi(exp - decimals) * (1.0 + 1e-9));
+    if (value - p).abs() > 1e-8 * p.abs() {
+        eprintln!(
+            "{what}: relative deviation {:.2e} exceeds 1e-8 (printed with {decimals} decimals)",
+            ((value - p) / p).abs()
+        );
+    }
     assert!((value - p).abs() <= tol, "{what}: {value} vs {printed}");
 }
 

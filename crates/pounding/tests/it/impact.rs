@@ -745,3 +745,99 @@ fn lcp_modes_around_the_bounds() {
         );
     }
 }
+
+/// Non-finite data never produce a silently wrong number: the status is `failed`, numbers NaN.
+#[test]
+fn non_finite_delassus_fails_cleanly() {
+    let law = ImpactLaw::new(0.5, 0.5).unwrap();
+    let g = Delassus {
+        nn: f64::NAN,
+        nt: 0.1,
+        tt: 1.0,
+    };
+    let s = solve_single(&g, &law, -1.0, 0.3, &LemkeSettings::default());
+    assert_eq!(s.status, ImpactStatus::Failed);
+    assert!(s.normal_impulse.is_nan());
+    let s = solve_single(
+        &Delassus {
+            nn: 1.0,
+            nt: 0.1,
+            tt: 1.0,
+        },
+        &law,
+        f64::NAN,
+        0.3,
+        &LemkeSettings::default(),
+    );
+    assert_eq!(s.status, ImpactStatus::Failed);
+    let s = solve_single(
+        &Delassus {
+            nn: 1.0,
+            nt: 0.1,
+            tt: 1.0,
+        },
+        &law,
+        0.5,
+        0.3,
+        &LemkeSettings::default(),
+    );
+    assert_eq!(
+        (s.status, s.mode, s.normal_impulse),
+        (ImpactStatus::NoImpact, ContactMode::Open, 0.0)
+    );
+}
+
+/// The study's `lcp_agrees` probes on the default study grid (every 2nd θ): Lemke's mode equals the
+/// analytic mode at `r = L − 1e-6·max(1,|L|)`, mid-interval and `U + 1e-6·max(1,|U|)` for
+/// μ ∈ {0, 0.25, 0.5, 1}, ε = 0.5, both σ modes.
+#[test]
+fn lcp_agrees_with_analytic_on_the_study_grid() {
+    let settings = LemkeSettings::default();
+    let mut checked = 0;
+    for &(r1, r2) in &[
+        (100.0, 100.0),
+        (100.0, 200.0),
+        (200.0, 100.0),
+        (200.0, 200.0),
+    ] {
+        for &b1 in &[60.0, 90.0, 120.0] {
+            for &b2 in &[60.0, 90.0, 120.0] {
+                let s = SArrangement::new(deck(r1, b1), deck(r2, b2)).unwrap();
+                for i in (0..=20).step_by(2) {
+                    for j in (0..=20).step_by(2) {
+                        let t1 = (-10.0 + i as f64).to_radians();
+                        let t2 = (-10.0 + j as f64).to_radians();
+                        for mode in [SigmaMode::Exact, SigmaMode::End] {
+                            for case in ContactCase::ALL {
+                                let Ok(c) = s.configuration(case, t1, t2, mode) else {
+                                    continue;
+                                };
+                                let g = delassus(&s, &c);
+                                for mu in [0.0, 0.25, 0.5, 1.0] {
+                                    let law = ImpactLaw::new(mu, 0.5).unwrap();
+                                    let b = stick_interval(&g, &law);
+                                    for r in [
+                                        b.lower - 1e-6 * b.lower.abs().max(1.0),
+                                        0.5 * (b.lower + b.upper),
+                                        b.upper + 1e-6 * b.upper.abs().max(1.0),
+                                    ] {
+                                        let an = single_impact(&g, &law, -1.0, -r);
+                                        let l = solve_single(&g, &law, -1.0, -r, &settings);
+                                        assert_eq!(l.status, ImpactStatus::Solved);
+                                        assert_eq!(
+                                            l.mode,
+                                            mode_of(an.mode),
+                                            "{r1} {r2} {b1} {b2} {i} {j} {case:?} mu {mu} r {r}"
+                                        );
+                                        checked += 1;
+                                    }
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(checked > 300_000, "{checked}");
+}
