@@ -247,7 +247,11 @@ fn bench(file: &Path, solver: Solver, min_time: f64, repeats: usize) -> anyhow::
     let mut sol = lemke.solve(&set[0].problem); // warm the workspace and output vectors
     let mut classes = Vec::new();
     for class in order {
-        let probs: Vec<&LcpEntry> = set.iter().filter(|e| e.class == class).collect();
+        // Copy the class's problems (outside the timer) so that their data lie contiguously in
+        // memory, in the order they are solved, as a caller building its problems in one go would
+        // have them (the parser's allocations are interleaved with its temporaries).
+        let owned: Vec<LcpEntry> = set.iter().filter(|e| e.class == class).cloned().collect();
+        let probs: Vec<&LcpEntry> = owned.iter().collect();
         let (solved, maxres) = run_class(solver, &probs, &mut lemke, &mut sol);
         // calibrate the number of passes so that one repeat takes >= min_time
         let mut passes = 1usize;
