@@ -18,9 +18,6 @@ fn help_lists_subcommands() {
         assert!(s.contains(sub), "--help lacks {sub}: {s}");
     }
 }
-<<<<<<< HEAD
-mod study;
-=======
 
 mod lcp;
->>>>>>> impact
+mod study;
