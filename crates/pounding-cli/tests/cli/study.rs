@@ -129,8 +129,8 @@ fn figures_are_drawn_and_every_report_link_resolves() {
 fn bad_scenarios_fail_naming_key_and_line_and_write_nothing() {
     let d = tmp("bad");
     let cases: [(&str, &str, &str); 5] = [
-        ("[impact]\nmu = [0.1,\n", "line 2", "`mu`"),
-        ("[decks]\nwidht_m = 10.0\n", "line 2", "widht_m"),
+        ("[impact]\nmu = [0.1,\n", "line 2", "`impact.mu`"),
+        ("[decks]\nwidht_m = 10.0\n", "line 2", "`decks.widht_m`"),
         (
             "[decks]\nr1_m = [100.0]\nr2_m = [4.0]\n",
             "line 3",

@@ -282,10 +282,19 @@ fn key_on_line(text: &str, pos: usize) -> Option<String> {
     let (k, _) = line.split_once('=')?;
     let k = k.trim();
     if k.is_empty() || k.starts_with('#') || k.starts_with('[') {
-        None
-    } else {
-        Some(k.to_string())
+        return None;
     }
+    // Prefix the enclosing `[table]`, if any.
+    let table = text[..start].lines().rev().find_map(|l| {
+        let l = l.trim();
+        l.strip_prefix('[')
+            .and_then(|r| r.split(']').next())
+            .map(|t| t.trim().to_string())
+    });
+    Some(match table {
+        Some(t) if !t.is_empty() => format!("{t}.{k}"),
+        _ => k.to_string(),
+    })
 }
 
 struct Ctx<'a> {
