@@ -109,6 +109,9 @@ pub fn plane_misfit(pts: &[(Real, Real, Real)]) -> Option<Real> {
 ///    first-contact cells of the deck-1 cases, per μ > 0.
 /// 5. *Inward slip negligible for μ > 0.25* (spec erratum 13): mean and minimum inward share over the
 ///    first-contact cells with μ > 0.25 ("negligible" taken as below 5 % of the ratio range).
+/// 6. *R1 = 200 m, R2 = 100 m, deck 1 strikes: more stick at the inner than at the outer corner*:
+///    cell-weighted mean stick share of `deck1-inner` vs `deck1-outer`, per μ > 0.
+/// 7. *More stick when deck 2's inner corner is in contact*: `deck2-inner` vs `deck2-outer`, per μ > 0.
 pub fn check_claims(
     scenario: &Scenario,
     rows: &[Row],
@@ -359,6 +362,77 @@ pub fn check_claims(
                     scenario.ratio_max,
                     pct(min_cell),
                     max_u
+                )
+            },
+            verdict,
+        });
+    }
+    // 6./7. inner vs outer corner stick share (results text on Figures 3–6)
+    for (id, claim, striking_deck1, r_filter) in [
+        (
+            "deck1-r200-r100-inner-more-stick",
+            "\"A unique feature is observed at the instance of deck-1 hitting deck-2, when the radius of deck-1 is 200m and that of deck-2 is 100m, where the amount stick region is more when the inner point of deck-1 is in contact and gradually decreases when the outer point is in impact.\" (results)",
+            true,
+            Some((200.0, 100.0)),
+        ),
+        (
+            "deck2-inner-more-stick",
+            "\"Variations in the stick regions can be observed with the amount of stick region being more when the inner point of deck-2 is in contact with the contour of deck-1.\" (results, Figures 5–6)",
+            false,
+            None,
+        ),
+    ] {
+        let (inner, outer) = if striking_deck1 {
+            (ContactCase::Deck1Inner, ContactCase::Deck1Outer)
+        } else {
+            (ContactCase::Deck2Inner, ContactCase::Deck2Outer)
+        };
+        let geom_ok = |r: &SummaryRow| r_filter.is_none_or(|(a, b)| r.r1_m == a && r.r2_m == b);
+        let mut parts = Vec::new();
+        let (mut yes, mut tested) = (0, 0);
+        for &(_, m) in mus.iter().filter(|&&(_, m)| m > 0.0) {
+            let si = weighted(
+                summaries,
+                |r| geom_ok(r) && r.mu == m && r.case == inner,
+                |r| r.stick_fraction,
+            );
+            let so = weighted(
+                summaries,
+                |r| geom_ok(r) && r.mu == m && r.case == outer,
+                |r| r.stick_fraction,
+            );
+            if si.is_nan() || so.is_nan() {
+                continue;
+            }
+            tested += 1;
+            if si > so {
+                yes += 1;
+            }
+            parts.push(format!("μ = {m}: inner {} vs outer {}", pct(si), pct(so)));
+        }
+        let verdict = if tested == 0 {
+            Verdict::NotTested
+        } else if yes == tested {
+            Verdict::Reproduced
+        } else if yes == 0 {
+            Verdict::Contradicted
+        } else {
+            Verdict::Partly
+        };
+        out.push(ClaimCheck {
+            id,
+            claim,
+            metric: if parts.is_empty() {
+                "the scenario has no such cells with μ > 0.".into()
+            } else {
+                format!(
+                    "Mean stick share of the ratio range over first-contact cells{}: {}.",
+                    if r_filter.is_some() {
+                        " with R1 = 200 m, R2 = 100 m"
+                    } else {
+                        ""
+                    },
+                    parts.join("; ")
                 )
             },
             verdict,

@@ -591,7 +591,12 @@ fn claims_restate_the_paper_with_this_runs_numbers() {
         get("inward-negligible-mu-gt-0.25").verdict,
         Verdict::Contradicted
     );
-    assert!(claims.len() >= 5);
+    assert_eq!(claims.len(), 7);
+    for id in ["deck1-r200-r100-inner-more-stick", "deck2-inner-more-stick"] {
+        let c = get(id);
+        assert_ne!(c.verdict, Verdict::NotTested, "{c:?}");
+        assert!(c.metric.contains("inner") && c.metric.contains("outer"));
+    }
     // Without μ = 0 the single-surface claim is not tested.
     let st2 = study(&SMALL.replace("mu = [0.5, 0.0, 1.0, 0.25]", "mu = [0.5]"));
     let c2 = st2.claims();
