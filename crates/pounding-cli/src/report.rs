@@ -96,7 +96,7 @@ pub fn report_html(study: &Study, groups: &[FigureGroup], figures_drawn: bool) -
             esc(c.verdict.label())
         );
     }
-    h.push_str("</table>\n<p>Verdicts follow from the metrics stated; where the numbers contradict the paper the table says so. The fractions are shares of the ratio range over first-contact cells only (summary.csv).</p>\n");
+    h.push_str("</table>\n<p>Verdicts follow from the metrics stated, computed under the project's specification (its conventions and modelling choices: joint-anchored placement, the σ mode of the scenario); where the numbers contradict the paper the table says so. The fractions are shares of the ratio range over first-contact cells only (summary.csv); stick shares do not depend on the sign convention of the tangent (reversing it maps [L, U] to [−U, −L]).</p>\n");
 
     // Summary table
     h.push_str("<h2 id=\"summary\">Summary per configuration and case</h2>\n<p>Over first-contact cells: mean shares of the ratio range with outward slip, stick and inward slip; extremes of L and U; LCP disagreements over all cells.</p>\n<div class=\"scroll\"><table>\n<tr>");
