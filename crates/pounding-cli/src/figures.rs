@@ -76,6 +76,13 @@ fn font(size: u32) -> TextStyle<'static> {
     (FAMILY, size).into_font().color(&BLACK)
 }
 
+/// Axis tick text: at most 3 decimals, trailing zeros dropped (`-10`, `2.5`, `0.25`).
+fn tick(v: &Real) -> String {
+    let t = format!("{v:.3}");
+    let t = t.trim_end_matches('0').trim_end_matches('.');
+    if t == "-0" { "0".into() } else { t.to_string() }
+}
+
 fn tok(x: Real) -> String {
     pounding::output::float_token(x)
 }
@@ -429,6 +436,9 @@ fn surface_panel<DB: DrawingBackend>(
     });
     chart
         .configure_axes()
+        .x_formatter(&tick)
+        .y_formatter(&tick)
+        .z_formatter(&tick)
         .label_style(font(13))
         .light_grid_style(BLACK.mix(0.08))
         .max_light_lines(1)
@@ -574,6 +584,10 @@ fn regions<DB: DrawingBackend>(
                 .map_err(e)?;
             chart
                 .configure_mesh()
+                .x_label_formatter(&tick)
+                .y_label_formatter(&tick)
+                .x_label_formatter(&tick)
+                .y_label_formatter(&tick)
                 .disable_mesh()
                 .x_desc(if deck1 {
                     "θ1 [deg]  (inner corner strikes < 0 < outer corner strikes)"
