@@ -609,3 +609,46 @@ fn claims_restate_the_paper_with_this_runs_numbers() {
             .all(|c| c.id != "stick-widens-with-mu" || c.verdict == Verdict::NotTested)
     );
 }
+
+mod prop {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 12, ..ProptestConfig::default() })]
+
+        /// Any shard count, shards given in any rotation: merged rows equal the unsharded rows.
+        #[test]
+        fn shards_partition_the_rows(n in 1usize..6, rot in 0usize..6, n1 in 1usize..5, n2 in 1usize..5) {
+            let text = format!(
+                "[decks]\nbeta1_deg = [60.0, 120.0]\nbeta2_deg = [90.0]\nr1_m = [100.0]\nr2_m = [200.0]\n[impact]\nmu = [0.3]\n[grid]\ntheta1_deg = {{ start = -3.0, stop = {}, step = 1.5 }}\ntheta2_deg = {{ start = -2.0, stop = {}, step = 2.0 }}\n",
+                -3.0 + 1.5 * (n1 - 1) as f64,
+                -2.0 + 2.0 * (n2 - 1) as f64,
+            );
+            let s = scenario(&text);
+            let layout = Layout::of(&s);
+            prop_assert_eq!(layout.total(), 2 * 4 * n1 * n2);
+            for i in 0..layout.total() {
+                prop_assert_eq!(layout.index(&layout.key(i)), i);
+            }
+            let whole = compute_rows(&s, Shard::ALL, &none).unwrap();
+            let mut parts = Vec::new();
+            for k in 1..=n {
+                let shard = Shard::new(k, n).unwrap();
+                let rows = compute_rows(&s, shard, &none).unwrap();
+                parts.push(ShardFiles {
+                    origin: format!("s{k}"),
+                    manifest: manifest_json(shard, &text, s.row_count(), rows.len()),
+                    rows: shard_rows_csv(&s, &rows),
+                });
+            }
+            parts.rotate_left(rot % n);
+            let merged = merge(&parts).unwrap();
+            prop_assert_eq!(merged.rows.len(), whole.len());
+            for (a, b) in merged.rows.iter().zip(&whole) {
+                prop_assert_eq!(a.index, b.index);
+                prop_assert_eq!(format!("{:?}", a.cell), format!("{:?}", b.cell));
+            }
+        }
+    }
+}
