@@ -23,8 +23,10 @@
 pub mod analytic;
 pub mod contact;
 pub mod geometry;
+pub mod ground_motion;
 pub mod impact;
 pub mod lcp;
 pub mod math;
 pub mod output;
+pub mod sim;
 pub mod study;

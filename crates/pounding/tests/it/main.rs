@@ -4,6 +4,8 @@ mod analytic;
 mod common;
 mod contact;
 mod geometry;
+mod ground_motion;
 mod impact;
 mod lcp;
+mod sim;
 mod study;
