@@ -202,9 +202,11 @@ fn finish(
     t0: Instant,
 ) -> Result<ExitCode> {
     let out = &common.out;
+    let t_rows = t0.elapsed().as_secs_f64();
     let bounds = pool.install(|| study.bounds_csv());
     let summary_csv = study.summary_csv();
     let summary_json = study.summary_json();
+    let t_text = t0.elapsed().as_secs_f64();
     create_dir(out)?;
     write(out, "bounds.csv", &bounds)?;
     write(out, "summary.csv", &summary_csv)?;
@@ -243,7 +245,11 @@ fn finish(
     let timing = serde_json::json!({
         "threads": pool.current_num_threads(),
         "rows": study.rows.len(),
+        "rows_s": t_rows,
+        "text_s": t_text - t_rows,
+        "write_s": t_numeric - t_text,
         "numeric_s": t_numeric,
+        "figures_and_report_s": total - t_numeric,
         "total_s": total,
     });
     write(out, "timing.json", &format!("{timing:#}\n"))?;

@@ -9,7 +9,7 @@
 //! an unsharded run's byte for byte.
 
 use super::StudyError;
-use super::csv::{BOUNDS_HEADER, bounds_line, parse_bounds_line};
+use super::csv::{BOUNDS_HEADER, RowWriter, parse_bounds_line};
 use super::run::{Layout, Row, Shard};
 use super::scenario::Scenario;
 use serde_json::{Value, json};
@@ -38,10 +38,11 @@ pub fn shard_rows_csv(scenario: &Scenario, rows: &[Row]) -> String {
     s.push_str("row,");
     s.push_str(BOUNDS_HEADER);
     s.push('\n');
+    let mut w = RowWriter::new(scenario);
     for r in rows {
         s.push_str(&r.index.to_string());
         s.push(',');
-        s.push_str(&bounds_line(scenario, r));
+        w.push(&mut s, r);
     }
     s
 }
