@@ -166,7 +166,12 @@ fn bad_scenarios_fail_naming_key_and_line_and_write_nothing() {
 fn sharded_then_merged_equals_unsharded_byte_for_byte() {
     let d = tmp("shard");
     let sc = d.join("small.toml");
-    std::fs::write(&sc, SMALL).unwrap();
+    // with figures: the merged run draws them from the parsed rows
+    std::fs::write(
+        &sc,
+        SMALL.replace("figures = false", "figures = true\nregion_map_samples = 11"),
+    )
+    .unwrap();
     let whole = d.join("whole");
     assert!(run(&["study", s(&sc), "--out", s(&whole)]).status.success());
     let mut dirs = Vec::new();
@@ -196,7 +201,15 @@ fn sharded_then_merged_equals_unsharded_byte_for_byte() {
     args.extend(["--out", s(&merged)]);
     let o = run(&args);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    for f in OUTPUTS {
+    let mut files: Vec<String> = OUTPUTS.iter().map(|f| f.to_string()).collect();
+    for e in std::fs::read_dir(whole.join("figures")).unwrap() {
+        files.push(format!(
+            "figures/{}",
+            e.unwrap().file_name().to_string_lossy()
+        ));
+    }
+    assert!(files.len() > OUTPUTS.len() + 5);
+    for f in &files {
         let a = std::fs::read(whole.join(f)).unwrap();
         let b = std::fs::read(merged.join(f)).unwrap();
         assert!(a == b, "{f} differs between merged and unsharded runs");
