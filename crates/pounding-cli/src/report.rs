@@ -184,6 +184,7 @@ pub fn report_html(study: &Study, groups: &[FigureGroup], figures_drawn: bool) -
 <li>R is the centre-line radius; the decks form an S with centres of curvature on the joint line; θ counter-clockwise positive; the contact frame is attached to the struck face, the normal points from deck 2 to deck 1 and the tangent toward deck 1's radially outward side.</li>\n\
 <li>Outward slip (γ_T⁺ &gt; 0, r &lt; L): after impact each deck slides away from its own centre of curvature; inward slip (r &gt; U): toward it.</li>\n\
 <li>Joint-anchored placement: each deck turns about its own face midpoint; the first contact of a cell is decided geometrically (deck 1's inner corner iff θ1 &lt; −|θ2|, outer iff θ1 &gt; |θ2|, likewise for deck 2). Bounds are computed for every cell of every case; the flags mark physically possible ones.</li>\n\
+<li>Degenerate cells (rows with <code>nan</code>): θ1 = θ2 is <em>parallel-faces</em> (line contact, including θ1 = θ2 = 0), θ1 = −θ2 ≠ 0 is <em>corner-corner</em> (normal not unique); the single-impact model does not apply there.</li>\n\
 <li>lcp_agrees: Lemke's method on the single-contact impact LCP reproduces the analytic mode just below L, mid-interval and just above U.</li>\n</ul>\n</body>\n</html>\n");
     h
 }
