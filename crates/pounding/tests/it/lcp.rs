@@ -700,7 +700,10 @@ proptest! {
 
 #[test]
 fn tmp_pivot_stats() {
-    let set = io::read_lcpset(Path::new("/work/shared/data/lcp/bench/lcp_problems_full.txt")).unwrap();
+    let set = io::read_lcpset(Path::new(
+        "/work/shared/data/lcp/bench/lcp_problems_full.txt",
+    ))
+    .unwrap();
     let mut l = Lemke::new(LemkeSettings::default());
     let mut stats: BTreeMap<String, (usize, usize, usize)> = BTreeMap::new();
     for e in &set {
@@ -719,6 +722,11 @@ fn tmp_pivot_stats() {
         x.2 = x.2.max(s.pivots);
     }
     for (k, v) in stats {
-        eprintln!("{k}: count {} mean pivots {:.2} max {}", v.0, v.1 as f64 / v.0 as f64, v.2);
+        eprintln!(
+            "{k}: count {} mean pivots {:.2} max {}",
+            v.0,
+            v.1 as f64 / v.0 as f64,
+            v.2
+        );
     }
 }
