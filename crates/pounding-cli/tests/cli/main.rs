@@ -21,3 +21,4 @@ fn help_lists_subcommands() {
 
 mod lcp;
 mod simulate;
+mod study;
