@@ -5,7 +5,10 @@ use std::process::ExitCode;
 
 mod cmd_impact;
 mod cmd_lcp;
+mod cmd_simulate;
 mod cmd_study;
+mod figures;
+mod report;
 
 /// Nonsmooth rigid-impact analysis of pounding between bridge deck segments.
 #[derive(Parser)]
@@ -23,6 +26,8 @@ enum Command {
     Impact(cmd_impact::Args),
     /// The paper's parametric stick/slip study (built-in default or a scenario file).
     Study(cmd_study::Args),
+    /// Seismic time-history simulation of two curved decks with pounding (built-in default: El Centro 1940).
+    Simulate(cmd_simulate::Args),
 }
 
 fn main() -> ExitCode {
@@ -31,6 +36,7 @@ fn main() -> ExitCode {
         Command::Lcp(a) => cmd_lcp::run(a),
         Command::Impact(a) => cmd_impact::run(a),
         Command::Study(a) => cmd_study::run(a),
+        Command::Simulate(a) => cmd_simulate::run(a),
     };
     match result {
         Ok(code) => code,

@@ -14,10 +14,12 @@ fn help_lists_subcommands() {
     let out = pounding().arg("--help").output().unwrap();
     assert!(out.status.success());
     let s = String::from_utf8_lossy(&out.stdout);
-    for sub in ["lcp", "impact", "study"] {
+    for sub in ["lcp", "impact", "study", "simulate"] {
         assert!(s.contains(sub), "--help lacks {sub}: {s}");
     }
 }
 
 mod lcp;
 mod shapes;
+mod simulate;
+mod study;

@@ -3,7 +3,11 @@
 mod analytic;
 mod common;
 mod contact;
+mod contact_law;
 mod geometry;
+mod ground_motion;
 mod impact;
 mod lcp;
 mod shapes;
+mod sim;
+mod study;

@@ -1,0 +1,665 @@
+//! `pounding simulate`: seismic time-history simulation of two curved decks with pounding.
+//!
+//! Reads an optional scenario TOML (unknown keys are errors; record paths resolve relative to the
+//! scenario file), runs [`pounding::sim::simulate`] and writes `history.csv`, `impacts.csv`,
+//! `summary.json`, `timing.json` and PNG plots into the output directory. Every input is validated
+//! before anything is written.
+
+use anyhow::{Context, Result, anyhow, bail};
+use pounding::geometry::{ContactCase, Deck, SArrangement};
+use pounding::ground_motion::{
+    AccelUnits, EL_CENTRO_180_AT2, EL_CENTRO_270_AT2, GroundMotion, Record,
+};
+use pounding::math::{Real, Vector};
+use pounding::output::{float_token, json_float, write_atomic};
+use pounding::sim::{
+    Bearing, SEAT_ENDS, SimError, SimModel, SimProblem, SimSettings, SimSolution, simulate,
+};
+use serde::Deserialize;
+use serde_json::json;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+#[path = "sim_plots.rs"]
+mod sim_plots;
+
+/// Arguments of `pounding simulate`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// Scenario file (TOML); without it the built-in default runs (see --print-default).
+    pub scenario: Option<PathBuf>,
+    /// Use this record (PEER .AT2, or .csv `t, a` in g) as the only ground-motion component,
+    /// along y (normal to the joint); replaces the scenario's records.
+    #[arg(long, value_name = "FILE")]
+    pub record: Option<PathBuf>,
+    /// Multiply both ground-motion scale factors by S.
+    #[arg(long, value_name = "S")]
+    pub scale: Option<f64>,
+    /// Output directory.
+    #[arg(long, value_name = "DIR", default_value = "out/simulate")]
+    pub out: PathBuf,
+    /// Print the built-in default scenario as commented TOML and exit.
+    #[arg(long)]
+    pub print_default: bool,
+}
+
+/// The built-in default scenario (also what `--print-default` prints).
+pub const DEFAULT_SCENARIO: &str = r#"# pounding simulate — scenario file (TOML). Every key is optional; the values below are the
+# built-in defaults. Unknown keys are errors. Paths are relative to this file.
+# Frame (spec §4): x along the joint line, y normal to it pointing into deck 1; angles in degrees.
+
+[decks]
+R1 = 100.0          # centre-line radius of deck 1 [m]
+R2 = 100.0          # centre-line radius of deck 2 [m]
+beta1_deg = 60.0    # curve angle of deck 1 [deg]
+beta2_deg = 60.0    # curve angle of deck 2 [deg]
+width = 10.0        # common deck width W [m]
+thickness = 0.5     # [m]
+density = 2500.0    # [kg/m^3]  (1309 t per deck)
+
+[joint]
+gap = 0.05          # joint opening g [m]
+seat_length = 0.4   # seat length at every deck end [m]; exceeding it = unseating
+mu = 0.5            # Coulomb friction coefficient at the joint
+eps_n = 0.5         # Newton restitution coefficient
+
+[bearings]
+# One bearing at each of the 4 end-face corners of each deck (linear, same stiffness in x and y).
+stiffness1 = 2.02e7 # per bearing, deck 1 [N/m]  (translational period ~0.8 s)
+stiffness2 = 8.97e6 # per bearing, deck 2 [N/m]  (translational period ~1.2 s)
+damping_ratio = 0.05  # Rayleigh, at each deck's two lowest distinct frequencies
+# points1 = [[5.0, 0.0], [-5.0, 0.0]]  # optional custom bearing points of deck 1 [m],
+#                                      # relative to its joint-face midpoint, reference pose
+
+[ground_motion]
+# A file path (PEER .AT2 in g, or .csv "t, a"), "builtin:ELC180" / "builtin:ELC270"
+# (El Centro 1940, RSN 6, embedded), or "none".
+record_y = "builtin:ELC180"  # acts along y (normal to the joint) for incidence 0
+record_x = "builtin:ELC270"  # acts along x (along the joint)
+scale_y = 1.0
+scale_x = 1.0
+incidence_deg = 0.0          # turns both components counter-clockwise
+csv_units = "g"              # units of .csv records: "g" or "m/s2"
+
+[time]
+dt = 1e-3            # time step [s]
+# duration = 53.71   # [s]; default: until the last record sample
+history_every = 10   # write every n-th step to history.csv (peaks use every step)
+"#;
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct Scenario {
+    #[serde(default)]
+    decks: DecksSec,
+    #[serde(default)]
+    joint: JointSec,
+    #[serde(default)]
+    bearings: BearingsSec,
+    #[serde(default)]
+    ground_motion: GroundSec,
+    #[serde(default)]
+    time: TimeSec,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields, default)]
+#[allow(non_snake_case)]
+struct DecksSec {
+    R1: f64,
+    R2: f64,
+    beta1_deg: f64,
+    beta2_deg: f64,
+    width: f64,
+    thickness: f64,
+    density: f64,
+}
+impl Default for DecksSec {
+    fn default() -> Self {
+        Self {
+            R1: 100.0,
+            R2: 100.0,
+            beta1_deg: 60.0,
+            beta2_deg: 60.0,
+            width: 10.0,
+            thickness: 0.5,
+            density: 2500.0,
+        }
+    }
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields, default)]
+struct JointSec {
+    gap: f64,
+    seat_length: f64,
+    mu: f64,
+    eps_n: f64,
+}
+impl Default for JointSec {
+    fn default() -> Self {
+        Self {
+            gap: 0.05,
+            seat_length: 0.4,
+            mu: 0.5,
+            eps_n: 0.5,
+        }
+    }
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields, default)]
+struct BearingsSec {
+    stiffness1: f64,
+    stiffness2: f64,
+    damping_ratio: f64,
+    points1: Option<Vec<[f64; 2]>>,
+    points2: Option<Vec<[f64; 2]>>,
+}
+impl Default for BearingsSec {
+    fn default() -> Self {
+        Self {
+            stiffness1: 2.02e7,
+            stiffness2: 8.97e6,
+            damping_ratio: 0.05,
+            points1: None,
+            points2: None,
+        }
+    }
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields, default)]
+struct GroundSec {
+    record_y: String,
+    record_x: String,
+    scale_y: f64,
+    scale_x: f64,
+    incidence_deg: f64,
+    csv_units: String,
+}
+impl Default for GroundSec {
+    fn default() -> Self {
+        Self {
+            record_y: "builtin:ELC180".into(),
+            record_x: "builtin:ELC270".into(),
+            scale_y: 1.0,
+            scale_x: 1.0,
+            incidence_deg: 0.0,
+            csv_units: "g".into(),
+        }
+    }
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields, default)]
+struct TimeSec {
+    dt: f64,
+    duration: Option<f64>,
+    history_every: i64,
+}
+impl Default for TimeSec {
+    fn default() -> Self {
+        Self {
+            dt: 1e-3,
+            duration: None,
+            history_every: 10,
+        }
+    }
+}
+
+/// Where a scenario came from (for error messages and relative paths).
+struct Source {
+    name: String,
+    text: String,
+    dir: PathBuf,
+}
+
+impl Source {
+    /// 1-based line of `key` in `[section]`, if the key is written in the file.
+    fn line_of(&self, section: &str, key: &str) -> Option<usize> {
+        let mut cur = String::new();
+        for (i, raw) in self.text.lines().enumerate() {
+            let l = raw.trim();
+            if l.starts_with('[') {
+                cur = l.trim_matches(|c| c == '[' || c == ']').trim().to_string();
+                continue;
+            }
+            if cur == section
+                && let Some((k, _)) = l.split_once('=')
+                && k.trim().trim_matches('"') == key
+            {
+                return Some(i + 1);
+            }
+        }
+        None
+    }
+    /// "`[section] key` (scenario:LINE)" or "`[section] key` (default)".
+    fn key_ref(&self, section: &str, key: &str) -> String {
+        match self.line_of(section, key) {
+            Some(l) => format!("`[{section}] {key}` ({}:{l})", self.name),
+            None => format!("`[{section}] {key}` (not set in {}; default)", self.name),
+        }
+    }
+}
+
+/// Maps a library parameter name onto the scenario key that sets it.
+fn scenario_key(name: &str) -> Option<(&'static str, &'static str)> {
+    Some(match name {
+        "dt" => ("time", "dt"),
+        "duration" => ("time", "duration"),
+        "history_stride" => ("time", "history_every"),
+        "gap" => ("joint", "gap"),
+        "seat_length" => ("joint", "seat_length"),
+        "mu" => ("joint", "mu"),
+        "eps_n" => ("joint", "eps_n"),
+        "damping_ratio" => ("bearings", "damping_ratio"),
+        "R1" => ("decks", "R1"),
+        "R2" => ("decks", "R2"),
+        "beta1" => ("decks", "beta1_deg"),
+        "beta2" => ("decks", "beta2_deg"),
+        "width" | "width (deck 2)" => ("decks", "width"),
+        "thickness" => ("decks", "thickness"),
+        "density" => ("decks", "density"),
+        "scale_y" => ("ground_motion", "scale_y"),
+        "scale_x" => ("ground_motion", "scale_x"),
+        "incidence" => ("ground_motion", "incidence_deg"),
+        n if n.starts_with("bearing stiffness (deck 1") => ("bearings", "stiffness1"),
+        n if n.starts_with("bearing stiffness (deck 2") => ("bearings", "stiffness2"),
+        n if n.starts_with("bearing point (deck 1") => ("bearings", "points1"),
+        n if n.starts_with("bearing point (deck 2") => ("bearings", "points2"),
+        _ => return None,
+    })
+}
+
+fn sim_error(src: &Source, e: SimError) -> anyhow::Error {
+    let name = match &e {
+        SimError::InvalidParameter { name, .. } => Some(name.clone()),
+        SimError::Geometry(pounding::geometry::GeometryError::InvalidParameter {
+            name, ..
+        }) => Some(name.clone()),
+        _ => None,
+    };
+    match name.as_deref().and_then(scenario_key) {
+        Some((sec, key)) => anyhow!("{e} — set by {}", src.key_ref(sec, key)),
+        None => anyhow!("{e}"),
+    }
+}
+
+/// Everything needed to run, built and validated from the scenario and the flags.
+struct Setup {
+    problem: SimProblem,
+    settings: SimSettings,
+    records: [String; 2],
+}
+
+fn load_record(src: &Source, spec: &str, key: &str, units: AccelUnits) -> Result<Option<Record>> {
+    let spec_t = spec.trim();
+    if spec_t.eq_ignore_ascii_case("none") {
+        return Ok(None);
+    }
+    if let Some(b) = spec_t.strip_prefix("builtin:") {
+        let (text, name) = match b {
+            "ELC180" => (EL_CENTRO_180_AT2, "RSN6_IMPVALL.I_I-ELC180-hor1.AT2"),
+            "ELC270" => (EL_CENTRO_270_AT2, "RSN6_IMPVALL.I_I-ELC270-hor2.AT2"),
+            other => bail!(
+                "unknown built-in record {other:?} in {} (use builtin:ELC180 or builtin:ELC270)",
+                src.key_ref("ground_motion", key)
+            ),
+        };
+        return Ok(Some(Record::from_at2_str(text, name)?));
+    }
+    let path = src.dir.join(spec_t);
+    let r = Record::from_path(&path, units).with_context(|| {
+        format!(
+            "ground-motion record given by {}",
+            src.key_ref("ground_motion", key)
+        )
+    })?;
+    Ok(Some(r))
+}
+
+fn build(args: &Args) -> Result<Setup> {
+    let src = match &args.scenario {
+        Some(p) => {
+            let text = std::fs::read_to_string(p)
+                .with_context(|| format!("cannot read scenario file {}", p.display()))?;
+            let dir = p
+                .parent()
+                .map(Path::to_path_buf)
+                .unwrap_or_else(|| PathBuf::from("."));
+            Source {
+                name: p.display().to_string(),
+                text,
+                dir: if dir.as_os_str().is_empty() {
+                    PathBuf::from(".")
+                } else {
+                    dir
+                },
+            }
+        }
+        None => Source {
+            name: "built-in default".into(),
+            text: DEFAULT_SCENARIO.into(),
+            dir: PathBuf::from("."),
+        },
+    };
+    let sc: Scenario =
+        toml::from_str(&src.text).map_err(|e| anyhow!("invalid scenario {}: {e}", src.name))?;
+
+    let d = &sc.decks;
+    let deck = |r: f64, b: f64| Deck {
+        radius: r,
+        angle: b.to_radians(),
+        width: d.width,
+        thickness: d.thickness,
+        density: d.density,
+    };
+    let arr = SArrangement {
+        deck1: deck(d.R1, d.beta1_deg),
+        deck2: deck(d.R2, d.beta2_deg),
+    };
+    let j = &sc.joint;
+    let b = &sc.bearings;
+    let mut model = SimModel::with_corner_bearings(
+        arr,
+        j.gap,
+        b.stiffness1,
+        b.stiffness2,
+        b.damping_ratio,
+        j.mu,
+        j.eps_n,
+        j.seat_length,
+    );
+    // Validate the decks before using them for the default bearing points.
+    model.validate().map_err(|e| sim_error(&src, e))?;
+    for (deck_no, pts, k, key) in [
+        (1, &b.points1, b.stiffness1, "points1"),
+        (2, &b.points2, b.stiffness2, "points2"),
+    ] {
+        if let Some(pts) = pts {
+            if pts.is_empty() {
+                bail!(
+                    "{} is empty (omit it for the default 4 corners)",
+                    src.key_ref("bearings", key)
+                );
+            }
+            let v: Vec<Bearing> = pts
+                .iter()
+                .map(|p| Bearing {
+                    point: Vector::new(p[0], p[1]),
+                    stiffness: k,
+                })
+                .collect();
+            if deck_no == 1 {
+                model.bearings1 = v;
+            } else {
+                model.bearings2 = v;
+            }
+        }
+    }
+
+    let g = &sc.ground_motion;
+    let units = AccelUnits::from_name(&g.csv_units).ok_or_else(|| {
+        anyhow!(
+            "invalid csv_units {:?} at {}: use \"g\" or \"m/s2\"",
+            g.csv_units,
+            src.key_ref("ground_motion", "csv_units")
+        )
+    })?;
+    let (along_y, along_x, records) = match &args.record {
+        Some(p) => {
+            let r =
+                Record::from_path(p, units).with_context(|| format!("--record {}", p.display()))?;
+            (Some(r), None, [p.display().to_string(), "none".into()])
+        }
+        None => (
+            load_record(&src, &g.record_y, "record_y", units)?,
+            load_record(&src, &g.record_x, "record_x", units)?,
+            [g.record_y.clone(), g.record_x.clone()],
+        ),
+    };
+    let mult = match args.scale {
+        Some(s) if s.is_finite() => s,
+        Some(s) => bail!("invalid --scale {s}: must be finite"),
+        None => 1.0,
+    };
+    let ground = GroundMotion {
+        along_y,
+        scale_y: g.scale_y * mult,
+        along_x,
+        scale_x: g.scale_x * mult,
+        incidence: g.incidence_deg.to_radians(),
+    };
+    ground
+        .validate()
+        .map_err(|e| sim_error(&src, SimError::from(e)))?;
+
+    let t = &sc.time;
+    if t.history_every < 1 {
+        bail!(
+            "invalid history_every = {}: must be >= 1 — set by {}",
+            t.history_every,
+            src.key_ref("time", "history_every")
+        );
+    }
+    let settings = SimSettings {
+        dt: t.dt,
+        duration: t.duration,
+        history_stride: t.history_every as usize,
+        ..SimSettings::default()
+    };
+    settings.validate().map_err(|e| sim_error(&src, e))?;
+    model.validate().map_err(|e| sim_error(&src, e))?;
+    model.linear_system().map_err(|e| sim_error(&src, e))?;
+    if settings.duration.is_none() && ground.end_time() <= 0.0 {
+        bail!(
+            "no ground motion samples after t = 0: set {}",
+            src.key_ref("time", "duration")
+        );
+    }
+    Ok(Setup {
+        problem: SimProblem::at_rest(model, ground),
+        settings,
+        records,
+    })
+}
+
+/// Runs `pounding simulate`.
+pub fn run(args: Args) -> Result<ExitCode> {
+    if args.print_default {
+        print!("{DEFAULT_SCENARIO}");
+        return Ok(ExitCode::SUCCESS);
+    }
+    let t_start = Instant::now();
+    let setup = build(&args)?;
+    let t_sim = Instant::now();
+    let sol = simulate(&setup.problem, &setup.settings).map_err(|e| anyhow!("{e}"))?;
+    let sim_secs = t_sim.elapsed().as_secs_f64();
+
+    let out = &args.out;
+    std::fs::create_dir_all(out)
+        .with_context(|| format!("cannot create output directory {}", out.display()))?;
+    let t_write = Instant::now();
+    let wr = |name: &str, bytes: &[u8]| {
+        write_atomic(&out.join(name), bytes)
+            .with_context(|| format!("cannot write {}", out.join(name).display()))
+    };
+    wr("history.csv", history_csv(&setup, &sol).as_bytes())?;
+    wr("impacts.csv", impacts_csv(&sol).as_bytes())?;
+    let summary = summary_json(&setup, &sol);
+    wr(
+        "summary.json",
+        (serde_json::to_string_pretty(&summary)? + "\n").as_bytes(),
+    )?;
+    sim_plots::write_all(out, &setup.problem, &sol).map_err(|e| anyhow!("plotting: {e}"))?;
+    let write_secs = t_write.elapsed().as_secs_f64();
+    let timing = json!({
+        "simulate_s": sim_secs,
+        "write_s": write_secs,
+        "wall_time_s": t_start.elapsed().as_secs_f64(),
+        "steps": sol.steps,
+    });
+    wr(
+        "timing.json",
+        (serde_json::to_string_pretty(&timing)? + "\n").as_bytes(),
+    )?;
+    let s = &sol.summary;
+    eprintln!(
+        "simulated {:.2} s in {} steps ({:.1} ms): {} impacts, peak closing {:.4} m, opening {:.4} m, \
+         seat displacement {:.4} m{}, energy balance error {:.1e}; outputs in {}",
+        sol.steps as Real * sol.dt,
+        sol.steps,
+        sim_secs * 1e3,
+        s.impacts,
+        s.peak_joint_closing,
+        s.peak_joint_opening,
+        s.peak_seat_displacement,
+        match s.unseating_time {
+            Some(t) => format!(" (UNSEATED at {t:.3} s)"),
+            None => String::new(),
+        },
+        s.energy_balance_error,
+        out.display()
+    );
+    if sol.status != pounding::sim::SimStatus::Completed {
+        eprintln!("warning: run status {:?}", sol.status);
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+const DEG: Real = 180.0 / std::f64::consts::PI;
+
+fn history_csv(setup: &Setup, sol: &SimSolution) -> String {
+    let h = &sol.history;
+    let mut s = String::with_capacity(h.t.len() * 400);
+    s.push_str(
+        "t_s,ag_x_mps2,ag_y_mps2,x1_m,y1_m,theta1_deg,x2_m,y2_m,theta2_deg,\
+         vx1_mps,vy1_mps,omega1_degps,vx2_mps,vy2_mps,omega2_degps,",
+    );
+    for c in ContactCase::ALL {
+        s.push_str(&format!("gap_{}_m,", c.name()));
+    }
+    s.push_str(
+        "joint_gap_xplus_m,joint_gap_xminus_m,slip_m,\
+         input_energy_J,kinetic_energy_J,strain_energy_J,viscous_dissipation_J,contact_dissipation_J\n",
+    );
+    let mut row: Vec<String> = Vec::with_capacity(32);
+    for i in 0..h.t.len() {
+        row.clear();
+        let t = h.t[i];
+        let a = setup.problem.ground.accel(t);
+        row.push(float_token(t));
+        row.push(float_token(a.x));
+        row.push(float_token(a.y));
+        for (k, v) in h.q[i].iter().enumerate() {
+            row.push(float_token(if k % 3 == 2 { v * DEG } else { *v }));
+        }
+        for (k, v) in h.u[i].iter().enumerate() {
+            row.push(float_token(if k % 3 == 2 { v * DEG } else { *v }));
+        }
+        row.extend(h.gaps[i].iter().map(|&g| float_token(g)));
+        row.extend(h.end_gaps[i].iter().map(|&g| float_token(g)));
+        row.push(float_token(h.slip[i]));
+        let e = &h.energy[i];
+        for v in [e.input, e.kinetic, e.potential, e.viscous, e.contact] {
+            row.push(float_token(v));
+        }
+        s.push_str(&row.join(","));
+        s.push('\n');
+    }
+    s
+}
+
+fn impacts_csv(sol: &SimSolution) -> String {
+    let mut s = String::from(
+        "impact,t_s,contact,mode,gamma_n_pre_mps,gamma_t_pre_mps,gamma_n_post_mps,gamma_t_post_mps,\
+         impulse_n_Ns,impulse_t_Ns,energy_dissipated_J\n",
+    );
+    for r in &sol.impacts {
+        let f = [
+            r.gamma_n_pre,
+            r.gamma_t_pre,
+            r.gamma_n_post,
+            r.gamma_t_post,
+            r.impulse_n,
+            r.impulse_t,
+            r.energy_dissipated,
+        ]
+        .map(float_token)
+        .join(",");
+        s.push_str(&format!(
+            "{},{},{},{},{}\n",
+            r.impact,
+            float_token(r.time),
+            r.contact.name(),
+            r.mode.name(),
+            f
+        ));
+    }
+    s
+}
+
+fn summary_json(setup: &Setup, sol: &SimSolution) -> serde_json::Value {
+    let s = &sol.summary;
+    let e = &s.final_energy;
+    let m = &setup.problem.model;
+    let gm = &setup.problem.ground;
+    let pga = |r: &Option<Record>, sc: f64| r.as_ref().map_or(0.0, |r| r.pga() * sc.abs());
+    let seat: serde_json::Map<String, serde_json::Value> = SEAT_ENDS
+        .iter()
+        .zip(s.peak_seat_by_end)
+        .map(|(k, v)| (k.to_string(), json_float(v)))
+        .collect();
+    json!({
+        "impacts": s.impacts,
+        "impacting_contacts": s.impacting_contacts,
+        "peak_joint_closing_m": json_float(s.peak_joint_closing),
+        "peak_joint_opening_m": json_float(s.peak_joint_opening),
+        "peak_rotation_deg": [json_float(s.peak_rotation[0] * DEG), json_float(s.peak_rotation[1] * DEG)],
+        "peak_slip_m": json_float(s.peak_slip),
+        "peak_seat_displacement_m": json_float(s.peak_seat_displacement),
+        "peak_seat_displacement_by_end_m": seat,
+        "seat_length_m": json_float(m.seat_length),
+        "unseated": s.unseated,
+        "unseating_time_s": s.unseating_time.map_or(serde_json::Value::Null, json_float),
+        "unseated_end": s.unseated_end.map(|i| SEAT_ENDS[i]),
+        "max_penetration_m": json_float(s.max_penetration),
+        "energy_balance_error": json_float(s.energy_balance_error),
+        "energy_J": {
+            "input": json_float(e.input),
+            "kinetic": json_float(e.kinetic),
+            "strain": json_float(e.potential),
+            "viscous_dissipation": json_float(e.viscous),
+            "contact_dissipation": json_float(e.contact),
+            "max_input": json_float(s.max_input_energy),
+        },
+        "status": format!("{:?}", sol.status),
+        "steps": sol.steps,
+        "dt_s": json_float(sol.dt),
+        "duration_s": json_float(sol.steps as Real * sol.dt),
+        "lcp_solves": sol.lcp_solves,
+        "lcp_enumeration_fallbacks": sol.lcp_enumeration_fallbacks,
+        "lcp_failures": sol.lcp_failures,
+        "natural_periods_s": sol.frequencies.map(|w| w.map(|w| json_float(2.0 * std::f64::consts::PI / w))),
+        "rayleigh_a0_a1": sol.rayleigh.map(|(a, b)| [json_float(a), json_float(b)]),
+        "ground_motion": {
+            "record_y": setup.records[0],
+            "record_x": setup.records[1],
+            "scale_y": json_float(gm.scale_y),
+            "scale_x": json_float(gm.scale_x),
+            "incidence_deg": json_float(gm.incidence * DEG),
+            "pga_y_mps2": json_float(pga(&gm.along_y, gm.scale_y)),
+            "pga_x_mps2": json_float(pga(&gm.along_x, gm.scale_x)),
+        },
+        "model": {
+            "mass_kg": [json_float(m.arrangement.deck1.mass_properties().mass), json_float(m.arrangement.deck2.mass_properties().mass)],
+            "gap_m": json_float(m.gap),
+            "mu": json_float(m.friction),
+            "eps_n": json_float(m.restitution),
+            "damping_ratio": json_float(m.damping_ratio),
+            "bearings": [m.bearings1.len(), m.bearings2.len()],
+        },
+    })
+}

@@ -1,0 +1,531 @@
+//! PNG plots of `pounding simulate` (plotters, embedded DejaVu Sans font).
+//!
+//! * `displacements.png` — ground acceleration and both decks' centroid displacements;
+//! * `rotations.png` — plan rotations θ1, θ2;
+//! * `joint_gap.png` — the joint gap at both ends of the joint, with the impacts marked;
+//! * `impulses.png` — normal and tangential impulse of every impacting contact, by mode;
+//! * `energy.png` — the energy balance (input, stored, dissipated);
+//! * `layout.png` — plan view of the two decks, bearings, joint and axes (reference pose).
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::{FontStyle, register_font};
+use pounding::analytic::SlipMode;
+use pounding::math::Real;
+use pounding::sim::{SimProblem, SimSolution};
+use std::path::Path;
+use std::sync::Once;
+
+static FONT: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans.ttf");
+static REGISTER: Once = Once::new();
+const FAMILY: &str = "sans-serif";
+
+fn register() {
+    REGISTER.call_once(|| {
+        for style in [FontStyle::Normal, FontStyle::Bold] {
+            // The bytes are a valid TrueType font shipped with the repository.
+            let _ = register_font(FAMILY, style, FONT);
+        }
+    });
+}
+
+type R<T = ()> = Result<T, String>;
+
+fn e<E: std::fmt::Debug>(err: E) -> String {
+    format!("{err:?}")
+}
+
+const BLUE: RGBColor = RGBColor(31, 97, 180);
+const RED: RGBColor = RGBColor(200, 40, 40);
+const GREEN: RGBColor = RGBColor(39, 150, 80);
+const ORANGE: RGBColor = RGBColor(230, 126, 34);
+const PURPLE: RGBColor = RGBColor(142, 68, 173);
+const GREY: RGBColor = RGBColor(120, 120, 120);
+
+struct Series<'a> {
+    label: &'a str,
+    pts: Vec<(Real, Real)>,
+    color: RGBColor,
+}
+
+/// One line panel with a title, axis labels, legend and optional dashed horizontal lines.
+fn line_panel<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    title: &str,
+    ylabel: &str,
+    t_end: Real,
+    series: &[Series],
+    hlines: &[(Real, &str, RGBColor)],
+    legend: SeriesLabelPosition,
+) -> R {
+    let mut lo = Real::INFINITY;
+    let mut hi = Real::NEG_INFINITY;
+    for s in series {
+        for &(_, y) in &s.pts {
+            if y.is_finite() {
+                lo = lo.min(y);
+                hi = hi.max(y);
+            }
+        }
+    }
+    for (y, _, _) in hlines {
+        lo = lo.min(*y);
+        hi = hi.max(*y);
+    }
+    if !(lo.is_finite() && hi.is_finite()) {
+        lo = -1.0;
+        hi = 1.0;
+    }
+    let pad = ((hi - lo) * 0.08).max(1e-12);
+    let mut chart = ChartBuilder::on(area)
+        .caption(title, (FAMILY, 22))
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(90)
+        .build_cartesian_2d(0.0..t_end, (lo - pad)..(hi + pad))
+        .map_err(e)?;
+    let span = hi - lo + 2.0 * pad;
+    chart
+        .configure_mesh()
+        .x_desc("time t [s]")
+        .y_desc(ylabel)
+        .y_label_formatter(&|v| tick(*v, span))
+        .label_style((FAMILY, 15))
+        .axis_desc_style((FAMILY, 16))
+        .light_line_style(RGBColor(235, 235, 235))
+        .draw()
+        .map_err(e)?;
+    for (y, label, c) in hlines {
+        let c = *c;
+        let drawn = chart
+            .draw_series(DashedLineSeries::new(
+                vec![(0.0, *y), (t_end, *y)],
+                6,
+                4,
+                c.stroke_width(1),
+            ))
+            .map_err(e)?;
+        if !label.is_empty() {
+            drawn.label(*label).legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(1))
+            });
+        }
+    }
+    for s in series {
+        let c = s.color;
+        chart
+            .draw_series(LineSeries::new(
+                s.pts.iter().copied().filter(|p| p.1.is_finite()),
+                c.stroke_width(1),
+            ))
+            .map_err(e)?
+            .label(s.label)
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2)));
+    }
+    chart
+        .configure_series_labels()
+        .position(legend)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font((FAMILY, 15))
+        .draw()
+        .map_err(e)?;
+    Ok(())
+}
+
+/// Axis tick text: 3 significant digits relative to the axis span, no `-0`.
+fn tick(v: Real, span: Real) -> String {
+    if v.abs() < 1e-9 * span.abs() {
+        return "0".into();
+    }
+    let digits = (2.0 - span.abs().log10().floor()).clamp(0.0, 12.0) as usize;
+    let s = format!("{v:.digits$}");
+    if s.trim_start_matches('-')
+        .chars()
+        .all(|c| c == '0' || c == '.')
+    {
+        "0".into()
+    } else {
+        s
+    }
+}
+
+fn save(
+    out: &Path,
+    name: &str,
+    size: (u32, u32),
+    draw: impl Fn(&DrawingArea<BitMapBackend, Shift>) -> R,
+) -> R {
+    let tmp = out.join(format!(".{name}.{}.tmp.png", std::process::id()));
+    let res = (|| {
+        let root = BitMapBackend::new(&tmp, size).into_drawing_area();
+        root.fill(&WHITE).map_err(e)?;
+        draw(&root)?;
+        root.present().map_err(e)
+    })();
+    if let Err(err) = res {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(err);
+    }
+    std::fs::rename(&tmp, out.join(name)).map_err(|err| format!("cannot write {name}: {err}"))
+}
+
+const DEG: Real = 180.0 / std::f64::consts::PI;
+
+/// Writes all plots into `out`.
+pub fn write_all(out: &Path, problem: &SimProblem, sol: &SimSolution) -> R {
+    register();
+    let h = &sol.history;
+    let t_end = h.t.last().copied().unwrap_or(1.0).max(1e-9);
+    let col = |f: &dyn Fn(usize) -> Real| -> Vec<(Real, Real)> {
+        (0..h.t.len()).map(|i| (h.t[i], f(i))).collect()
+    };
+    let g = problem.model.gap;
+
+    save(out, "displacements.png", (1400, 1050), |root| {
+        let areas = root.split_evenly((3, 1));
+        let ag: Vec<_> = h.t.iter().map(|&t| problem.ground.accel(t)).collect();
+        line_panel(
+            &areas[0],
+            "Ground acceleration (positive: ground accelerates toward +x / +y)",
+            "a_g [m/s²]",
+            t_end,
+            &[
+                Series {
+                    label: "a_g,y (normal to joint)",
+                    pts: col(&|i| ag[i].y),
+                    color: BLUE,
+                },
+                Series {
+                    label: "a_g,x (along joint)",
+                    pts: col(&|i| ag[i].x),
+                    color: ORANGE,
+                },
+            ],
+            &[],
+            SeriesLabelPosition::UpperRight,
+        )?;
+        for (j, area) in areas[1..].iter().enumerate() {
+            let o = 3 * j;
+            line_panel(
+                area,
+                &format!(
+                    "Deck {} centroid displacement relative to the ground (y: + = toward deck 1)",
+                    j + 1
+                ),
+                "displacement [m]",
+                t_end,
+                &[
+                    Series {
+                        label: &format!("y{} (normal to joint)", j + 1),
+                        pts: col(&|i| h.q[i][o + 1]),
+                        color: BLUE,
+                    },
+                    Series {
+                        label: &format!("x{} (along joint)", j + 1),
+                        pts: col(&|i| h.q[i][o]),
+                        color: ORANGE,
+                    },
+                ],
+                &[],
+                SeriesLabelPosition::UpperRight,
+            )?;
+        }
+        Ok(())
+    })?;
+
+    save(out, "layout.png", (1000, 900), |root| layout(root, problem))?;
+
+    save(out, "rotations.png", (1400, 500), |root| {
+        line_panel(
+            root,
+            "Plan rotation of each deck about its centroid (counter-clockwise +)",
+            "rotation [deg]",
+            t_end,
+            &[
+                Series {
+                    label: "θ1 (deck 1)",
+                    pts: col(&|i| h.q[i][2] * DEG),
+                    color: BLUE,
+                },
+                Series {
+                    label: "θ2 (deck 2)",
+                    pts: col(&|i| h.q[i][5] * DEG),
+                    color: RED,
+                },
+            ],
+            &[(0.0, "", GREY)],
+            SeriesLabelPosition::UpperRight,
+        )
+    })?;
+
+    save(out, "joint_gap.png", (1400, 600), |root| {
+        let w = problem.model.arrangement.deck1.width / 2.0;
+        line_panel(
+            root,
+            &format!(
+                "Joint gap at both ends of the joint ({} impacts; gap 0 = decks in contact)",
+                sol.summary.impacts
+            ),
+            "gap [m]",
+            t_end,
+            &[
+                Series {
+                    label: &format!("end x = +{w} m (deck1-inner / deck2-outer)"),
+                    pts: col(&|i| h.end_gaps[i][0]),
+                    color: BLUE,
+                },
+                Series {
+                    label: &format!("end x = −{w} m (deck1-outer / deck2-inner)"),
+                    pts: col(&|i| h.end_gaps[i][1]),
+                    color: RED,
+                },
+            ],
+            &[(g, "initial opening g", GREY), (0.0, "contact", BLACK)],
+            SeriesLabelPosition::UpperRight,
+        )?;
+        Ok(())
+    })?;
+
+    save(out, "impulses.png", (1400, 800), |root| {
+        let areas = root.split_evenly((2, 1));
+        let mode_color = |m: SlipMode| match m {
+            SlipMode::Stick => GREEN,
+            SlipMode::SlipOutward => ORANGE,
+            SlipMode::SlipInward => PURPLE,
+        };
+        for (k, area) in areas.iter().enumerate() {
+            let val = |r: &pounding::sim::ImpactRecord| {
+                if k == 0 {
+                    r.impulse_n / 1e3
+                } else {
+                    r.impulse_t / 1e3
+                }
+            };
+            let mut lo: Real = 0.0;
+            let mut hi: Real = 0.0;
+            for r in &sol.impacts {
+                lo = lo.min(val(r));
+                hi = hi.max(val(r));
+            }
+            let pad = ((hi - lo) * 0.1).max(1.0);
+            let title = if k == 0 {
+                "Normal impulse P_N of each impacting contact (pushes the decks apart)"
+            } else {
+                "Tangential impulse P_T (on deck 1 along +τ, toward its radially outward side)"
+            };
+            let mut chart = ChartBuilder::on(area)
+                .caption(title, (FAMILY, 22))
+                .margin(10)
+                .x_label_area_size(40)
+                .y_label_area_size(90)
+                .build_cartesian_2d(
+                    0.0..t_end,
+                    (lo - if lo < 0.0 { pad } else { 0.0 })..(hi + pad),
+                )
+                .map_err(e)?;
+            chart
+                .configure_mesh()
+                .x_desc("time t [s]")
+                .y_desc(if k == 0 { "P_N [kN s]" } else { "P_T [kN s]" })
+                .label_style((FAMILY, 15))
+                .axis_desc_style((FAMILY, 16))
+                .light_line_style(RGBColor(235, 235, 235))
+                .draw()
+                .map_err(e)?;
+            for m in [SlipMode::Stick, SlipMode::SlipOutward, SlipMode::SlipInward] {
+                let c = mode_color(m);
+                let rs: Vec<_> = sol.impacts.iter().filter(|r| r.mode == m).collect();
+                chart
+                    .draw_series(rs.iter().map(|r| {
+                        PathElement::new(vec![(r.time, 0.0), (r.time, val(r))], c.stroke_width(3))
+                    }))
+                    .map_err(e)?;
+                chart
+                    .draw_series(
+                        rs.iter()
+                            .map(|r| Circle::new((r.time, val(r)), 5, c.filled())),
+                    )
+                    .map_err(e)?
+                    .label(format!("{} ({})", m.name(), rs.len()))
+                    .legend(move |(x, y)| Circle::new((x + 10, y), 5, c.filled()));
+            }
+            chart
+                .configure_series_labels()
+                .position(SeriesLabelPosition::UpperRight)
+                .background_style(WHITE.mix(0.85))
+                .border_style(BLACK)
+                .label_font((FAMILY, 15))
+                .draw()
+                .map_err(e)?;
+        }
+        Ok(())
+    })?;
+
+    save(out, "energy.png", (1400, 600), |root| {
+        let en = |f: &dyn Fn(&pounding::sim::Energy) -> Real| col(&|i| f(&h.energy[i]) / 1e3);
+        line_panel(
+            root,
+            &format!(
+                "Energy balance (relative error {:.1e}): input = stored + dissipated",
+                sol.summary.energy_balance_error
+            ),
+            "energy [kJ]",
+            t_end,
+            &[
+                Series {
+                    label: "seismic input W_in",
+                    pts: en(&|e| e.input),
+                    color: BLACK,
+                },
+                Series {
+                    label: "viscous dissipation",
+                    pts: en(&|e| e.viscous),
+                    color: BLUE,
+                },
+                Series {
+                    label: "contact dissipation",
+                    pts: en(&|e| e.contact),
+                    color: RED,
+                },
+                Series {
+                    label: "kinetic + strain",
+                    pts: en(&|e| e.kinetic + e.potential),
+                    color: GREEN,
+                },
+            ],
+            &[],
+            SeriesLabelPosition::UpperLeft,
+        )
+    })?;
+    Ok(())
+}
+
+/// Plan view of the reference pose (spec §4): deck outlines, bearings, joint, axes.
+fn layout<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, problem: &SimProblem) -> R {
+    let m = &problem.model;
+    let g = m.gap;
+    let outline = |j: usize| -> Vec<(Real, Real)> {
+        let d = if j == 1 {
+            &m.arrangement.deck1
+        } else {
+            &m.arrangement.deck2
+        };
+        let s = if j == 1 { 1.0 } else { -1.0 };
+        let off = if j == 1 { g } else { 0.0 };
+        let pt = |r: Real, phi: Real| (s * (d.radius - r * phi.cos()), off + s * r * phi.sin());
+        let (ri, ro) = (d.radius - d.width / 2.0, d.radius + d.width / 2.0);
+        let n = 120;
+        let mut v: Vec<(Real, Real)> = (0..=n)
+            .map(|k| pt(ri, d.angle * k as Real / n as Real))
+            .collect();
+        v.extend(
+            (0..=n)
+                .rev()
+                .map(|k| pt(ro, d.angle * k as Real / n as Real)),
+        );
+        v.push(v[0]);
+        v
+    };
+    let (o1, o2) = (outline(1), outline(2));
+    let (mut lo_x, mut hi_x, mut lo_y, mut hi_y) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    for &(x, y) in o1.iter().chain(&o2) {
+        lo_x = lo_x.min(x);
+        hi_x = hi_x.max(x);
+        lo_y = lo_y.min(y);
+        hi_y = hi_y.max(y);
+    }
+    // equal scales: widen the smaller range to the drawing area's aspect ratio
+    let (w, h) = root.dim_in_pixel();
+    let pad = 0.08 * (hi_x - lo_x).max(hi_y - lo_y);
+    let (cx, cy) = ((lo_x + hi_x) / 2.0, (lo_y + hi_y) / 2.0);
+    let mut half_x = (hi_x - lo_x) / 2.0 + pad;
+    let mut half_y = (hi_y - lo_y) / 2.0 + pad;
+    let aspect = (w as Real - 80.0) / (h as Real - 100.0);
+    if half_x / half_y < aspect {
+        half_x = half_y * aspect;
+    } else {
+        half_y = half_x / aspect;
+    }
+    let mut chart = ChartBuilder::on(root)
+        .caption(
+            format!(
+                "Plan view (reference pose): joint opening g = {g} m at y = 0, {} + {} bearings",
+                m.bearings1.len(),
+                m.bearings2.len()
+            ),
+            (FAMILY, 20),
+        )
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(60)
+        .build_cartesian_2d((cx - half_x)..(cx + half_x), (cy - half_y)..(cy + half_y))
+        .map_err(e)?;
+    chart
+        .configure_mesh()
+        .x_desc("x [m] (along the joint)")
+        .y_desc("y [m] (normal to the joint, into deck 1)")
+        .label_style((FAMILY, 14))
+        .axis_desc_style((FAMILY, 15))
+        .light_line_style(RGBColor(240, 240, 240))
+        .draw()
+        .map_err(e)?;
+    for (o, c, name) in [(&o1, BLUE, "deck 1"), (&o2, RED, "deck 2")] {
+        chart
+            .draw_series(std::iter::once(Polygon::new(o.clone(), c.mix(0.15))))
+            .map_err(e)?;
+        chart
+            .draw_series(LineSeries::new(o.iter().copied(), c.stroke_width(2)))
+            .map_err(e)?
+            .label(name)
+            .legend(move |(x, y)| {
+                Rectangle::new([(x, y - 5), (x + 20, y + 5)], c.mix(0.5).filled())
+            });
+    }
+    let bearings: Vec<(Real, Real)> = m
+        .bearings1
+        .iter()
+        .map(|b| (b.point.x, b.point.y + g))
+        .chain(m.bearings2.iter().map(|b| (b.point.x, b.point.y)))
+        .collect();
+    chart
+        .draw_series(
+            bearings
+                .iter()
+                .map(|&p| TriangleMarker::new(p, 8, BLACK.filled())),
+        )
+        .map_err(e)?
+        .label("bearing (seat)")
+        .legend(|(x, y)| TriangleMarker::new((x + 10, y), 6, BLACK.filled()));
+    let w2 = m.arrangement.deck1.width / 2.0;
+    chart
+        .draw_series(std::iter::once(PathElement::new(
+            vec![(-w2 * 3.0, 0.0), (w2 * 3.0, 0.0)],
+            GREEN.stroke_width(3),
+        )))
+        .map_err(e)?
+        .label("expansion joint (contacts at x = ±W/2)")
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREEN.stroke_width(3)));
+    let style = TextStyle::from((FAMILY, 15).into_font()).color(&BLACK);
+    for (txt, x, y) in [
+        ("deck 1 (y > 0)", 0.45 * (cx + half_x), 0.35 * (cy + half_y)),
+        ("deck 2 (y < 0)", 0.45 * (cx - half_x), 0.35 * (cy - half_y)),
+    ] {
+        chart
+            .draw_series(std::iter::once(Text::new(
+                txt.to_string(),
+                (x, y),
+                style.clone(),
+            )))
+            .map_err(e)?;
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperLeft)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font((FAMILY, 15))
+        .draw()
+        .map_err(e)?;
+    Ok(())
+}

@@ -1,0 +1,504 @@
+//! Ground-motion records and the two-component horizontal ground acceleration driving a simulation.
+//!
+//! * [`Record`]: one acceleration component, a list of samples `(t_i, a_i)` in m/s², with linear
+//!   interpolation between samples and `a = 0` before the first and after the last sample.
+//! * Readers: PEER NGA `.AT2` ([`Record::from_at2_str`], both header styles) and two-column CSV
+//!   `t, a` ([`Record::from_csv_str`]). Record units are converted to m/s² (`g` → ×[`G0`]).
+//! * [`GroundMotion`]: two horizontal components, one nominally along the global y axis of the
+//!   spec (normal to the joint, spec §4) and one along x, each with a scale factor, both turned by an
+//!   incidence angle `α` (counter-clockwise about +z):
+//!   `a_g(t) = s_y a_y(t) Rot(α) ŷ + s_x a_x(t) Rot(α) x̂`.
+//!   **Sign convention**: a positive sample accelerates the *ground* toward +y (resp. +x); the
+//!   structure feels the effective load `−M r a_g(t)` (see [`crate::sim`]).
+//! * [`el_centro_1940`]: the 1940 El Centro record (PEER NGA-West2 RSN 6, components 180 and 270),
+//!   embedded in the library.
+
+use crate::math::{Real, Vector};
+use std::path::Path;
+use thiserror::Error;
+
+/// Standard gravity \[m/s²\]: the factor from records in `g` to m/s².
+pub const G0: Real = 9.80665;
+
+/// Bad ground-motion input.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum GroundMotionError {
+    /// A record file is malformed; `line` is 1-based.
+    #[error("{source_name}:{line}: {message}")]
+    Parse {
+        /// File name (or a description of the text's origin).
+        source_name: String,
+        /// 1-based line number of the offending line.
+        line: usize,
+        /// What is wrong.
+        message: String,
+    },
+    /// A record file could not be read.
+    #[error("cannot read ground-motion record {path}: {message}")]
+    Io {
+        /// The path as given.
+        path: String,
+        /// The operating-system message.
+        message: String,
+    },
+    /// A parameter is out of range or not finite; the message names it.
+    #[error("invalid {name} = {value}: {reason}")]
+    InvalidParameter {
+        /// Parameter name.
+        name: String,
+        /// The offending value.
+        value: Real,
+        /// What was expected.
+        reason: String,
+    },
+}
+
+/// Units of the acceleration values in a record file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum AccelUnits {
+    /// Standard gravity; values are multiplied by [`G0`] = 9.80665.
+    #[default]
+    G,
+    /// Already in m/s².
+    MetresPerSecondSquared,
+}
+
+impl AccelUnits {
+    /// The factor to m/s².
+    pub fn factor(self) -> Real {
+        match self {
+            Self::G => G0,
+            Self::MetresPerSecondSquared => 1.0,
+        }
+    }
+    /// Parses `g` or `m/s2` (also `m/s^2`, `mps2`).
+    pub fn from_name(s: &str) -> Option<Self> {
+        match s.trim() {
+            "g" | "G" => Some(Self::G),
+            "m/s2" | "m/s^2" | "mps2" | "m/s²" => Some(Self::MetresPerSecondSquared),
+            _ => None,
+        }
+    }
+}
+
+/// One acceleration component: samples `(t_i, a_i)`, `t` strictly increasing \[s\], `a` in m/s².
+///
+/// Evaluation ([`Record::accel`]) interpolates linearly between samples and is zero outside
+/// `[t_0, t_last]`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Record {
+    /// A short name (file name or component label) for messages and outputs.
+    pub name: String,
+    times: Vec<Real>,
+    values: Vec<Real>,
+}
+
+fn parse_err(source: &str, line: usize, message: impl Into<String>) -> GroundMotionError {
+    GroundMotionError::Parse {
+        source_name: source.to_string(),
+        line,
+        message: message.into(),
+    }
+}
+
+/// Parses a Fortran-style real (`.998E-03`, `1.5D-03`, `-.17e+01`).
+fn parse_real(tok: &str) -> Option<Real> {
+    let v: Real = if tok.contains(['D', 'd']) {
+        tok.replace(['D', 'd'], "E").parse().ok()?
+    } else {
+        tok.parse().ok()?
+    };
+    v.is_finite().then_some(v)
+}
+
+impl Record {
+    /// A record from explicit samples (`t` strictly increasing and finite, `a` finite, in m/s²).
+    pub fn new(
+        name: impl Into<String>,
+        times: Vec<Real>,
+        values: Vec<Real>,
+    ) -> Result<Self, GroundMotionError> {
+        let name = name.into();
+        let bad = |what: &str, v: Real, reason: &str| GroundMotionError::InvalidParameter {
+            name: format!("{name}: {what}"),
+            value: v,
+            reason: reason.to_string(),
+        };
+        if times.is_empty() || times.len() != values.len() {
+            return Err(bad(
+                "number of samples",
+                times.len() as Real,
+                "need at least one sample and as many times as values",
+            ));
+        }
+        for (i, (&t, &a)) in times.iter().zip(&values).enumerate() {
+            if !t.is_finite() {
+                return Err(bad(&format!("t[{i}]"), t, "must be finite"));
+            }
+            if !a.is_finite() {
+                return Err(bad(&format!("a[{i}]"), a, "must be finite"));
+            }
+            if i > 0 && t <= times[i - 1] {
+                return Err(bad(&format!("t[{i}]"), t, "times must increase strictly"));
+            }
+        }
+        Ok(Self {
+            name,
+            times,
+            values,
+        })
+    }
+
+    /// A uniformly sampled record `a_i` at `t_i = i dt` (values in m/s²).
+    pub fn uniform(
+        name: impl Into<String>,
+        dt: Real,
+        values: Vec<Real>,
+    ) -> Result<Self, GroundMotionError> {
+        let name = name.into();
+        if !(dt.is_finite() && dt > 0.0) {
+            return Err(GroundMotionError::InvalidParameter {
+                name: format!("{name}: dt"),
+                value: dt,
+                reason: "must be finite and > 0".into(),
+            });
+        }
+        let times = (0..values.len()).map(|i| i as Real * dt).collect();
+        Self::new(name, times, values)
+    }
+
+    /// Parses a PEER NGA `.AT2` file (accelerations in g, converted to m/s²).
+    ///
+    /// Layout: three free header lines, then either `NPTS=  5372, DT=   .0100 SEC,` (NGA-West2
+    /// style) or the older `  5372   .0100   NPTS, DT` line (first two numbers = npts, dt), then
+    /// exactly `npts` values, any number per line, whitespace separated, Fortran `E`/`D` format.
+    /// The first sample is at `t = 0`. Errors carry the 1-based line number.
+    pub fn from_at2_str(text: &str, source_name: &str) -> Result<Self, GroundMotionError> {
+        let lines: Vec<&str> = text.lines().collect();
+        if lines.len() < 4 {
+            return Err(parse_err(
+                source_name,
+                lines.len().max(1),
+                "truncated AT2 header: expected 4 header lines (the 4th giving NPTS and DT)",
+            ));
+        }
+        let header = lines[3];
+        let (npts, dt) = parse_at2_npts_dt(header)
+            .map_err(|m| parse_err(source_name, 4, format!("{m} in AT2 header line {header:?}")))?;
+        let mut values = Vec::with_capacity(npts);
+        for (k, line) in lines.iter().enumerate().skip(4) {
+            for tok in line.split_whitespace() {
+                let v = parse_real(tok).ok_or_else(|| {
+                    parse_err(source_name, k + 1, format!("not a finite number: {tok:?}"))
+                })?;
+                if values.len() == npts {
+                    return Err(parse_err(
+                        source_name,
+                        k + 1,
+                        format!("more values than NPTS = {npts}"),
+                    ));
+                }
+                values.push(v * G0);
+            }
+        }
+        if values.len() != npts {
+            return Err(parse_err(
+                source_name,
+                lines.len(),
+                format!(
+                    "file ends after {} values, header says NPTS = {npts}",
+                    values.len()
+                ),
+            ));
+        }
+        Self::uniform(source_name, dt, values)
+    }
+
+    /// Parses a two-column CSV `t, a` (t in s, a in `units`). Blank lines and lines starting
+    /// with `#` are skipped; a first non-numeric line is taken as a header. Times must increase
+    /// strictly. Errors carry the 1-based line number.
+    pub fn from_csv_str(
+        text: &str,
+        source_name: &str,
+        units: AccelUnits,
+    ) -> Result<Self, GroundMotionError> {
+        let mut times = Vec::new();
+        let mut values = Vec::new();
+        let mut seen_content = false;
+        for (k, raw) in text.lines().enumerate() {
+            let line = raw.trim();
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            let cols: Vec<&str> = line.split(',').map(str::trim).collect();
+            let first = !seen_content;
+            seen_content = true;
+            if cols.len() != 2 {
+                if first && cols.iter().any(|c| parse_real(c).is_none()) {
+                    continue; // header
+                }
+                return Err(parse_err(
+                    source_name,
+                    k + 1,
+                    format!(
+                        "expected 2 comma-separated columns (t, a), found {}",
+                        cols.len()
+                    ),
+                ));
+            }
+            match (parse_real(cols[0]), parse_real(cols[1])) {
+                (Some(t), Some(a)) => {
+                    if let Some(&prev) = times.last()
+                        && t <= prev
+                    {
+                        return Err(parse_err(
+                            source_name,
+                            k + 1,
+                            format!("time {t} does not increase (previous {prev})"),
+                        ));
+                    }
+                    times.push(t);
+                    values.push(a * units.factor());
+                }
+                _ if first => continue, // header
+                _ => {
+                    return Err(parse_err(
+                        source_name,
+                        k + 1,
+                        format!("not a pair of finite numbers: {line:?}"),
+                    ));
+                }
+            }
+        }
+        if times.is_empty() {
+            return Err(parse_err(source_name, 1, "no samples found"));
+        }
+        Self::new(source_name, times, values)
+    }
+
+    /// Reads a record file: `.csv` (any case) as CSV in `csv_units`, anything else as PEER `.AT2`.
+    pub fn from_path(path: &Path, csv_units: AccelUnits) -> Result<Self, GroundMotionError> {
+        let text = std::fs::read_to_string(path).map_err(|e| GroundMotionError::Io {
+            path: path.display().to_string(),
+            message: e.to_string(),
+        })?;
+        let name = path.display().to_string();
+        let is_csv = path
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
+        if is_csv {
+            Self::from_csv_str(&text, &name, csv_units)
+        } else {
+            Self::from_at2_str(&text, &name)
+        }
+    }
+
+    /// Sample times \[s\].
+    pub fn times(&self) -> &[Real] {
+        &self.times
+    }
+    /// Sample values \[m/s²\].
+    pub fn values(&self) -> &[Real] {
+        &self.values
+    }
+    /// Time of the last sample \[s\]; the record is zero afterwards.
+    pub fn end_time(&self) -> Real {
+        *self.times.last().expect("non-empty by construction")
+    }
+    /// Peak absolute acceleration \[m/s²\].
+    pub fn pga(&self) -> Real {
+        self.values.iter().fold(0.0, |m: Real, v| m.max(v.abs()))
+    }
+
+    /// `a(t)`: linear interpolation between samples, 0 before `t_0` and after `t_last` \[m/s²\].
+    pub fn accel(&self, t: Real) -> Real {
+        let ts = &self.times;
+        let n = ts.len();
+        if !(t >= ts[0] && t <= ts[n - 1]) {
+            return 0.0;
+        }
+        // Index of the last sample with t_i <= t.
+        let i = ts.partition_point(|&ti| ti <= t).saturating_sub(1);
+        self.interp(i, t)
+    }
+
+    #[inline]
+    fn interp(&self, i: usize, t: Real) -> Real {
+        let (ts, vs) = (&self.times, &self.values);
+        if i + 1 >= ts.len() {
+            return vs[i];
+        }
+        let s = (t - ts[i]) / (ts[i + 1] - ts[i]);
+        vs[i] + s * (vs[i + 1] - vs[i])
+    }
+
+    /// `a(t_k)` at `t_k = k h`, `k = 0..=n_steps`, in one monotone pass (same values as
+    /// [`Record::accel`]).
+    pub fn sample_uniform(&self, h: Real, n_steps: usize) -> Vec<Real> {
+        let ts = &self.times;
+        let last = ts.len() - 1;
+        let mut out = Vec::with_capacity(n_steps + 1);
+        let mut i = 0usize;
+        for k in 0..=n_steps {
+            let t = k as Real * h;
+            if !(t >= ts[0] && t <= ts[last]) {
+                out.push(0.0);
+                continue;
+            }
+            while i < last && ts[i + 1] <= t {
+                i += 1;
+            }
+            out.push(self.interp(i, t));
+        }
+        out
+    }
+}
+
+fn parse_at2_npts_dt(line: &str) -> Result<(usize, Real), String> {
+    let upper = line.to_ascii_uppercase();
+    let (npts_s, dt_s) = if upper.contains("NPTS=") || upper.contains("NPTS =") {
+        // NGA-West2: `NPTS=   5372, DT=   .0100 SEC,`
+        let grab = |key: &str| -> Option<String> {
+            let p = upper.find(key)? + key.len();
+            let rest = upper[p..].trim_start().strip_prefix('=')?.trim_start();
+            let end = rest
+                .find(|c: char| c == ',' || c.is_whitespace())
+                .unwrap_or(rest.len());
+            Some(rest[..end].to_string())
+        };
+        (
+            grab("NPTS").ok_or("cannot find NPTS=")?,
+            grab("DT").ok_or("cannot find DT=")?,
+        )
+    } else {
+        // Older style: `  5372   .0100   NPTS, DT`
+        let mut toks = upper
+            .split(|c: char| c == ',' || c.is_whitespace())
+            .filter(|s| !s.is_empty());
+        (
+            toks.next().ok_or("empty NPTS/DT line")?.to_string(),
+            toks.next().ok_or("missing DT after NPTS")?.to_string(),
+        )
+    };
+    let npts: usize = npts_s
+        .parse()
+        .map_err(|_| format!("NPTS {npts_s:?} is not a positive integer"))?;
+    if npts == 0 {
+        return Err("NPTS = 0".into());
+    }
+    let dt = parse_real(&dt_s).ok_or_else(|| format!("DT {dt_s:?} is not a number"))?;
+    if dt <= 0.0 {
+        return Err(format!("DT = {dt} must be > 0"));
+    }
+    Ok((npts, dt))
+}
+
+/// Two horizontal ground-acceleration components with scale factors and an incidence angle.
+///
+/// `a_g(t) = scale_y a_y(t) Rot(α) (0, 1) + scale_x a_x(t) Rot(α) (1, 0)` \[m/s²\], global frame of
+/// spec §4 (y normal to the joint, pointing into deck 1). A positive value accelerates the ground
+/// toward that direction. A missing component is zero.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GroundMotion {
+    /// Component acting along `Rot(α) ŷ` (normal to the joint for `α = 0`).
+    pub along_y: Option<Record>,
+    /// Scale factor of `along_y` (any finite number).
+    pub scale_y: Real,
+    /// Component acting along `Rot(α) x̂` (along the joint line for `α = 0`).
+    pub along_x: Option<Record>,
+    /// Scale factor of `along_x` (any finite number).
+    pub scale_x: Real,
+    /// Incidence angle `α` \[rad\], counter-clockwise about +z.
+    pub incidence: Real,
+}
+
+impl GroundMotion {
+    /// No ground motion (free vibration).
+    pub fn none() -> Self {
+        Self {
+            along_y: None,
+            scale_y: 1.0,
+            along_x: None,
+            scale_x: 1.0,
+            incidence: 0.0,
+        }
+    }
+
+    /// Checks that the scale factors and the angle are finite.
+    pub fn validate(&self) -> Result<(), GroundMotionError> {
+        for (name, v) in [
+            ("scale_y", self.scale_y),
+            ("scale_x", self.scale_x),
+            ("incidence", self.incidence),
+        ] {
+            if !v.is_finite() {
+                return Err(GroundMotionError::InvalidParameter {
+                    name: name.into(),
+                    value: v,
+                    reason: "must be finite".into(),
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// Unit directions `(d_y, d_x) = (Rot(α) ŷ, Rot(α) x̂)` of the two components.
+    pub fn directions(&self) -> (Vector, Vector) {
+        let (s, c) = self.incidence.sin_cos();
+        (Vector::new(-s, c), Vector::new(c, s))
+    }
+
+    /// Time of the last sample of the longer component (0 without components) \[s\].
+    pub fn end_time(&self) -> Real {
+        [&self.along_y, &self.along_x]
+            .into_iter()
+            .flatten()
+            .map(Record::end_time)
+            .fold(0.0, Real::max)
+    }
+
+    /// `a_g(t)` in the global frame \[m/s²\].
+    pub fn accel(&self, t: Real) -> Vector {
+        let (dy, dx) = self.directions();
+        let ay = self.along_y.as_ref().map_or(0.0, |r| r.accel(t)) * self.scale_y;
+        let ax = self.along_x.as_ref().map_or(0.0, |r| r.accel(t)) * self.scale_x;
+        dy * ay + dx * ax
+    }
+
+    /// `a_g(k h)` for `k = 0..=n_steps` (global frame), one monotone pass per component.
+    pub fn sample_uniform(&self, h: Real, n_steps: usize) -> Vec<Vector> {
+        let (dy, dx) = self.directions();
+        let ay = self.along_y.as_ref().map(|r| r.sample_uniform(h, n_steps));
+        let ax = self.along_x.as_ref().map(|r| r.sample_uniform(h, n_steps));
+        (0..=n_steps)
+            .map(|k| {
+                let y = ay.as_ref().map_or(0.0, |v| v[k]) * self.scale_y;
+                let x = ax.as_ref().map_or(0.0, |v| v[k]) * self.scale_x;
+                dy * y + dx * x
+            })
+            .collect()
+    }
+}
+
+/// The embedded El Centro 1940 NS component (RSN 6, azimuth 180), PEER `.AT2` text.
+pub const EL_CENTRO_180_AT2: &str =
+    include_str!("../../../data/records/RSN6_IMPVALL.I_I-ELC180-hor1.AT2");
+/// The embedded El Centro 1940 EW component (RSN 6, azimuth 270), PEER `.AT2` text.
+pub const EL_CENTRO_270_AT2: &str =
+    include_str!("../../../data/records/RSN6_IMPVALL.I_I-ELC270-hor2.AT2");
+
+/// 1940 El Centro (Imperial Valley-02, El Centro Array #9, PEER NGA-West2 RSN 6), unscaled:
+/// component 180 (NS, PGA 0.281 g) along y, component 270 (EW, PGA 0.211 g) along x, `α = 0`.
+pub fn el_centro_1940() -> GroundMotion {
+    let y = Record::from_at2_str(EL_CENTRO_180_AT2, "RSN6_IMPVALL.I_I-ELC180-hor1.AT2")
+        .expect("embedded record parses");
+    let x = Record::from_at2_str(EL_CENTRO_270_AT2, "RSN6_IMPVALL.I_I-ELC270-hor2.AT2")
+        .expect("embedded record parses");
+    GroundMotion {
+        along_y: Some(y),
+        scale_y: 1.0,
+        along_x: Some(x),
+        scale_x: 1.0,
+        incidence: 0.0,
+    }
+}

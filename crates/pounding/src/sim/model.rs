@@ -1,0 +1,165 @@
+//! The structural model of a simulation: deck bodies in the reference pose, bearings, the linear
+//! mass / stiffness / Rayleigh-damping matrices.
+
+use super::SimError;
+use crate::geometry::{Deck, MassProperties};
+use crate::math::{Real, Vector};
+use nalgebra::{Matrix3, Matrix6};
+
+/// One discrete elastic bearing: a linear spring of equal stiffness `k` in x and y, attached to a
+/// body point of a deck and to the ground (pier / abutment).
+///
+/// Linearised kinematics: the bearing displacement is `u_p = (u_x − θ r_y, u_y + θ r_x)` with
+/// `r = p − G⁰` the lever arm from the deck's reference centroid, so its force on the deck is
+/// `−k u_p` and its moment about G is `r × (−k u_p)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Bearing {
+    /// Attachment point in the reference pose, relative to the deck's own face midpoint `M_j`
+    /// (spec §4 coordinates: deck 1's body lies in `y ≥ 0`, deck 2's in `y ≤ 0`) \[m\].
+    pub point: Vector,
+    /// Stiffness `k ≥ 0` in each horizontal direction \[N/m\].
+    pub stiffness: Real,
+}
+
+/// Checks one deck's parameters via [`Deck::new`]; `j` (1 or 2) suffixes the names (`R1`, `beta2`, ...).
+pub(crate) fn validate_deck(deck: &Deck, j: usize) -> Result<(), SimError> {
+    Deck::new(
+        deck.radius,
+        deck.angle,
+        deck.width,
+        deck.thickness,
+        deck.density,
+    )
+    .map_err(|e| SimError::Geometry(e.for_deck(j)))?;
+    Ok(())
+}
+
+/// A deck's body-fixed points in the reference pose, global frame of spec §4.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DeckBody {
+    /// Mass properties.
+    pub mass: MassProperties,
+    /// Reference centroid `G⁰` (global).
+    pub centroid: Vector,
+    /// Reference face midpoint `M⁰` (global): `(0, g)` for deck 1, `(0, 0)` for deck 2.
+    pub face_mid: Vector,
+    /// Joint-face corners `[inner, outer]` (global, reference pose).
+    pub joint_corners: [Vector; 2],
+    /// Far-end (other end face) corners `[inner, outer]` (global, reference pose).
+    pub far_corners: [Vector; 2],
+    /// Unit vector along the joint face from inner to outer corner, `e_j` (spec §4).
+    pub face_dir: Vector,
+    /// Unit normal of the joint face pointing *into* the deck (the direction in which the end
+    /// moves off its seat).
+    pub joint_inward: Vector,
+    /// Unit normal of the far end face pointing into the deck.
+    pub far_inward: Vector,
+}
+
+impl DeckBody {
+    /// Reference-pose body of deck `j ∈ {1, 2}` with joint opening `gap` (spec §4):
+    /// deck 1 points `M_1 + (R_1 − r cos φ, r sin φ)`, deck 2 points `M_2 + (−R_2 + r cos φ, −r sin φ)`,
+    /// `r ∈ [R − W/2, R + W/2]`, `φ ∈ [0, β]`.
+    pub fn new(deck: &Deck, j: usize, gap: Real) -> Self {
+        let mass = deck.mass_properties();
+        let (r, w, b) = (deck.radius, deck.width, deck.angle);
+        let s = if j == 1 { 1.0 } else { -1.0 };
+        let face_mid = if j == 1 {
+            Vector::new(0.0, gap)
+        } else {
+            Vector::zeros()
+        };
+        // body point at (radius ρ, angle φ), relative to M_j
+        let pt = |rho: Real, phi: Real| Vector::new(s * (r - rho * phi.cos()), s * rho * phi.sin());
+        let ri = r - w / 2.0;
+        let ro = r + w / 2.0;
+        DeckBody {
+            mass,
+            centroid: face_mid + Vector::new(s * (r - mass.x_m), s * mass.y_m),
+            face_mid,
+            joint_corners: [face_mid + pt(ri, 0.0), face_mid + pt(ro, 0.0)],
+            far_corners: [face_mid + pt(ri, b), face_mid + pt(ro, b)],
+            face_dir: Vector::new(-s, 0.0),
+            joint_inward: Vector::new(0.0, s),
+            // d/dφ of the body point: s (ρ sin φ, ρ cos φ) points into the deck at φ = 0 and out
+            // of it at φ = β.
+            far_inward: -Vector::new(s * b.sin(), s * b.cos()),
+        }
+    }
+
+    /// Position of the body point with reference position `p0` when the deck's centroid is
+    /// displaced by `d` and the deck turned by `θ` (given as `(sin θ, cos θ)`) about it:
+    /// `p = G⁰ + d + Rot(θ)(p0 − G⁰)`.
+    #[inline]
+    pub fn place(&self, p0: &Vector, d: &Vector, sc: (Real, Real)) -> Vector {
+        let r = p0 - self.centroid;
+        let (s, c) = sc;
+        self.centroid + d + Vector::new(c * r.x - s * r.y, s * r.x + c * r.y)
+    }
+}
+
+/// `3 × 3` stiffness of one deck's bearings in `(u_x, u_y, θ)` (linearised kinematics):
+/// `K = Σ_p k_p Bᵀ B`, `B = [[1, 0, −r_y], [0, 1, r_x]]`, `r = p − G⁰`.
+pub fn bearing_stiffness(body: &DeckBody, bearings: &[Bearing]) -> Matrix3<Real> {
+    let mut k = Matrix3::zeros();
+    for b in bearings {
+        let r = body.face_mid + b.point - body.centroid;
+        let bm = nalgebra::Matrix2x3::new(1.0, 0.0, -r.y, 0.0, 1.0, r.x);
+        k += b.stiffness * bm.transpose() * bm;
+    }
+    k
+}
+
+/// Natural circular frequencies `ω_1 ≤ ω_2 ≤ ω_3` \[rad/s\] of `K φ = ω² M φ` for one deck
+/// (`M = diag(m, m, I)`).
+pub fn deck_frequencies(mass: &MassProperties, k: &Matrix3<Real>) -> [Real; 3] {
+    let d = nalgebra::Vector3::new(
+        mass.mass.sqrt().recip(),
+        mass.mass.sqrt().recip(),
+        mass.inertia.sqrt().recip(),
+    );
+    let a = Matrix3::from_diagonal(&d) * k * Matrix3::from_diagonal(&d);
+    let a = (a + a.transpose()) * 0.5;
+    let mut ev: Vec<Real> = a
+        .symmetric_eigenvalues()
+        .iter()
+        .map(|&l| l.max(0.0).sqrt())
+        .collect();
+    ev.sort_by(Real::total_cmp);
+    [ev[0], ev[1], ev[2]]
+}
+
+/// Rayleigh coefficients `(a_0, a_1)` of `C = a_0 M + a_1 K` giving damping ratio `ζ` at the two
+/// lowest *distinct* frequencies `ω_a < ω_b` (relative separation > 1e-6):
+/// `a_0 = 2ζ ω_a ω_b/(ω_a + ω_b)`, `a_1 = 2ζ/(ω_a + ω_b)`. With a single distinct frequency `ω`:
+/// `a_0 = ζω`, `a_1 = ζ/ω`. Returns `None` if `ζ > 0` and every frequency is zero.
+pub fn rayleigh_coefficients(zeta: Real, omega: &[Real; 3]) -> Option<(Real, Real)> {
+    if zeta == 0.0 {
+        return Some((0.0, 0.0));
+    }
+    let wa = omega[0];
+    let wb = omega
+        .iter()
+        .copied()
+        .find(|&w| w > wa * (1.0 + 1e-6) && w > 0.0);
+    match wb {
+        Some(wb) => Some((2.0 * zeta * wa * wb / (wa + wb), 2.0 * zeta / (wa + wb))),
+        None if wa > 0.0 => Some((zeta * wa, zeta / wa)),
+        None => None,
+    }
+}
+
+/// The assembled linear system of both decks in `q = (x1, y1, θ1, x2, y2, θ2)` (spec §5.1).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LinearSystem {
+    /// `M = diag(m1, m1, I1, m2, m2, I2)`.
+    pub mass: Matrix6<Real>,
+    /// Bearing stiffness (block diagonal).
+    pub stiffness: Matrix6<Real>,
+    /// Rayleigh damping (block diagonal), per deck `C_j = a_0j M_j + a_1j K_j`.
+    pub damping: Matrix6<Real>,
+    /// Natural frequencies of each deck \[rad/s\].
+    pub frequencies: [[Real; 3]; 2],
+    /// Rayleigh coefficients `(a_0, a_1)` per deck.
+    pub rayleigh: [(Real, Real); 2],
+}
