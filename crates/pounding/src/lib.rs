@@ -11,6 +11,8 @@
 //! * [`geometry`] — annular-sector decks, their mass properties (spec §3), the S arrangement (§4) and the
 //!   impact configuration of a corner against the other deck's end face (§5).
 //! * [`contact`] — generalised force directions `w_N`, `w_T` (§6) and the Delassus matrix (§7).
+//! * [`contact_law`] — compliance contact laws (Kelvin, Hertz, Hertz-damp, bilinear, Jankowski), their
+//!   calibrations and a two-mass collision integrator (not yet used by a simulator).
 //! * [`analytic`] — the closed-form single-impact solution: stick interval `[L, U]`, modes, impulses (§9–§11).
 //! * [`impact`] — the generic multi-contact frictional impact of planar rigid bodies, solved as an LCP (§8).
 //! * [`shape`] — straight and skewed decks beside the curved one (mass properties, end faces, corners in
@@ -24,6 +26,7 @@
 
 pub mod analytic;
 pub mod contact;
+pub mod contact_law;
 pub mod geometry;
 pub mod ground_motion;
 pub mod impact;

@@ -23,3 +23,5 @@ mod batch;
 mod lcp;
 mod shapes;
 mod simulate;
+mod study;
+

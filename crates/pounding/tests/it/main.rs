@@ -4,7 +4,9 @@ mod analytic;
 mod batch;
 mod common;
 mod contact;
+mod contact_law;
 mod event_exact;
+
 mod geometry;
 mod ground_motion;
 mod impact;
@@ -12,3 +14,5 @@ mod lcp;
 mod shapes;
 mod sim;
 mod sim_shapes;
+mod study;
+
