@@ -24,4 +24,3 @@ mod lcp;
 mod shapes;
 mod simulate;
 mod study;
-

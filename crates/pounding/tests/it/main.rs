@@ -6,7 +6,6 @@ mod common;
 mod contact;
 mod contact_law;
 mod event_exact;
-
 mod geometry;
 mod ground_motion;
 mod impact;
@@ -15,4 +14,3 @@ mod shapes;
 mod sim;
 mod sim_shapes;
 mod study;
-
