@@ -5,7 +5,8 @@
 //! * `joint_gap.png` — the joint gap at both ends of the joint, with the impacts marked;
 //! * `impulses.png` — normal and tangential impulse of every impacting contact, by mode;
 //! * `energy.png` — the energy balance (input, stored, dissipated);
-//! * `layout.png` — plan view of the two decks, bearings, joint and axes (reference pose).
+//! * `abutment_gap.png` — with abutments: the gap of each far end face to its abutment;
+//! * `layout.png` — plan view of the two decks, bearings, joint, abutments and axes (reference pose).
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -260,7 +261,7 @@ pub fn write_all(out: &Path, problem: &SimProblem, sol: &SimSolution) -> R {
     })?;
 
     save(out, "joint_gap.png", (1400, 600), |root| {
-        let w = problem.model.arrangement.deck1.width / 2.0;
+        let w = problem.model.deck_bodies()[0].half_face;
         line_panel(
             root,
             &format!(
@@ -286,6 +287,38 @@ pub fn write_all(out: &Path, problem: &SimProblem, sol: &SimSolution) -> R {
         )?;
         Ok(())
     })?;
+
+    if problem.model.abutments.iter().any(Option::is_some) {
+        save(out, "abutment_gap.png", (1400, 600), |root| {
+            let mut series = Vec::new();
+            let mut lines = vec![(0.0, "contact", BLACK)];
+            let labels = ["deck 1 far end", "deck 2 far end"];
+            let gap_labels = ["initial gap, abutment 1", "initial gap, abutment 2"];
+            for (j, a) in problem.model.abutments.iter().enumerate() {
+                if let Some(a) = a {
+                    let c = if j == 0 { BLUE } else { RED };
+                    series.push(Series {
+                        label: labels[j],
+                        pts: col(&|i| h.abutment_gaps[i][j]),
+                        color: c,
+                    });
+                    lines.push((a.gap, gap_labels[j], c));
+                }
+            }
+            line_panel(
+                root,
+                &format!(
+                    "Gap between far end faces and abutments (smaller of the two corners; {} impacting contacts)",
+                    sol.summary.abutment_impacting_contacts
+                ),
+                "gap [m]",
+                t_end,
+                &series,
+                &lines,
+                SeriesLabelPosition::UpperRight,
+            )
+        })?;
+    }
 
     save(out, "impulses.png", (1400, 800), |root| {
         let areas = root.split_evenly((2, 1));

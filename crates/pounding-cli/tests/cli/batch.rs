@@ -322,3 +322,43 @@ fn bad_shape_and_abutment_scenarios_are_errors_naming_the_key() {
         assert!(!out.exists(), "{text}: output written");
     }
 }
+
+/// Skewed decks with abutments: abutment impacts are reported (impacts.csv, summary.json,
+/// history.csv columns, abutment_gap.png) and the energy balance still closes.
+#[test]
+fn skew_decks_with_abutments_report_abutment_impacts() {
+    let d = tmp("abut");
+    let sc = d.join("skew.toml");
+    std::fs::write(
+        &sc,
+        "[decks]\nshape = \"skew\"\nL1 = 30.0\nL2 = 40.0\nskew_deg = 40.0\nwidth = 10.0\n\
+         thickness = 0.5\n[abutments]\ngap1 = 0.03\ngap2 = 0.04\nseat_length2 = 0.3\n\
+         [ground_motion]\nscale_y = 2.0\nscale_x = 2.0\n[time]\nduration = 10.0\n",
+    )
+    .unwrap();
+    let out = d.join("o");
+    let o = pounding()
+        .args(["simulate", s(&sc), "--out", s(&out)])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let js = std::fs::read_to_string(out.join("summary.json")).unwrap();
+    let n_ab = json_number(&js, "impacting_contacts", 0); // the first occurrence: abutments
+    assert!(js.contains("\"abutments\""), "{js}");
+    assert!(json_number(&js, "energy_balance_error", 0) < 1e-9);
+    assert_eq!(json_number(&js, "seat_length_m", 0), 0.4); // [joint], first in the abutment map
+    let imp = std::fs::read_to_string(out.join("impacts.csv")).unwrap();
+    let ab_rows = imp.lines().filter(|l| l.contains(",abutment")).count();
+    assert!(ab_rows > 0);
+    assert_eq!(ab_rows as f64, n_ab, "{js}");
+    let hist = std::fs::read_to_string(out.join("history.csv")).unwrap();
+    let head = hist.lines().next().unwrap();
+    assert!(head.ends_with(",abutment_gap1_m,abutment_gap2_m"), "{head}");
+    // the abutment gaps never go much below 0 (overlap bounded by one step's travel)
+    let gi = head.split(',').count() - 2;
+    for l in hist.lines().skip(1) {
+        let c: Vec<f64> = l.split(',').map(|v| v.parse().unwrap()).collect();
+        assert!(c[gi] > -1e-3 && c[gi + 1] > -1e-3, "{l}");
+    }
+    assert!(out.join("abutment_gap.png").exists());
+}
