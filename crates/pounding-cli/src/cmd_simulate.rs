@@ -1,9 +1,10 @@
-//! `pounding simulate`: seismic time-history simulation of two curved decks with pounding.
+//! `pounding simulate`: seismic time-history simulation of two decks (curved, straight or skewed,
+//! optionally with abutments) with pounding.
 //!
 //! Reads an optional scenario TOML (unknown keys are errors; record paths resolve relative to the
 //! scenario file), runs [`pounding::sim::simulate`] and writes `history.csv`, `impacts.csv`,
 //! `summary.json`, `timing.json` and PNG plots into the output directory. Every input is validated
-//! before anything is written.
+//! before anything is written. With `--records` it runs a batch instead ([`sim_batch`]).
 
 use anyhow::{Context, Result, anyhow, bail};
 use pounding::geometry::{ContactCase, Deck, SArrangement};

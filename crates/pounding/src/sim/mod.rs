@@ -81,6 +81,14 @@ pub enum SimError {
         /// What was expected.
         reason: String,
     },
+    /// A non-numeric argument is malformed (e.g. `--shard K/N`); the message names it.
+    #[error("invalid {name}: {reason}")]
+    InvalidArgument {
+        /// Argument name as the user knows it.
+        name: String,
+        /// What is wrong and what was expected.
+        reason: String,
+    },
     /// Bad ground-motion input.
     #[error(transparent)]
     GroundMotion(#[from] GroundMotionError),
