@@ -12,6 +12,7 @@
 //! a verification of all LCP conditions against the original data.
 
 pub mod enumerate;
+mod full;
 pub mod io;
 pub mod lemke;
 
