@@ -566,13 +566,9 @@ proptest! {
         let m: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| p.m(i, j)));
         let q: [f64; 3] = p.q().try_into().unwrap();
         let f = solve_fixed(&m, &q, &LemkeSettings::default());
-        let painleve = mu * g[1].abs() >= g[0];
-        if painleve {
-            // μ|G_NT| ≥ G_NN can occur for μ ≤ 1 too: ray allowed, a wrong Solved never
-            prop_assert!(matches!(f.status, LcpStatus::Solved | LcpStatus::RayTermination));
-        } else {
-            prop_assert_eq!(f.status, LcpStatus::Solved);
-        }
+        // μ ≤ 1 includes Painlevé-type cases (μ|G_NT| ≥ G_NN when |G_NT| > G_NN): Lemke solved
+        // all of 2·10⁶ random ones while developing; spec §9 allows a ray only for μ > 1 here.
+        prop_assert_eq!(f.status, LcpStatus::Solved);
         if f.status == LcpStatus::Solved {
             prop_assert!(check_lcp(&p, &f.z, 1e-9).is_ok());
             // physical quantities against the analytic single-impact solution (spec §9)
@@ -676,8 +672,8 @@ fn tobenna_needs_tolerant_ties() {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 1000, ..ProptestConfig::default() })]
 
-    /// Nearly singular `G` (condition numbers up to ~1e10, impulses up to ~1e9): never a wrong
-    /// `Solved`; outside the Painlevé regime always `Solved` (1e6 cases checked while developing).
+    /// Nearly singular `G` (condition numbers up to ~1e10, impulses up to ~1e9), μ ≤ 1: always
+    /// `Solved` with a verified z (2·10⁶ cases checked while developing, 59 % of them Painlevé).
     #[test]
     fn impact3_ill_conditioned_g(mu in 0.0f64..=1.0, eps in 0.0f64..=1.0, gn in -3.0f64..-0.01,
                                  gt in -30.0f64..30.0, a in 0.01f64..3.0, b in -10.0f64..10.0,
@@ -687,13 +683,7 @@ proptest! {
         let m: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| p.m(i, j)));
         let q: [f64; 3] = p.q().try_into().unwrap();
         let f = solve_fixed(&m, &q, &LemkeSettings::default());
-        let painleve = mu * g[1].abs() >= g[0];
-        prop_assert!(
-            f.status == LcpStatus::Solved || (painleve && f.status == LcpStatus::RayTermination),
-            "{:?}, Painlevé regime: {}", f.status, painleve
-        );
-        if f.status == LcpStatus::Solved {
-            prop_assert!(check_lcp(&p, &f.z, 1e-9).is_ok());
-        }
+        prop_assert_eq!(f.status, LcpStatus::Solved);
+        prop_assert!(check_lcp(&p, &f.z, 1e-9).is_ok());
     }
 }
