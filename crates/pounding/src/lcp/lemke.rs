@@ -42,17 +42,20 @@
 //!
 //! # Implementation
 //!
-//! The tableau is kept in *compact* form: only the `n + 1` nonbasic columns `B⁻¹A_N` and `b` are
-//! stored and each pivot exchanges a basic and a nonbasic variable (`n·(n+2)` multiply-adds per
-//! pivot instead of `n·(2n+2)` for the full tableau). A column of `B⁻¹` needed by the
-//! lexicographic rule is the stored column of `w_k` when `w_k` is nonbasic and the unit vector of
-//! its row when it is basic. The `z₀` column is never needed again after `z₀` enters (it leaves
-//! only at the end), so the first pivot is written in closed form.
+//! Two kernels, chosen by size (both measured faster than the other in their range):
 //!
-//! One kernel does the work for every size: it operates on slices and is inlined with a
-//! compile-time `n` into [`solve_fixed`] (stack arrays) and into [`Lemke::solve`] for
-//! `n ∈ {2, 3, 4, 6, 12}` (loops unrolled and vectorised by the compiler), and with a run-time `n`
-//! for the other sizes (heap workspace kept between solves, so a warm solve allocates nothing).
+//! * **full tableau** (`n ≤ 6`, module `full`): `B⁻¹` (the `w` columns of `B⁻¹[I, −M, −e]`) and
+//!   `−B⁻¹M` are kept explicitly, `n·(2n+1)` multiply-adds per pivot, no position bookkeeping;
+//! * **compact tableau** (`n > 6`): only the `n + 1` nonbasic columns `B⁻¹A_N` and `b` are stored and
+//!   each pivot exchanges a basic and a nonbasic variable (`n·(n+2)` multiply-adds per pivot). A
+//!   column of `B⁻¹` needed by the lexicographic rule is the stored column of `w_k` when `w_k` is
+//!   nonbasic and the unit vector of its row when it is basic.
+//!
+//! In both, the `z₀` column is never needed again after `z₀` enters (it leaves only at the end), so
+//! the first pivot is written in closed form. Each kernel operates on slices and is inlined with a
+//! compile-time `n` into [`solve_fixed`] (stack arrays, loops unrolled and vectorised by the
+//! compiler) and into [`Lemke::solve`] for `n ∈ {1, 2, 3, 4, 6, 12}`, and with a run-time `n` for the
+//! other sizes (heap workspace kept between solves, so a warm solve allocates nothing).
 
 use super::full::{WorkFull, kernel_full};
 use super::{FixedSolution, LcpProblem, LcpSolution, LcpStatus, LemkeSettings};
@@ -588,8 +591,9 @@ const FULL_MAX: usize = 6;
 /// Lexicographic Lemke's method with a reusable workspace (no allocation per solve once warm).
 ///
 /// See the [module documentation](crate::lcp::lemke) for the algorithm, the tie rules and the verification that
-/// guards [`LcpStatus::Solved`]. Sizes `n ∈ {2, 3, 4, 6, 12}` run size-specialised copies of
-/// the kernel (compile-time `n`); every size uses the heap workspace kept in the solver.
+/// guards [`LcpStatus::Solved`]. Sizes `n ∈ {1, 2, 3, 4, 6, 12}` run size-specialised copies of
+/// the kernels (compile-time `n`; `n ≤ 6` on the stack); the other sizes use the heap workspace
+/// kept in the solver.
 #[derive(Debug, Clone, Default)]
 pub struct Lemke {
     /// The settings in force.
