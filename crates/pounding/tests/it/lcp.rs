@@ -445,6 +445,15 @@ fn bad_files_give_clear_errors() {
     assert!(e.contains("PROBLEM 1") && e.contains("end of file"), "{e}");
     let e = parse_err("LCPSET 1\nCOUNT 1\nPROBLEM 0 p6 1\nPARAMS 2 1\nM 1\nq -1\n");
     assert!(e.contains("2 PARAMS values"), "{e}");
+    // absurd sizes are refused before anything is allocated
+    let e = parse_err("LCPSET 1\nCOUNT 999999999999999999\n");
+    assert!(e.contains("PROBLEM 0") && e.contains("end of file"), "{e}");
+    let e = parse_err("2\n1\n2\n2\n999999999999\n1\n1\n2\n2\n");
+    assert!(e.contains("nbblocks"), "{e}");
+    let e = parse_err("99999999999\n0\n99999999999\n99999999999\n");
+    assert!(e.contains(":1:") && e.contains("4096"), "{e}");
+    let e = parse_err("LCPSET 1\nCOUNT 1\nPROBLEM 0 p6 4294967297\nPARAMS 0\nM 1\nq 1\n");
+    assert!(e.contains(":3:") && e.contains("4096"), "{e}");
     let e = parse_err("LCPSET 1\nCOUNT 0\nPROBLEM 0 p6 1\n");
     assert!(e.contains("end of file after COUNT"), "{e}");
     // a directory
