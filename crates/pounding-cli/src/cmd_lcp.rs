@@ -277,6 +277,9 @@ fn bench(
         bail!("--repeats must be in 1..=101, got {repeats}");
     }
     let set = read(file, solver)?;
+    if set.is_empty() {
+        bail!("{}: the file holds no problems (COUNT 0)", file.display());
+    }
     // classes in order of first appearance
     let mut order: Vec<&str> = Vec::new();
     for e in &set {

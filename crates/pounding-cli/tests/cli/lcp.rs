@@ -213,6 +213,14 @@ fn bad_input_fails_cleanly() {
             assert!(!e.contains("panicked"), "{e}");
         }
     }
+    // no problems: solve writes just the header, bench refuses
+    let p = d.join("zero.txt");
+    std::fs::write(&p, "LCPSET 1\nCOUNT 0\n").unwrap();
+    let o = run(&["lcp", "solve", p.to_str().unwrap()]);
+    assert!(o.status.success() && String::from_utf8_lossy(&o.stdout).starts_with("LCPSOL 1\n"));
+    let o = run(&["lcp", "bench", p.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("no problems"), "{}", stderr(&o));
     // a directory and a missing file
     for p in [d.to_str().unwrap(), "/nonexistent/x.dat"] {
         let o = run(&["lcp", "solve", p]);

@@ -21,6 +21,9 @@ use crate::output::float_token;
 use std::path::{Path, PathBuf};
 use thiserror::Error;
 
+/// Largest problem size accepted from a file (`M` is stored densely: 4096² doubles = 128 MiB).
+pub const MAX_FILE_DIM: usize = 4096;
+
 /// A file could not be read or is malformed.
 #[derive(Debug, Error)]
 pub enum LcpIoError {
@@ -191,9 +194,14 @@ impl<'a> Tokens<'a> {
 /// Parses the text of a Siconos `.dat` LCP file (`file` is used in error messages).
 pub fn parse_siconos(text: &str, file: &str) -> Result<LcpProblem, LcpIoError> {
     let mut t = Tokens::new(text, file);
+    let nl = t.line();
     let n = t.usize("the problem size n (a nonnegative integer)")?;
-    if n == 0 {
-        return Err(t.err(1, "a problem size n >= 1", "0"));
+    if n == 0 || n > MAX_FILE_DIM {
+        return Err(t.err(
+            nl,
+            &format!("a problem size 1 <= n <= {MAX_FILE_DIM} (M is stored densely)"),
+            &n.to_string(),
+        ));
     }
     let l = t.line();
     let storage = t.usize("the storage type (0 = dense, 1 = sparse-block)")?;
@@ -257,6 +265,16 @@ fn parse_sbm(t: &mut Tokens<'_>, n: usize, m: &mut [f64]) -> Result<(), LcpIoErr
             l,
             &format!("block counts in 1..={n}"),
             &format!("{bn0} x {bn1}"),
+        ));
+    }
+    if nb == 0 || nb > bn0 * bn1 {
+        return Err(t.err(
+            l,
+            &format!(
+                "nbblocks in 1..={} (blocknumber0 x blocknumber1)",
+                bn0 * bn1
+            ),
+            &nb.to_string(),
         ));
     }
     let mut cum = |cnt: usize, what: &str| -> Result<Vec<usize>, LcpIoError> {
@@ -390,7 +408,7 @@ pub fn parse_lcpset(text: &str, file: &str) -> Result<Vec<LcpEntry>, LcpIoError>
             })
             .collect()
     };
-    let mut out = Vec::with_capacity(count);
+    let mut out = Vec::with_capacity(count.min(1 << 16));
     for id in 0..count {
         let exp = format!("`PROBLEM {id} <class> <n>` (COUNT = {count})");
         let (pl, p) = next(&exp)?;
@@ -402,8 +420,14 @@ pub fn parse_lcpset(text: &str, file: &str) -> Result<Vec<LcpEntry>, LcpIoError>
                 let n = n
                     .parse::<usize>()
                     .ok()
-                    .filter(|&n| n > 0)
-                    .ok_or_else(|| perr(pl, "a problem size n >= 1", &format!("`{n}`")))?;
+                    .filter(|&n| n > 0 && n <= MAX_FILE_DIM)
+                    .ok_or_else(|| {
+                        perr(
+                            pl,
+                            &format!("a problem size 1 <= n <= {MAX_FILE_DIM}"),
+                            &format!("`{n}`"),
+                        )
+                    })?;
                 (class.to_string(), n)
             }
             _ => return Err(perr(pl, &exp, &format!("`{}`", p.join(" ")))),

@@ -42,18 +42,22 @@
 //!
 //! # Implementation
 //!
-//! The tableau is kept in *compact* form: only the `n + 1` nonbasic columns `B⁻¹A_N` and `b` are
-//! stored and each pivot exchanges a basic and a nonbasic variable (`n·(n+2)` multiply-adds per
-//! pivot instead of `n·(2n+2)` for the full tableau). A column of `B⁻¹` needed by the
-//! lexicographic rule is the stored column of `w_k` when `w_k` is nonbasic and the unit vector of
-//! its row when it is basic. The `z₀` column is never needed again after `z₀` enters (it leaves
-//! only at the end), so the first pivot is written in closed form.
+//! Two kernels, chosen by size (both measured faster than the other in their range):
 //!
-//! One kernel does the work for every size: it operates on slices and is inlined with a
-//! compile-time `n` into [`solve_fixed`] (stack arrays) and into [`Lemke::solve`] for
-//! `n ∈ {2, 3, 4, 6, 12}` (loops unrolled and vectorised by the compiler), and with a run-time `n`
-//! for the other sizes (heap workspace kept between solves, so a warm solve allocates nothing).
+//! * **full tableau** (`n ≤ 6`, module `full`): `B⁻¹` (the `w` columns of `B⁻¹[I, −M, −e]`) and
+//!   `−B⁻¹M` are kept explicitly, `n·(2n+1)` multiply-adds per pivot, no position bookkeeping;
+//! * **compact tableau** (`n > 6`): only the `n + 1` nonbasic columns `B⁻¹A_N` and `b` are stored and
+//!   each pivot exchanges a basic and a nonbasic variable (`n·(n+2)` multiply-adds per pivot). A
+//!   column of `B⁻¹` needed by the lexicographic rule is the stored column of `w_k` when `w_k` is
+//!   nonbasic and the unit vector of its row when it is basic.
+//!
+//! In both, the `z₀` column is never needed again after `z₀` enters (it leaves only at the end), so
+//! the first pivot is written in closed form. Each kernel operates on slices and is inlined with a
+//! compile-time `n` into [`solve_fixed`] (stack arrays, loops unrolled and vectorised by the
+//! compiler) and into [`Lemke::solve`] for `n ∈ {1, 2, 3, 4, 6, 12}`, and with a run-time `n` for the
+//! other sizes (heap workspace kept between solves, so a warm solve allocates nothing).
 
+use super::full::{WorkFull, kernel_full};
 use super::{FixedSolution, LcpProblem, LcpSolution, LcpStatus, LemkeSettings};
 
 /// Result of the kernel (the vectors are written into the caller's buffers).
@@ -110,29 +114,49 @@ pub(crate) fn verify(
         qn = qn.max(qi.abs());
     }
     let mut res = 0.0f64;
-    let mut scale = qn;
     let mut lowest = 0.0f64;
     let mut finite = true;
     for i in 0..n {
         let row = &m[i * n..i * n + n];
         let mut wi = q[i];
-        let mut si = 0.0;
         for j in 0..n {
-            let p = row[j] * z[j];
-            wi += p;
-            si += p.abs();
+            wi += row[j] * z[j];
         }
         w[i] = wi;
         let zi = z[i];
-        let c = zi.min(wi).abs();
-        res = res.max(c);
-        scale = scale.max(si);
-        lowest = lowest.min(zi.min(wi));
-        finite &= c.is_finite() && si.is_finite();
+        let c = zi.min(wi);
+        res = res.max(c.abs());
+        lowest = lowest.min(c);
+        finite &= c.is_finite();
+    }
+    let lim = tol * qn;
+    let mut ok = finite && res <= lim && lowest >= -lim;
+    if !ok && finite {
+        // S = max(1, ‖q‖∞) was too strict: retry relative to the rounding scale of M z + q
+        ok = within_rounding_scale(n, m, z, qn, res, lowest, tol);
+    }
+    (ok, res / qn)
+}
+
+/// The verification test with `S = max(‖q‖∞, maxᵢ Σⱼ |Mᵢⱼ zⱼ|)` (cold path of [`verify`]).
+#[cold]
+#[inline(never)]
+fn within_rounding_scale(
+    n: usize,
+    m: &[f64],
+    z: &[f64],
+    qn: f64,
+    res: f64,
+    lowest: f64,
+    tol: f64,
+) -> bool {
+    let mut scale = qn;
+    for i in 0..n {
+        let s: f64 = (0..n).map(|j| (m[i * n + j] * z[j]).abs()).sum();
+        scale = scale.max(s);
     }
     let lim = tol * scale;
-    let ok = finite && res <= lim && lowest >= -lim;
-    (ok, res / qn)
+    scale.is_finite() && res <= lim && lowest >= -lim
 }
 
 /// The lexicographic Lemke kernel. `m` is row-major `n × n`; `z`, `w` receive the result
@@ -385,7 +409,7 @@ pub(crate) fn kernel(
 
 #[cold]
 #[inline(never)]
-fn fail(status: LcpStatus, pivots: usize, z: &mut [f64], w: &mut [f64]) -> KernelOut {
+pub(crate) fn fail(status: LcpStatus, pivots: usize, z: &mut [f64], w: &mut [f64]) -> KernelOut {
     z.fill(f64::NAN);
     w.fill(f64::NAN);
     KernelOut {
@@ -496,27 +520,62 @@ pub fn solve_fixed<const N: usize>(
     q: &[f64; N],
     settings: &LemkeSettings,
 ) -> FixedSolution<N> {
-    let mut t = [[0.0f64; N]; N];
-    let mut v = [[0.0f64; N]; 3];
-    let mut iw = [[0usize; N]; 4];
+    solve_fixed_slice::<N>(m.as_flattened(), q, settings)
+}
+
+/// [`solve_fixed`] on row-major slices (`m.len() ≥ N·N`, `q.len() ≥ N`).
+#[inline(always)]
+fn solve_fixed_slice<const N: usize>(
+    m: &[f64],
+    q: &[f64],
+    settings: &LemkeSettings,
+) -> FixedSolution<N> {
     let mut z = [0.0f64; N];
     let mut w = [0.0f64; N];
-    let [tx, b, d] = &mut v;
-    let out = kernel(
-        N,
-        m.as_flattened(),
-        q,
-        settings,
-        Work {
-            t: t.as_flattened_mut(),
-            tx,
-            b,
-            d,
-            iw: iw.as_flattened_mut(),
-        },
-        &mut z,
-        &mut w,
-    );
+    let out = if N <= FULL_MAX {
+        let mut binv = [[0.0f64; N]; N];
+        let mut tz = [[0.0f64; N]; N];
+        let mut v = [[0.0f64; N]; 2];
+        let mut iw = [[0usize; N]; 2];
+        let [b, d] = &mut v;
+        let [basis, ties] = &mut iw;
+        kernel_full(
+            N,
+            m,
+            q,
+            settings,
+            WorkFull {
+                binv: binv.as_flattened_mut(),
+                tz: tz.as_flattened_mut(),
+                b,
+                basis,
+                d,
+                ties,
+            },
+            &mut z,
+            &mut w,
+        )
+    } else {
+        let mut t = [[0.0f64; N]; N];
+        let mut v = [[0.0f64; N]; 3];
+        let mut iw = [[0usize; N]; 4];
+        let [tx, b, d] = &mut v;
+        kernel(
+            N,
+            m,
+            q,
+            settings,
+            Work {
+                t: t.as_flattened_mut(),
+                tx,
+                b,
+                d,
+                iw: iw.as_flattened_mut(),
+            },
+            &mut z,
+            &mut w,
+        )
+    };
     FixedSolution {
         z,
         w,
@@ -526,11 +585,15 @@ pub fn solve_fixed<const N: usize>(
     }
 }
 
+/// Largest size solved by the full-tableau kernel (larger sizes use the compact one).
+const FULL_MAX: usize = 6;
+
 /// Lexicographic Lemke's method with a reusable workspace (no allocation per solve once warm).
 ///
 /// See the [module documentation](crate::lcp::lemke) for the algorithm, the tie rules and the verification that
-/// guards [`LcpStatus::Solved`]. Sizes `n ∈ {2, 3, 4, 6, 12}` run size-specialised copies of
-/// the kernel (compile-time `n`); every size uses the heap workspace kept in the solver.
+/// guards [`LcpStatus::Solved`]. Sizes `n ∈ {1, 2, 3, 4, 6, 12}` run size-specialised copies of
+/// the kernels (compile-time `n`; `n ≤ 6` on the stack); the other sizes use the heap workspace
+/// kept in the solver.
 #[derive(Debug, Clone, Default)]
 pub struct Lemke {
     /// The settings in force.
@@ -572,17 +635,41 @@ impl Lemke {
         let m = problem.m_row_major();
         let q = problem.q();
         let nn = n * n;
-        if self.ws.len() < nn + 3 * n {
-            self.ws.resize(nn + 3 * n, 0.0);
+        if self.ws.len() < 2 * nn + 3 * n {
+            self.ws.resize(2 * nn + 3 * n, 0.0);
         }
         if self.wsi.len() < 4 * n {
             self.wsi.resize(4 * n, 0);
         }
-        let (t, rest) = self.ws.split_at_mut(nn);
-        let (tx, rest) = rest.split_at_mut(n);
-        let (b, d) = rest.split_at_mut(n);
-        macro_rules! run {
-            ($k:expr) => {
+        macro_rules! full {
+            ($k:expr) => {{
+                let (binv, rest) = self.ws.split_at_mut(nn);
+                let (tz, rest) = rest.split_at_mut(nn);
+                let (b, d) = rest.split_at_mut(n);
+                let (basis, ties) = self.wsi.split_at_mut(n);
+                kernel_full(
+                    $k,
+                    m,
+                    q,
+                    &self.settings,
+                    WorkFull {
+                        binv,
+                        tz,
+                        b,
+                        basis,
+                        d,
+                        ties,
+                    },
+                    &mut out.z,
+                    &mut out.w,
+                )
+            }};
+        }
+        macro_rules! compact {
+            ($k:expr) => {{
+                let (t, rest) = self.ws.split_at_mut(nn);
+                let (tx, rest) = rest.split_at_mut(n);
+                let (b, d) = rest.split_at_mut(n);
                 kernel(
                     $k,
                     m,
@@ -598,15 +685,28 @@ impl Lemke {
                     &mut out.z,
                     &mut out.w,
                 )
-            };
+            }};
+        }
+        macro_rules! stack {
+            ($k:literal) => {{
+                let f = solve_fixed_slice::<$k>(m, q, &self.settings);
+                out.z.copy_from_slice(&f.z);
+                out.w.copy_from_slice(&f.w);
+                KernelOut {
+                    status: f.status,
+                    pivots: f.pivots,
+                    residual: f.residual,
+                }
+            }};
         }
         let k = match n {
-            2 => run!(2),
-            3 => run!(3),
-            4 => run!(4),
-            6 => run!(6),
-            12 => run!(12),
-            _ => run!(n),
+            1 => full!(1),
+            2 => stack!(2),
+            3 => stack!(3),
+            4 => stack!(4),
+            6 => stack!(6),
+            12 => compact!(12),
+            _ => compact!(n),
         };
         out.status = k.status;
         out.pivots = k.pivots;

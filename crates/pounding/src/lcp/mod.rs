@@ -7,11 +7,24 @@
 //!   complementary bases (`n ≤ 12`); [`LcpSolution`] / [`FixedSolution`] with an [`LcpStatus`].
 //! * [`io`] — Siconos `.dat` (dense and sparse-block), `LCPSET 1` reader, `LCPSOL 1` writer.
 //!
+//! ```
+//! use pounding::lcp::{LcpProblem, LcpStatus, Lemke, LemkeSettings, enumerate, solve_fixed};
+//! // Murty's example: M = [[2, 1], [1, 2]], q = (−5, −6), solution z = (4/3, 7/3), w = 0
+//! let p = LcpProblem::new(vec![2.0, 1.0, 1.0, 2.0], vec![-5.0, -6.0]).unwrap();
+//! let sol = Lemke::new(LemkeSettings::default()).solve(&p);
+//! assert_eq!(sol.status, LcpStatus::Solved);
+//! assert!((sol.z[0] - 4.0 / 3.0).abs() < 1e-12 && (sol.z[1] - 7.0 / 3.0).abs() < 1e-12);
+//! assert_eq!(enumerate(&p).unwrap().len(), 1); // unique
+//! let f = solve_fixed(&[[2.0, 1.0], [1.0, 2.0]], &[-5.0, -6.0], &LemkeSettings::default());
+//! assert_eq!((f.status, f.z), (sol.status, [sol.z[0], sol.z[1]]));
+//! ```
+//!
 //! Bad input is an [`LcpError`]; numerical outcomes (ray termination, pivot limit, failed
 //! verification) are statuses, never panics. Only [`LcpStatus::Solved`] carries a `z` that passed
 //! a verification of all LCP conditions against the original data.
 
 pub mod enumerate;
+mod full;
 pub mod io;
 pub mod lemke;
 

@@ -445,6 +445,15 @@ fn bad_files_give_clear_errors() {
     assert!(e.contains("PROBLEM 1") && e.contains("end of file"), "{e}");
     let e = parse_err("LCPSET 1\nCOUNT 1\nPROBLEM 0 p6 1\nPARAMS 2 1\nM 1\nq -1\n");
     assert!(e.contains("2 PARAMS values"), "{e}");
+    // absurd sizes are refused before anything is allocated
+    let e = parse_err("LCPSET 1\nCOUNT 999999999999999999\n");
+    assert!(e.contains("PROBLEM 0") && e.contains("end of file"), "{e}");
+    let e = parse_err("2\n1\n2\n2\n999999999999\n1\n1\n2\n2\n");
+    assert!(e.contains("nbblocks"), "{e}");
+    let e = parse_err("99999999999\n0\n99999999999\n99999999999\n");
+    assert!(e.contains(":1:") && e.contains("4096"), "{e}");
+    let e = parse_err("LCPSET 1\nCOUNT 1\nPROBLEM 0 p6 4294967297\nPARAMS 0\nM 1\nq 1\n");
+    assert!(e.contains(":3:") && e.contains("4096"), "{e}");
     let e = parse_err("LCPSET 1\nCOUNT 0\nPROBLEM 0 p6 1\n");
     assert!(e.contains("end of file after COUNT"), "{e}");
     // a directory
@@ -566,13 +575,9 @@ proptest! {
         let m: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| p.m(i, j)));
         let q: [f64; 3] = p.q().try_into().unwrap();
         let f = solve_fixed(&m, &q, &LemkeSettings::default());
-        let painleve = mu * g[1].abs() >= g[0];
-        if painleve {
-            // μ|G_NT| ≥ G_NN can occur for μ ≤ 1 too: ray allowed, a wrong Solved never
-            prop_assert!(matches!(f.status, LcpStatus::Solved | LcpStatus::RayTermination));
-        } else {
-            prop_assert_eq!(f.status, LcpStatus::Solved);
-        }
+        // μ ≤ 1 includes Painlevé-type cases (μ|G_NT| ≥ G_NN when |G_NT| > G_NN): Lemke solved
+        // all of 2·10⁶ random ones while developing; spec §9 allows a ray only for μ > 1 here.
+        prop_assert_eq!(f.status, LcpStatus::Solved);
         if f.status == LcpStatus::Solved {
             prop_assert!(check_lcp(&p, &f.z, 1e-9).is_ok());
             // physical quantities against the analytic single-impact solution (spec §9)
@@ -586,9 +591,15 @@ proptest! {
     }
 
     #[test]
-    fn impact3_painleve_never_wrong(mu in 1.0f64..5.0, eps in 0.0f64..=1.0,
-                                    gn in -3.0f64..-0.01, gt in -3.0f64..3.0, g in spd()) {
-        prop_assume!(mu * g[1].abs() >= g[0]);
+    fn impact3_painleve_never_wrong(over in 0.0f64..3.0, eps in 0.0f64..=1.0,
+                                    gn in -3.0f64..-0.01, gt in -3.0f64..3.0,
+                                    a in 0.1f64..2.0, b in 0.1f64..2.0, neg in any::<bool>(),
+                                    c in 0.1f64..2.0) {
+        // μ > 1 in the Painlevé-type regime μ|G_NT| ≥ G_NN by construction
+        let b = if neg { -b } else { b };
+        let g = [a * a, a * b, b * b + c * c];
+        let mu = (g[0] / g[1].abs()).max(1.0) * (1.0 + over);
+        prop_assert!(mu * g[1].abs() >= g[0]);
         let p = impact3(mu, eps, gn, gt, g);
         let sol = Lemke::new(LemkeSettings::default()).solve(&p);
         prop_assert!(matches!(sol.status, LcpStatus::Solved | LcpStatus::RayTermination), "{:?}", sol);
@@ -676,8 +687,8 @@ fn tobenna_needs_tolerant_ties() {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 1000, ..ProptestConfig::default() })]
 
-    /// Nearly singular `G` (condition numbers up to ~1e10, impulses up to ~1e9): never a wrong
-    /// `Solved`; outside the Painlevé regime always `Solved` (1e6 cases checked while developing).
+    /// Nearly singular `G` (condition numbers up to ~1e10, impulses up to ~1e9), μ ≤ 1: always
+    /// `Solved` with a verified z (2·10⁶ cases checked while developing, 59 % of them Painlevé).
     #[test]
     fn impact3_ill_conditioned_g(mu in 0.0f64..=1.0, eps in 0.0f64..=1.0, gn in -3.0f64..-0.01,
                                  gt in -30.0f64..30.0, a in 0.01f64..3.0, b in -10.0f64..10.0,
@@ -687,46 +698,7 @@ proptest! {
         let m: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| p.m(i, j)));
         let q: [f64; 3] = p.q().try_into().unwrap();
         let f = solve_fixed(&m, &q, &LemkeSettings::default());
-        let painleve = mu * g[1].abs() >= g[0];
-        prop_assert!(
-            f.status == LcpStatus::Solved || (painleve && f.status == LcpStatus::RayTermination),
-            "{:?}, Painlevé regime: {}", f.status, painleve
-        );
-        if f.status == LcpStatus::Solved {
-            prop_assert!(check_lcp(&p, &f.z, 1e-9).is_ok());
-        }
-    }
-}
-
-#[test]
-fn tmp_pivot_stats() {
-    let set = io::read_lcpset(Path::new(
-        "/work/shared/data/lcp/bench/lcp_problems_full.txt",
-    ))
-    .unwrap();
-    let mut l = Lemke::new(LemkeSettings::default());
-    let mut stats: BTreeMap<String, (usize, usize, usize)> = BTreeMap::new();
-    for e in &set {
-        let s = l.solve(&e.problem);
-        let x = stats.entry(e.class.clone()).or_default();
-        x.0 += 1;
-        x.1 += s.pivots;
-        x.2 = x.2.max(s.pivots);
-    }
-    let set = io::read_lcpset(&data_dir().join("lcp_problems_sample.txt")).unwrap();
-    for e in &set {
-        let s = l.solve(&e.problem);
-        let x = stats.entry(format!("sample-{}", e.class)).or_default();
-        x.0 += 1;
-        x.1 += s.pivots;
-        x.2 = x.2.max(s.pivots);
-    }
-    for (k, v) in stats {
-        eprintln!(
-            "{k}: count {} mean pivots {:.2} max {}",
-            v.0,
-            v.1 as f64 / v.0 as f64,
-            v.2
-        );
+        prop_assert_eq!(f.status, LcpStatus::Solved);
+        prop_assert!(check_lcp(&p, &f.z, 1e-9).is_ok());
     }
 }
