@@ -52,7 +52,7 @@
 
 use crate::contact::{Delassus, ForceDirections};
 use crate::geometry::{
-    ContactCase, DEGENERACY_TOLERANCE, Degeneracy, DeckId, GeometryError, ImpactConfiguration,
+    ContactCase, DEGENERACY_TOLERANCE, DeckId, Degeneracy, GeometryError, ImpactConfiguration,
     SigmaMode, degeneracy, is_first_contact,
 };
 use crate::math::{Real, Vector, cross};
@@ -156,7 +156,13 @@ pub fn pair_degeneracy(w1: Real, w2: Real, theta1: Real, theta2: Real) -> Option
 /// Whether `case` is the real first contact with face half-lengths `w1`, `w2` (module docs): the
 /// striking deck has the smaller `w_a cos θ_a` and the candidate's `h > 0`. For `w1 = w2` this is
 /// exactly [`is_first_contact`].
-pub fn pair_first_contact(case: ContactCase, w1: Real, w2: Real, theta1: Real, theta2: Real) -> bool {
+pub fn pair_first_contact(
+    case: ContactCase,
+    w1: Real,
+    w2: Real,
+    theta1: Real,
+    theta2: Real,
+) -> bool {
     if w1 == w2 {
         return is_first_contact(case, theta1, theta2);
     }

@@ -50,11 +50,20 @@ fn straight_example_study_runs_with_figures() {
     let html = std::fs::read_to_string(out.join("report.html")).unwrap();
     assert!(html.contains("between straight bridge decks"));
     assert!(html.contains("straight decks, L1 = 60 m, L2 = 30 m"));
-    assert!(out.join("figures/surface_straight_l1-60_l2-30_mu-1_eps-0.5.png").is_file());
-    assert!(out.join("figures/regions_straight_l1-30_l2-30_eps-0.5.png").is_file());
+    assert!(
+        out.join("figures/surface_straight_l1-60_l2-30_mu-1_eps-0.5.png")
+            .is_file()
+    );
+    assert!(
+        out.join("figures/regions_straight_l1-30_l2-30_eps-0.5.png")
+            .is_file()
+    );
     for part in html.split("src=\"").skip(1) {
         let target = &part[..part.find('"').unwrap()];
-        assert!(out.join(target).is_file(), "report links to missing {target}");
+        assert!(
+            out.join(target).is_file(),
+            "report links to missing {target}"
+        );
     }
 }
 
@@ -70,6 +79,9 @@ fn skew_of_90_degrees_fails_naming_key_and_line() {
         .unwrap();
     assert!(!o.status.success());
     let err = String::from_utf8_lossy(&o.stderr);
-    assert!(err.contains("line 3") && err.contains("decks.skew_deg[1]"), "{err}");
+    assert!(
+        err.contains("line 3") && err.contains("decks.skew_deg[1]"),
+        "{err}"
+    );
     assert!(!out.join("bounds.csv").exists());
 }

@@ -6,15 +6,15 @@
 //! key is recovered from its index alone ([`Layout::key`]), which is what sharding relies on.
 
 use super::StudyError;
+use super::cell::Geometry;
 use super::cell::{Cell, compute_cell_in};
 use super::scenario::Scenario;
-use crate::analytic::ImpactLaw;
-use super::cell::Geometry;
 use super::scenario::StudyShape;
+use crate::analytic::ImpactLaw;
 use crate::geometry::{ContactCase, Deck, GeometryError, SArrangement};
+use crate::math::Real;
 use crate::pair::DeckPair;
 use crate::shape::{DeckShape, SkewedDeck, StraightDeck};
-use crate::math::Real;
 use rayon::prelude::*;
 
 /// Which rows a run computes: those whose global index `i` satisfies `i mod count = index − 1`.
@@ -265,7 +265,10 @@ impl Scenario {
                         )
                     })
                 };
-                Geometry::Pair(DeckPair::new(deck(self.l1_m[g[0]], 1)?, deck(self.l2_m[g[1]], 2)?)?)
+                Geometry::Pair(DeckPair::new(
+                    deck(self.l1_m[g[0]], 1)?,
+                    deck(self.l2_m[g[1]], 2)?,
+                )?)
             }
         })
     }

@@ -545,8 +545,14 @@ impl Scenario {
             ],
             _ => {
                 let mut f = vec![
-                    ("decks.beta1_deg", decks.beta1_deg.as_ref().map(|v| v.span())),
-                    ("decks.beta2_deg", decks.beta2_deg.as_ref().map(|v| v.span())),
+                    (
+                        "decks.beta1_deg",
+                        decks.beta1_deg.as_ref().map(|v| v.span()),
+                    ),
+                    (
+                        "decks.beta2_deg",
+                        decks.beta2_deg.as_ref().map(|v| v.span()),
+                    ),
                     ("decks.r1_m", decks.r1_m.as_ref().map(|v| v.span())),
                     ("decks.r2_m", decks.r2_m.as_ref().map(|v| v.span())),
                 ];
@@ -562,7 +568,10 @@ impl Scenario {
                     span,
                     key,
                     "(set)".into(),
-                    &format!("this key does not apply to decks.shape = \"{}\"", shape.name()),
+                    &format!(
+                        "this key does not apply to decks.shape = \"{}\"",
+                        shape.name()
+                    ),
                 ));
             }
         }
@@ -598,7 +607,9 @@ impl Scenario {
                             width_span,
                             "decks.width_m",
                             fmt_num(width),
-                            &format!("width/2 must be below every radius of {key} (built-in default)"),
+                            &format!(
+                                "width/2 must be below every radius of {key} (built-in default)"
+                            ),
                         ));
                     }
                     Err(e) => return Err(e),

@@ -283,7 +283,9 @@ fn shape_validation_errors() {
     let check = |e: ScenarioError, key: &str, line: usize| {
         let msg = e.to_string();
         match e {
-            ScenarioError::Invalid { key: k, line: l, .. } => {
+            ScenarioError::Invalid {
+                key: k, line: l, ..
+            } => {
                 assert!(k.starts_with(key), "{msg}");
                 assert_eq!(l, line, "{msg}");
             }
@@ -363,12 +365,7 @@ theta2_deg = { start = -3.0, stop = 3.0, step = 1.0 }
 [output]
 figures = false
 "#;
-    let sk = Study::compute(
-        skew.into(),
-        Scenario::from_toml(skew, "s").unwrap(),
-        &none,
-    )
-    .unwrap();
+    let sk = Study::compute(skew.into(), Scenario::from_toml(skew, "s").unwrap(), &none).unwrap();
     let st = Study::compute(
         straight.into(),
         Scenario::from_toml(straight, "s").unwrap(),
@@ -416,7 +413,12 @@ figures = false
         let rows = compute_rows(&sc, shard, &none).unwrap();
         files.push(pounding::study::shard::ShardFiles {
             origin: format!("shard {k}"),
-            manifest: pounding::study::shard::manifest_json(shard, skew, sc.row_count(), rows.len()),
+            manifest: pounding::study::shard::manifest_json(
+                shard,
+                skew,
+                sc.row_count(),
+                rows.len(),
+            ),
             rows: pounding::study::shard::shard_rows_csv(&sc, &rows),
         });
     }
@@ -433,9 +435,8 @@ figures = false
 #[test]
 fn unequal_faces_first_contact_is_largest_valid_h() {
     let straight = DeckShape::Straight(StraightDeck::new(40.0, 10.0, 0.5, 2500.0).unwrap());
-    let skewed = DeckShape::Skewed(
-        SkewedDeck::new(40.0, 10.0, f64::to_radians(35.0), 0.5, 2500.0).unwrap(),
-    );
+    let skewed =
+        DeckShape::Skewed(SkewedDeck::new(40.0, 10.0, f64::to_radians(35.0), 0.5, 2500.0).unwrap());
     let pair = DeckPair::new(skewed, straight).unwrap();
     let (w1, w2) = (5.0 / f64::to_radians(35.0).cos(), 5.0);
     let mut tested = 0;
