@@ -1,6 +1,8 @@
 //! Study scenarios: the TOML file format, its validation and the built-in default (the paper's study).
 //!
-//! A scenario lists deck geometries (`β1, β2, R1, R2`, shared width, thickness, density), impact laws
+//! A scenario lists the deck shape (`[decks] shape`: curved, straight or skew, see [`StudyShape`]),
+//! deck geometries (`β1, β2, R1, R2` for curved decks; `L1, L2` and for skewed decks the common skew
+//! angle; shared width, thickness, density), impact laws
 //! (`μ`, `ε_N`), the `θ1 × θ2` grid, the ratio range of the region maps, the candidate cases, the σ mode
 //! and output options. Every key is optional; a missing key takes the built-in default
 //! ([`Scenario::default`], the paper's study extended to all combinations). Unknown keys are errors.
@@ -479,7 +481,8 @@ impl Scenario {
     /// Parses and validates a scenario from TOML text. `origin` (e.g. the file name) prefixes errors.
     ///
     /// Errors name the key and the line: syntax errors, unknown keys and wrong types
-    /// ([`ScenarioError::Syntax`]); empty or duplicate lists, `R ≤ W/2`, `step ≤ 0`, `μ < 0`,
+    /// ([`ScenarioError::Syntax`]); an unknown `decks.shape`, keys of another shape, `L ≤ 0`,
+    /// skew `∉ [0, 90)`, empty or duplicate lists, `R ≤ W/2`, `step ≤ 0`, `μ < 0`,
     /// `ε ∉ [0, 1]`, `β ∉ (0, 360)`, non-positive width/thickness/density, `ratio_max ≤ ratio_min`
     /// ([`ScenarioError::Invalid`]).
     pub fn from_toml(text: &str, origin: &str) -> Result<Self, ScenarioError> {
