@@ -485,3 +485,91 @@ fn unequal_faces_first_contact_is_largest_valid_h() {
     let d = pair_degeneracy(w1, w2, (w2 / w1).acos(), 0.0);
     assert_eq!(d, Some(pounding::geometry::Degeneracy::CornerCorner));
 }
+
+/// Study cells of skewed decks against the generic multi-contact impact solver
+/// (`pounding::impact::solve`, its own Delassus assembly): with deck 2 at rest and deck 1 moving so
+/// that `γ_N⁻ = −1`, `γ_T⁻ = −r`, the solver's mode is outward slip below `L`, stick inside
+/// `[L, U]` and inward slip above `U`.
+#[test]
+fn skew_cells_agree_with_generic_impact_solver() {
+    use pounding::impact::{
+        ContactMode, ContactSpec, ImpactProblem, ImpactSettings, RigidBody, solve,
+    };
+    use pounding::study::cell::{Geometry, test_ratios};
+    let text = r#"
+[decks]
+shape = "skew"
+l1_m = [40.0]
+l2_m = [25.0]
+skew_deg = [35.0]
+[impact]
+mu = [0.5]
+[grid]
+theta1_deg = { start = -5.0, stop = 5.0, step = 2.5 }
+theta2_deg = { start = -5.0, stop = 5.0, step = 2.0 }
+"#;
+    let sc = Scenario::from_toml(text, "t").unwrap();
+    let Geometry::Pair(pair) = sc.geometry([0, 0, 0, 0]).unwrap() else {
+        panic!("a skew study builds a deck pair")
+    };
+    let rows = compute_rows(&sc, Shard::ALL, &none).unwrap();
+    let (p1, p2) = (pair.deck1.mass_properties(), pair.deck2.mass_properties());
+    let mut checked = 0;
+    for row in rows.iter().filter(|r| r.cell.first_contact) {
+        let p = sc.params(&row.key);
+        let cfg = pair
+            .configuration(
+                p.case,
+                p.theta1_deg.to_radians(),
+                p.theta2_deg.to_radians(),
+                SigmaMode::Exact,
+            )
+            .unwrap();
+        let law = ImpactLaw::new(p.mu, p.eps).unwrap();
+        for r in test_ratios(row.cell.lower, row.cell.upper) {
+            let v1 = -cfg.normal - r * cfg.tangent;
+            let bodies = vec![
+                RigidBody {
+                    name: "deck1".into(),
+                    mass: p1.mass,
+                    inertia: p1.inertia,
+                    position: cfg.centroid1,
+                    velocity: v1,
+                    omega: 0.0,
+                },
+                RigidBody {
+                    name: "deck2".into(),
+                    mass: p2.mass,
+                    inertia: p2.inertia,
+                    position: cfg.centroid2,
+                    velocity: Vector::zeros(),
+                    omega: 0.0,
+                },
+            ];
+            let contacts = vec![ContactSpec {
+                body_a: "deck1".into(),
+                body_b: Some("deck2".into()),
+                point: cfg.point,
+                normal: cfg.normal,
+                mu: law.mu(),
+                restitution: law.eps(),
+            }];
+            let sol = solve(
+                &ImpactProblem::new(bodies, contacts).unwrap(),
+                &ImpactSettings::default(),
+            );
+            let c = &sol.contacts[0];
+            assert!((c.gamma_n_pre + 1.0).abs() < 1e-12 && (c.gamma_t_pre + r).abs() < 1e-9);
+            let expected = if r < row.cell.lower {
+                ContactMode::SlipPositive
+            } else if r > row.cell.upper {
+                ContactMode::SlipNegative
+            } else {
+                ContactMode::Stick
+            };
+            assert_eq!(c.mode, expected, "{p:?} r = {r}");
+            checked += 1;
+        }
+    }
+    assert!(checked > 60, "{checked}");
+}
