@@ -14,7 +14,8 @@ use plotters::style::{FontStyle, register_font};
 use pounding::geometry::ContactCase;
 use pounding::math::Real;
 use pounding::output::write_atomic;
-use pounding::study::cell::region_samples;
+use pounding::study::StudyShape;
+use pounding::study::cell::region_samples_in;
 use pounding::study::summary::shares;
 use pounding::study::{RowKey, Study};
 use rayon::prelude::*;
@@ -115,30 +116,27 @@ pub fn draw_all(
     let s = &study.scenario;
     let mut groups = vec![FigureGroup {
         id: "overview".into(),
-        title: "Overview: the stick band against μ, β and R1/R2".into(),
+        title: if s.shape == StudyShape::Curved {
+            "Overview: the stick band against μ, β and R1/R2".into()
+        } else {
+            format!(
+                "Overview ({} decks): the stick band against μ, L and L1/L2",
+                s.shape.name()
+            )
+        },
         figures: Vec::new(),
     }];
     let mut jobs: Vec<(usize, Job)> = (0..3).map(|k| (0, Job::Overview(k))).collect();
-    for b1 in 0..s.beta1_deg.len() {
-        for b2 in 0..s.beta2_deg.len() {
-            for r1 in 0..s.r1_m.len() {
-                for r2 in 0..s.r2_m.len() {
+    let [nb1, nb2, nr1, nr2] = s.geometry_dims();
+    for b1 in 0..nb1 {
+        for b2 in 0..nb2 {
+            for r1 in 0..nr1 {
+                for r2 in 0..nr2 {
                     let g = groups.len();
                     groups.push(FigureGroup {
-                        id: format!(
-                            "g-b1-{}-b2-{}-r1-{}-r2-{}",
-                            tok(s.beta1_deg[b1]),
-                            tok(s.beta2_deg[b2]),
-                            tok(s.r1_m[r1]),
-                            tok(s.r2_m[r2])
-                        ),
-                        title: format!(
-                            "β1 = {}°, β2 = {}°, R1 = {} m, R2 = {} m",
-                            tok(s.beta1_deg[b1]),
-                            tok(s.beta2_deg[b2]),
-                            tok(s.r1_m[r1]),
-                            tok(s.r2_m[r2])
-                        ),
+                        // Curved: g-b1-60-b2-90-r1-100-r2-200 (as before shapes existed).
+                        id: format!("g-{}", s.geometry_id([b1, b2, r1, r2]).replace('_', "-")),
+                        title: s.geometry_label([b1, b2, r1, r2]),
                         figures: Vec::new(),
                     });
                     for eps in 0..s.eps.len() {
@@ -190,11 +188,8 @@ fn draw_job(study: &Study, out: &Path, svg: bool, job: &Job) -> Result<Figure, S
             eps,
         } => (
             format!(
-                "surface_b1-{}_b2-{}_r1-{}_r2-{}_mu-{}_eps-{}",
-                tok(s.beta1_deg[*b1]),
-                tok(s.beta2_deg[*b2]),
-                tok(s.r1_m[*r1]),
-                tok(s.r2_m[*r2]),
+                "surface_{}_mu-{}_eps-{}",
+                s.geometry_id([*b1, *b2, *r1, *r2]),
                 tok(s.mu[*mu]),
                 tok(s.eps[*eps])
             ),
@@ -210,11 +205,8 @@ fn draw_job(study: &Study, out: &Path, svg: bool, job: &Job) -> Result<Figure, S
             eps,
         } => (
             format!(
-                "regions_b1-{}_b2-{}_r1-{}_r2-{}_eps-{}",
-                tok(s.beta1_deg[*b1]),
-                tok(s.beta2_deg[*b2]),
-                tok(s.r1_m[*r1]),
-                tok(s.r2_m[*r2]),
+                "regions_{}_eps-{}",
+                s.geometry_id([*b1, *b2, *r1, *r2]),
                 tok(s.eps[*eps])
             ),
             format!(
@@ -238,7 +230,17 @@ fn draw_job(study: &Study, out: &Path, svg: bool, job: &Job) -> Result<Figure, S
                     "Mean stick share against R1/R2, one line per μ",
                 ),
             ][*k];
-            (n.to_string(), c.to_string(), (1200u32, 560u32))
+            let c = if s.shape == StudyShape::Curved {
+                c.to_string()
+            } else {
+                format!(
+                    "{} decks: {}",
+                    s.shape.name(),
+                    c.replace("β1 and β2", "the lengths L1 and L2")
+                        .replace("R1/R2", "the length ratio L1/L2")
+                )
+            };
+            (n.to_string(), c, (1200u32, 560u32))
         }
     };
     let png_rel = format!("figures/{name}.png");
@@ -284,16 +286,9 @@ fn render<DB: DrawingBackend>(
     }
 }
 
-fn geom_title(study: &Study, [b1, b2, r1, r2]: [usize; 4]) -> String {
+fn geom_title(study: &Study, geom: [usize; 4]) -> String {
     let s = &study.scenario;
-    format!(
-        "β1 = {}°, β2 = {}°, R1 = {} m, R2 = {} m, W = {} m",
-        tok(s.beta1_deg[b1]),
-        tok(s.beta2_deg[b2]),
-        tok(s.r1_m[r1]),
-        tok(s.r2_m[r2]),
-        tok(s.width)
-    )
+    format!("{}, W = {} m", s.geometry_label(geom), tok(s.width))
 }
 
 fn case_title(c: ContactCase) -> &'static str {
@@ -545,16 +540,14 @@ fn regions<DB: DrawingBackend>(
         ],
         40,
     )?;
-    let arr = s
-        .arrangement(geom[0], geom[1], geom[2], geom[3])
-        .map_err(|err| err.to_string())?;
+    let arr = s.geometry(geom).map_err(|err| err.to_string())?;
     let panels = body.split_evenly((s.mu.len(), 2));
     let tol = s.degeneracy_tolerance_deg();
     for (m, &mu) in s.mu.iter().enumerate() {
         let law = s.law(m, eps).map_err(|err| err.to_string())?;
         for (col, deck1) in [(0usize, true), (1, false)] {
             let range = if deck1 { s.theta1 } else { s.theta2 };
-            let samples = region_samples(
+            let samples = region_samples_in(
                 &arr,
                 &law,
                 deck1,
@@ -871,7 +864,12 @@ fn overview<DB: DrawingBackend>(
         1 => {
             // Striking deck a (owns the corner) and struck deck b.
             for (p, striking) in [(0usize, true), (1, false)] {
-                let mut bs: Vec<Real> = s.beta1_deg.iter().chain(&s.beta2_deg).copied().collect();
+                let curved = s.shape == StudyShape::Curved;
+                let mut bs: Vec<Real> = if curved {
+                    s.beta1_deg.iter().chain(&s.beta2_deg).copied().collect()
+                } else {
+                    s.l1_m.iter().chain(&s.l2_m).copied().collect()
+                };
                 bs.sort_by(Real::total_cmp);
                 bs.dedup();
                 let series: Vec<Series> = mus
@@ -885,10 +883,11 @@ fn overview<DB: DrawingBackend>(
                                     study,
                                     |q| {
                                         let deck1 = is_deck1(q.case);
-                                        let beta = if deck1 == striking {
-                                            q.beta1_deg
-                                        } else {
-                                            q.beta2_deg
+                                        let beta = match (deck1 == striking, curved) {
+                                            (true, true) => q.beta1_deg,
+                                            (false, true) => q.beta2_deg,
+                                            (true, false) => q.l1_m,
+                                            (false, false) => q.l2_m,
                                         };
                                         q.mu == m && beta == b
                                     },
@@ -908,13 +907,15 @@ fn overview<DB: DrawingBackend>(
                 line_chart(
                     &panels[p],
                     &format!(
-                        "Mean stick share against the {} deck's angle",
-                        if striking { "striking" } else { "struck" }
+                        "Mean stick share against the {} deck's {}",
+                        if striking { "striking" } else { "struck" },
+                        if curved { "angle" } else { "length" }
                     ),
-                    if striking {
-                        "β of the striking deck [deg]"
-                    } else {
-                        "β of the struck deck [deg]"
+                    match (striking, curved) {
+                        (true, true) => "β of the striking deck [deg]",
+                        (false, true) => "β of the struck deck [deg]",
+                        (true, false) => "L of the striking deck [m]",
+                        (false, false) => "L of the struck deck [m]",
                     },
                     &format!("stick share of {range_txt} [%]"),
                     &series,
@@ -924,16 +925,28 @@ fn overview<DB: DrawingBackend>(
             Ok(())
         }
         _ => {
+            let curved = s.shape == StudyShape::Curved;
             let ratio = |q: &pounding::study::run::RowParams| {
-                if is_deck1(q.case) {
-                    q.r1_m / q.r2_m
+                let (a, b) = if curved {
+                    (q.r1_m, q.r2_m)
                 } else {
-                    q.r2_m / q.r1_m
-                }
+                    (q.l1_m, q.l2_m)
+                };
+                if is_deck1(q.case) { a / b } else { b / a }
+            };
+            let (list1, list2) = if curved {
+                (&s.r1_m, &s.r2_m)
+            } else {
+                (&s.l1_m, &s.l2_m)
+            };
+            let (what, xlabel) = if curved {
+                ("radius ratio", "R_striking / R_struck [-]")
+            } else {
+                ("length ratio", "L_striking / L_struck [-]")
             };
             let mut ratios: Vec<Real> = Vec::new();
-            for &a in &s.r1_m {
-                for &b in &s.r2_m {
+            for &a in list1 {
+                for &b in list2 {
                     for q in [a / b, b / a] {
                         if !ratios.contains(&q) {
                             ratios.push(q);
@@ -967,8 +980,8 @@ fn overview<DB: DrawingBackend>(
                 .collect();
             line_chart(
                 &panels[0],
-                "Mean stick share against the radius ratio",
-                "R_striking / R_struck [-]",
+                &format!("Mean stick share against the {what}"),
+                xlabel,
                 &format!("stick share of {range_txt} [%]"),
                 &stick,
                 SeriesLabelPosition::UpperRight,
@@ -996,8 +1009,8 @@ fn overview<DB: DrawingBackend>(
             }
             line_chart(
                 &panels[1],
-                "Mean stick bounds against the radius ratio",
-                "R_striking / R_struck [-]",
+                &format!("Mean stick bounds against the {what}"),
+                xlabel,
                 &format!("r = γ_T⁻/γ_N⁻ (clamped to {range_txt})"),
                 &bounds,
                 SeriesLabelPosition::LowerRight,

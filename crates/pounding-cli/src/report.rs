@@ -4,7 +4,7 @@
 
 use crate::figures::FigureGroup;
 use pounding::output::float_token;
-use pounding::study::{Study, Verdict};
+use pounding::study::{Study, StudyShape, Verdict};
 use std::fmt::Write;
 
 fn esc(s: &str) -> String {
@@ -55,7 +55,12 @@ pub fn report_html(study: &Study, groups: &[FigureGroup], figures_drawn: bool) -
     );
     let _ = writeln!(
         h,
-        "<h1>Stick and slip at a single impact between S-curved bridge decks — study report</h1>"
+        "<h1>Stick and slip at a single impact between {} bridge decks — study report</h1>",
+        match s.shape {
+            StudyShape::Curved => "S-curved",
+            StudyShape::Straight => "straight",
+            StudyShape::Skew => "skewed",
+        }
     );
     let _ = writeln!(
         h,
@@ -100,11 +105,13 @@ pub fn report_html(study: &Study, groups: &[FigureGroup], figures_drawn: bool) -
 
     // Summary table
     h.push_str("<h2 id=\"summary\">Summary per configuration and case</h2>\n<p>Over first-contact cells: mean shares of the ratio range with outward slip, stick and inward slip; extremes of L and U; LCP disagreements over all cells.</p>\n<div class=\"scroll\"><table>\n<tr>");
-    for c in [
-        "β1 [°]",
-        "β2 [°]",
-        "R1 [m]",
-        "R2 [m]",
+    let curved = study.scenario.shape == StudyShape::Curved;
+    let geo_heads = if curved {
+        ["β1 [°]", "β2 [°]", "R1 [m]", "R2 [m]"]
+    } else {
+        ["L1 [m]", "L2 [m]", "skew [°]", "shape"]
+    };
+    for c in geo_heads.into_iter().chain([
         "μ",
         "ε_N",
         "case",
@@ -117,18 +124,28 @@ pub fn report_html(study: &Study, groups: &[FigureGroup], figures_drawn: bool) -
         "U min",
         "U max",
         "LCP disagreements",
-    ] {
+    ]) {
         let _ = write!(h, "<th>{c}</th>");
     }
     h.push_str("</tr>\n");
     for r in &study.summaries {
+        let geo = if curved {
+            [r.beta1_deg, r.beta2_deg, r.r1_m, r.r2_m].map(float_token)
+        } else {
+            [
+                float_token(r.l1_m),
+                float_token(r.l2_m),
+                float_token(r.skew_deg),
+                r.shape.name().to_string(),
+            ]
+        };
         let _ = writeln!(
             h,
             "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"l\">{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
-            float_token(r.beta1_deg),
-            float_token(r.beta2_deg),
-            float_token(r.r1_m),
-            float_token(r.r2_m),
+            geo[0],
+            geo[1],
+            geo[2],
+            geo[3],
             float_token(r.mu),
             float_token(r.eps),
             r.case.name(),

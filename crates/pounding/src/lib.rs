@@ -17,6 +17,7 @@
 //! * [`impact`] — the generic multi-contact frictional impact of planar rigid bodies, solved as an LCP (§8).
 //! * [`shape`] — straight and skewed decks beside the curved one (mass properties, end faces, corners in
 //!   one body frame) and corner impacts against a rigid abutment.
+//! * [`pair`] — the joint-anchored impact configuration and Delassus matrix of two decks of any shape.
 //! * [`study`] — the parametric stick/slip study of the paper (scenarios, bounds, summaries).
 //! * [`output`] — deterministic number formatting and atomic file output shared by every writer.
 //!
@@ -33,6 +34,7 @@ pub mod impact;
 pub mod lcp;
 pub mod math;
 pub mod output;
+pub mod pair;
 pub mod shape;
 pub mod sim;
 pub mod study;

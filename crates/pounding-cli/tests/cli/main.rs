@@ -24,3 +24,4 @@ mod lcp;
 mod shapes;
 mod simulate;
 mod study;
+mod study_shapes;

@@ -10,6 +10,17 @@ use crate::contact::{self, Delassus};
 use crate::geometry::{ContactCase, Degeneracy, SArrangement, SigmaMode};
 use crate::lcp::{self, LcpStatus, LemkeSettings};
 use crate::math::Real;
+use crate::pair::DeckPair;
+
+/// The deck geometry of a study configuration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Geometry {
+    /// Two curved decks in the S arrangement (computed by [`SArrangement::configuration`] and
+    /// [`contact::delassus`], exactly as before shapes were added).
+    Curved(SArrangement),
+    /// Two decks of any shape ([`DeckPair::configuration`], [`DeckPair::delassus`]).
+    Pair(DeckPair),
+}
 
 /// The computed values of one cell. For a degenerate cell (`degeneracy` is `Some`) both flags are
 /// false, every number is NaN and `lcp_agrees` is true (spec §5.4).
@@ -86,19 +97,45 @@ pub fn compute_cell(
     sigma_mode: SigmaMode,
     tol_deg: Real,
 ) -> Cell {
+    compute_cell_in(
+        &Geometry::Curved(*arrangement),
+        law,
+        case,
+        theta1_deg,
+        theta2_deg,
+        sigma_mode,
+        tol_deg,
+    )
+}
+
+/// [`compute_cell`] for any [`Geometry`]. The grid test [`grid_degeneracy`] is exact for pairs
+/// with equal joint-face half-lengths (every pair a study builds); otherwise the pair's own
+/// degeneracy ([`crate::pair::pair_degeneracy`]) also applies.
+pub fn compute_cell_in(
+    geometry: &Geometry,
+    law: &ImpactLaw,
+    case: ContactCase,
+    theta1_deg: Real,
+    theta2_deg: Real,
+    sigma_mode: SigmaMode,
+    tol_deg: Real,
+) -> Cell {
     if let Some(d) = grid_degeneracy(theta1_deg, theta2_deg, tol_deg) {
         return Cell::degenerate(d);
     }
-    let config = match arrangement.configuration(
-        case,
-        theta1_deg.to_radians(),
-        theta2_deg.to_radians(),
-        sigma_mode,
-    ) {
-        Ok(c) => c,
-        Err(d) => return Cell::degenerate(d),
+    let (t1, t2) = (theta1_deg.to_radians(), theta2_deg.to_radians());
+    let (config, g) = match geometry {
+        Geometry::Curved(arrangement) => {
+            match arrangement.configuration(case, t1, t2, sigma_mode) {
+                Ok(c) => (c, contact::delassus(arrangement, &c)),
+                Err(d) => return Cell::degenerate(d),
+            }
+        }
+        Geometry::Pair(pair) => match pair.configuration(case, t1, t2, sigma_mode) {
+            Ok(c) => (c, pair.delassus(&c)),
+            Err(d) => return Cell::degenerate(d),
+        },
     };
-    let g = contact::delassus(arrangement, &config);
     let interval = analytic::stick_interval(&g, law);
     Cell {
         degeneracy: None,
@@ -219,6 +256,30 @@ pub fn region_samples(
     sigma_mode: SigmaMode,
     tol_deg: Real,
 ) -> Vec<RegionSample> {
+    region_samples_in(
+        &Geometry::Curved(*arrangement),
+        law,
+        deck1_strikes,
+        start_deg,
+        stop_deg,
+        samples,
+        sigma_mode,
+        tol_deg,
+    )
+}
+
+/// [`region_samples`] for any [`Geometry`].
+#[allow(clippy::too_many_arguments)]
+pub fn region_samples_in(
+    geometry: &Geometry,
+    law: &ImpactLaw,
+    deck1_strikes: bool,
+    start_deg: Real,
+    stop_deg: Real,
+    samples: usize,
+    sigma_mode: SigmaMode,
+    tol_deg: Real,
+) -> Vec<RegionSample> {
     let n = samples.max(2);
     (0..n)
         .map(|k| {
@@ -232,7 +293,7 @@ pub fn region_samples(
             RegionSample {
                 theta_a_deg: ta,
                 case,
-                cell: compute_cell(arrangement, law, case, t1, t2, sigma_mode, tol_deg),
+                cell: compute_cell_in(geometry, law, case, t1, t2, sigma_mode, tol_deg),
             }
         })
         .collect()

@@ -6,7 +6,7 @@
 use super::StudyError;
 use super::cell::Cell;
 use super::run::{Layout, Row};
-use super::scenario::Scenario;
+use super::scenario::{Scenario, StudyShape};
 use crate::geometry::ContactCase;
 use crate::output::float_token;
 use rayon::prelude::*;
@@ -14,6 +14,29 @@ use std::fmt::Write;
 
 /// The header line of `bounds.csv` (without newline).
 pub const BOUNDS_HEADER: &str = "beta1_deg,beta2_deg,r1_m,r2_m,mu,eps,case,theta1_deg,theta2_deg,first_contact,end_closes,sigma_m,g_nn,g_nt,g_tt,kappa,varrho,lower,upper,lcp_agrees";
+
+/// The extra columns appended to [`BOUNDS_HEADER`] in straight and skew studies (only there, so a
+/// curved study's `bounds.csv` is unchanged): the shape name and `L1`, `L2`, the skew angle.
+pub const SHAPE_COLUMNS: &str = "shape,l1_m,l2_m,skew_deg";
+
+/// The header of `scenario`'s `bounds.csv`: [`BOUNDS_HEADER`] for curved decks, followed by
+/// `,`[`SHAPE_COLUMNS`] for straight and skewed decks (whose `beta*`/`r*` columns hold `nan`).
+pub fn bounds_header(scenario: &Scenario) -> String {
+    if scenario.shape == StudyShape::Curved {
+        BOUNDS_HEADER.to_string()
+    } else {
+        format!("{BOUNDS_HEADER},{SHAPE_COLUMNS}")
+    }
+}
+
+/// Number of fields of a `bounds.csv` line of `scenario`.
+pub fn bounds_field_count(scenario: &Scenario) -> usize {
+    if scenario.shape == StudyShape::Curved {
+        20
+    } else {
+        24
+    }
+}
 
 /// Appends `float_token(x)` and a comma without allocating (same bytes as [`float_token`]).
 fn push_f(s: &mut String, x: f64) {
@@ -42,6 +65,7 @@ pub struct RowWriter<'a> {
     theta2: Vec<String>,
     block: usize,
     prefix: String,
+    suffix: String,
 }
 
 impl<'a> RowWriter<'a> {
@@ -55,6 +79,7 @@ impl<'a> RowWriter<'a> {
             theta2: tokens(scenario.theta2.values()),
             block: usize::MAX,
             prefix: String::new(),
+            suffix: String::new(),
         }
     }
 
@@ -69,6 +94,15 @@ impl<'a> RowWriter<'a> {
             }
             self.prefix.push_str(p.case.name());
             self.prefix.push(',');
+            self.suffix.clear();
+            if self.scenario.shape != StudyShape::Curved {
+                self.suffix.push(',');
+                self.suffix.push_str(self.scenario.shape.name());
+                for x in [p.l1_m, p.l2_m, p.skew_deg] {
+                    self.suffix.push(',');
+                    push_token(&mut self.suffix, x);
+                }
+            }
             self.block = block;
         }
         let c = &row.cell;
@@ -84,7 +118,9 @@ impl<'a> RowWriter<'a> {
         ] {
             push_f(s, x);
         }
-        s.push_str(if c.lcp_agrees { "true\n" } else { "false\n" });
+        s.push_str(if c.lcp_agrees { "true" } else { "false" });
+        s.push_str(&self.suffix);
+        s.push('\n');
     }
 }
 
@@ -110,7 +146,7 @@ pub fn bounds_csv(scenario: &Scenario, rows: &[Row]) -> String {
         })
         .collect();
     let mut out = String::with_capacity(chunks.iter().map(String::len).sum::<usize>() + 256);
-    out.push_str(BOUNDS_HEADER);
+    out.push_str(&bounds_header(scenario));
     out.push('\n');
     for c in chunks {
         out.push_str(&c);
@@ -145,9 +181,10 @@ pub fn parse_bounds_line(scenario: &Scenario, index: usize, line: &str) -> Resul
     }
     let f: Vec<&str> = line.split(',').collect();
     let what = format!("row {index}");
-    if f.len() != 20 {
+    let nf = bounds_field_count(scenario);
+    if f.len() != nf {
         return Err(StudyError::Parse(format!(
-            "{what}: {} fields, expected 20",
+            "{what}: {} fields, expected {nf}",
             f.len()
         )));
     }
@@ -163,7 +200,19 @@ pub fn parse_bounds_line(scenario: &Scenario, index: usize, line: &str) -> Resul
         p.theta1_deg,
         p.theta2_deg,
     ];
-    let got = [f[0], f[1], f[2], f[3], f[4], f[5], f[7], f[8]];
+    let mut expect = expect.to_vec();
+    let mut got = vec![f[0], f[1], f[2], f[3], f[4], f[5], f[7], f[8]];
+    if nf == 24 {
+        if f[20] != scenario.shape.name() {
+            return Err(StudyError::Parse(format!(
+                "{what}: shape {:?} does not match the scenario ({})",
+                f[20],
+                scenario.shape.name()
+            )));
+        }
+        expect.extend([p.l1_m, p.l2_m, p.skew_deg]);
+        got.extend([f[21], f[22], f[23]]);
+    }
     for (e, g) in expect.iter().zip(got) {
         if float_token(*e) != g {
             return Err(StudyError::Parse(format!(

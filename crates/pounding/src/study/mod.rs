@@ -21,7 +21,7 @@ pub mod summary;
 pub use cell::Cell;
 pub use claims::{ClaimCheck, Verdict};
 pub use run::{Layout, Row, RowKey, Shard};
-pub use scenario::{AngleRange, DEFAULT_SCENARIO_TOML, Scenario, ScenarioError};
+pub use scenario::{AngleRange, DEFAULT_SCENARIO_TOML, Scenario, ScenarioError, StudyShape};
 pub use summary::SummaryRow;
 
 use thiserror::Error;

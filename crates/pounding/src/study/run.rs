@@ -1,15 +1,20 @@
 //! Row layout, ordering and the (parallel, deterministic) computation of a study.
 //!
-//! Rows are ordered by `β1, β2, R1, R2, μ, ε` (each in scenario order), then case (canonical order),
+//! Rows are ordered by the geometry axes (`β1, β2, R1, R2` for curved decks, `L1, L2, θ_s` for
+//! straight and skewed decks; see [`Scenario::geometry_dims`]), then `μ, ε` (each in scenario order), then case (canonical order),
 //! then `θ1`, then `θ2` (innermost). The global row index is the position in that order; a row's
 //! key is recovered from its index alone ([`Layout::key`]), which is what sharding relies on.
 
 use super::StudyError;
-use super::cell::{Cell, compute_cell};
+use super::cell::Geometry;
+use super::cell::{Cell, compute_cell_in};
 use super::scenario::Scenario;
+use super::scenario::StudyShape;
 use crate::analytic::ImpactLaw;
-use crate::geometry::{ContactCase, Deck, SArrangement};
+use crate::geometry::{ContactCase, Deck, GeometryError, SArrangement};
 use crate::math::Real;
+use crate::pair::DeckPair;
+use crate::shape::{DeckShape, SkewedDeck, StraightDeck};
 use rayon::prelude::*;
 
 /// Which rows a run computes: those whose global index `i` satisfies `i mod count = index − 1`.
@@ -50,7 +55,9 @@ impl Shard {
     }
 }
 
-/// Indices of a row in the scenario's lists.
+/// Indices of a row in the scenario's lists. The four geometry indices address the geometry axes
+/// of [`Scenario::geometry_dims`]: for straight and skewed decks `beta1` indexes `l1_m`, `beta2`
+/// indexes `l2_m`, `r1` indexes `skew_deg` and `r2` is 0.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct RowKey {
     /// Index into `beta1_deg`.
@@ -83,12 +90,13 @@ pub struct Layout {
 impl Layout {
     /// The layout of `scenario`.
     pub fn of(scenario: &Scenario) -> Self {
+        let g = scenario.geometry_dims();
         Self {
             dims: [
-                scenario.beta1_deg.len(),
-                scenario.beta2_deg.len(),
-                scenario.r1_m.len(),
-                scenario.r2_m.len(),
+                g[0],
+                g[1],
+                g[2],
+                g[3],
                 scenario.mu.len(),
                 scenario.eps.len(),
                 scenario.cases.len(),
@@ -151,7 +159,8 @@ pub struct Row {
     pub cell: Cell,
 }
 
-/// The parameter values of a row key.
+/// The parameter values of a row key. For straight and skewed decks `β1, β2, R1, R2` are NaN; for
+/// curved decks `L1, L2, skew` are NaN.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RowParams {
     /// `β1` \[deg\].
@@ -162,6 +171,12 @@ pub struct RowParams {
     pub r1_m: Real,
     /// `R2` \[m\].
     pub r2_m: Real,
+    /// Deck 1 length `L1` \[m\] (NaN for curved decks).
+    pub l1_m: Real,
+    /// Deck 2 length `L2` \[m\] (NaN for curved decks).
+    pub l2_m: Real,
+    /// Common skew angle \[deg\] (NaN for curved decks, 0 for straight decks).
+    pub skew_deg: Real,
     /// `μ`.
     pub mu: Real,
     /// `ε_N`.
@@ -177,11 +192,17 @@ pub struct RowParams {
 impl Scenario {
     /// The parameter values of `key`.
     pub fn params(&self, key: &RowKey) -> RowParams {
+        let nan = Real::NAN;
+        let curved = self.shape == StudyShape::Curved;
+        let pick = |v: &[Real], i: usize, mine: bool| if mine { v[i] } else { nan };
         RowParams {
-            beta1_deg: self.beta1_deg[key.beta1],
-            beta2_deg: self.beta2_deg[key.beta2],
-            r1_m: self.r1_m[key.r1],
-            r2_m: self.r2_m[key.r2],
+            beta1_deg: pick(&self.beta1_deg, key.beta1, curved),
+            beta2_deg: pick(&self.beta2_deg, key.beta2, curved),
+            r1_m: pick(&self.r1_m, key.r1, curved),
+            r2_m: pick(&self.r2_m, key.r2, curved),
+            l1_m: pick(&self.l1_m, key.beta1, !curved),
+            l2_m: pick(&self.l2_m, key.beta2, !curved),
+            skew_deg: pick(&self.skew_deg, key.r1, !curved),
             mu: self.mu[key.mu],
             eps: self.eps[key.eps],
             case: self.cases[key.case],
@@ -211,6 +232,47 @@ impl Scenario {
         Ok(SArrangement::new(d1, d2)?)
     }
 
+    /// The validated geometry of the geometry-axis indices `g` (see [`Scenario::geometry_dims`]):
+    /// the S arrangement of curved decks, or the [`DeckPair`] of two straight decks (`L1`, `L2`) or
+    /// two skewed decks with the common skew angle.
+    pub fn geometry(&self, g: [usize; 4]) -> Result<Geometry, StudyError> {
+        Ok(match self.shape {
+            StudyShape::Curved => Geometry::Curved(self.arrangement(g[0], g[1], g[2], g[3])?),
+            shape => {
+                let (w, t, rho) = (self.width, self.thickness, self.density);
+                let deck = |l: Real, i: usize| -> Result<DeckShape, StudyError> {
+                    let named = |e: GeometryError| match e {
+                        GeometryError::InvalidParameter {
+                            name,
+                            value,
+                            reason,
+                        } => GeometryError::InvalidParameter {
+                            name: if name == "length" {
+                                format!("L{i}")
+                            } else {
+                                name
+                            },
+                            value,
+                            reason,
+                        },
+                    };
+                    Ok(if shape == StudyShape::Straight {
+                        DeckShape::Straight(StraightDeck::new(l, w, t, rho).map_err(named)?)
+                    } else {
+                        DeckShape::Skewed(
+                            SkewedDeck::new(l, w, self.skew_deg[g[2]].to_radians(), t, rho)
+                                .map_err(named)?,
+                        )
+                    })
+                };
+                Geometry::Pair(DeckPair::new(
+                    deck(self.l1_m[g[0]], 1)?,
+                    deck(self.l2_m[g[1]], 2)?,
+                )?)
+            }
+        })
+    }
+
     /// The validated impact law `(μ, ε)` (list indices).
     pub fn law(&self, mu: usize, eps: usize) -> Result<ImpactLaw, StudyError> {
         Ok(ImpactLaw::new(self.mu[mu], self.eps[eps])?)
@@ -232,7 +294,7 @@ pub fn compute_rows(
         for b2 in 0..nb2 {
             for r1 in 0..nr1 {
                 for r2 in 0..nr2 {
-                    arrangements.push(scenario.arrangement(b1, b2, r1, r2)?);
+                    arrangements.push(scenario.geometry([b1, b2, r1, r2])?);
                 }
             }
         }
@@ -260,7 +322,7 @@ pub fn compute_rows(
                     continue;
                 }
                 let key = layout.key(index);
-                let cell = compute_cell(
+                let cell = compute_cell_in(
                     arr,
                     law,
                     case,

@@ -1,6 +1,8 @@
 //! Study scenarios: the TOML file format, its validation and the built-in default (the paper's study).
 //!
-//! A scenario lists deck geometries (`β1, β2, R1, R2`, shared width, thickness, density), impact laws
+//! A scenario lists the deck shape (`[decks] shape`: curved, straight or skew, see [`StudyShape`]),
+//! deck geometries (`β1, β2, R1, R2` for curved decks; `L1, L2` and for skewed decks the common skew
+//! angle; shared width, thickness, density), impact laws
 //! (`μ`, `ε_N`), the `θ1 × θ2` grid, the ratio range of the region maps, the candidate cases, the σ mode
 //! and output options. Every key is optional; a missing key takes the built-in default
 //! ([`Scenario::default`], the paper's study extended to all combinations). Unknown keys are errors.
@@ -90,9 +92,45 @@ pub struct OutputOptions {
     pub region_map_samples: usize,
 }
 
+/// The deck shape of a study (`[decks] shape`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum StudyShape {
+    /// Two annular sectors in the S arrangement (spec §4): geometry axes `β1, β2, R1, R2`.
+    #[default]
+    Curved,
+    /// Two rectangles: geometry axes `L1, L2`.
+    Straight,
+    /// Two parallelograms with a common skew angle: geometry axes `L1, L2, θ_s`.
+    Skew,
+}
+
+impl StudyShape {
+    /// The scenario/CSV name: `curved`, `straight` or `skew`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Curved => "curved",
+            Self::Straight => "straight",
+            Self::Skew => "skew",
+        }
+    }
+}
+
 /// A validated study scenario (every list non-empty, duplicate-free, every value in range).
+///
+/// The four *geometry axes* of the row order are `(β1, β2, R1, R2)` for curved decks and
+/// `(L1, L2, θ_s, –)` for straight and skewed decks (the last axis has one entry; a straight study
+/// has the single skew `0`). The lists of the other shape are empty.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scenario {
+    /// Deck shape.
+    pub shape: StudyShape,
+    /// Lengths of deck 1, `L1` \[m\] (straight/skew; empty for curved).
+    pub l1_m: Vec<Real>,
+    /// Lengths of deck 2, `L2` \[m\] (straight/skew; empty for curved).
+    pub l2_m: Vec<Real>,
+    /// Common skew angles `θ_s` of both decks \[deg\], in `[0, 90)` (skew; `[0]` for straight;
+    /// empty for curved).
+    pub skew_deg: Vec<Real>,
     /// Common deck width `W` \[m\].
     pub width: Real,
     /// Common deck thickness `t` \[m\].
@@ -138,6 +176,10 @@ impl Default for Scenario {
             step: 1.0,
         };
         Self {
+            shape: StudyShape::Curved,
+            l1_m: Vec::new(),
+            l2_m: Vec::new(),
+            skew_deg: Vec::new(),
             width: 10.0,
             thickness: 0.5,
             density: 2500.0,
@@ -171,6 +213,10 @@ pub const DEFAULT_SCENARIO_TOML: &str = r#"# pounding study scenario — the bui
 # then case, then theta1, then theta2.
 
 [decks]
+# Deck shape: "curved" (this default: beta/r lists below), "straight" (lists l1_m, l2_m [m]) or
+# "skew" (l1_m, l2_m and skew_deg, the common skew angle in [0, 90) deg). Keys of another shape are
+# errors. Defaults for straight/skew: l1_m = l2_m = [30.0, 60.0], skew_deg = [0.0, 15.0, 30.0].
+shape = "curved"
 # Common width W [m], thickness t [m] and density rho [kg/m^3] of both decks (S arrangement).
 width_m = 10.0
 thickness_m = 0.5
@@ -207,6 +253,11 @@ svg = false
 region_map_samples = 201
 "#;
 
+/// Default deck lengths `L1`, `L2` \[m\] of a straight or skew study.
+pub const DEFAULT_LENGTHS_M: [Real; 2] = [30.0, 60.0];
+/// Default skew angles \[deg\] of a skew study.
+pub const DEFAULT_SKEW_DEG: [Real; 3] = [0.0, 15.0, 30.0];
+
 type S<T> = Option<Spanned<T>>;
 
 #[derive(Deserialize, Default)]
@@ -221,6 +272,10 @@ struct RawScenario {
 #[derive(Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 struct RawDecks {
+    shape: S<String>,
+    l1_m: S<Vec<Real>>,
+    l2_m: S<Vec<Real>>,
+    skew_deg: S<Vec<Real>>,
     width_m: S<Real>,
     thickness_m: S<Real>,
     density_kg_m3: S<Real>,
@@ -426,7 +481,8 @@ impl Scenario {
     /// Parses and validates a scenario from TOML text. `origin` (e.g. the file name) prefixes errors.
     ///
     /// Errors name the key and the line: syntax errors, unknown keys and wrong types
-    /// ([`ScenarioError::Syntax`]); empty or duplicate lists, `R ≤ W/2`, `step ≤ 0`, `μ < 0`,
+    /// ([`ScenarioError::Syntax`]); an unknown `decks.shape`, keys of another shape, `L ≤ 0`,
+    /// skew `∉ [0, 90)`, empty or duplicate lists, `R ≤ W/2`, `step ≤ 0`, `μ < 0`,
     /// `ε ∉ [0, 1]`, `β ∉ (0, 360)`, non-positive width/thickness/density, `ratio_max ≤ ratio_min`
     /// ([`ScenarioError::Invalid`]).
     pub fn from_toml(text: &str, origin: &str) -> Result<Self, ScenarioError> {
@@ -467,45 +523,136 @@ impl Scenario {
             pos,
             "must be > 0",
         )?;
-        let beta_ok = |x: Real| x > 0.0 && x < 360.0;
-        let (beta1_deg, _) = cx.list(
-            &decks.beta1_deg,
-            &d.beta1_deg,
-            "decks.beta1_deg",
-            beta_ok,
-            "must lie in (0, 360) deg",
-        )?;
-        let (beta2_deg, _) = cx.list(
-            &decks.beta2_deg,
-            &d.beta2_deg,
-            "decks.beta2_deg",
-            beta_ok,
-            "must lie in (0, 360) deg",
-        )?;
-        let half = width / 2.0;
-        let r_reason = format!("R must exceed width/2 = {} m", fmt_num(half));
-        let mut radii = Vec::new();
-        for (key, v, dv) in [
-            ("decks.r1_m", &decks.r1_m, &d.r1_m),
-            ("decks.r2_m", &decks.r2_m, &d.r2_m),
-        ] {
-            let rs = match cx.list(v, dv, key, |x| x > half, &r_reason) {
-                Ok((rs, _)) => rs,
-                // Default radii made invalid by a user-set width: blame the width.
-                Err(_) if v.is_none() => {
+        let shape = match &decks.shape {
+            None => StudyShape::Curved,
+            Some(v) => match v.get_ref().as_str() {
+                "curved" => StudyShape::Curved,
+                "straight" => StudyShape::Straight,
+                "skew" => StudyShape::Skew,
+                other => {
                     return Err(cx.invalid(
-                        width_span,
-                        "decks.width_m",
-                        fmt_num(width),
-                        &format!("width/2 must be below every radius of {key} (built-in default)"),
+                        v.span(),
+                        "decks.shape",
+                        format!("{other:?}"),
+                        "expected \"curved\", \"straight\" or \"skew\"",
                     ));
                 }
-                Err(e) => return Err(e),
-            };
-            radii.push(rs);
+            },
+        };
+        // Keys of another shape are errors (they would be silently ignored otherwise).
+        let foreign: Vec<(&str, Option<Range<usize>>)> = match shape {
+            StudyShape::Curved => vec![
+                ("decks.l1_m", decks.l1_m.as_ref().map(|v| v.span())),
+                ("decks.l2_m", decks.l2_m.as_ref().map(|v| v.span())),
+                ("decks.skew_deg", decks.skew_deg.as_ref().map(|v| v.span())),
+            ],
+            _ => {
+                let mut f = vec![
+                    (
+                        "decks.beta1_deg",
+                        decks.beta1_deg.as_ref().map(|v| v.span()),
+                    ),
+                    (
+                        "decks.beta2_deg",
+                        decks.beta2_deg.as_ref().map(|v| v.span()),
+                    ),
+                    ("decks.r1_m", decks.r1_m.as_ref().map(|v| v.span())),
+                    ("decks.r2_m", decks.r2_m.as_ref().map(|v| v.span())),
+                ];
+                if shape == StudyShape::Straight {
+                    f.push(("decks.skew_deg", decks.skew_deg.as_ref().map(|v| v.span())));
+                }
+                f
+            }
+        };
+        for (key, span) in foreign {
+            if let Some(span) = span {
+                return Err(cx.invalid(
+                    span,
+                    key,
+                    "(set)".into(),
+                    &format!(
+                        "this key does not apply to decks.shape = \"{}\"",
+                        shape.name()
+                    ),
+                ));
+            }
         }
-        let r2_m = radii.pop().unwrap_or_default();
-        let r1_m = radii.pop().unwrap_or_default();
+        let (beta1_deg, beta2_deg, r1_m, r2_m, l1_m, l2_m, skew_deg);
+        if shape == StudyShape::Curved {
+            let beta_ok = |x: Real| x > 0.0 && x < 360.0;
+            let (beta1_deg_, _) = cx.list(
+                &decks.beta1_deg,
+                &d.beta1_deg,
+                "decks.beta1_deg",
+                beta_ok,
+                "must lie in (0, 360) deg",
+            )?;
+            let (beta2_deg_, _) = cx.list(
+                &decks.beta2_deg,
+                &d.beta2_deg,
+                "decks.beta2_deg",
+                beta_ok,
+                "must lie in (0, 360) deg",
+            )?;
+            let half = width / 2.0;
+            let r_reason = format!("R must exceed width/2 = {} m", fmt_num(half));
+            let mut radii = Vec::new();
+            for (key, v, dv) in [
+                ("decks.r1_m", &decks.r1_m, &d.r1_m),
+                ("decks.r2_m", &decks.r2_m, &d.r2_m),
+            ] {
+                let rs = match cx.list(v, dv, key, |x| x > half, &r_reason) {
+                    Ok((rs, _)) => rs,
+                    // Default radii made invalid by a user-set width: blame the width.
+                    Err(_) if v.is_none() => {
+                        return Err(cx.invalid(
+                            width_span,
+                            "decks.width_m",
+                            fmt_num(width),
+                            &format!(
+                                "width/2 must be below every radius of {key} (built-in default)"
+                            ),
+                        ));
+                    }
+                    Err(e) => return Err(e),
+                };
+                radii.push(rs);
+            }
+            let r2_m_ = radii.pop().unwrap_or_default();
+            let r1_m_ = radii.pop().unwrap_or_default();
+            (beta1_deg, beta2_deg, r1_m, r2_m) = (beta1_deg_, beta2_deg_, r1_m_, r2_m_);
+            (l1_m, l2_m, skew_deg) = (Vec::new(), Vec::new(), Vec::new());
+        } else {
+            let l_ok = |x: Real| x > 0.0;
+            (l1_m, _) = cx.list(
+                &decks.l1_m,
+                &DEFAULT_LENGTHS_M,
+                "decks.l1_m",
+                l_ok,
+                "the deck length must be finite and > 0",
+            )?;
+            (l2_m, _) = cx.list(
+                &decks.l2_m,
+                &DEFAULT_LENGTHS_M,
+                "decks.l2_m",
+                l_ok,
+                "the deck length must be finite and > 0",
+            )?;
+            skew_deg = if shape == StudyShape::Skew {
+                cx.list(
+                    &decks.skew_deg,
+                    &DEFAULT_SKEW_DEG,
+                    "decks.skew_deg",
+                    |x| (0.0..90.0).contains(&x),
+                    "the skew angle must lie in [0, 90) deg",
+                )?
+                .0
+            } else {
+                vec![0.0]
+            };
+            (beta1_deg, beta2_deg, r1_m, r2_m) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        }
         let (mu, _) = cx.list(
             &impact.mu,
             &d.mu,
@@ -607,6 +754,10 @@ impl Scenario {
             }
         };
         Ok(Self {
+            shape,
+            l1_m,
+            l2_m,
+            skew_deg,
             width,
             thickness,
             density,
@@ -636,9 +787,75 @@ impl Scenario {
         self.density * self.thickness
     }
 
-    /// Number of deck geometries `(β1, β2, R1, R2)`.
+    /// Sizes of the four geometry axes: `(β1, β2, R1, R2)` for curved decks, `(L1, L2, θ_s, 1)`
+    /// for straight and skewed decks.
+    pub fn geometry_dims(&self) -> [usize; 4] {
+        match self.shape {
+            StudyShape::Curved => [
+                self.beta1_deg.len(),
+                self.beta2_deg.len(),
+                self.r1_m.len(),
+                self.r2_m.len(),
+            ],
+            _ => [self.l1_m.len(), self.l2_m.len(), self.skew_deg.len(), 1],
+        }
+    }
+
+    /// Human-readable geometry of the axis indices `g` (figure titles), e.g.
+    /// `β1 = 60°, β2 = 90°, R1 = 100 m, R2 = 200 m` or `straight decks, L1 = 30 m, L2 = 60 m`.
+    pub fn geometry_label(&self, g: [usize; 4]) -> String {
+        let t = fmt_num;
+        match self.shape {
+            StudyShape::Curved => format!(
+                "β1 = {}°, β2 = {}°, R1 = {} m, R2 = {} m",
+                t(self.beta1_deg[g[0]]),
+                t(self.beta2_deg[g[1]]),
+                t(self.r1_m[g[2]]),
+                t(self.r2_m[g[3]])
+            ),
+            StudyShape::Straight => format!(
+                "straight decks, L1 = {} m, L2 = {} m",
+                t(self.l1_m[g[0]]),
+                t(self.l2_m[g[1]])
+            ),
+            StudyShape::Skew => format!(
+                "skewed decks, L1 = {} m, L2 = {} m, skew = {}°",
+                t(self.l1_m[g[0]]),
+                t(self.l2_m[g[1]]),
+                t(self.skew_deg[g[2]])
+            ),
+        }
+    }
+
+    /// File-name fragment of the geometry `g`: `b1-60_b2-90_r1-100_r2-200` (curved, as before),
+    /// `straight_l1-30_l2-60` or `skew_l1-30_l2-60_skew-15`.
+    pub fn geometry_id(&self, g: [usize; 4]) -> String {
+        let t = fmt_num;
+        match self.shape {
+            StudyShape::Curved => format!(
+                "b1-{}_b2-{}_r1-{}_r2-{}",
+                t(self.beta1_deg[g[0]]),
+                t(self.beta2_deg[g[1]]),
+                t(self.r1_m[g[2]]),
+                t(self.r2_m[g[3]])
+            ),
+            StudyShape::Straight => format!(
+                "straight_l1-{}_l2-{}",
+                t(self.l1_m[g[0]]),
+                t(self.l2_m[g[1]])
+            ),
+            StudyShape::Skew => format!(
+                "skew_l1-{}_l2-{}_skew-{}",
+                t(self.l1_m[g[0]]),
+                t(self.l2_m[g[1]]),
+                t(self.skew_deg[g[2]])
+            ),
+        }
+    }
+
+    /// Number of deck geometries (product of [`geometry_dims`](Self::geometry_dims)).
     pub fn geometry_count(&self) -> usize {
-        self.beta1_deg.len() * self.beta2_deg.len() * self.r1_m.len() * self.r2_m.len()
+        self.geometry_dims().iter().product()
     }
 
     /// Number of configurations `(β1, β2, R1, R2, μ, ε)`.

@@ -9,7 +9,7 @@
 //! an unsharded run's byte for byte.
 
 use super::StudyError;
-use super::csv::{BOUNDS_HEADER, RowWriter, parse_bounds_line};
+use super::csv::{RowWriter, bounds_header, parse_bounds_line};
 use super::run::{Layout, Row, Shard};
 use super::scenario::Scenario;
 use serde_json::{Value, json};
@@ -36,7 +36,7 @@ pub fn manifest_json(shard: Shard, scenario_text: &str, rows_total: usize, rows:
 pub fn shard_rows_csv(scenario: &Scenario, rows: &[Row]) -> String {
     let mut s = String::with_capacity(rows.len() * 260 + 300);
     s.push_str("row,");
-    s.push_str(BOUNDS_HEADER);
+    s.push_str(&bounds_header(scenario));
     s.push('\n');
     let mut w = RowWriter::new(scenario);
     for r in rows {
@@ -141,7 +141,7 @@ pub fn merge(parts: &[ShardFiles]) -> Result<Merged, StudyError> {
     for (shard, p) in parsed {
         let mut lines = p.rows.lines();
         let header = lines.next().unwrap_or("");
-        if header.strip_prefix("row,") != Some(BOUNDS_HEADER) {
+        if header.strip_prefix("row,") != Some(bounds_header(&scenario).as_str()) {
             return Err(err(&p.origin, "rows file has the wrong header"));
         }
         for line in lines {

@@ -13,7 +13,7 @@
 //! block's cells (all of them) whose `lcp_agrees` is false.
 
 use super::run::{Layout, Row};
-use super::scenario::Scenario;
+use super::scenario::{Scenario, StudyShape};
 use crate::geometry::ContactCase;
 use crate::math::Real;
 use crate::output::{float_token, json_float};
@@ -33,6 +33,15 @@ pub struct SummaryRow {
     pub r1_m: Real,
     /// `R2` \[m\].
     pub r2_m: Real,
+    /// Deck shape (straight/skew summaries carry the extra columns of
+    /// [`SHAPE_COLUMNS`](super::csv::SHAPE_COLUMNS); their `β`/`R` fields are NaN).
+    pub shape: StudyShape,
+    /// `L1` \[m\] (NaN for curved decks).
+    pub l1_m: Real,
+    /// `L2` \[m\] (NaN for curved decks).
+    pub l2_m: Real,
+    /// Skew angle \[deg\] (NaN for curved decks).
+    pub skew_deg: Real,
     /// `μ`.
     pub mu: Real,
     /// `ε_N`.
@@ -112,6 +121,10 @@ pub fn summarize(scenario: &Scenario, rows: &[Row]) -> Vec<SummaryRow> {
                 beta2_deg: p.beta2_deg,
                 r1_m: p.r1_m,
                 r2_m: p.r2_m,
+                shape: scenario.shape,
+                l1_m: p.l1_m,
+                l2_m: p.l2_m,
+                skew_deg: p.skew_deg,
                 mu: p.mu,
                 eps: p.eps,
                 case: p.case,
@@ -132,12 +145,17 @@ pub fn summarize(scenario: &Scenario, rows: &[Row]) -> Vec<SummaryRow> {
 /// `summary.csv` text.
 pub fn summary_csv(rows: &[SummaryRow]) -> String {
     let mut s = String::with_capacity(rows.len() * 160 + 256);
+    let shaped = rows.first().is_some_and(|r| r.shape != StudyShape::Curved);
     s.push_str(SUMMARY_HEADER);
+    if shaped {
+        s.push(',');
+        s.push_str(super::csv::SHAPE_COLUMNS);
+    }
     s.push('\n');
     for r in rows {
         let f = float_token;
         s.push_str(&format!(
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             f(r.beta1_deg),
             f(r.beta2_deg),
             f(r.r1_m),
@@ -155,6 +173,16 @@ pub fn summary_csv(rows: &[SummaryRow]) -> String {
             f(r.upper_max),
             r.lcp_disagreements
         ));
+        if shaped {
+            s.push_str(&format!(
+                ",{},{},{},{}",
+                r.shape.name(),
+                f(r.l1_m),
+                f(r.l2_m),
+                f(r.skew_deg)
+            ));
+        }
+        s.push('\n');
     }
     s
 }
@@ -170,6 +198,12 @@ pub fn summary_json(scenario: &Scenario, rows: &[SummaryRow]) -> String {
             m.insert("beta2_deg".into(), json_float(r.beta2_deg));
             m.insert("r1_m".into(), json_float(r.r1_m));
             m.insert("r2_m".into(), json_float(r.r2_m));
+            if r.shape != StudyShape::Curved {
+                m.insert("shape".into(), json!(r.shape.name()));
+                m.insert("l1_m".into(), json_float(r.l1_m));
+                m.insert("l2_m".into(), json_float(r.l2_m));
+                m.insert("skew_deg".into(), json_float(r.skew_deg));
+            }
             m.insert("mu".into(), json_float(r.mu));
             m.insert("eps".into(), json_float(r.eps));
             m.insert("case".into(), json!(r.case.name()));

@@ -1,0 +1,285 @@
+//! Impact configurations of two decks of **any** shape ([`DeckShape`]): the joint-anchored
+//! placement of spec §5.2 generalised from the curved S arrangement, with the force directions
+//! (spec §6) and the Delassus matrix (spec §7) from each deck's actual centroid and inertia.
+//!
+//! # Placement **\[C\]**
+//!
+//! Every shape is given in its body frame (see [`shape`](crate::shape)): joint-face midpoint at the
+//! origin, joint face on the x-axis with the corners `c0 = (w, 0)` and `c1 = (−w, 0)`, the deck in
+//! `y > 0`. The face half-length is `w = W/2` for curved and straight decks and `w = W/(2 cos θ_s)`
+//! for a skewed deck. For curved decks `c0` is the inner and `c1` the outer corner; for straight and
+//! skewed decks `c0` is the acute and `c1` the obtuse corner, and the study calls them "inner"
+//! and "outer" respectively ([`ContactCase`] names are kept).
+//!
+//! In the global frame of spec §4 a body point `p` of deck 1 is at `M_1 + Rot(θ1) p` with
+//! `M_1 = (0, h)`, and a body point `p` of deck 2 at `Rot(θ2)(−p)` (deck 2 is its body frame turned
+//! by π, then rotated by `θ2` about its own face midpoint `M_2 = (0, 0)`). So the curved
+//! [`SArrangement`](crate::geometry::SArrangement) is the special case `w1 = w2 = W/2` with the body
+//! centroids `(R_j − X_j, Y_j)`, and [`DeckPair::configuration`] reproduces
+//! [`SArrangement::configuration`](crate::geometry::SArrangement::configuration) to rounding.
+//!
+//! # What changes when the face half-lengths differ **\[M\]**
+//!
+//! With `w_a` the striking deck's half-length and `w_b` the struck deck's (`s_j = sin θ_j`,
+//! `c_j = cos θ_j`, `s12 = sin(θ1 − θ2)`):
+//!
+//! | case | `h` | exact `σ_b` | end `σ_b` |
+//! |---|---|---|---|
+//! | deck1-inner | `−w1 s12/c2` | `+w1 c1/c2` | `+w2` |
+//! | deck1-outer | `+w1 s12/c2` | `−w1 c1/c2` | `−w2` |
+//! | deck2-inner | `+w2 s12/c1` | `+w2 c2/c1` | `+w1` |
+//! | deck2-outer | `−w2 s12/c1` | `−w2 c2/c1` | `−w1` |
+//!
+//! (`h` and the exact σ use the striking corner's distance `w_a` from its face midpoint; the `end`
+//! mode's face end is the struck face's `±w_b`.) `end_closes` is still `h > 0` (both corners of the
+//! striking deck are `w_a` from `M_a`, so their `h` are opposite).
+//!
+//! **First contact.** Closing along y, a candidate is a real contact only if the corner lands on the
+//! struck face *segment*, `|σ_exact| ≤ w_b`; beyond the face end the struck deck's outline turns
+//! away from the joint (convex corner), so the corner meets nothing. Deck 1's corners land on deck
+//! 2's face iff `w1 c1 ≤ w2 c2`, deck 2's on deck 1's iff `w2 c2 ≤ w1 c1`. Hence
+//!
+//! * the striking deck is the one with the **smaller** `w_a cos θ_a` (for `w1 = w2`: the larger
+//!   `|θ|`, spec §5.4), and its corner with `h > 0` is the first contact;
+//! * **parallel faces**: `θ1 = θ2` (unchanged);
+//! * **corner meets corner**: `w1 cos θ1 = w2 cos θ2`, which for `w1 = w2` is `θ1 = −θ2` (spec §5.4)
+//!   but for `w1 ≠ w2` is a different curve — at `θ1 = −θ2` the shorter face's corner lands strictly
+//!   inside the longer face, a regular single impact.
+//!
+//! For `w1 = w2` (every pair the study builds: common width and common skew) the flags and
+//! degeneracies are exactly those of spec §5.4 and are computed by the same functions
+//! ([`is_first_contact`], [`degeneracy`]).
+
+use crate::contact::{Delassus, ForceDirections};
+use crate::geometry::{
+    ContactCase, DEGENERACY_TOLERANCE, DeckId, Degeneracy, GeometryError, ImpactConfiguration,
+    SigmaMode, degeneracy, is_first_contact,
+};
+use crate::math::{Real, Vector, cross};
+use crate::shape::{DeckEnd, DeckShape, PlanarMassProperties};
+
+/// Two decks of any shape at a joint: deck 1 on `+y`, deck 2 (its body frame turned by π) on `−y`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DeckPair {
+    /// Deck 1 (body frame = the global frame translated by `M_1 = (0, h)`, rotated by `θ1`).
+    pub deck1: DeckShape,
+    /// Deck 2 (body frame turned by π about `M_2 = (0, 0)`, rotated by `θ2`).
+    pub deck2: DeckShape,
+}
+
+/// Precomputed body data of one deck: joint-face half-length and mass properties.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PairDeckData {
+    /// Joint-face half-length `w = |c0|` \[m\].
+    pub half_face: Real,
+    /// Mass properties in the body frame (centroid relative to the joint-face midpoint).
+    pub props: PlanarMassProperties,
+}
+
+impl DeckPair {
+    /// A pair of validated shapes. Each joint face must be centred on its body origin
+    /// (`c0 = (w, 0)`, `c1 = (−w, 0)`, true for every [`DeckShape`]); widths and skews may differ.
+    pub fn new(deck1: DeckShape, deck2: DeckShape) -> Result<Self, GeometryError> {
+        for (i, d) in [(1, &deck1), (2, &deck2)] {
+            let f = d.end_face(DeckEnd::Joint);
+            let [c0, c1] = f.corners;
+            let w = c0.x;
+            let tol = 1e-12 * w.abs().max(1.0);
+            if !(w > 0.0 && c0.y.abs() <= tol && c1.y.abs() <= tol && (c1.x + w).abs() <= tol) {
+                return Err(GeometryError::InvalidParameter {
+                    name: format!("deck{i}"),
+                    value: w,
+                    reason: "the joint face must be centred on the body origin along +x".into(),
+                });
+            }
+        }
+        Ok(Self { deck1, deck2 })
+    }
+
+    /// Body data of deck `j`.
+    pub fn data(&self, deck: DeckId) -> PairDeckData {
+        let d = match deck {
+            DeckId::One => &self.deck1,
+            DeckId::Two => &self.deck2,
+        };
+        PairDeckData {
+            half_face: d.end_face(DeckEnd::Joint).corners[0].x,
+            props: d.mass_properties(),
+        }
+    }
+
+    /// The impact configuration of `case` at `(θ1, θ2)` (module docs table), or the degeneracy
+    /// ([`pair_degeneracy`]). Precondition: `|θ_j| < 90°`, finite.
+    pub fn configuration(
+        &self,
+        case: ContactCase,
+        theta1: Real,
+        theta2: Real,
+        sigma_mode: SigmaMode,
+    ) -> Result<ImpactConfiguration, Degeneracy> {
+        configuration_with(
+            &self.data(DeckId::One),
+            &self.data(DeckId::Two),
+            case,
+            theta1,
+            theta2,
+            sigma_mode,
+        )
+    }
+
+    /// The Delassus matrix of `config` (spec §7) with each deck's own mass and inertia.
+    pub fn delassus(&self, config: &ImpactConfiguration) -> Delassus {
+        delassus_planar(
+            &self.deck1.mass_properties(),
+            &self.deck2.mass_properties(),
+            &force_directions(config),
+        )
+    }
+}
+
+/// The degeneracy of a pose with face half-lengths `w1`, `w2` (module docs): `θ1 = θ2` → parallel
+/// faces; then, for `w1 = w2`, `θ1 = −θ2` → corner meets corner (exactly [`degeneracy`]); for
+/// `w1 ≠ w2`, `|w1 cos θ1 − w2 cos θ2| ≤ 1e−12 · max(w1, w2)` → corner meets corner.
+pub fn pair_degeneracy(w1: Real, w2: Real, theta1: Real, theta2: Real) -> Option<Degeneracy> {
+    if w1 == w2 {
+        return degeneracy(theta1, theta2);
+    }
+    if (theta1 - theta2).abs() <= DEGENERACY_TOLERANCE {
+        Some(Degeneracy::ParallelFaces)
+    } else if (w1 * theta1.cos() - w2 * theta2.cos()).abs() <= 1e-12 * w1.max(w2) {
+        Some(Degeneracy::CornerCorner)
+    } else {
+        None
+    }
+}
+
+/// Whether `case` is the real first contact with face half-lengths `w1`, `w2` (module docs): the
+/// striking deck has the smaller `w_a cos θ_a` and the candidate's `h > 0`. For `w1 = w2` this is
+/// exactly [`is_first_contact`].
+pub fn pair_first_contact(
+    case: ContactCase,
+    w1: Real,
+    w2: Real,
+    theta1: Real,
+    theta2: Real,
+) -> bool {
+    if w1 == w2 {
+        return is_first_contact(case, theta1, theta2);
+    }
+    let (a1, a2) = (w1 * theta1.cos(), w2 * theta2.cos());
+    let s12 = (theta1 - theta2).sin();
+    match case {
+        ContactCase::Deck1Inner => a1 < a2 && s12 < 0.0,
+        ContactCase::Deck1Outer => a1 < a2 && s12 > 0.0,
+        ContactCase::Deck2Inner => a2 < a1 && s12 > 0.0,
+        ContactCase::Deck2Outer => a2 < a1 && s12 < 0.0,
+    }
+}
+
+/// [`DeckPair::configuration`] from precomputed body data (the study's fast path).
+pub fn configuration_with(
+    d1: &PairDeckData,
+    d2: &PairDeckData,
+    case: ContactCase,
+    theta1: Real,
+    theta2: Real,
+    sigma_mode: SigmaMode,
+) -> Result<ImpactConfiguration, Degeneracy> {
+    let (w1, w2) = (d1.half_face, d2.half_face);
+    if let Some(d) = pair_degeneracy(w1, w2, theta1, theta2) {
+        return Err(d);
+    }
+    let (s1, c1) = theta1.sin_cos();
+    let (s2, c2) = theta2.sin_cos();
+    let s12 = s1 * c2 - c1 * s2; // sin(θ1 − θ2)
+    // h, exact σ_b, the corner's body x (before deck 2's turn by π), end-mode σ_b.
+    let (h, sigma_exact, corner_x, end_sigma) = match case {
+        ContactCase::Deck1Inner => (-w1 * s12 / c2, w1 * c1 / c2, w1, w2),
+        ContactCase::Deck1Outer => (w1 * s12 / c2, -w1 * c1 / c2, -w1, -w2),
+        ContactCase::Deck2Inner => (w2 * s12 / c1, w2 * c2 / c1, -w2, w1),
+        ContactCase::Deck2Outer => (-w2 * s12 / c1, -w2 * c2 / c1, w2, -w1),
+    };
+    let sigma = match sigma_mode {
+        SigmaMode::Exact => sigma_exact,
+        SigmaMode::End => end_sigma,
+    };
+    let m1 = Vector::new(0.0, h);
+    let (gb1, gb2) = (d1.props.centroid, d2.props.centroid);
+    let g1 = m1 + rot_sc(s1, c1, gb1.x, gb1.y);
+    let g2 = rot_sc(s2, c2, -gb2.x, -gb2.y);
+    let (point, normal, tangent, struck_point) = match case.striking() {
+        DeckId::One => {
+            let p = m1 + rot_sc(s1, c1, corner_x, 0.0);
+            let e = Vector::new(c2, s2);
+            (p, Vector::new(-s2, c2), Vector::new(-c2, -s2), e * sigma)
+        }
+        DeckId::Two => {
+            let p = rot_sc(s2, c2, corner_x, 0.0);
+            let e = Vector::new(-c1, -s1);
+            (
+                p,
+                Vector::new(-s1, c1),
+                Vector::new(-c1, -s1),
+                m1 + e * sigma,
+            )
+        }
+    };
+    Ok(ImpactConfiguration {
+        case,
+        theta1,
+        theta2,
+        h,
+        sigma,
+        end_closes: h > 0.0,
+        first_contact: pair_first_contact(case, w1, w2, theta1, theta2),
+        point,
+        normal,
+        tangent,
+        centroid1: g1,
+        centroid2: g2,
+        sigma_mode,
+        sigma_exact,
+        struck_point,
+        face_mid1: m1,
+    })
+}
+
+/// Force directions of spec §6 from a configuration alone: `r_j = C − G_j` (struck deck: the
+/// struck point), `A_j = r_j × ν`, `B_j = r_j × τ`,
+/// `w_N = (ν_x, ν_y, A_1, −ν_x, −ν_y, −A_2)`, `w_T = (τ_x, τ_y, B_1, −τ_x, −τ_y, −B_2)`
+/// (the same numbers as [`contact::force_directions`](crate::contact::force_directions)).
+pub fn force_directions(config: &ImpactConfiguration) -> ForceDirections {
+    let (nu, tau) = (config.normal, config.tangent);
+    let r1 = config.lever_arm(DeckId::One);
+    let r2 = config.lever_arm(DeckId::Two);
+    let (a1, b1) = (cross(&r1, &nu), cross(&r1, &tau));
+    let (a2, b2) = (cross(&r2, &nu), cross(&r2, &tau));
+    ForceDirections {
+        w_n: [nu.x, nu.y, a1, -nu.x, -nu.y, -a2],
+        w_t: [tau.x, tau.y, b1, -tau.x, -tau.y, -b2],
+    }
+}
+
+/// `G = Wᵀ M⁻¹ W` (spec §7) with planar mass properties:
+/// `G_NN = 1/m1 + 1/m2 + A1²/I1 + A2²/I2`, `G_NT = A1 B1/I1 + A2 B2/I2`,
+/// `G_TT = 1/m1 + 1/m2 + B1²/I1 + B2²/I2`.
+pub fn delassus_planar(
+    p1: &PlanarMassProperties,
+    p2: &PlanarMassProperties,
+    w: &ForceDirections,
+) -> Delassus {
+    let inv_m = 1.0 / p1.mass + 1.0 / p2.mass;
+    let (i1, i2) = (1.0 / p1.inertia, 1.0 / p2.inertia);
+    let (a1, a2) = (w.w_n[2], w.w_n[5]);
+    let (b1, b2) = (w.w_t[2], w.w_t[5]);
+    Delassus {
+        nn: inv_m + a1 * a1 * i1 + a2 * a2 * i2,
+        nt: a1 * b1 * i1 + a2 * b2 * i2,
+        tt: inv_m + b1 * b1 * i1 + b2 * b2 * i2,
+    }
+}
+
+#[inline]
+fn rot_sc(s: Real, c: Real, x: Real, y: Real) -> Vector {
+    Vector::new(c * x - s * y, s * x + c * y)
+}
