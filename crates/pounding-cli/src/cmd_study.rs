@@ -76,9 +76,17 @@ pub fn run(args: Args) -> Result<ExitCode> {
     }
 }
 
+/// Upper bound of `--threads` (a guard against typos such as `--threads 100000`).
+const MAX_THREADS: usize = 1024;
+
+/// Upper bound of the rows one run (or one shard) holds in memory, about 0.5 KB each.
+const MAX_ROWS_PER_RUN: usize = 20_000_000;
+
 fn pool(threads: Option<usize>) -> Result<rayon::ThreadPool> {
-    if threads == Some(0) {
-        bail!("invalid --threads 0: must be >= 1");
+    if let Some(n) = threads
+        && !(1..=MAX_THREADS).contains(&n)
+    {
+        bail!("invalid --threads {n}: must lie in [1, {MAX_THREADS}]");
     }
     let mut b = rayon::ThreadPoolBuilder::new();
     if let Some(n) = threads {
@@ -129,6 +137,17 @@ fn run_study(path: Option<&Path>, shard: Option<&str>, common: &Common) -> Resul
     let shard = shard.map(Shard::parse).transpose()?;
     let pool = pool(common.threads)?;
     let total = scenario.row_count();
+    let per_run = match shard {
+        Some(s) => total.div_ceil(s.count),
+        None => total,
+    };
+    if per_run > MAX_ROWS_PER_RUN {
+        bail!(
+            "the scenario gives {total} rows ({per_run} in this run); one run holds at most \
+             {MAX_ROWS_PER_RUN} rows in memory (about 0.5 KB each): use a coarser grid, fewer \
+             parameter values, or split the study with --shard K/N"
+        );
+    }
     eprintln!(
         "study: {} configurations x {} cases x {} cells = {} rows on {} threads",
         scenario.configuration_count(),
@@ -194,6 +213,30 @@ fn exit_for(disagreements: usize) -> ExitCode {
     }
 }
 
+/// Removes what an earlier run may have left in `out` (`report.html` and `timing.json`, which are
+/// written last and so mark a complete run, and the figures), so that an interrupted run never
+/// leaves a set of files that looks complete but mixes two runs.
+fn remove_previous_outputs(out: &Path) -> Result<()> {
+    let remove = |p: &Path| match std::fs::remove_file(p) {
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+            Err(e).with_context(|| format!("cannot remove the earlier output {}", p.display()))
+        }
+        _ => Ok(()),
+    };
+    remove(&out.join("report.html"))?;
+    remove(&out.join("timing.json"))?;
+    let figs = out.join("figures");
+    if let Ok(entries) = std::fs::read_dir(&figs) {
+        for e in entries.flatten() {
+            let p = e.path();
+            if matches!(p.extension().and_then(|x| x.to_str()), Some("png" | "svg")) {
+                remove(&p)?;
+            }
+        }
+    }
+    Ok(())
+}
+
 /// Writes every output of a complete study.
 fn finish(
     study: Study,
@@ -208,6 +251,7 @@ fn finish(
     let summary_json = study.summary_json();
     let t_text = t0.elapsed().as_secs_f64();
     create_dir(out)?;
+    remove_previous_outputs(out)?;
     write(out, "bounds.csv", &bounds)?;
     write(out, "summary.csv", &summary_csv)?;
     write(out, "summary.json", &summary_json)?;

@@ -278,3 +278,48 @@ fn print_default_is_the_built_in_scenario() {
         - 1;
     assert_eq!(rows, 2 * 4 * 4 * 441);
 }
+
+#[test]
+fn absurd_thread_counts_and_row_counts_are_refused() {
+    let dir = tmp("limits");
+    let sc = dir.join("s.toml");
+    std::fs::write(&sc, SMALL).unwrap();
+    let out = dir.join("out");
+    let o = run(&["study", s(&sc), "--out", s(&out), "--threads", "100000"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--threads 100000"));
+    assert!(!out.exists(), "nothing may be written");
+    // 20 001 x 20 001 cells x 4 cases x 1 configuration: far beyond one run's memory bound.
+    let huge = SMALL
+        .replace(
+            "theta1_deg = { start = -4.0, stop = 4.0, step = 2.0 }",
+            "theta1_deg = { start = -10.0, stop = 10.0, step = 0.001 }",
+        )
+        .replace(
+            "theta2_deg = { start = -4.0, stop = 4.0, step = 1.0 }",
+            "theta2_deg = { start = -10.0, stop = 10.0, step = 0.001 }",
+        );
+    std::fs::write(&sc, huge).unwrap();
+    let o = run(&["study", s(&sc), "--out", s(&out)]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("--shard"), "{err}");
+    assert!(!out.exists(), "nothing may be written");
+}
+
+#[test]
+fn a_new_run_removes_the_previous_runs_markers_and_figures() {
+    let dir = tmp("stale");
+    let sc = dir.join("s.toml");
+    std::fs::write(&sc, SMALL).unwrap();
+    let out = dir.join("out");
+    std::fs::create_dir_all(out.join("figures")).unwrap();
+    let stale = out.join("figures").join("surface_old.png");
+    std::fs::write(&stale, b"old").unwrap();
+    std::fs::write(out.join("timing.json"), b"{}").unwrap();
+    let o = run(&["study", s(&sc), "--out", s(&out)]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(!stale.exists(), "a stale figure of an earlier run survived");
+    let timing = std::fs::read_to_string(out.join("timing.json")).unwrap();
+    assert!(timing.contains("total_s"), "timing.json is not this run's");
+}
