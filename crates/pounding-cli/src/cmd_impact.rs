@@ -635,7 +635,15 @@ pub fn parse_problem(text: &str) -> Result<ImpactProblem> {
     Ok(ImpactProblem::new(bodies, contacts)?)
 }
 
+/// Whether `solutions` / uniqueness are known: enumeration ran, or the problem is small enough
+/// (`3n ≤ 12`) for the solver to enumerate whenever uniqueness is in doubt (singular `G` or a
+/// Lemke failure). With `3n > 12` and no enumeration nothing was checked.
+fn uniqueness_checked(p: &ImpactProblem, s: &ImpactSolution) -> bool {
+    s.enumerated || 3 * p.contacts().len() <= pounding::lcp::enumerate::MAX_ENUM_DIM
+}
+
 fn solution_json(p: &ImpactProblem, s: &ImpactSolution) -> Value {
+    let checked = uniqueness_checked(p, s);
     let bodies: Vec<Value> = p
         .bodies()
         .iter()
@@ -668,9 +676,10 @@ fn solution_json(p: &ImpactProblem, s: &ImpactSolution) -> Value {
         "contacts": contacts,
         "energy": {"before": json_float(s.energy_before), "after": json_float(s.energy_after)},
         "status": s.status.name(),
-        "solutions": s.solutions,
-        "post_velocity_unique": s.post_velocity_unique,
-        "impulse_unique": s.solutions <= 1,
+        // With 3n > 12 the bases cannot be enumerated: uniqueness is unknown (null) unless checked.
+        "solutions": if checked { json!(s.solutions) } else { Value::Null },
+        "post_velocity_unique": if checked { json!(s.post_velocity_unique) } else { Value::Null },
+        "impulse_unique": if checked { json!(s.solutions <= 1) } else { Value::Null },
     })
 }
 
@@ -727,6 +736,11 @@ fn run_generic(path: &PathBuf, as_json: bool) -> Result<ExitCode> {
                 } else {
                     "NOT unique"
                 }
+            );
+        } else if !uniqueness_checked(&problem, &s) {
+            println!(
+                "  uniqueness: not checked (enumeration runs only for 3n <= 12; here 3n = {})",
+                3 * problem.contacts().len()
             );
         }
     }

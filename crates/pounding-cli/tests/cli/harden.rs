@@ -88,3 +88,36 @@ fn lcp_io_refuses_absurd_sizes_and_empty_sets() {
     assert!(code.is_some() && code != Some(101), "panicked: {err}");
     assert!(!err.contains("panicked"), "{err}");
 }
+
+fn disc_problem(n_contacts: usize) -> String {
+    let c = r#"{"body_a": "disc", "body_b": null, "point": [0, 0], "normal": [0, 1], "mu": 0.2, "restitution": 0.5}"#;
+    let cs = vec![c; n_contacts].join(", ");
+    format!(
+        r#"{{"bodies": [{{"name": "disc", "mass": 2.0, "inertia": 0.09, "position": [0, 0.3], "velocity": [1.0, -2.0], "omega": 40.0}}], "contacts": [{cs}]}}"#
+    )
+}
+
+#[test]
+fn impact_uniqueness_is_null_when_enumeration_did_not_run() {
+    let d = tmp("uniq");
+    // 6 duplicated contacts: 3n = 18 > 12, no enumeration; the impulse split is in fact not unique
+    let p6 = d.join("p6.json");
+    std::fs::write(&p6, disc_problem(6)).unwrap();
+    let (code, out, err) = run(&["impact", "--problem", s(&p6), "--json"]);
+    assert_eq!(code, Some(0), "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    for k in ["solutions", "impulse_unique", "post_velocity_unique"] {
+        assert!(v[k].is_null(), "{k} = {} (not checked)", v[k]);
+    }
+    let (_, out, _) = run(&["impact", "--problem", s(&p6)]);
+    assert!(out.contains("not checked"), "{out}");
+    // 2 duplicated contacts: enumerated, the split is found to be non-unique, velocities unique
+    let p2 = d.join("p2.json");
+    std::fs::write(&p2, disc_problem(2)).unwrap();
+    let (code, out, err) = run(&["impact", "--problem", s(&p2), "--json"]);
+    assert_eq!(code, Some(0), "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert!(v["solutions"].as_u64().unwrap() > 1, "{out}");
+    assert_eq!(v["impulse_unique"], serde_json::json!(false), "{out}");
+    assert_eq!(v["post_velocity_unique"], serde_json::json!(true), "{out}");
+}
