@@ -42,7 +42,7 @@ pub enum GroundMotionError {
         message: String,
     },
     /// A parameter is out of range or not finite; the message names it.
-    #[error("invalid {name} = {value}: {reason}")]
+    #[error("invalid {name} = {}: {reason}", crate::output::float_token(*value))]
     InvalidParameter {
         /// Parameter name.
         name: String,

@@ -121,3 +121,56 @@ fn impact_uniqueness_is_null_when_enumeration_did_not_run() {
     assert_eq!(v["impulse_unique"], serde_json::json!(false), "{out}");
     assert_eq!(v["post_velocity_unique"], serde_json::json!(true), "{out}");
 }
+
+#[test]
+fn overflowing_derived_mass_properties_are_errors_naming_the_parameter() {
+    let base = [
+        "impact",
+        "--r2",
+        "100",
+        "--beta1",
+        "60",
+        "--beta2",
+        "60",
+        "--width",
+        "10",
+        "--density",
+        "2500",
+        "--theta1",
+        "-5",
+        "--theta2",
+        "2",
+        "--case",
+        "deck1-inner",
+        "--mu",
+        "0.5",
+        "--eps",
+        "0.5",
+    ];
+    for (extra, want) in [
+        (["--r1", "1e300", "--thickness", "1"], "R1"),
+        (["--r1", "100", "--thickness", "1e-320"], "thickness"),
+    ] {
+        let mut a = base.to_vec();
+        a.extend(extra);
+        let (code, out, err) = run(&a);
+        assert_eq!(code, Some(2), "{want}: {out} {err}");
+        assert!(err.contains(want), "{want}: {err}");
+        assert!(!out.contains("NaN") && !out.contains("nan"), "{out}");
+    }
+    // simulate: a bearing point at 1e300 m names the key, not "no bearing stiffness"
+    let d = tmp("bearing");
+    let sc = d.join("s.toml");
+    std::fs::write(
+        &sc,
+        "[bearings]\npoints1 = [[1e300, 0]]\n[time]\nduration = 0.1\n",
+    )
+    .unwrap();
+    let (code, _, err) = run(&["simulate", s(&sc), "--out", s(&d.join("o"))]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("points1") && !err.contains("no bearing stiffness"),
+        "{err}"
+    );
+    assert!(err.len() < 400, "number printed in full: {err}");
+}
