@@ -174,3 +174,28 @@ fn overflowing_derived_mass_properties_are_errors_naming_the_parameter() {
     );
     assert!(err.len() < 400, "number printed in full: {err}");
 }
+
+#[test]
+fn simulate_rejects_dt_beyond_the_duration_and_fails_on_divergence() {
+    let d = tmp("dt");
+    let sc = d.join("s.toml");
+    std::fs::write(&sc, "[time]\ndt = 1e300\n").unwrap();
+    let (code, _, err) = run(&["simulate", s(&sc), "--out", s(&d.join("o1"))]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("time") && err.contains("dt") && err.contains("1e300"),
+        "{err}"
+    );
+    // dt = duration = 1e300 passes validation but diverges: outputs written, non-zero exit
+    std::fs::write(&sc, "[time]\ndt = 1e300\nduration = 1e300\n").unwrap();
+    let o2 = d.join("o2");
+    let (code, _, err) = run(&["simulate", s(&sc), "--out", s(&o2)]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(err.contains("Diverged"), "{err}");
+    assert!(
+        err.contains("simulated 1e300 s"),
+        "duration not float_token: {err}"
+    );
+    let js = std::fs::read_to_string(o2.join("summary.json")).unwrap();
+    assert!(js.contains("\"status\": \"Diverged\""), "{js}");
+}
