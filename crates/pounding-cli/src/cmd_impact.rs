@@ -1068,9 +1068,11 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
         failed |= s.status == ImpactStatus::Failed;
         let pivot = frictionless_pivot(&shape, DeckEnd::Far);
         let omega = s.bodies[0].omega;
-        let n0 = -s.contacts[0].gamma_n_pre;
+        // relative threshold: ω against the characteristic rate |v⁻|/ℓ of the approach, with ℓ the
+        // largest body length (face length or radius of gyration); below 1e-9 it is rounding noise
+        // (e.g. θ_s → 90°, where γ_N⁻ → 0 and ω⁺ ~ 1e-26 rad/s)
         let half_diag = face.length().max(props.radius_of_gyration());
-        let rotates = omega.abs() > 1e-9 * n0 / half_diag;
+        let rotates = omega.abs() * half_diag > 1e-9 * speed.abs();
         let open: Vec<bool> = s
             .contacts
             .iter()

@@ -199,3 +199,43 @@ fn simulate_rejects_dt_beyond_the_duration_and_fails_on_divergence() {
     let js = std::fs::read_to_string(o2.join("summary.json")).unwrap();
     assert!(js.contains("\"status\": \"Diverged\""), "{js}");
 }
+
+#[test]
+fn near_90_degree_skew_rounding_noise_is_not_a_rotation() {
+    let a = [
+        "impact",
+        "--shape",
+        "skew",
+        "--skew",
+        "89.9999999",
+        "--abutment",
+        "--mu",
+        "0",
+        "--eps",
+        "0.5",
+        "--length",
+        "30",
+        "--width",
+        "10",
+    ];
+    let (code, out, err) = run(&a);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(!out.contains("the deck rotates"), "{out}");
+    let mut j = a.to_vec();
+    j.push("--json");
+    let (_, out, _) = run(&j);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["rotation"]["rotates"], serde_json::json!(false), "{out}");
+    // criterion satisfied (sin 2θ_s > 2W/L): a real rotation is still reported
+    let mut r = a.to_vec();
+    r[4] = "30";
+    r.push("--json");
+    let (_, out, _) = run(&r);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(
+        v["rotation"]["condition_holds"],
+        serde_json::json!(true),
+        "{out}"
+    );
+    assert_eq!(v["rotation"]["rotates"], serde_json::json!(true), "{out}");
+}
