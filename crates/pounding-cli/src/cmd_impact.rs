@@ -635,7 +635,15 @@ pub fn parse_problem(text: &str) -> Result<ImpactProblem> {
     Ok(ImpactProblem::new(bodies, contacts)?)
 }
 
+/// Whether `solutions` / uniqueness are known: enumeration ran, or the problem is small enough
+/// (`3n ≤ 12`) for the solver to enumerate whenever uniqueness is in doubt (singular `G` or a
+/// Lemke failure). With `3n > 12` and no enumeration nothing was checked.
+fn uniqueness_checked(p: &ImpactProblem, s: &ImpactSolution) -> bool {
+    s.enumerated || 3 * p.contacts().len() <= pounding::lcp::enumerate::MAX_ENUM_DIM
+}
+
 fn solution_json(p: &ImpactProblem, s: &ImpactSolution) -> Value {
+    let checked = uniqueness_checked(p, s);
     let bodies: Vec<Value> = p
         .bodies()
         .iter()
@@ -668,9 +676,10 @@ fn solution_json(p: &ImpactProblem, s: &ImpactSolution) -> Value {
         "contacts": contacts,
         "energy": {"before": json_float(s.energy_before), "after": json_float(s.energy_after)},
         "status": s.status.name(),
-        "solutions": s.solutions,
-        "post_velocity_unique": s.post_velocity_unique,
-        "impulse_unique": s.solutions <= 1,
+        // With 3n > 12 the bases cannot be enumerated: uniqueness is unknown (null) unless checked.
+        "solutions": if checked { json!(s.solutions) } else { Value::Null },
+        "post_velocity_unique": if checked { json!(s.post_velocity_unique) } else { Value::Null },
+        "impulse_unique": if checked { json!(s.solutions <= 1) } else { Value::Null },
     })
 }
 
@@ -727,6 +736,11 @@ fn run_generic(path: &PathBuf, as_json: bool) -> Result<ExitCode> {
                 } else {
                     "NOT unique"
                 }
+            );
+        } else if !uniqueness_checked(&problem, &s) {
+            println!(
+                "  uniqueness: not checked (enumeration runs only for 3n <= 12; here 3n = {})",
+                3 * problem.contacts().len()
             );
         }
     }
@@ -1054,9 +1068,11 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
         failed |= s.status == ImpactStatus::Failed;
         let pivot = frictionless_pivot(&shape, DeckEnd::Far);
         let omega = s.bodies[0].omega;
-        let n0 = -s.contacts[0].gamma_n_pre;
+        // relative threshold: ω against the characteristic rate |v⁻|/ℓ of the approach, with ℓ the
+        // largest body length (face length or radius of gyration); below 1e-9 it is rounding noise
+        // (e.g. θ_s → 90°, where γ_N⁻ → 0 and ω⁺ ~ 1e-26 rad/s)
         let half_diag = face.length().max(props.radius_of_gyration());
-        let rotates = omega.abs() > 1e-9 * n0 / half_diag;
+        let rotates = omega.abs() * half_diag > 1e-9 * speed.abs();
         let open: Vec<bool> = s
             .contacts
             .iter()

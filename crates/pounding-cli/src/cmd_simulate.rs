@@ -623,6 +623,20 @@ fn build(args: &Args) -> Result<Setup> {
             src.key_ref("time", "duration")
         );
     }
+    // The duration run (batch runs without `duration` use each record's length, checked there).
+    let duration = settings
+        .duration
+        .or(args.records.is_empty().then(|| ground.end_time()));
+    if let Some(d) = duration
+        && settings.dt > d
+    {
+        bail!(
+            "invalid dt = {}: must not exceed the duration {} s — set by {}",
+            float_token(settings.dt),
+            float_token(d),
+            src.key_ref("time", "dt")
+        );
+    }
     Ok(Setup {
         problem: SimProblem::at_rest(model, ground),
         settings,
@@ -675,9 +689,9 @@ pub fn run(args: Args) -> Result<ExitCode> {
     )?;
     let s = &sol.summary;
     eprintln!(
-        "simulated {:.2} s in {} steps ({:.1} ms): {} impacts, peak closing {:.4} m, opening {:.4} m, \
+        "simulated {} s in {} steps ({:.1} ms): {} impacts, peak closing {:.4} m, opening {:.4} m, \
          seat displacement {:.4} m{}, energy balance error {:.1e}; outputs in {}",
-        sol.steps as Real * sol.dt,
+        float_token(sol.steps as Real * sol.dt),
         sol.steps,
         sim_secs * 1e3,
         s.impacts,
@@ -692,7 +706,16 @@ pub fn run(args: Args) -> Result<ExitCode> {
         out.display()
     );
     if sol.status != pounding::sim::SimStatus::Completed {
-        eprintln!("warning: run status {:?}", sol.status);
+        // outputs are written (they show where the run went wrong), but the run did not succeed
+        eprintln!(
+            "error: simulation status {:?} after {} s ({} steps): the results are not trustworthy; \
+             see summary.json (lcp_failures) and history.csv in {}",
+            sol.status,
+            float_token(sol.steps as Real * sol.dt),
+            sol.steps,
+            out.display()
+        );
+        return Ok(ExitCode::from(1));
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -583,7 +583,7 @@ fn layout<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, problem: &SimProble
             GREEN.stroke_width(3),
         )))
         .map_err(e)?
-        .label("expansion joint (contacts at x = ±W/2)")
+        .label("expansion joint (contacts at the face ends x = ±b/2, b = face length)")
         .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], GREEN.stroke_width(3)));
     let style = TextStyle::from((FAMILY, 15).into_font()).color(&BLACK);
     for (txt, x, y) in [
@@ -632,6 +632,35 @@ const PALETTE: [RGBColor; 8] = [
     GREY,
 ];
 
+/// Smallest y range of the batch plot's rotation panel \[deg\].
+pub const ROTATION_MIN_RANGE_DEG: Real = 1e-3;
+
+/// The data range `(lo, hi)` of panel `k` of `batch.png` (0 is always included; the seat length
+/// in panel 0; at least [`ROTATION_MIN_RANGE_DEG`] in the rotation panel 2).
+fn batch_panel_range(k: usize, curves: &[BatchCurve], seat_length: Real) -> (Real, Real) {
+    let mut lo: Real = 0.0;
+    let mut hi = Real::NEG_INFINITY;
+    for c in curves {
+        for p in &c.pts {
+            if p.1[k].is_finite() {
+                lo = lo.min(p.1[k]);
+                hi = hi.max(p.1[k]);
+            }
+        }
+    }
+    if k == 0 {
+        hi = hi.max(seat_length);
+    }
+    if k == 2 && hi.is_finite() {
+        // at least 1e-3 deg, so rounding noise (~1e-17 deg in symmetric cases) reads as 0
+        hi = hi.max(lo + ROTATION_MIN_RANGE_DEG);
+    }
+    if !(hi.is_finite() && hi > lo) {
+        hi = lo + 1.0;
+    }
+    (lo, hi)
+}
+
 /// `batch.png`: peak response against intensity (PGA of the applied component) per record, four
 /// panels (seat displacement with the seat length, joint opening, plan rotation, impacts).
 pub fn batch_plot(out: &Path, name: &str, curves: &[BatchCurve], seat_length: Real) -> R {
@@ -657,22 +686,7 @@ pub fn batch_plot(out: &Path, name: &str, curves: &[BatchCurve], seat_length: Re
     save(out, name, (1400, 1000), |root| {
         let areas = root.split_evenly((2, 2));
         for (k, area) in areas.iter().enumerate() {
-            let mut lo: Real = 0.0;
-            let mut hi = Real::NEG_INFINITY;
-            for c in curves {
-                for p in &c.pts {
-                    if p.1[k].is_finite() {
-                        lo = lo.min(p.1[k]);
-                        hi = hi.max(p.1[k]);
-                    }
-                }
-            }
-            if k == 0 {
-                hi = hi.max(seat_length);
-            }
-            if !(hi.is_finite() && hi > lo) {
-                hi = lo + 1.0;
-            }
+            let (lo, hi) = batch_panel_range(k, curves, seat_length);
             let pad = (hi - lo) * 0.08;
             let span = hi - lo + 2.0 * pad;
             let mut chart = ChartBuilder::on(area)
@@ -742,4 +756,39 @@ pub fn batch_plot(out: &Path, name: &str, curves: &[BatchCurve], seat_length: Re
         }
         Ok(())
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rotation_panel_of_symmetric_batches_has_readable_ticks_and_reads_as_zero() {
+        // symmetric cases: peak rotations are rounding noise of ~1e-17 deg
+        let curves = [BatchCurve {
+            label: "r".into(),
+            pts: vec![
+                (0.1, [0.01, 0.0, 1e-17, 1.0]),
+                (0.2, [0.02, 0.0, 3e-17, 2.0]),
+            ],
+        }];
+        let (lo, hi) = batch_panel_range(2, &curves, 0.5);
+        assert!(hi - lo >= ROTATION_MIN_RANGE_DEG, "{lo} {hi}");
+        let pad = (hi - lo) * 0.08;
+        let span = hi - lo + 2.0 * pad;
+        // tick labels across the axis are distinct (not all "0"), and the noise reads as 0
+        let labels: Vec<String> = (0..=4)
+            .map(|i| tick(lo - pad + span * i as Real / 4.0, span))
+            .collect();
+        let mut uniq = labels.clone();
+        uniq.dedup();
+        assert_eq!(uniq.len(), labels.len(), "{labels:?}");
+        assert_eq!(tick(3e-17, span), "0");
+        // a real rotation is not clipped
+        let big = [BatchCurve {
+            label: "r".into(),
+            pts: vec![(0.1, [0.01, 0.0, 2.5, 1.0])],
+        }];
+        assert_eq!(batch_panel_range(2, &big, 0.5), (0.0, 2.5));
+    }
 }

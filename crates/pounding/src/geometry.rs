@@ -14,7 +14,7 @@ use thiserror::Error;
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum GeometryError {
     /// A parameter is out of its valid range or not finite; the message names the parameter.
-    #[error("invalid {name} = {value}: {reason}")]
+    #[error("invalid {name} = {}: {reason}", crate::output::float_token(*value))]
     InvalidParameter {
         /// Parameter name as the user knows it (e.g. `R1`, `beta2`, `width`).
         name: String,
@@ -123,13 +123,25 @@ impl Deck {
                 "must be finite and > 0",
             ));
         }
-        Ok(Self {
+        let deck = Self {
             radius,
             angle,
             width,
             thickness,
             density,
-        })
+        };
+        let p = deck.mass_properties();
+        let (r, b, w, t, d) = (
+            ("R", radius, radius),
+            ("beta", angle, angle),
+            ("width", width, width),
+            ("thickness", thickness, thickness),
+            ("density", density, density),
+        );
+        check_derived("area", p.area, &[r, b, w])?;
+        check_derived("mass", p.mass, &[t, d, r, b, w])?;
+        check_derived("inertia", p.inertia, &[r, w, b, t, d])?;
+        Ok(deck)
     }
 
     /// Mass properties (spec §3), with `ρ t` = `density · thickness`:
@@ -155,6 +167,32 @@ impl Deck {
             inertia,
         }
     }
+}
+
+/// Checks a derived mass property (`area`, `mass`, `inertia`): it must be a finite, positive,
+/// normal (not subnormal) number. Otherwise the error names the parameter most likely to have
+/// caused the overflow or underflow: among `candidates` `(name, reported value, magnitude)`, the
+/// one whose magnitude is farthest from 1 on a log scale.
+pub(crate) fn check_derived(
+    quantity: &str,
+    value: Real,
+    candidates: &[(&str, Real, Real)],
+) -> Result<(), GeometryError> {
+    if value.is_normal() && value > 0.0 {
+        return Ok(());
+    }
+    let (name, reported, _) = candidates
+        .iter()
+        .copied()
+        .max_by(|a, b| a.2.abs().ln().abs().total_cmp(&b.2.abs().ln().abs()))
+        .unwrap_or(("?", Real::NAN, 1.0));
+    Err(GeometryError::invalid(
+        name,
+        reported,
+        &format!(
+            "the derived {quantity} = {value:e} is not a finite, positive, normal number (overflow or underflow); use a value of a physical magnitude"
+        ),
+    ))
 }
 
 /// Mass properties of one deck (spec §3), a value type.

@@ -42,7 +42,7 @@ pub enum GroundMotionError {
         message: String,
     },
     /// A parameter is out of range or not finite; the message names it.
-    #[error("invalid {name} = {value}: {reason}")]
+    #[error("invalid {name} = {}: {reason}", crate::output::float_token(*value))]
     InvalidParameter {
         /// Parameter name.
         name: String,
@@ -185,6 +185,18 @@ impl Record {
         let header = lines[3];
         let (npts, dt) = parse_at2_npts_dt(header)
             .map_err(|m| parse_err(source_name, 4, format!("{m} in AT2 header line {header:?}")))?;
+        // Each value needs at least one byte, so a larger NPTS cannot be honoured; refuse it
+        // before allocating (an absurd NPTS would otherwise abort on allocation).
+        if npts > text.len() {
+            return Err(parse_err(
+                source_name,
+                4,
+                format!(
+                    "NPTS = {npts} exceeds what the file can hold ({} bytes) in AT2 header line {header:?}",
+                    text.len()
+                ),
+            ));
+        }
         let mut values = Vec::with_capacity(npts);
         for (k, line) in lines.iter().enumerate().skip(4) {
             for tok in line.split_whitespace() {

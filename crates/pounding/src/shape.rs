@@ -53,7 +53,7 @@
 
 use crate::analytic::ImpactLaw;
 use crate::contact::Delassus;
-use crate::geometry::{Deck, GeometryError};
+use crate::geometry::{Deck, GeometryError, check_derived};
 use crate::impact::{ContactSpec, ImpactError, ImpactProblem, RigidBody};
 use crate::math::{Real, Vector, cross, perp};
 
@@ -99,12 +99,14 @@ impl StraightDeck {
         positive("width", width)?;
         positive("thickness", thickness)?;
         positive("density", density)?;
-        Ok(Self {
+        let deck = Self {
             length,
             width,
             thickness,
             density,
-        })
+        };
+        deck.as_skewed().check_mass_properties()?;
+        Ok(deck)
     }
 
     /// The same rectangle as a skewed deck with `θ_s = 0`.
@@ -158,13 +160,31 @@ impl SkewedDeck {
         }
         positive("thickness", thickness)?;
         positive("density", density)?;
-        Ok(Self {
+        let deck = Self {
             length,
             width,
             skew,
             thickness,
             density,
-        })
+        };
+        deck.check_mass_properties()?;
+        Ok(deck)
+    }
+
+    /// Area, mass and inertia must be finite, positive and normal; the error names the parameter
+    /// that most likely overflowed or underflowed (`skew` when `1/cos θ_s` is extreme).
+    fn check_mass_properties(&self) -> Result<(), GeometryError> {
+        let p = self.mass_properties();
+        let (l, w, t, d) = (
+            ("length", self.length, self.length),
+            ("width", self.width, self.width),
+            ("thickness", self.thickness, self.thickness),
+            ("density", self.density, self.density),
+        );
+        let sk = ("skew", self.skew.to_degrees(), 1.0 / self.skew.cos());
+        check_derived("area", p.area, &[l, w])?;
+        check_derived("mass", p.mass, &[t, d, l, w])?;
+        check_derived("inertia", p.inertia, &[l, w, sk, t, d])
     }
 
     /// Unit axis direction `e = (−sin θ_s, cos θ_s)` (from the joint face toward the far face).

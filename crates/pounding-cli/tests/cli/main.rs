@@ -20,6 +20,7 @@ fn help_lists_subcommands() {
 }
 
 mod batch;
+mod harden;
 mod lcp;
 mod shapes;
 mod simulate;

@@ -72,7 +72,7 @@ pub use model::Bearing;
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum SimError {
     /// A parameter is out of range or not finite; the message names it.
-    #[error("invalid {name} = {value}: {reason}")]
+    #[error("invalid {name} = {}: {reason}", crate::output::float_token(*value))]
     InvalidParameter {
         /// Parameter name as the user knows it.
         name: String,
@@ -406,12 +406,14 @@ impl SimModel {
                     b.stiffness >= 0.0,
                     "must be >= 0",
                 )?;
+                // the rotational stiffness k r² must stay finite (1e300 m would overflow it)
+                let kr2 = b.stiffness * (b.point.x * b.point.x + b.point.y * b.point.y);
                 for v in [b.point.x, b.point.y] {
                     chk(
                         &format!("bearing point (deck {j}, bearing {})", i + 1),
                         v,
-                        true,
-                        "must be finite",
+                        kr2.is_finite() && v * v < 1e100,
+                        "must be finite, with |coordinate| < 1e50 m and k r² finite",
                     )?;
                 }
             }

@@ -8,6 +8,7 @@ mod contact_law;
 mod event_exact;
 mod geometry;
 mod ground_motion;
+mod harden;
 mod impact;
 mod lcp;
 mod shapes;
