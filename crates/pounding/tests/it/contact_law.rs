@@ -539,17 +539,23 @@ proptest! {
         let mut nodes = vec![-0.1];
         nodes.extend(pts.iter().copied());
         nodes.push(-0.1);
+        const SUB: usize = 2000;
         let mut path = Vec::new();
+        let mut h_max: f64 = 0.0;
         for w in nodes.windows(2) {
-            for j in 0..200 {
-                path.push((w[0] + (w[1] - w[0]) * j as f64 / 200.0, 0.0));
+            h_max = h_max.max((w[1] - w[0]).abs() / SUB as f64);
+            for j in 0..SUB {
+                path.push((w[0] + (w[1] - w[0]) * j as f64 / SUB as f64, 0.0));
             }
         }
         path.push((-0.1, 0.0));
         let f = drive(&law, &path, LawState::open_at(-0.1));
         prop_assert!(f.iter().all(|&x| x >= 0.0));
         let w = cycle_work(&law, &path);
-        prop_assert!(w >= -1e-9, "W = {}", w);
+        // The trapezoidal work is exact on every step except those in which the law switches branch
+        // (contact onset, yield, load reversal); each such step errs by at most K1 h² (h = step size).
+        let quadrature = 10.0 * h_max * h_max * (2 * nodes.len()) as f64;
+        prop_assert!(w >= -quadrature, "W = {} (quadrature bound {})", w, quadrature);
     }
 }
 
