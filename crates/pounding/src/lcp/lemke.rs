@@ -58,6 +58,7 @@
 //! other sizes (heap workspace kept between solves, so a warm solve allocates nothing).
 
 use super::full::{WorkFull, kernel_full};
+use super::scale::equilibrate;
 use super::{FixedSolution, LcpProblem, LcpSolution, LcpStatus, LemkeSettings};
 
 /// Result of the kernel (the vectors are written into the caller's buffers).
@@ -523,9 +524,70 @@ pub fn solve_fixed<const N: usize>(
     solve_fixed_slice::<N>(m.as_flattened(), q, settings)
 }
 
-/// [`solve_fixed`] on row-major slices (`m.len() ≥ N·N`, `q.len() ≥ N`).
+/// [`solve_fixed`] on row-major slices (`m.len() ≥ N·N`, `q.len() ≥ N`): one attempt on the data
+/// as given and, only if it ends in [`LcpStatus::IllConditioned`] or [`LcpStatus::RayTermination`],
+/// the equilibrated retry of [`retry_fixed`].
 #[inline(always)]
 fn solve_fixed_slice<const N: usize>(
+    m: &[f64],
+    q: &[f64],
+    settings: &LemkeSettings,
+) -> FixedSolution<N> {
+    let first = attempt_fixed::<N>(m, q, settings);
+    if needs_retry(first.status) {
+        retry_fixed::<N>(m, q, settings, first)
+    } else {
+        first
+    }
+}
+
+/// Whether a failed attempt is worth the equilibrated retry (see [`super::scale`]): a failed
+/// verification or a ray (a ray of a P-matrix LCP is always numerical). Pivot exhaustion is not.
+#[inline(always)]
+fn needs_retry(status: LcpStatus) -> bool {
+    matches!(
+        status,
+        LcpStatus::IllConditioned | LcpStatus::RayTermination
+    )
+}
+
+/// The equilibrated retry (cold path): solves `M̃ = D M D`, `q̃ = D q` (see [`super::scale`]), maps
+/// back `z = D z̃` (exact, `D` holds powers of two) and verifies `z` against the **original** data.
+/// Only a verified `z` replaces `first` (its pivots are added to those of `first`); otherwise
+/// `first` is returned unchanged.
+#[cold]
+#[inline(never)]
+fn retry_fixed<const N: usize>(
+    m: &[f64],
+    q: &[f64],
+    settings: &LemkeSettings,
+    first: FixedSolution<N>,
+) -> FixedSolution<N> {
+    let mut ms = [[0.0f64; N]; N];
+    let mut qs = [0.0f64; N];
+    let mut dsc = [0.0f64; N];
+    if !equilibrate(N, m, q, ms.as_flattened_mut(), &mut qs, &mut dsc) {
+        return first;
+    }
+    let mut sol = attempt_fixed::<N>(ms.as_flattened(), &qs, settings);
+    if sol.status != LcpStatus::Solved {
+        return first;
+    }
+    for i in 0..N {
+        sol.z[i] *= dsc[i];
+    }
+    let (ok, residual) = verify(N, m, q, &sol.z, &mut sol.w, settings.verify_tol());
+    if !ok {
+        return first;
+    }
+    sol.residual = residual;
+    sol.pivots += first.pivots;
+    sol
+}
+
+/// One lexicographic Lemke run on the data as given (no retry).
+#[inline(always)]
+fn attempt_fixed<const N: usize>(
     m: &[f64],
     q: &[f64],
     settings: &LemkeSettings,
@@ -634,6 +696,58 @@ impl Lemke {
         out.w.resize(n, 0.0);
         let m = problem.m_row_major();
         let q = problem.q();
+        let mut k = self.attempt(n, m, q, out);
+        if needs_retry(k.status) {
+            k = self.retry(n, m, q, out, k);
+        }
+        out.status = k.status;
+        out.pivots = k.pivots;
+        out.residual = k.residual;
+    }
+
+    /// The equilibrated retry of [`Lemke::solve_into`] (cold path, allocates): as [`retry_fixed`].
+    #[cold]
+    #[inline(never)]
+    fn retry(
+        &mut self,
+        n: usize,
+        m: &[f64],
+        q: &[f64],
+        out: &mut LcpSolution,
+        first: KernelOut,
+    ) -> KernelOut {
+        let mut ms = vec![0.0f64; n * n];
+        let mut qs = vec![0.0f64; n];
+        let mut dsc = vec![0.0f64; n];
+        if !equilibrate(n, m, q, &mut ms, &mut qs, &mut dsc) {
+            return first;
+        }
+        let z_first = out.z.clone();
+        let w_first = out.w.clone();
+        let k = self.attempt(n, &ms, &qs, out);
+        let mut ok = false;
+        let mut residual = f64::NAN;
+        if k.status == LcpStatus::Solved {
+            for i in 0..n {
+                out.z[i] *= dsc[i];
+            }
+            (ok, residual) = verify(n, m, q, &out.z, &mut out.w, self.settings.verify_tol());
+        }
+        if ok {
+            KernelOut {
+                status: LcpStatus::Solved,
+                pivots: first.pivots + k.pivots,
+                residual,
+            }
+        } else {
+            out.z.copy_from_slice(&z_first);
+            out.w.copy_from_slice(&w_first);
+            first
+        }
+    }
+
+    /// One Lemke run on `(m, q)` into `out.z`, `out.w` (no retry).
+    fn attempt(&mut self, n: usize, m: &[f64], q: &[f64], out: &mut LcpSolution) -> KernelOut {
         let nn = n * n;
         if self.ws.len() < 2 * nn + 3 * n {
             self.ws.resize(2 * nn + 3 * n, 0.0);
@@ -689,7 +803,7 @@ impl Lemke {
         }
         macro_rules! stack {
             ($k:literal) => {{
-                let f = solve_fixed_slice::<$k>(m, q, &self.settings);
+                let f = attempt_fixed::<$k>(m, q, &self.settings);
                 out.z.copy_from_slice(&f.z);
                 out.w.copy_from_slice(&f.w);
                 KernelOut {
@@ -699,7 +813,7 @@ impl Lemke {
                 }
             }};
         }
-        let k = match n {
+        match n {
             1 => full!(1),
             2 => stack!(2),
             3 => stack!(3),
@@ -707,9 +821,6 @@ impl Lemke {
             6 => stack!(6),
             12 => compact!(12),
             _ => compact!(n),
-        };
-        out.status = k.status;
-        out.pivots = k.pivots;
-        out.residual = k.residual;
+        }
     }
 }

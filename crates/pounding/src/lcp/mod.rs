@@ -27,6 +27,7 @@ pub mod enumerate;
 mod full;
 pub mod io;
 pub mod lemke;
+mod scale;
 
 pub use enumerate::{EnumSettings, enumerate, enumerate_with};
 pub use lemke::{Lemke, solve_fixed};
