@@ -92,11 +92,21 @@ const ROW: usize = 1 << 30;
 
 /// Verifies `z` against the original data and writes `w = M z + q`.
 ///
-/// Returns `(passed, residual)` with `residual = maxᵢ |min(zᵢ, wᵢ)| / max(1, ‖q‖∞)`. The test is
-/// relative to the rounding scale of `w`,
-/// `S = max(1, ‖q‖∞, maxᵢ Σⱼ |Mᵢⱼ zⱼ|)`: it passes when `z ≥ −tol·S`, `w ≥ −tol·S` and
-/// `maxᵢ |min(zᵢ, wᵢ)| ≤ tol·S` (for well-scaled data `S = max(1, ‖q‖∞)`, i.e. `residual ≤ tol`;
-/// for huge `z` the evaluation of `M z + q` alone loses `ε·S`). A non-finite number anywhere fails.
+/// Returns `(passed, residual)` with `residual = maxᵢ |min(zᵢ, wᵢ)| / max(1, ‖q‖∞)` (reported
+/// only). The test is **row by row**, relative to the rounding scale of each `wᵢ`,
+///
+/// ```text
+/// sᵢ = |qᵢ| + Σⱼ |Mᵢⱼ zⱼ|,
+/// wᵢ ≥ −tol·sᵢ   and   ( |wᵢ| ≤ tol·sᵢ   or   zᵢ is negligible ),
+/// zᵢ negligible  ⇔  |Mₖᵢ zᵢ| ≤ tol·sₖ for every row k
+/// ```
+///
+/// (`zᵢ` negligible: setting it to 0 moves no `wₖ` beyond its own tolerance; a negative `zᵢ`
+/// must be negligible too). Each condition is invariant under positive row scaling `(M, q) →
+/// (R M, R q)` and column scaling `M → M C`, `z → C⁻¹ z`, so it means the same for rows of
+/// different units (velocities next to impulses) — an absolute or `‖q‖∞`-relative test would
+/// accept, e.g., an impulse-row violation of 1e−14 N·s when the impulses themselves are 1e−9. A
+/// non-finite number anywhere fails.
 #[inline(always)]
 pub(crate) fn verify(
     n: usize,
@@ -115,49 +125,78 @@ pub(crate) fn verify(
         qn = qn.max(qi.abs());
     }
     let mut res = 0.0f64;
-    let mut lowest = 0.0f64;
     let mut finite = true;
+    let mut ok = true;
     for i in 0..n {
         let row = &m[i * n..i * n + n];
         let mut wi = q[i];
+        let mut si = q[i].abs();
         for j in 0..n {
-            wi += row[j] * z[j];
+            let t = row[j] * z[j];
+            wi += t;
+            si += t.abs();
         }
         w[i] = wi;
         let zi = z[i];
         let c = zi.min(wi);
         res = res.max(c.abs());
-        lowest = lowest.min(c);
-        finite &= c.is_finite();
+        finite &= c.is_finite() & si.is_finite();
+        let lim = tol * si;
+        ok &= (wi >= -lim) & (zi >= 0.0) & (wi.abs() <= lim || zi == 0.0);
     }
-    let lim = tol * qn;
-    let mut ok = finite && res <= lim && lowest >= -lim;
     if !ok && finite {
-        // S = max(1, ‖q‖∞) was too strict: retry relative to the rounding scale of M z + q
-        ok = within_rounding_scale(n, m, z, qn, res, lowest, tol);
+        // some wᵢ is neither ≈ 0 nor ≥ −tol·sᵢ with zᵢ = 0: the per-component test (cold)
+        ok = componentwise(n, m, q, z, w, tol);
     }
-    (ok, res / qn)
+    (ok && finite, res / qn)
 }
 
-/// The verification test with `S = max(‖q‖∞, maxᵢ Σⱼ |Mᵢⱼ zⱼ|)` (cold path of [`verify`]).
+/// The full test of [`verify`] (cold path: only when the plain row test fails). Entries of `z`
+/// that are rounding noise are set aside first: `zⱼ` is *negligible* when, in every row `k` that
+/// has other content (`rₖ = sₖ − |Mₖⱼ zⱼ| > 0`), `|Mₖⱼ zⱼ| ≤ tol·rₖ`, and there is such a row.
+/// With `z'` = `z` without its negligible entries, `w' = M z' + q`, `s'ᵢ = |qᵢ| + Σⱼ |Mᵢⱼ z'ⱼ|`,
+/// the test passes when `z' ≥ 0`, `w'ᵢ ≥ −tol·s'ᵢ` and `|w'ᵢ| ≤ tol·s'ᵢ` wherever `z'ᵢ ≠ 0`.
+/// (A row that only a noise entry touches — `w₃ = 2μΛ_N − Λ_TR` with `μ = 0` and `Λ_TR ≈ 1e−17` —
+/// has no scale of its own; it is judged without that entry.) The reported `z`, `w` are unchanged.
 #[cold]
 #[inline(never)]
-fn within_rounding_scale(
-    n: usize,
-    m: &[f64],
-    z: &[f64],
-    qn: f64,
-    res: f64,
-    lowest: f64,
-    tol: f64,
-) -> bool {
-    let mut scale = qn;
+fn componentwise(n: usize, m: &[f64], q: &[f64], z: &[f64], w: &[f64], tol: f64) -> bool {
+    let _ = w;
+    let s = |k: usize, zz: &dyn Fn(usize) -> f64| -> f64 {
+        q[k].abs() + (0..n).map(|j| (m[k * n + j] * zz(j)).abs()).sum::<f64>()
+    };
+    let full = |j: usize| z[j];
+    let negligible = |j: usize| -> bool {
+        if z[j] == 0.0 {
+            return true;
+        }
+        let mut any = false;
+        for k in 0..n {
+            let own = (m[k * n + j] * z[j]).abs();
+            let rest = s(k, &full) - own;
+            if rest > 0.0 {
+                any = true;
+                if own > tol * rest {
+                    return false;
+                }
+            }
+        }
+        any
+    };
+    let keep: Vec<bool> = (0..n).map(|j| !negligible(j)).collect();
+    let zc = |j: usize| if keep[j] { z[j] } else { 0.0 };
     for i in 0..n {
-        let s: f64 = (0..n).map(|j| (m[i * n + j] * z[j]).abs()).sum();
-        scale = scale.max(s);
+        let zi = zc(i);
+        if zi < 0.0 {
+            return false;
+        }
+        let wi = q[i] + (0..n).map(|j| m[i * n + j] * zc(j)).sum::<f64>();
+        let lim = tol * s(i, &zc);
+        if wi < -lim || (zi != 0.0 && wi.abs() > lim) {
+            return false;
+        }
     }
-    let lim = tol * scale;
-    scale.is_finite() && res <= lim && lowest >= -lim
+    true
 }
 
 /// The lexicographic Lemke kernel. `m` is row-major `n × n`; `z`, `w` receive the result
@@ -551,8 +590,8 @@ fn needs_retry(status: LcpStatus) -> bool {
     )
 }
 
-/// The equilibrated retry (cold path): solves `M̃ = D M D`, `q̃ = D q` (see [`super::scale`]), maps
-/// back `z = D z̃` (exact, `D` holds powers of two) and verifies `z` against the **original** data.
+/// The equilibrated retry (cold path): solves `M̃ = R M C`, `q̃ = R q` (see [`super::scale`]), maps
+/// back `z = C z̃` (exact, `C` holds powers of two) and verifies `z` against the **original** data.
 /// Only a verified `z` replaces `first` (its pivots are added to those of `first`); otherwise
 /// `first` is returned unchanged.
 #[cold]
@@ -565,16 +604,17 @@ fn retry_fixed<const N: usize>(
 ) -> FixedSolution<N> {
     let mut ms = [[0.0f64; N]; N];
     let mut qs = [0.0f64; N];
+    let mut rs = [0.0f64; N];
     let mut dsc = [0.0f64; N];
-    if !equilibrate(N, m, q, ms.as_flattened_mut(), &mut qs, &mut dsc) {
+    if !equilibrate(N, m, q, ms.as_flattened_mut(), &mut qs, &mut rs, &mut dsc) {
         return first;
     }
     let mut sol = attempt_fixed::<N>(ms.as_flattened(), &qs, settings);
     if sol.status != LcpStatus::Solved {
         return first;
     }
-    for i in 0..N {
-        sol.z[i] *= dsc[i];
+    for (zi, di) in sol.z.iter_mut().zip(&dsc) {
+        *zi *= di;
     }
     let (ok, residual) = verify(N, m, q, &sol.z, &mut sol.w, settings.verify_tol());
     if !ok {
@@ -718,8 +758,9 @@ impl Lemke {
     ) -> KernelOut {
         let mut ms = vec![0.0f64; n * n];
         let mut qs = vec![0.0f64; n];
+        let mut rs = vec![0.0f64; n];
         let mut dsc = vec![0.0f64; n];
-        if !equilibrate(n, m, q, &mut ms, &mut qs, &mut dsc) {
+        if !equilibrate(n, m, q, &mut ms, &mut qs, &mut rs, &mut dsc) {
             return first;
         }
         let z_first = out.z.clone();
@@ -728,8 +769,8 @@ impl Lemke {
         let mut ok = false;
         let mut residual = f64::NAN;
         if k.status == LcpStatus::Solved {
-            for i in 0..n {
-                out.z[i] *= dsc[i];
+            for (zi, di) in out.z.iter_mut().zip(&dsc) {
+                *zi *= di;
             }
             (ok, residual) = verify(n, m, q, &out.z, &mut out.w, self.settings.verify_tol());
         }

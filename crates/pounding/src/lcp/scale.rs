@@ -13,83 +13,92 @@
 //!
 //! # The transformation
 //!
-//! For any diagonal `D > 0`, with `z = D z̃` and `w̃ = D w`,
+//! The LCP conditions are componentwise, so any positive diagonal row scaling `R` and column
+//! scaling `C` map solutions to solutions: with `z = C z̃` and `w̃ = R w`,
 //!
 //! ```text
-//! w̃ = M̃ z̃ + q̃,     M̃ = D M D,     q̃ = D q,
-//! z̃ᵢ w̃ᵢ = zᵢ wᵢ,    z̃ ≥ 0 ⇔ z ≥ 0,    w̃ ≥ 0 ⇔ w ≥ 0,
+//! w̃ = M̃ z̃ + q̃,     M̃ = R M C,     q̃ = R q,
+//! z̃ ≥ 0 ⇔ z ≥ 0,    w̃ ≥ 0 ⇔ w ≥ 0,    z̃ᵢ w̃ᵢ = zᵢ wᵢ / (Cᵢ Rᵢ⁻¹)  (zero iff zero),
 //! ```
 //!
-//! so `(z̃, w̃)` solves the scaled LCP iff `(z, w)` solves the original one. `D` is chosen as the
-//! approximate minimiser of the log-least-squares imbalance
+//! so `(z̃, w̃)` solves the scaled LCP iff `(z, w)` solves the original one (the symmetric choice
+//! `R = C = D` is the special case `M̃ = D M D`). `R = 2^x`, `C = 2^y` approximately minimise the
+//! log-least-squares imbalance
 //!
 //! ```text
-//! Φ(x) = Σ_{Mᵢⱼ ≠ 0} (log₂|Mᵢⱼ| + xᵢ + xⱼ)²,      Dᵢ = 2^{xᵢ},
+//! Φ(x, y) = Σ_{Mᵢⱼ ≠ 0} (log₂|Mᵢⱼ| + xᵢ + yⱼ)²
 //! ```
 //!
-//! by Gauss–Seidel sweeps: for each `i` in turn, `xᵢ` moves by `−round(mᵢ/2)` where `mᵢ` is the mean
-//! of `log₂|M̃ᵢⱼ|` over the nonzeros of row `i` and column `i` of the current `M̃` (the diagonal
-//! counted in both). This is geometric-mean (Ruiz-style) scaling; unlike the ∞-norm Ruiz sweep it
-//! also balances a block of tiny entries against unit couplings (for the impact LCP it finds
-//! `D ≈ diag(G_NN^{-1/2}, G_NN^{-1/2}, G_NN^{1/2})`, i.e. the `G/G_NN` normalisation, whereas the
-//! ∞-norm sweep sees the unit couplings `±1, 2μ` and does nothing). Every `Dᵢ` is a power of two,
-//! so `M̃`, `q̃` and `z = D z̃` are computed **exactly** — the scaled problem is the same LCP, not
-//! an approximation of it. Sweeps stop when no exponent moves (at most [`MAX_SWEEPS`]).
+//! by alternating sweeps: each row exponent `xᵢ` moves by `−round(mean_j log₂|M̃ᵢⱼ|)` over the
+//! nonzeros of row `i` of the current `M̃`, then each column exponent likewise (block coordinate
+//! descent on a convex quadratic; geometric-mean, Ruiz-style scaling). Unlike the ∞-norm Ruiz
+//! sweep it also balances a block of tiny entries against unit couplings: for the impact LCP it
+//! brings the `G` block to ~1 while `±1, 2μ` stay ~1 (the `G/G_NN` normalisation), whereas the
+//! ∞-norm sweep sees the unit couplings and does nothing; and it undoes any row/column scaling
+//! `R₀ M C₀` of a well-scaled matrix. Every factor is a power of two, so `M̃`, `q̃` and `z = C z̃`
+//! are computed **exactly** — the scaled problem is the same LCP, not an approximation of it.
+//! Sweeps stop when no exponent moves (at most [`MAX_SWEEPS`]).
 
 /// Maximum number of Gauss–Seidel sweeps of the equilibration.
 pub(crate) const MAX_SWEEPS: usize = 32;
 
-/// Writes `M̃ = D M D` into `ms`, `q̃ = D q` into `qs` and `D` into `dsc` (all row-major / length
-/// `n`). Returns `false` (and leaves the outputs unspecified) when the data are not finite or `D`
-/// is the identity, i.e. when a retry cannot change anything.
+/// Writes `M̃ = R M C` into `ms`, `q̃ = R q` into `qs`, `R` into `rs` and `C` into `cs` (all
+/// row-major / length `n`). Returns `false` (outputs unspecified) when the data are not finite
+/// or `R = C = I`, i.e. when a retry cannot change anything.
 pub(crate) fn equilibrate(
     n: usize,
     m: &[f64],
     q: &[f64],
     ms: &mut [f64],
     qs: &mut [f64],
-    dsc: &mut [f64],
+    rs: &mut [f64],
+    cs: &mut [f64],
 ) -> bool {
     let m = &m[..n * n];
     let q = &q[..n];
     let ms = &mut ms[..n * n];
     let qs = &mut qs[..n];
-    let dsc = &mut dsc[..n];
+    let rs = &mut rs[..n];
+    let cs = &mut cs[..n];
     if m.iter().chain(q).any(|x| !x.is_finite()) {
         return false;
     }
     ms.copy_from_slice(m);
-    // exponents of D (integers, kept in `dsc` until the end: no allocation), D = 2^e
-    dsc.fill(0.0);
+    // exponents (integers, kept in `rs`, `cs` until the end: no allocation), R = 2^x, C = 2^y
+    rs.fill(0.0);
+    cs.fill(0.0);
     let mut changed_any = false;
+    // mean of log₂|·| over the nonzeros of a row (`row = true`) or column of the current M̃
+    let mean = |ms: &[f64], i: usize, row: bool| -> Option<f64> {
+        let (mut sum, mut cnt) = (0.0f64, 0usize);
+        for j in 0..n {
+            let v = if row { ms[i * n + j] } else { ms[j * n + i] };
+            if v != 0.0 {
+                sum += v.abs().log2();
+                cnt += 1;
+            }
+        }
+        (cnt > 0).then(|| sum / cnt as f64)
+    };
     for _ in 0..MAX_SWEEPS {
         let mut moved = false;
-        for i in 0..n {
-            let mut sum = 0.0f64;
-            let mut cnt = 0usize;
-            for j in 0..n {
-                for v in [ms[i * n + j], ms[j * n + i]] {
-                    if v != 0.0 {
-                        sum += v.abs().log2();
-                        cnt += 1;
-                    }
+        for row in [true, false] {
+            for i in 0..n {
+                let Some(mi) = mean(ms, i, row) else { continue };
+                // keep the scaled entries far from overflow/underflow
+                let step = (-mi.round()).clamp(-256.0, 256.0) as i32;
+                if step == 0 {
+                    continue;
                 }
-            }
-            if cnt == 0 {
-                continue;
-            }
-            let step = -(sum / cnt as f64 / 2.0).round();
-            // keep the scaled entries far from overflow/underflow
-            let step = step.clamp(-256.0, 256.0) as i32;
-            if step == 0 {
-                continue;
-            }
-            moved = true;
-            dsc[i] += step as f64;
-            let f = 2f64.powi(step);
-            for j in 0..n {
-                ms[i * n + j] *= f;
-                ms[j * n + i] *= f;
+                moved = true;
+                let f = 2f64.powi(step);
+                if row {
+                    rs[i] += step as f64;
+                    ms[i * n..i * n + n].iter_mut().for_each(|x| *x *= f);
+                } else {
+                    cs[i] += step as f64;
+                    (0..n).for_each(|j| ms[j * n + i] *= f);
+                }
             }
         }
         changed_any |= moved;
@@ -101,13 +110,14 @@ pub(crate) fn equilibrate(
         return false;
     }
     for i in 0..n {
-        dsc[i] = 2f64.powi(dsc[i] as i32);
-        qs[i] = dsc[i] * q[i];
+        rs[i] = 2f64.powi(rs[i] as i32);
+        cs[i] = 2f64.powi(cs[i] as i32);
+        qs[i] = rs[i] * q[i];
     }
-    // rescale from the original data (exact: powers of two), so that no sweep's rounding stays
+    // rescale from the original data (exact: powers of two)
     for i in 0..n {
         for j in 0..n {
-            ms[i * n + j] = dsc[i] * m[i * n + j] * dsc[j];
+            ms[i * n + j] = rs[i] * m[i * n + j] * cs[j];
         }
     }
     ms.iter().chain(qs.iter()).all(|x| x.is_finite())
@@ -118,35 +128,48 @@ mod tests {
     use super::*;
 
     #[test]
-    fn impact_lcp_is_normalised_by_g_nn() {
+    fn impact_lcp_is_balanced() {
         let g = 1e-6;
         let m = [1.2 * g, 0.4 * g, 0.0, 0.4 * g, 3.2 * g, 1.0, 0.0, -1.0, 0.0];
         let q = [-1.5, -0.47, 0.0];
-        let (mut ms, mut qs, mut d) = ([0.0; 9], [0.0; 3], [0.0; 3]);
-        assert!(equilibrate(3, &m, &q, &mut ms, &mut qs, &mut d));
-        // D = diag(~g^{-1/2}, ~g^{-1/2}, ~g^{1/2}) up to powers of two
-        for (i, want) in [(0, 1e3), (1, 1e3), (2, 1e-3)] {
-            let r = d[i] / want;
-            assert!((0.1..10.0).contains(&r), "D[{i}] = {}", d[i]);
-        }
+        let (mut ms, mut qs, mut r, mut c) = ([0.0; 9], [0.0; 3], [0.0; 3], [0.0; 3]);
+        assert!(equilibrate(3, &m, &q, &mut ms, &mut qs, &mut r, &mut c));
+        // the G block is brought to ~1 while the unit couplings stay ~1 (R₁C₃ ≈ R₃C₁ ≈ 1)
         for i in 0..3 {
             for j in 0..3 {
-                assert_eq!(ms[i * 3 + j], d[i] * m[i * 3 + j] * d[j]);
+                assert_eq!(ms[i * 3 + j], r[i] * m[i * 3 + j] * c[j]);
                 if m[i * 3 + j] != 0.0 {
-                    assert!((0.05..20.0).contains(&ms[i * 3 + j].abs()));
+                    assert!((0.05..20.0).contains(&ms[i * 3 + j].abs()), "{ms:?}");
                 }
             }
-            assert_eq!(qs[i], d[i] * q[i]);
-            assert_eq!(d[i].log2().fract(), 0.0, "power of two");
+            assert_eq!(qs[i], r[i] * q[i]);
+            assert_eq!(r[i].log2().fract(), 0.0, "power of two");
+            assert_eq!(c[i].log2().fract(), 0.0, "power of two");
         }
     }
 
     #[test]
     fn identity_and_non_finite_need_no_retry() {
-        let m = [1.0, 0.5, -0.5, 2.0];
-        let (mut ms, mut qs, mut d) = ([0.0; 4], [0.0; 2], [0.0; 2]);
-        assert!(!equilibrate(2, &m, &[-1.0, 1.0], &mut ms, &mut qs, &mut d));
+        let m = [1.0, 0.75, -1.5, 1.0];
+        let (mut ms, mut qs, mut r, mut c) = ([0.0; 4], [0.0; 2], [0.0; 2], [0.0; 2]);
+        assert!(!equilibrate(
+            2,
+            &m,
+            &[-1.0, 1.0],
+            &mut ms,
+            &mut qs,
+            &mut r,
+            &mut c
+        ));
         let m = [1.0, f64::NAN, -0.5, 2e-9];
-        assert!(!equilibrate(2, &m, &[-1.0, 1.0], &mut ms, &mut qs, &mut d));
+        assert!(!equilibrate(
+            2,
+            &m,
+            &[-1.0, 1.0],
+            &mut ms,
+            &mut qs,
+            &mut r,
+            &mut c
+        ));
     }
 }
