@@ -142,7 +142,7 @@ pub(crate) fn verify(
         res = res.max(c.abs());
         finite &= c.is_finite() & si.is_finite();
         let lim = tol * si;
-        ok &= (wi >= -lim) & (zi >= 0.0) & (wi.abs() <= lim || zi == 0.0);
+        ok &= (wi >= -lim) & (zi >= 0.0) & ((wi.abs() <= lim) | (zi == 0.0));
     }
     if !ok && finite {
         // some wᵢ is neither ≈ 0 nor ≥ −tol·sᵢ with zᵢ = 0: the per-component test (cold)
