@@ -788,6 +788,7 @@ impl Lemke {
     }
 
     /// One Lemke run on `(m, q)` into `out.z`, `out.w` (no retry).
+    #[inline(always)]
     fn attempt(&mut self, n: usize, m: &[f64], q: &[f64], out: &mut LcpSolution) -> KernelOut {
         let nn = n * n;
         if self.ws.len() < 2 * nn + 3 * n {
