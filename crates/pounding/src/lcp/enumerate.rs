@@ -9,8 +9,8 @@
 //!
 //! is solved by Gaussian elimination with partial pivoting (skipped when `M_αα` is numerically
 //! singular: a pivot `≤ singular_tol · max|M_αα|`). The candidate is kept when it passes the same
-//! verification as Lemke's end points (`w = M z + q` recomputed; `z, w ≥ −tol·max(1, ‖q‖∞)`,
-//! `maxᵢ |min(zᵢ, wᵢ)| / max(1, ‖q‖∞) ≤ tol`). Every *basic* solution of the LCP is found this way
+//! verification as Lemke's end points (`w = M z + q` recomputed; row by row,
+//! relative to each row's rounding scale, see [`crate::lcp::lemke`]). Every *basic* solution of the LCP is found this way
 //! (a basic solution is exactly a nonnegative solution of such a system for some nonsingular
 //! `M_αα`); duplicates (degenerate solutions reached from several supports) are merged when they
 //! agree to `dedup_tol · max(1, ‖z‖∞)`. A continuum of solutions is represented by its vertices.

@@ -29,17 +29,28 @@
 //! ray*: [`LcpStatus::RayTermination`], no solution found by this method).
 //!
 //! Every end point is **verified** against the original data before it is reported as solved:
-//! with `w = M z + q` recomputed and `S` the rounding scale of that evaluation,
+//! with `w = M z + q` recomputed and `sᵢ` the rounding scale of row `i` of that evaluation,
 //!
 //! ```text
-//! S = max(1, ‖q‖∞, maxᵢ Σⱼ |Mᵢⱼ zⱼ|),
-//! maxᵢ |min(zᵢ, wᵢ)| ≤ tol_v·S,     zᵢ ≥ −tol_v·S,     wᵢ ≥ −tol_v·S.
+//! sᵢ = |qᵢ| + Σⱼ |Mᵢⱼ zⱼ|,
+//! zᵢ ≥ 0,     wᵢ ≥ −tol_v·sᵢ,     |wᵢ| ≤ tol_v·sᵢ wherever zᵢ > 0,
 //! ```
 //!
-//! The reported residual is `maxᵢ |min(zᵢ, wᵢ)| / max(1, ‖q‖∞)`; for well-scaled data
-//! `S = max(1, ‖q‖∞)` and the test reads `residual ≤ tol_v`. (When `z` is huge — nearly singular
-//! `M` — no floating-point `z` can make `M z + q` smaller than about `ε·S`, hence the scale.)
+//! after setting aside entries of `z` that are rounding noise in every row they touch (see
+//! `verify`). Each row is judged in its own units, so the test is invariant under positive row and
+//! column scalings of the LCP. The reported residual is `maxᵢ |min(zᵢ, wᵢ)| / max(1, ‖q‖∞)`.
 //!
+//! # Badly scaled data: the equilibrated retry
+//!
+//! Pivot and tie tolerances are relative to the entering column and to `‖B⁻¹q‖∞`, which mix rows
+//! of different units; when `M` couples quantities of very different magnitudes (an impact LCP
+//! with a Delassus matrix in 1/kg of a 10⁶-kg deck) a false tie can end the run on a wrong basis.
+//! Whenever an attempt ends [`LcpStatus::IllConditioned`] or [`LcpStatus::RayTermination`], Lemke is
+//! re-run once on the exactly equivalent LCP `M̃ = R M C`, `q̃ = R q` (`z = C z̃`, `w̃ = R w`; `R`,
+//! `C` powers of two balancing the magnitudes of `M`, see the `scale` module); its `z = C z̃` is
+//! verified against the original data, and only a verified `z` replaces the first result (pivots
+//! of both attempts are reported). Well-scaled problems never take the retry.
+
 //! # Implementation
 //!
 //! Two kernels, chosen by size (both measured faster than the other in their range):
@@ -58,6 +69,7 @@
 //! other sizes (heap workspace kept between solves, so a warm solve allocates nothing).
 
 use super::full::{WorkFull, kernel_full};
+use super::scale::equilibrate;
 use super::{FixedSolution, LcpProblem, LcpSolution, LcpStatus, LemkeSettings};
 
 /// Result of the kernel (the vectors are written into the caller's buffers).
@@ -91,11 +103,21 @@ const ROW: usize = 1 << 30;
 
 /// Verifies `z` against the original data and writes `w = M z + q`.
 ///
-/// Returns `(passed, residual)` with `residual = maxᵢ |min(zᵢ, wᵢ)| / max(1, ‖q‖∞)`. The test is
-/// relative to the rounding scale of `w`,
-/// `S = max(1, ‖q‖∞, maxᵢ Σⱼ |Mᵢⱼ zⱼ|)`: it passes when `z ≥ −tol·S`, `w ≥ −tol·S` and
-/// `maxᵢ |min(zᵢ, wᵢ)| ≤ tol·S` (for well-scaled data `S = max(1, ‖q‖∞)`, i.e. `residual ≤ tol`;
-/// for huge `z` the evaluation of `M z + q` alone loses `ε·S`). A non-finite number anywhere fails.
+/// Returns `(passed, residual)` with `residual = maxᵢ |min(zᵢ, wᵢ)| / max(1, ‖q‖∞)` (reported
+/// only). The test is **row by row**, relative to the rounding scale of each `wᵢ`,
+///
+/// ```text
+/// sᵢ = |qᵢ| + Σⱼ |Mᵢⱼ zⱼ|,
+/// wᵢ ≥ −tol·sᵢ   and   ( |wᵢ| ≤ tol·sᵢ   or   zᵢ is negligible ),
+/// zᵢ negligible  ⇔  |Mₖᵢ zᵢ| ≤ tol·sₖ for every row k
+/// ```
+///
+/// (`zᵢ` negligible: setting it to 0 moves no `wₖ` beyond its own tolerance; a negative `zᵢ`
+/// must be negligible too). Each condition is invariant under positive row scaling `(M, q) →
+/// (R M, R q)` and column scaling `M → M C`, `z → C⁻¹ z`, so it means the same for rows of
+/// different units (velocities next to impulses) — an absolute or `‖q‖∞`-relative test would
+/// accept, e.g., an impulse-row violation of 1e−14 N·s when the impulses themselves are 1e−9. A
+/// non-finite number anywhere fails.
 #[inline(always)]
 pub(crate) fn verify(
     n: usize,
@@ -114,49 +136,78 @@ pub(crate) fn verify(
         qn = qn.max(qi.abs());
     }
     let mut res = 0.0f64;
-    let mut lowest = 0.0f64;
     let mut finite = true;
+    let mut ok = true;
     for i in 0..n {
         let row = &m[i * n..i * n + n];
         let mut wi = q[i];
+        let mut si = q[i].abs();
         for j in 0..n {
-            wi += row[j] * z[j];
+            let t = row[j] * z[j];
+            wi += t;
+            si += t.abs();
         }
         w[i] = wi;
         let zi = z[i];
         let c = zi.min(wi);
         res = res.max(c.abs());
-        lowest = lowest.min(c);
-        finite &= c.is_finite();
+        finite &= c.is_finite() & si.is_finite();
+        let lim = tol * si;
+        ok &= (wi >= -lim) & (zi >= 0.0) & ((wi.abs() <= lim) | (zi == 0.0));
     }
-    let lim = tol * qn;
-    let mut ok = finite && res <= lim && lowest >= -lim;
     if !ok && finite {
-        // S = max(1, ‖q‖∞) was too strict: retry relative to the rounding scale of M z + q
-        ok = within_rounding_scale(n, m, z, qn, res, lowest, tol);
+        // some wᵢ is neither ≈ 0 nor ≥ −tol·sᵢ with zᵢ = 0: the per-component test (cold)
+        ok = componentwise(n, m, q, z, w, tol);
     }
-    (ok, res / qn)
+    (ok && finite, res / qn)
 }
 
-/// The verification test with `S = max(‖q‖∞, maxᵢ Σⱼ |Mᵢⱼ zⱼ|)` (cold path of [`verify`]).
+/// The full test of [`verify`] (cold path: only when the plain row test fails). Entries of `z`
+/// that are rounding noise are set aside first: `zⱼ` is *negligible* when, in every row `k` that
+/// has other content (`rₖ = sₖ − |Mₖⱼ zⱼ| > 0`), `|Mₖⱼ zⱼ| ≤ tol·rₖ`, and there is such a row.
+/// With `z'` = `z` without its negligible entries, `w' = M z' + q`, `s'ᵢ = |qᵢ| + Σⱼ |Mᵢⱼ z'ⱼ|`,
+/// the test passes when `z' ≥ 0`, `w'ᵢ ≥ −tol·s'ᵢ` and `|w'ᵢ| ≤ tol·s'ᵢ` wherever `z'ᵢ ≠ 0`.
+/// (A row that only a noise entry touches — `w₃ = 2μΛ_N − Λ_TR` with `μ = 0` and `Λ_TR ≈ 1e−17` —
+/// has no scale of its own; it is judged without that entry.) The reported `z`, `w` are unchanged.
 #[cold]
 #[inline(never)]
-fn within_rounding_scale(
-    n: usize,
-    m: &[f64],
-    z: &[f64],
-    qn: f64,
-    res: f64,
-    lowest: f64,
-    tol: f64,
-) -> bool {
-    let mut scale = qn;
+fn componentwise(n: usize, m: &[f64], q: &[f64], z: &[f64], w: &[f64], tol: f64) -> bool {
+    let _ = w;
+    let s = |k: usize, zz: &dyn Fn(usize) -> f64| -> f64 {
+        q[k].abs() + (0..n).map(|j| (m[k * n + j] * zz(j)).abs()).sum::<f64>()
+    };
+    let full = |j: usize| z[j];
+    let negligible = |j: usize| -> bool {
+        if z[j] == 0.0 {
+            return true;
+        }
+        let mut any = false;
+        for k in 0..n {
+            let own = (m[k * n + j] * z[j]).abs();
+            let rest = s(k, &full) - own;
+            if rest > 0.0 {
+                any = true;
+                if own > tol * rest {
+                    return false;
+                }
+            }
+        }
+        any
+    };
+    let keep: Vec<bool> = (0..n).map(|j| !negligible(j)).collect();
+    let zc = |j: usize| if keep[j] { z[j] } else { 0.0 };
     for i in 0..n {
-        let s: f64 = (0..n).map(|j| (m[i * n + j] * z[j]).abs()).sum();
-        scale = scale.max(s);
+        let zi = zc(i);
+        if zi < 0.0 {
+            return false;
+        }
+        let wi = q[i] + (0..n).map(|j| m[i * n + j] * zc(j)).sum::<f64>();
+        let lim = tol * s(i, &zc);
+        if wi < -lim || (zi != 0.0 && wi.abs() > lim) {
+            return false;
+        }
     }
-    let lim = tol * scale;
-    scale.is_finite() && res <= lim && lowest >= -lim
+    true
 }
 
 /// The lexicographic Lemke kernel. `m` is row-major `n × n`; `z`, `w` receive the result
@@ -523,9 +574,71 @@ pub fn solve_fixed<const N: usize>(
     solve_fixed_slice::<N>(m.as_flattened(), q, settings)
 }
 
-/// [`solve_fixed`] on row-major slices (`m.len() ≥ N·N`, `q.len() ≥ N`).
+/// [`solve_fixed`] on row-major slices (`m.len() ≥ N·N`, `q.len() ≥ N`): one attempt on the data
+/// as given and, only if it ends in [`LcpStatus::IllConditioned`] or [`LcpStatus::RayTermination`],
+/// the equilibrated retry of [`retry_fixed`].
 #[inline(always)]
 fn solve_fixed_slice<const N: usize>(
+    m: &[f64],
+    q: &[f64],
+    settings: &LemkeSettings,
+) -> FixedSolution<N> {
+    let first = attempt_fixed::<N>(m, q, settings);
+    if needs_retry(first.status) {
+        retry_fixed::<N>(m, q, settings, first)
+    } else {
+        first
+    }
+}
+
+/// Whether a failed attempt is worth the equilibrated retry (see [`super::scale`]): a failed
+/// verification or a ray (a ray of a P-matrix LCP is always numerical). Pivot exhaustion is not.
+#[inline(always)]
+fn needs_retry(status: LcpStatus) -> bool {
+    matches!(
+        status,
+        LcpStatus::IllConditioned | LcpStatus::RayTermination
+    )
+}
+
+/// The equilibrated retry (cold path): solves `M̃ = R M C`, `q̃ = R q` (see [`super::scale`]), maps
+/// back `z = C z̃` (exact, `C` holds powers of two) and verifies `z` against the **original** data.
+/// Only a verified `z` replaces `first` (its pivots are added to those of `first`); otherwise
+/// `first` is returned unchanged.
+#[cold]
+#[inline(never)]
+fn retry_fixed<const N: usize>(
+    m: &[f64],
+    q: &[f64],
+    settings: &LemkeSettings,
+    first: FixedSolution<N>,
+) -> FixedSolution<N> {
+    let mut ms = [[0.0f64; N]; N];
+    let mut qs = [0.0f64; N];
+    let mut rs = [0.0f64; N];
+    let mut dsc = [0.0f64; N];
+    if !equilibrate(N, m, q, ms.as_flattened_mut(), &mut qs, &mut rs, &mut dsc) {
+        return first;
+    }
+    let mut sol = attempt_fixed::<N>(ms.as_flattened(), &qs, settings);
+    if sol.status != LcpStatus::Solved {
+        return first;
+    }
+    for (zi, di) in sol.z.iter_mut().zip(&dsc) {
+        *zi *= di;
+    }
+    let (ok, residual) = verify(N, m, q, &sol.z, &mut sol.w, settings.verify_tol());
+    if !ok {
+        return first;
+    }
+    sol.residual = residual;
+    sol.pivots += first.pivots;
+    sol
+}
+
+/// One lexicographic Lemke run on the data as given (no retry).
+#[inline(always)]
+fn attempt_fixed<const N: usize>(
     m: &[f64],
     q: &[f64],
     settings: &LemkeSettings,
@@ -634,6 +747,60 @@ impl Lemke {
         out.w.resize(n, 0.0);
         let m = problem.m_row_major();
         let q = problem.q();
+        let mut k = self.attempt(n, m, q, out);
+        if needs_retry(k.status) {
+            k = self.retry(n, m, q, out, k);
+        }
+        out.status = k.status;
+        out.pivots = k.pivots;
+        out.residual = k.residual;
+    }
+
+    /// The equilibrated retry of [`Lemke::solve_into`] (cold path, allocates): as [`retry_fixed`].
+    #[cold]
+    #[inline(never)]
+    fn retry(
+        &mut self,
+        n: usize,
+        m: &[f64],
+        q: &[f64],
+        out: &mut LcpSolution,
+        first: KernelOut,
+    ) -> KernelOut {
+        let mut ms = vec![0.0f64; n * n];
+        let mut qs = vec![0.0f64; n];
+        let mut rs = vec![0.0f64; n];
+        let mut dsc = vec![0.0f64; n];
+        if !equilibrate(n, m, q, &mut ms, &mut qs, &mut rs, &mut dsc) {
+            return first;
+        }
+        let z_first = out.z.clone();
+        let w_first = out.w.clone();
+        let k = self.attempt(n, &ms, &qs, out);
+        let mut ok = false;
+        let mut residual = f64::NAN;
+        if k.status == LcpStatus::Solved {
+            for (zi, di) in out.z.iter_mut().zip(&dsc) {
+                *zi *= di;
+            }
+            (ok, residual) = verify(n, m, q, &out.z, &mut out.w, self.settings.verify_tol());
+        }
+        if ok {
+            KernelOut {
+                status: LcpStatus::Solved,
+                pivots: first.pivots + k.pivots,
+                residual,
+            }
+        } else {
+            out.z.copy_from_slice(&z_first);
+            out.w.copy_from_slice(&w_first);
+            first
+        }
+    }
+
+    /// One Lemke run on `(m, q)` into `out.z`, `out.w` (no retry).
+    #[inline(always)]
+    fn attempt(&mut self, n: usize, m: &[f64], q: &[f64], out: &mut LcpSolution) -> KernelOut {
         let nn = n * n;
         if self.ws.len() < 2 * nn + 3 * n {
             self.ws.resize(2 * nn + 3 * n, 0.0);
@@ -689,7 +856,7 @@ impl Lemke {
         }
         macro_rules! stack {
             ($k:literal) => {{
-                let f = solve_fixed_slice::<$k>(m, q, &self.settings);
+                let f = attempt_fixed::<$k>(m, q, &self.settings);
                 out.z.copy_from_slice(&f.z);
                 out.w.copy_from_slice(&f.w);
                 KernelOut {
@@ -699,7 +866,7 @@ impl Lemke {
                 }
             }};
         }
-        let k = match n {
+        match n {
             1 => full!(1),
             2 => stack!(2),
             3 => stack!(3),
@@ -707,9 +874,6 @@ impl Lemke {
             6 => stack!(6),
             12 => compact!(12),
             _ => compact!(n),
-        };
-        out.status = k.status;
-        out.pivots = k.pivots;
-        out.residual = k.residual;
+        }
     }
 }

@@ -27,6 +27,7 @@ pub mod enumerate;
 mod full;
 pub mod io;
 pub mod lemke;
+mod scale;
 
 pub use enumerate::{EnumSettings, enumerate, enumerate_with};
 pub use lemke::{Lemke, solve_fixed};
@@ -120,7 +121,7 @@ pub enum LcpStatus {
 /// | `max_pivots` | 100 000 | pivot limit (counting the pivots in which `z₀` enters and leaves); reaching it gives [`LcpStatus::MaxPivots`] |
 /// | `pivot_tol` | 1e-12 | an entry `dᵢ` of the entering column takes part in the ratio test only if `dᵢ > pivot_tol · maxₖ |dₖ|` (relative to the column, hence scale-free) |
 /// | `tie_tol` | 1e-11 | two ratios `bᵢ/dᵢ`, `bⱼ/dⱼ` tie when they differ by at most `tie_tol · ‖b‖∞ · (1/dᵢ + 1/dⱼ)` (the rounding scale of the ratios, relative to the current right-hand side); tied `B⁻¹` entries likewise relative to the tied rows' scale; the initial row ties when `qᵢ ≤ min q + tie_tol·‖q‖∞` |
-/// | `verify_tol` | 1e-9 | [`LcpStatus::Solved`] requires, with `w = M z + q` recomputed from the data and `S = max(1, ‖q‖∞, maxᵢ Σⱼ |Mᵢⱼ zⱼ|)` (the rounding scale of `w`): `maxᵢ |min(zᵢ, wᵢ)| ≤ verify_tol·S` and `z, w ≥ −verify_tol·S`. For well-scaled data `S = max(1, ‖q‖∞)`, i.e. `residual ≤ verify_tol` |
+/// | `verify_tol` | 1e-9 | [`LcpStatus::Solved`] requires, with `w = M z + q` recomputed from the data and `sᵢ = |qᵢ| + Σⱼ |Mᵢⱼ zⱼ|` (the rounding scale of row `i`): `z ≥ 0`, `wᵢ ≥ −verify_tol·sᵢ` and `|wᵢ| ≤ verify_tol·sᵢ` wherever `zᵢ > 0` (rounding-noise entries of `z` set aside; see the [`lemke`] module) |
 #[derive(Debug, Clone, PartialEq)]
 pub struct LemkeSettings {
     max_pivots: usize,

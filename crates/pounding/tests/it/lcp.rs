@@ -702,3 +702,104 @@ proptest! {
         prop_assert!(check_lcp(&p, &f.z, 1e-9).is_ok());
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// Badly scaled data (issue 2, scaling): a Delassus matrix of a 10⁶-kg deck has entries ~1e-6.
+
+/// Pre-impact ratio `r` for a case index: just outside / inside each finite bound of the stick
+/// interval (`± 1e-6·max(1, |bound|)`), its midpoint, or `fallback`.
+fn ratio_case(case: u8, l: f64, u: f64, fallback: f64) -> f64 {
+    let d = |x: f64| 1e-6 * x.abs().max(1.0);
+    let r = match case {
+        0 => l - d(l),
+        1 => l + d(l),
+        2 => u - d(u),
+        3 => u + d(u),
+        4 => 0.5 * (l + u),
+        _ => fallback,
+    };
+    if r.is_finite() { r } else { fallback }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 2000, ..ProptestConfig::default() })]
+
+    /// impact3 with `G` scaled by `10^k`, `k ∈ [−9, 9]`, μ, ε ∈ [0, 1], `r` just outside / inside
+    /// `L` and `U`, at the midpoint or anywhere: always `Solved` by `solve_fixed` and by
+    /// `Lemke::solve`, with the mode and impulses of the closed form (`pounding::analytic`,
+    /// spec §9), the impulses relative to their own scale `10^−k`.
+    #[test]
+    fn impact3_scaled_g_is_solved(k in -9i32..=9, mu in 0.0f64..=1.0, eps in 0.0f64..=1.0,
+                                  n in 0.01f64..3.0, g in spd(), case in 0u8..6,
+                                  r_any in -5.0f64..5.0) {
+        use pounding::analytic::{ImpactLaw, SlipMode, single_impact, stick_interval};
+        use pounding::contact::Delassus;
+        let s = 10f64.powi(k);
+        let gs = [g[0] * s, g[1] * s, g[2] * s];
+        let del = Delassus { nn: gs[0], nt: gs[1], tt: gs[2] };
+        let law = ImpactLaw::new(mu, eps).unwrap();
+        let b = stick_interval(&del, &law);
+        let r = ratio_case(case, b.lower, b.upper, r_any);
+        let (gn, gt) = (-n, -n * r);
+        let p = impact3(mu, eps, gn, gt, gs);
+        let m: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| p.m(i, j)));
+        let q: [f64; 3] = p.q().try_into().unwrap();
+        let f = solve_fixed(&m, &q, &LemkeSettings::default());
+        prop_assert_eq!(f.status, LcpStatus::Solved, "k {} r {} [{}, {}]", k, r, b.lower, b.upper);
+        let sol = Lemke::new(LemkeSettings::default()).solve(&p);
+        prop_assert_eq!(sol.status, LcpStatus::Solved);
+        prop_assert_eq!(&sol.z[..], &f.z[..]);
+        let a = single_impact(&del, &law, gn, gt);
+        let (ln, lt, gtp) = physical(&p, &f.z, mu);
+        prop_assert_eq!(SlipMode::classify(gtp, n), a.mode, "γ_T⁺ {} vs {}", gtp, a.gamma_t_post);
+        let li = a.normal_impulse.abs();
+        prop_assert!((ln - a.normal_impulse).abs() <= 1e-8 * li, "Λ_N {} vs {}", ln, a.normal_impulse);
+        prop_assert!((lt - a.tangential_impulse).abs() <= 1e-8 * li, "Λ_T {} vs {}", lt, a.tangential_impulse);
+        let vs = n * r.abs().max(1.0).max(if b.lower.is_finite() { b.lower.abs() } else { 0.0 })
+            .max(if b.upper.is_finite() { b.upper.abs() } else { 0.0 });
+        prop_assert!((gtp - a.gamma_t_post).abs() <= 1e-8 * vs, "γ_T⁺ {} vs {}", gtp, a.gamma_t_post);
+    }
+}
+
+/// A P-matrix LCP with rows and columns scaled by powers of ten: `M' = R M C`, `q' = R q`
+/// (`R`, `C` positive diagonal, so `M'` is again a P-matrix) has the unique solution `z' = C⁻¹ z`.
+fn scaled_p_lcp() -> impl Strategy<Value = (LcpProblem, Vec<i32>, Vec<i32>)> {
+    p_lcp().prop_flat_map(|p| {
+        let n = p.dim();
+        (
+            Just(p),
+            prop::collection::vec(-4i32..=4, n),
+            prop::collection::vec(-4i32..=4, n),
+        )
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    #[test]
+    fn p_matrix_scaled_rows_and_columns(case in scaled_p_lcp()) {
+        let (p, re, ce) = case;
+        let n = p.dim();
+        let rs: Vec<f64> = re.iter().map(|&e| 10f64.powi(e)).collect();
+        let cs: Vec<f64> = ce.iter().map(|&e| 10f64.powi(e)).collect();
+        let mut m = vec![0.0; n * n];
+        for i in 0..n {
+            for j in 0..n {
+                m[i * n + j] = rs[i] * p.m(i, j) * cs[j];
+            }
+        }
+        let q: Vec<f64> = (0..n).map(|i| rs[i] * p.q()[i]).collect();
+        let ps = LcpProblem::new(m, q).unwrap();
+        let sol = Lemke::new(LemkeSettings::default()).solve(&ps);
+        prop_assert_eq!(sol.status, LcpStatus::Solved, "rows {:?} cols {:?}", re, ce);
+        // the unique solution of the unscaled problem (brute force), mapped: z' = C⁻¹ z
+        let en = enumerate(&p).unwrap();
+        prop_assert_eq!(en.len(), 1);
+        for j in 0..n {
+            let want = en[0][j] / cs[j];
+            let scale = inf_norm(&en[0]).max(1.0) / cs[j];
+            prop_assert!((sol.z[j] - want).abs() <= 1e-7 * scale, "z[{}] {} vs {}", j, sol.z[j], want);
+        }
+    }
+}
