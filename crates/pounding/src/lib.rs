@@ -19,6 +19,10 @@
 //!   one body frame) and corner impacts against a rigid abutment.
 //! * [`pair`] — the joint-anchored impact configuration and Delassus matrix of two decks of any shape.
 //! * [`study`] — the parametric stick/slip study of the paper (scenarios, bounds, summaries).
+//! * [`ground_motion`] — recorded ground motions (PEER `.AT2`, CSV), interpolation, two components,
+//!   the embedded El Centro 1940 record.
+//! * [`sim`] — seismic time histories of two decks with pounding: bearings, Rayleigh damping,
+//!   Moreau–Jean time stepping with the impact LCP at every step, abutments, batch runs.
 //! * [`output`] — deterministic number formatting and atomic file output shared by every writer.
 //!
 //! Errors (bad input) are [`thiserror`] enums per module; numerical outcomes (ray termination,
