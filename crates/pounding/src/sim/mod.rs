@@ -47,8 +47,10 @@
 //! so [`SimSummary::energy_balance_error`] checks the implementation's bookkeeping (a sign or
 //! scaling slip shows at O(1)); for `θ > ½` it measures the scheme's numerical dissipation.
 
+pub mod compliance;
 pub mod contact;
 pub mod model;
+pub mod options;
 
 use crate::analytic::SlipMode;
 use crate::geometry::{ContactCase, GeometryError, SArrangement};
@@ -61,6 +63,7 @@ use nalgebra::{Matrix3, Matrix6, Vector6};
 use thiserror::Error;
 
 pub use model::Bearing;
+pub use options::{ComplianceContact, DampingModel, JointContact, StraightDeck};
 
 /// Bad simulation input (numerical trouble is reported in [`SimStatus`] instead).
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -112,6 +115,12 @@ pub struct SimModel {
     pub restitution: Real,
     /// Seat length `> 0` \[m\]: an end whose seat displacement exceeds it is unseated.
     pub seat_length: Real,
+    /// Normal contact law of the joint (default: rigid, the LCP impact law).
+    pub contact: JointContact,
+    /// Damping model (default: Rayleigh with [`SimModel::damping_ratio`]).
+    pub damping_model: DampingModel,
+    /// Straight rectangular decks replacing the curved deck 1 / deck 2 (`None` = curved).
+    pub straight: [Option<StraightDeck>; 2],
 }
 
 /// The four corners of a deck's two end faces, relative to its face midpoint `M_j`, reference
@@ -163,6 +172,9 @@ impl SimModel {
             friction,
             restitution,
             seat_length,
+            contact: JointContact::Rigid,
+            damping_model: DampingModel::Rayleigh,
+            straight: [None, None],
         }
     }
 
@@ -188,6 +200,7 @@ impl SimModel {
     pub fn validate(&self) -> Result<(), SimError> {
         model::validate_deck(&self.arrangement.deck1, 1)?;
         model::validate_deck(&self.arrangement.deck2, 2)?;
+        self.validate_options()?;
         let (w1, w2) = (self.arrangement.deck1.width, self.arrangement.deck2.width);
         if w1 != w2 {
             return Err(SimError::invalid(
@@ -245,10 +258,12 @@ impl SimModel {
     }
 
     pub(crate) fn bodies(&self) -> [DeckBody; 2] {
-        [
+        let mut b = [
             DeckBody::new(&self.arrangement.deck1, 1, self.gap),
             DeckBody::new(&self.arrangement.deck2, 2, self.gap),
-        ]
+        ];
+        self.apply_straight(&mut b);
+        b
     }
 
     /// Assembles `M`, `K`, `C` and the natural frequencies (errors if `ζ > 0` and a deck has no
@@ -277,7 +292,7 @@ impl SimModel {
                         ),
                     )
                 })?;
-            let cj = mj * a0 + kj * a1;
+            let (cj, a0, a1) = self.damping_of(&mj, &kj, a0, a1);
             let o = 3 * j;
             mass.fixed_view_mut::<3, 3>(o, o).copy_from(&mj);
             stiffness.fixed_view_mut::<3, 3>(o, o).copy_from(&kj);
@@ -446,6 +461,9 @@ pub struct History {
     pub slip: Vec<Real>,
     /// Energies.
     pub energy: Vec<Energy>,
+    /// Normal contact force of each joint end `[x = +W/2, x = −W/2]` \[N\] (compliance laws
+    /// only; empty for rigid contact).
+    pub contact_force: Vec<[Real; 2]>,
 }
 
 /// The four deck ends checked for unseating, in this order.
@@ -488,6 +506,12 @@ pub struct SimSummary {
     pub final_energy: Energy,
     /// Maximum of the input energy `E_0 + W_in` over time \[J\].
     pub max_input_energy: Real,
+    /// Peak total normal contact force of the joint (sum over its corner contacts) \[N\];
+    /// `None` for rigid contact (impulses, no force).
+    pub peak_contact_force: Option<Real>,
+    /// Peak penetration `max_t max(0, −min end gap)` \[m\] (rigid: the same as
+    /// [`SimSummary::max_penetration`]; compliance: the law's deformation).
+    pub peak_penetration: Real,
 }
 
 /// How the run ended.
@@ -500,6 +524,9 @@ pub enum SimStatus {
     CompletedWithLcpFailures,
     /// The state became non-finite; the run stopped.
     Diverged,
+    /// All steps done with a compliance law, but the Newton iteration on the contact forces
+    /// did not converge in some steps (see [`SimSolution::newton_failures`]).
+    CompletedWithNewtonFailures,
 }
 
 /// Result of [`simulate`].
@@ -527,6 +554,11 @@ pub struct SimSolution {
     pub frequencies: [[Real; 3]; 2],
     /// Rayleigh coefficients `(a_0, a_1)` per deck.
     pub rayleigh: [(Real, Real); 2],
+    /// Compliance laws: the time-step check of the contact (`None` for rigid contact). When
+    /// `adequate` is `false`, `dt` is too coarse to resolve the contact pulse.
+    pub time_step_advice: Option<crate::contact_law::timestep::TimeStepAdvice>,
+    /// Compliance laws: steps whose Newton iteration on the contact forces did not converge.
+    pub newton_failures: usize,
 }
 
 /// Solves the contact LCP of size `3n` (`n = 1, 2`) for `x = (P_N, P_TR, γ_TL)` (spec §8).
@@ -575,6 +607,9 @@ fn dot6(a: &[Real; 6], b: &Vector6<Real>) -> Real {
 ///
 /// Bad input → [`SimError`]; numerical trouble → [`SimSolution::status`].
 pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolution, SimError> {
+    if let JointContact::Compliance(c) = &problem.model.contact {
+        return compliance::simulate_compliance(problem, settings, c);
+    }
     settings.validate()?;
     problem.ground.validate()?;
     let model = &problem.model;
@@ -894,6 +929,8 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
             contact: d_cont,
         },
         max_input_energy: max_in,
+        peak_contact_force: None,
+        peak_penetration: max_pen,
     };
     Ok(SimSolution {
         status,
@@ -907,5 +944,7 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
         lcp_failures: lcp_fail,
         frequencies: sys.frequencies,
         rayleigh: sys.rayleigh,
+        time_step_advice: None,
+        newton_failures: 0,
     })
 }

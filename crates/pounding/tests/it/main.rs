@@ -9,3 +9,4 @@ mod ground_motion;
 mod impact;
 mod lcp;
 mod sim;
+mod sim_compliance;

@@ -1,0 +1,144 @@
+//! `simulate` with compliance contact laws: the OpenSees 1-D benchmark through the full 2-D
+//! simulator, the rigid limit of stiff laws, straight decks and dashpot damping, bad input.
+
+use pounding::contact_law::{BilinearImpact, ContactLaw, units};
+use pounding::ground_motion::{GroundMotion, el_centro_1940};
+use pounding::sim::{
+    ComplianceContact, DampingModel, JointContact, SimModel, SimProblem, SimSettings, SimStatus,
+    StraightDeck, simulate,
+};
+use std::f64::consts::PI;
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs()
+}
+
+/// Two straight decks of mass `m` (L = 30 m, W = 10 m) with 4 symmetric corner bearings giving
+/// translational periods `t1` (deck 1) and `t2` (deck 2), dashpot damping `ζ`, gap `g`.
+fn straight_model(m: f64, t1: f64, t2: f64, zeta: f64, gap: f64, law: JointContact) -> SimModel {
+    let mut model = SimModel::default_bridge();
+    model.gap = gap;
+    model.damping_ratio = zeta;
+    model.damping_model = DampingModel::TranslationalDashpots;
+    model.friction = 0.0;
+    model.contact = law;
+    let sd = StraightDeck {
+        length: 30.0,
+        mass: Some(m),
+    };
+    model.straight = [Some(sd), Some(sd)];
+    for (j, t) in [(1, t1), (2, t2)] {
+        let k = m * (2.0 * PI / t).powi(2) / 4.0;
+        let pts = model.deck_corner_points(j);
+        let b: Vec<_> = pts
+            .iter()
+            .map(|p| pounding::sim::Bearing {
+                point: *p,
+                stiffness: k,
+            })
+            .collect();
+        if j == 1 {
+            model.bearings1 = b;
+        } else {
+            model.bearings2 = b;
+        }
+    }
+    model
+}
+
+fn opensees_bilinear() -> ContactLaw {
+    BilinearImpact::from_hertz(units::kip_per_in_1_5(25_000.0), 0.6, units::INCH, 0.1)
+        .unwrap()
+        .law
+        .into()
+}
+
+fn elc180_only() -> GroundMotion {
+    let mut g = el_centro_1940();
+    g.along_x = None;
+    g
+}
+
+#[test]
+fn straight_decks_with_dashpots_have_the_requested_periods_and_damping() {
+    let m = straight_model(1.0e6, 1.0, 0.5, 0.05, 0.05, JointContact::Rigid);
+    let sys = m.linear_system().unwrap();
+    // translational frequencies 2π/T (x and y), independent eigen-analysis in the library
+    let w1 = sys.frequencies[0];
+    let w2 = sys.frequencies[1];
+    assert!(
+        rel(w1[0], 2.0 * PI) < 1e-12 && rel(w1[1], 2.0 * PI) < 1e-12,
+        "{w1:?}"
+    );
+    assert!(rel(w2[0], 4.0 * PI) < 1e-12, "{w2:?}");
+    // c = 2 ζ m 2π/T in x and y, nothing in rotation
+    assert!(rel(sys.damping[(1, 1)], 2.0 * 0.05 * 1e6 * 2.0 * PI / 1.0) < 1e-12);
+    assert!(rel(sys.damping[(4, 4)], 2.0 * 0.05 * 1e6 * 2.0 * PI / 0.5) < 1e-12);
+    assert_eq!(sys.damping[(2, 2)], 0.0);
+    // symmetric bearings: no y–θ coupling
+    assert!(sys.stiffness[(1, 2)].abs() < 1e-6 * sys.stiffness[(1, 1)]);
+    // mass from ρ t L W when not given
+    let mut m2 = m.clone();
+    m2.straight[0] = Some(StraightDeck {
+        length: 20.0,
+        mass: None,
+    });
+    let mp = m2.deck_mass_properties(1).unwrap();
+    assert!(rel(mp.mass, 2500.0 * 0.5 * 20.0 * 10.0) < 1e-12);
+    assert!(rel(mp.inertia, mp.mass * (400.0 + 100.0) / 12.0) < 1e-12);
+}
+
+/// The issue's OpenSees benchmark (OpenSees 3.7.1: 6 impacts, 44.30 MN, closing 0.05404 m)
+/// through `simulate` with straight decks and the bilinear law, dt = 1e-4 over 53.71 s.
+#[test]
+fn opensees_1d_benchmark_in_the_simulator() {
+    let model = straight_model(
+        1.0e6,
+        1.0,
+        0.5,
+        0.05,
+        0.05,
+        JointContact::Compliance(ComplianceContact::new(opensees_bilinear())),
+    );
+    let settings = SimSettings {
+        dt: 1e-4,
+        history_stride: 1000,
+        ..SimSettings::default()
+    };
+    let sol = simulate(&SimProblem::at_rest(model, elc180_only()), &settings).unwrap();
+    let s = &sol.summary;
+    let f = s.peak_contact_force.unwrap();
+    eprintln!(
+        "simulator, OpenSees 1-D: impacts {} (6), peak force {:.4} MN (44.30), closing {:.5} m \
+         (0.05404), penetration {:.4} mm (4.04), rotation {:e}, newton failures {}",
+        s.impacts,
+        f / 1e6,
+        s.peak_joint_closing,
+        s.peak_penetration * 1e3,
+        s.peak_rotation[0].max(s.peak_rotation[1]),
+        sol.newton_failures
+    );
+    for r in &sol.impacts {
+        eprintln!(
+            "  impact {} at {:.4} s ({}): P_N {:.4e} N s",
+            r.impact,
+            r.time,
+            r.contact.name(),
+            r.impulse_n
+        );
+    }
+    assert_eq!(sol.status, SimStatus::Completed);
+    assert_eq!(s.impacts, 6);
+    assert!(rel(f, 44.30e6) < 0.02, "{f}");
+    assert!(
+        rel(s.peak_penetration, 4.04e-3) < 0.03,
+        "{}",
+        s.peak_penetration
+    );
+    assert!(rel(s.peak_joint_closing, 0.05404) < 1e-3);
+    // no rotation, both corners carry half the joint force
+    assert!(s.peak_rotation[0] < 1e-12 && s.peak_rotation[1] < 1e-12);
+    assert_eq!(sol.impacts.len(), 12);
+    let adv = sol.time_step_advice.unwrap();
+    assert!(adv.adequate && (adv.contact_duration - 0.01779).abs() < 1e-4);
+}
