@@ -15,6 +15,10 @@ use pounding::impact::{
 use pounding::lcp::LemkeSettings;
 use pounding::math::Vector;
 use pounding::output::json_float;
+use pounding::shape::{
+    Abutment, DeckEnd, DeckShape, SkewedDeck, StraightDeck, abutment_contact, abutment_delassus,
+    abutment_problem, frictionless_pivot, joint_problem,
+};
 use serde_json::{Map, Value, json};
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -34,33 +38,33 @@ pub struct Args {
 #[derive(clap::Args)]
 pub struct ImpactArgs {
     /// Generic form: a JSON file with "bodies" and "contacts" (see the README).
-    #[arg(long, value_name = "FILE.json", conflicts_with_all = ["r1", "r2", "beta1", "beta2", "theta1", "theta2", "case", "mu", "eps", "ratio"])]
+    #[arg(long, value_name = "FILE.json", conflicts_with_all = ["r1", "r2", "beta1", "beta2", "theta1", "theta2", "case", "mu", "eps", "ratio", "shape", "length", "length2", "skew", "abutment", "gap", "corner", "speed"])]
     problem: Option<PathBuf>,
     /// Centre-line radius of deck 1 [m] (> W/2).
     #[arg(
         long,
-        required_unless_present = "problem",
+        required_unless_present_any = ["problem", "shape", "abutment"],
         allow_negative_numbers = true
     )]
     r1: Option<f64>,
     /// Centre-line radius of deck 2 [m] (> W/2).
     #[arg(
         long,
-        required_unless_present = "problem",
+        required_unless_present_any = ["problem", "shape", "abutment"],
         allow_negative_numbers = true
     )]
     r2: Option<f64>,
     /// Curve angle of deck 1 [deg], in (0, 360).
     #[arg(
         long,
-        required_unless_present = "problem",
+        required_unless_present_any = ["problem", "shape", "abutment"],
         allow_negative_numbers = true
     )]
     beta1: Option<f64>,
     /// Curve angle of deck 2 [deg], in (0, 360).
     #[arg(
         long,
-        required_unless_present = "problem",
+        required_unless_present_any = ["problem", "shape", "abutment"],
         allow_negative_numbers = true
     )]
     beta2: Option<f64>,
@@ -76,19 +80,19 @@ pub struct ImpactArgs {
     /// Rotation of deck 1 [deg], counter-clockwise, |θ| < 90.
     #[arg(
         long,
-        required_unless_present = "problem",
+        required_unless_present_any = ["problem", "shape", "abutment"],
         allow_negative_numbers = true
     )]
     theta1: Option<f64>,
     /// Rotation of deck 2 [deg], counter-clockwise, |θ| < 90.
     #[arg(
         long,
-        required_unless_present = "problem",
+        required_unless_present_any = ["problem", "shape", "abutment"],
         allow_negative_numbers = true
     )]
     theta2: Option<f64>,
     /// Candidate contact: deck1-inner, deck1-outer, deck2-inner or deck2-outer.
-    #[arg(long, required_unless_present = "problem")]
+    #[arg(long, required_unless_present_any = ["problem", "shape", "abutment"])]
     case: Option<String>,
     /// Coulomb friction coefficient μ >= 0.
     #[arg(
@@ -114,6 +118,33 @@ pub struct ImpactArgs {
     /// closing distance, or the overlap if the pose already interpenetrates (spec §5.5).
     #[arg(long, allow_negative_numbers = true)]
     opening: Option<f64>,
+    /// Deck shape: curved (the default: two S-curved decks, or with --abutment deck 1 against an
+    /// abutment), straight (rectangle) or skew (parallelogram). straight/skew without --abutment:
+    /// two decks face to face at the joint, both joint corners striking.
+    #[arg(long, value_name = "curved|straight|skew")]
+    shape: Option<String>,
+    /// Deck length L along the axis [m] (> 0; --shape straight|skew).
+    #[arg(long, allow_negative_numbers = true)]
+    length: Option<f64>,
+    /// Length of deck 2 [m] (> 0; --shape straight|skew without --abutment; default --length).
+    #[arg(long, allow_negative_numbers = true)]
+    length2: Option<f64>,
+    /// Skew angle θ_s [deg] in [0, 90): end faces vs the normal of the deck axis (--shape skew).
+    #[arg(long, allow_negative_numbers = true)]
+    skew: Option<f64>,
+    /// The deck (deck 1) against a rigid abutment beyond its far end instead of deck 2.
+    #[arg(long)]
+    abutment: bool,
+    /// Abutment gap g >= 0 [m] along the far face's outward normal (--abutment; default 0).
+    #[arg(long, allow_negative_numbers = true)]
+    gap: Option<f64>,
+    /// Striking corner(s) of the far face (--abutment; default both): both, c0, c1; aliases
+    /// acute = c0, obtuse = c1 (skew) and outer = c0, inner = c1 (curved).
+    #[arg(long)]
+    corner: Option<String>,
+    /// Speed of the longitudinal approach toward the abutment [m/s] (> 0; --abutment; default 1).
+    #[arg(long, allow_negative_numbers = true)]
+    speed: Option<f64>,
     /// Print JSON instead of the readable summary.
     #[arg(long)]
     json: bool,
@@ -122,9 +153,32 @@ pub struct ImpactArgs {
 /// Runs `pounding impact`.
 pub fn run(args: Args) -> Result<ExitCode> {
     let args = args.inner;
-    match &args.problem {
-        Some(path) => run_generic(path, args.json),
-        None => run_bridge(&args),
+    if let Some(path) = &args.problem {
+        return run_generic(path, args.json);
+    }
+    match args.shape.as_deref() {
+        None | Some("curved") if !args.abutment => {
+            for (set, name) in [
+                (args.length.is_some(), "--length"),
+                (args.length2.is_some(), "--length2"),
+                (args.skew.is_some(), "--skew"),
+            ] {
+                if set {
+                    bail!("{name} is only used with --shape straight or --shape skew");
+                }
+            }
+            for (set, name) in [
+                (args.gap.is_some(), "--gap"),
+                (args.corner.is_some(), "--corner"),
+                (args.speed.is_some(), "--speed"),
+            ] {
+                if set {
+                    bail!("{name} is only used with --abutment");
+                }
+            }
+            run_bridge(&args)
+        }
+        _ => run_abutment(&args),
     }
 }
 
@@ -678,4 +732,616 @@ fn run_generic(path: &PathBuf, as_json: bool) -> Result<ExitCode> {
     } else {
         ExitCode::SUCCESS
     })
+}
+
+// ---------------------------------------------------------------- shapes and abutments
+
+/// Names of the far-face corners `[c0, c1]` for a shape.
+fn corner_names(shape: &DeckShape) -> [&'static str; 2] {
+    match shape {
+        DeckShape::Curved(_) => ["outer", "inner"],
+        DeckShape::Straight(_) => ["c0", "c1"],
+        DeckShape::Skewed(_) => ["acute", "obtuse"],
+    }
+}
+
+/// The abutment form: deck 1 (curved, straight or skew) against a rigid abutment beyond its far end.
+fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
+    let shape_name = a.shape.as_deref().unwrap_or("curved");
+    let shape = match shape_name {
+        "curved" => {
+            for (set, name) in [
+                (a.length.is_some(), "--length"),
+                (a.skew.is_some(), "--skew"),
+            ] {
+                if set {
+                    bail!("{name} is only used with --shape straight or --shape skew");
+                }
+            }
+            let r1 = need(a.r1, "r1")?;
+            let b1 = need(a.beta1, "beta1")?;
+            DeckShape::Curved(
+                Deck::new(r1, b1.to_radians(), a.width, a.thickness, a.density)
+                    .map_err(|e| e.for_deck(1))?,
+            )
+        }
+        "straight" | "skew" => {
+            for (set, name) in [(a.r1.is_some(), "--r1"), (a.beta1.is_some(), "--beta1")] {
+                if set {
+                    bail!("{name} is only used with --shape curved");
+                }
+            }
+            let length = a
+                .length
+                .ok_or_else(|| anyhow!("missing --length (required with --shape {shape_name})"))?;
+            if shape_name == "straight" {
+                if a.skew.is_some() {
+                    bail!("--skew is only used with --shape skew");
+                }
+                DeckShape::Straight(StraightDeck::new(length, a.width, a.thickness, a.density)?)
+            } else {
+                let skew = a
+                    .skew
+                    .ok_or_else(|| anyhow!("missing --skew (required with --shape skew)"))?;
+                DeckShape::Skewed(SkewedDeck::new(
+                    length,
+                    a.width,
+                    skew.to_radians(),
+                    a.thickness,
+                    a.density,
+                )?)
+            }
+        }
+        other => bail!("invalid shape = {other:?}: expected curved, straight or skew"),
+    };
+    if !a.abutment {
+        return run_joint(a, &shape);
+    }
+    if a.length2.is_some() {
+        bail!("--length2 is not used with --abutment (there is no deck 2)");
+    }
+    for (set, name) in [
+        (a.r2.is_some(), "--r2"),
+        (a.beta2.is_some(), "--beta2"),
+        (a.theta1.is_some(), "--theta1"),
+        (a.theta2.is_some(), "--theta2"),
+        (a.case.is_some(), "--case"),
+        (a.opening.is_some(), "--opening"),
+    ] {
+        if set {
+            bail!("{name} is not used with --abutment (the deck is in its reference pose)");
+        }
+    }
+    if a.sigma_mode != "exact" {
+        bail!("--sigma-mode is not used with --abutment");
+    }
+    let mu = need(a.mu, "mu")?;
+    let eps = need(a.eps, "eps")?;
+    let law = ImpactLaw::new(mu, eps)?;
+    let abut = Abutment::new(DeckEnd::Far, a.gap.unwrap_or(0.0))?;
+    let names = corner_names(&shape);
+    let corner = a.corner.as_deref().unwrap_or("both");
+    let corners: Vec<usize> = match corner {
+        "both" => vec![0, 1],
+        "c0" => vec![0],
+        "c1" => vec![1],
+        n if n == names[0] => vec![0],
+        n if n == names[1] => vec![1],
+        n => bail!(
+            "invalid corner = {n:?}: expected both, c0 or c1{}",
+            if names[0] == "c0" {
+                String::new()
+            } else {
+                format!(" (or {}, {})", names[0], names[1])
+            }
+        ),
+    };
+    if let Some(r) = a.ratio {
+        if !r.is_finite() {
+            bail!("invalid ratio = {r}: must be finite");
+        }
+        if corners.len() == 2 {
+            bail!("--ratio needs a single corner (--corner c0 or c1): both corners use --speed");
+        }
+    }
+    let speed = a.speed.unwrap_or(1.0);
+    if !(speed.is_finite() && speed > 0.0) {
+        bail!("invalid speed = {speed}: must be finite and > 0");
+    }
+    if a.speed.is_some() && corners.len() == 1 {
+        bail!(
+            "--speed is only used with --corner both (a single corner is solved in r = γ_T⁻/γ_N⁻)"
+        );
+    }
+
+    let props = shape.mass_properties();
+    let face = shape.end_face(DeckEnd::Far);
+    let axis = shape.axis_direction(DeckEnd::Far);
+    let mut out = Map::new();
+    let mut input = json!({
+        "shape": shape.name(),
+        "abutment": true,
+        "end": DeckEnd::Far.name(),
+        "corner": corner,
+        "mu": json_float(mu),
+        "eps": json_float(eps),
+        "gap": json_float(abut.gap),
+        "width": json_float(a.width),
+        "thickness": json_float(a.thickness),
+        "density": json_float(a.density),
+    });
+    let extra = match &shape {
+        DeckShape::Curved(d) => {
+            json!({"radius": json_float(d.radius), "angle_deg": json_float(a.beta1.unwrap_or(d.angle.to_degrees()))})
+        }
+        DeckShape::Straight(d) => json!({"length": json_float(d.length)}),
+        DeckShape::Skewed(d) => {
+            json!({"length": json_float(d.length), "skew_deg": json_float(a.skew.unwrap_or(d.skew.to_degrees()))})
+        }
+    };
+    if let (Value::Object(m), Value::Object(e)) = (&mut input, extra) {
+        m.extend(e);
+    }
+    out.insert("input".into(), input);
+    out.insert(
+        "deck".into(),
+        json!({
+            "area": json_float(props.area),
+            "mass": json_float(props.mass),
+            "centroid": vec_json(&props.centroid),
+            "inertia": json_float(props.inertia),
+            "radius_of_gyration": json_float(props.radius_of_gyration()),
+            "axis": vec_json(&axis),
+            "far_face": {
+                "corners": [vec_json(&face.corners[0]), vec_json(&face.corners[1])],
+                "corner_names": names,
+                "corner_angles_deg": [
+                    json_float(shape.corner_angle(DeckEnd::Far, 0).to_degrees()),
+                    json_float(shape.corner_angle(DeckEnd::Far, 1).to_degrees()),
+                ],
+                "length": json_float(face.length()),
+                "outward_normal": vec_json(&face.outward_normal),
+            },
+        }),
+    );
+    out.insert(
+        "abutment".into(),
+        json!({
+            "face_point": vec_json(&abut.face_point(&shape)),
+            "travel_to_contact": json_float(abut.travel_to_contact(&shape)),
+        }),
+    );
+    let mut lines: Vec<String> = Vec::new();
+    lines.push(match &shape {
+        DeckShape::Curved(d) => format!(
+            "Curved deck R = {} m, β = {}°, W = {} m against a rigid abutment at its far end",
+            d.radius,
+            a.beta1.unwrap_or(d.angle.to_degrees()),
+            d.width
+        ),
+        DeckShape::Straight(d) => format!(
+            "Straight deck L = {} m, W = {} m against a rigid abutment at its far end",
+            d.length, d.width
+        ),
+        DeckShape::Skewed(d) => format!(
+            "Skew deck L = {} m, W = {} m, θ_s = {}° against a rigid abutment at its far end",
+            d.length,
+            d.width,
+            a.skew.unwrap_or(d.skew.to_degrees())
+        ),
+    });
+    lines.push(format!(
+        "  A = {} m², m = {} kg, I = {} kg m², G = ({}, {}) m; gap {} m closes after {} m along the axis",
+        fmt(props.area),
+        fmt(props.mass),
+        fmt(props.inertia),
+        fmt(props.centroid.x),
+        fmt(props.centroid.y),
+        abut.gap,
+        fmt(abut.travel_to_contact(&shape))
+    ));
+    lines.push(format!(
+        "  far face: {} corner c0 = ({}, {}), {} corner c1 = ({}, {}), outward normal ({}, {}); μ = {mu}, ε_N = {eps}",
+        names[0],
+        fmt(face.corners[0].x),
+        fmt(face.corners[0].y),
+        names[1],
+        fmt(face.corners[1].x),
+        fmt(face.corners[1].y),
+        fmt(face.outward_normal.x),
+        fmt(face.outward_normal.y)
+    ));
+    let mut failed = false;
+    if corners.len() == 1 {
+        let k = corners[0];
+        let c = abutment_contact(&shape, DeckEnd::Far, k);
+        let g = abutment_delassus(&shape, DeckEnd::Far, k);
+        let bounds = analytic::stick_interval(&g, &law);
+        // longitudinal approach: u = speed · axis, ω = 0
+        let gn = axis.dot(&c.normal);
+        let gt = axis.dot(&c.tangent);
+        let long_ratio = gt / gn;
+        let long = impact::solve_single(&g, &law, -1.0, -long_ratio, &LemkeSettings::default());
+        out.insert("corner_index".into(), json!(k));
+        out.insert("corner_name".into(), json!(names[k]));
+        out.insert("point".into(), vec_json(&c.point));
+        out.insert("normal".into(), vec_json(&c.normal));
+        out.insert("tangent".into(), vec_json(&c.tangent));
+        out.insert(
+            "lever_arms".into(),
+            json!({"normal": json_float(c.arm_n), "tangential": json_float(c.arm_t)}),
+        );
+        out.insert(
+            "delassus".into(),
+            json!({"nn": json_float(g.nn), "nt": json_float(g.nt), "tt": json_float(g.tt)}),
+        );
+        out.insert("kappa".into(), json_float(g.kappa()));
+        out.insert("varrho".into(), json_float(g.varrho()));
+        out.insert(
+            "stick_interval".into(),
+            json!({"lower": json_float(bounds.lower), "upper": json_float(bounds.upper)}),
+        );
+        out.insert("painleve".into(), json!(analytic::is_painleve(&g, &law)));
+        out.insert(
+            "longitudinal".into(),
+            json!({"ratio": json_float(long_ratio), "mode": long.mode.name(), "status": long.status.name()}),
+        );
+        failed |= long.status == ImpactStatus::Failed;
+        lines.push(format!(
+            "Corner {} ({}) alone: arms r×n = {} m, r×t = {} m",
+            k,
+            names[k],
+            fmt(c.arm_n),
+            fmt(c.arm_t)
+        ));
+        lines.push(format!(
+            "  Delassus: G_NN = {}  G_NT = {}  G_TT = {}  [1/kg]   κ = {:.6}  ϱ = {:.6}",
+            fmt(g.nn),
+            fmt(g.nt),
+            fmt(g.tt),
+            g.kappa(),
+            g.varrho()
+        ));
+        lines.push(format!(
+            "  stick interval in r = γ_T⁻/γ_N⁻: [{}, {}]   (t points from c0 to c1; r < L: slip-positive, r > U: slip-negative)",
+            fmt(bounds.lower),
+            fmt(bounds.upper)
+        ));
+        lines.push(format!(
+            "  longitudinal approach: r = {} → {}",
+            fmt(long_ratio),
+            long.mode.name()
+        ));
+        if let Some(r) = a.ratio {
+            let sol = impact::solve_single(&g, &law, -1.0, -r, &LemkeSettings::default());
+            failed |= sol.status == ImpactStatus::Failed;
+            out.insert("ratio".into(), json_float(r));
+            out.insert("mode".into(), json!(sol.mode.name()));
+            out.insert(
+                "impulse".into(),
+                json!({"normal": json_float(sol.normal_impulse), "tangential": json_float(sol.tangential_impulse)}),
+            );
+            out.insert(
+                "post".into(),
+                json!({"gamma_n": json_float(sol.gamma_n_post), "gamma_t": json_float(sol.gamma_t_post)}),
+            );
+            out.insert(
+                "energy_change".into(),
+                json_float(sol.energy_change(-1.0, -r)),
+            );
+            out.insert("status".into(), json!(sol.status.name()));
+            lines.push(format!(
+                "Impact at r = {r} (γ_N⁻ = −1 m/s, γ_T⁻ = {} m/s): {} ({})",
+                -r,
+                sol.mode.name(),
+                sol.status.name()
+            ));
+            lines.push(format!(
+                "  Λ_N = {} N s  Λ_T = {} N s  γ_N⁺ = {} m/s  γ_T⁺ = {} m/s  ΔT = {} J",
+                fmt(sol.normal_impulse),
+                fmt(sol.tangential_impulse),
+                fmt(sol.gamma_n_post),
+                fmt(sol.gamma_t_post),
+                fmt(sol.energy_change(-1.0, -r))
+            ));
+        }
+    } else {
+        let problem = abutment_problem(&shape, DeckEnd::Far, &[0, 1], speed * axis, 0.0, &law)?;
+        let s = impact::solve(&problem, &ImpactSettings::default());
+        failed |= s.status == ImpactStatus::Failed;
+        let pivot = frictionless_pivot(&shape, DeckEnd::Far);
+        let omega = s.bodies[0].omega;
+        let n0 = -s.contacts[0].gamma_n_pre;
+        let half_diag = face.length().max(props.radius_of_gyration());
+        let rotates = omega.abs() > 1e-9 * n0 / half_diag;
+        let open: Vec<bool> = s
+            .contacts
+            .iter()
+            .map(|c| c.mode == ContactMode::Open)
+            .collect();
+        let lcp_pivot = match (open[0], open[1], rotates) {
+            (true, false, true) => Value::from(names[1]),
+            (false, true, true) => Value::from(names[0]),
+            _ => Value::Null,
+        };
+        let mut rot = json!({
+            "predicted_pivot": pivot.map_or(Value::Null, |k| Value::from(names[k])),
+            "rotates": rotates,
+            "pivot": lcp_pivot,
+            "omega": json_float(omega),
+        });
+        if let (DeckShape::Skewed(d), Value::Object(m)) = (&shape, &mut rot) {
+            m.insert("sin_2skew".into(), json_float((2.0 * d.skew).sin()));
+            m.insert("two_w_over_l".into(), json_float(2.0 * d.width / d.length));
+            m.insert(
+                "condition_holds".into(),
+                json!(d.rotates_on_abutment_impact()),
+            );
+        }
+        let contacts: Vec<Value> = s
+            .contacts
+            .iter()
+            .enumerate()
+            .map(|(k, c)| {
+                json!({
+                    "corner": names[k],
+                    "point": vec_json(&face.corners[k]),
+                    "normal_impulse": json_float(c.normal_impulse),
+                    "tangential_impulse": json_float(c.tangential_impulse),
+                    "mode": c.mode.name(),
+                    "gamma_n_pre": json_float(c.gamma_n_pre),
+                    "gamma_t_pre": json_float(c.gamma_t_pre),
+                    "gamma_n_post": json_float(c.gamma_n_post),
+                    "gamma_t_post": json_float(c.gamma_t_post),
+                })
+            })
+            .collect();
+        out.insert("speed".into(), json_float(speed));
+        out.insert("contacts".into(), Value::Array(contacts));
+        out.insert(
+            "post".into(),
+            json!({"velocity": vec_json(&s.bodies[0].velocity), "omega": json_float(omega)}),
+        );
+        out.insert(
+            "energy".into(),
+            json!({"before": json_float(s.energy_before), "after": json_float(s.energy_after)}),
+        );
+        out.insert("rotation".into(), rot);
+        out.insert("status".into(), json!(s.status.name()));
+        out.insert("post_velocity_unique".into(), json!(s.post_velocity_unique));
+        lines.push(format!(
+            "Both corners strike after a longitudinal approach at {speed} m/s: {}",
+            s.status.name()
+        ));
+        for (k, c) in s.contacts.iter().enumerate() {
+            lines.push(format!(
+                "  {} corner: {}  Λ_N = {} N s  Λ_T = {} N s  γ_N: {} → {} m/s",
+                names[k],
+                c.mode.name(),
+                fmt(c.normal_impulse),
+                fmt(c.tangential_impulse),
+                fmt(c.gamma_n_pre),
+                fmt(c.gamma_n_post)
+            ));
+        }
+        lines.push(format!(
+            "  v⁺ = ({}, {}) m/s, ω⁺ = {} rad/s; kinetic energy {} J → {} J",
+            fmt(s.bodies[0].velocity.x),
+            fmt(s.bodies[0].velocity.y),
+            fmt(omega),
+            fmt(s.energy_before),
+            fmt(s.energy_after)
+        ));
+        lines.push(match &lcp_pivot {
+            Value::String(p) => {
+                format!("  the deck rotates about its {p} corner (the other corner separates)")
+            }
+            _ if rotates => "  the deck rotates (both corners keep impulse)".to_string(),
+            _ => "  no rotation: both corners stay in contact".to_string(),
+        });
+        let predicted = pivot.map_or("no rotation".to_string(), |k| {
+            format!("rotation about the {} corner", names[k])
+        });
+        lines.push(match &shape {
+            DeckShape::Skewed(d) => format!(
+                "  frictionless criterion: sin 2θ_s = {:.6} {} 2W/L = {:.6} → {predicted}",
+                (2.0 * d.skew).sin(),
+                if d.rotates_on_abutment_impact() {
+                    ">"
+                } else {
+                    "≤"
+                },
+                2.0 * d.width / d.length
+            ),
+            _ => format!("  frictionless criterion (centroid's foot beyond the face): {predicted}"),
+        });
+    }
+    if a.json {
+        println!("{}", serde_json::to_string_pretty(&Value::Object(out))?);
+    } else {
+        for l in lines {
+            println!("{l}");
+        }
+    }
+    Ok(if failed {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
+}
+
+/// Two straight or skew decks face to face at the joint (reference pose, zero opening): deck 1
+/// approaches along its axis at `--speed`, deck 2 rests; both joint corners strike.
+fn run_joint(a: &ImpactArgs, deck1: &DeckShape) -> Result<ExitCode> {
+    for (set, name) in [
+        (a.r2.is_some(), "--r2"),
+        (a.beta2.is_some(), "--beta2"),
+        (a.theta1.is_some(), "--theta1"),
+        (a.theta2.is_some(), "--theta2"),
+        (a.case.is_some(), "--case"),
+        (a.opening.is_some(), "--opening"),
+        (a.ratio.is_some(), "--ratio"),
+        (a.gap.is_some(), "--gap"),
+        (a.corner.is_some(), "--corner"),
+    ] {
+        if set {
+            bail!(
+                "{name} is not used for two {} decks (both joint corners strike in the reference pose)",
+                deck1.name()
+            );
+        }
+    }
+    if a.sigma_mode != "exact" {
+        bail!("--sigma-mode is not used with --shape {}", deck1.name());
+    }
+    let deck2 = match deck1 {
+        DeckShape::Straight(d) => {
+            let l2 = a.length2.unwrap_or(d.length);
+            DeckShape::Straight(
+                StraightDeck::new(l2, d.width, d.thickness, d.density)
+                    .map_err(|e| rename(e, "length", "length2"))?,
+            )
+        }
+        DeckShape::Skewed(d) => {
+            let l2 = a.length2.unwrap_or(d.length);
+            DeckShape::Skewed(
+                SkewedDeck::new(l2, d.width, d.skew, d.thickness, d.density)
+                    .map_err(|e| rename(e, "length", "length2"))?,
+            )
+        }
+        DeckShape::Curved(_) => bail!("internal: curved decks use the S-curved bridge form"),
+    };
+    let mu = need(a.mu, "mu")?;
+    let eps = need(a.eps, "eps")?;
+    let law = ImpactLaw::new(mu, eps)?;
+    let speed = a.speed.unwrap_or(1.0);
+    if !(speed.is_finite() && speed > 0.0) {
+        bail!("invalid speed = {speed}: must be finite and > 0");
+    }
+    let v1 = speed * deck1.axis_direction(DeckEnd::Joint);
+    let problem = joint_problem(deck1, &deck2, (v1, 0.0), (Vector::zeros(), 0.0), &law)?;
+    let s = impact::solve(&problem, &ImpactSettings::default());
+    let names = corner_names(deck1);
+    let face = deck1.end_face(DeckEnd::Joint);
+    let mut out = Map::new();
+    let mut input = json!({
+        "shape": deck1.name(),
+        "abutment": false,
+        "mu": json_float(mu),
+        "eps": json_float(eps),
+        "speed": json_float(speed),
+        "width": json_float(a.width),
+        "thickness": json_float(a.thickness),
+        "density": json_float(a.density),
+        "length": json_float(a.length.unwrap_or(f64::NAN)),
+        "length2": json_float(a.length2.or(a.length).unwrap_or(f64::NAN)),
+    });
+    if let (Some(sk), Value::Object(m)) = (a.skew, &mut input) {
+        m.insert("skew_deg".into(), json_float(sk));
+    }
+    out.insert("input".into(), input);
+    let decks: Vec<Value> = problem
+        .bodies()
+        .iter()
+        .zip(&s.bodies)
+        .map(|(b, v)| {
+            json!({
+                "name": b.name,
+                "mass": json_float(b.mass),
+                "inertia": json_float(b.inertia),
+                "centroid": vec_json(&b.position),
+                "velocity_pre": vec_json(&b.velocity),
+                "velocity": vec_json(&v.velocity),
+                "omega": json_float(v.omega),
+            })
+        })
+        .collect();
+    out.insert("decks".into(), Value::Array(decks));
+    let contacts: Vec<Value> = s
+        .contacts
+        .iter()
+        .enumerate()
+        .map(|(k, c)| {
+            json!({
+                "corner": names[k],
+                "point": vec_json(&face.corners[k]),
+                "normal_impulse": json_float(c.normal_impulse),
+                "tangential_impulse": json_float(c.tangential_impulse),
+                "mode": c.mode.name(),
+                "gamma_n_pre": json_float(c.gamma_n_pre),
+                "gamma_t_pre": json_float(c.gamma_t_pre),
+                "gamma_n_post": json_float(c.gamma_n_post),
+                "gamma_t_post": json_float(c.gamma_t_post),
+            })
+        })
+        .collect();
+    out.insert("contacts".into(), Value::Array(contacts));
+    out.insert(
+        "energy".into(),
+        json!({"before": json_float(s.energy_before), "after": json_float(s.energy_after)}),
+    );
+    out.insert("status".into(), json!(s.status.name()));
+    out.insert("post_velocity_unique".into(), json!(s.post_velocity_unique));
+    if a.json {
+        println!("{}", serde_json::to_string_pretty(&Value::Object(out))?);
+    } else {
+        println!(
+            "Two {} decks face to face at the joint (W = {} m{}), deck 1 approaching along its axis at {speed} m/s; μ = {mu}, ε_N = {eps}: {}",
+            deck1.name(),
+            a.width,
+            a.skew.map_or(String::new(), |sk| format!(", θ_s = {sk}°")),
+            s.status.name()
+        );
+        for (b, v) in problem.bodies().iter().zip(&s.bodies) {
+            println!(
+                "  {}: m = {} kg, I = {} kg m²: v⁺ = ({}, {}) m/s, ω⁺ = {} rad/s",
+                b.name,
+                fmt(b.mass),
+                fmt(b.inertia),
+                fmt(v.velocity.x),
+                fmt(v.velocity.y),
+                fmt(v.omega)
+            );
+        }
+        for (k, c) in s.contacts.iter().enumerate() {
+            println!(
+                "  deck 1 {} corner: {}  Λ_N = {} N s  Λ_T = {} N s  γ_N: {} → {} m/s",
+                names[k],
+                c.mode.name(),
+                fmt(c.normal_impulse),
+                fmt(c.tangential_impulse),
+                fmt(c.gamma_n_pre),
+                fmt(c.gamma_n_post)
+            );
+        }
+        println!(
+            "  kinetic energy: {} J → {} J",
+            fmt(s.energy_before),
+            fmt(s.energy_after)
+        );
+    }
+    Ok(if s.status == ImpactStatus::Failed {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
+}
+
+/// The same geometry error with the parameter renamed (deck 2's `length` is `length2`).
+fn rename(
+    e: pounding::geometry::GeometryError,
+    from: &str,
+    to: &str,
+) -> pounding::geometry::GeometryError {
+    match e {
+        pounding::geometry::GeometryError::InvalidParameter {
+            name,
+            value,
+            reason,
+        } => pounding::geometry::GeometryError::InvalidParameter {
+            name: if name == from { to.to_string() } else { name },
+            value,
+            reason,
+        },
+    }
 }

@@ -24,6 +24,9 @@ use std::time::Instant;
 #[path = "sim_plots.rs"]
 mod sim_plots;
 
+#[path = "sim_batch.rs"]
+mod sim_batch;
+
 /// Arguments of `pounding simulate`.
 #[derive(clap::Args)]
 pub struct Args {
@@ -42,6 +45,27 @@ pub struct Args {
     /// Print the built-in default scenario as commented TOML and exit.
     #[arg(long)]
     pub print_default: bool,
+    /// Batch mode: run every record (files, or directories whose `.AT2`/`.csv` files are taken
+    /// in name order) at every `--scales` factor, each as the only component along y (as
+    /// `--record`); writes `batch.csv` and `batch.png`. Put the scenario file before this flag.
+    #[arg(long, num_args = 1.., value_name = "DIR_OR_FILE", conflicts_with_all = ["record", "scale"])]
+    pub records: Vec<PathBuf>,
+    /// Batch mode: scale factors, comma separated (each multiplies the scenario's scale_y, as
+    /// `--scale`). Default: 1.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        value_name = "S1,S2,...",
+        requires = "records"
+    )]
+    pub scales: Vec<f64>,
+    /// Batch mode: worker threads (default: all cores). batch.csv is identical for any value.
+    #[arg(long, value_name = "N", requires = "records")]
+    pub threads: Option<usize>,
+    /// Batch mode: run only the runs whose global index i (0-based, record-major) has
+    /// i mod N = K − 1.
+    #[arg(long, value_name = "K/N", requires = "records")]
+    pub shard: Option<String>,
 }
 
 /// The built-in default scenario (also what `--print-default` prints).
@@ -292,6 +316,8 @@ struct Setup {
     problem: SimProblem,
     settings: SimSettings,
     records: [String; 2],
+    /// Units of `.csv` records.
+    units: AccelUnits,
 }
 
 fn load_record(src: &Source, spec: &str, key: &str, units: AccelUnits) -> Result<Option<Record>> {
@@ -409,6 +435,7 @@ fn build(args: &Args) -> Result<Setup> {
         )
     })?;
     let (along_y, along_x, records) = match &args.record {
+        None if !args.records.is_empty() => (None, None, ["batch".into(), "none".into()]),
         Some(p) => {
             let r =
                 Record::from_path(p, units).with_context(|| format!("--record {}", p.display()))?;
@@ -453,7 +480,7 @@ fn build(args: &Args) -> Result<Setup> {
     settings.validate().map_err(|e| sim_error(&src, e))?;
     model.validate().map_err(|e| sim_error(&src, e))?;
     model.linear_system().map_err(|e| sim_error(&src, e))?;
-    if settings.duration.is_none() && ground.end_time() <= 0.0 {
+    if args.records.is_empty() && settings.duration.is_none() && ground.end_time() <= 0.0 {
         bail!(
             "no ground motion samples after t = 0: set {}",
             src.key_ref("time", "duration")
@@ -463,6 +490,7 @@ fn build(args: &Args) -> Result<Setup> {
         problem: SimProblem::at_rest(model, ground),
         settings,
         records,
+        units,
     })
 }
 
@@ -474,6 +502,9 @@ pub fn run(args: Args) -> Result<ExitCode> {
     }
     let t_start = Instant::now();
     let setup = build(&args)?;
+    if !args.records.is_empty() {
+        return sim_batch::run(&args, &setup.problem, &setup.settings, setup.units, t_start);
+    }
     let t_sim = Instant::now();
     let sol = simulate(&setup.problem, &setup.settings).map_err(|e| anyhow!("{e}"))?;
     let sim_secs = t_sim.elapsed().as_secs_f64();
@@ -654,7 +685,7 @@ fn summary_json(setup: &Setup, sol: &SimSolution) -> serde_json::Value {
             "pga_x_mps2": json_float(pga(&gm.along_x, gm.scale_x)),
         },
         "model": {
-            "mass_kg": [json_float(m.arrangement.deck1.mass_properties().mass), json_float(m.arrangement.deck2.mass_properties().mass)],
+            "mass_kg": m.masses().map(json_float),
             "gap_m": json_float(m.gap),
             "mu": json_float(m.friction),
             "eps_n": json_float(m.restitution),

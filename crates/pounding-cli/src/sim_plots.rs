@@ -529,3 +529,134 @@ fn layout<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, problem: &SimProble
         .map_err(e)?;
     Ok(())
 }
+
+/// One record's curve in the batch plot: `(PGA [g], value)` points sorted by PGA.
+pub struct BatchCurve {
+    /// Record name (legend).
+    pub label: String,
+    /// `(x, [seat displacement, joint opening, rotation, impacts])` per successful run.
+    pub pts: Vec<(Real, [Real; 4])>,
+}
+
+const PALETTE: [RGBColor; 8] = [
+    BLUE,
+    RED,
+    GREEN,
+    ORANGE,
+    PURPLE,
+    RGBColor(23, 162, 184),
+    RGBColor(140, 86, 75),
+    GREY,
+];
+
+/// `batch.png`: peak response against intensity (PGA of the applied component) per record, four
+/// panels (seat displacement with the seat length, joint opening, plan rotation, impacts).
+pub fn batch_plot(out: &Path, name: &str, curves: &[BatchCurve], seat_length: Real) -> R {
+    register();
+    let titles = [
+        (
+            "Peak seat displacement (dashed: seat length)",
+            "seat displacement [m]",
+        ),
+        ("Peak joint opening", "opening [m]"),
+        ("Peak plan rotation (either deck)", "rotation [deg]"),
+        ("Number of impacts", "impacts"),
+    ];
+    let mut xmax: Real = 0.0;
+    for c in curves {
+        for p in &c.pts {
+            if p.0.is_finite() {
+                xmax = xmax.max(p.0);
+            }
+        }
+    }
+    let xmax = if xmax > 0.0 { xmax * 1.05 } else { 1.0 };
+    save(out, name, (1400, 1000), |root| {
+        let areas = root.split_evenly((2, 2));
+        for (k, area) in areas.iter().enumerate() {
+            let mut lo: Real = 0.0;
+            let mut hi = Real::NEG_INFINITY;
+            for c in curves {
+                for p in &c.pts {
+                    if p.1[k].is_finite() {
+                        lo = lo.min(p.1[k]);
+                        hi = hi.max(p.1[k]);
+                    }
+                }
+            }
+            if k == 0 {
+                hi = hi.max(seat_length);
+            }
+            if !(hi.is_finite() && hi > lo) {
+                hi = lo + 1.0;
+            }
+            let pad = (hi - lo) * 0.08;
+            let span = hi - lo + 2.0 * pad;
+            let mut chart = ChartBuilder::on(area)
+                .caption(titles[k].0, (FAMILY, 22))
+                .margin(10)
+                .x_label_area_size(40)
+                .y_label_area_size(80)
+                .build_cartesian_2d(0.0..xmax, (lo - pad)..(hi + pad))
+                .map_err(e)?;
+            chart
+                .configure_mesh()
+                .x_desc("PGA of the applied component [g]")
+                .y_desc(titles[k].1)
+                .x_label_formatter(&|v| tick(*v, xmax))
+                .y_label_formatter(&|v| {
+                    if k == 3 {
+                        format!("{v:.0}")
+                    } else {
+                        tick(*v, span)
+                    }
+                })
+                .label_style((FAMILY, 15))
+                .axis_desc_style((FAMILY, 16))
+                .light_line_style(RGBColor(235, 235, 235))
+                .draw()
+                .map_err(e)?;
+            if k == 0 {
+                chart
+                    .draw_series(DashedLineSeries::new(
+                        vec![(0.0, seat_length), (xmax, seat_length)],
+                        6,
+                        4,
+                        BLACK.stroke_width(1),
+                    ))
+                    .map_err(e)?;
+            }
+            for (ci, c) in curves.iter().enumerate() {
+                let col = PALETTE[ci % PALETTE.len()];
+                let pts: Vec<(Real, Real)> = c
+                    .pts
+                    .iter()
+                    .map(|p| (p.0, p.1[k]))
+                    .filter(|p| p.0.is_finite() && p.1.is_finite())
+                    .collect();
+                let s = chart
+                    .draw_series(LineSeries::new(pts.iter().copied(), col.stroke_width(2)))
+                    .map_err(e)?;
+                if k == 0 {
+                    s.label(c.label.as_str()).legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], col.stroke_width(2))
+                    });
+                }
+                chart
+                    .draw_series(pts.iter().map(|&p| Circle::new(p, 4, col.filled())))
+                    .map_err(e)?;
+            }
+            if k == 0 && !curves.is_empty() {
+                chart
+                    .configure_series_labels()
+                    .position(SeriesLabelPosition::UpperLeft)
+                    .background_style(WHITE.mix(0.85))
+                    .border_style(BLACK)
+                    .label_font((FAMILY, 13))
+                    .draw()
+                    .map_err(e)?;
+            }
+        }
+        Ok(())
+    })
+}

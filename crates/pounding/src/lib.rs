@@ -15,6 +15,8 @@
 //!   calibrations and a two-mass collision integrator (not yet used by a simulator).
 //! * [`analytic`] — the closed-form single-impact solution: stick interval `[L, U]`, modes, impulses (§9–§11).
 //! * [`impact`] — the generic multi-contact frictional impact of planar rigid bodies, solved as an LCP (§8).
+//! * [`shape`] — straight and skewed decks beside the curved one (mass properties, end faces, corners in
+//!   one body frame) and corner impacts against a rigid abutment.
 //! * [`study`] — the parametric stick/slip study of the paper (scenarios, bounds, summaries).
 //! * [`output`] — deterministic number formatting and atomic file output shared by every writer.
 //!
@@ -31,5 +33,6 @@ pub mod impact;
 pub mod lcp;
 pub mod math;
 pub mod output;
+pub mod shape;
 pub mod sim;
 pub mod study;

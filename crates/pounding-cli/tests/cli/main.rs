@@ -19,5 +19,7 @@ fn help_lists_subcommands() {
     }
 }
 
+mod batch;
 mod lcp;
+mod shapes;
 mod simulate;

@@ -54,8 +54,8 @@
 
 use super::contact::{Pose, candidates};
 use super::{
-    ComplianceContact, Energy, History, ImpactRecord, SimError, SimProblem, SimSettings,
-    SimSolution, SimStatus, SimSummary,
+    ComplianceContact, Energy, History, ImpactRecord, SimContact, SimError, SimProblem,
+    SimSettings, SimSolution, SimStatus, SimSummary,
 };
 use crate::analytic::SlipMode;
 use crate::contact_law::sharing::JointLaw;
@@ -336,6 +336,7 @@ pub(crate) fn simulate_compliance(
                 contact: d_cont,
             });
             hist.contact_force.push([ends[0].f_n, ends[1].f_n]);
+            hist.abutment_gaps.push([Real::NAN; 2]);
         }
         if k == n_steps {
             break;
@@ -433,9 +434,11 @@ pub(crate) fn simulate_compliance(
                 impacts.push(ImpactRecord {
                     impact: n_impacts,
                     time: t + h,
-                    contact: ev[e]
-                        .case
-                        .unwrap_or(crate::geometry::ContactCase::Deck1Inner),
+                    contact: SimContact::Joint(
+                        ev[e]
+                            .case
+                            .unwrap_or(crate::geometry::ContactCase::Deck1Inner),
+                    ),
                     mode: SlipMode::Stick,
                     gamma_n_pre: wn.dot(&u),
                     gamma_t_pre: wt.dot(&u),
@@ -530,6 +533,8 @@ pub(crate) fn simulate_compliance(
             contact: d_cont,
         },
         max_input_energy: max_in,
+        peak_abutment_closing: [None, None],
+        abutment_impacting_contacts: 0,
         peak_contact_force: Some(peak_force),
         peak_penetration: max_pen,
     };

@@ -47,6 +47,7 @@
 //! so [`SimSummary::energy_balance_error`] checks the implementation's bookkeeping (a sign or
 //! scaling slip shows at O(1)); for `θ > ½` it measures the scheme's numerical dissipation.
 
+pub mod batch;
 pub mod compliance;
 pub mod contact;
 pub mod model;
@@ -56,14 +57,15 @@ use crate::analytic::SlipMode;
 use crate::geometry::{ContactCase, GeometryError, SArrangement};
 use crate::ground_motion::{GroundMotion, GroundMotionError};
 use crate::lcp::{self, LcpStatus, LemkeSettings};
-use crate::math::{Real, Vector};
-use contact::{Candidate, Pose, candidates};
+use crate::math::{Real, Vector, cross};
+use crate::shape::{DeckShape, SkewedDeck, StraightDeck};
+use contact::{Pose, candidates};
 use model::{DeckBody, LinearSystem};
 use nalgebra::{Matrix3, Matrix6, Vector6};
 use thiserror::Error;
 
 pub use model::Bearing;
-pub use options::{ComplianceContact, DampingModel, JointContact, StraightDeck};
+pub use options::{ComplianceContact, DampingModel, JointContact};
 
 /// Bad simulation input (numerical trouble is reported in [`SimStatus`] instead).
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -119,8 +121,66 @@ pub struct SimModel {
     pub contact: JointContact,
     /// Damping model (default: Rayleigh with [`SimModel::damping_ratio`]).
     pub damping_model: DampingModel,
-    /// Straight rectangular decks replacing the curved deck 1 / deck 2 (`None` = curved).
-    pub straight: [Option<StraightDeck>; 2],
+    /// Deck shapes `[deck 1, deck 2]` in the frames of [`crate::shape`] (deck 1 = body frame
+    /// moved by `(0, g)`, deck 2 = body frame turned by π); `None` = the curved decks of
+    /// `arrangement` (which is then the only geometry used). When set, `arrangement` is ignored;
+    /// both joint faces must have the same length so that the decks meet face to face.
+    pub shapes: Option<[DeckShape; 2]>,
+    /// Optional rigid abutment beyond the far end of deck 1 / deck 2.
+    pub abutments: [Option<SimAbutment>; 2],
+}
+
+/// A rigid abutment (the ground) beyond the far end face of a deck.
+///
+/// Its face is the line parallel to the deck's far end face in the reference pose, at distance
+/// `gap` along that face's outward normal `n_out`. Each corner `c_k` of the far face is a contact
+/// (body a = the deck, body b = the ground) with normal `n = −n_out` (into the deck), tangent
+/// `t = perp(n) = (−n_y, n_x)` and signed gap `g_k = (P_k − A)·n`, `A` = far-face midpoint `+ gap
+/// n_out` (reference pose), `P_k` the corner in the current pose; the same impact law
+/// (ε_N, μ) as the joint. The abutment face is taken long enough for both corners.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SimAbutment {
+    /// Gap `≥ 0` between the far end face and the abutment face \[m\].
+    pub gap: Real,
+    /// Seat length `> 0` of that deck end on the abutment \[m\] (replaces
+    /// [`SimModel::seat_length`] for the far end of this deck).
+    pub seat_length: Real,
+}
+
+/// A contact of the simulation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SimContact {
+    /// Corner of one deck's joint face against the other deck's joint face (spec §5.3).
+    Joint(ContactCase),
+    /// Far-face corner `corner ∈ {0, 1}` (the shape's `c0`, `c1`) of deck `deck ∈ {1, 2}` against
+    /// its abutment.
+    Abutment {
+        /// 1 or 2.
+        deck: usize,
+        /// 0 or 1.
+        corner: usize,
+    },
+}
+
+impl SimContact {
+    /// Output name: `deck1-inner`, … (joint, [`ContactCase::name`]) or `abutment1-c0`, ….
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::Joint(c) => c.name(),
+            Self::Abutment { deck, corner } => match (deck, corner) {
+                (1, 0) => "abutment1-c0",
+                (1, _) => "abutment1-c1",
+                (_, 0) => "abutment2-c0",
+                _ => "abutment2-c1",
+            },
+        }
+    }
+}
+
+impl PartialEq<ContactCase> for SimContact {
+    fn eq(&self, other: &ContactCase) -> bool {
+        *self == SimContact::Joint(*other)
+    }
 }
 
 /// The four corners of a deck's two end faces, relative to its face midpoint `M_j`, reference
@@ -132,6 +192,18 @@ pub fn end_corner_points(arrangement: &SArrangement, deck: usize) -> [Vector; 4]
         &arrangement.deck2
     };
     let body = DeckBody::new(d, deck, 0.0);
+    [
+        body.joint_corners[0] - body.face_mid,
+        body.joint_corners[1] - body.face_mid,
+        body.far_corners[0] - body.face_mid,
+        body.far_corners[1] - body.face_mid,
+    ]
+}
+
+/// The four end-face corners of a deck of any shape relative to its joint-face midpoint `M_j`,
+/// reference pose, global orientation (deck 2 turned by π): `[joint c0, joint c1, far c0, far c1]`.
+pub fn shape_corner_points(shape: &DeckShape, deck: usize) -> [Vector; 4] {
+    let body = DeckBody::from_shape(shape, deck, 0.0);
     [
         body.joint_corners[0] - body.face_mid,
         body.joint_corners[1] - body.face_mid,
@@ -174,8 +246,56 @@ impl SimModel {
             seat_length,
             contact: JointContact::Rigid,
             damping_model: DampingModel::Rayleigh,
-            straight: [None, None],
+            shapes: None,
+            abutments: [None, None],
         }
+    }
+
+    /// A model of two decks of any shape ([`SimModel::shapes`]) with one bearing of stiffness
+    /// `k1` / `k2` at each of the four end-face corners of each deck and no abutments
+    /// (`arrangement` is set to the default curved decks and ignored).
+    #[allow(clippy::too_many_arguments)]
+    pub fn with_shapes(
+        shapes: [DeckShape; 2],
+        gap: Real,
+        k1: Real,
+        k2: Real,
+        damping_ratio: Real,
+        friction: Real,
+        restitution: Real,
+        seat_length: Real,
+    ) -> Self {
+        let b = |deck: usize, k: Real| {
+            shape_corner_points(&shapes[deck - 1], deck)
+                .into_iter()
+                .map(|point| Bearing {
+                    point,
+                    stiffness: k,
+                })
+                .collect()
+        };
+        SimModel {
+            bearings1: b(1, k1),
+            bearings2: b(2, k2),
+            gap,
+            damping_ratio,
+            friction,
+            restitution,
+            seat_length,
+            shapes: Some(shapes),
+            ..Self::default_bridge()
+        }
+    }
+
+    /// Deck masses `[m1, m2]` \[kg\].
+    pub fn masses(&self) -> [Real; 2] {
+        let b = self.bodies();
+        [b[0].mass.mass, b[1].mass.mass]
+    }
+
+    /// The decks' reference-pose bodies (global frame of spec §4).
+    pub fn deck_bodies(&self) -> [DeckBody; 2] {
+        self.bodies()
     }
 
     /// The built-in default of `pounding simulate`: R = 100 m, β = 60°, W = 10 m, t = 0.5 m,
@@ -198,16 +318,56 @@ impl SimModel {
 
     /// Validates every parameter (errors name it).
     pub fn validate(&self) -> Result<(), SimError> {
-        model::validate_deck(&self.arrangement.deck1, 1)?;
-        model::validate_deck(&self.arrangement.deck2, 2)?;
         self.validate_options()?;
-        let (w1, w2) = (self.arrangement.deck1.width, self.arrangement.deck2.width);
-        if w1 != w2 {
-            return Err(SimError::invalid(
-                "width (deck 2)",
-                w2,
-                &format!("both decks must have the same width (deck 1: {w1})"),
-            ));
+        match &self.shapes {
+            None => {
+                model::validate_deck(&self.arrangement.deck1, 1)?;
+                model::validate_deck(&self.arrangement.deck2, 2)?;
+                let (w1, w2) = (self.arrangement.deck1.width, self.arrangement.deck2.width);
+                if w1 != w2 {
+                    return Err(SimError::invalid(
+                        "width (deck 2)",
+                        w2,
+                        &format!("both decks must have the same width (deck 1: {w1})"),
+                    ));
+                }
+            }
+            Some(shapes) => {
+                for (j, sh) in shapes.iter().enumerate() {
+                    validate_shape(sh, j + 1)?;
+                }
+                let b = self.bodies();
+                let (h1, h2) = (b[0].half_face, b[1].half_face);
+                if (h1 - h2).abs() > 1e-9 * h1.max(h2) {
+                    return Err(SimError::invalid(
+                        "joint face length (deck 2)",
+                        2.0 * h2,
+                        &format!(
+                            "the joint faces must have the same length to meet face to face \
+                             (deck 1: {})",
+                            2.0 * h1
+                        ),
+                    ));
+                }
+            }
+        }
+        for (j, a) in self.abutments.iter().enumerate() {
+            if let Some(a) = a {
+                if !(a.gap.is_finite() && a.gap >= 0.0) {
+                    return Err(SimError::invalid(
+                        format!("abutment gap (deck {})", j + 1),
+                        a.gap,
+                        "must be finite and >= 0",
+                    ));
+                }
+                if !(a.seat_length.is_finite() && a.seat_length > 0.0) {
+                    return Err(SimError::invalid(
+                        format!("abutment seat_length (deck {})", j + 1),
+                        a.seat_length,
+                        "must be finite and > 0",
+                    ));
+                }
+            }
         }
         let chk = |name: &str, v: Real, ok: bool, reason: &str| {
             if ok && v.is_finite() {
@@ -258,12 +418,16 @@ impl SimModel {
     }
 
     pub(crate) fn bodies(&self) -> [DeckBody; 2] {
-        let mut b = [
-            DeckBody::new(&self.arrangement.deck1, 1, self.gap),
-            DeckBody::new(&self.arrangement.deck2, 2, self.gap),
-        ];
-        self.apply_straight(&mut b);
-        b
+        match &self.shapes {
+            None => [
+                DeckBody::new(&self.arrangement.deck1, 1, self.gap),
+                DeckBody::new(&self.arrangement.deck2, 2, self.gap),
+            ],
+            Some(sh) => [
+                DeckBody::from_shape(&sh[0], 1, self.gap),
+                DeckBody::from_shape(&sh[1], 2, self.gap),
+            ],
+        }
     }
 
     /// Assembles `M`, `K`, `C` and the natural frequencies (errors if `ζ > 0` and a deck has no
@@ -307,6 +471,37 @@ impl SimModel {
             frequencies,
             rayleigh,
         })
+    }
+}
+
+/// Re-validates one deck shape through its constructor; parameter names get the deck number
+/// (`L1`, `skew2`, `R1`, …; `width`, `thickness`, `density` keep their name).
+fn validate_shape(shape: &DeckShape, j: usize) -> Result<(), SimError> {
+    let rename = |e: GeometryError| {
+        let GeometryError::InvalidParameter {
+            name,
+            value,
+            reason,
+        } = e;
+        let name = match name.as_str() {
+            "length" => format!("L{j}"),
+            "skew" => format!("skew{j}"),
+            _ => name,
+        };
+        SimError::Geometry(GeometryError::InvalidParameter {
+            name,
+            value,
+            reason,
+        })
+    };
+    match shape {
+        DeckShape::Curved(d) => model::validate_deck(d, j),
+        DeckShape::Straight(d) => StraightDeck::new(d.length, d.width, d.thickness, d.density)
+            .map(|_| ())
+            .map_err(rename),
+        DeckShape::Skewed(d) => SkewedDeck::new(d.length, d.width, d.skew, d.thickness, d.density)
+            .map(|_| ())
+            .map_err(rename),
     }
 }
 
@@ -406,8 +601,8 @@ pub struct ImpactRecord {
     pub impact: usize,
     /// End time `t_{k+1}` of the step \[s\].
     pub time: Real,
-    /// The contact (striking corner).
-    pub contact: ContactCase,
+    /// The contact (striking corner at the joint, or a far-face corner at an abutment).
+    pub contact: SimContact,
     /// Tangential outcome (spec §10, `|γ_T⁺| ≤ 1e-9 |γ_N⁻|` is stick).
     pub mode: SlipMode,
     /// Pre-impact normal velocity `γ_N⁻ = w_Nᵀ u_k` (< 0, closing) \[m/s\].
@@ -464,6 +659,9 @@ pub struct History {
     /// Normal contact force of each joint end `[x = +W/2, x = −W/2]` \[N\] (compliance laws
     /// only; empty for rigid contact).
     pub contact_force: Vec<[Real; 2]>,
+    /// Smaller signed gap of the two far-face corners to the abutment, per deck (NaN without an
+    /// abutment) \[m\].
+    pub abutment_gaps: Vec<[Real; 2]>,
 }
 
 /// The four deck ends checked for unseating, in this order.
@@ -512,6 +710,12 @@ pub struct SimSummary {
     /// Peak penetration `max_t max(0, −min end gap)` \[m\] (rigid: the same as
     /// [`SimSummary::max_penetration`]; compliance: the law's deformation).
     pub peak_penetration: Real,
+    /// Per deck with an abutment: `max_t (gap_a − smaller corner gap)` \[m\] (`≥ gap_a` means
+    /// contact, more means penetration); `None` without an abutment.
+    pub peak_abutment_closing: [Option<Real>; 2],
+    /// Impacting contacts at the abutments (rows of [`SimSolution::impacts`] with
+    /// [`SimContact::Abutment`]).
+    pub abutment_impacting_contacts: usize,
 }
 
 /// How the run ended.
@@ -561,26 +765,41 @@ pub struct SimSolution {
     pub newton_failures: usize,
 }
 
-/// Solves the contact LCP of size `3n` (`n = 1, 2`) for `x = (P_N, P_TR, γ_TL)` (spec §8).
+/// Most contacts at once: two at the joint, two at each abutment.
+const MAX_CONTACTS: usize = 6;
+
+/// Lemke on the leading `N × N` block of `a` (fixed-size kernel).
+fn lemke_block<const N: usize>(
+    a: &[[Real; 3 * MAX_CONTACTS]; 3 * MAX_CONTACTS],
+    b: &[Real; 3 * MAX_CONTACTS],
+    settings: &LemkeSettings,
+) -> Option<Vec<Real>> {
+    let mut aa = [[0.0; N]; N];
+    let mut bb = [0.0; N];
+    for i in 0..N {
+        aa[i].copy_from_slice(&a[i][..N]);
+        bb[i] = b[i];
+    }
+    let s = lcp::solve_fixed::<N>(&aa, &bb, settings);
+    (s.status == LcpStatus::Solved).then(|| s.z.to_vec())
+}
+
+/// Solves the contact LCP of size `3n` (`n = 1 … 6`) for `x = (P_N, P_TR, γ_TL)` (spec §8).
 /// Returns `(x, lemke_ok, any_ok)`.
 fn solve_contact_lcp(
     n: usize,
-    a: &[[Real; 6]; 6],
-    b: &[Real; 6],
+    a: &[[Real; 3 * MAX_CONTACTS]; 3 * MAX_CONTACTS],
+    b: &[Real; 3 * MAX_CONTACTS],
     settings: &LemkeSettings,
 ) -> (Vec<Real>, bool, bool) {
     let m = 3 * n;
-    let sol = if n == 1 {
-        let aa = [
-            [a[0][0], a[0][1], a[0][2]],
-            [a[1][0], a[1][1], a[1][2]],
-            [a[2][0], a[2][1], a[2][2]],
-        ];
-        let s = lcp::solve_fixed::<3>(&aa, &[b[0], b[1], b[2]], settings);
-        (s.status == LcpStatus::Solved).then(|| s.z.to_vec())
-    } else {
-        let s = lcp::solve_fixed::<6>(a, b, settings);
-        (s.status == LcpStatus::Solved).then(|| s.z.to_vec())
+    let sol = match n {
+        1 => lemke_block::<3>(a, b, settings),
+        2 => lemke_block::<6>(a, b, settings),
+        3 => lemke_block::<9>(a, b, settings),
+        4 => lemke_block::<12>(a, b, settings),
+        5 => lemke_block::<15>(a, b, settings),
+        _ => lemke_block::<18>(a, b, settings),
     };
     if let Some(z) = sol {
         return (z, true, true);
@@ -596,7 +815,7 @@ fn solve_contact_lcp(
 }
 
 /// An active contact with its `w_N`, `w_T`.
-type ActiveContact = (Candidate, [Real; 6], [Real; 6]);
+type ActiveContact = (SimContact, [Real; 6], [Real; 6]);
 
 #[inline]
 fn dot6(a: &[Real; 6], b: &Vector6<Real>) -> Real {
@@ -666,7 +885,33 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
     let b_g = -(winv * mr) * h;
 
     let bodies = model.bodies();
-    let half_w = model.arrangement.deck1.width / 2.0;
+    let half_w = bodies[0].half_face;
+    // abutments: (deck index j, normal n into the deck, tangent t = perp(n), face point A, gap)
+    let abut: Vec<(usize, Vector, Vector, Vector, Real)> = model
+        .abutments
+        .iter()
+        .enumerate()
+        .filter_map(|(j, a)| {
+            a.map(|a| {
+                let n = bodies[j].far_inward;
+                (
+                    j,
+                    n,
+                    Vector::new(-n.y, n.x),
+                    bodies[j].far_mid() - n * a.gap,
+                    a.gap,
+                )
+            })
+        })
+        .collect();
+    let mut seat_len = [model.seat_length; 4];
+    for (j, a) in model.abutments.iter().enumerate() {
+        if let Some(a) = a {
+            seat_len[2 * j + 1] = a.seat_length;
+        }
+    }
+    let mut peak_abut: [Option<Real>; 2] = [None, None];
+    let mut n_abut_contacts = 0usize;
     let (mu, eps) = (model.friction, model.restitution);
     let g0 = model.gap;
 
@@ -732,9 +977,20 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
                 .map(|p| (pose.place(&bodies, *j, p) - p).dot(n_in))
                 .fold(Real::NEG_INFINITY, Real::max);
             peak_seat[e] = peak_seat[e].max(s);
-            if unseat.is_none() && s > model.seat_length {
+            if unseat.is_none() && s > seat_len[e] {
                 unseat = Some((t, e));
             }
+        }
+        let mut abut_gaps = [Real::NAN; 2];
+        for &(j, n, _, a, ga) in &abut {
+            let gm = bodies[j]
+                .far_corners
+                .iter()
+                .map(|c| (pose.place(&bodies, j, c) - a).dot(&n))
+                .fold(Real::INFINITY, Real::min);
+            abut_gaps[j] = gm;
+            let pk = peak_abut[j].get_or_insert(Real::NEG_INFINITY);
+            *pk = pk.max(ga - gm);
         }
         let (tk, vk) = energy_of(&q, &u);
         let bal = e0 + w_in - (tk + vk + d_visc + d_cont);
@@ -747,6 +1003,7 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
             hist.gaps.push(cands.map(|c| c.gap));
             hist.end_gaps.push(end_gaps);
             hist.slip.push(slip);
+            hist.abutment_gaps.push(abut_gaps);
             hist.energy.push(Energy {
                 input: w_in,
                 kinetic: tk,
@@ -761,47 +1018,68 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
         // ---- step k → k+1 ----
         let abar = ag[k] * (1.0 - th) + ag[k + 1] * th;
         let u_free = u + a_u * u + a_q * q + b_g * nalgebra::Vector2::new(abar.x, abar.y);
-        let mut active: [Option<ActiveContact>; 2] = [None, None];
+        let mut active: [Option<ActiveContact>; MAX_CONTACTS] = [None; MAX_CONTACTS];
         let mut n_act = 0;
         for s in sel.iter().flatten() {
             let c = cands[*s];
             let (wn, wt) = c.force_directions(&pose);
             if c.gap + h * dot6(&wn, &u) <= 0.0 {
-                active[n_act] = Some((c, wn, wt));
+                active[n_act] = Some((SimContact::Joint(c.case), wn, wt));
                 n_act += 1;
+            }
+        }
+        for &(j, n, tn, a, _) in &abut {
+            for (k, c0) in bodies[j].far_corners.iter().enumerate() {
+                let pc = pose.place(&bodies, j, c0);
+                let r = pc - pose.g[j];
+                let mut wn = [0.0; 6];
+                let mut wt = [0.0; 6];
+                wn[3 * j..3 * j + 3].copy_from_slice(&[n.x, n.y, cross(&r, &n)]);
+                wt[3 * j..3 * j + 3].copy_from_slice(&[tn.x, tn.y, cross(&r, &tn)]);
+                if (pc - a).dot(&n) + h * dot6(&wn, &u) <= 0.0 {
+                    active[n_act] = Some((
+                        SimContact::Abutment {
+                            deck: j + 1,
+                            corner: k,
+                        },
+                        wn,
+                        wt,
+                    ));
+                    n_act += 1;
+                }
             }
         }
         let mut u_new = u_free;
         if n_act > 0 {
             lcp_solves += 1;
             // W columns, Ŵ⁻¹ W, Delassus G (order N_1..N_n, T_1..T_n)
-            let mut wcols = [[0.0; 6]; 4];
+            let mut wcols = [[0.0; 6]; 2 * MAX_CONTACTS];
             for (i, a) in active.iter().take(n_act).enumerate() {
                 let (_, wn, wt) = a.as_ref().unwrap();
                 wcols[i] = *wn;
                 wcols[n_act + i] = *wt;
             }
             let nc = 2 * n_act;
-            let mut wiw = [Vector6::zeros(); 4];
+            let mut wiw = [Vector6::zeros(); 2 * MAX_CONTACTS];
             for i in 0..nc {
                 wiw[i] = winv * Vector6::from(wcols[i]);
             }
-            let mut g = [[0.0; 4]; 4];
+            let mut g = [[0.0; 2 * MAX_CONTACTS]; 2 * MAX_CONTACTS];
             for i in 0..nc {
                 for j in 0..nc {
                     g[i][j] = dot6(&wcols[i], &wiw[j]);
                 }
             }
             let n = n_act;
-            let mut gam_pre = [0.0; 4];
-            let mut gam_free = [0.0; 4];
+            let mut gam_pre = [0.0; 2 * MAX_CONTACTS];
+            let mut gam_free = [0.0; 2 * MAX_CONTACTS];
             for i in 0..nc {
                 gam_pre[i] = dot6(&wcols[i], &u);
                 gam_free[i] = dot6(&wcols[i], &u_free);
             }
             // LCP matrix (spec §8) of size 3n
-            let mut a = [[0.0; 6]; 6];
-            let mut b = [0.0; 6];
+            let mut a = [[0.0; 3 * MAX_CONTACTS]; 3 * MAX_CONTACTS];
+            let mut b = [0.0; 3 * MAX_CONTACTS];
             for i in 0..n {
                 for j in 0..n {
                     a[i][j] = g[i][j] - g[i][n + j] * mu;
@@ -822,8 +1100,8 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
                 } else {
                     lcp_fail += 1;
                     // frictionless fallback: LCP in P_N only
-                    let mut a0 = [[0.0; 6]; 6];
-                    let mut b0 = [0.0; 6];
+                    let mut a0 = [[0.0; 3 * MAX_CONTACTS]; 3 * MAX_CONTACTS];
+                    let mut b0 = [0.0; 3 * MAX_CONTACTS];
                     for i in 0..n {
                         for j in 0..n {
                             a0[i][j] = g[i][j];
@@ -842,7 +1120,7 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
                     }
                 }
             }
-            let mut p = [0.0; 4];
+            let mut p = [0.0; 2 * MAX_CONTACTS];
             for i in 0..n {
                 p[i] = z[i];
                 p[n + i] = z[n + i] - mu * z[i];
@@ -850,7 +1128,7 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
             for i in 0..nc {
                 u_new += wiw[i] * p[i];
             }
-            let mut gam_post = [0.0; 4];
+            let mut gam_post = [0.0; 2 * MAX_CONTACTS];
             for i in 0..nc {
                 gam_post[i] = dot6(&wcols[i], &u_new);
             }
@@ -871,10 +1149,14 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
                     let nrm = -gam_pre[i];
                     let gt = gam_post[n + i];
                     let mode = SlipMode::classify(gt, nrm);
+                    let contact = active[i].as_ref().unwrap().0;
+                    if matches!(contact, SimContact::Abutment { .. }) {
+                        n_abut_contacts += 1;
+                    }
                     impacts.push(ImpactRecord {
                         impact: n_impacts,
                         time: t + h,
-                        contact: active[i].as_ref().unwrap().0.case,
+                        contact,
                         mode,
                         gamma_n_pre: gam_pre[i],
                         gamma_t_pre: gam_pre[n + i],
@@ -931,6 +1213,8 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
         max_input_energy: max_in,
         peak_contact_force: None,
         peak_penetration: max_pen,
+        peak_abutment_closing: peak_abut,
+        abutment_impacting_contacts: n_abut_contacts,
     };
     Ok(SimSolution {
         status,

@@ -2,8 +2,9 @@
 //! mass / stiffness / Rayleigh-damping matrices.
 
 use super::SimError;
-use crate::geometry::{Deck, MassProperties};
+use crate::geometry::Deck;
 use crate::math::{Real, Vector};
+use crate::shape::{DeckEnd, DeckShape, PlanarMassProperties};
 use nalgebra::{Matrix3, Matrix6};
 
 /// One discrete elastic bearing: a linear spring of equal stiffness `k` in x and y, attached to a
@@ -37,8 +38,8 @@ pub(crate) fn validate_deck(deck: &Deck, j: usize) -> Result<(), SimError> {
 /// A deck's body-fixed points in the reference pose, global frame of spec §4.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DeckBody {
-    /// Mass properties.
-    pub mass: MassProperties,
+    /// Mass properties (`centroid` in the deck's body frame, see [`crate::shape`]).
+    pub mass: PlanarMassProperties,
     /// Reference centroid `G⁰` (global).
     pub centroid: Vector,
     /// Reference face midpoint `M⁰` (global): `(0, g)` for deck 1, `(0, 0)` for deck 2.
@@ -54,6 +55,9 @@ pub struct DeckBody {
     pub joint_inward: Vector,
     /// Unit normal of the far end face pointing into the deck.
     pub far_inward: Vector,
+    /// Half the joint-face length (`W/2`; `W/(2 cos θ_s)` for a skewed deck) \[m\]: a corner of
+    /// the other deck lies over this face iff `|σ| ≤ half_face`.
+    pub half_face: Real,
 }
 
 impl DeckBody {
@@ -61,7 +65,7 @@ impl DeckBody {
     /// deck 1 points `M_1 + (R_1 − r cos φ, r sin φ)`, deck 2 points `M_2 + (−R_2 + r cos φ, −r sin φ)`,
     /// `r ∈ [R − W/2, R + W/2]`, `φ ∈ [0, β]`.
     pub fn new(deck: &Deck, j: usize, gap: Real) -> Self {
-        let mass = deck.mass_properties();
+        let mp = deck.mass_properties();
         let (r, w, b) = (deck.radius, deck.width, deck.angle);
         let s = if j == 1 { 1.0 } else { -1.0 };
         let face_mid = if j == 1 {
@@ -74,8 +78,13 @@ impl DeckBody {
         let ri = r - w / 2.0;
         let ro = r + w / 2.0;
         DeckBody {
-            mass,
-            centroid: face_mid + Vector::new(s * (r - mass.x_m), s * mass.y_m),
+            mass: PlanarMassProperties {
+                area: mp.area,
+                mass: mp.mass,
+                centroid: Vector::new(r - mp.x_m, mp.y_m),
+                inertia: mp.inertia,
+            },
+            centroid: face_mid + Vector::new(s * (r - mp.x_m), s * mp.y_m),
             face_mid,
             joint_corners: [face_mid + pt(ri, 0.0), face_mid + pt(ro, 0.0)],
             far_corners: [face_mid + pt(ri, b), face_mid + pt(ro, b)],
@@ -84,7 +93,42 @@ impl DeckBody {
             // d/dφ of the body point: s (ρ sin φ, ρ cos φ) points into the deck at φ = 0 and out
             // of it at φ = β.
             far_inward: -Vector::new(s * b.sin(), s * b.cos()),
+            half_face: w / 2.0,
         }
+    }
+
+    /// Reference-pose body of deck `j ∈ {1, 2}` of any [`DeckShape`] (frames of [`crate::shape`]):
+    /// deck 1 is the body frame translated by `(0, g)`, deck 2 the body frame turned by π about
+    /// the origin, so the two joint faces lie on `y = g` and `y = 0` and the decks meet face to
+    /// face. Corner `k` of the joint face is the shape's `c_k` (curved: `c0` = inner; straight /
+    /// skewed: `c0` = acute corner), so deck 1's `c0` and deck 2's `c1` lie at `x = +b/2`.
+    pub fn from_shape(shape: &DeckShape, j: usize, gap: Real) -> Self {
+        let mass = shape.mass_properties();
+        let jf = shape.end_face(DeckEnd::Joint);
+        let ff = shape.end_face(DeckEnd::Far);
+        let (s, off) = if j == 1 {
+            (1.0, Vector::new(0.0, gap))
+        } else {
+            (-1.0, Vector::zeros())
+        };
+        let w = |p: Vector| off + p * s;
+        let jc = [w(jf.corners[0]), w(jf.corners[1])];
+        DeckBody {
+            mass,
+            centroid: w(mass.centroid),
+            face_mid: off,
+            joint_corners: jc,
+            far_corners: [w(ff.corners[0]), w(ff.corners[1])],
+            face_dir: (jc[1] - jc[0]).normalize(),
+            joint_inward: -jf.outward_normal * s,
+            far_inward: -ff.outward_normal * s,
+            half_face: 0.5 * jf.length(),
+        }
+    }
+
+    /// Midpoint of the far end face (reference pose, global).
+    pub fn far_mid(&self) -> Vector {
+        (self.far_corners[0] + self.far_corners[1]) * 0.5
     }
 
     /// Position of the body point with reference position `p0` when the deck's centroid is
@@ -112,7 +156,7 @@ pub fn bearing_stiffness(body: &DeckBody, bearings: &[Bearing]) -> Matrix3<Real>
 
 /// Natural circular frequencies `ω_1 ≤ ω_2 ≤ ω_3` \[rad/s\] of `K φ = ω² M φ` for one deck
 /// (`M = diag(m, m, I)`).
-pub fn deck_frequencies(mass: &MassProperties, k: &Matrix3<Real>) -> [Real; 3] {
+pub fn deck_frequencies(mass: &PlanarMassProperties, k: &Matrix3<Real>) -> [Real; 3] {
     let d = nalgebra::Vector3::new(
         mass.mass.sqrt().recip(),
         mass.mass.sqrt().recip(),

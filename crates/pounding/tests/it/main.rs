@@ -1,12 +1,16 @@
 //! Integration tests of the `pounding` library (one test binary; one module per topic).
 
 mod analytic;
+mod batch;
 mod common;
 mod contact;
 mod contact_law;
+mod event_exact;
 mod geometry;
 mod ground_motion;
 mod impact;
 mod lcp;
+mod shapes;
 mod sim;
 mod sim_compliance;
+mod sim_shapes;

@@ -3,9 +3,10 @@
 
 use pounding::contact_law::{BilinearImpact, ContactLaw, units};
 use pounding::ground_motion::{GroundMotion, el_centro_1940};
+use pounding::shape::{DeckShape, StraightDeck};
 use pounding::sim::{
     ComplianceContact, DampingModel, JointContact, SimModel, SimProblem, SimSettings, SimStatus,
-    StraightDeck, simulate,
+    simulate,
 };
 use std::f64::consts::PI;
 
@@ -16,33 +17,17 @@ fn rel(a: f64, b: f64) -> f64 {
 /// Two straight decks of mass `m` (L = 30 m, W = 10 m) with 4 symmetric corner bearings giving
 /// translational periods `t1` (deck 1) and `t2` (deck 2), dashpot damping `ζ`, gap `g`.
 fn straight_model(m: f64, t1: f64, t2: f64, zeta: f64, gap: f64, law: JointContact) -> SimModel {
-    let mut model = SimModel::default_bridge();
-    model.gap = gap;
-    model.damping_ratio = zeta;
+    let (l, w, t) = (30.0, 10.0, 0.5);
+    let deck = DeckShape::Straight(StraightDeck {
+        length: l,
+        width: w,
+        thickness: t,
+        density: m / (l * w * t),
+    });
+    let k = |p: f64| m * (2.0 * PI / p).powi(2) / 4.0;
+    let mut model = SimModel::with_shapes([deck, deck], gap, k(t1), k(t2), zeta, 0.0, 0.5, 0.4);
     model.damping_model = DampingModel::TranslationalDashpots;
-    model.friction = 0.0;
     model.contact = law;
-    let sd = StraightDeck {
-        length: 30.0,
-        mass: Some(m),
-    };
-    model.straight = [Some(sd), Some(sd)];
-    for (j, t) in [(1, t1), (2, t2)] {
-        let k = m * (2.0 * PI / t).powi(2) / 4.0;
-        let pts = model.deck_corner_points(j);
-        let b: Vec<_> = pts
-            .iter()
-            .map(|p| pounding::sim::Bearing {
-                point: *p,
-                stiffness: k,
-            })
-            .collect();
-        if j == 1 {
-            model.bearings1 = b;
-        } else {
-            model.bearings2 = b;
-        }
-    }
     model
 }
 
@@ -77,15 +62,9 @@ fn straight_decks_with_dashpots_have_the_requested_periods_and_damping() {
     assert_eq!(sys.damping[(2, 2)], 0.0);
     // symmetric bearings: no y–θ coupling
     assert!(sys.stiffness[(1, 2)].abs() < 1e-6 * sys.stiffness[(1, 1)]);
-    // mass from ρ t L W when not given
-    let mut m2 = m.clone();
-    m2.straight[0] = Some(StraightDeck {
-        length: 20.0,
-        mass: None,
-    });
-    let mp = m2.deck_mass_properties(1).unwrap();
-    assert!(rel(mp.mass, 2500.0 * 0.5 * 20.0 * 10.0) < 1e-12);
-    assert!(rel(mp.inertia, mp.mass * (400.0 + 100.0) / 12.0) < 1e-12);
+    let mp = m.deck_bodies()[0].mass;
+    assert!(rel(mp.mass, 1.0e6) < 1e-12);
+    assert!(rel(mp.inertia, mp.mass * (900.0 + 100.0) / 12.0) < 1e-12);
 }
 
 /// The OpenSees benchmark (OpenSees 3.7.1: 6 impacts, 44.30 MN, closing 0.05404 m)

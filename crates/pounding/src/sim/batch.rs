@@ -1,0 +1,232 @@
+//! Batch runs for fragility studies and incremental dynamic analysis (IDA): one simulation per
+//! `(record, scale)` pair, in parallel, in a deterministic row order.
+//!
+//! # Runs and rows
+//! With records `r_0 … r_{R−1}` and scale factors `s_0 … s_{S−1}`, run `i = a S + b` uses record
+//! `r_a` as the **only** ground-motion component, acting along `Rot(α) ŷ` (normal to the joint for
+//! the incidence `α = 0` of the base problem), with scale factor `s_b · scale_y` where `scale_y`
+//! is the base problem's factor. This is exactly the single run of `pounding simulate --record r_a
+//! --scale s_b` ([`run_problem`] builds it), so a batch row equals that run's summary bit for bit.
+//!
+//! Rows come back in increasing `i` whatever the number of threads (rayon's ordered collect; each
+//! run is sequential and deterministic). A [`BatchShard`] `K/N` keeps only the runs with
+//! `i mod N = K − 1`, so the union of the rows of all `N` shards, sorted by `i`, is the unsharded
+//! result.
+//!
+//! A record that could not be read does not stop the batch: its rows carry the error
+//! ([`BatchRow::outcome`]) and every other run is still done.
+
+use super::{SimError, SimProblem, SimSettings, SimSolution, SimStatus, SimSummary, simulate};
+use crate::ground_motion::{GroundMotion, Record};
+use crate::math::Real;
+use rayon::prelude::*;
+
+/// Which runs a batch computes: those whose global index `i` satisfies `i mod count = index − 1`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct BatchShard {
+    /// `K`, 1-based.
+    pub index: usize,
+    /// `N ≥ 1`.
+    pub count: usize,
+}
+
+impl BatchShard {
+    /// Every run (`1/1`).
+    pub const ALL: BatchShard = BatchShard { index: 1, count: 1 };
+
+    /// Validated shard `K/N` with `1 ≤ K ≤ N`.
+    pub fn new(index: usize, count: usize) -> Result<Self, SimError> {
+        if count == 0 || index == 0 || index > count {
+            return Err(SimError::invalid(
+                format!("shard {index}/{count}"),
+                index as Real,
+                "need 1 <= K <= N",
+            ));
+        }
+        Ok(Self { index, count })
+    }
+
+    /// Parses `K/N` (errors name `--shard`).
+    pub fn parse(s: &str) -> Result<Self, SimError> {
+        let bad = || {
+            SimError::invalid(
+                format!("--shard {s:?}"),
+                Real::NAN,
+                "expected K/N with 1 <= K <= N",
+            )
+        };
+        let (k, n) = s.split_once('/').ok_or_else(bad)?;
+        let k = k.trim().parse::<usize>().map_err(|_| bad())?;
+        let n = n.trim().parse::<usize>().map_err(|_| bad())?;
+        Self::new(k, n).map_err(|_| bad())
+    }
+
+    /// Whether global run `i` belongs to this shard.
+    pub fn contains(&self, i: usize) -> bool {
+        i % self.count == self.index - 1
+    }
+}
+
+/// One ground-motion record of a batch, or the reason it could not be read.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BatchRecord {
+    /// Name in the output (the path as given).
+    pub name: String,
+    /// The record (accelerations in m/s²), or the error message that names the file.
+    pub record: Result<Record, String>,
+}
+
+/// What one run produced.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BatchOutcome {
+    /// How the run ended.
+    pub status: SimStatus,
+    /// Peaks, unseating and energies (as in a single run).
+    pub summary: SimSummary,
+    /// Steps taken.
+    pub steps: usize,
+    /// Step size \[s\].
+    pub dt: Real,
+    /// Steps with an LCP solve.
+    pub lcp_solves: usize,
+    /// LCP solves that fell back to enumeration.
+    pub lcp_enumeration_fallbacks: usize,
+    /// LCP solves that failed.
+    pub lcp_failures: usize,
+}
+
+impl From<SimSolution> for BatchOutcome {
+    fn from(s: SimSolution) -> Self {
+        Self {
+            status: s.status,
+            summary: s.summary,
+            steps: s.steps,
+            dt: s.dt,
+            lcp_solves: s.lcp_solves,
+            lcp_enumeration_fallbacks: s.lcp_enumeration_fallbacks,
+            lcp_failures: s.lcp_failures,
+        }
+    }
+}
+
+/// One row of a batch (one run).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BatchRow {
+    /// Global run index `i = record_index · (number of scales) + scale_index`.
+    pub index: usize,
+    /// Index of the record.
+    pub record_index: usize,
+    /// Record name.
+    pub record: String,
+    /// Index of the scale factor.
+    pub scale_index: usize,
+    /// Scale factor `s` of this run (multiplies the base problem's `scale_y`).
+    pub scale: Real,
+    /// Peak ground acceleration of the applied (scaled) component, `|s · scale_y| · max|a|`
+    /// \[m/s²\]; NaN when the record could not be read.
+    pub pga: Real,
+    /// The run's result, or the error (an unreadable record, or a simulation input error).
+    pub outcome: Result<BatchOutcome, String>,
+}
+
+/// The problem of one run: `base` with `record` as its only component along `Rot(α) ŷ`, scale
+/// factors multiplied by `scale` (the single run `pounding simulate --record R --scale S`).
+pub fn run_problem(base: &SimProblem, record: &Record, scale: Real) -> SimProblem {
+    SimProblem {
+        model: base.model.clone(),
+        ground: GroundMotion {
+            along_y: Some(record.clone()),
+            scale_y: base.ground.scale_y * scale,
+            along_x: None,
+            scale_x: base.ground.scale_x * scale,
+            incidence: base.ground.incidence,
+        },
+        q0: base.q0,
+        u0: base.u0,
+    }
+}
+
+/// Checks the batch lists: at least one record and one scale, every scale finite.
+pub fn validate_lists(records: &[BatchRecord], scales: &[Real]) -> Result<(), SimError> {
+    if records.is_empty() {
+        return Err(SimError::invalid(
+            "--records",
+            0.0,
+            "need at least one record",
+        ));
+    }
+    if scales.is_empty() {
+        return Err(SimError::invalid(
+            "--scales",
+            0.0,
+            "need at least one scale",
+        ));
+    }
+    for (i, &s) in scales.iter().enumerate() {
+        if !s.is_finite() {
+            return Err(SimError::invalid(
+                format!("--scales[{}]", i + 1),
+                s,
+                "must be finite",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Runs every `(record, scale)` pair of `shard` in parallel on the current rayon pool and returns
+/// the rows in increasing global index (module docs). `progress(1)` is called after each run.
+///
+/// Errors (bad input for the whole batch: the model, the settings, the lists) are returned before
+/// any run starts; per-run problems are in [`BatchRow::outcome`]. The settings' history stride
+/// is ignored (no history is kept; the summary does not depend on it).
+pub fn run_batch(
+    base: &SimProblem,
+    settings: &SimSettings,
+    records: &[BatchRecord],
+    scales: &[Real],
+    shard: BatchShard,
+    progress: &(dyn Fn(usize) + Sync),
+) -> Result<Vec<BatchRow>, SimError> {
+    validate_lists(records, scales)?;
+    settings.validate()?;
+    base.model.linear_system()?;
+    let settings = SimSettings {
+        history_stride: usize::MAX,
+        ..settings.clone()
+    };
+    let ns = scales.len();
+    let todo: Vec<usize> = (0..records.len() * ns)
+        .filter(|&i| shard.contains(i))
+        .collect();
+    let rows = todo
+        .par_iter()
+        .map(|&i| {
+            let (a, b) = (i / ns, i % ns);
+            let rec = &records[a];
+            let scale = scales[b];
+            let (pga, outcome) = match &rec.record {
+                Err(msg) => (Real::NAN, Err(msg.clone())),
+                Ok(r) => {
+                    let p = run_problem(base, r, scale);
+                    let pga = r.pga() * p.ground.scale_y.abs();
+                    let out = simulate(&p, &settings)
+                        .map(BatchOutcome::from)
+                        .map_err(|e| format!("{}: {e}", rec.name));
+                    (pga, out)
+                }
+            };
+            progress(1);
+            BatchRow {
+                index: i,
+                record_index: a,
+                record: rec.name.clone(),
+                scale_index: b,
+                scale,
+                pga,
+                outcome,
+            }
+        })
+        .collect();
+    Ok(rows)
+}
