@@ -22,7 +22,10 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 #[path = "sim_plots.rs"]
-mod sim_plots;
+pub(crate) mod sim_plots;
+
+#[path = "sim_contact.rs"]
+pub(crate) mod sim_contact;
 
 #[path = "sim_batch.rs"]
 mod sim_batch;
@@ -125,6 +128,8 @@ struct Scenario {
     ground_motion: GroundSec,
     #[serde(default)]
     time: TimeSec,
+    #[serde(default)]
+    contact: sim_contact::ContactSec,
 }
 
 #[derive(Deserialize)]
@@ -138,6 +143,11 @@ struct DecksSec {
     width: f64,
     thickness: f64,
     density: f64,
+    shape: String,
+    L1: f64,
+    L2: f64,
+    mass1: Option<f64>,
+    mass2: Option<f64>,
 }
 impl Default for DecksSec {
     fn default() -> Self {
@@ -149,6 +159,11 @@ impl Default for DecksSec {
             width: 10.0,
             thickness: 0.5,
             density: 2500.0,
+            shape: "curved".into(),
+            L1: 30.0,
+            L2: 30.0,
+            mass1: None,
+            mass2: None,
         }
     }
 }
@@ -180,6 +195,7 @@ struct BearingsSec {
     damping_ratio: f64,
     points1: Option<Vec<[f64; 2]>>,
     points2: Option<Vec<[f64; 2]>>,
+    damping: String,
 }
 impl Default for BearingsSec {
     fn default() -> Self {
@@ -189,6 +205,7 @@ impl Default for BearingsSec {
             damping_ratio: 0.05,
             points1: None,
             points2: None,
+            damping: "rayleigh".into(),
         }
     }
 }
@@ -312,9 +329,9 @@ fn sim_error(src: &Source, e: SimError) -> anyhow::Error {
 }
 
 /// Everything needed to run, built and validated from the scenario and the flags.
-struct Setup {
-    problem: SimProblem,
-    settings: SimSettings,
+pub(crate) struct Setup {
+    pub(crate) problem: SimProblem,
+    pub(crate) settings: SimSettings,
     records: [String; 2],
     /// Units of `.csv` records.
     units: AccelUnits,
@@ -347,6 +364,11 @@ fn load_record(src: &Source, spec: &str, key: &str, units: AccelUnits) -> Result
 }
 
 fn build(args: &Args) -> Result<Setup> {
+    build_with(args, None)
+}
+
+/// [`build`] with the joint's contact law replaced by `law` (a [`sim_contact::LAW_NAMES`] name).
+pub(crate) fn build_with(args: &Args, law: Option<&str>) -> Result<Setup> {
     let src = match &args.scenario {
         Some(p) => {
             let text = std::fs::read_to_string(p)
@@ -400,6 +422,8 @@ fn build(args: &Args) -> Result<Setup> {
     );
     // Validate the decks before using them for the default bearing points.
     model.validate().map_err(|e| sim_error(&src, e))?;
+    sim_contact::apply_shape_and_damping(&src, d, &b.damping, &mut model)?;
+    model.contact = sim_contact::build_contact(&src, &sc.contact, law, j.eps_n, model.masses())?;
     for (deck_no, pts, k, key) in [
         (1, &b.points1, b.stiffness1, "points1"),
         (2, &b.points2, b.stiffness2, "points2"),
@@ -486,6 +510,7 @@ fn build(args: &Args) -> Result<Setup> {
             src.key_ref("time", "duration")
         );
     }
+    // The straight-deck / dashpot / contact options are validated with the model.
     Ok(Setup {
         problem: SimProblem::at_rest(model, ground),
         settings,
@@ -508,6 +533,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let t_sim = Instant::now();
     let sol = simulate(&setup.problem, &setup.settings).map_err(|e| anyhow!("{e}"))?;
     let sim_secs = t_sim.elapsed().as_secs_f64();
+    warn_time_step(&sol);
 
     let out = &args.out;
     std::fs::create_dir_all(out)
@@ -562,7 +588,20 @@ pub fn run(args: Args) -> Result<ExitCode> {
 
 const DEG: Real = 180.0 / std::f64::consts::PI;
 
-fn history_csv(setup: &Setup, sol: &SimSolution) -> String {
+/// Prints a warning to stderr when a compliance law's contact is not resolved by `dt`.
+pub(crate) fn warn_time_step(sol: &SimSolution) {
+    if let Some(a) = &sol.time_step_advice
+        && !a.adequate
+    {
+        eprintln!(
+            "warning: dt = {} s is too coarse for the contact stiffness: the linearised contact \
+             lasts {:.3e} s = {:.1} steps; use dt <= {:.2e} s (20 steps per contact)",
+            sol.dt, a.contact_duration, a.steps_per_contact, a.max_step
+        );
+    }
+}
+
+pub(crate) fn history_csv(setup: &Setup, sol: &SimSolution) -> String {
     let h = &sol.history;
     let mut s = String::with_capacity(h.t.len() * 400);
     s.push_str(
@@ -574,8 +613,13 @@ fn history_csv(setup: &Setup, sol: &SimSolution) -> String {
     }
     s.push_str(
         "joint_gap_xplus_m,joint_gap_xminus_m,slip_m,\
-         input_energy_J,kinetic_energy_J,strain_energy_J,viscous_dissipation_J,contact_dissipation_J\n",
+         input_energy_J,kinetic_energy_J,strain_energy_J,viscous_dissipation_J,contact_dissipation_J",
     );
+    let forces = !h.contact_force.is_empty();
+    if forces {
+        s.push_str(",contact_force_xplus_N,contact_force_xminus_N");
+    }
+    s.push('\n');
     let mut row: Vec<String> = Vec::with_capacity(32);
     for i in 0..h.t.len() {
         row.clear();
@@ -597,13 +641,16 @@ fn history_csv(setup: &Setup, sol: &SimSolution) -> String {
         for v in [e.input, e.kinetic, e.potential, e.viscous, e.contact] {
             row.push(float_token(v));
         }
+        if forces {
+            row.extend(h.contact_force[i].iter().map(|&f| float_token(f)));
+        }
         s.push_str(&row.join(","));
         s.push('\n');
     }
     s
 }
 
-fn impacts_csv(sol: &SimSolution) -> String {
+pub(crate) fn impacts_csv(sol: &SimSolution) -> String {
     let mut s = String::from(
         "impact,t_s,contact,mode,gamma_n_pre_mps,gamma_t_pre_mps,gamma_n_post_mps,gamma_t_post_mps,\
          impulse_n_Ns,impulse_t_Ns,energy_dissipated_J\n",
@@ -632,7 +679,7 @@ fn impacts_csv(sol: &SimSolution) -> String {
     s
 }
 
-fn summary_json(setup: &Setup, sol: &SimSolution) -> serde_json::Value {
+pub(crate) fn summary_json(setup: &Setup, sol: &SimSolution) -> serde_json::Value {
     let s = &sol.summary;
     let e = &s.final_energy;
     let m = &setup.problem.model;
@@ -643,7 +690,7 @@ fn summary_json(setup: &Setup, sol: &SimSolution) -> serde_json::Value {
         .zip(s.peak_seat_by_end)
         .map(|(k, v)| (k.to_string(), json_float(v)))
         .collect();
-    json!({
+    let mut v = json!({
         "impacts": s.impacts,
         "impacting_contacts": s.impacting_contacts,
         "peak_joint_closing_m": json_float(s.peak_joint_closing),
@@ -657,6 +704,8 @@ fn summary_json(setup: &Setup, sol: &SimSolution) -> serde_json::Value {
         "unseating_time_s": s.unseating_time.map_or(serde_json::Value::Null, json_float),
         "unseated_end": s.unseated_end.map(|i| SEAT_ENDS[i]),
         "max_penetration_m": json_float(s.max_penetration),
+        "peak_contact_force_n": s.peak_contact_force.map_or(serde_json::Value::Null, json_float),
+        "peak_penetration_m": json_float(s.peak_penetration),
         "energy_balance_error": json_float(s.energy_balance_error),
         "energy_J": {
             "input": json_float(e.input),
@@ -692,5 +741,7 @@ fn summary_json(setup: &Setup, sol: &SimSolution) -> serde_json::Value {
             "damping_ratio": json_float(m.damping_ratio),
             "bearings": [m.bearings1.len(), m.bearings2.len()],
         },
-    })
+    });
+    sim_contact::add_compliance_summary(&mut v, m, sol);
+    v
 }
