@@ -250,7 +250,9 @@ fn color_of(law: &str) -> RGBColor {
 }
 
 /// `(t, smaller end gap)` and `(t, total joint force)` series of one run.
-fn series(r: &Run) -> (Vec<(Real, Real)>, Vec<(Real, Real)>) {
+type Pts = Vec<(Real, Real)>;
+
+fn series(r: &Run) -> (Pts, Pts) {
     let h = &r.sol.history;
     let gap =
         h.t.iter()
@@ -409,8 +411,7 @@ fn plots(out: &Path, runs: &[Run]) -> R {
         .fold(0.0, Real::max)
         .max(1e-9);
     let zoom = zoom_window(runs);
-    let all: Vec<(&str, (Vec<(Real, Real)>, Vec<(Real, Real)>))> =
-        runs.iter().map(|r| (r.law.as_str(), series(r))).collect();
+    let all: Vec<(&str, (Pts, Pts))> = runs.iter().map(|r| (r.law.as_str(), series(r))).collect();
     let gaps: Vec<(&str, Vec<(Real, Real)>)> =
         all.iter().map(|(l, (g, _))| (*l, g.clone())).collect();
     let forces: Vec<(&str, Vec<(Real, Real)>)> = all
