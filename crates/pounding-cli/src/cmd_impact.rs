@@ -1077,6 +1077,10 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
                 "condition_holds".into(),
                 json!(d.rotates_on_abutment_impact()),
             );
+            m.insert(
+                "friction_condition_holds".into(),
+                json!(d.rotates_on_abutment_impact_with(&law)),
+            );
         }
         let contacts: Vec<Value> = s
             .contacts
@@ -1155,6 +1159,18 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
             ),
             _ => format!("  frictionless criterion (centroid's foot beyond the face): {predicted}"),
         });
+        if let DeckShape::Skewed(d) = &shape
+            && mu > 0.0
+        {
+            lines.push(format!(
+                "  with friction: sin 2θ_s − μ_eff (1 + cos 2θ_s) > 2W/L, μ_eff = min(μ, tan θ_s/(1+ε)): {}",
+                if d.rotates_on_abutment_impact_with(&law) {
+                    "rotation about the obtuse corner"
+                } else {
+                    "no rotation"
+                }
+            ));
+        }
     }
     if a.json {
         println!("{}", serde_json::to_string_pretty(&Value::Object(out))?);

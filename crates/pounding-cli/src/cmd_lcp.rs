@@ -3,7 +3,7 @@
 use anyhow::{Context, bail};
 use clap::{Subcommand, ValueEnum};
 use pounding::lcp::io::{self, LcpEntry, SolRecord};
-use pounding::lcp::{LcpSolution, LcpStatus, Lemke, LemkeSettings, enumerate};
+use pounding::lcp::{LcpProblem, LcpSolution, LcpStatus, Lemke, LemkeSettings, enumerate};
 use std::hint::black_box;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -31,6 +31,34 @@ impl Solver {
         match self {
             Solver::Lemke => "pounding-lemke",
             Solver::Enum => "pounding-enum",
+        }
+    }
+}
+
+/// Which clock times the bench.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum Clock {
+    /// Monotonic wall time.
+    Wall,
+    /// On-CPU time of the benchmarking thread (Linux).
+    Cpu,
+}
+
+impl Clock {
+    /// Seconds since an arbitrary origin.
+    fn now(self, origin: Instant) -> anyhow::Result<f64> {
+        match self {
+            Clock::Wall => Ok(origin.elapsed().as_secs_f64()),
+            Clock::Cpu => {
+                let s = std::fs::read_to_string("/proc/thread-self/schedstat")
+                    .context("--clock cpu needs /proc/thread-self/schedstat (Linux)")?;
+                let ns: u64 = s
+                    .split_whitespace()
+                    .next()
+                    .and_then(|x| x.parse().ok())
+                    .context("unexpected /proc/thread-self/schedstat format")?;
+                Ok(ns as f64 * 1e-9)
+            }
         }
     }
 }
@@ -70,6 +98,11 @@ enum LcpCmd {
         /// Number of timed repeats per class (the median is reported).
         #[arg(long, default_value_t = 5)]
         repeats: usize,
+        /// Clock: `wall` (monotonic wall time, as the issue and the Siconos harness use) or `cpu`
+        /// (the thread's on-CPU time from /proc/thread-self/schedstat, Linux only: insensitive to
+        /// preemption on a loaded machine).
+        #[arg(long, value_enum, default_value_t = Clock::Wall)]
+        clock: Clock,
     },
 }
 
@@ -82,7 +115,8 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
             solver,
             min_time,
             repeats,
-        } => bench(&file, solver, min_time, repeats),
+            clock,
+        } => bench(&file, solver, min_time, repeats, clock),
     }
 }
 
@@ -183,7 +217,7 @@ fn solve(file: &Path, solver: Solver, out: Option<&Path>) -> anyhow::Result<Exit
 /// One class's solve loop: returns (solved count, max residual) — the work that is timed.
 fn run_class(
     solver: Solver,
-    probs: &[&LcpEntry],
+    probs: &[LcpProblem],
     lemke: &mut Lemke,
     sol: &mut LcpSolution,
 ) -> (usize, f64) {
@@ -191,8 +225,8 @@ fn run_class(
     let mut maxres = 0.0f64;
     match solver {
         Solver::Lemke => {
-            for e in probs {
-                lemke.solve_into(black_box(&e.problem), sol);
+            for p in probs {
+                lemke.solve_into(black_box(p), sol);
                 if sol.status == LcpStatus::Solved {
                     solved += 1;
                     maxres = maxres.max(sol.residual);
@@ -200,14 +234,14 @@ fn run_class(
             }
         }
         Solver::Enum => {
-            for e in probs {
+            for p in probs {
                 // n <= 12 was checked when reading
-                let sols = enumerate(black_box(&e.problem)).unwrap_or_default();
+                let sols = enumerate(black_box(p)).unwrap_or_default();
                 if !sols.is_empty() {
                     solved += 1;
                 }
                 for z in &sols {
-                    maxres = maxres.max(residual(e, z));
+                    maxres = maxres.max(residual(p, z));
                 }
             }
         }
@@ -216,8 +250,7 @@ fn run_class(
 }
 
 /// `max_i |min(z_i, w_i)| / max(1, ||q||_inf)` with `w = M z + q`.
-fn residual(e: &LcpEntry, z: &[f64]) -> f64 {
-    let p = &e.problem;
+fn residual(p: &LcpProblem, z: &[f64]) -> f64 {
     let n = p.dim();
     let qn = p.q().iter().fold(1.0f64, |a, &x| a.max(x.abs()));
     let mut r = 0.0f64;
@@ -228,7 +261,15 @@ fn residual(e: &LcpEntry, z: &[f64]) -> f64 {
     r / qn
 }
 
-fn bench(file: &Path, solver: Solver, min_time: f64, repeats: usize) -> anyhow::Result<ExitCode> {
+fn bench(
+    file: &Path,
+    solver: Solver,
+    min_time: f64,
+    repeats: usize,
+    clock: Clock,
+) -> anyhow::Result<ExitCode> {
+    let origin = Instant::now();
+    clock.now(origin)?;
     if !(min_time.is_finite() && min_time > 0.0 && min_time <= 600.0) {
         bail!("--min-time must be in (0, 600] seconds, got {min_time}");
     }
@@ -247,16 +288,23 @@ fn bench(file: &Path, solver: Solver, min_time: f64, repeats: usize) -> anyhow::
     let mut sol = lemke.solve(&set[0].problem); // warm the workspace and output vectors
     let mut classes = Vec::new();
     for class in order {
-        let probs: Vec<&LcpEntry> = set.iter().filter(|e| e.class == class).collect();
+        // Copy the class's problems (outside the timer) so that their data lie contiguously in
+        // memory, in the order they are solved, as a caller building its problems in one go would
+        // have them (the parser's allocations are interleaved with its temporaries).
+        let probs: Vec<LcpProblem> = set
+            .iter()
+            .filter(|e| e.class == class)
+            .map(|e| e.problem.clone())
+            .collect();
         let (solved, maxres) = run_class(solver, &probs, &mut lemke, &mut sol);
         // calibrate the number of passes so that one repeat takes >= min_time
         let mut passes = 1usize;
         loop {
-            let t = Instant::now();
+            let t = clock.now(origin)?;
             for _ in 0..passes {
                 black_box(run_class(solver, &probs, &mut lemke, &mut sol));
             }
-            let dt = t.elapsed().as_secs_f64();
+            let dt = clock.now(origin)? - t;
             if dt >= min_time {
                 break;
             }
@@ -269,11 +317,11 @@ fn bench(file: &Path, solver: Solver, min_time: f64, repeats: usize) -> anyhow::
         }
         let mut rates = Vec::with_capacity(repeats);
         for _ in 0..repeats {
-            let t = Instant::now();
+            let t = clock.now(origin)?;
             for _ in 0..passes {
                 black_box(run_class(solver, &probs, &mut lemke, &mut sol));
             }
-            let dt = t.elapsed().as_secs_f64();
+            let dt = clock.now(origin)? - t;
             rates.push((passes * probs.len()) as f64 / dt);
         }
         rates.sort_by(f64::total_cmp);

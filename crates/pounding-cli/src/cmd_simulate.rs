@@ -1,9 +1,10 @@
-//! `pounding simulate`: seismic time-history simulation of two curved decks with pounding.
+//! `pounding simulate`: seismic time-history simulation of two decks (curved, straight or skewed,
+//! optionally with abutments) with pounding.
 //!
 //! Reads an optional scenario TOML (unknown keys are errors; record paths resolve relative to the
 //! scenario file), runs [`pounding::sim::simulate`] and writes `history.csv`, `impacts.csv`,
 //! `summary.json`, `timing.json` and PNG plots into the output directory. Every input is validated
-//! before anything is written.
+//! before anything is written. With `--records` it runs a batch instead ([`sim_batch`]).
 
 use anyhow::{Context, Result, anyhow, bail};
 use pounding::geometry::{ContactCase, Deck, SArrangement};
@@ -12,8 +13,10 @@ use pounding::ground_motion::{
 };
 use pounding::math::{Real, Vector};
 use pounding::output::{float_token, json_float, write_atomic};
+use pounding::shape::{DeckShape, SkewedDeck, StraightDeck};
 use pounding::sim::{
-    Bearing, SEAT_ENDS, SimError, SimModel, SimProblem, SimSettings, SimSolution, simulate,
+    Bearing, SEAT_ENDS, SimAbutment, SimError, SimModel, SimProblem, SimSettings, SimSolution,
+    simulate,
 };
 use serde::Deserialize;
 use serde_json::json;
@@ -77,6 +80,12 @@ pub const DEFAULT_SCENARIO: &str = r#"# pounding simulate — scenario file (TOM
 # Frame (spec §4): x along the joint line, y normal to it pointing into deck 1; angles in degrees.
 
 [decks]
+# shape = "curved"  # "curved" (the S arrangement, below), "straight" (rectangles L x width) or
+#                   # "skew" (parallelograms: end faces along the joint line, axis turned by
+#                   # skew_deg from the joint normal); straight/skew need L1 and L2 [m]:
+# L1 = 40.0         # length of deck 1 along its axis [m] (straight/skew)
+# L2 = 40.0         # length of deck 2 [m] (straight/skew)
+# skew_deg = 30.0   # skew angle in [0, 90) (skew)
 R1 = 100.0          # centre-line radius of deck 1 [m]
 R2 = 100.0          # centre-line radius of deck 2 [m]
 beta1_deg = 60.0    # curve angle of deck 1 [deg]
@@ -90,6 +99,12 @@ gap = 0.05          # joint opening g [m]
 seat_length = 0.4   # seat length at every deck end [m]; exceeding it = unseating
 mu = 0.5            # Coulomb friction coefficient at the joint
 eps_n = 0.5         # Newton restitution coefficient
+
+# [abutments]       # optional rigid abutments beyond the far end of each deck (same mu, eps_n)
+# gap1 = 0.05       # gap between deck 1's far end face and its abutment [m]
+# seat_length1 = 0.4  # seat length of that end [m] (default: [joint] seat_length)
+# gap2 = 0.05
+# seat_length2 = 0.4
 
 [bearings]
 # One bearing at each of the 4 end-face corners of each deck (linear, same stiffness in x and y).
@@ -130,12 +145,27 @@ struct Scenario {
     time: TimeSec,
     #[serde(default)]
     contact: sim_contact::ContactSec,
+    #[serde(default)]
+    abutments: AbutmentsSec,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct AbutmentsSec {
+    gap1: Option<f64>,
+    gap2: Option<f64>,
+    seat_length1: Option<f64>,
+    seat_length2: Option<f64>,
 }
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields, default)]
 #[allow(non_snake_case)]
 struct DecksSec {
+    shape: String,
+    L1: Option<f64>,
+    L2: Option<f64>,
+    skew_deg: Option<f64>,
     R1: f64,
     R2: f64,
     beta1_deg: f64,
@@ -143,15 +173,16 @@ struct DecksSec {
     width: f64,
     thickness: f64,
     density: f64,
-    shape: String,
-    L1: f64,
-    L2: f64,
     mass1: Option<f64>,
     mass2: Option<f64>,
 }
 impl Default for DecksSec {
     fn default() -> Self {
         Self {
+            shape: "curved".into(),
+            L1: None,
+            L2: None,
+            skew_deg: None,
             R1: 100.0,
             R2: 100.0,
             beta1_deg: 60.0,
@@ -159,9 +190,6 @@ impl Default for DecksSec {
             width: 10.0,
             thickness: 0.5,
             density: 2500.0,
-            shape: "curved".into(),
-            L1: 30.0,
-            L2: 30.0,
             mass1: None,
             mass2: None,
         }
@@ -300,7 +328,14 @@ fn scenario_key(name: &str) -> Option<(&'static str, &'static str)> {
         "R2" => ("decks", "R2"),
         "beta1" => ("decks", "beta1_deg"),
         "beta2" => ("decks", "beta2_deg"),
-        "width" | "width (deck 2)" => ("decks", "width"),
+        "width" | "width (deck 2)" | "joint face length (deck 2)" => ("decks", "width"),
+        "L1" => ("decks", "L1"),
+        "L2" => ("decks", "L2"),
+        "skew1" | "skew2" => ("decks", "skew_deg"),
+        "abutment gap (deck 1)" => ("abutments", "gap1"),
+        "abutment gap (deck 2)" => ("abutments", "gap2"),
+        "abutment seat_length (deck 1)" => ("abutments", "seat_length1"),
+        "abutment seat_length (deck 2)" => ("abutments", "seat_length2"),
         "thickness" => ("decks", "thickness"),
         "density" => ("decks", "density"),
         "scale_y" => ("ground_motion", "scale_y"),
@@ -325,6 +360,72 @@ fn sim_error(src: &Source, e: SimError) -> anyhow::Error {
     match name.as_deref().and_then(scenario_key) {
         Some((sec, key)) => anyhow!("{e} — set by {}", src.key_ref(sec, key)),
         None => anyhow!("{e}"),
+    }
+}
+
+/// The deck shapes of `[decks]`: `None` for `shape = "curved"` (the S arrangement of `R1 R2
+/// beta1_deg beta2_deg`), else two straight / skewed decks of lengths `L1`, `L2` (values are
+/// validated later by the model, with errors naming `L1`, `skew_deg`, …).
+fn deck_shapes(src: &Source, d: &DecksSec) -> Result<Option<[DeckShape; 2]>> {
+    let shape = d.shape.trim();
+    let only = |key: &str, for_shape: &str| -> Result<()> {
+        if src.line_of("decks", key).is_some() {
+            bail!(
+                "{} applies to shape = \"{for_shape}\" only (shape is \"{shape}\")",
+                src.key_ref("decks", key)
+            );
+        }
+        Ok(())
+    };
+    match shape {
+        "curved" => {
+            for k in ["L1", "L2"] {
+                only(k, "straight\" or \"skew")?;
+            }
+            only("skew_deg", "skew")?;
+            Ok(None)
+        }
+        "straight" | "skew" => {
+            for k in ["R1", "R2", "beta1_deg", "beta2_deg"] {
+                only(k, "curved")?;
+            }
+            if shape == "straight" {
+                only("skew_deg", "skew")?;
+            }
+            let len = |v: Option<f64>, key: &str| {
+                v.ok_or_else(|| {
+                    anyhow!(
+                        "shape = \"{shape}\" needs {} (deck length along its axis, m)",
+                        src.key_ref("decks", key)
+                    )
+                })
+            };
+            let (l1, l2) = (len(d.L1, "L1")?, len(d.L2, "L2")?);
+            let skew = d.skew_deg.unwrap_or(0.0).to_radians();
+            let mk = |l: f64| {
+                if shape == "straight" {
+                    DeckShape::Straight(StraightDeck {
+                        length: l,
+                        width: d.width,
+                        thickness: d.thickness,
+                        density: d.density,
+                    })
+                } else {
+                    DeckShape::Skewed(SkewedDeck {
+                        length: l,
+                        width: d.width,
+                        skew,
+                        thickness: d.thickness,
+                        density: d.density,
+                    })
+                }
+            };
+            Ok(Some([mk(l1), mk(l2)]))
+        }
+        other => bail!(
+            "invalid shape {other:?} at {}: use \"curved\", \"straight\" or \"skew\"",
+            src.key_ref("decks", "shape")
+        ),
     }
 }
 
@@ -410,16 +511,46 @@ pub(crate) fn build_with(args: &Args, law: Option<&str>) -> Result<Setup> {
     };
     let j = &sc.joint;
     let b = &sc.bearings;
-    let mut model = SimModel::with_corner_bearings(
-        arr,
-        j.gap,
-        b.stiffness1,
-        b.stiffness2,
-        b.damping_ratio,
-        j.mu,
-        j.eps_n,
-        j.seat_length,
-    );
+    let shapes = deck_shapes(&src, d)?;
+    let mut model = match shapes {
+        None => SimModel::with_corner_bearings(
+            arr,
+            j.gap,
+            b.stiffness1,
+            b.stiffness2,
+            b.damping_ratio,
+            j.mu,
+            j.eps_n,
+            j.seat_length,
+        ),
+        Some(sh) => SimModel::with_shapes(
+            sh,
+            j.gap,
+            b.stiffness1,
+            b.stiffness2,
+            b.damping_ratio,
+            j.mu,
+            j.eps_n,
+            j.seat_length,
+        ),
+    };
+    let ab = &sc.abutments;
+    for (k, gap, seat) in [(0, ab.gap1, ab.seat_length1), (1, ab.gap2, ab.seat_length2)] {
+        match (gap, seat) {
+            (Some(gap), seat) => {
+                model.abutments[k] = Some(SimAbutment {
+                    gap,
+                    seat_length: seat.unwrap_or(j.seat_length),
+                })
+            }
+            (None, Some(_)) => bail!(
+                "{} is set but {} is not (an abutment needs its gap)",
+                src.key_ref("abutments", &format!("seat_length{}", k + 1)),
+                src.key_ref("abutments", &format!("gap{}", k + 1))
+            ),
+            (None, None) => {}
+        }
+    }
     // Validate the decks before using them for the default bearing points.
     model.validate().map_err(|e| sim_error(&src, e))?;
     sim_contact::apply_shape_and_damping(&src, d, &b.damping, &mut model)?;
@@ -619,6 +750,13 @@ pub(crate) fn history_csv(setup: &Setup, sol: &SimSolution) -> String {
     if forces {
         s.push_str(",contact_force_xplus_N,contact_force_xminus_N");
     }
+    // abutment gap columns only when there are abutments (the default's file is unchanged)
+    let abut: Vec<usize> = (0..2)
+        .filter(|&j| setup.problem.model.abutments[j].is_some())
+        .collect();
+    for j in &abut {
+        s.push_str(&format!(",abutment_gap{}_m", j + 1));
+    }
     s.push('\n');
     let mut row: Vec<String> = Vec::with_capacity(32);
     for i in 0..h.t.len() {
@@ -643,6 +781,9 @@ pub(crate) fn history_csv(setup: &Setup, sol: &SimSolution) -> String {
         }
         if forces {
             row.extend(h.contact_force[i].iter().map(|&f| float_token(f)));
+        }
+        for &j in &abut {
+            row.push(float_token(h.abutment_gaps[i][j]));
         }
         s.push_str(&row.join(","));
         s.push('\n');
@@ -690,7 +831,7 @@ pub(crate) fn summary_json(setup: &Setup, sol: &SimSolution) -> serde_json::Valu
         .zip(s.peak_seat_by_end)
         .map(|(k, v)| (k.to_string(), json_float(v)))
         .collect();
-    let mut v = json!({
+    let mut out = json!({
         "impacts": s.impacts,
         "impacting_contacts": s.impacting_contacts,
         "peak_joint_closing_m": json_float(s.peak_joint_closing),
@@ -742,6 +883,42 @@ pub(crate) fn summary_json(setup: &Setup, sol: &SimSolution) -> serde_json::Valu
             "bearings": [m.bearings1.len(), m.bearings2.len()],
         },
     });
-    sim_contact::add_compliance_summary(&mut v, m, sol);
-    v
+    // Keys for straight / skewed decks and abutments only when used (the curved default's
+    // summary stays as it was).
+    if let Some(sh) = &m.shapes {
+        let len = |d: &DeckShape| match d {
+            DeckShape::Straight(d) => json_float(d.length),
+            DeckShape::Skewed(d) => json_float(d.length),
+            DeckShape::Curved(_) => serde_json::Value::Null,
+        };
+        let skew = |d: &DeckShape| match d {
+            DeckShape::Skewed(d) => json_float(d.skew * DEG),
+            _ => json_float(0.0),
+        };
+        out["model"]["shape"] = json!([sh[0].name(), sh[1].name()]);
+        out["model"]["length_m"] = json!([len(&sh[0]), len(&sh[1])]);
+        out["model"]["skew_deg"] = json!([skew(&sh[0]), skew(&sh[1])]);
+    }
+    if m.abutments.iter().any(Option::is_some) {
+        let mut ab = serde_json::Map::new();
+        for (j, a) in m.abutments.iter().enumerate() {
+            if let Some(a) = a {
+                ab.insert(
+                    format!("deck{}", j + 1),
+                    json!({
+                        "gap_m": json_float(a.gap),
+                        "seat_length_m": json_float(a.seat_length),
+                        "peak_closing_m": s.peak_abutment_closing[j].map_or(serde_json::Value::Null, json_float),
+                    }),
+                );
+            }
+        }
+        ab.insert(
+            "impacting_contacts".into(),
+            json!(s.abutment_impacting_contacts),
+        );
+        out["abutments"] = serde_json::Value::Object(ab);
+    }
+    sim_contact::add_compliance_summary(&mut out, m, sol);
+    out
 }

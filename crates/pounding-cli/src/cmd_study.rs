@@ -1,12 +1,262 @@
-//! `pounding study` (filled in by its work item).
+//! `pounding study`: the paper's parametric study (built-in default or a scenario file), sharded runs
+//! and their merge. Numbers come from `pounding::study`; this module handles files, threads, the
+//! progress bar, figures ([`crate::figures`]) and the report ([`crate::report`]).
 
+use anyhow::{Context, Result, bail};
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use pounding::output::write_atomic;
+use pounding::study::{
+    DEFAULT_SCENARIO_TOML, Scenario, Shard, Study,
+    run::compute_rows,
+    shard::{ShardFiles, manifest_json, merge, shard_rows_csv},
+};
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::time::Instant;
 
 /// Arguments of `pounding study`.
 #[derive(clap::Args)]
-pub struct Args {}
+#[command(args_conflicts_with_subcommands = true)]
+pub struct Args {
+    #[command(subcommand)]
+    command: Option<Sub>,
+    /// Scenario file (TOML); without it the built-in default (the paper's study) runs.
+    scenario: Option<PathBuf>,
+    #[command(flatten)]
+    common: Common,
+    /// Compute only the rows whose global index mod N = K − 1 and write a shard (merge with `study merge`).
+    #[arg(long, value_name = "K/N")]
+    shard: Option<String>,
+    /// Print the built-in default scenario (commented TOML) and exit.
+    #[arg(long)]
+    print_default: bool,
+}
+
+#[derive(clap::Args)]
+struct Common {
+    /// Output directory.
+    #[arg(long, default_value = "out/study")]
+    out: PathBuf,
+    /// Worker threads (default: all cores). Outputs are identical for any value.
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Also write every figure as SVG.
+    #[arg(long)]
+    svg: bool,
+    /// Skip figures (and their section of the report), whatever the scenario says.
+    #[arg(long)]
+    no_figures: bool,
+}
+
+#[derive(clap::Subcommand)]
+enum Sub {
+    /// Merge shard outputs (`--shard K/N` runs) into the files an unsharded run writes.
+    Merge {
+        /// Shard output directories (all K = 1..N of one study, any order).
+        #[arg(required = true)]
+        dirs: Vec<PathBuf>,
+        #[command(flatten)]
+        common: Common,
+    },
+}
 
 /// Runs `pounding study`.
-pub fn run(_args: Args) -> anyhow::Result<ExitCode> {
-    anyhow::bail!("`pounding study` is not implemented yet")
+pub fn run(args: Args) -> Result<ExitCode> {
+    if args.print_default {
+        print!("{DEFAULT_SCENARIO_TOML}");
+        return Ok(ExitCode::SUCCESS);
+    }
+    match args.command {
+        Some(Sub::Merge { dirs, common }) => run_merge(&dirs, &common),
+        None => run_study(
+            args.scenario.as_deref(),
+            args.shard.as_deref(),
+            &args.common,
+        ),
+    }
+}
+
+fn pool(threads: Option<usize>) -> Result<rayon::ThreadPool> {
+    if threads == Some(0) {
+        bail!("invalid --threads 0: must be >= 1");
+    }
+    let mut b = rayon::ThreadPoolBuilder::new();
+    if let Some(n) = threads {
+        b = b.num_threads(n);
+    }
+    b.build().context("cannot start the worker threads")
+}
+
+fn load_scenario(path: Option<&Path>) -> Result<(String, Scenario)> {
+    match path {
+        None => {
+            let s = Scenario::from_toml(DEFAULT_SCENARIO_TOML, "built-in default")?;
+            Ok((DEFAULT_SCENARIO_TOML.to_string(), s))
+        }
+        Some(p) => {
+            let text = std::fs::read_to_string(p)
+                .with_context(|| format!("cannot read scenario file {}", p.display()))?;
+            let s = Scenario::from_toml(&text, &p.display().to_string())?;
+            Ok((text, s))
+        }
+    }
+}
+
+fn progress_bar(total: usize, what: &str) -> ProgressBar {
+    let pb = ProgressBar::with_draw_target(Some(total as u64), ProgressDrawTarget::stderr());
+    if let Ok(style) = ProgressStyle::with_template(
+        "{msg:10} [{elapsed_precise}] {wide_bar} {pos}/{len} ({eta} left)",
+    ) {
+        pb.set_style(style);
+    }
+    pb.set_message(what.to_string());
+    pb
+}
+
+fn create_dir(dir: &Path) -> Result<()> {
+    std::fs::create_dir_all(dir)
+        .with_context(|| format!("cannot create output directory {}", dir.display()))
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> Result<()> {
+    let p = dir.join(name);
+    write_atomic(&p, text.as_bytes()).with_context(|| format!("cannot write {}", p.display()))
+}
+
+fn run_study(path: Option<&Path>, shard: Option<&str>, common: &Common) -> Result<ExitCode> {
+    let t0 = Instant::now();
+    let (text, scenario) = load_scenario(path)?;
+    let shard = shard.map(Shard::parse).transpose()?;
+    let pool = pool(common.threads)?;
+    let total = scenario.row_count();
+    eprintln!(
+        "study: {} configurations x {} cases x {} cells = {} rows on {} threads",
+        scenario.configuration_count(),
+        scenario.cases.len(),
+        scenario.cell_count(),
+        total,
+        pool.current_num_threads()
+    );
+    let pb = progress_bar(total, "cells");
+    let tick = |n: usize| pb.inc(n as u64);
+    if let Some(shard) = shard {
+        let rows = pool.install(|| compute_rows(&scenario, shard, &tick))?;
+        pb.finish_and_clear();
+        let manifest = manifest_json(shard, &text, total, rows.len());
+        let csv = pool.install(|| shard_rows_csv(&scenario, &rows));
+        create_dir(&common.out)?;
+        write(&common.out, "rows.csv", &csv)?;
+        write(&common.out, "shard.json", &manifest)?;
+        eprintln!(
+            "shard {}/{}: wrote {} rows to {} in {:.2} s (merge all shards with `pounding study merge`)",
+            shard.index,
+            shard.count,
+            rows.len(),
+            common.out.display(),
+            t0.elapsed().as_secs_f64()
+        );
+        let bad = rows.iter().filter(|r| !r.cell.lcp_agrees).count();
+        return Ok(exit_for(bad));
+    }
+    let study = pool.install(|| Study::compute(text, scenario, &tick))?;
+    pb.finish_and_clear();
+    finish(study, &pool, common, t0)
+}
+
+fn run_merge(dirs: &[PathBuf], common: &Common) -> Result<ExitCode> {
+    let t0 = Instant::now();
+    let mut parts = Vec::with_capacity(dirs.len());
+    for d in dirs {
+        let read = |name: &str| {
+            let p = d.join(name);
+            std::fs::read_to_string(&p).with_context(|| format!("cannot read {}", p.display()))
+        };
+        parts.push(ShardFiles {
+            origin: d.display().to_string(),
+            manifest: read("shard.json")?,
+            rows: read("rows.csv")?,
+        });
+    }
+    let merged = merge(&parts)?;
+    let pool = pool(common.threads)?;
+    let study = Study::from_rows(merged.scenario_text, merged.scenario, merged.rows);
+    finish(study, &pool, common, t0)
+}
+
+fn exit_for(disagreements: usize) -> ExitCode {
+    if disagreements > 0 {
+        eprintln!(
+            "error: {disagreements} cells where Lemke's solution of the impact LCP does not give the analytic mode (lcp_agrees = false)"
+        );
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    }
+}
+
+/// Writes every output of a complete study.
+fn finish(
+    study: Study,
+    pool: &rayon::ThreadPool,
+    common: &Common,
+    t0: Instant,
+) -> Result<ExitCode> {
+    let out = &common.out;
+    let t_rows = t0.elapsed().as_secs_f64();
+    let bounds = pool.install(|| study.bounds_csv());
+    let summary_csv = study.summary_csv();
+    let summary_json = study.summary_json();
+    let t_text = t0.elapsed().as_secs_f64();
+    create_dir(out)?;
+    write(out, "bounds.csv", &bounds)?;
+    write(out, "summary.csv", &summary_csv)?;
+    write(out, "summary.json", &summary_json)?;
+    write(out, "scenario.toml", &study.scenario_text)?;
+    let t_numeric = t0.elapsed().as_secs_f64();
+    eprintln!(
+        "wrote bounds.csv ({} rows), summary.csv, summary.json to {} in {:.2} s",
+        study.rows.len(),
+        out.display(),
+        t_numeric
+    );
+    let draw = study.scenario.output.figures && !common.no_figures;
+    let svg = study.scenario.output.svg || common.svg;
+    let figures = if draw {
+        let t = Instant::now();
+        let pb = progress_bar(0, "figures");
+        let tick = |n: usize, total: usize| {
+            pb.set_length(total as u64);
+            pb.inc(n as u64);
+        };
+        let figs = crate::figures::draw_all(&study, out, svg, pool, &tick)?;
+        pb.finish_and_clear();
+        eprintln!(
+            "drew {} figures in {:.2} s",
+            figs.iter().map(|g| g.figures.len()).sum::<usize>(),
+            t.elapsed().as_secs_f64()
+        );
+        figs
+    } else {
+        Vec::new()
+    };
+    let html = crate::report::report_html(&study, &figures, draw);
+    write(out, "report.html", &html)?;
+    let total = t0.elapsed().as_secs_f64();
+    let timing = serde_json::json!({
+        "threads": pool.current_num_threads(),
+        "rows": study.rows.len(),
+        "rows_s": t_rows,
+        "text_s": t_text - t_rows,
+        "write_s": t_numeric - t_text,
+        "numeric_s": t_numeric,
+        "figures_and_report_s": total - t_numeric,
+        "total_s": total,
+    });
+    write(out, "timing.json", &format!("{timing:#}\n"))?;
+    eprintln!(
+        "wrote report.html; total {:.2} s; open {}",
+        total,
+        out.join("report.html").display()
+    );
+    Ok(exit_for(study.lcp_disagreements()))
 }

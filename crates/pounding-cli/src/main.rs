@@ -8,6 +8,8 @@ mod cmd_impact;
 mod cmd_lcp;
 mod cmd_simulate;
 mod cmd_study;
+mod figures;
+mod report;
 
 /// Nonsmooth rigid-impact analysis of pounding between bridge deck segments.
 #[derive(Parser)]

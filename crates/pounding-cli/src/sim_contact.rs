@@ -236,81 +236,40 @@ pub fn describe(c: &JointContact) -> serde_json::Value {
     }
 }
 
-/// `[decks] shape = "straight"` (with `L1`, `L2`, optional `mass1`, `mass2`: the density of that
-/// deck is then `m/(t L W)`) and `[bearings] damping = "rayleigh" | "dashpots"`. Straight decks
-/// get the default bearings at their four end-face corners (unless `points1`/`points2` are given,
-/// which the caller applies afterwards).
+/// `[decks] mass1`, `mass2` (the deck's mass given directly: its density becomes
+/// `ρ m / m(ρ)`, any shape) and `[bearings] damping = "rayleigh" | "dashpots"`.
 pub(super) fn apply_shape_and_damping(
     src: &Source,
     d: &super::DecksSec,
     damping: &str,
     model: &mut pounding::sim::SimModel,
 ) -> Result<()> {
-    use pounding::math::Vector;
-    use pounding::shape::{DeckShape, StraightDeck};
-    use pounding::sim::{Bearing, DampingModel};
-    match d.shape.as_str() {
-        "curved" => {}
-        "straight" => {
-            let mut shapes = [DeckShape::Straight(StraightDeck {
-                length: d.L1,
-                width: d.width,
-                thickness: d.thickness,
-                density: d.density,
-            }); 2];
-            for (j, l, m, lkey, mkey) in [
-                (0, d.L1, d.mass1, "L1", "mass1"),
-                (1, d.L2, d.mass2, "L2", "mass2"),
-            ] {
-                if !(l.is_finite() && l > 0.0) {
-                    bail!(
-                        "invalid {lkey} = {l}: must be finite and > 0 — set by {}",
-                        src.key_ref("decks", lkey)
-                    );
-                }
-                let density = match m {
-                    Some(m) if m.is_finite() && m > 0.0 => m / (d.thickness * l * d.width),
-                    Some(m) => bail!(
-                        "invalid {mkey} = {m}: must be finite and > 0 — set by {}",
-                        src.key_ref("decks", mkey)
-                    ),
-                    None => d.density,
-                };
-                shapes[j] = DeckShape::Straight(StraightDeck {
-                    length: l,
-                    width: d.width,
-                    thickness: d.thickness,
-                    density,
-                });
-            }
-            model.shapes = Some(shapes);
-            model
-                .validate()
-                .map_err(|e| anyhow!("{e} — check the `[decks]` section of {}", src.name))?;
-            let k = [
-                model.bearings1.first().map_or(0.0, |b| b.stiffness),
-                model.bearings2.first().map_or(0.0, |b| b.stiffness),
-            ];
-            for j in 1..=2 {
-                let pts: Vec<Bearing> = model
-                    .deck_corner_points(j)
-                    .into_iter()
-                    .map(|point: Vector| Bearing {
-                        point,
-                        stiffness: k[j - 1],
-                    })
-                    .collect();
-                if j == 1 {
-                    model.bearings1 = pts;
+    use pounding::shape::DeckShape;
+    use pounding::sim::DampingModel;
+    let current = model.masses();
+    for (j, m, key) in [(0, d.mass1, "mass1"), (1, d.mass2, "mass2")] {
+        let Some(m) = m else { continue };
+        if !(m.is_finite() && m > 0.0) {
+            bail!(
+                "invalid {key} = {m}: must be finite and > 0 — set by {}",
+                src.key_ref("decks", key)
+            );
+        }
+        let f = m / current[j];
+        match &mut model.shapes {
+            Some(sh) => match &mut sh[j] {
+                DeckShape::Straight(x) => x.density *= f,
+                DeckShape::Skewed(x) => x.density *= f,
+                DeckShape::Curved(x) => x.density *= f,
+            },
+            None => {
+                if j == 0 {
+                    model.arrangement.deck1.density *= f;
                 } else {
-                    model.bearings2 = pts;
+                    model.arrangement.deck2.density *= f;
                 }
             }
         }
-        other => bail!(
-            "unknown deck shape {other:?} at {}: use \"curved\" or \"straight\"",
-            src.key_ref("decks", "shape")
-        ),
     }
     model.damping_model = match damping {
         "rayleigh" => DampingModel::Rayleigh,

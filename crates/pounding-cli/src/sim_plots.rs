@@ -5,7 +5,8 @@
 //! * `joint_gap.png` — the joint gap at both ends of the joint, with the impacts marked;
 //! * `impulses.png` — normal and tangential impulse of every impacting contact, by mode;
 //! * `energy.png` — the energy balance (input, stored, dissipated);
-//! * `layout.png` — plan view of the two decks, bearings, joint and axes (reference pose).
+//! * `abutment_gap.png` — with abutments: the gap of each far end face to its abutment;
+//! * `layout.png` — plan view of the two decks, bearings, joint, abutments and axes (reference pose).
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -260,7 +261,7 @@ pub fn write_all(out: &Path, problem: &SimProblem, sol: &SimSolution) -> R {
     })?;
 
     save(out, "joint_gap.png", (1400, 600), |root| {
-        let w = problem.model.arrangement.deck1.width / 2.0;
+        let w = problem.model.deck_bodies()[0].half_face;
         line_panel(
             root,
             &format!(
@@ -286,6 +287,38 @@ pub fn write_all(out: &Path, problem: &SimProblem, sol: &SimSolution) -> R {
         )?;
         Ok(())
     })?;
+
+    if problem.model.abutments.iter().any(Option::is_some) {
+        save(out, "abutment_gap.png", (1400, 600), |root| {
+            let mut series = Vec::new();
+            let mut lines = vec![(0.0, "contact", BLACK)];
+            let labels = ["deck 1 far end", "deck 2 far end"];
+            let gap_labels = ["initial gap, abutment 1", "initial gap, abutment 2"];
+            for (j, a) in problem.model.abutments.iter().enumerate() {
+                if let Some(a) = a {
+                    let c = if j == 0 { BLUE } else { RED };
+                    series.push(Series {
+                        label: labels[j],
+                        pts: col(&|i| h.abutment_gaps[i][j]),
+                        color: c,
+                    });
+                    lines.push((a.gap, gap_labels[j], c));
+                }
+            }
+            line_panel(
+                root,
+                &format!(
+                    "Gap between far end faces and abutments (smaller of the two corners; {} impacting contacts)",
+                    sol.summary.abutment_impacting_contacts
+                ),
+                "gap [m]",
+                t_end,
+                &series,
+                &lines,
+                SeriesLabelPosition::UpperRight,
+            )
+        })?;
+    }
 
     save(out, "impulses.png", (1400, 800), |root| {
         let areas = root.split_evenly((2, 1));
@@ -405,12 +438,29 @@ pub fn write_all(out: &Path, problem: &SimProblem, sol: &SimSolution) -> R {
 fn layout<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, problem: &SimProblem) -> R {
     let m = &problem.model;
     let g = m.gap;
+    let bodies = m.deck_bodies();
     let outline = |j: usize| -> Vec<(Real, Real)> {
-        let d = if j == 1 {
-            &m.arrangement.deck1
-        } else {
-            &m.arrangement.deck2
+        use pounding::shape::DeckShape;
+        let d = match m.shapes.map(|s| s[j - 1]) {
+            None if j == 1 => m.arrangement.deck1,
+            None => m.arrangement.deck2,
+            Some(DeckShape::Curved(d)) => d,
+            Some(_) => {
+                // straight / skewed: the four end-face corners (joint c0, c1, far c0, c1)
+                let b = &bodies[j - 1];
+                return [
+                    b.joint_corners[0],
+                    b.joint_corners[1],
+                    b.far_corners[0],
+                    b.far_corners[1],
+                    b.joint_corners[0],
+                ]
+                .iter()
+                .map(|p| (p.x, p.y))
+                .collect();
+            }
         };
+        let d = &d;
         let s = if j == 1 { 1.0 } else { -1.0 };
         let off = if j == 1 { g } else { 0.0 };
         let pt = |r: Real, phi: Real| (s * (d.radius - r * phi.cos()), off + s * r * phi.sin());
@@ -428,8 +478,28 @@ fn layout<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, problem: &SimProble
         v
     };
     let (o1, o2) = (outline(1), outline(2));
+    // abutment faces: the far-face line moved by the abutment gap, drawn 1.6 face lengths long
+    let abut_polys: Vec<Vec<(Real, Real)>> = m
+        .abutments
+        .iter()
+        .enumerate()
+        .filter_map(|(j, a)| {
+            let a = a.as_ref()?;
+            let b = &bodies[j];
+            let n_out = -b.far_inward;
+            let c = b.far_mid() + n_out * a.gap;
+            let dir = (b.far_corners[1] - b.far_corners[0]) * 0.8;
+            let back = n_out * (0.06 * (b.far_corners[1] - b.far_corners[0]).norm());
+            Some(
+                [c - dir, c + dir, c + dir + back, c - dir + back]
+                    .iter()
+                    .map(|p| (p.x, p.y))
+                    .collect(),
+            )
+        })
+        .collect();
     let (mut lo_x, mut hi_x, mut lo_y, mut hi_y) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
-    for &(x, y) in o1.iter().chain(&o2) {
+    for &(x, y) in o1.iter().chain(&o2).chain(abut_polys.iter().flatten()) {
         lo_x = lo_x.min(x);
         hi_x = hi_x.max(x);
         lo_y = lo_y.min(y);
@@ -497,7 +567,16 @@ fn layout<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, problem: &SimProble
         .map_err(e)?
         .label("bearing (seat)")
         .legend(|(x, y)| TriangleMarker::new((x + 10, y), 6, BLACK.filled()));
-    let w2 = m.arrangement.deck1.width / 2.0;
+    for (k, poly) in abut_polys.iter().enumerate() {
+        let s = chart
+            .draw_series(std::iter::once(Polygon::new(poly.clone(), GREY.filled())))
+            .map_err(e)?;
+        if k == 0 {
+            s.label("abutment (rigid)")
+                .legend(|(x, y)| Rectangle::new([(x, y - 5), (x + 20, y + 5)], GREY.filled()));
+        }
+    }
+    let w2 = bodies[0].half_face;
     chart
         .draw_series(std::iter::once(PathElement::new(
             vec![(-w2 * 3.0, 0.0), (w2 * 3.0, 0.0)],
@@ -521,7 +600,11 @@ fn layout<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, problem: &SimProble
     }
     chart
         .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
+        .position(if m.shapes.is_some() {
+            SeriesLabelPosition::UpperRight
+        } else {
+            SeriesLabelPosition::UpperLeft
+        })
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .label_font((FAMILY, 15))

@@ -200,6 +200,24 @@ impl SkewedDeck {
         (2.0 * self.skew).sin() > 2.0 * self.width / self.length
     }
 
+    /// The rotation condition with Coulomb friction (our extension, checked against the 2-contact
+    /// LCP): for a longitudinal approach with both corners striking, the deck turns about its
+    /// obtuse corner iff
+    /// ```text
+    /// sin 2θ_s − μ_eff (1 + cos 2θ_s) > 2W/L,    μ_eff = min(μ, tan θ_s/(1 + ε_N)).
+    /// ```
+    /// Derivation: with both corners active `ω⁺ = 0`; the corners share the tangential arm
+    /// `B = −(L/2) cos θ_s`, so the moment balance has non-negative normal impulses iff the
+    /// impulse ratio `T/N` satisfies `A_1 ≤ (L/2) cos θ_s · T/N`, with `T/N = μ` when the corners
+    /// slide and `T/N = tan θ_s/(1+ε)` when they stick (`v⁺·t = 0`). For `μ = 0` this is
+    /// [`SkewedDeck::rotates_on_abutment_impact`]; in the sticking regime it reads
+    /// `sin 2θ_s · ε/(1+ε) > 2W/L` and depends on `ε_N`.
+    pub fn rotates_on_abutment_impact_with(&self, law: &ImpactLaw) -> bool {
+        let th = self.skew;
+        let mu_eff = law.mu().min(th.tan() / (1.0 + law.eps()));
+        (2.0 * th).sin() - mu_eff * (1.0 + (2.0 * th).cos()) > 2.0 * self.width / self.length
+    }
+
     fn end_face(&self, end: DeckEnd) -> EndFace {
         let half = 0.5 * self.face_length();
         match end {

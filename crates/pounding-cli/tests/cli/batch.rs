@@ -239,3 +239,126 @@ fn bad_batch_arguments_are_errors_naming_them() {
         assert!(!out.join("batch.csv").exists(), "{args:?} wrote output");
     }
 }
+
+/// The shipped 1-D example: straight decks, central impacts only (no rotation, no motion along
+/// the joint), six impacts of both corners each under the unscaled record; `--scale` applies.
+#[test]
+fn straight_1d_example_runs_and_scales() {
+    let d = tmp("example");
+    let ex = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/straight-1d.toml");
+    let mut impacts = Vec::new();
+    for scale in ["1", "2"] {
+        let out = d.join(format!("x{scale}"));
+        let o = pounding()
+            .args(["simulate", s(&ex), "--scale", scale, "--out", s(&out)])
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let js = std::fs::read_to_string(out.join("summary.json")).unwrap();
+        assert!(js.contains("\"straight\""), "{js}");
+        assert_eq!(json_number(&js, "mass_kg", 0), 1.0e6);
+        assert_eq!(json_number(&js, "mass_kg", 1), 1.0e6);
+        // natural periods: deck 1 translational 1.0 s, deck 2 0.5 s
+        let t1 = json_number(&js, "natural_periods_s", 0);
+        let t2 = json_number(&js, "natural_periods_s", 3);
+        assert!(
+            (t1 - 1.0).abs() < 1e-9 && (t2 - 0.5).abs() < 1e-9,
+            "{t1} {t2}"
+        );
+        // (rounding only: the two corner impulses agree to the last bits)
+        assert!(json_number(&js, "peak_rotation_deg", 0) < 1e-12);
+        assert!(json_number(&js, "peak_rotation_deg", 1) < 1e-12);
+        assert!(json_number(&js, "peak_slip_m", 0) < 1e-12);
+        let n = json_number(&js, "impacts", 0);
+        assert_eq!(json_number(&js, "impacting_contacts", 0), 2.0 * n);
+        assert!(json_number(&js, "pga_y_mps2", 0) > 2.7 * scale.parse::<f64>().unwrap());
+        impacts.push(n);
+    }
+    assert_eq!(
+        impacts[0], 6.0,
+        "El Centro unscaled: 6 impacts (event-exact reference)"
+    );
+    assert!(impacts[1] > impacts[0]);
+}
+
+#[test]
+fn bad_shape_and_abutment_scenarios_are_errors_naming_the_key() {
+    let d = tmp("badshape");
+    let cases = [
+        (
+            "[decks]\nshape = \"skew\"\nL1 = 30.0\nL2 = 30.0\nskew_deg = 90.0\n",
+            "skew_deg",
+        ),
+        ("[decks]\nshape = \"straight\"\nL1 = 30.0\nL2 = 0.0\n", "L2"),
+        (
+            "[decks]\nshape = \"straight\"\nL1 = -3.0\nL2 = 30.0\n",
+            "L1",
+        ),
+        ("[decks]\nshape = \"straight\"\nL1 = 30.0\n", "L2"),
+        ("[decks]\nshape = \"round\"\n", "shape"),
+        (
+            "[decks]\nshape = \"straight\"\nL1 = 30.0\nL2 = 30.0\nR1 = 50.0\n",
+            "R1",
+        ),
+        ("[abutments]\ngap1 = -0.01\n", "gap1"),
+        (
+            "[abutments]\ngap2 = 0.01\nseat_length2 = 0.0\n",
+            "seat_length2",
+        ),
+        ("[abutments]\nseat_length1 = 0.3\n", "gap1"),
+    ];
+    for (i, (text, key)) in cases.iter().enumerate() {
+        let sc = d.join(format!("s{i}.toml"));
+        std::fs::write(&sc, text).unwrap();
+        let out = d.join(format!("o{i}"));
+        let o = pounding()
+            .args(["simulate", s(&sc), "--out", s(&out)])
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(2), "{text}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(err.contains(key), "{text}: {err}");
+        assert!(err.contains(&format!("s{i}.toml")), "{text}: {err}");
+        assert!(!out.exists(), "{text}: output written");
+    }
+}
+
+/// Skewed decks with abutments: abutment impacts are reported (impacts.csv, summary.json,
+/// history.csv columns, abutment_gap.png) and the energy balance still closes.
+#[test]
+fn skew_decks_with_abutments_report_abutment_impacts() {
+    let d = tmp("abut");
+    let sc = d.join("skew.toml");
+    std::fs::write(
+        &sc,
+        "[decks]\nshape = \"skew\"\nL1 = 30.0\nL2 = 40.0\nskew_deg = 40.0\nwidth = 10.0\n\
+         thickness = 0.5\n[abutments]\ngap1 = 0.03\ngap2 = 0.04\nseat_length2 = 0.3\n\
+         [ground_motion]\nscale_y = 2.0\nscale_x = 2.0\n[time]\nduration = 10.0\n",
+    )
+    .unwrap();
+    let out = d.join("o");
+    let o = pounding()
+        .args(["simulate", s(&sc), "--out", s(&out)])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let js = std::fs::read_to_string(out.join("summary.json")).unwrap();
+    let n_ab = json_number(&js, "impacting_contacts", 0); // the first occurrence: abutments
+    assert!(js.contains("\"abutments\""), "{js}");
+    assert!(json_number(&js, "energy_balance_error", 0) < 1e-9);
+    assert_eq!(json_number(&js, "seat_length_m", 0), 0.4); // [joint], first in the abutment map
+    let imp = std::fs::read_to_string(out.join("impacts.csv")).unwrap();
+    let ab_rows = imp.lines().filter(|l| l.contains(",abutment")).count();
+    assert!(ab_rows > 0);
+    assert_eq!(ab_rows as f64, n_ab, "{js}");
+    let hist = std::fs::read_to_string(out.join("history.csv")).unwrap();
+    let head = hist.lines().next().unwrap();
+    assert!(head.ends_with(",abutment_gap1_m,abutment_gap2_m"), "{head}");
+    // the abutment gaps never go much below 0 (overlap bounded by one step's travel)
+    let gi = head.split(',').count() - 2;
+    for l in hist.lines().skip(1) {
+        let c: Vec<f64> = l.split(',').map(|v| v.parse().unwrap()).collect();
+        assert!(c[gi] > -1e-3 && c[gi + 1] > -1e-3, "{l}");
+    }
+    assert!(out.join("abutment_gap.png").exists());
+}

@@ -171,8 +171,8 @@ fn bad_contact_law_parameters_name_the_key() {
     );
     fails(
         "mass",
-        "[decks]\nshape = \"straight\"\nmass1 = -1.0\n",
-        &["mass1", "s.toml:3"],
+        "[decks]\nshape = \"straight\"\nL1 = 30.0\nL2 = 30.0\nmass1 = -1.0\n",
+        &["mass1", "s.toml:5"],
     );
     fails(
         "damping",

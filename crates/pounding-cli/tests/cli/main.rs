@@ -24,3 +24,4 @@ mod compare;
 mod lcp;
 mod shapes;
 mod simulate;
+mod study;

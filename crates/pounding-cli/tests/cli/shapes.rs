@@ -452,3 +452,51 @@ fn two_decks_face_to_face() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--corner"));
 }
+
+/// With friction the CLI's `friction_condition_holds` (sin 2θ_s − μ_eff (1 + cos 2θ_s) > 2W/L,
+/// μ_eff = min(μ, tan θ_s/(1+ε))) matches the LCP outcome, in the sliding and the sticking regime.
+#[test]
+fn skew_rotation_with_friction_by_the_cli() {
+    let mut seen = [0; 2];
+    for (deg, mu, eps) in [
+        ("45", "0.3", "0.5"),
+        ("45", "0.5", "0.5"),
+        ("30", "0.1", "0.5"),
+        ("25", "0.1", "0.5"),
+        ("30", "1", "0"),
+        ("60", "1", "0.9"),
+        ("60", "1", "0.1"),
+    ] {
+        let v = json_of(&[
+            "--shape",
+            "skew",
+            "--length",
+            "30",
+            "--width",
+            "10",
+            "--skew",
+            deg,
+            "--abutment",
+            "--mu",
+            mu,
+            "--eps",
+            eps,
+        ]);
+        let r = &v["rotation"];
+        let (th, mu_f, eps_f) = (
+            deg.parse::<f64>().unwrap().to_radians(),
+            mu.parse::<f64>().unwrap(),
+            eps.parse::<f64>().unwrap(),
+        );
+        let mu_eff = mu_f.min(th.tan() / (1.0 + eps_f));
+        let want = (2.0 * th).sin() - mu_eff * (1.0 + (2.0 * th).cos()) > 2.0 * 10.0 / 30.0;
+        assert_eq!(
+            r["friction_condition_holds"],
+            Value::Bool(want),
+            "{deg} {mu} {eps}"
+        );
+        assert_eq!(r["rotates"], Value::Bool(want), "{deg} {mu} {eps}: {r}");
+        seen[usize::from(want)] += 1;
+    }
+    assert!(seen[0] > 0 && seen[1] > 0);
+}

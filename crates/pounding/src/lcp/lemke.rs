@@ -74,10 +74,13 @@ pub(crate) struct Work<'a> {
     pub b: &'a mut [f64],
     /// Entering column, length `n`.
     pub d: &'a mut [f64],
-    /// Integer scratch, length `5n + 1`: basis (row → variable), column → variable (`n + 1`),
-    /// position of each `w_k` and of each `z_k`, tied rows.
+    /// Integer scratch, length `4n`: basis (row → variable), position of each `w_k` and of each
+    /// `z_k`, tied rows.
     pub iw: &'a mut [usize],
 }
+
+/// Sizes up to which the kernel prefers (well-predicted) branches to branch-free counting.
+const SMALL: usize = 4;
 
 /// Position code: `< ROW` a column index; `≥ ROW` the row `code − ROW`.
 const ROW: usize = 1 << 30;
@@ -155,10 +158,9 @@ pub(crate) fn kernel(
     let tx = &mut wk.tx[..n];
     let b = &mut wk.b[..n];
     let d = &mut wk.d[..n];
-    let (basis, rest) = wk.iw[..5 * n + 1].split_at_mut(n);
-    let (colvar, rest) = rest.split_at_mut(n + 1);
-    let (pos_w, rest) = rest.split_at_mut(n);
-    let (pos_z, ties) = rest.split_at_mut(n);
+    let (basis, rest) = wk.iw[..4 * n].split_at_mut(n);
+    // pos[v] for v = w_k (k < n) and v = z_k (n + k): column index, or ROW + row if basic
+    let (pos, ties) = rest.split_at_mut(2 * n);
     let tie_tol = s.tie_tol();
     let pivot_tol = s.pivot_tol();
 
@@ -188,9 +190,7 @@ pub(crate) fn kernel(
     let qtie = qmin + tie_tol * qscale;
     let mut r0 = 0;
     for (i, &qi) in q.iter().enumerate() {
-        if qi <= qtie {
-            r0 = i; // the largest index among the tied minima
-        }
+        r0 = if qi <= qtie { i } else { r0 }; // the largest index among the tied minima
     }
     if s.max_pivots() == 0 {
         return fail(LcpStatus::MaxPivots, 0, z, w);
@@ -216,49 +216,43 @@ pub(crate) fn kernel(
             basis[i] = i;
         }
         tx[i] = -1.0;
-        colvar[i] = n + i;
-        pos_z[i] = i;
-        pos_w[i] = ROW + i;
+        pos[i] = ROW + i;
+        pos[n + i] = i;
     }
-    colvar[n] = r0;
-    pos_w[r0] = n;
+    pos[r0] = n;
     let z0_row = r0;
     let mut pivots = 1usize;
     let mut entering = n + r0; // the complement of w_{r0}
+    let last = n.saturating_sub(1);
 
     loop {
         if pivots >= s.max_pivots() {
             return fail(LcpStatus::MaxPivots, pivots, z, w);
         }
-        // entering column (the entering variable is always nonbasic)
-        let c = if entering < n {
-            pos_w[entering]
-        } else {
-            pos_z[entering - n]
-        };
-        if c == n {
-            d.copy_from_slice(tx);
-        } else {
-            for i in 0..n {
-                d[i] = t[i * n + c];
-            }
-        }
-        // ratio test: strict minimum of max(bᵢ,0)/dᵢ over dᵢ > thr (cross-multiplied)
+        // entering column (the entering variable is always nonbasic), with the scales of the
+        // column and of the right-hand side
+        let c = pos[entering];
+        let in_tx = c == n;
+        let cc = c.min(last);
         let mut dmax = 0.0f64;
         let mut bscale = 0.0f64;
         for i in 0..n {
-            dmax = dmax.max(d[i].abs());
+            let di = if in_tx { tx[i] } else { t[i * n + cc] };
+            d[i] = di;
+            dmax = dmax.max(di.abs());
             bscale = bscale.max(b[i].abs());
         }
+        // ratio test: strict minimum of max(bᵢ,0)/dᵢ over dᵢ > thr (cross-multiplied, first row
+        // on exact equality), written with selects rather than branches
         let thr = pivot_tol * dmax;
         let mut best = usize::MAX;
-        let mut best_b = 0.0;
+        let mut best_b = f64::INFINITY;
         let mut best_d = 1.0;
         for i in 0..n {
             let di = d[i];
             if di > thr {
                 let bi = b[i].max(0.0);
-                if best == usize::MAX || bi * best_d < best_b * di {
+                if bi * best_d < best_b * di {
                     best = i;
                     best_b = bi;
                     best_d = di;
@@ -273,41 +267,57 @@ pub(crate) fn kernel(
             };
             return fail(st, pivots, z, w);
         }
-        // ties within tolerance: (bᵢ/dᵢ − b*/d*) ≤ tie_tol · ‖b‖∞ · (1/dᵢ + 1/d*)
+        // ties within tolerance: (bᵢ/dᵢ − b*/d*) ≤ tie_tol · ‖b‖∞ · (1/dᵢ + 1/d*), counted
+        // without branches and resolved in the cold path
         let tol_b = tie_tol * bscale;
         let mut nt = 0usize;
-        let mut z0_tied = false;
-        for i in 0..n {
-            let di = d[i];
-            if di > thr {
-                let bi = b[i].max(0.0);
-                if bi * best_d - best_b * di <= tol_b * (di + best_d) {
-                    ties[nt] = i;
-                    nt += 1;
-                    z0_tied |= i == z0_row;
+        if n <= SMALL {
+            // tiny n: branches predict well enough and are cheaper than the full count
+            for i in 0..n {
+                let di = d[i];
+                if di > thr && i != best {
+                    let bi = b[i].max(0.0);
+                    if bi * best_d - best_b * di <= tol_b * (di + best_d) {
+                        nt = 2;
+                    }
                 }
+            }
+        } else {
+            for i in 0..n {
+                let di = d[i];
+                let bi = b[i].max(0.0);
+                let tie = (di > thr) & (bi * best_d - best_b * di <= tol_b * (di + best_d));
+                nt += tie as usize;
             }
         }
         let r = if nt <= 1 {
             best
-        } else if z0_tied {
-            z0_row
         } else {
-            lexmin(n, t, tx, pos_w, d, &mut ties[..nt], tie_tol)
+            resolve_ties(
+                n,
+                t,
+                tx,
+                b,
+                &pos[..n],
+                d,
+                thr,
+                (best_b, best_d, tol_b),
+                z0_row,
+                ties,
+                tie_tol,
+            )
         };
 
         // exchange pivot on (r, c): the entering variable becomes basic in row r, the leaving
-        // one takes column c. Row r is divided by the pivot; the other rows lose f·(row r);
-        // column c becomes (1/p in row r, −dᵢ/p elsewhere).
+        // one takes column c. Row r is divided by the pivot; every other row loses f·(row r)
+        // (f = 0 for row r itself, so that no branch depends on r); column c becomes
+        // (1/p in row r, −dᵢ/p elsewhere).
         let inv = 1.0 / d[r];
-        {
-            let tr = &mut t[r * n..r * n + n];
-            for x in tr.iter_mut() {
-                *x *= inv;
-            }
-            tx[r] *= inv;
-            b[r] *= inv;
+        for j in 0..n {
+            t[r * n + j] *= inv;
         }
+        tx[r] *= inv;
+        b[r] *= inv;
         let (txr, br) = (tx[r], b[r]);
         for i in 0..n {
             if i == r {
@@ -320,36 +330,27 @@ pub(crate) fn kernel(
             tx[i] -= f * txr;
             b[i] -= f * br;
         }
-        if c == n {
-            for i in 0..n {
-                tx[i] = -d[i] * inv;
+        for i in 0..n {
+            let v = if i == r { inv } else { -d[i] * inv };
+            if in_tx {
+                tx[i] = v;
+            } else {
+                t[i * n + cc] = v;
             }
-            tx[r] = inv;
-        } else {
-            for i in 0..n {
-                t[i * n + c] = -d[i] * inv;
-            }
-            t[r * n + c] = inv;
         }
         let leaving = basis[r];
         basis[r] = entering;
-        if entering < n {
-            pos_w[entering] = ROW + r;
-        } else {
-            pos_z[entering - n] = ROW + r;
-        }
+        pos[entering] = ROW + r;
         pivots += 1;
         if leaving == 2 * n {
             break;
         }
-        colvar[c] = leaving;
-        if leaving < n {
-            pos_w[leaving] = c;
-            entering = leaving + n;
+        pos[leaving] = c;
+        entering = if leaving < n {
+            leaving + n
         } else {
-            pos_z[leaving - n] = c;
-            entering = leaving - n;
-        }
+            leaving - n
+        };
     }
 
     // ---- z₀ left: read z off the basis and verify ----
@@ -392,6 +393,39 @@ fn fail(status: LcpStatus, pivots: usize, z: &mut [f64], w: &mut [f64]) -> Kerne
         pivots,
         residual: f64::NAN,
     }
+}
+
+/// The tied rows of the ratio test: `z₀`'s row if it is among them (the artificial variable
+/// wins ties), else the lexicographic minimum.
+#[cold]
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+fn resolve_ties(
+    n: usize,
+    t: &[f64],
+    tx: &[f64],
+    b: &[f64],
+    pos_w: &[usize],
+    d: &[f64],
+    thr: f64,
+    (best_b, best_d, tol_b): (f64, f64, f64),
+    z0_row: usize,
+    ties: &mut [usize],
+    tie_tol: f64,
+) -> usize {
+    let mut nt = 0;
+    for i in 0..n {
+        let di = d[i];
+        let bi = b[i].max(0.0);
+        if di > thr && bi * best_d - best_b * di <= tol_b * (di + best_d) {
+            if i == z0_row {
+                return z0_row;
+            }
+            ties[nt] = i;
+            nt += 1;
+        }
+    }
+    lexmin(n, t, tx, pos_w, d, &mut ties[..nt], tie_tol)
 }
 
 /// Lexicographic tie-break among the tied rows: the lexicographic minimum of `(B⁻¹)ᵢ / dᵢ`,
@@ -464,7 +498,7 @@ pub fn solve_fixed<const N: usize>(
 ) -> FixedSolution<N> {
     let mut t = [[0.0f64; N]; N];
     let mut v = [[0.0f64; N]; 3];
-    let mut iw = [[0usize; N]; 6];
+    let mut iw = [[0usize; N]; 4];
     let mut z = [0.0f64; N];
     let mut w = [0.0f64; N];
     let [tx, b, d] = &mut v;
@@ -541,8 +575,8 @@ impl Lemke {
         if self.ws.len() < nn + 3 * n {
             self.ws.resize(nn + 3 * n, 0.0);
         }
-        if self.wsi.len() < 5 * n + 1 {
-            self.wsi.resize(5 * n + 1, 0);
+        if self.wsi.len() < 4 * n {
+            self.wsi.resize(4 * n, 0);
         }
         let (t, rest) = self.ws.split_at_mut(nn);
         let (tx, rest) = rest.split_at_mut(n);

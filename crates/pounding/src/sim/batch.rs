@@ -37,23 +37,19 @@ impl BatchShard {
     /// Validated shard `K/N` with `1 ≤ K ≤ N`.
     pub fn new(index: usize, count: usize) -> Result<Self, SimError> {
         if count == 0 || index == 0 || index > count {
-            return Err(SimError::invalid(
-                format!("shard {index}/{count}"),
-                index as Real,
-                "need 1 <= K <= N",
-            ));
+            return Err(SimError::InvalidArgument {
+                name: format!("shard {index}/{count}"),
+                reason: "need 1 <= K <= N".into(),
+            });
         }
         Ok(Self { index, count })
     }
 
     /// Parses `K/N` (errors name `--shard`).
     pub fn parse(s: &str) -> Result<Self, SimError> {
-        let bad = || {
-            SimError::invalid(
-                format!("--shard {s:?}"),
-                Real::NAN,
-                "expected K/N with 1 <= K <= N",
-            )
+        let bad = || SimError::InvalidArgument {
+            name: format!("--shard {s:?}"),
+            reason: "expected K/N with 1 <= K <= N".into(),
         };
         let (k, n) = s.split_once('/').ok_or_else(bad)?;
         let k = k.trim().parse::<usize>().map_err(|_| bad())?;

@@ -1,7 +1,9 @@
-//! Seismic time-history simulation of two curved decks with rigid-impact pounding.
+//! Seismic time-history simulation of two decks with rigid-impact pounding.
 //!
 //! # Model
-//! Two rigid annular-sector decks in the S arrangement (spec §2–§4), 3 in-plane DOF each,
+//! Two rigid decks (by default annular sectors in the S arrangement, spec §2–§4; or straight /
+//! skewed decks of [`crate::shape`] meeting face to face, see [`SimModel::shapes`]), optionally
+//! with rigid abutments beyond their far ends ([`SimAbutment`]), 3 in-plane DOF each,
 //! `q = (x1, y1, θ1, x2, y2, θ2)` (spec §5.1: centroid displacements from the reference pose with
 //! `M_1 = (0, g)`, `M_2 = (0, 0)`, rotations about the centroids), `M = diag(m1, m1, I1, m2, m2, I2)`.
 //!
@@ -13,8 +15,10 @@
 //!   ground acceleration onto both decks' centroid translations (no rotational component).
 //!   All displacements are relative to the ground.
 //! * **Contacts**: each corner of each deck's joint face against the other deck's face, gaps from
-//!   the current pose with exact rotations ([`contact`] module doc); Newton impact law with
-//!   Coulomb friction in the LCP form of spec §8.
+//!   the current pose with exact rotations ([`contact`] module doc); each far-face corner of a
+//!   deck with an abutment against the abutment face (body b = the ground, [`SimAbutment`]);
+//!   Newton impact law with Coulomb friction in the LCP form of spec §8, the same `ε_N`, `μ` at
+//!   every contact. At most 6 contacts (LCP size ≤ 18) are active at once.
 //!
 //! # Scheme: Moreau–Jean time stepping (θ-method + velocity-level LCP)
 //! With step `h`, `t_k = k h`, and `θ = ½` by default:
@@ -78,6 +82,14 @@ pub enum SimError {
         /// The offending value.
         value: Real,
         /// What was expected.
+        reason: String,
+    },
+    /// A non-numeric argument is malformed (e.g. `--shard K/N`); the message names it.
+    #[error("invalid {name}: {reason}")]
+    InvalidArgument {
+        /// Argument name as the user knows it.
+        name: String,
+        /// What is wrong and what was expected.
         reason: String,
     },
     /// Bad ground-motion input.
@@ -608,7 +620,8 @@ pub struct ImpactRecord {
     /// Pre-impact normal velocity `γ_N⁻ = w_Nᵀ u_k` (< 0, closing) \[m/s\].
     pub gamma_n_pre: Real,
     /// Pre-impact tangential velocity `γ_T⁻` (+ along τ: deck 1 relative to deck 2 toward deck 1's
-    /// radially outward side) \[m/s\].
+    /// radially outward side; at an abutment: the corner along `t = perp(n)`, from `c0` toward
+    /// `c1` of the deck's far face) \[m/s\].
     pub gamma_t_pre: Real,
     /// Post-step normal velocity `γ_N,{k+1}` \[m/s\].
     pub gamma_n_post: Real,

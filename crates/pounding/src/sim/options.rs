@@ -73,7 +73,7 @@ impl super::SimModel {
             return Err(SimError::invalid(
                 "contact_law",
                 f64::NAN,
-                "abutments are only supported with rigid contact (contact_law = \"rigid\")",
+                "abutments ([abutments]) are only supported with rigid contact ([contact] law = \"rigid\")",
             ));
         }
         {

@@ -697,3 +697,36 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn tmp_pivot_stats() {
+    let set = io::read_lcpset(Path::new(
+        "/work/shared/data/lcp/bench/lcp_problems_full.txt",
+    ))
+    .unwrap();
+    let mut l = Lemke::new(LemkeSettings::default());
+    let mut stats: BTreeMap<String, (usize, usize, usize)> = BTreeMap::new();
+    for e in &set {
+        let s = l.solve(&e.problem);
+        let x = stats.entry(e.class.clone()).or_default();
+        x.0 += 1;
+        x.1 += s.pivots;
+        x.2 = x.2.max(s.pivots);
+    }
+    let set = io::read_lcpset(&data_dir().join("lcp_problems_sample.txt")).unwrap();
+    for e in &set {
+        let s = l.solve(&e.problem);
+        let x = stats.entry(format!("sample-{}", e.class)).or_default();
+        x.0 += 1;
+        x.1 += s.pivots;
+        x.2 = x.2.max(s.pivots);
+    }
+    for (k, v) in stats {
+        eprintln!(
+            "{k}: count {} mean pivots {:.2} max {}",
+            v.0,
+            v.1 as f64 / v.0 as f64,
+            v.2
+        );
+    }
+}

@@ -14,3 +14,4 @@ mod shapes;
 mod sim;
 mod sim_compliance;
 mod sim_shapes;
+mod study;

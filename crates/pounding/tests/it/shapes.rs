@@ -674,3 +674,90 @@ fn joint_double_impact_of_straight_and_skewed_decks() {
     );
     assert!(joint_problem(&a, &DeckShape::Skewed(skewed(80.0, 10.0, 20.0)), z, z, &law).is_ok());
 }
+
+/// Frictional extension (our derivation, not in the issue). If both corners carry impulse they
+/// end with equal normal velocities, so `ω⁺ = 0`; the common tangential arm `B = r × t` means only
+/// the total impulse `(N, T)` matters, and both normal impulses are `≥ 0` iff the moment balance
+/// puts `−B T/N` between the arms `A_1 ≤ A_0`. Longitudinal approach: `n₀ = v cos θ_s`,
+/// `v⁻·t = −v sin θ_s`.
+/// * both corners stick (`tan θ_s ≤ μ (1+ε)`): `v⁺·t = 0` fixes `T/N = tan θ_s/(1+ε)`;
+/// * both slide: `T/N = μ`.
+///
+/// So with `μ_eff = min(μ, tan θ_s/(1+ε))` the deck turns about its obtuse corner iff
+/// `sin 2θ_s − μ_eff (1 + cos 2θ_s) > 2W/L` (for μ = 0 the issue's condition). Friction raises the
+/// threshold and, in the sticking regime, the condition `sin 2θ_s · ε/(1+ε) > 2W/L` depends on ε
+/// (with ε = 0 a sticking impact never turns the deck). Compared with the 2-contact LCP over a
+/// deterministic random sample.
+#[test]
+fn skew_rotation_condition_with_friction() {
+    // deterministic sample (64-bit LCG)
+    let mut state = 0x2545_f491_4f6c_dd1du64;
+    let mut uni = |lo: f64, hi: f64| {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        lo + (hi - lo) * ((state >> 11) as f64 / (1u64 << 53) as f64)
+    };
+    let (mut agree, mut total, mut rot) = (0, 0, 0);
+    for _ in 0..2000 {
+        let (l, w, deg, mu, eps) = (
+            uni(10.0, 80.0),
+            uni(4.0, 15.0),
+            uni(0.0, 85.0),
+            uni(0.0, 1.0),
+            uni(0.0, 1.0),
+        );
+        let shape = DeckShape::Skewed(skewed(l, w, deg));
+        let th = deg.to_radians();
+        let law = ImpactLaw::new(mu, eps).unwrap();
+        let mu_eff = mu.min(th.tan() / (1.0 + eps));
+        let lhs = (2.0 * th).sin() - mu_eff * (1.0 + (2.0 * th).cos());
+        let predicted = lhs > 2.0 * w / l;
+        if (lhs - 2.0 * w / l).abs() > 1e-9 {
+            assert_eq!(
+                predicted,
+                skewed(l, w, deg).rotates_on_abutment_impact_with(&law)
+            );
+        }
+        let v = shape.axis_direction(DeckEnd::Far);
+        let pr = abutment_problem(&shape, DeckEnd::Far, &[0, 1], v, 0.0, &law).unwrap();
+        let s = impact::solve(&pr, &ImpactSettings::default());
+        let n0 = -s.contacts[0].gamma_n_pre;
+        let rotates = s.bodies[0].omega.abs() > 1e-9 * n0 / l;
+        if (lhs - 2.0 * w / l).abs() < 1e-6 {
+            continue; // too close to the threshold to classify
+        }
+        total += 1;
+        rot += usize::from(rotates);
+        if rotates == predicted {
+            agree += 1;
+        } else {
+            eprintln!(
+                "mismatch L={l} W={w} θ={deg} μ={mu} ε={eps}: LCP {rotates}, predicted {predicted}, modes {:?}",
+                s.contacts.iter().map(|c| c.mode).collect::<Vec<_>>()
+            );
+        }
+        if rotates {
+            assert_eq!(s.contacts[0].mode, ContactMode::Open);
+        }
+    }
+    eprintln!("friction condition: {agree}/{total} agree, {rot} rotating");
+    assert_eq!(agree, total);
+    assert!(rot > 20 && rot < total - 20);
+}
+
+/// The frictionless condition holds with `W` the width perpendicular to the axis and `L` the axis
+/// length; with the end-face length `W/cos θ_s` in place of `W` it misclassifies (L = 30, W = 10,
+/// θ_s = 22°: the LCP turns the deck).
+#[test]
+fn rotation_condition_uses_the_perpendicular_width() {
+    let (l, w, deg) = (30.0, 10.0, 22.0);
+    let sd = skewed(l, w, deg);
+    let shape = DeckShape::Skewed(sd);
+    let s = both_corners(&shape, DeckEnd::Far, 0.5, None);
+    assert_eq!(s.contacts[0].mode, ContactMode::Open);
+    assert!(s.bodies[0].omega.abs() > 1e-4);
+    let th = f64::to_radians(deg);
+    assert!((2.0 * th).sin() > 2.0 * w / l);
+    assert!((2.0 * th).sin() <= 2.0 * sd.face_length() / l);
+}

@@ -1,1 +1,0 @@
-//! The paper's parametric stick/slip study (filled in by the study work item).

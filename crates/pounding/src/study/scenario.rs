@@ -1,0 +1,658 @@
+//! Study scenarios: the TOML file format, its validation and the built-in default (the paper's study).
+//!
+//! A scenario lists deck geometries (`β1, β2, R1, R2`, shared width, thickness, density), impact laws
+//! (`μ`, `ε_N`), the `θ1 × θ2` grid, the ratio range of the region maps, the candidate cases, the σ mode
+//! and output options. Every key is optional; a missing key takes the built-in default
+//! ([`Scenario::default`], the paper's study extended to all combinations). Unknown keys are errors.
+//! Every error names the key and the line of the file ([`ScenarioError`]).
+
+use crate::geometry::{ContactCase, SigmaMode};
+use crate::math::Real;
+use serde::Deserialize;
+use std::ops::Range;
+use thiserror::Error;
+use toml::Spanned;
+
+/// A scenario file that cannot be used. The message names the key and the line.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum ScenarioError {
+    /// The file is not valid TOML or does not match the schema (unknown key, wrong type).
+    #[error("{origin}: line {line}, column {column}{key}: {message}")]
+    Syntax {
+        /// Where the text came from (file name).
+        origin: String,
+        /// 1-based line.
+        line: usize,
+        /// 1-based column.
+        column: usize,
+        /// `" (key `name`)"` when a key could be identified, else empty.
+        key: String,
+        /// The parser's message.
+        message: String,
+    },
+    /// A value is out of its valid range.
+    #[error("{origin}: line {line}: invalid {key} = {value}: {reason}")]
+    Invalid {
+        /// Where the text came from (file name).
+        origin: String,
+        /// 1-based line of the key (`0` for a built-in default value).
+        line: usize,
+        /// Dotted key, e.g. `grid.theta1_deg.step`.
+        key: String,
+        /// The offending value as text.
+        value: String,
+        /// What was expected.
+        reason: String,
+    },
+}
+
+/// An inclusive angle range `start, start + step, …` up to `stop` (degrees).
+///
+/// Values are `θ_i = start + i·step` (never accumulated), `i = 0..n` with the largest `n` such that
+/// `θ_{n−1} ≤ stop + 1e-9·step`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AngleRange {
+    /// First value \[deg\].
+    pub start: Real,
+    /// Last admissible value \[deg\], `≥ start`.
+    pub stop: Real,
+    /// Increment \[deg\], `> 0`.
+    pub step: Real,
+}
+
+impl AngleRange {
+    /// Number of grid values.
+    pub fn len(&self) -> usize {
+        ((self.stop - self.start) / self.step + 1e-9).floor() as usize + 1
+    }
+    /// Always false for a validated range (there is at least `start`).
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+    /// The `i`-th value `start + i·step` \[deg\].
+    pub fn value(&self, i: usize) -> Real {
+        self.start + i as Real * self.step
+    }
+    /// All values \[deg\].
+    pub fn values(&self) -> Vec<Real> {
+        (0..self.len()).map(|i| self.value(i)).collect()
+    }
+}
+
+/// Output options of a study run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OutputOptions {
+    /// Draw the figures (and show them in the report).
+    pub figures: bool,
+    /// Also write every figure as SVG.
+    pub svg: bool,
+    /// Number of `θ_a` samples across the striking deck's range in the region maps (`≥ 2`).
+    pub region_map_samples: usize,
+}
+
+/// A validated study scenario (every list non-empty, duplicate-free, every value in range).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scenario {
+    /// Common deck width `W` \[m\].
+    pub width: Real,
+    /// Common deck thickness `t` \[m\].
+    pub thickness: Real,
+    /// Common density `ρ` \[kg/m³\].
+    pub density: Real,
+    /// Subtended angles of deck 1, `β1` \[deg\], in output order.
+    pub beta1_deg: Vec<Real>,
+    /// Subtended angles of deck 2, `β2` \[deg\].
+    pub beta2_deg: Vec<Real>,
+    /// Centre-line radii of deck 1, `R1` \[m\] (`> W/2`).
+    pub r1_m: Vec<Real>,
+    /// Centre-line radii of deck 2, `R2` \[m\] (`> W/2`).
+    pub r2_m: Vec<Real>,
+    /// Friction coefficients `μ ≥ 0`.
+    pub mu: Vec<Real>,
+    /// Newton restitution coefficients `ε_N ∈ [0, 1]`.
+    pub eps: Vec<Real>,
+    /// Deck 1 rotations `θ1` \[deg\].
+    pub theta1: AngleRange,
+    /// Deck 2 rotations `θ2` \[deg\].
+    pub theta2: AngleRange,
+    /// Lower end of the pre-impact ratio range `r = γ_T⁻/γ_N⁻` used by summaries and region maps.
+    pub ratio_min: Real,
+    /// Upper end of the ratio range (`> ratio_min`).
+    pub ratio_max: Real,
+    /// Candidate cases, always in the canonical order of [`ContactCase::ALL`].
+    pub cases: Vec<ContactCase>,
+    /// Where the contact point lies on the struck face.
+    pub sigma_mode: SigmaMode,
+    /// Output options.
+    pub output: OutputOptions,
+}
+
+impl Default for Scenario {
+    /// The paper's study, extended to all combinations: β1, β2 ∈ {60, 90, 120}°, R1, R2 ∈ {100, 200} m,
+    /// W = 10 m, t = 0.5 m, ρ = 2500 kg/m³, μ ∈ {0, 0.25, 0.5, 1}, ε_N = 0.5, θ1, θ2 ∈ [−10°, 10°] step 1°,
+    /// all four cases, exact σ, ratio range [−12, 12].
+    fn default() -> Self {
+        let theta = AngleRange {
+            start: -10.0,
+            stop: 10.0,
+            step: 1.0,
+        };
+        Self {
+            width: 10.0,
+            thickness: 0.5,
+            density: 2500.0,
+            beta1_deg: vec![60.0, 90.0, 120.0],
+            beta2_deg: vec![60.0, 90.0, 120.0],
+            r1_m: vec![100.0, 200.0],
+            r2_m: vec![100.0, 200.0],
+            mu: vec![0.0, 0.25, 0.5, 1.0],
+            eps: vec![0.5],
+            theta1: theta,
+            theta2: theta,
+            ratio_min: -12.0,
+            ratio_max: 12.0,
+            cases: ContactCase::ALL.to_vec(),
+            sigma_mode: SigmaMode::Exact,
+            output: OutputOptions {
+                figures: true,
+                svg: false,
+                region_map_samples: 201,
+            },
+        }
+    }
+}
+
+/// The built-in default as a commented scenario file (`pounding study --print-default`).
+/// Parsing it gives exactly [`Scenario::default`].
+pub const DEFAULT_SCENARIO_TOML: &str = r#"# pounding study scenario — the built-in default (the paper's parametric study, all combinations).
+#
+# Every key is optional: a missing key takes the value shown here. Unknown keys are errors.
+# Rows of bounds.csv are ordered by beta1, beta2, r1, r2, mu, eps (each in the order listed here),
+# then case, then theta1, then theta2.
+
+[decks]
+# Common width W [m], thickness t [m] and density rho [kg/m^3] of both decks (S arrangement).
+width_m = 10.0
+thickness_m = 0.5
+density_kg_m3 = 2500.0
+# Subtended (curve) angles of deck 1 and deck 2 [deg], each in (0, 360).
+beta1_deg = [60.0, 90.0, 120.0]
+beta2_deg = [60.0, 90.0, 120.0]
+# Centre-line radii of deck 1 and deck 2 [m]; each must exceed width_m / 2.
+r1_m = [100.0, 200.0]
+r2_m = [100.0, 200.0]
+
+[impact]
+# Coulomb friction coefficients (>= 0) and Newton restitution coefficients (in [0, 1]).
+mu = [0.0, 0.25, 0.5, 1.0]
+eps = [0.5]
+# Contact point on the struck face: "exact" (the striking corner) or "end" (the paper's face end).
+sigma_mode = "exact"
+
+[grid]
+# Deck rotations [deg]: theta = start + i * step for i = 0, 1, ... while theta <= stop.
+theta1_deg = { start = -10.0, stop = 10.0, step = 1.0 }
+theta2_deg = { start = -10.0, stop = 10.0, step = 1.0 }
+# Range of the pre-impact ratio r = gamma_T^- / gamma_N^- for summaries and region maps.
+ratio_min = -12.0
+ratio_max = 12.0
+# Candidate contacts (any non-empty subset; output order is always the order below).
+cases = ["deck1-inner", "deck1-outer", "deck2-inner", "deck2-outer"]
+
+[output]
+# Draw figures (PNG; also SVG when svg = true or with --svg).
+figures = true
+svg = false
+# Samples of the striking deck's rotation across its range in the region maps.
+region_map_samples = 201
+"#;
+
+type S<T> = Option<Spanned<T>>;
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct RawScenario {
+    decks: Option<RawDecks>,
+    impact: Option<RawImpact>,
+    grid: Option<RawGrid>,
+    output: Option<RawOutput>,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct RawDecks {
+    width_m: S<Real>,
+    thickness_m: S<Real>,
+    density_kg_m3: S<Real>,
+    beta1_deg: S<Vec<Real>>,
+    beta2_deg: S<Vec<Real>>,
+    r1_m: S<Vec<Real>>,
+    r2_m: S<Vec<Real>>,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct RawImpact {
+    mu: S<Vec<Real>>,
+    eps: S<Vec<Real>>,
+    sigma_mode: S<String>,
+}
+
+#[derive(Deserialize, Clone)]
+#[serde(deny_unknown_fields)]
+struct RawRange {
+    start: Spanned<Real>,
+    stop: Spanned<Real>,
+    step: Spanned<Real>,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct RawGrid {
+    theta1_deg: Option<RawRange>,
+    theta2_deg: Option<RawRange>,
+    ratio_min: S<Real>,
+    ratio_max: S<Real>,
+    cases: S<Vec<String>>,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct RawOutput {
+    figures: S<bool>,
+    svg: S<bool>,
+    region_map_samples: S<i64>,
+}
+
+/// 1-based (line, column) of byte offset `pos` in `text`.
+fn line_col(text: &str, pos: usize) -> (usize, usize) {
+    let pos = pos.min(text.len());
+    let before = &text[..pos];
+    let line = before.matches('\n').count() + 1;
+    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, col)
+}
+
+/// The key written on the line containing `pos` (text before `=`), if any.
+fn key_on_line(text: &str, pos: usize) -> Option<String> {
+    let pos = pos.min(text.len());
+    let start = text[..pos].rfind('\n').map_or(0, |i| i + 1);
+    let end = text[pos..].find('\n').map_or(text.len(), |i| pos + i);
+    let line = &text[start..end];
+    let (k, _) = line.split_once('=')?;
+    let k = k.trim();
+    if k.is_empty() || k.starts_with('#') || k.starts_with('[') {
+        return None;
+    }
+    // Prefix the enclosing `[table]`, if any.
+    let table = text[..start].lines().rev().find_map(|l| {
+        let l = l.trim();
+        l.strip_prefix('[')
+            .and_then(|r| r.split(']').next())
+            .map(|t| t.trim().to_string())
+    });
+    Some(match table {
+        Some(t) if !t.is_empty() => format!("{t}.{k}"),
+        _ => k.to_string(),
+    })
+}
+
+struct Ctx<'a> {
+    text: &'a str,
+    origin: &'a str,
+}
+
+impl Ctx<'_> {
+    fn invalid(&self, span: Range<usize>, key: &str, value: String, reason: &str) -> ScenarioError {
+        let line = if span.start == span.end && span.start == 0 {
+            0
+        } else {
+            line_col(self.text, span.start).0
+        };
+        ScenarioError::Invalid {
+            origin: self.origin.to_string(),
+            line,
+            key: key.to_string(),
+            value,
+            reason: reason.to_string(),
+        }
+    }
+
+    fn scalar(
+        &self,
+        v: &S<Real>,
+        default: Real,
+        key: &str,
+        ok: impl Fn(Real) -> bool,
+        reason: &str,
+    ) -> Result<(Real, Range<usize>), ScenarioError> {
+        let (x, span) = match v {
+            Some(s) => (*s.get_ref(), s.span()),
+            None => (default, 0..0),
+        };
+        if !x.is_finite() || !ok(x) {
+            return Err(self.invalid(span, key, fmt_num(x), reason));
+        }
+        Ok((x, span))
+    }
+
+    fn list(
+        &self,
+        v: &S<Vec<Real>>,
+        default: &[Real],
+        key: &str,
+        ok: impl Fn(Real) -> bool,
+        reason: &str,
+    ) -> Result<(Vec<Real>, Range<usize>), ScenarioError> {
+        let (xs, span) = match v {
+            Some(s) => (s.get_ref().clone(), s.span()),
+            None => (default.to_vec(), 0..0),
+        };
+        if xs.is_empty() {
+            return Err(self.invalid(span, key, "[]".into(), "the list must not be empty"));
+        }
+        for (i, &x) in xs.iter().enumerate() {
+            if !x.is_finite() || !ok(x) {
+                return Err(self.invalid(span, &format!("{key}[{i}]"), fmt_num(x), reason));
+            }
+            if xs[..i].contains(&x) {
+                return Err(self.invalid(
+                    span,
+                    &format!("{key}[{i}]"),
+                    fmt_num(x),
+                    "duplicate value (each value may appear once)",
+                ));
+            }
+        }
+        Ok((xs, span))
+    }
+
+    fn range(
+        &self,
+        v: &Option<RawRange>,
+        default: AngleRange,
+        key: &str,
+    ) -> Result<AngleRange, ScenarioError> {
+        let Some(r) = v else { return Ok(default) };
+        let (start, stop, step) = (*r.start.get_ref(), *r.stop.get_ref(), *r.step.get_ref());
+        for (name, x, span) in [
+            ("start", start, r.start.span()),
+            ("stop", stop, r.stop.span()),
+            ("step", step, r.step.span()),
+        ] {
+            if !x.is_finite() || x.abs() >= 90.0 && name != "step" {
+                return Err(self.invalid(
+                    span,
+                    &format!("{key}.{name}"),
+                    fmt_num(x),
+                    "must be finite with |theta| < 90 deg",
+                ));
+            }
+        }
+        if step <= 0.0 {
+            return Err(self.invalid(
+                r.step.span(),
+                &format!("{key}.step"),
+                fmt_num(step),
+                "must be > 0",
+            ));
+        }
+        if stop < start {
+            return Err(self.invalid(
+                r.stop.span(),
+                &format!("{key}.stop"),
+                fmt_num(stop),
+                &format!("must be >= start = {}", fmt_num(start)),
+            ));
+        }
+        let out = AngleRange { start, stop, step };
+        if out.len() > 100_000 {
+            return Err(self.invalid(
+                r.step.span(),
+                &format!("{key}.step"),
+                fmt_num(step),
+                "gives more than 100000 grid values",
+            ));
+        }
+        Ok(out)
+    }
+}
+
+fn fmt_num(x: Real) -> String {
+    crate::output::float_token(x)
+}
+
+impl Scenario {
+    /// Parses and validates a scenario from TOML text. `origin` (e.g. the file name) prefixes errors.
+    ///
+    /// Errors name the key and the line: syntax errors, unknown keys and wrong types
+    /// ([`ScenarioError::Syntax`]); empty or duplicate lists, `R ≤ W/2`, `step ≤ 0`, `μ < 0`,
+    /// `ε ∉ [0, 1]`, `β ∉ (0, 360)`, non-positive width/thickness/density, `ratio_max ≤ ratio_min`
+    /// ([`ScenarioError::Invalid`]).
+    pub fn from_toml(text: &str, origin: &str) -> Result<Self, ScenarioError> {
+        let raw: RawScenario = toml::from_str(text).map_err(|e| {
+            let pos = e.span().map_or(0, |s| s.start);
+            let (line, column) = line_col(text, pos);
+            let key = key_on_line(text, pos)
+                .map(|k| format!(" (key `{k}`)"))
+                .unwrap_or_default();
+            ScenarioError::Syntax {
+                origin: origin.to_string(),
+                line,
+                column,
+                key,
+                message: e.message().trim().to_string(),
+            }
+        })?;
+        let cx = Ctx { text, origin };
+        let d = Scenario::default();
+        let decks = raw.decks.unwrap_or_default();
+        let impact = raw.impact.unwrap_or_default();
+        let grid = raw.grid.unwrap_or_default();
+        let output = raw.output.unwrap_or_default();
+        let pos = |x: Real| x > 0.0;
+        let (width, width_span) =
+            cx.scalar(&decks.width_m, d.width, "decks.width_m", pos, "must be > 0")?;
+        let (thickness, _) = cx.scalar(
+            &decks.thickness_m,
+            d.thickness,
+            "decks.thickness_m",
+            pos,
+            "must be > 0",
+        )?;
+        let (density, _) = cx.scalar(
+            &decks.density_kg_m3,
+            d.density,
+            "decks.density_kg_m3",
+            pos,
+            "must be > 0",
+        )?;
+        let beta_ok = |x: Real| x > 0.0 && x < 360.0;
+        let (beta1_deg, _) = cx.list(
+            &decks.beta1_deg,
+            &d.beta1_deg,
+            "decks.beta1_deg",
+            beta_ok,
+            "must lie in (0, 360) deg",
+        )?;
+        let (beta2_deg, _) = cx.list(
+            &decks.beta2_deg,
+            &d.beta2_deg,
+            "decks.beta2_deg",
+            beta_ok,
+            "must lie in (0, 360) deg",
+        )?;
+        let half = width / 2.0;
+        let r_reason = format!("R must exceed width/2 = {} m", fmt_num(half));
+        let mut radii = Vec::new();
+        for (key, v, dv) in [
+            ("decks.r1_m", &decks.r1_m, &d.r1_m),
+            ("decks.r2_m", &decks.r2_m, &d.r2_m),
+        ] {
+            let rs = match cx.list(v, dv, key, |x| x > half, &r_reason) {
+                Ok((rs, _)) => rs,
+                // Default radii made invalid by a user-set width: blame the width.
+                Err(_) if v.is_none() => {
+                    return Err(cx.invalid(
+                        width_span,
+                        "decks.width_m",
+                        fmt_num(width),
+                        &format!("width/2 must be below every radius of {key} (built-in default)"),
+                    ));
+                }
+                Err(e) => return Err(e),
+            };
+            radii.push(rs);
+        }
+        let r2_m = radii.pop().unwrap_or_default();
+        let r1_m = radii.pop().unwrap_or_default();
+        let (mu, _) = cx.list(
+            &impact.mu,
+            &d.mu,
+            "impact.mu",
+            |x| x >= 0.0,
+            "must be finite and >= 0",
+        )?;
+        let (eps, _) = cx.list(
+            &impact.eps,
+            &d.eps,
+            "impact.eps",
+            |x| (0.0..=1.0).contains(&x),
+            "must lie in [0, 1]",
+        )?;
+        let sigma_mode = match &impact.sigma_mode {
+            None => d.sigma_mode,
+            Some(s) => match s.get_ref().as_str() {
+                "exact" => SigmaMode::Exact,
+                "end" => SigmaMode::End,
+                other => {
+                    return Err(cx.invalid(
+                        s.span(),
+                        "impact.sigma_mode",
+                        format!("{other:?}"),
+                        "expected \"exact\" or \"end\"",
+                    ));
+                }
+            },
+        };
+        let theta1 = cx.range(&grid.theta1_deg, d.theta1, "grid.theta1_deg")?;
+        let theta2 = cx.range(&grid.theta2_deg, d.theta2, "grid.theta2_deg")?;
+        let (ratio_min, _) = cx.scalar(
+            &grid.ratio_min,
+            d.ratio_min,
+            "grid.ratio_min",
+            |_| true,
+            "must be finite",
+        )?;
+        let (ratio_max, _) = cx.scalar(
+            &grid.ratio_max,
+            d.ratio_max,
+            "grid.ratio_max",
+            |x| x > ratio_min,
+            &format!("must be finite and > ratio_min = {}", fmt_num(ratio_min)),
+        )?;
+        let cases = match &grid.cases {
+            None => d.cases.clone(),
+            Some(s) => {
+                let names = s.get_ref();
+                if names.is_empty() {
+                    return Err(cx.invalid(
+                        s.span(),
+                        "grid.cases",
+                        "[]".into(),
+                        "the list must not be empty",
+                    ));
+                }
+                let mut set = Vec::new();
+                for (i, n) in names.iter().enumerate() {
+                    let Some(c) = ContactCase::from_name(n) else {
+                        return Err(cx.invalid(
+                            s.span(),
+                            &format!("grid.cases[{i}]"),
+                            format!("{n:?}"),
+                            "expected one of \"deck1-inner\", \"deck1-outer\", \"deck2-inner\", \"deck2-outer\"",
+                        ));
+                    };
+                    if set.contains(&c) {
+                        return Err(cx.invalid(
+                            s.span(),
+                            &format!("grid.cases[{i}]"),
+                            format!("{n:?}"),
+                            "duplicate case",
+                        ));
+                    }
+                    set.push(c);
+                }
+                ContactCase::ALL
+                    .into_iter()
+                    .filter(|c| set.contains(c))
+                    .collect()
+            }
+        };
+        let figures = output.figures.map_or(d.output.figures, |s| *s.get_ref());
+        let svg = output.svg.map_or(d.output.svg, |s| *s.get_ref());
+        let region_map_samples = match &output.region_map_samples {
+            None => d.output.region_map_samples,
+            Some(s) => {
+                let n = *s.get_ref();
+                if !(2..=100_000).contains(&n) {
+                    return Err(cx.invalid(
+                        s.span(),
+                        "output.region_map_samples",
+                        n.to_string(),
+                        "must lie in [2, 100000]",
+                    ));
+                }
+                n as usize
+            }
+        };
+        Ok(Self {
+            width,
+            thickness,
+            density,
+            beta1_deg,
+            beta2_deg,
+            r1_m,
+            r2_m,
+            mu,
+            eps,
+            theta1,
+            theta2,
+            ratio_min,
+            ratio_max,
+            cases,
+            sigma_mode,
+            output: OutputOptions {
+                figures,
+                svg,
+                region_map_samples,
+            },
+        })
+    }
+
+    /// `ρ t` \[kg/m²\], the factor by which the Delassus entries of the spec's §15 table (per unit ρt)
+    /// are divided.
+    pub fn rho_t(&self) -> Real {
+        self.density * self.thickness
+    }
+
+    /// Number of deck geometries `(β1, β2, R1, R2)`.
+    pub fn geometry_count(&self) -> usize {
+        self.beta1_deg.len() * self.beta2_deg.len() * self.r1_m.len() * self.r2_m.len()
+    }
+
+    /// Number of configurations `(β1, β2, R1, R2, μ, ε)`.
+    pub fn configuration_count(&self) -> usize {
+        self.geometry_count() * self.mu.len() * self.eps.len()
+    }
+
+    /// Number of `θ1 × θ2` cells.
+    pub fn cell_count(&self) -> usize {
+        self.theta1.len() * self.theta2.len()
+    }
+
+    /// Total number of rows of `bounds.csv`.
+    pub fn row_count(&self) -> usize {
+        self.configuration_count() * self.cases.len() * self.cell_count()
+    }
+}

@@ -1,0 +1,182 @@
+//! Sharded runs (`--shard K/N`) and their merge (`pounding study merge DIR...`).
+//!
+//! A shard run writes two texts: a manifest ([`manifest_json`]: format tag, `K`, `N`, the total row
+//! count, the row count of this shard and the scenario text) and the shard's rows
+//! ([`shard_rows_csv`]: `row,` + the `bounds.csv` header, then `global_index,` + the row's
+//! `bounds.csv` line). [`merge`] checks that the shards come from the same scenario, that every
+//! `K = 1..N` is present exactly once and that every row is present exactly once, and returns the
+//! rows in global order — parsing is exact (shortest round-trip floats), so the merged outputs equal
+//! an unsharded run's byte for byte.
+
+use super::StudyError;
+use super::csv::{BOUNDS_HEADER, RowWriter, parse_bounds_line};
+use super::run::{Layout, Row, Shard};
+use super::scenario::Scenario;
+use serde_json::{Value, json};
+
+/// Format tag of shard manifests.
+pub const SHARD_FORMAT: &str = "pounding-study-shard 1";
+
+/// The manifest of shard `shard` of the study described by `scenario_text`.
+pub fn manifest_json(shard: Shard, scenario_text: &str, rows_total: usize, rows: usize) -> String {
+    let v = json!({
+        "format": SHARD_FORMAT,
+        "shard": shard.index,
+        "of": shard.count,
+        "rows_total": rows_total,
+        "rows": rows,
+        "scenario": scenario_text,
+    });
+    let mut s = serde_json::to_string_pretty(&v).unwrap_or_default();
+    s.push('\n');
+    s
+}
+
+/// The rows of a shard: header `row,<bounds header>`, then `index,<bounds line>`.
+pub fn shard_rows_csv(scenario: &Scenario, rows: &[Row]) -> String {
+    let mut s = String::with_capacity(rows.len() * 260 + 300);
+    s.push_str("row,");
+    s.push_str(BOUNDS_HEADER);
+    s.push('\n');
+    let mut w = RowWriter::new(scenario);
+    for r in rows {
+        s.push_str(&r.index.to_string());
+        s.push(',');
+        w.push(&mut s, r);
+    }
+    s
+}
+
+/// One shard's files as read from disk.
+#[derive(Debug, Clone)]
+pub struct ShardFiles {
+    /// Where the shard came from (for error messages), e.g. its directory.
+    pub origin: String,
+    /// The manifest text.
+    pub manifest: String,
+    /// The rows text.
+    pub rows: String,
+}
+
+/// The merged study: the scenario text, the parsed scenario and all rows in global order.
+#[derive(Debug, Clone)]
+pub struct Merged {
+    /// The scenario text shared by all shards.
+    pub scenario_text: String,
+    /// The parsed scenario.
+    pub scenario: Scenario,
+    /// Every row, in global order.
+    pub rows: Vec<Row>,
+}
+
+fn err(origin: &str, msg: impl std::fmt::Display) -> StudyError {
+    StudyError::Merge(format!("{origin}: {msg}"))
+}
+
+/// Merges shard outputs (in any order) into the rows of the unsharded study.
+pub fn merge(parts: &[ShardFiles]) -> Result<Merged, StudyError> {
+    if parts.is_empty() {
+        return Err(StudyError::Merge("no shard directories given".into()));
+    }
+    let mut scenario_text: Option<String> = None;
+    let mut count: Option<usize> = None;
+    let mut seen: Vec<Option<String>> = Vec::new();
+    let mut parsed = Vec::with_capacity(parts.len());
+    for p in parts {
+        let v: Value = serde_json::from_str(&p.manifest)
+            .map_err(|e| err(&p.origin, format!("manifest is not valid JSON: {e}")))?;
+        if v["format"] != SHARD_FORMAT {
+            return Err(err(
+                &p.origin,
+                format!("manifest format is not {SHARD_FORMAT:?}"),
+            ));
+        }
+        let k = v["shard"]
+            .as_u64()
+            .ok_or_else(|| err(&p.origin, "manifest lacks `shard`"))? as usize;
+        let n = v["of"]
+            .as_u64()
+            .ok_or_else(|| err(&p.origin, "manifest lacks `of`"))? as usize;
+        let text = v["scenario"]
+            .as_str()
+            .ok_or_else(|| err(&p.origin, "manifest lacks `scenario`"))?;
+        let shard = Shard::new(k, n).map_err(|e| err(&p.origin, e))?;
+        match (&scenario_text, count) {
+            (None, None) => {
+                scenario_text = Some(text.to_string());
+                count = Some(n);
+                seen = vec![None; n];
+            }
+            (Some(t), Some(c)) => {
+                if t != text {
+                    return Err(err(&p.origin, "scenario differs from the other shards'"));
+                }
+                if c != n {
+                    return Err(err(&p.origin, format!("shard count {n} differs from {c}")));
+                }
+            }
+            _ => unreachable!("set together"),
+        }
+        if let Some(prev) = &seen[k - 1] {
+            return Err(err(
+                &p.origin,
+                format!("shard {k}/{n} also given as {prev}"),
+            ));
+        }
+        seen[k - 1] = Some(p.origin.clone());
+        parsed.push((shard, p));
+    }
+    if let Some(k) = seen.iter().position(Option::is_none) {
+        return Err(StudyError::Merge(format!(
+            "shard {}/{} is missing",
+            k + 1,
+            count.unwrap_or(0)
+        )));
+    }
+    let scenario_text = scenario_text.unwrap_or_default();
+    let scenario = Scenario::from_toml(&scenario_text, "scenario stored in the shard manifest")?;
+    let layout = Layout::of(&scenario);
+    let total = layout.total();
+    let mut rows: Vec<Option<Row>> = vec![None; total];
+    for (shard, p) in parsed {
+        let mut lines = p.rows.lines();
+        let header = lines.next().unwrap_or("");
+        if header.strip_prefix("row,") != Some(BOUNDS_HEADER) {
+            return Err(err(&p.origin, "rows file has the wrong header"));
+        }
+        for line in lines {
+            let (idx, rest) = line
+                .split_once(',')
+                .ok_or_else(|| err(&p.origin, "malformed row line"))?;
+            let idx: usize = idx
+                .parse()
+                .map_err(|_| err(&p.origin, format!("bad row index {idx:?}")))?;
+            if idx >= total || !shard.contains(idx) {
+                return Err(err(
+                    &p.origin,
+                    format!(
+                        "row {idx} does not belong to shard {}/{}",
+                        shard.index, shard.count
+                    ),
+                ));
+            }
+            if rows[idx].is_some() {
+                return Err(err(&p.origin, format!("row {idx} appears twice")));
+            }
+            rows[idx] =
+                Some(parse_bounds_line(&scenario, idx, rest).map_err(|e| err(&p.origin, e))?);
+        }
+    }
+    let rows: Vec<Row> = rows
+        .into_iter()
+        .enumerate()
+        .map(|(i, r)| {
+            r.ok_or_else(|| StudyError::Merge(format!("row {i} is missing (truncated shard?)")))
+        })
+        .collect::<Result<_, _>>()?;
+    Ok(Merged {
+        scenario_text,
+        scenario,
+        rows,
+    })
+}
