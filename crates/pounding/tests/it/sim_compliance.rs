@@ -121,3 +121,100 @@ fn opensees_1d_benchmark_in_the_simulator() {
     let adv = sol.time_step_advice.unwrap();
     assert!(adv.adequate && (adv.contact_duration - 0.01779).abs() < 1e-4);
 }
+
+/// Largest `|y_j − y_j^rigid|` over the run relative to the largest rigid `|y_j|`, for an isolated
+/// central impact of two decks on bearings (T = 1.0 s / 0.5 s, no damping, no ground motion)
+/// meeting at the reference pose (gap 0) with ±0.5 m/s, e = 0.6, μ = 0, over 0.2 s.
+fn central_impact_deviation(contact: JointContact, dt: f64) -> (f64, usize) {
+    let run = |c: JointContact| {
+        let mut model = straight_model(1.0e6, 1.0, 0.5, 0.0, 0.0, c);
+        model.restitution = 0.6;
+        let mut p = SimProblem::at_rest(model, GroundMotion::none());
+        p.u0 = [0.0, -0.5, 0.0, 0.0, 0.5, 0.0];
+        let settings = SimSettings {
+            dt,
+            duration: Some(0.2),
+            ..SimSettings::default()
+        };
+        simulate(&p, &settings).unwrap()
+    };
+    let rigid = run(JointContact::Rigid);
+    let comp = run(contact);
+    assert_eq!(rigid.summary.impacts, 1);
+    let mut dev: f64 = 0.0;
+    let mut peak: f64 = 0.0;
+    for (a, b) in rigid.history.q.iter().zip(&comp.history.q) {
+        for j in [1, 4] {
+            dev = dev.max((a[j] - b[j]).abs());
+            peak = peak.max(a[j].abs());
+        }
+    }
+    (dev / peak, comp.summary.impacts)
+}
+
+/// As the contact stiffness grows, the compliance laws' response to an isolated central impact
+/// approaches the rigid (Newton) law's: the deviation falls like the contact duration
+/// (`∝ k^{-1/2}` for Kelvin, `∝ k_h^{-2/5}` for Hertz-damp).
+#[test]
+fn stiff_compliance_laws_approach_the_rigid_law() {
+    use pounding::contact_law::calibration::{HertzDampCalibration, KelvinCalibration};
+    use pounding::contact_law::{HertzDamp, KelvinVoigt};
+    let dt = 2e-5;
+    let kelvin: Vec<f64> = [1e8, 1e9, 1e10, 1e11]
+        .iter()
+        .map(|&k| {
+            let law = KelvinVoigt::from_restitution(k, 0.6, 1e6, 1e6, KelvinCalibration::Numerical)
+                .unwrap();
+            let (d, n) = central_impact_deviation(
+                JointContact::Compliance(ComplianceContact::new(law.into())),
+                dt,
+            );
+            assert_eq!(n, 1);
+            d
+        })
+        .collect();
+    let hd: Vec<f64> = [1e9, 1e10, 1e11, 1e12]
+        .iter()
+        .map(|&k| {
+            let law =
+                HertzDamp::from_restitution(k, 0.6, None, 0.01, HertzDampCalibration::Numerical)
+                    .unwrap();
+            let (d, n) = central_impact_deviation(
+                JointContact::Compliance(ComplianceContact::new(law.into())),
+                dt,
+            );
+            assert_eq!(n, 1);
+            d
+        })
+        .collect();
+    eprintln!("relative deviation from rigid: kelvin {kelvin:?}, hertz-damp {hd:?}");
+    for w in kelvin.windows(2).chain(hd.windows(2)) {
+        assert!(w[1] < 0.7 * w[0], "{w:?}");
+    }
+    assert!(kelvin[3] < 0.06 && hd[3] < 0.08, "{kelvin:?} {hd:?}");
+    // last decade: Kelvin ∝ k^{-1/2} (factor 0.316), Hertz-damp ∝ k_h^{-2/5} (0.398)
+    let (fk, fh) = (kelvin[3] / kelvin[2], hd[3] / hd[2]);
+    assert!((fk - 0.316).abs() < 0.08, "{fk}");
+    assert!((fh - 0.398).abs() < 0.08, "{fh}");
+}
+
+/// Bad model parameters for compliance contacts are errors naming the parameter.
+#[test]
+fn bad_compliance_parameters_are_errors() {
+    use pounding::contact_law::{BilinearImpact, KelvinVoigt};
+    use pounding::sim::SimError;
+    let e = KelvinVoigt::new(-1.0, 0.0).unwrap_err().to_string();
+    assert!(e.contains("k = -1"), "{e}");
+    let e = BilinearImpact::new(1e9, 1e8, 0.0).unwrap_err().to_string();
+    assert!(e.contains("delta_y"), "{e}");
+    let mut cc = ComplianceContact::new(opensees_bilinear());
+    cc.friction_velocity = -1.0;
+    let m = straight_model(1e6, 1.0, 0.5, 0.05, 0.05, JointContact::Compliance(cc));
+    match simulate(
+        &SimProblem::at_rest(m, elc180_only()),
+        &SimSettings::default(),
+    ) {
+        Err(SimError::InvalidParameter { name, .. }) => assert_eq!(name, "friction_velocity"),
+        other => panic!("{other:?}"),
+    }
+}
