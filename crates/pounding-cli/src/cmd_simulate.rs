@@ -128,6 +128,19 @@ csv_units = "g"              # units of .csv records: "g" or "m/s2"
 dt = 1e-3            # time step [s]
 # duration = 53.71   # [s]; default: until the last record sample
 history_every = 10   # write every n-th step to history.csv (peaks use every step)
+
+# [contact]          # the joint's normal contact law (see docs/readme/compare.md)
+# law = "rigid"      # rigid (Newton + Coulomb LCP, default) | kelvin | hertz | hertz-damp |
+#                    # bilinear | jankowski: compliance laws (trapezoid + Newton on the forces)
+# restitution = 0.5  # target e of the damped laws (default: [joint] eps_n)
+# k = 1e10           # kelvin [N/m]; c = ... [N s/m] instead of restitution
+# k_h = 2.747e10     # hertz, hertz-damp, bilinear derivation [N/m^1.5] (25 000 kip/in^1.5)
+# k1 = 1.5586e10     # bilinear, all three or none (then from k_h, restitution,
+# k2 = 3.1328e9      #   delta_m = 0.0254, a = 0.1)
+# delta_y = 2.54e-3
+# friction_velocity = 1e-3  # regularisation of Coulomb friction [m/s]
+# Also: [decks] mass1 / mass2 (deck mass directly) and [bearings] damping = "dashpots"
+# (c = 2 zeta m omega to the ground, x and y) instead of "rayleigh".
 "#;
 
 #[derive(Deserialize, Default)]
@@ -711,6 +724,14 @@ pub fn run(args: Args) -> Result<ExitCode> {
         s.energy_balance_error,
         out.display()
     );
+    if let Some(f) = s.peak_contact_force {
+        eprintln!(
+            "contact law {}: peak contact force {:.4} MN, peak penetration {:.4} mm",
+            sim_contact::describe(&setup.problem.model.contact)["law"],
+            f / 1e6,
+            s.peak_penetration * 1e3
+        );
+    }
     if sol.status != pounding::sim::SimStatus::Completed {
         eprintln!("warning: run status {:?}", sol.status);
     }
