@@ -26,6 +26,8 @@ use std::process::ExitCode;
 /// Arguments of `pounding impact`.
 ///
 /// Bridge form: `--r1 --r2 --beta1 --beta2 --theta1 --theta2 --case --mu --eps` (angles in degrees).
+/// Shapes: `--shape straight|skew --length [--skew]` (two decks face to face) and `--abutment`
+/// (deck 1 of any shape against a rigid abutment beyond its far end; `--corner`, `--gap`, `--speed`).
 /// Generic form: `--problem FILE.json`. Exit status: 0 on success, 1 when the LCP status is
 /// `failed`, 2 on bad input.
 #[derive(clap::Args)]
@@ -142,7 +144,8 @@ pub struct ImpactArgs {
     /// acute = c0, obtuse = c1 (skew) and outer = c0, inner = c1 (curved).
     #[arg(long)]
     corner: Option<String>,
-    /// Speed of the longitudinal approach toward the abutment [m/s] (> 0; --abutment; default 1).
+    /// Speed of deck 1's longitudinal approach [m/s] (> 0; default 1): toward the abutment
+    /// (--abutment, both corners) or toward deck 2 (two straight/skew decks).
     #[arg(long, allow_negative_numbers = true)]
     speed: Option<f64>,
     /// Print JSON instead of the readable summary.

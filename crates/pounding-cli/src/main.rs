@@ -27,7 +27,7 @@ enum Command {
     Impact(cmd_impact::Args),
     /// The paper's parametric stick/slip study (built-in default or a scenario file).
     Study(cmd_study::Args),
-    /// Seismic time-history simulation of two curved decks with pounding (built-in default: El Centro 1940).
+    /// Seismic time-history simulation of two decks with pounding (curved/straight/skew, abutments, batch runs; default: El Centro 1940).
     Simulate(cmd_simulate::Args),
     /// Run one scenario with several joint contact laws (rigid and compliance) side by side.
     Compare(cmd_compare::Args),

@@ -77,7 +77,11 @@ fn batch_rows_equal_single_runs_row_for_row() {
         .args(["--threads", "2", "--out", s(&out)])
         .output()
         .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{err}");
+    // stderr is not a terminal here: no progress bar, just the two summary lines
+    assert!(!err.contains("runs ["), "{err}");
+    assert_eq!(err.lines().count(), 2, "{err}");
     assert!(std::fs::metadata(out.join("batch.png")).unwrap().len() > 10_000);
     let csv = std::fs::read_to_string(out.join("batch.csv")).unwrap();
     let (head, rows) = rows(&csv);
