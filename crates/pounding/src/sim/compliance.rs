@@ -366,7 +366,11 @@ pub(crate) fn simulate_compliance(
         let mut r = resid(&un, &ev);
         let mut converged = false;
         let mut best = (r.amax(), un, ev);
-        for _ in 0..50 {
+        // open contacts (no force now or before): the first guess is exact
+        if r.amax() <= 1e-12 + 1e-10 * un.amax() {
+            converged = true;
+        }
+        for _ in 0..if converged { 0 } else { 50 } {
             let mut dr = Matrix6::<Real>::zeros();
             for e in &ev {
                 if e.f_n > 0.0 || e.kc > 0.0 {
