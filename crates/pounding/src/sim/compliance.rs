@@ -236,7 +236,7 @@ pub(crate) fn simulate_compliance(
     let b_g = -(winv * mr) * h;
     let f_of = |a: &Vector| -> Vector6<Real> { -(mr * nalgebra::Vector2::new(a.x, a.y)) };
 
-    let half_w = model.arrangement.deck1.width / 2.0;
+    let half_w = bodies[0].half_face;
     let (mu, vr) = (model.friction, cc.friction_velocity);
     let g0 = model.gap;
 

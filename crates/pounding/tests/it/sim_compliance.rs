@@ -218,3 +218,50 @@ fn bad_compliance_parameters_are_errors() {
         other => panic!("{other:?}"),
     }
 }
+
+/// Skewed decks (joint face longer than W): the compliance contacts see the whole face, and a
+/// stiff Kelvin law gives the rigid run's impact count and nearly its closing.
+#[test]
+fn skewed_decks_with_a_compliance_law() {
+    use pounding::contact_law::KelvinVoigt;
+    use pounding::contact_law::calibration::KelvinCalibration;
+    use pounding::shape::SkewedDeck;
+    let deck = DeckShape::Skewed(SkewedDeck {
+        length: 30.0,
+        width: 10.0,
+        skew: 20f64.to_radians(),
+        thickness: 0.5,
+        density: 2500.0,
+    });
+    let mut model = SimModel::with_shapes([deck, deck], 0.05, 2.0e7, 9.0e6, 0.05, 0.5, 0.5, 0.4);
+    let settings = SimSettings {
+        dt: 5e-4,
+        duration: Some(10.0),
+        ..SimSettings::default()
+    };
+    let rigid = simulate(
+        &SimProblem::at_rest(model.clone(), el_centro_1940()),
+        &settings,
+    )
+    .unwrap();
+    let m = model.masses();
+    let law =
+        KelvinVoigt::from_restitution(1e11, 0.5, m[0], m[1], KelvinCalibration::Numerical).unwrap();
+    model.contact = JointContact::Compliance(ComplianceContact::new(law.into()));
+    let comp = simulate(&SimProblem::at_rest(model, el_centro_1940()), &settings).unwrap();
+    let (r, c) = (&rigid.summary, &comp.summary);
+    eprintln!(
+        "skew: rigid {} impacts, closing {}; kelvin {} impacts, closing {}, force {:?}",
+        r.impacts, r.peak_joint_closing, c.impacts, c.peak_joint_closing, c.peak_contact_force
+    );
+    assert!(r.impacts >= 1);
+    assert_eq!(c.impacts, r.impacts);
+    assert!(
+        comp.history
+            .end_gaps
+            .iter()
+            .all(|g| g.iter().all(|x| x.is_finite()))
+    );
+    assert!(c.peak_contact_force.unwrap() > 0.0);
+    assert!((c.peak_joint_closing - r.peak_joint_closing).abs() < 2e-3);
+}
