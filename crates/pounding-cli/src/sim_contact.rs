@@ -305,4 +305,5 @@ pub(super) fn add_compliance_summary(
         });
     }
     v["newton_failures"] = serde_json::json!(sol.newton_failures);
+    v["closure_steps"] = serde_json::json!(sol.closure_steps);
 }

@@ -16,12 +16,13 @@
 //! (`k_c = ∂f_N/∂δ`, `c_c = ∂f_N/∂δ̇` from [`crate::contact_law::Evaluation`]; the geometric
 //! stiffness of the rotating normals is left out of `J`, which only slows convergence when the
 //! decks rotate), with a backtracking line search; converged when `|Δu|_∞ ≤ 1e-12 + 1e-10 |u|_∞`
-//! (at most 50 iterations). A step without a root — a law whose force jumps, such as Kelvin's
-//! dashpot force `c δ̇` at contact onset, when the step ends within `O(h² c δ̇ / m)` of `δ = 0` —
-//! keeps the iterate with the smallest residual and is counted in
-//! [`super::SimSolution::newton_failures`] (status
-//! [`super::SimStatus::CompletedWithNewtonFailures`]); the energy balance error then shows its
-//! effect (default bridge, Kelvin: one such step, balance error 3e-5).
+//! (at most 50 iterations). A law whose force jumps at `δ = 0` (Kelvin's dashpot force `c δ̇`
+//! at contact onset) can leave a step without a root when it would end within `O(h² c δ̇ / m)`
+//! of `δ = 0`; that step is solved in the **closure of the law's graph**: the ends within 1 µm of
+//! `δ = 0` are held at `δ_{k+1} = 0` by an unknown force `λ ∈ [0, F(0⁺, δ̇)]` (Newton on
+//! `(u, λ)`, [`super::SimSolution::closure_steps`]). If that fails too, the iterate with the
+//! smallest residual is kept and the step is counted in [`super::SimSolution::newton_failures`]
+//! (status [`super::SimStatus::CompletedWithNewtonFailures`]).
 //!
 //! # Contacts
 //! Per joint end the realised candidate corner (as in the rigid scheme) carries the contact, with
@@ -157,6 +158,123 @@ fn gen_force(ends: &[EndEval; 2]) -> Vector6<Real> {
     r
 }
 
+/// What [`closure_step`] needs from the stepper.
+struct ClosureCtx<'a> {
+    bodies: &'a [super::model::DeckBody; 2],
+    half_w: Real,
+    states: &'a [LawState; 2],
+    joint: &'a JointLaw,
+    mu: Real,
+    vr: Real,
+    hth: Real,
+    winv: &'a Matrix6<Real>,
+    base: &'a Vector6<Real>,
+    q: &'a Vector6<Real>,
+    u: &'a Vector6<Real>,
+    th: Real,
+    h: Real,
+}
+
+/// The graph-closure step for a law whose force jumps at `δ = 0` (Kelvin's `c δ̇`): the ends
+/// whose penetration is within 1 µm of zero in the best Newton iterate are held at `δ_{k+1} = 0`
+/// by an unknown force `λ_e`, which must lie in the closure `[0, F(0⁺, δ̇)]` of the law's graph.
+/// Newton on `(u, λ)`; `None` if it does not converge or `λ` leaves the closure.
+fn closure_step(
+    c: &ClosureCtx,
+    u0: &Vector6<Real>,
+    ev0: &[EndEval; 2],
+) -> Option<(Vector6<Real>, [EndEval; 2])> {
+    let held: Vec<usize> = (0..2)
+        .filter(|&e| ev0[e].case.is_some() && ev0[e].delta.abs() < 1e-6)
+        .collect();
+    if held.is_empty() {
+        return None;
+    }
+    let n = 6 + held.len();
+    let q_of = |un: &Vector6<Real>| c.q + (c.u * (1.0 - c.th) + un * c.th) * c.h;
+    let mut un = *u0;
+    let mut lam: Vec<Real> = held.iter().map(|&e| ev0[e].f_n).collect();
+    for _ in 0..30 {
+        let mut ev = eval_ends(
+            c.bodies,
+            c.half_w,
+            &q_of(&un),
+            &un,
+            c.states,
+            c.joint,
+            c.mu,
+            c.vr,
+            c.hth,
+        );
+        for (i, &e) in held.iter().enumerate() {
+            let gt = ev[e].wt.dot(&un);
+            let root = (gt * gt + c.vr * c.vr).sqrt();
+            ev[e].f_n = lam[i];
+            ev[e].f_t = -c.mu * lam[i] * gt / root;
+            ev[e].kc = 0.0;
+            ev[e].kt = c.mu * lam[i] * c.vr * c.vr / (root * root * root);
+            ev[e].mus = c.mu * gt / root;
+        }
+        let r_u = un - c.base - c.winv * gen_force(&ev) * c.hth;
+        let mut r = nalgebra::DVector::<Real>::zeros(n);
+        r.rows_mut(0, 6).copy_from(&r_u);
+        for (i, &e) in held.iter().enumerate() {
+            r[6 + i] = ev[e].delta;
+        }
+        let mut dr = Matrix6::<Real>::zeros();
+        for e in &ev {
+            dr -= e.wn * e.wn.transpose() * e.kc;
+            dr += e.wt * (e.wn.transpose() * (e.mus * e.kc) - e.wt.transpose() * e.kt);
+        }
+        let mut jac = nalgebra::DMatrix::<Real>::zeros(n, n);
+        jac.view_mut((0, 0), (6, 6))
+            .copy_from(&(Matrix6::identity() - c.winv * dr * c.hth));
+        for (i, &e) in held.iter().enumerate() {
+            let col = -(c.winv * (ev[e].wn - ev[e].wt * ev[e].mus)) * c.hth;
+            jac.view_mut((0, 6 + i), (6, 1)).copy_from(&col);
+            // δ = −g_N, ∂g_N/∂q = w_Nᵀ, ∂q/∂u = hθ
+            let row = -(ev[e].wn.transpose() * c.hth);
+            jac.view_mut((6 + i, 0), (1, 6)).copy_from(&row);
+        }
+        let dx = jac.lu().solve(&(-&r))?;
+        let du = Vector6::from_iterator(dx.rows(0, 6).iter().copied());
+        un += du;
+        for i in 0..held.len() {
+            lam[i] += dx[6 + i];
+        }
+        let small = du.amax() <= 1e-12 + 1e-10 * un.amax()
+            && (0..held.len()).all(|i| dx[6 + i].abs() <= 1e-6 * lam[i].abs().max(1.0));
+        if small {
+            let mut ev = eval_ends(
+                c.bodies,
+                c.half_w,
+                &q_of(&un),
+                &un,
+                c.states,
+                c.joint,
+                c.mu,
+                c.vr,
+                c.hth,
+            );
+            for (i, &e) in held.iter().enumerate() {
+                let ddot = -ev[e].wn.dot(&un);
+                let f_hi = c
+                    .joint
+                    .corner_evaluate(&c.states[e], Real::MIN_POSITIVE, ddot)
+                    .force;
+                if !(lam[i] >= 0.0 && lam[i] <= f_hi * (1.0 + 1e-9)) {
+                    return None;
+                }
+                let gt = ev[e].wt.dot(&un);
+                ev[e].f_n = lam[i];
+                ev[e].f_t = -c.mu * lam[i] * gt / (gt * gt + c.vr * c.vr).sqrt();
+            }
+            return Some((un, ev));
+        }
+    }
+    None
+}
+
 /// Per-end bookkeeping of an impact in progress.
 #[derive(Clone, Copy)]
 struct OpenImpact {
@@ -279,6 +397,7 @@ pub(crate) fn simulate_compliance(
     let mut peak_force: Real = 0.0;
     let mut status = SimStatus::Completed;
     let mut newton_failures = 0usize;
+    let mut closure_steps = 0usize;
     let mut steps_done = 0usize;
     let seat_pts: [(usize, [Vector; 2], Vector); 4] = [
         (0, bodies[0].joint_corners, bodies[0].joint_inward),
@@ -421,10 +540,31 @@ pub(crate) fn simulate_compliance(
             }
         }
         if !converged {
-            // No root (e.g. Kelvin's dashpot jump at contact onset, module doc): keep the
-            // iterate with the smallest residual.
             (_, un, ev) = best;
-            newton_failures += 1;
+            let ctx = ClosureCtx {
+                bodies: &bodies,
+                half_w,
+                states: &states,
+                joint: &joint,
+                mu,
+                vr,
+                hth,
+                winv: &winv,
+                base: &base,
+                q: &q,
+                u: &u,
+                th,
+                h,
+            };
+            match closure_step(&ctx, &un, &ev) {
+                Some((u2, ev2)) => {
+                    un = u2;
+                    ev = ev2;
+                    closure_steps += 1;
+                }
+                // keep the iterate with the smallest residual
+                None => newton_failures += 1,
+            }
         }
         let r_new = gen_force(&ev);
         let rbar = r_k * (1.0 - th) + r_new * th;
@@ -567,5 +707,6 @@ pub(crate) fn simulate_compliance(
         rayleigh: sys.rayleigh,
         time_step_advice: advice,
         newton_failures,
+        closure_steps,
     })
 }

@@ -776,6 +776,9 @@ pub struct SimSolution {
     pub time_step_advice: Option<crate::contact_law::timestep::TimeStepAdvice>,
     /// Compliance laws: steps whose Newton iteration on the contact forces did not converge.
     pub newton_failures: usize,
+    /// Compliance laws: steps solved by the graph closure of a force jump at contact onset
+    /// (Kelvin's dashpot; [`compliance`] module doc).
+    pub closure_steps: usize,
 }
 
 /// Most contacts at once: two at the joint, two at each abutment.
@@ -1243,5 +1246,6 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
         rayleigh: sys.rayleigh,
         time_step_advice: None,
         newton_failures: 0,
+        closure_steps: 0,
     })
 }
