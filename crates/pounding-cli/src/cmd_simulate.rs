@@ -25,7 +25,10 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 #[path = "sim_plots.rs"]
-mod sim_plots;
+pub(crate) mod sim_plots;
+
+#[path = "sim_contact.rs"]
+pub(crate) mod sim_contact;
 
 #[path = "sim_batch.rs"]
 mod sim_batch;
@@ -125,6 +128,19 @@ csv_units = "g"              # units of .csv records: "g" or "m/s2"
 dt = 1e-3            # time step [s]
 # duration = 53.71   # [s]; default: until the last record sample
 history_every = 10   # write every n-th step to history.csv (peaks use every step)
+
+# [contact]          # the joint's normal contact law (see docs/readme/compare.md)
+# law = "rigid"      # rigid (Newton + Coulomb LCP, default) | kelvin | hertz | hertz-damp |
+#                    # bilinear | jankowski: compliance laws (trapezoid + Newton on the forces)
+# restitution = 0.5  # target e of the damped laws (default: [joint] eps_n)
+# k = 1e10           # kelvin [N/m]; c = ... [N s/m] instead of restitution
+# k_h = 2.747e10     # hertz, hertz-damp, bilinear derivation [N/m^1.5] (25 000 kip/in^1.5)
+# k1 = 1.5586e10     # bilinear, all three or none (then from k_h, restitution,
+# k2 = 3.1328e9      #   delta_m = 0.0254, a = 0.1)
+# delta_y = 2.54e-3
+# friction_velocity = 1e-3  # regularisation of Coulomb friction [m/s]
+# Also: [decks] mass1 / mass2 (deck mass directly) and [bearings] damping = "dashpots"
+# (c = 2 zeta m omega to the ground, x and y) instead of "rayleigh".
 "#;
 
 #[derive(Deserialize, Default)]
@@ -140,6 +156,8 @@ struct Scenario {
     ground_motion: GroundSec,
     #[serde(default)]
     time: TimeSec,
+    #[serde(default)]
+    contact: sim_contact::ContactSec,
     #[serde(default)]
     abutments: AbutmentsSec,
 }
@@ -168,6 +186,8 @@ struct DecksSec {
     width: f64,
     thickness: f64,
     density: f64,
+    mass1: Option<f64>,
+    mass2: Option<f64>,
 }
 impl Default for DecksSec {
     fn default() -> Self {
@@ -183,6 +203,8 @@ impl Default for DecksSec {
             width: 10.0,
             thickness: 0.5,
             density: 2500.0,
+            mass1: None,
+            mass2: None,
         }
     }
 }
@@ -214,6 +236,7 @@ struct BearingsSec {
     damping_ratio: f64,
     points1: Option<Vec<[f64; 2]>>,
     points2: Option<Vec<[f64; 2]>>,
+    damping: String,
 }
 impl Default for BearingsSec {
     fn default() -> Self {
@@ -223,6 +246,7 @@ impl Default for BearingsSec {
             damping_ratio: 0.05,
             points1: None,
             points2: None,
+            damping: "rayleigh".into(),
         }
     }
 }
@@ -419,9 +443,9 @@ fn deck_shapes(src: &Source, d: &DecksSec) -> Result<Option<[DeckShape; 2]>> {
 }
 
 /// Everything needed to run, built and validated from the scenario and the flags.
-struct Setup {
-    problem: SimProblem,
-    settings: SimSettings,
+pub(crate) struct Setup {
+    pub(crate) problem: SimProblem,
+    pub(crate) settings: SimSettings,
     records: [String; 2],
     /// Units of `.csv` records.
     units: AccelUnits,
@@ -454,6 +478,11 @@ fn load_record(src: &Source, spec: &str, key: &str, units: AccelUnits) -> Result
 }
 
 fn build(args: &Args) -> Result<Setup> {
+    build_with(args, None)
+}
+
+/// [`build`] with the joint's contact law replaced by `law` (a [`sim_contact::LAW_NAMES`] name).
+pub(crate) fn build_with(args: &Args, law: Option<&str>) -> Result<Setup> {
     let src = match &args.scenario {
         Some(p) => {
             let text = std::fs::read_to_string(p)
@@ -537,6 +566,8 @@ fn build(args: &Args) -> Result<Setup> {
     }
     // Validate the decks before using them for the default bearing points.
     model.validate().map_err(|e| sim_error(&src, e))?;
+    sim_contact::apply_shape_and_damping(&src, d, &b.damping, &mut model)?;
+    model.contact = sim_contact::build_contact(&src, &sc.contact, law, j.eps_n, model.masses())?;
     for (deck_no, pts, k, key) in [
         (1, &b.points1, b.stiffness1, "points1"),
         (2, &b.points2, b.stiffness2, "points2"),
@@ -623,6 +654,7 @@ fn build(args: &Args) -> Result<Setup> {
             src.key_ref("time", "duration")
         );
     }
+    // The straight-deck / dashpot / contact options are validated with the model.
     // The duration run (batch runs without `duration` use each record's length, checked there).
     let duration = settings
         .duration
@@ -659,6 +691,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let t_sim = Instant::now();
     let sol = simulate(&setup.problem, &setup.settings).map_err(|e| anyhow!("{e}"))?;
     let sim_secs = t_sim.elapsed().as_secs_f64();
+    warn_time_step(&sol);
 
     let out = &args.out;
     std::fs::create_dir_all(out)
@@ -705,6 +738,14 @@ pub fn run(args: Args) -> Result<ExitCode> {
         s.energy_balance_error,
         out.display()
     );
+    if let Some(f) = s.peak_contact_force {
+        eprintln!(
+            "contact law {}: peak contact force {:.4} MN, peak penetration {:.4} mm",
+            sim_contact::describe(&setup.problem.model.contact)["law"],
+            f / 1e6,
+            s.peak_penetration * 1e3
+        );
+    }
     if sol.status != pounding::sim::SimStatus::Completed {
         // outputs are written (they show where the run went wrong), but the run did not succeed
         eprintln!(
@@ -722,7 +763,20 @@ pub fn run(args: Args) -> Result<ExitCode> {
 
 const DEG: Real = 180.0 / std::f64::consts::PI;
 
-fn history_csv(setup: &Setup, sol: &SimSolution) -> String {
+/// Prints a warning to stderr when a compliance law's contact is not resolved by `dt`.
+pub(crate) fn warn_time_step(sol: &SimSolution) {
+    if let Some(a) = &sol.time_step_advice
+        && !a.adequate
+    {
+        eprintln!(
+            "warning: dt = {} s is too coarse for the contact stiffness: the linearised contact \
+             lasts {:.3e} s = {:.1} steps; use dt <= {:.2e} s (20 steps per contact)",
+            sol.dt, a.contact_duration, a.steps_per_contact, a.max_step
+        );
+    }
+}
+
+pub(crate) fn history_csv(setup: &Setup, sol: &SimSolution) -> String {
     let h = &sol.history;
     let mut s = String::with_capacity(h.t.len() * 400);
     s.push_str(
@@ -736,6 +790,10 @@ fn history_csv(setup: &Setup, sol: &SimSolution) -> String {
         "joint_gap_xplus_m,joint_gap_xminus_m,slip_m,\
          input_energy_J,kinetic_energy_J,strain_energy_J,viscous_dissipation_J,contact_dissipation_J",
     );
+    let forces = !h.contact_force.is_empty();
+    if forces {
+        s.push_str(",contact_force_xplus_N,contact_force_xminus_N");
+    }
     // abutment gap columns only when there are abutments (the default's file is unchanged)
     let abut: Vec<usize> = (0..2)
         .filter(|&j| setup.problem.model.abutments[j].is_some())
@@ -765,6 +823,9 @@ fn history_csv(setup: &Setup, sol: &SimSolution) -> String {
         for v in [e.input, e.kinetic, e.potential, e.viscous, e.contact] {
             row.push(float_token(v));
         }
+        if forces {
+            row.extend(h.contact_force[i].iter().map(|&f| float_token(f)));
+        }
         for &j in &abut {
             row.push(float_token(h.abutment_gaps[i][j]));
         }
@@ -774,7 +835,7 @@ fn history_csv(setup: &Setup, sol: &SimSolution) -> String {
     s
 }
 
-fn impacts_csv(sol: &SimSolution) -> String {
+pub(crate) fn impacts_csv(sol: &SimSolution) -> String {
     let mut s = String::from(
         "impact,t_s,contact,mode,gamma_n_pre_mps,gamma_t_pre_mps,gamma_n_post_mps,gamma_t_post_mps,\
          impulse_n_Ns,impulse_t_Ns,energy_dissipated_J\n",
@@ -803,7 +864,7 @@ fn impacts_csv(sol: &SimSolution) -> String {
     s
 }
 
-fn summary_json(setup: &Setup, sol: &SimSolution) -> serde_json::Value {
+pub(crate) fn summary_json(setup: &Setup, sol: &SimSolution) -> serde_json::Value {
     let s = &sol.summary;
     let e = &s.final_energy;
     let m = &setup.problem.model;
@@ -828,6 +889,8 @@ fn summary_json(setup: &Setup, sol: &SimSolution) -> serde_json::Value {
         "unseating_time_s": s.unseating_time.map_or(serde_json::Value::Null, json_float),
         "unseated_end": s.unseated_end.map(|i| SEAT_ENDS[i]),
         "max_penetration_m": json_float(s.max_penetration),
+        "peak_contact_force_n": s.peak_contact_force.map_or(serde_json::Value::Null, json_float),
+        "peak_penetration_m": json_float(s.peak_penetration),
         "energy_balance_error": json_float(s.energy_balance_error),
         "energy_J": {
             "input": json_float(e.input),
@@ -900,5 +963,6 @@ fn summary_json(setup: &Setup, sol: &SimSolution) -> serde_json::Value {
         );
         out["abutments"] = serde_json::Value::Object(ab);
     }
+    sim_contact::add_compliance_summary(&mut out, m, sol);
     out
 }

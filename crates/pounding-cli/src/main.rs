@@ -3,6 +3,7 @@
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
+mod cmd_compare;
 mod cmd_impact;
 mod cmd_lcp;
 mod cmd_simulate;
@@ -28,6 +29,8 @@ enum Command {
     Study(cmd_study::Args),
     /// Seismic time-history simulation of two decks with pounding (curved/straight/skew, abutments, batch runs; default: El Centro 1940).
     Simulate(cmd_simulate::Args),
+    /// Run one scenario with several joint contact laws (rigid and compliance) side by side.
+    Compare(cmd_compare::Args),
 }
 
 fn main() -> ExitCode {
@@ -37,6 +40,7 @@ fn main() -> ExitCode {
         Command::Impact(a) => cmd_impact::run(a),
         Command::Study(a) => cmd_study::run(a),
         Command::Simulate(a) => cmd_simulate::run(a),
+        Command::Compare(a) => cmd_compare::run(a),
     };
     match result {
         Ok(code) => code,

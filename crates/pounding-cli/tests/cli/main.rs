@@ -14,12 +14,13 @@ fn help_lists_subcommands() {
     let out = pounding().arg("--help").output().unwrap();
     assert!(out.status.success());
     let s = String::from_utf8_lossy(&out.stdout);
-    for sub in ["lcp", "impact", "study", "simulate"] {
+    for sub in ["lcp", "impact", "study", "simulate", "compare"] {
         assert!(s.contains(sub), "--help lacks {sub}: {s}");
     }
 }
 
 mod batch;
+mod compare;
 mod harden;
 mod lcp;
 mod shapes;

@@ -52,8 +52,10 @@
 //! scaling slip shows at O(1)); for `θ > ½` it measures the scheme's numerical dissipation.
 
 pub mod batch;
+pub mod compliance;
 pub mod contact;
 pub mod model;
+pub mod options;
 
 use crate::analytic::SlipMode;
 use crate::geometry::{ContactCase, GeometryError, SArrangement};
@@ -67,6 +69,7 @@ use nalgebra::{Matrix3, Matrix6, Vector6};
 use thiserror::Error;
 
 pub use model::Bearing;
+pub use options::{ComplianceContact, DampingModel, JointContact};
 
 /// Bad simulation input (numerical trouble is reported in [`SimStatus`] instead).
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -126,6 +129,10 @@ pub struct SimModel {
     pub restitution: Real,
     /// Seat length `> 0` \[m\]: an end whose seat displacement exceeds it is unseated.
     pub seat_length: Real,
+    /// Normal contact law of the joint (default: rigid, the LCP impact law).
+    pub contact: JointContact,
+    /// Damping model (default: Rayleigh with [`SimModel::damping_ratio`]).
+    pub damping_model: DampingModel,
     /// Deck shapes `[deck 1, deck 2]` in the frames of [`crate::shape`] (deck 1 = body frame
     /// moved by `(0, g)`, deck 2 = body frame turned by π); `None` = the curved decks of
     /// `arrangement` (which is then the only geometry used). When set, `arrangement` is ignored;
@@ -249,6 +256,8 @@ impl SimModel {
             friction,
             restitution,
             seat_length,
+            contact: JointContact::Rigid,
+            damping_model: DampingModel::Rayleigh,
             shapes: None,
             abutments: [None, None],
         }
@@ -321,6 +330,7 @@ impl SimModel {
 
     /// Validates every parameter (errors name it).
     pub fn validate(&self) -> Result<(), SimError> {
+        self.validate_options()?;
         match &self.shapes {
             None => {
                 model::validate_deck(&self.arrangement.deck1, 1)?;
@@ -460,7 +470,7 @@ impl SimModel {
                         ),
                     )
                 })?;
-            let cj = mj * a0 + kj * a1;
+            let (cj, a0, a1) = self.damping_of(&mj, &kj, a0, a1);
             let o = 3 * j;
             mass.fixed_view_mut::<3, 3>(o, o).copy_from(&mj);
             stiffness.fixed_view_mut::<3, 3>(o, o).copy_from(&kj);
@@ -661,6 +671,9 @@ pub struct History {
     pub slip: Vec<Real>,
     /// Energies.
     pub energy: Vec<Energy>,
+    /// Normal contact force of each joint end `[x = +W/2, x = −W/2]` \[N\] (compliance laws
+    /// only; empty for rigid contact).
+    pub contact_force: Vec<[Real; 2]>,
     /// Smaller signed gap of the two far-face corners to the abutment, per deck (NaN without an
     /// abutment) \[m\].
     pub abutment_gaps: Vec<[Real; 2]>,
@@ -706,6 +719,12 @@ pub struct SimSummary {
     pub final_energy: Energy,
     /// Maximum of the input energy `E_0 + W_in` over time \[J\].
     pub max_input_energy: Real,
+    /// Peak total normal contact force of the joint (sum over its corner contacts) \[N\];
+    /// `None` for rigid contact (impulses, no force).
+    pub peak_contact_force: Option<Real>,
+    /// Peak penetration `max_t max(0, −min end gap)` \[m\] (rigid: the same as
+    /// [`SimSummary::max_penetration`]; compliance: the law's deformation).
+    pub peak_penetration: Real,
     /// Per deck with an abutment: `max_t (gap_a − smaller corner gap)` \[m\] (`≥ gap_a` means
     /// contact, more means penetration); `None` without an abutment.
     pub peak_abutment_closing: [Option<Real>; 2],
@@ -724,6 +743,9 @@ pub enum SimStatus {
     CompletedWithLcpFailures,
     /// The state became non-finite; the run stopped.
     Diverged,
+    /// All steps done with a compliance law, but the Newton iteration on the contact forces
+    /// did not converge in some steps (see [`SimSolution::newton_failures`]).
+    CompletedWithNewtonFailures,
 }
 
 /// Result of [`simulate`].
@@ -751,6 +773,14 @@ pub struct SimSolution {
     pub frequencies: [[Real; 3]; 2],
     /// Rayleigh coefficients `(a_0, a_1)` per deck.
     pub rayleigh: [(Real, Real); 2],
+    /// Compliance laws: the time-step check of the contact (`None` for rigid contact). When
+    /// `adequate` is `false`, `dt` is too coarse to resolve the contact pulse.
+    pub time_step_advice: Option<crate::contact_law::timestep::TimeStepAdvice>,
+    /// Compliance laws: steps whose Newton iteration on the contact forces did not converge.
+    pub newton_failures: usize,
+    /// Compliance laws: steps solved by the graph closure of a force jump at contact onset
+    /// (Kelvin's dashpot; [`compliance`] module doc).
+    pub closure_steps: usize,
 }
 
 /// Most contacts at once: two at the joint, two at each abutment.
@@ -814,6 +844,9 @@ fn dot6(a: &[Real; 6], b: &Vector6<Real>) -> Real {
 ///
 /// Bad input → [`SimError`]; numerical trouble → [`SimSolution::status`].
 pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolution, SimError> {
+    if let JointContact::Compliance(c) = &problem.model.contact {
+        return compliance::simulate_compliance(problem, settings, c);
+    }
     settings.validate()?;
     problem.ground.validate()?;
     let model = &problem.model;
@@ -1196,6 +1229,8 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
             contact: d_cont,
         },
         max_input_energy: max_in,
+        peak_contact_force: None,
+        peak_penetration: max_pen,
         peak_abutment_closing: peak_abut,
         abutment_impacting_contacts: n_abut_contacts,
     };
@@ -1211,5 +1246,8 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
         lcp_failures: lcp_fail,
         frequencies: sys.frequencies,
         rayleigh: sys.rayleigh,
+        time_step_advice: None,
+        newton_failures: 0,
+        closure_steps: 0,
     })
 }

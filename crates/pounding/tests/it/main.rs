@@ -13,6 +13,7 @@ mod impact;
 mod lcp;
 mod shapes;
 mod sim;
+mod sim_compliance;
 mod sim_shapes;
 mod study;
 mod study_shapes;

@@ -1,0 +1,465 @@
+//! `pounding compare`: one scenario, several joint contact laws, side by side.
+//!
+//! Builds the scenario exactly as `pounding simulate` does (same TOML, same validation), replaces
+//! its `[contact] law` by each law of `--laws` in turn (the other `[contact]` keys and their
+//! defaults apply to every law), runs [`pounding::sim::simulate`] and writes `compare.csv`, a
+//! readable table on stdout, `timing.json` (wall time per law) and two overlay plots:
+//! `joint_gap.png` (the smaller joint gap of the two ends) and `contact_force.png` (total joint
+//! force of the compliance laws), each with a full-duration panel and a zoom around the largest
+//! contact event.
+
+use crate::cmd_simulate::{self, sim_contact::LAW_NAMES};
+use anyhow::{Context, Result, anyhow, bail};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::{FontStyle, register_font};
+use pounding::math::Real;
+use pounding::output::{float_token, write_atomic};
+use pounding::sim::{SimSolution, simulate};
+use serde_json::json;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+/// Arguments of `pounding compare`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// Scenario file (TOML, as for `pounding simulate`); without it the built-in default runs.
+    pub scenario: Option<PathBuf>,
+    /// Contact laws to run, comma separated: rigid, kelvin, hertz, hertz-damp, bilinear, jankowski.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        value_name = "LAW,...",
+        default_value = "rigid,kelvin,hertz,hertz-damp,bilinear,jankowski"
+    )]
+    pub laws: Vec<String>,
+    /// Override the scenario's time step `[time] dt` for every law \[s\].
+    #[arg(long, value_name = "DT")]
+    pub dt: Option<f64>,
+    /// Output directory.
+    #[arg(long, value_name = "DIR", default_value = "out/compare")]
+    pub out: PathBuf,
+}
+
+/// One law's run.
+struct Run {
+    law: String,
+    sol: SimSolution,
+    secs: f64,
+    gap0: Real,
+}
+
+/// Runs `pounding compare`.
+pub fn run(args: Args) -> Result<ExitCode> {
+    let t_start = Instant::now();
+    let mut laws: Vec<String> = Vec::new();
+    for l in &args.laws {
+        let l = l.trim().to_string();
+        if !LAW_NAMES.contains(&l.as_str()) {
+            bail!(
+                "unknown contact law {l:?} in --laws: use one of {}",
+                LAW_NAMES.join(", ")
+            );
+        }
+        if laws.contains(&l) {
+            bail!("contact law {l:?} is given twice in --laws");
+        }
+        laws.push(l);
+    }
+    if laws.is_empty() {
+        bail!("--laws is empty");
+    }
+    if let Some(dt) = args.dt
+        && !(dt.is_finite() && dt > 0.0)
+    {
+        bail!("invalid --dt {dt}: must be finite and > 0");
+    }
+    let sim_args = cmd_simulate::Args {
+        scenario: args.scenario.clone(),
+        record: None,
+        scale: None,
+        out: args.out.clone(),
+        print_default: false,
+        records: Vec::new(),
+        scales: Vec::new(),
+        threads: None,
+        shard: None,
+    };
+    // Build (and validate) every law's setup before running anything.
+    let mut setups = Vec::new();
+    for l in &laws {
+        let mut s = cmd_simulate::build_with(&sim_args, Some(l))
+            .with_context(|| format!("contact law {l:?}"))?;
+        if let Some(dt) = args.dt {
+            s.settings.dt = dt;
+        }
+        // history resolution for the plots: at least one sample per 0.5 ms
+        s.settings.history_stride = ((5e-4 / s.settings.dt).floor() as usize).max(1);
+        s.settings.validate().map_err(|e| anyhow!("{e} (--dt)"))?;
+        setups.push(s);
+    }
+    let mut runs = Vec::new();
+    for (l, s) in laws.iter().zip(&setups) {
+        let t = Instant::now();
+        let sol = simulate(&s.problem, &s.settings).map_err(|e| anyhow!("law {l:?}: {e}"))?;
+        let secs = t.elapsed().as_secs_f64();
+        if let Some(a) = &sol.time_step_advice
+            && !a.adequate
+        {
+            eprintln!("law {l}:");
+        }
+        cmd_simulate::warn_time_step(&sol);
+        eprintln!(
+            "{l}: {} steps in {:.1} ms ({:?})",
+            sol.steps,
+            secs * 1e3,
+            sol.status
+        );
+        runs.push(Run {
+            law: l.clone(),
+            sol,
+            secs,
+            gap0: s.problem.model.gap,
+        });
+    }
+
+    let out = &args.out;
+    std::fs::create_dir_all(out)
+        .with_context(|| format!("cannot create output directory {}", out.display()))?;
+    let wr = |name: &str, bytes: &[u8]| {
+        write_atomic(&out.join(name), bytes)
+            .with_context(|| format!("cannot write {}", out.join(name).display()))
+    };
+    wr("compare.csv", compare_csv(&runs).as_bytes())?;
+    print!("{}", table(&runs));
+    plots(out, &runs).map_err(|e| anyhow!("plotting: {e}"))?;
+    let mut timing = serde_json::Map::new();
+    for r in &runs {
+        timing.insert(
+            r.law.clone(),
+            json!({"simulate_s": r.secs, "steps": r.sol.steps}),
+        );
+    }
+    let timing = json!({"laws": timing, "wall_time_s": t_start.elapsed().as_secs_f64()});
+    wr(
+        "timing.json",
+        (serde_json::to_string_pretty(&timing)? + "\n").as_bytes(),
+    )?;
+    eprintln!("outputs in {}", out.display());
+    Ok(ExitCode::SUCCESS)
+}
+
+const DEG: Real = 180.0 / std::f64::consts::PI;
+
+/// Columns of `compare.csv` (the stdout table shows a subset).
+const HEADER: &str = "law,impacts,impacting_contacts,peak_contact_force_N,peak_penetration_m,\
+peak_joint_closing_m,peak_joint_opening_m,peak_rotation1_deg,peak_rotation2_deg,peak_slip_m,\
+peak_seat_displacement_m,unseated,unseating_time_s,contact_dissipation_J,steps_per_contact,status";
+
+fn compare_csv(runs: &[Run]) -> String {
+    let mut s = String::from(HEADER);
+    s.push('\n');
+    for r in runs {
+        let m = &r.sol.summary;
+        let row = [
+            r.law.clone(),
+            m.impacts.to_string(),
+            m.impacting_contacts.to_string(),
+            float_token(m.peak_contact_force.unwrap_or(Real::NAN)),
+            float_token(m.peak_penetration),
+            float_token(m.peak_joint_closing),
+            float_token(m.peak_joint_opening),
+            float_token(m.peak_rotation[0] * DEG),
+            float_token(m.peak_rotation[1] * DEG),
+            float_token(m.peak_slip),
+            float_token(m.peak_seat_displacement),
+            m.unseated.to_string(),
+            float_token(m.unseating_time.unwrap_or(Real::NAN)),
+            float_token(m.final_energy.contact),
+            float_token(
+                r.sol
+                    .time_step_advice
+                    .map_or(Real::NAN, |a| a.steps_per_contact),
+            ),
+            format!("{:?}", r.sol.status),
+        ];
+        s.push_str(&row.join(","));
+        s.push('\n');
+    }
+    s
+}
+
+fn table(runs: &[Run]) -> String {
+    let mut s = format!(
+        "{:<11} {:>7} {:>11} {:>10} {:>11} {:>17} {:>9} {:>9}\n",
+        "law",
+        "impacts",
+        "force [MN]",
+        "pen. [mm]",
+        "closing [m]",
+        "rotation [deg]",
+        "seat [m]",
+        "unseated"
+    );
+    for r in runs {
+        let m = &r.sol.summary;
+        let f = m
+            .peak_contact_force
+            .map_or("-".to_string(), |f| format!("{:.3}", f / 1e6));
+        s.push_str(&format!(
+            "{:<11} {:>7} {:>11} {:>10.3} {:>11.5} {:>8.4}/{:<8.4} {:>9.4} {:>9}\n",
+            r.law,
+            m.impacts,
+            f,
+            m.peak_penetration * 1e3,
+            m.peak_joint_closing,
+            m.peak_rotation[0] * DEG,
+            m.peak_rotation[1] * DEG,
+            m.peak_seat_displacement,
+            if m.unseated { "YES" } else { "no" }
+        ));
+    }
+    s.push_str("(rigid contact has impulses, no force: its force column is '-')\n");
+    s
+}
+
+// ---------------------------------------------------------------- plots
+
+static FONT: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans.ttf");
+static REGISTER: std::sync::Once = std::sync::Once::new();
+const FAMILY: &str = "sans-serif";
+type R = std::result::Result<(), String>;
+
+fn e<E: std::fmt::Debug>(err: E) -> String {
+    format!("{err:?}")
+}
+
+const COLORS: [RGBColor; 6] = [
+    RGBColor(20, 20, 20),
+    RGBColor(31, 97, 180),
+    RGBColor(39, 150, 80),
+    RGBColor(200, 40, 40),
+    RGBColor(230, 126, 34),
+    RGBColor(142, 68, 173),
+];
+
+fn color_of(law: &str) -> RGBColor {
+    let i = LAW_NAMES.iter().position(|l| *l == law).unwrap_or(0);
+    COLORS[i % COLORS.len()]
+}
+
+/// `(t, smaller end gap)` and `(t, total joint force)` series of one run.
+type Pts = Vec<(Real, Real)>;
+
+fn series(r: &Run) -> (Pts, Pts) {
+    let h = &r.sol.history;
+    let gap =
+        h.t.iter()
+            .zip(&h.end_gaps)
+            .map(|(t, g)| {
+                let m = g
+                    .iter()
+                    .copied()
+                    .filter(|x| x.is_finite())
+                    .fold(Real::INFINITY, Real::min);
+                (*t, if m.is_finite() { m } else { Real::NAN })
+            })
+            .collect();
+    let force =
+        h.t.iter()
+            .zip(&h.contact_force)
+            .map(|(t, f)| (*t, (f[0] + f[1]) / 1e6))
+            .collect();
+    (gap, force)
+}
+
+/// The zoom window: ±0.25 s around the instant of the largest compliance force, or around the
+/// first rigid impact, or the first second.
+fn zoom_window(runs: &[Run]) -> (Real, Real) {
+    let mut best: Option<(Real, Real)> = None;
+    for r in runs {
+        let (_, f) = series(r);
+        for (t, v) in f {
+            if best.is_none_or(|(_, b)| v > b) {
+                best = Some((t, v));
+            }
+        }
+    }
+    let tc = match best {
+        Some((t, v)) if v > 0.0 => t,
+        _ => runs
+            .iter()
+            .filter_map(|r| r.sol.impacts.first().map(|i| i.time))
+            .fold(Real::INFINITY, Real::min),
+    };
+    if tc.is_finite() {
+        ((tc - 0.25).max(0.0), tc + 0.25)
+    } else {
+        (0.0, 1.0)
+    }
+}
+
+fn panel<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    title: &str,
+    ylabel: &str,
+    (t0, t1): (Real, Real),
+    curves: &[(&str, Vec<(Real, Real)>)],
+    hline: Option<(Real, &str)>,
+) -> R {
+    let mut lo = Real::INFINITY;
+    let mut hi = Real::NEG_INFINITY;
+    for (_, pts) in curves {
+        for &(t, y) in pts {
+            if t >= t0 && t <= t1 && y.is_finite() {
+                lo = lo.min(y);
+                hi = hi.max(y);
+            }
+        }
+    }
+    if let Some((y, _)) = hline {
+        lo = lo.min(y);
+        hi = hi.max(y);
+    }
+    if !(lo.is_finite() && hi.is_finite()) {
+        lo = 0.0;
+        hi = 1.0;
+    }
+    let pad = ((hi - lo) * 0.08).max(1e-9);
+    let mut chart = ChartBuilder::on(area)
+        .caption(title, (FAMILY, 20))
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(80)
+        .build_cartesian_2d(t0..t1, (lo - pad)..(hi + pad))
+        .map_err(e)?;
+    chart
+        .configure_mesh()
+        .x_desc("time t [s]")
+        .y_desc(ylabel)
+        .label_style((FAMILY, 14))
+        .axis_desc_style((FAMILY, 15))
+        .light_line_style(RGBColor(235, 235, 235))
+        .draw()
+        .map_err(e)?;
+    if let Some((y, label)) = hline {
+        chart
+            .draw_series(DashedLineSeries::new(
+                vec![(t0, y), (t1, y)],
+                6,
+                4,
+                RGBColor(120, 120, 120).stroke_width(1),
+            ))
+            .map_err(e)?
+            .label(label)
+            .legend(|(x, y)| {
+                PathElement::new(
+                    vec![(x, y), (x + 20, y)],
+                    RGBColor(120, 120, 120).stroke_width(1),
+                )
+            });
+    }
+    for (law, pts) in curves {
+        let c = color_of(law);
+        chart
+            .draw_series(LineSeries::new(
+                pts.iter()
+                    .copied()
+                    .filter(|&(t, y)| t >= t0 && t <= t1 && y.is_finite()),
+                c.stroke_width(if *law == "rigid" { 2 } else { 1 }),
+            ))
+            .map_err(e)?
+            .label(*law)
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2)));
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font((FAMILY, 14))
+        .draw()
+        .map_err(e)?;
+    Ok(())
+}
+
+fn save(out: &Path, name: &str, draw: impl Fn(&DrawingArea<BitMapBackend, Shift>) -> R) -> R {
+    let tmp = out.join(format!(".{name}.{}.tmp.png", std::process::id()));
+    let res = (|| {
+        let root = BitMapBackend::new(&tmp, (1200, 900)).into_drawing_area();
+        root.fill(&WHITE).map_err(e)?;
+        draw(&root)?;
+        root.present().map_err(e)
+    })();
+    if let Err(err) = res {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(err);
+    }
+    std::fs::rename(&tmp, out.join(name)).map_err(|err| format!("cannot write {name}: {err}"))
+}
+
+fn plots(out: &Path, runs: &[Run]) -> R {
+    REGISTER.call_once(|| {
+        for style in [FontStyle::Normal, FontStyle::Bold] {
+            let _ = register_font(FAMILY, style, FONT);
+        }
+    });
+    let t_end = runs
+        .iter()
+        .filter_map(|r| r.sol.history.t.last().copied())
+        .fold(0.0, Real::max)
+        .max(1e-9);
+    let zoom = zoom_window(runs);
+    let all: Vec<(&str, (Pts, Pts))> = runs.iter().map(|r| (r.law.as_str(), series(r))).collect();
+    let gaps: Vec<(&str, Vec<(Real, Real)>)> =
+        all.iter().map(|(l, (g, _))| (*l, g.clone())).collect();
+    let forces: Vec<(&str, Vec<(Real, Real)>)> = all
+        .iter()
+        .filter(|(_, (_, f))| !f.is_empty())
+        .map(|(l, (_, f))| (*l, f.clone()))
+        .collect();
+    let gap0 = runs.first().map_or(0.0, |r| r.gap0);
+    save(out, "joint_gap.png", |root| {
+        let (a, b) = root.split_vertically(450);
+        panel(
+            &a,
+            "Joint gap (smaller of the two ends) by contact law",
+            "gap [m]",
+            (0.0, t_end),
+            &gaps,
+            Some((0.0, "contact")),
+        )?;
+        panel(
+            &b,
+            &format!(
+                "zoom {:.2}–{:.2} s (reference gap {} m)",
+                zoom.0, zoom.1, gap0
+            ),
+            "gap [m]",
+            zoom,
+            &gaps,
+            Some((0.0, "contact")),
+        )
+    })?;
+    save(out, "contact_force.png", |root| {
+        let (a, b) = root.split_vertically(450);
+        panel(
+            &a,
+            "Total joint contact force (compliance laws; rigid contact has impulses only)",
+            "force [MN]",
+            (0.0, t_end),
+            &forces,
+            None,
+        )?;
+        panel(
+            &b,
+            &format!("zoom {:.2}–{:.2} s", zoom.0, zoom.1),
+            "force [MN]",
+            zoom,
+            &forces,
+            None,
+        )
+    })?;
+    Ok(())
+}
