@@ -12,7 +12,7 @@
 //!   impact configuration of a corner against the other deck's end face (§5).
 //! * [`contact`] — generalised force directions `w_N`, `w_T` (§6) and the Delassus matrix (§7).
 //! * [`contact_law`] — compliance contact laws (Kelvin, Hertz, Hertz-damp, bilinear, Jankowski), their
-//!   calibrations and a two-mass collision integrator (not yet used by a simulator).
+//!   calibrations, a two-mass collision integrator and joint sharing (used by `sim` for compliance runs).
 //! * [`analytic`] — the closed-form single-impact solution: stick interval `[L, U]`, modes, impulses (§9–§11).
 //! * [`impact`] — the generic multi-contact frictional impact of planar rigid bodies, solved as an LCP (§8).
 //! * [`shape`] — straight and skewed decks beside the curved one (mass properties, end faces, corners in
