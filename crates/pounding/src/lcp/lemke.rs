@@ -153,10 +153,69 @@ pub(crate) fn verify(
         res = res.max(c.abs());
         finite &= c.is_finite() & si.is_finite();
         let lim = tol * si;
-        ok &= (wi >= -lim) & (zi >= 0.0) & ((wi.abs() <= lim) | (zi == 0.0));
+        // |wᵢ| ≤ lim ⇔ wᵢ ≤ lim given wᵢ ≥ −lim
+        ok &= (wi >= -lim) & (zi >= 0.0) & ((wi <= lim) | (zi == 0.0));
     }
     if !ok && finite {
         // some wᵢ is neither ≈ 0 nor ≥ −tol·sᵢ with zᵢ = 0: the per-component test (cold)
+        ok = componentwise(n, m, q, z, w, tol);
+    }
+    (ok && finite, res / qn)
+}
+
+/// [`verify`] for `n ≤ FULL_MAX` (the full-tableau sizes), with the same result bit for bit:
+/// `wᵢ` and `sᵢ` are accumulated column by column into stack arrays (`wᵢ = qᵢ + Mᵢ₀z₀ + Mᵢ₁z₁ + …`,
+/// the same summation order as the row loop of [`verify`], so the same rounding), which lets the
+/// compiler vectorise across rows; the row tests are then evaluated branch-free on the arrays.
+/// Falls back to [`verify`] for larger `n`.
+#[inline(always)]
+pub(crate) fn verify_small(
+    n: usize,
+    m: &[f64],
+    q: &[f64],
+    z: &[f64],
+    w: &mut [f64],
+    tol: f64,
+) -> (bool, f64) {
+    if n > FULL_MAX {
+        return verify(n, m, q, z, w, tol);
+    }
+    let m = &m[..n * n];
+    let q = &q[..n];
+    let z = &z[..n];
+    let w = &mut w[..n];
+    let mut wa = [0.0f64; FULL_MAX];
+    let mut sa = [0.0f64; FULL_MAX];
+    let mut qn = 1.0f64;
+    for i in 0..n {
+        wa[i] = q[i];
+        sa[i] = q[i].abs();
+        qn = qn.max(q[i].abs());
+    }
+    for j in 0..n {
+        let zj = z[j];
+        for i in 0..n {
+            let t = m[i * n + j] * zj;
+            wa[i] += t;
+            sa[i] += t.abs();
+        }
+    }
+    let mut res = 0.0f64;
+    let mut finite = true;
+    let mut ok = true;
+    for i in 0..n {
+        let wi = wa[i];
+        let si = sa[i];
+        w[i] = wi;
+        let zi = z[i];
+        let c = zi.min(wi);
+        res = res.max(c.abs());
+        finite &= c.is_finite() & si.is_finite();
+        let lim = tol * si;
+        // |wᵢ| ≤ lim ⇔ wᵢ ≤ lim given wᵢ ≥ −lim
+        ok &= (wi >= -lim) & (zi >= 0.0) & ((wi <= lim) | (zi == 0.0));
+    }
+    if !ok && finite {
         ok = componentwise(n, m, q, z, w, tol);
     }
     (ok && finite, res / qn)
@@ -627,7 +686,7 @@ fn retry_fixed<const N: usize>(
     for (zi, di) in sol.z.iter_mut().zip(&dsc) {
         *zi *= di;
     }
-    let (ok, residual) = verify(N, m, q, &sol.z, &mut sol.w, settings.verify_tol());
+    let (ok, residual) = verify_small(N, m, q, &sol.z, &mut sol.w, settings.verify_tol());
     if !ok {
         return first;
     }
