@@ -129,7 +129,7 @@ dt = 1e-3            # time step [s]
 # duration = 53.71   # [s]; default: until the last record sample
 history_every = 10   # write every n-th step to history.csv (peaks use every step)
 
-# [contact]          # the joint's normal contact law (see docs/readme/compare.md)
+# [contact]          # the joint's normal contact law (see the README, "Compliance contact laws in the simulator")
 # law = "rigid"      # rigid (Newton + Coulomb LCP, default) | kelvin | hertz | hertz-damp |
 #                    # bilinear | jankowski: compliance laws (trapezoid + Newton on the forces)
 # restitution = 0.5  # target e of the damped laws (default: [joint] eps_n)
