@@ -754,6 +754,34 @@ fn run_generic(path: &PathBuf, as_json: bool) -> Result<ExitCode> {
 // ---------------------------------------------------------------- shapes and abutments
 
 /// Names of the far-face corners `[c0, c1]` for a shape.
+/// The per-corner results of a straight/skew impact as JSON objects (corner name, point, impulses,
+/// mode, relative velocities before and after).
+fn corner_contacts_json(
+    contacts: &[pounding::impact::ContactResult],
+    names: &[&str; 2],
+    corners: &[Vector; 2],
+) -> Value {
+    Value::Array(
+        contacts
+            .iter()
+            .enumerate()
+            .map(|(k, c)| {
+                json!({
+                    "corner": names[k],
+                    "point": vec_json(&corners[k]),
+                    "normal_impulse": json_float(c.normal_impulse),
+                    "tangential_impulse": json_float(c.tangential_impulse),
+                    "mode": c.mode.name(),
+                    "gamma_n_pre": json_float(c.gamma_n_pre),
+                    "gamma_t_pre": json_float(c.gamma_t_pre),
+                    "gamma_n_post": json_float(c.gamma_n_post),
+                    "gamma_t_post": json_float(c.gamma_t_post),
+                })
+            })
+            .collect(),
+    )
+}
+
 fn corner_names(shape: &DeckShape) -> [&'static str; 2] {
     match shape {
         DeckShape::Curved(_) => ["outer", "inner"],
@@ -1101,26 +1129,9 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
                 json!(d.rotates_on_abutment_impact_with(&law)),
             );
         }
-        let contacts: Vec<Value> = s
-            .contacts
-            .iter()
-            .enumerate()
-            .map(|(k, c)| {
-                json!({
-                    "corner": names[k],
-                    "point": vec_json(&face.corners[k]),
-                    "normal_impulse": json_float(c.normal_impulse),
-                    "tangential_impulse": json_float(c.tangential_impulse),
-                    "mode": c.mode.name(),
-                    "gamma_n_pre": json_float(c.gamma_n_pre),
-                    "gamma_t_pre": json_float(c.gamma_t_pre),
-                    "gamma_n_post": json_float(c.gamma_n_post),
-                    "gamma_t_post": json_float(c.gamma_t_post),
-                })
-            })
-            .collect();
+        let contacts = corner_contacts_json(&s.contacts, &names, &face.corners);
         out.insert("speed".into(), json_float(speed));
-        out.insert("contacts".into(), Value::Array(contacts));
+        out.insert("contacts".into(), contacts);
         out.insert(
             "post".into(),
             json!({"velocity": vec_json(&s.bodies[0].velocity), "omega": json_float(omega)}),
@@ -1292,25 +1303,8 @@ fn run_joint(a: &ImpactArgs, deck1: &DeckShape) -> Result<ExitCode> {
         })
         .collect();
     out.insert("decks".into(), Value::Array(decks));
-    let contacts: Vec<Value> = s
-        .contacts
-        .iter()
-        .enumerate()
-        .map(|(k, c)| {
-            json!({
-                "corner": names[k],
-                "point": vec_json(&face.corners[k]),
-                "normal_impulse": json_float(c.normal_impulse),
-                "tangential_impulse": json_float(c.tangential_impulse),
-                "mode": c.mode.name(),
-                "gamma_n_pre": json_float(c.gamma_n_pre),
-                "gamma_t_pre": json_float(c.gamma_t_pre),
-                "gamma_n_post": json_float(c.gamma_n_post),
-                "gamma_t_post": json_float(c.gamma_t_post),
-            })
-        })
-        .collect();
-    out.insert("contacts".into(), Value::Array(contacts));
+    let contacts = corner_contacts_json(&s.contacts, &names, &face.corners);
+    out.insert("contacts".into(), contacts);
     out.insert(
         "energy".into(),
         json!({"before": json_float(s.energy_before), "after": json_float(s.energy_after)}),
