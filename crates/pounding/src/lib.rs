@@ -23,6 +23,7 @@
 //!   the embedded El Centro 1940 record.
 //! * [`sim`] — seismic time histories of two decks with pounding: bearings, Rayleigh damping,
 //!   Moreau–Jean time stepping with the impact LCP at every step, abutments, batch runs.
+//! * [`toml_schema`] — strict table and fixed-length array shapes for scenario files.
 //! * [`output`] — deterministic number formatting and atomic file output shared by every writer.
 //!
 //! Errors (bad input) are [`thiserror`] enums per module; numerical outcomes (ray termination,
@@ -42,3 +43,4 @@ pub mod pair;
 pub mod shape;
 pub mod sim;
 pub mod study;
+pub mod toml_schema;

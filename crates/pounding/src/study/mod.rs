@@ -20,7 +20,7 @@ pub mod summary;
 
 pub use cell::Cell;
 pub use claims::{ClaimCheck, Verdict};
-pub use run::{Layout, Row, RowKey, Shard};
+pub use run::{Layout, Row, RowKey, Shard, compute_rows};
 pub use scenario::{AngleRange, DEFAULT_SCENARIO_TOML, Scenario, ScenarioError, StudyShape};
 pub use summary::SummaryRow;
 

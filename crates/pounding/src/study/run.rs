@@ -287,6 +287,8 @@ pub fn compute_rows(
     shard: Shard,
     progress: &(dyn Fn(usize) + Sync),
 ) -> Result<Vec<Row>, StudyError> {
+    // A scenario built by hand (not read by `from_toml`) may be too large to index.
+    scenario.check_size("scenario")?;
     let layout = Layout::of(scenario);
     let [nb1, nb2, nr1, nr2, nmu, neps, ..] = layout.dims;
     let mut arrangements = Vec::with_capacity(nb1 * nb2 * nr1 * nr2);

@@ -10,6 +10,7 @@
 
 use crate::geometry::{ContactCase, SigmaMode};
 use crate::math::Real;
+use crate::toml_schema::Table;
 use serde::Deserialize;
 use std::ops::Range;
 use thiserror::Error;
@@ -64,8 +65,11 @@ pub struct AngleRange {
 
 impl AngleRange {
     /// Number of grid values.
+    ///
+    /// Saturates at `usize::MAX` instead of wrapping for a range too fine to count (a scenario
+    /// refuses any range of more than [`MAX_GRID_VALUES`] values).
     pub fn len(&self) -> usize {
-        ((self.stop - self.start) / self.step + 1e-9).floor() as usize + 1
+        (((self.stop - self.start) / self.step + 1e-9).floor() as usize).saturating_add(1)
     }
     /// Always false for a validated range (there is at least `start`).
     pub fn is_empty(&self) -> bool {
@@ -255,6 +259,19 @@ region_map_samples = 201
 
 /// Default deck lengths `L1`, `L2` \[m\] of a straight or skew study.
 pub const DEFAULT_LENGTHS_M: [Real; 2] = [30.0, 60.0];
+/// Largest number of values of one `θ` range (`grid.theta1_deg`, `grid.theta2_deg`).
+pub const MAX_GRID_VALUES: usize = 100_000;
+
+/// Largest number of rows of a study (`bounds.csv` rows over all shards): the product of the list
+/// lengths, the cases and the two `θ` ranges. Sizes are computed with checked arithmetic and a
+/// larger study is refused as bad input.
+pub const MAX_ROWS: usize = 1_000_000_000_000;
+
+/// Largest width `ratio_max − ratio_min` of the ratio range. The ratio `r = γ_T⁻/γ_N⁻` of a real
+/// impact is a slope of order one (the default range is `[−12, 12]`); the limit keeps every share,
+/// sample position and axis tick finite and well resolved.
+pub const MAX_RATIO_WIDTH: Real = 1e12;
+
 /// Default skew angles \[deg\] of a skew study.
 pub const DEFAULT_SKEW_DEG: [Real; 3] = [0.0, 15.0, 30.0];
 
@@ -263,10 +280,10 @@ type S<T> = Option<Spanned<T>>;
 #[derive(Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 struct RawScenario {
-    decks: Option<RawDecks>,
-    impact: Option<RawImpact>,
-    grid: Option<RawGrid>,
-    output: Option<RawOutput>,
+    decks: Option<Table<RawDecks>>,
+    impact: Option<Table<RawImpact>>,
+    grid: Option<Table<RawGrid>>,
+    output: Option<Table<RawOutput>>,
 }
 
 #[derive(Deserialize, Default)]
@@ -304,8 +321,8 @@ struct RawRange {
 #[derive(Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 struct RawGrid {
-    theta1_deg: Option<RawRange>,
-    theta2_deg: Option<RawRange>,
+    theta1_deg: Option<Table<RawRange>>,
+    theta2_deg: Option<Table<RawRange>>,
     ratio_min: S<Real>,
     ratio_max: S<Real>,
     cases: S<Vec<String>>,
@@ -424,7 +441,7 @@ impl Ctx<'_> {
 
     fn range(
         &self,
-        v: &Option<RawRange>,
+        v: &Option<Table<RawRange>>,
         default: AngleRange,
         key: &str,
     ) -> Result<AngleRange, ScenarioError> {
@@ -460,13 +477,19 @@ impl Ctx<'_> {
                 &format!("must be >= start = {}", fmt_num(start)),
             ));
         }
+        // Count in floating point first: a tiny step gives a count beyond `usize` (1e-20 deg over
+        // 20 deg is 2e21 values), which must be refused, not wrapped.
+        let count = ((stop - start) / step + 1e-9).floor() + 1.0;
         let out = AngleRange { start, stop, step };
-        if out.len() > 100_000 {
+        if !(count <= MAX_GRID_VALUES as Real) {
             return Err(self.invalid(
                 r.step.span(),
                 &format!("{key}.step"),
                 fmt_num(step),
-                "gives more than 100000 grid values",
+                &format!(
+                    "gives {} grid values, more than the limit {MAX_GRID_VALUES}",
+                    fmt_num(count)
+                ),
             ));
         }
         Ok(out)
@@ -502,10 +525,10 @@ impl Scenario {
         })?;
         let cx = Ctx { text, origin };
         let d = Scenario::default();
-        let decks = raw.decks.unwrap_or_default();
-        let impact = raw.impact.unwrap_or_default();
-        let grid = raw.grid.unwrap_or_default();
-        let output = raw.output.unwrap_or_default();
+        let decks = raw.decks.map(Table::into_inner).unwrap_or_default();
+        let impact = raw.impact.map(Table::into_inner).unwrap_or_default();
+        let grid = raw.grid.map(Table::into_inner).unwrap_or_default();
+        let output = raw.output.map(Table::into_inner).unwrap_or_default();
         let pos = |x: Real| x > 0.0;
         let (width, width_span) =
             cx.scalar(&decks.width_m, d.width, "decks.width_m", pos, "must be > 0")?;
@@ -695,8 +718,12 @@ impl Scenario {
             &grid.ratio_max,
             d.ratio_max,
             "grid.ratio_max",
-            |x| x > ratio_min,
-            &format!("must be finite and > ratio_min = {}", fmt_num(ratio_min)),
+            |x| x > ratio_min && (x - ratio_min).is_finite() && (x - ratio_min) <= MAX_RATIO_WIDTH,
+            &format!(
+                "must be finite and > ratio_min = {}, with ratio_max - ratio_min <= {}",
+                fmt_num(ratio_min),
+                fmt_num(MAX_RATIO_WIDTH)
+            ),
         )?;
         let cases = match &grid.cases {
             None => d.cases.clone(),
@@ -753,7 +780,7 @@ impl Scenario {
                 n as usize
             }
         };
-        Ok(Self {
+        let scenario = Self {
             shape,
             l1_m,
             l2_m,
@@ -778,7 +805,32 @@ impl Scenario {
                 svg,
                 region_map_samples,
             },
-        })
+        };
+        scenario.check_size(origin).map_err(|e| match e {
+            // Point at the finer θ range the user wrote, if any (the usual culprit).
+            ScenarioError::Invalid {
+                origin,
+                key,
+                value,
+                reason,
+                ..
+            } => {
+                let span = [&grid.theta2_deg, &grid.theta1_deg]
+                    .into_iter()
+                    .flatten()
+                    .map(|r| r.step.span())
+                    .next();
+                ScenarioError::Invalid {
+                    origin,
+                    line: span.map_or(0, |s| line_col(text, s.start).0),
+                    key,
+                    value,
+                    reason,
+                }
+            }
+            e => e,
+        })?;
+        Ok(scenario)
     }
 
     /// `ρ t` \[kg/m²\], the factor by which the Delassus entries of the spec's §15 table (per unit ρt)
@@ -869,7 +921,43 @@ impl Scenario {
     }
 
     /// Total number of rows of `bounds.csv`.
+    ///
+    /// Saturates at `usize::MAX` for a scenario built by hand beyond every limit; a scenario read by
+    /// [`from_toml`](Self::from_toml) has at most [`MAX_ROWS`] rows.
     pub fn row_count(&self) -> usize {
-        self.configuration_count() * self.cases.len() * self.cell_count()
+        self.checked_row_count().unwrap_or(usize::MAX)
+    }
+
+    /// Total number of rows of `bounds.csv`, or `None` if the product overflows `usize`.
+    pub fn checked_row_count(&self) -> Option<usize> {
+        let mut n = self.mu.len().checked_mul(self.eps.len())?;
+        for d in self.geometry_dims() {
+            n = n.checked_mul(d)?;
+        }
+        n.checked_mul(self.cases.len())?
+            .checked_mul(self.theta1.len())?
+            .checked_mul(self.theta2.len())
+    }
+
+    /// Refuses a scenario of more than [`MAX_ROWS`] rows (or none), as bad input naming the grid.
+    pub fn check_size(&self, origin: &str) -> Result<(), ScenarioError> {
+        match self.checked_row_count() {
+            Some(n) if (1..=MAX_ROWS).contains(&n) => Ok(()),
+            n => Err(ScenarioError::Invalid {
+                origin: origin.to_string(),
+                line: 0,
+                key: "grid".into(),
+                value: n.map_or_else(|| "more than 2^64".into(), |n| n.to_string()),
+                reason: format!(
+                    "the study has this many rows (geometries {:?} x mu {} x eps {} x cases {} x theta1 {} x theta2 {}); the limit is {MAX_ROWS}",
+                    self.geometry_dims(),
+                    self.mu.len(),
+                    self.eps.len(),
+                    self.cases.len(),
+                    self.theta1.len(),
+                    self.theta2.len()
+                ),
+            }),
+        }
     }
 }

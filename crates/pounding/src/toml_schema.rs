@@ -1,0 +1,136 @@
+//! Strict shapes for scenario files read with `serde` and `toml`.
+//!
+//! `serde`'s derived `Deserialize` for a struct accepts a *sequence* as well as a map: the values
+//! are taken as the fields in declaration order. In a scenario file that turns a slip of the pen
+//! into a silently different model — `theta1_deg = [-1, 0, 1]` (meant as three angles) was read as
+//! `{ start = -1, stop = 0, step = 1 }`, and `joint = [0.1, 0.4, 0.5, 0.5]` would set four keys by
+//! position. Likewise serde's fixed-size arrays ignore extra elements in some formats, so a bearing
+//! point `[0, 1, 2]` lost its third coordinate. The wrappers here refuse both: a table must be
+//! written as a table, a fixed-size array must have exactly its length. The error carries the
+//! value's span, so the caller's usual `file: line N` message names the key.
+
+use serde::de::{self, Deserialize, Deserializer, MapAccess, SeqAccess, Visitor};
+use std::fmt;
+use std::marker::PhantomData;
+
+/// A `T` that may only be written as a TOML table (inline `{ ... }` or a `[section]`), never as
+/// an array.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Table<T>(pub T);
+
+impl<T> Table<T> {
+    /// The wrapped value.
+    pub fn into_inner(self) -> T {
+        self.0
+    }
+}
+
+impl<T> std::ops::Deref for Table<T> {
+    type Target = T;
+    fn deref(&self) -> &T {
+        &self.0
+    }
+}
+
+impl<'de, T: Deserialize<'de>> Deserialize<'de> for Table<T> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V<T>(PhantomData<T>);
+        impl<'de, T: Deserialize<'de>> Visitor<'de> for V<T> {
+            type Value = Table<T>;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a table (`{ key = value, ... }` or a `[section]`)")
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Self::Value, A::Error> {
+                T::deserialize(de::value::MapAccessDeserializer::new(map)).map(Table)
+            }
+        }
+        d.deserialize_map(V(PhantomData))
+    }
+}
+
+/// `[f64; N]` written as an array of exactly `N` numbers (for `#[serde(deserialize_with)]`-free
+/// use as a field type).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Exact<const N: usize>(pub [f64; N]);
+
+impl<'de, const N: usize> Deserialize<'de> for Exact<N> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V<const N: usize>;
+        impl<'de, const N: usize> Visitor<'de> for V<N> {
+            type Value = Exact<N>;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                write!(f, "an array of exactly {N} numbers")
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
+                let mut out = [0.0; N];
+                let mut n = 0;
+                while let Some(x) = seq.next_element::<f64>()? {
+                    if n < N {
+                        out[n] = x;
+                    }
+                    n += 1;
+                }
+                if n != N {
+                    return Err(de::Error::invalid_length(n, &self));
+                }
+                Ok(Exact(out))
+            }
+        }
+        d.deserialize_seq(V::<N>)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde::Deserialize;
+
+    #[derive(Deserialize, Debug, PartialEq)]
+    #[serde(deny_unknown_fields)]
+    struct R {
+        start: f64,
+        stop: f64,
+    }
+
+    #[derive(Deserialize, Debug)]
+    #[serde(deny_unknown_fields)]
+    struct Doc {
+        r: Option<Table<R>>,
+        p: Option<Vec<Exact<2>>>,
+    }
+
+    #[test]
+    fn table_accepts_tables_only() {
+        let d: Doc = toml::from_str("r = { start = 1, stop = 2 }").unwrap();
+        assert_eq!(
+            d.r.unwrap().0,
+            R {
+                start: 1.0,
+                stop: 2.0
+            }
+        );
+        let d: Doc = toml::from_str("[r]\nstart = 1.0\nstop = 2.0\n").unwrap();
+        assert_eq!(
+            d.r.unwrap().0,
+            R {
+                start: 1.0,
+                stop: 2.0
+            }
+        );
+        let e = toml::from_str::<Doc>("r = [1.0, 2.0]").unwrap_err();
+        assert!(e.message().contains("table"), "{e}");
+        assert!(e.span().is_some());
+        // Unknown fields are still refused inside the table.
+        assert!(toml::from_str::<Doc>("r = { start = 1, stop = 2, step = 3 }").is_err());
+    }
+
+    #[test]
+    fn exact_length_arrays() {
+        let d: Doc = toml::from_str("p = [[0, 1], [2.5, 3]]").unwrap();
+        assert_eq!(d.p.unwrap()[1].0, [2.5, 3.0]);
+        for bad in ["p = [[0, 1, 2]]", "p = [[0]]", "p = [[]]"] {
+            let e = toml::from_str::<Doc>(bad).unwrap_err();
+            assert!(e.message().contains("exactly 2"), "{bad}: {e}");
+        }
+    }
+}

@@ -1,0 +1,108 @@
+//! Hardening (issue 15): inputs that used to panic, hang or be silently misread are refused as bad
+//! input naming the key and the line.
+
+use pounding::study::scenario::{MAX_GRID_VALUES, MAX_ROWS, Scenario, ScenarioError};
+
+fn invalid(text: &str) -> (usize, String, String) {
+    match Scenario::from_toml(text, "t.toml") {
+        Err(ScenarioError::Invalid {
+            line, key, reason, ..
+        }) => (line, key, reason),
+        other => panic!("expected Invalid for {text:?}, got {other:?}"),
+    }
+}
+
+#[test]
+fn a_grid_step_too_small_to_count_is_refused_not_wrapped() {
+    // 1e-20 over 20 deg is 2e21 values: the count used to saturate, wrap to 0 and divide by zero.
+    for step in ["1e-20", "1e-300", "5e-324", "1e-4"] {
+        let text =
+            format!("[grid]\ntheta1_deg = {{ start = -10.0, stop = 10.0, step = {step} }}\n");
+        let (line, key, reason) = invalid(&text);
+        assert_eq!((line, key.as_str()), (2, "grid.theta1_deg.step"), "{step}");
+        assert!(reason.contains(&MAX_GRID_VALUES.to_string()), "{reason}");
+    }
+    // The largest admissible grid is still accepted.
+    let text = "[grid]\ntheta1_deg = { start = 0.0, stop = 9.9999, step = 1e-4 }\n";
+    let s = Scenario::from_toml(text, "t.toml").unwrap();
+    assert_eq!(s.theta1.len(), MAX_GRID_VALUES);
+}
+
+#[test]
+fn a_study_with_too_many_rows_is_refused_naming_the_grid() {
+    // Two fine θ ranges and long lists multiply past the row limit without overflowing any one size.
+    let many = |n: usize, lo: f64| {
+        (0..n)
+            .map(|i| format!("{}", lo + i as f64))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let text = format!(
+        "[decks]\nbeta1_deg = [{}]\nbeta2_deg = [{}]\n[impact]\nmu = [{}]\n[grid]\n\
+         theta1_deg = {{ start = -5.0, stop = 4.9999, step = 1e-4 }}\n\
+         theta2_deg = {{ start = -5.0, stop = 4.9999, step = 1e-4 }}\n",
+        many(100, 1.0),
+        many(100, 1.0),
+        many(100, 0.0)
+    );
+    let (line, key, reason) = invalid(&text);
+    assert_eq!((line, key.as_str()), (8, "grid"));
+    assert!(reason.contains(&MAX_ROWS.to_string()), "{reason}");
+    let s = Scenario::default();
+    assert_eq!(s.checked_row_count(), Some(254_016));
+    assert!(s.check_size("x").is_ok());
+}
+
+#[test]
+fn a_hand_built_oversized_scenario_is_an_error_in_compute_rows() {
+    let mut s = Scenario::default();
+    s.theta1.step = 1e-20; // bypasses from_toml's checks
+    assert_eq!(s.theta1.len(), usize::MAX, "saturates, never wraps");
+    assert_eq!(s.checked_row_count(), None);
+    let shard = pounding::study::Shard::new(1, 1).unwrap();
+    let e = pounding::study::compute_rows(&s, shard, &|_| {}).unwrap_err();
+    assert!(e.to_string().contains("grid"), "{e}");
+}
+
+#[test]
+fn a_ratio_range_whose_width_is_not_finite_is_refused() {
+    for (lo, hi) in [("-1e308", "1e308"), ("-1e200", "1e200"), ("-6e11", "6e11")] {
+        let text = format!("[grid]\nratio_min = {lo}\nratio_max = {hi}\n");
+        let (line, key, reason) = invalid(&text);
+        assert_eq!((line, key.as_str()), (3, "grid.ratio_max"), "{lo} {hi}");
+        assert!(reason.contains("ratio_max - ratio_min"), "{reason}");
+    }
+    let s = Scenario::from_toml("[grid]\nratio_min = -5e11\nratio_max = 5e11\n", "t").unwrap();
+    assert_eq!(s.ratio_max - s.ratio_min, 1e12);
+}
+
+#[test]
+fn a_list_where_a_range_table_is_expected_is_an_error() {
+    // Used to be read as { start = -1, stop = 0, step = 1 }.
+    for text in [
+        "[grid]\ntheta1_deg = [-1, 0, 1]\n",
+        "[grid]\ntheta2_deg = [-1.0, 1.0, 0.5]\n",
+        "grid = [1, 2]\n",
+        "decks = [10.0, 0.5]\n",
+        "impact = [[0.5], [0.5]]\n",
+        "output = [true]\n",
+    ] {
+        match Scenario::from_toml(text, "t.toml") {
+            Err(ScenarioError::Syntax { line, message, .. }) => {
+                assert_eq!(line, text.lines().count(), "{text}");
+                assert!(message.contains("expected a table"), "{text}: {message}");
+            }
+            other => panic!("{text:?}: {other:?}"),
+        }
+    }
+    // Tables still work, inline and as sections.
+    let s = Scenario::from_toml(
+        "[grid]\ntheta1_deg = { start = -1, stop = 1, step = 1 }\n[grid.theta2_deg]\nstart = 0\nstop = 0\nstep = 1\n",
+        "t",
+    )
+    .unwrap();
+    assert_eq!(
+        (s.theta1.values(), s.theta2.values()),
+        (vec![-1.0, 0.0, 1.0], vec![0.0])
+    );
+}
