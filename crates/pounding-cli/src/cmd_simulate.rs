@@ -18,6 +18,7 @@ use pounding::sim::{
     Bearing, SEAT_ENDS, SimAbutment, SimError, SimModel, SimProblem, SimSettings, SimSolution,
     simulate,
 };
+use pounding::toml_schema::{Exact, Table};
 use serde::Deserialize;
 use serde_json::json;
 use std::path::{Path, PathBuf};
@@ -146,20 +147,21 @@ history_every = 10   # write every n-th step to history.csv (peaks use every ste
 #[derive(Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 struct Scenario {
+    // `Table`: a section written as an array is an error (serde would read it by position).
     #[serde(default)]
-    decks: DecksSec,
+    decks: Table<DecksSec>,
     #[serde(default)]
-    joint: JointSec,
+    joint: Table<JointSec>,
     #[serde(default)]
-    bearings: BearingsSec,
+    bearings: Table<BearingsSec>,
     #[serde(default)]
-    ground_motion: GroundSec,
+    ground_motion: Table<GroundSec>,
     #[serde(default)]
-    time: TimeSec,
+    time: Table<TimeSec>,
     #[serde(default)]
-    contact: sim_contact::ContactSec,
+    contact: Table<sim_contact::ContactSec>,
     #[serde(default)]
-    abutments: AbutmentsSec,
+    abutments: Table<AbutmentsSec>,
 }
 
 #[derive(Deserialize, Default)]
@@ -234,8 +236,8 @@ struct BearingsSec {
     stiffness1: f64,
     stiffness2: f64,
     damping_ratio: f64,
-    points1: Option<Vec<[f64; 2]>>,
-    points2: Option<Vec<[f64; 2]>>,
+    points1: Option<Vec<Exact<2>>>,
+    points2: Option<Vec<Exact<2>>>,
     damping: String,
 }
 impl Default for BearingsSec {

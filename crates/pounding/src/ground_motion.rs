@@ -138,6 +138,13 @@ impl Record {
             if !a.is_finite() {
                 return Err(bad(&format!("a[{i}]"), a, "must be finite"));
             }
+            if i == 0 && t < 0.0 {
+                return Err(bad(
+                    "t[0]",
+                    t,
+                    "the record must start at t >= 0 (the analysis starts at t = 0; earlier samples would be dropped)",
+                ));
+            }
             if i > 0 && t <= times[i - 1] {
                 return Err(bad(&format!("t[{i}]"), t, "times must increase strictly"));
             }
@@ -167,12 +174,18 @@ impl Record {
         Self::new(name, times, values)
     }
 
-    /// Parses a PEER NGA `.AT2` file (accelerations in g, converted to m/s²).
+    /// Parses a PEER NGA `.AT2` file (accelerations, converted to m/s²).
     ///
-    /// Layout: three free header lines, then either `NPTS=  5372, DT=   .0100 SEC,` (NGA-West2
+    /// Layout: three header lines, then either `NPTS=  5372, DT=   .0100 SEC,` (NGA-West2
     /// style) or the older `  5372   .0100   NPTS, DT` line (first two numbers = npts, dt), then
     /// exactly `npts` values, any number per line, whitespace separated, Fortran `E`/`D` format.
     /// The first sample is at `t = 0`. Errors carry the 1-based line number.
+    ///
+    /// The header is read, not assumed: a header line that says `VELOCITY` or `DISPLACEMENT`
+    /// (PEER's `.VT2`/`.DT2` series) is refused whatever the file is called, and the units of a
+    /// line `... IN UNITS OF <U>` are converted: `G` (PEER's usual), `CM/S/S` (also `CM/S^2`,
+    /// `CM/S2`, `CM/SEC/SEC`, `GAL`) and `M/S/S` (also `M/S^2`, `M/S2`, `M/SEC/SEC`); other units
+    /// are refused. A header that names no units is read in g, as PEER's files are.
     pub fn from_at2_str(text: &str, source_name: &str) -> Result<Self, GroundMotionError> {
         let lines: Vec<&str> = text.lines().collect();
         if lines.len() < 4 {
@@ -182,6 +195,8 @@ impl Record {
                 "truncated AT2 header: expected 4 header lines (the 4th giving NPTS and DT)",
             ));
         }
+        let factor =
+            at2_units_factor(&lines[..3]).map_err(|(k, m)| parse_err(source_name, k, m))?;
         let header = lines[3];
         let (npts, dt) = parse_at2_npts_dt(header)
             .map_err(|m| parse_err(source_name, 4, format!("{m} in AT2 header line {header:?}")))?;
@@ -210,7 +225,7 @@ impl Record {
                         format!("more values than NPTS = {npts}"),
                     ));
                 }
-                values.push(v * G0);
+                values.push(v * factor);
             }
         }
         if values.len() != npts {
@@ -295,6 +310,18 @@ impl Record {
             message: e.to_string(),
         })?;
         let name = path.display().to_string();
+        if let Some(ext) = path.extension().and_then(|e| e.to_str())
+            && ["VT2", "DT2"].iter().any(|k| ext.eq_ignore_ascii_case(k))
+        {
+            return Err(parse_err(
+                &name,
+                1,
+                format!(
+                    "a .{ext} file is a PEER velocity or displacement time series, not an \
+                     acceleration record; give the .AT2 file of the same record"
+                ),
+            ));
+        }
         let is_csv = path
             .extension()
             .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
@@ -366,8 +393,61 @@ impl Record {
     }
 }
 
+/// The factor to m/s² of the AT2 header `lines` (the first three), or the 1-based line and reason
+/// why the file is not an acceleration record in known units.
+fn at2_units_factor(lines: &[&str]) -> Result<Real, (usize, String)> {
+    let mut factor = G0;
+    for (k, line) in lines.iter().enumerate() {
+        let upper = line.to_ascii_uppercase();
+        for kind in ["VELOCITY", "DISPLACEMENT"] {
+            if upper.contains(kind) && !upper.contains("ACCELERATION") {
+                return Err((
+                    k + 1,
+                    format!(
+                        "the header says {kind}: this is a {} time series, not an acceleration \
+                         record; give the acceleration file (.AT2) of the same record",
+                        kind.to_ascii_lowercase()
+                    ),
+                ));
+            }
+        }
+        if let Some(p) = upper.find("UNITS OF") {
+            let unit = upper[p + "UNITS OF".len()..]
+                .split(|c: char| c.is_whitespace() || c == ',')
+                .find(|t| !t.is_empty())
+                .unwrap_or("");
+            factor = match unit {
+                "G" => G0,
+                "CM/S/S" | "CM/S^2" | "CM/S2" | "CM/SEC/SEC" | "CM/SEC^2" | "CM/SEC2" | "GAL" => {
+                    0.01
+                }
+                "M/S/S" | "M/S^2" | "M/S2" | "M/SEC/SEC" | "M/SEC^2" | "M/SEC2" => 1.0,
+                other => {
+                    return Err((
+                        k + 1,
+                        format!(
+                            "unknown units {other:?} in header line {line:?}; accepted: G, \
+                             CM/S/S (CM/S^2, GAL), M/S/S (M/S^2)"
+                        ),
+                    ));
+                }
+            };
+        }
+    }
+    Ok(factor)
+}
+
 fn parse_at2_npts_dt(line: &str) -> Result<(usize, Real), String> {
     let upper = line.to_ascii_uppercase();
+    for key in ["NPTS", "DT"] {
+        let n = upper
+            .split(|c: char| !c.is_ascii_alphanumeric())
+            .filter(|w| *w == key)
+            .count();
+        if n > 1 {
+            return Err(format!("{key} is given {n} times"));
+        }
+    }
     let (npts_s, dt_s) = if upper.contains("NPTS=") || upper.contains("NPTS =") {
         // NGA-West2: `NPTS=   5372, DT=   .0100 SEC,`
         let grab = |key: &str| -> Option<String> {

@@ -53,6 +53,13 @@ impl<'de, T: Deserialize<'de>> Deserialize<'de> for Table<T> {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Exact<const N: usize>(pub [f64; N]);
 
+impl<const N: usize> std::ops::Deref for Exact<N> {
+    type Target = [f64; N];
+    fn deref(&self) -> &[f64; N] {
+        &self.0
+    }
+}
+
 impl<'de, const N: usize> Deserialize<'de> for Exact<N> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         struct V<const N: usize>;

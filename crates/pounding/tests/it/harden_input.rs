@@ -106,3 +106,98 @@ fn a_list_where_a_range_table_is_expected_is_an_error() {
         (vec![-1.0, 0.0, 1.0], vec![0.0])
     );
 }
+
+mod records {
+    use pounding::ground_motion::{AccelUnits, GroundMotionError, Record};
+
+    const G0: f64 = 9.80665;
+
+    fn at2(line3: &str, npts_line: &str) -> String {
+        format!(
+            "PEER NGA STRONG MOTION DATABASE RECORD\nSome event, station\n{line3}\n{npts_line}\n  .1E+00  -.2E+00\n"
+        )
+    }
+
+    fn parse_line(e: GroundMotionError) -> (usize, String) {
+        match e {
+            GroundMotionError::Parse { line, message, .. } => (line, message),
+            other => panic!("expected a parse error, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn velocity_and_displacement_series_are_refused_whatever_the_name() {
+        for (l3, word) in [
+            ("VELOCITY TIME SERIES IN UNITS OF CM/S", "VELOCITY"),
+            ("DISPLACEMENT TIME SERIES IN UNITS OF CM", "DISPLACEMENT"),
+            ("velocity time series in units of cm/s", "VELOCITY"),
+        ] {
+            let text = at2(l3, "NPTS=      2, DT=   .0100 SEC,");
+            let (line, msg) = parse_line(Record::from_at2_str(&text, "x.AT2").unwrap_err());
+            assert_eq!(line, 3, "{msg}");
+            assert!(
+                msg.contains(word) && msg.contains("not an acceleration"),
+                "{msg}"
+            );
+        }
+        // Through the file reader, a .VT2/.DT2 name is refused before anything else.
+        let dir = std::env::temp_dir().join(format!("pounding-vt2-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        for ext in ["VT2", "dt2"] {
+            let p = dir.join(format!("r.{ext}"));
+            let text = at2(
+                "ACCELERATION TIME SERIES IN UNITS OF G",
+                "NPTS= 2, DT= .01 SEC",
+            );
+            std::fs::write(&p, text).unwrap();
+            let e = Record::from_path(&p, AccelUnits::G).unwrap_err();
+            assert!(e.to_string().contains("not an"), "{e}");
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn header_units_are_converted_or_refused() {
+        for (unit, factor) in [
+            ("G", G0),
+            ("CM/S/S", 0.01),
+            ("CM/S^2", 0.01),
+            ("GAL", 0.01),
+            ("M/S/S", 1.0),
+            ("M/S^2", 1.0),
+        ] {
+            let l3 = format!("ACCELERATION TIME SERIES IN UNITS OF {unit}");
+            let r = Record::from_at2_str(&at2(&l3, "NPTS= 2, DT= .01 SEC"), "x.AT2").unwrap();
+            assert_eq!(r.values(), &[0.1 * factor, -0.2 * factor], "{unit}");
+        }
+        let l3 = "ACCELERATION TIME SERIES IN UNITS OF FT/S/S";
+        let (line, msg) = parse_line(
+            Record::from_at2_str(&at2(l3, "NPTS= 2, DT= .01 SEC"), "x.AT2").unwrap_err(),
+        );
+        assert_eq!(line, 3);
+        assert!(msg.contains("FT/S/S") && msg.contains("accepted"), "{msg}");
+    }
+
+    #[test]
+    fn a_repeated_npts_or_dt_is_refused() {
+        let l3 = "ACCELERATION TIME SERIES IN UNITS OF G";
+        for hdr in [
+            "NPTS=      2, NPTS=      1, DT=   .0100 SEC,",
+            "NPTS=      2, DT=   .0100 SEC, DT= .02",
+        ] {
+            let (line, msg) = parse_line(Record::from_at2_str(&at2(l3, hdr), "x.AT2").unwrap_err());
+            assert_eq!(line, 4);
+            assert!(msg.contains("given 2 times"), "{msg}");
+        }
+    }
+
+    #[test]
+    fn a_csv_record_starting_before_zero_is_refused() {
+        let e =
+            Record::from_csv_str("t,a\n-0.01,0.1\n0,0.2\n", "r.csv", AccelUnits::G).unwrap_err();
+        assert!(e.to_string().contains("t >= 0"), "{e}");
+        // Starting at or after zero is fine (zero acceleration before the first sample).
+        let r = Record::from_csv_str("0.5,0.1\n0.6,0.2\n", "r.csv", AccelUnits::G).unwrap();
+        assert_eq!(r.accel(0.2), 0.0);
+    }
+}
