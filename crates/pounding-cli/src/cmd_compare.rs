@@ -97,6 +97,22 @@ pub fn run(args: Args) -> Result<ExitCode> {
         // history resolution for the plots: at least one sample per 0.5 ms
         s.settings.history_stride = ((5e-4 / s.settings.dt).floor() as usize).max(1);
         s.settings.validate().map_err(|e| anyhow!("{e} (--dt)"))?;
+        // Same rules as `simulate`: a step no longer than the run, and not too many steps.
+        let d = s
+            .settings
+            .duration
+            .unwrap_or_else(|| s.problem.ground.end_time());
+        if s.settings.dt > d {
+            bail!(
+                "invalid dt = {}: must not exceed the duration {} s{}",
+                float_token(s.settings.dt),
+                float_token(d),
+                if args.dt.is_some() { " (--dt)" } else { "" }
+            );
+        }
+        s.settings
+            .step_count(d)
+            .map_err(|e| anyhow!("{e} (--dt)"))?;
         setups.push(s);
     }
     let mut runs = Vec::new();

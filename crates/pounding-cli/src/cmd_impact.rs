@@ -14,7 +14,7 @@ use pounding::impact::{
 };
 use pounding::lcp::LemkeSettings;
 use pounding::math::Vector;
-use pounding::output::json_float;
+use pounding::output::{float_token, json_float};
 use pounding::shape::{
     Abutment, DeckEnd, DeckShape, SkewedDeck, StraightDeck, abutment_contact, abutment_delassus,
     abutment_problem, frictionless_pivot, joint_problem,
@@ -242,6 +242,14 @@ fn run_bridge(a: &ImpactArgs) -> Result<ExitCode> {
     let d2 = Deck::new(r2, b2.to_radians(), a.width, a.thickness, a.density)
         .map_err(|e| e.for_deck(2))?;
     let s = SArrangement::new(d1, d2)?;
+    for (name, t) in [("theta1", t1), ("theta2", t2)] {
+        if !(t.is_finite() && t.abs() < 90.0) {
+            bail!(
+                "invalid --{name} = {}: the rotation must be finite with |theta| < 90 deg",
+                float_token(t)
+            );
+        }
+    }
     let (t1r, t2r) = (t1.to_radians(), t2.to_radians());
     validate_rotation("theta1", t1r)?;
     validate_rotation("theta2", t2r)?;

@@ -370,8 +370,26 @@ fn sim_error(src: &Source, e: SimError) -> anyhow::Error {
         SimError::Geometry(pounding::geometry::GeometryError::InvalidParameter {
             name, ..
         }) => Some(name.clone()),
+        SimError::GroundMotion(pounding::ground_motion::GroundMotionError::InvalidParameter {
+            name,
+            ..
+        }) => Some(name.clone()),
         _ => None,
     };
+    // A deck's mass is set by `massJ` when given, else derived from the geometry and density.
+    if let Some(j) = name
+        .as_deref()
+        .and_then(|n| n.strip_prefix("mass (deck "))
+        .and_then(|n| n.strip_suffix(')'))
+    {
+        let key = format!("mass{j}");
+        let key = if src.line_of("decks", &key).is_some() {
+            key
+        } else {
+            "density".into()
+        };
+        return anyhow!("{e} — set by {}", src.key_ref("decks", &key));
+    }
     match name.as_deref().and_then(scenario_key) {
         Some((sec, key)) => anyhow!("{e} — set by {}", src.key_ref(sec, key)),
         None => anyhow!("{e}"),
@@ -661,6 +679,16 @@ pub(crate) fn build_with(args: &Args, law: Option<&str>) -> Result<Setup> {
     let duration = settings
         .duration
         .or(args.records.is_empty().then(|| ground.end_time()));
+    if let Some(d) = duration {
+        settings.step_count(d).map_err(|e| {
+            let by = if src.line_of("time", "duration").is_some() {
+                format!(" and {}", src.key_ref("time", "duration"))
+            } else {
+                String::new()
+            };
+            anyhow!("{e} — set by {}{by}", src.key_ref("time", "dt"))
+        })?;
+    }
     if let Some(d) = duration
         && settings.dt > d
     {

@@ -350,15 +350,15 @@ pub const DEGENERACY_TOLERANCE: Real = 1e-12;
 /// Largest admissible |θ| \[rad\] (exclusive): the placement divides by `cos θ` (spec §5.3).
 pub const MAX_ROTATION: Real = std::f64::consts::FRAC_PI_2;
 
-/// Checks one rotation: finite and `|θ| < 90°`. `name` is the parameter's name in the error
-/// (e.g. `theta1`).
+/// Checks one rotation `theta` \[rad\]: finite and `|θ| < 90°`. `name` is the parameter's name
+/// in the error (e.g. `theta1`); the error reports the value in degrees, as users give it.
 pub fn validate_rotation(name: &str, theta: Real) -> Result<(), GeometryError> {
     if theta.is_finite() && theta.abs() < MAX_ROTATION {
         Ok(())
     } else {
         Err(GeometryError::invalid(
-            name,
-            theta,
+            &format!("{name} [deg]"),
+            theta.to_degrees(),
             "the rotation must be finite with |theta| < 90 degrees",
         ))
     }

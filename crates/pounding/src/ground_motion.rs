@@ -531,6 +531,13 @@ impl GroundMotion {
                 });
             }
         }
+        if self.incidence.abs() > 2.0 * std::f64::consts::PI * (1.0 + 1e-12) {
+            return Err(GroundMotionError::InvalidParameter {
+                name: "incidence".into(),
+                value: self.incidence.to_degrees(),
+                reason: "must lie in [-360, 360] deg".into(),
+            });
+        }
         Ok(())
     }
 

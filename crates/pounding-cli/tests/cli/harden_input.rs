@@ -90,3 +90,87 @@ fn simulate_refuses_a_velocity_record_named_at2() {
     assert!(err.contains("v.AT2") && err.contains("VELOCITY"), "{err}");
     assert!(!d.join("o").exists());
 }
+
+#[test]
+fn simulate_errors_name_the_key_and_line_for_ground_motion_steps_and_masses() {
+    let d = tmp("keys");
+    for (text, want) in [
+        (
+            "[time]\nduration = 0.1\n[ground_motion]\nincidence_deg = 1e308\n",
+            vec![
+                "[ground_motion] incidence_deg` (s.toml:4)",
+                "[-360, 360] deg",
+            ],
+        ),
+        (
+            "[time]\nduration = 0.1\n[ground_motion]\nscale_y = inf\n",
+            vec!["[ground_motion] scale_y` (s.toml:4)"],
+        ),
+        (
+            "[time]\nduration = 1e12\ndt = 1e-3\n",
+            vec![
+                "[time] dt` (s.toml:3)",
+                "[time] duration` (s.toml:2)",
+                "limit",
+            ],
+        ),
+        (
+            // A tiny mass used to be blamed on "no bearing stiffness" (its frequencies overflowed to 0).
+            "[time]\nduration = 0.1\n[decks]\nmass1 = 1e-300\n",
+            vec!["mass (deck 1)", "[decks] mass1` (s.toml:4)", "overflows"],
+        ),
+    ] {
+        std::fs::write(d.join("s.toml"), text).unwrap();
+        let (code, err) = run_in(&d, &["simulate", "s.toml", "--out", "o"]);
+        assert_eq!(code, Some(2), "{text}: {err}");
+        for w in want {
+            assert!(err.contains(w), "{text}: want {w:?} in {err}");
+        }
+        assert!(!err.contains("no bearing stiffness"), "{err}");
+        assert!(!d.join("o").exists());
+    }
+}
+
+#[test]
+fn compare_refuses_a_time_step_beyond_the_duration() {
+    let d = tmp("cmp");
+    std::fs::write(d.join("s.toml"), "[time]\nduration = 1.0\n").unwrap();
+    let (code, err) = run_in(&d, &["compare", "s.toml", "--dt", "1e9", "--out", "o"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("must not exceed the duration 1 s (--dt)"),
+        "{err}"
+    );
+    assert!(!d.join("o").exists());
+}
+
+#[test]
+fn impact_reports_a_bad_rotation_in_degrees() {
+    let d = tmp("theta");
+    let base = [
+        "impact",
+        "--r1",
+        "100",
+        "--r2",
+        "100",
+        "--beta1",
+        "60",
+        "--beta2",
+        "60",
+        "--case",
+        "deck1-inner",
+        "--mu",
+        "0.5",
+        "--eps",
+        "0.5",
+        "--theta2",
+        "0",
+    ];
+    for t in ["90", "-95"] {
+        let mut a = base.to_vec();
+        a.extend(["--theta1", t]);
+        let (code, err) = run_in(&d, &a);
+        assert_eq!(code, Some(2), "{err}");
+        assert!(err.contains(&format!("--theta1 = {t}:")), "{err}");
+    }
+}

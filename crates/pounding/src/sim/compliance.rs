@@ -321,14 +321,7 @@ pub(crate) fn simulate_compliance(
             d
         }
     };
-    let n_steps = ((duration / h) - 1e-9).ceil().max(1.0) as usize;
-    if n_steps > 200_000_000 {
-        return Err(SimError::invalid(
-            "dt",
-            h,
-            &format!("duration / dt = {n_steps} steps is too many"),
-        ));
-    }
+    let n_steps = settings.step_count(duration)?;
     let ag = problem.ground.sample_uniform(h, n_steps);
     let bodies = model.bodies();
     let m1 = bodies[0].mass.mass;

@@ -459,6 +459,13 @@ impl SimModel {
             let mj = Matrix3::from_diagonal(&nalgebra::Vector3::new(mp.mass, mp.mass, mp.inertia));
             let kj = model::bearing_stiffness(&bodies[j], bs);
             let om = model::deck_frequencies(&mp, &kj);
+            if om.iter().any(|w| !w.is_finite()) {
+                return Err(SimError::invalid(
+                    format!("mass (deck {})", j + 1),
+                    mp.mass,
+                    "the bearing stiffness over this mass (or inertia) overflows; use physical magnitudes",
+                ));
+            }
             let (a0, a1) =
                 model::rayleigh_coefficients(self.damping_ratio, &om).ok_or_else(|| {
                     SimError::invalid(
@@ -606,7 +613,29 @@ impl SimSettings {
         }
         Ok(())
     }
+
+    /// Number of steps `⌈duration/dt⌉` (at least 1) of a run of `duration` seconds, refused beyond
+    /// [`MAX_STEPS`].
+    pub fn step_count(&self, duration: Real) -> Result<usize, SimError> {
+        let n = ((duration / self.dt) - 1e-9).ceil().max(1.0);
+        if !(n <= MAX_STEPS as Real) {
+            return Err(SimError::invalid(
+                "dt",
+                self.dt,
+                &format!(
+                    "duration / dt = {} s / {} s = {} steps is more than the limit {MAX_STEPS}",
+                    crate::output::float_token(duration),
+                    crate::output::float_token(self.dt),
+                    crate::output::float_token(n)
+                ),
+            ));
+        }
+        Ok(n as usize)
+    }
 }
+
+/// Largest number of time steps of one run (each step stores its ground acceleration).
+pub const MAX_STEPS: usize = 200_000_000;
 
 /// One impacting contact in one impact step.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -876,14 +905,7 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
             d
         }
     };
-    let n_steps = ((duration / h) - 1e-9).ceil().max(1.0) as usize;
-    if n_steps > 200_000_000 {
-        return Err(SimError::invalid(
-            "dt",
-            h,
-            &format!("duration / dt = {} steps is too many", n_steps),
-        ));
-    }
+    let n_steps = settings.step_count(duration)?;
     let ag = problem.ground.sample_uniform(h, n_steps);
 
     let th = settings.theta;

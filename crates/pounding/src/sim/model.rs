@@ -155,7 +155,7 @@ pub fn bearing_stiffness(body: &DeckBody, bearings: &[Bearing]) -> Matrix3<Real>
 }
 
 /// Natural circular frequencies `ω_1 ≤ ω_2 ≤ ω_3` \[rad/s\] of `K φ = ω² M φ` for one deck
-/// (`M = diag(m, m, I)`).
+/// (`M = diag(m, m, I)`). All three are NaN when `M^{-1/2} K M^{-1/2}` overflows.
 pub fn deck_frequencies(mass: &PlanarMassProperties, k: &Matrix3<Real>) -> [Real; 3] {
     let d = nalgebra::Vector3::new(
         mass.mass.sqrt().recip(),
@@ -164,6 +164,10 @@ pub fn deck_frequencies(mass: &PlanarMassProperties, k: &Matrix3<Real>) -> [Real
     );
     let a = Matrix3::from_diagonal(&d) * k * Matrix3::from_diagonal(&d);
     let a = (a + a.transpose()) * 0.5;
+    if a.iter().any(|x| !x.is_finite()) {
+        // K/M overflows (e.g. a mass of 1e-300 kg): no frequency is meaningful.
+        return [Real::NAN; 3];
+    }
     let mut ev: Vec<Real> = a
         .symmetric_eigenvalues()
         .iter()
