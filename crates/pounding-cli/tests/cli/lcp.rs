@@ -20,7 +20,7 @@ fn siconos(name: &str) -> Option<PathBuf> {
     if p.is_file() {
         Some(p)
     } else {
-        eprintln!("SKIPPED: {} is absent", p.display());
+        crate::skipped(&format!("{} is absent", p.display()));
         None
     }
 }

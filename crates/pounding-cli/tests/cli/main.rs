@@ -4,6 +4,23 @@ mod impact;
 
 use std::process::Command;
 
+/// Reports a skipped test: `SKIPPED: reason` on stderr, and a line appended to
+/// `$POUNDING_SKIP_LOG` when set (`.ci/run` lists them; see `pounding/tests/it/common.rs`).
+pub fn skipped(reason: &str) {
+    eprintln!("SKIPPED: {reason}");
+    if let Some(log) = std::env::var_os("POUNDING_SKIP_LOG") {
+        use std::io::Write;
+        let name = std::thread::current().name().unwrap_or("?").to_string();
+        if let Ok(mut f) = std::fs::OpenOptions::new()
+            .create(true)
+            .append(true)
+            .open(log)
+        {
+            let _ = writeln!(f, "pounding-cli/cli::{name}\t{reason}");
+        }
+    }
+}
+
 /// The built `pounding` binary.
 pub fn pounding() -> Command {
     Command::new(env!("CARGO_BIN_EXE_pounding"))

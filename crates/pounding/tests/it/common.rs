@@ -13,10 +13,28 @@ pub fn shared_dir() -> Option<PathBuf> {
     if p.is_dir() {
         Some(p)
     } else {
-        eprintln!(
-            "SKIPPED: shared data directory {} is absent (tests that read it are skipped)",
+        skipped(&format!(
+            "shared data directory {} is absent (tests that read it are skipped)",
             p.display()
-        );
+        ));
         None
+    }
+}
+
+/// Reports a skipped test (or skipped part of one): `SKIPPED: reason` on stderr, and one line
+/// `test-name<TAB>reason` appended to the file `$POUNDING_SKIP_LOG` when set, so that `.ci/run`
+/// can list every skip in its summary (a passing test's stderr is hidden by the test harness).
+pub fn skipped(reason: &str) {
+    eprintln!("SKIPPED: {reason}");
+    if let Some(log) = std::env::var_os("POUNDING_SKIP_LOG") {
+        use std::io::Write;
+        let name = std::thread::current().name().unwrap_or("?").to_string();
+        if let Ok(mut f) = std::fs::OpenOptions::new()
+            .create(true)
+            .append(true)
+            .open(log)
+        {
+            let _ = writeln!(f, "pounding/it::{name}\t{reason}");
+        }
     }
 }

@@ -1039,7 +1039,7 @@ fn opensees_1d_bilinear_cross_check() {
     };
     let path = shared.join("data/records/RSN6_IMPVALL.I_I-ELC180-hor1.AT2");
     if !path.is_file() {
-        eprintln!("SKIPPED: {} is absent", path.display());
+        crate::common::skipped(&format!("{} is absent", path.display()));
         return;
     }
     let (rec_dt, rec) = read_at2(&path);

@@ -109,7 +109,7 @@ fn siconos_dir() -> Option<PathBuf> {
     if d.is_dir() {
         Some(d)
     } else {
-        eprintln!("SKIPPED: {} is absent", d.display());
+        crate::common::skipped(&format!("{} is absent", d.display()));
         None
     }
 }
