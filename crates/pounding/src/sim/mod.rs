@@ -618,7 +618,7 @@ impl SimSettings {
     /// [`MAX_STEPS`].
     pub fn step_count(&self, duration: Real) -> Result<usize, SimError> {
         let n = ((duration / self.dt) - 1e-9).ceil().max(1.0);
-        if !(n <= MAX_STEPS as Real) {
+        if n.is_nan() || n > MAX_STEPS as Real {
             return Err(SimError::invalid(
                 "dt",
                 self.dt,

@@ -481,7 +481,7 @@ impl Ctx<'_> {
         // 20 deg is 2e21 values), which must be refused, not wrapped.
         let count = ((stop - start) / step + 1e-9).floor() + 1.0;
         let out = AngleRange { start, stop, step };
-        if !(count <= MAX_GRID_VALUES as Real) {
+        if count.is_nan() || count > MAX_GRID_VALUES as Real {
             return Err(self.invalid(
                 r.step.span(),
                 &format!("{key}.step"),
