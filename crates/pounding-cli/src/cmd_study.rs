@@ -4,6 +4,7 @@
 
 use anyhow::{Context, Result, bail};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use pounding::input::{SHARD_MANIFEST_LIMIT, read_text, shard_rows_limit};
 use pounding::output::write_atomic;
 use pounding::study::{
     DEFAULT_SCENARIO_TOML, Scenario, Shard, Study,
@@ -161,8 +162,9 @@ fn run_study(path: Option<&Path>, shard: Option<&str>, common: &Common) -> Resul
     if let Some(shard) = shard {
         let rows = pool.install(|| compute_rows(&scenario, shard, &tick))?;
         pb.finish_and_clear();
-        let manifest = manifest_json(shard, &text, total, rows.len());
         let csv = pool.install(|| shard_rows_csv(&scenario, &rows));
+        let manifest = manifest_json(shard, &text, total, rows.len(), &csv);
+        refuse_mixed_outputs(&common.out, true)?;
         create_dir(&common.out)?;
         write(&common.out, "rows.csv", &csv)?;
         write(&common.out, "shard.json", &manifest)?;
@@ -184,22 +186,74 @@ fn run_study(path: Option<&Path>, shard: Option<&str>, common: &Common) -> Resul
 
 fn run_merge(dirs: &[PathBuf], common: &Common) -> Result<ExitCode> {
     let t0 = Instant::now();
+    refuse_out_inside_shards(&common.out, dirs)?;
     let mut parts = Vec::with_capacity(dirs.len());
     for d in dirs {
-        let read = |name: &str| {
+        let read = |name: &str, what: &str, limit: u64| {
             let p = d.join(name);
-            std::fs::read_to_string(&p).with_context(|| format!("cannot read {}", p.display()))
+            read_text(&p, what, limit).with_context(|| format!("cannot read {}", p.display()))
         };
+        let manifest = read("shard.json", "shard manifest", SHARD_MANIFEST_LIMIT)?;
+        // rows.csv may hold about SHARD_ROW_BYTES per row the manifest declares (merge checks
+        // the count and the checksum).
+        let declared = serde_json::from_str::<serde_json::Value>(&manifest)
+            .ok()
+            .and_then(|v| v["rows"].as_u64())
+            .unwrap_or(0);
+        let rows = read("rows.csv", "shard rows file", shard_rows_limit(declared))?;
         parts.push(ShardFiles {
             origin: d.display().to_string(),
-            manifest: read("shard.json")?,
-            rows: read("rows.csv")?,
+            manifest,
+            rows,
         });
     }
     let merged = merge(&parts)?;
     let pool = pool(common.threads)?;
     let study = Study::from_rows(merged.scenario_text, merged.scenario, merged.rows);
     finish(study, &pool, common, t0)
+}
+
+/// Refuses an output directory equal to or inside one of the shard directories being merged
+/// (the merged files would land beside a shard's `shard.json` and `rows.csv`).
+fn refuse_out_inside_shards(out: &Path, dirs: &[PathBuf]) -> Result<()> {
+    for d in dirs {
+        if pounding::output::path_is_within(out, d)
+            .with_context(|| format!("cannot resolve {}", d.display()))?
+        {
+            bail!(
+                "--out {} is inside (or equal to) the shard directory {}: the merged study \
+                 would be written among the shard's files; choose another --out",
+                out.display(),
+                d.display()
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Refuses to mix a shard and a complete study in one directory: a shard run into a directory
+/// that holds a study's `bounds.csv`, or a complete run (or merge) into one that holds a
+/// `shard.json`.
+fn refuse_mixed_outputs(out: &Path, shard: bool) -> Result<()> {
+    let (other, what) = if shard {
+        ("bounds.csv", "a complete study")
+    } else {
+        ("shard.json", "a shard")
+    };
+    let p = out.join(other);
+    if p.exists() {
+        bail!(
+            "--out {} holds {what} ({} exists): write {} into another directory",
+            out.display(),
+            p.display(),
+            if shard {
+                "the shard"
+            } else {
+                "the complete study"
+            }
+        );
+    }
+    Ok(())
 }
 
 fn exit_for(disagreements: usize) -> ExitCode {
@@ -250,6 +304,7 @@ fn finish(
     let summary_csv = study.summary_csv();
     let summary_json = study.summary_json();
     let t_text = t0.elapsed().as_secs_f64();
+    refuse_mixed_outputs(out, false)?;
     create_dir(out)?;
     remove_previous_outputs(out)?;
     write(out, "bounds.csv", &bounds)?;

@@ -24,6 +24,7 @@
 //! * [`sim`] — seismic time histories of two decks with pounding: bearings, Rayleigh damping,
 //!   Moreau–Jean time stepping with the impact LCP at every step, abutments, batch runs.
 //! * [`output`] — deterministic number formatting and atomic file output shared by every writer.
+//! * [`input`] — input files read within documented size limits, strict JSON, the thread limit.
 //!
 //! Errors (bad input) are [`thiserror`] enums per module; numerical outcomes (ray termination,
 //! pivot limit, no impact) are *statuses* inside results, never errors and never panics.
@@ -35,6 +36,7 @@ pub mod contact_law;
 pub mod geometry;
 pub mod ground_motion;
 pub mod impact;
+pub mod input;
 pub mod lcp;
 pub mod math;
 pub mod output;

@@ -65,6 +65,38 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     result
 }
 
+/// Whether `path` is `dir` or lies inside it, after resolving symbolic links and `..` (`dir` must
+/// exist; `path` need not: its longest existing ancestor is resolved and the rest appended).
+pub fn path_is_within(path: &Path, dir: &Path) -> std::io::Result<bool> {
+    let dir = std::fs::canonicalize(dir)?;
+    let abs = if path.is_absolute() {
+        path.to_path_buf()
+    } else {
+        std::env::current_dir()?.join(path)
+    };
+    // resolve the longest existing ancestor, then append the remaining components
+    let mut rest = Vec::new();
+    let mut cur = abs.as_path();
+    let resolved = loop {
+        match std::fs::canonicalize(cur) {
+            Ok(p) => break p,
+            Err(_) => match (cur.parent(), cur.file_name()) {
+                (Some(parent), Some(name)) => {
+                    rest.push(name.to_os_string());
+                    cur = parent;
+                }
+                // `..` or the root: resolve lexically from here
+                _ => break cur.to_path_buf(),
+            },
+        }
+    };
+    let mut full = resolved;
+    for c in rest.iter().rev() {
+        full.push(c);
+    }
+    Ok(full.starts_with(&dir))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -9,6 +9,7 @@ mod event_exact;
 mod geometry;
 mod ground_motion;
 mod harden;
+mod harden_io;
 mod impact;
 mod lcp;
 mod shapes;

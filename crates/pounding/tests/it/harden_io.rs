@@ -1,0 +1,150 @@
+//! Hardening of inputs and outputs: shard checksums and counts, input size limits, strict JSON,
+//! atomic writes that never replace a special file.
+
+use pounding::study::run::compute_rows;
+use pounding::study::shard::{ShardFiles, manifest_json, merge, shard_rows_csv};
+use pounding::study::{Scenario, Shard, Study};
+
+const SMALL: &str = r#"
+[decks]
+beta1_deg = [60.0]
+beta2_deg = [90.0]
+r1_m = [200.0]
+r2_m = [100.0]
+[impact]
+mu = [0.5, 0.0]
+[grid]
+theta1_deg = { start = -6.0, stop = 6.0, step = 3.0 }
+theta2_deg = { start = -6.0, stop = 6.0, step = 3.0 }
+[output]
+figures = false
+"#;
+
+fn none(_: usize) {}
+
+fn shards(n: usize) -> (Scenario, Vec<ShardFiles>) {
+    let s = Scenario::from_toml(SMALL, "small.toml").unwrap();
+    let parts = (1..=n)
+        .map(|k| {
+            let shard = Shard::new(k, n).unwrap();
+            let rows = compute_rows(&s, shard, &none).unwrap();
+            let csv = shard_rows_csv(&s, &rows);
+            ShardFiles {
+                origin: format!("dir{k}"),
+                manifest: manifest_json(shard, SMALL, s.row_count(), rows.len(), &csv),
+                rows: csv,
+            }
+        })
+        .collect();
+    (s, parts)
+}
+
+/// Replaces the first float field after the row index and key columns of data line `line` by `by`.
+fn edit_value(rows: &str, line: usize, by: &str) -> String {
+    let mut out: Vec<String> = rows.lines().map(str::to_string).collect();
+    let fields: Vec<&str> = out[line].split(',').collect();
+    // the last field that parses as a non-integer float (a bound or ratio)
+    let j = (0..fields.len())
+        .rev()
+        .find(|&j| fields[j].contains('.') && fields[j].parse::<f64>().is_ok())
+        .expect("a float field");
+    let mut f: Vec<String> = fields.iter().map(|s| s.to_string()).collect();
+    assert_ne!(f[j], by);
+    f[j] = by.to_string();
+    out[line] = f.join(",");
+    out.join("\n") + "\n"
+}
+
+#[test]
+fn untouched_shards_merge_to_the_unsharded_study() {
+    let (s, parts) = shards(2);
+    let whole = Study::compute(SMALL.into(), s, &none).unwrap();
+    let m = merge(&parts).unwrap();
+    assert_eq!(
+        Study::from_rows(m.scenario_text, m.scenario, m.rows).bounds_csv(),
+        whole.bounds_csv()
+    );
+    // the manifest carries the checksum of the exact rows bytes
+    let v: serde_json::Value = serde_json::from_str(&parts[0].manifest).unwrap();
+    assert_eq!(
+        v["rows_fnv1a64"],
+        pounding::input::fnv1a64_hex(parts[0].rows.as_bytes())
+    );
+}
+
+#[test]
+fn a_value_edited_by_hand_or_nan_is_refused_naming_the_rows_file() {
+    for by in ["0.123456", "nan", "inf"] {
+        let (_, mut parts) = shards(2);
+        parts[1].rows = edit_value(&parts[1].rows, 3, by);
+        // the edited row still parses: only the checksum can catch it
+        let e = merge(&parts).unwrap_err().to_string();
+        assert!(
+            e.contains("dir2/rows.csv") && e.contains("checksum"),
+            "{by}: {e}"
+        );
+    }
+}
+
+#[test]
+fn manifest_counts_are_checked() {
+    let set = |parts: &mut Vec<ShardFiles>, k: usize, key: &str, v: serde_json::Value| {
+        let mut m: serde_json::Value = serde_json::from_str(&parts[k].manifest).unwrap();
+        m[key] = v;
+        parts[k].manifest = serde_json::to_string_pretty(&m).unwrap();
+    };
+    // rows_total that is not the scenario's row count
+    let (s, mut parts) = shards(2);
+    set(&mut parts, 0, "rows_total", (s.row_count() + 1).into());
+    let e = merge(&parts).unwrap_err().to_string();
+    assert!(
+        e.contains("dir1/shard.json") && e.contains("rows_total"),
+        "{e}"
+    );
+    // `rows` that is not the number of rows in the file
+    let (_, mut parts) = shards(2);
+    let n: u64 = serde_json::from_str::<serde_json::Value>(&parts[1].manifest).unwrap()["rows"]
+        .as_u64()
+        .unwrap();
+    set(&mut parts, 1, "rows", (n - 1).into());
+    let e = merge(&parts).unwrap_err().to_string();
+    assert!(
+        e.contains("dir2/rows.csv") && e.contains("declares rows"),
+        "{e}"
+    );
+    // rows removed from rows.csv with `rows` and the checksum made to match: the share is wrong
+    let (_, mut parts) = shards(2);
+    let mut lines: Vec<&str> = parts[1].rows.lines().collect();
+    lines.pop();
+    let cut = lines.join("\n") + "\n";
+    set(&mut parts, 1, "rows", (n - 1).into());
+    set(
+        &mut parts,
+        1,
+        "rows_fnv1a64",
+        pounding::input::fnv1a64_hex(cut.as_bytes()).into(),
+    );
+    parts[1].rows = cut;
+    let e = merge(&parts).unwrap_err().to_string();
+    assert!(
+        e.contains("dir2/shard.json") && e.contains("rows = "),
+        "{e}"
+    );
+    // a manifest without the checksum (older shards) is refused
+    let (_, mut parts) = shards(2);
+    let mut m: serde_json::Value = serde_json::from_str(&parts[0].manifest).unwrap();
+    m.as_object_mut().unwrap().remove("rows_fnv1a64");
+    parts[0].manifest = m.to_string();
+    let e = merge(&parts).unwrap_err().to_string();
+    assert!(e.contains("rows_fnv1a64"), "{e}");
+    // a duplicate key in the manifest is refused with its line
+    let (_, mut parts) = shards(2);
+    parts[0].manifest = parts[0]
+        .manifest
+        .replacen("\"of\": 2,", "\"of\": 2,\n  \"of\": 2,", 1);
+    let e = merge(&parts).unwrap_err().to_string();
+    assert!(
+        e.contains("duplicate key \"of\"") && e.contains("line"),
+        "{e}"
+    );
+}
