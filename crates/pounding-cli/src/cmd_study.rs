@@ -4,8 +4,10 @@
 
 use anyhow::{Context, Result, bail};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use pounding::input::{SHARD_MANIFEST_LIMIT, read_text, shard_rows_limit};
-use pounding::output::write_atomic;
+use pounding::input::{
+    SCENARIO_LIMIT, SHARD_MANIFEST_LIMIT, check_threads, read_text, shard_rows_limit,
+};
+use pounding::output::{OutputLock, lock_output_dir, write_atomic};
 use pounding::study::{
     DEFAULT_SCENARIO_TOML, Scenario, Shard, Study,
     run::compute_rows,
@@ -77,18 +79,11 @@ pub fn run(args: Args) -> Result<ExitCode> {
     }
 }
 
-/// Upper bound of `--threads` (a guard against typos such as `--threads 100000`).
-const MAX_THREADS: usize = 1024;
-
 /// Upper bound of the rows one run (or one shard) holds in memory, about 0.5 KB each.
 const MAX_ROWS_PER_RUN: usize = 20_000_000;
 
 fn pool(threads: Option<usize>) -> Result<rayon::ThreadPool> {
-    if let Some(n) = threads
-        && !(1..=MAX_THREADS).contains(&n)
-    {
-        bail!("invalid --threads {n}: must lie in [1, {MAX_THREADS}]");
-    }
+    check_threads(threads).map_err(anyhow::Error::msg)?;
     let mut b = rayon::ThreadPoolBuilder::new();
     if let Some(n) = threads {
         b = b.num_threads(n);
@@ -103,7 +98,7 @@ fn load_scenario(path: Option<&Path>) -> Result<(String, Scenario)> {
             Ok((DEFAULT_SCENARIO_TOML.to_string(), s))
         }
         Some(p) => {
-            let text = std::fs::read_to_string(p)
+            let text = read_text(p, "scenario file", SCENARIO_LIMIT)
                 .with_context(|| format!("cannot read scenario file {}", p.display()))?;
             let s = Scenario::from_toml(&text, &p.display().to_string())?;
             Ok((text, s))
@@ -120,11 +115,6 @@ fn progress_bar(total: usize, what: &str) -> ProgressBar {
     }
     pb.set_message(what.to_string());
     pb
-}
-
-fn create_dir(dir: &Path) -> Result<()> {
-    std::fs::create_dir_all(dir)
-        .with_context(|| format!("cannot create output directory {}", dir.display()))
 }
 
 fn write(dir: &Path, name: &str, text: &str) -> Result<()> {
@@ -149,6 +139,7 @@ fn run_study(path: Option<&Path>, shard: Option<&str>, common: &Common) -> Resul
              parameter values, or split the study with --shard K/N"
         );
     }
+    pounding::output::check_output_dir_free(&common.out)?;
     eprintln!(
         "study: {} configurations x {} cases x {} cells = {} rows on {} threads",
         scenario.configuration_count(),
@@ -164,8 +155,8 @@ fn run_study(path: Option<&Path>, shard: Option<&str>, common: &Common) -> Resul
         pb.finish_and_clear();
         let csv = pool.install(|| shard_rows_csv(&scenario, &rows));
         let manifest = manifest_json(shard, &text, total, rows.len(), &csv);
+        let _lock = lock_output_dir(&common.out)?;
         refuse_mixed_outputs(&common.out, true)?;
-        create_dir(&common.out)?;
         write(&common.out, "rows.csv", &csv)?;
         write(&common.out, "shard.json", &manifest)?;
         eprintln!(
@@ -187,6 +178,7 @@ fn run_study(path: Option<&Path>, shard: Option<&str>, common: &Common) -> Resul
 fn run_merge(dirs: &[PathBuf], common: &Common) -> Result<ExitCode> {
     let t0 = Instant::now();
     refuse_out_inside_shards(&common.out, dirs)?;
+    pounding::output::check_output_dir_free(&common.out)?;
     let mut parts = Vec::with_capacity(dirs.len());
     for d in dirs {
         let read = |name: &str, what: &str, limit: u64| {
@@ -270,20 +262,21 @@ fn exit_for(disagreements: usize) -> ExitCode {
 /// Removes what an earlier run may have left in `out` (`report.html` and `timing.json`, which are
 /// written last and so mark a complete run, and the figures), so that an interrupted run never
 /// leaves a set of files that looks complete but mixes two runs.
-fn remove_previous_outputs(out: &Path) -> Result<()> {
+fn remove_previous_outputs(lock: &OutputLock) -> Result<()> {
+    pounding::output::remove_previous_outputs(lock, &["report.html", "timing.json"])?;
+    let out = lock.dir();
     let remove = |p: &Path| match std::fs::remove_file(p) {
         Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
             Err(e).with_context(|| format!("cannot remove the earlier output {}", p.display()))
         }
         _ => Ok(()),
     };
-    remove(&out.join("report.html"))?;
-    remove(&out.join("timing.json"))?;
     let figs = out.join("figures");
     if let Ok(entries) = std::fs::read_dir(&figs) {
         for e in entries.flatten() {
             let p = e.path();
-            if matches!(p.extension().and_then(|x| x.to_str()), Some("png" | "svg")) {
+            let temporary = pounding::output::is_temporary_name(&e.file_name().to_string_lossy());
+            if temporary || matches!(p.extension().and_then(|x| x.to_str()), Some("png" | "svg")) {
                 remove(&p)?;
             }
         }
@@ -304,9 +297,9 @@ fn finish(
     let summary_csv = study.summary_csv();
     let summary_json = study.summary_json();
     let t_text = t0.elapsed().as_secs_f64();
+    let lock = lock_output_dir(out)?;
     refuse_mixed_outputs(out, false)?;
-    create_dir(out)?;
-    remove_previous_outputs(out)?;
+    remove_previous_outputs(&lock)?;
     write(out, "bounds.csv", &bounds)?;
     write(out, "summary.csv", &summary_csv)?;
     write(out, "summary.json", &summary_json)?;

@@ -73,7 +73,7 @@ pub fn read_text(path: &Path, what: &str, limit: u64) -> std::io::Result<String>
     if meta.is_dir() {
         return Err(Error::new(
             ErrorKind::InvalidInput,
-            format!("is a directory, expected a {what}"),
+            "is a directory, expected a file",
         ));
     }
     if meta.is_file() && meta.len() > limit {

@@ -22,6 +22,7 @@ fn help_lists_subcommands() {
 mod batch;
 mod compare;
 mod harden;
+mod harden_io;
 mod lcp;
 mod shapes;
 mod simulate;

@@ -148,3 +148,140 @@ fn manifest_counts_are_checked() {
         "{e}"
     );
 }
+
+fn tmp(name: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!("pounding-it-hio-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn names(dir: &std::path::Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    v.sort();
+    v
+}
+
+#[cfg(unix)]
+#[test]
+fn write_atomic_writes_through_devices_and_never_replaces_them() {
+    use pounding::output::{Target, target_kind, write_atomic};
+    use std::os::unix::fs::FileTypeExt;
+    let full = std::path::Path::new("/dev/full");
+    let null = std::path::Path::new("/dev/null");
+    assert_eq!(target_kind(null).unwrap(), Target::WriteThrough);
+    write_atomic(null, b"x").unwrap();
+    if full.exists() {
+        let e = write_atomic(full, b"x").unwrap_err();
+        assert_eq!(e.kind(), std::io::ErrorKind::StorageFull, "{e}");
+        assert!(
+            std::fs::metadata(full)
+                .unwrap()
+                .file_type()
+                .is_char_device()
+        );
+    }
+    assert!(
+        std::fs::metadata(null)
+            .unwrap()
+            .file_type()
+            .is_char_device()
+    );
+    // a directory is refused and left as it is
+    let d = tmp("dir");
+    let sub = d.join("sub");
+    std::fs::create_dir(&sub).unwrap();
+    let e = write_atomic(&sub, b"x").unwrap_err();
+    assert!(e.to_string().contains("directory"), "{e}");
+    assert!(sub.is_dir());
+    assert_eq!(names(&d), ["sub"], "no temporary left");
+    // a regular file is replaced; a new path created
+    write_atomic(&d.join("a"), b"1").unwrap();
+    write_atomic(&d.join("a"), b"22").unwrap();
+    assert_eq!(std::fs::read(d.join("a")).unwrap(), b"22");
+    // a write that fails removes its temporary (the file's directory is missing)
+    assert!(write_atomic(&d.join("missing/x"), b"1").is_err());
+    assert_eq!(names(&d), ["a", "sub"]);
+}
+
+#[test]
+fn temporaries_are_removed_on_drop_and_recognised_by_name() {
+    use pounding::output::{TempFile, is_temporary_name};
+    let d = tmp("tempfile");
+    let target = d.join("plot.png");
+    {
+        let t = TempFile::new(&target).unwrap();
+        std::fs::write(t.path(), b"partial").unwrap();
+        let name = t.path().file_name().unwrap().to_string_lossy().into_owned();
+        assert!(is_temporary_name(&name), "{name}");
+    } // dropped without commit: an error path
+    assert!(names(&d).is_empty());
+    let t = TempFile::new(&target).unwrap();
+    std::fs::write(t.path(), b"whole").unwrap();
+    t.commit().unwrap();
+    assert_eq!(names(&d), ["plot.png"]);
+    for n in [".plot.png.123.tmp", ".x.123.tmp.png", ".figures.7.tmp"] {
+        assert!(is_temporary_name(n), "{n}");
+    }
+    for n in [
+        "plot.png",
+        ".pounding.lock",
+        ".x.tmp",
+        ".x.12a.tmp",
+        "x.1.tmp",
+        ".x.1.tmp.a.b",
+    ] {
+        assert!(!is_temporary_name(n), "{n}");
+    }
+}
+
+#[test]
+fn an_output_directory_has_one_writer_at_a_time() {
+    use pounding::output::{
+        LOCK_FILE, OutputError, check_output_dir_free, lock_output_dir, remove_previous_outputs,
+    };
+    let d = tmp("lock").join("out");
+    check_output_dir_free(&d).unwrap();
+    assert!(!d.exists(), "the early check creates nothing");
+    let first = lock_output_dir(&d).unwrap();
+    assert!(d.join(LOCK_FILE).is_file());
+    let e = lock_output_dir(&d).unwrap_err();
+    assert!(matches!(e, OutputError::Locked { .. }), "{e}");
+    let msg = e.to_string();
+    assert!(
+        msg.contains(d.to_str().unwrap()) && msg.contains("in use"),
+        "{msg}"
+    );
+    assert!(check_output_dir_free(&d).is_err());
+    // stale outputs and temporaries are removed under the lock; other files are kept
+    for n in ["timing.json", "old.png", ".old.png.99.tmp", "mine.txt"] {
+        std::fs::write(d.join(n), b"x").unwrap();
+    }
+    remove_previous_outputs(&first, &["timing.json", "old.png", "never-written.csv"]).unwrap();
+    assert_eq!(names(&d), [LOCK_FILE, "mine.txt"]);
+    drop(first);
+    let again = lock_output_dir(&d).unwrap();
+    drop(again);
+    check_output_dir_free(&d).unwrap();
+}
+
+#[test]
+fn path_within_resolves_links_and_missing_tails() {
+    use pounding::output::path_is_within;
+    let d = tmp("within");
+    let shard = d.join("shard1");
+    std::fs::create_dir(&shard).unwrap();
+    assert!(path_is_within(&shard, &shard).unwrap());
+    assert!(path_is_within(&shard.join("merged/x"), &shard).unwrap());
+    assert!(path_is_within(&d.join("shard1/../shard1/m"), &shard).unwrap());
+    assert!(!path_is_within(&d.join("merged"), &shard).unwrap());
+    assert!(!path_is_within(&d.join("shard1/../m"), &shard).unwrap());
+    #[cfg(unix)]
+    {
+        std::os::unix::fs::symlink(&shard, d.join("link")).unwrap();
+        assert!(path_is_within(&d.join("link/m"), &shard).unwrap());
+    }
+}
