@@ -685,7 +685,7 @@ fn solution_json(p: &ImpactProblem, s: &ImpactSolution) -> Value {
     })
 }
 
-fn run_generic(path: &PathBuf, as_json: bool) -> Result<ExitCode> {
+fn run_generic(path: &std::path::Path, as_json: bool) -> Result<ExitCode> {
     let text =
         pounding::input::read_text(path, "impact problem file", pounding::input::PROBLEM_LIMIT)
             .with_context(|| format!("invalid --problem: cannot read {}", path.display()))?;

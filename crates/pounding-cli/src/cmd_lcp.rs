@@ -123,15 +123,15 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
 
 fn read(file: &Path, solver: Solver) -> anyhow::Result<Vec<LcpEntry>> {
     let set = io::read_any(file)?;
-    if solver == Solver::Enum {
-        if let Some(e) = set.iter().find(|e| e.problem.dim() > 12) {
-            bail!(
-                "{}: problem {} has n = {}; --solver enum needs n <= 12 (use --solver lemke)",
-                file.display(),
-                e.id,
-                e.problem.dim()
-            );
-        }
+    if solver == Solver::Enum
+        && let Some(e) = set.iter().find(|e| e.problem.dim() > 12)
+    {
+        bail!(
+            "{}: problem {} has n = {}; --solver enum needs n <= 12 (use --solver lemke)",
+            file.display(),
+            e.id,
+            e.problem.dim()
+        );
     }
     Ok(set)
 }

@@ -45,7 +45,7 @@ pub fn shard_rows_limit(rows: u64) -> u64 {
 
 /// A limit in words: `16 MiB`, `4096 bytes`.
 pub fn limit_text(limit: u64) -> String {
-    if limit >= MIB && limit % MIB == 0 {
+    if limit >= MIB && limit.is_multiple_of(MIB) {
         format!("{} MiB", limit / MIB)
     } else {
         format!("{limit} bytes")
@@ -54,7 +54,7 @@ pub fn limit_text(limit: u64) -> String {
 
 /// Reads the UTF-8 text of `path`, refusing more than `limit` bytes.
 ///
-/// `what` names the kind of file in the error ("scenario file"). At most `limit + 1` bytes are
+/// `what` names the kind of file in the error, singular ("scenario file": "the limit for scenario files"). At most `limit + 1` bytes are
 /// read ([`Read::take`]), so an endless input (a character device, a FIFO) is refused quickly; a
 /// regular file larger than the limit is refused before reading. Directories are refused. The
 /// error (an [`std::io::Error`]) does not contain the path: callers add it.
@@ -64,7 +64,7 @@ pub fn read_text(path: &Path, what: &str, limit: u64) -> std::io::Result<String>
         Error::new(
             ErrorKind::InvalidData,
             format!(
-                "larger than {}, the limit for a {what} (see the README, \"Limits\")",
+                "larger than {}, the limit for {what}s (see the README, \"Limits\")",
                 limit_text(limit)
             ),
         )

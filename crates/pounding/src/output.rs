@@ -194,11 +194,12 @@ pub enum OutputError {
     },
 }
 
-/// The exclusive lock of an output directory, released when dropped (or when the process ends,
-/// however it ends: the operating system drops advisory locks with the process).
+/// The exclusive lock of an output directory. Dropping it removes the lock file and releases the
+/// lock (the operating system also releases it when the process ends, however it ends; a lock
+/// file left by a killed run is then free and is taken over).
 #[derive(Debug)]
 pub struct OutputLock {
-    _file: std::fs::File,
+    file: Option<std::fs::File>,
     dir: PathBuf,
 }
 
@@ -209,8 +210,34 @@ impl OutputLock {
     }
 }
 
+impl Drop for OutputLock {
+    fn drop(&mut self) {
+        // Unlink while still holding the lock: a run that opened the old file and locks it after
+        // this sees that the path no longer names it and gives up (`lock_output_dir`).
+        let _ = std::fs::remove_file(lock_path(&self.dir));
+        drop(self.file.take());
+    }
+}
+
 fn lock_path(dir: &Path) -> PathBuf {
     dir.join(LOCK_FILE)
+}
+
+/// Whether the open file `f` is still the file at `path` (not unlinked or replaced).
+fn still_linked(f: &std::fs::File, path: &Path) -> bool {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        match (f.metadata(), std::fs::metadata(path)) {
+            (Ok(a), Ok(b)) => a.dev() == b.dev() && a.ino() == b.ino(),
+            _ => false,
+        }
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = (f, path);
+        true
+    }
 }
 
 /// Fails with [`OutputError::Locked`] when another process holds the lock of `dir`; creates
@@ -236,8 +263,7 @@ pub fn check_output_dir_free(dir: &Path) -> Result<(), OutputError> {
 /// Creates `dir` (and its parents) if needed and takes the exclusive advisory lock
 /// `dir/.pounding.lock` ([`LOCK_FILE`], `flock`), without waiting: a second writer into the same
 /// directory gets [`OutputError::Locked`]. Hold the returned lock until every output (and the
-/// completion marker) is written. The lock file stays in the directory (removing it would let two
-/// runs lock two different files).
+/// completion marker) is written; dropping it removes the lock file.
 pub fn lock_output_dir(dir: &Path) -> Result<OutputLock, OutputError> {
     let io = |what, path: &Path| {
         let path = path.to_path_buf();
@@ -245,24 +271,32 @@ pub fn lock_output_dir(dir: &Path) -> Result<OutputLock, OutputError> {
     };
     std::fs::create_dir_all(dir).map_err(io("cannot create output directory", dir))?;
     let lock = lock_path(dir);
-    let f = std::fs::OpenOptions::new()
-        .read(true)
-        .write(true)
-        .create(true)
-        .truncate(false)
-        .open(&lock)
-        .map_err(io("cannot open the lock file", &lock))?;
-    match f.try_lock() {
-        Ok(()) => Ok(OutputLock {
-            _file: f,
-            dir: dir.to_path_buf(),
-        }),
-        Err(std::fs::TryLockError::WouldBlock) => Err(OutputError::Locked {
-            dir: dir.to_path_buf(),
-            lock,
-        }),
-        Err(std::fs::TryLockError::Error(e)) => Err(io("cannot lock", &lock)(e)),
+    let locked = || OutputError::Locked {
+        dir: dir.to_path_buf(),
+        lock: lock.clone(),
+    };
+    // A few tries: the file may be unlinked by a run that ends between our open and our lock.
+    for _ in 0..3 {
+        let f = std::fs::OpenOptions::new()
+            .read(true)
+            .write(true)
+            .create(true)
+            .truncate(false)
+            .open(&lock)
+            .map_err(io("cannot open the lock file", &lock))?;
+        match f.try_lock() {
+            Ok(()) if still_linked(&f, &lock) => {
+                return Ok(OutputLock {
+                    file: Some(f),
+                    dir: dir.to_path_buf(),
+                });
+            }
+            Ok(()) => continue,
+            Err(std::fs::TryLockError::WouldBlock) => return Err(locked()),
+            Err(std::fs::TryLockError::Error(e)) => return Err(io("cannot lock", &lock)(e)),
+        }
     }
+    Err(locked())
 }
 
 /// Removes the earlier outputs `names` (files, relative to the locked directory) and the

@@ -247,7 +247,8 @@ fn a_second_writer_into_one_output_directory_is_refused() {
     drop(lock);
     let (code, _, err) = run(&["simulate", s(&sc), "--out", s(&out)]);
     assert_eq!(code, Some(0), "{err}");
-    // the lock is released when the run ends
+    // the lock is released, and its file removed, when the run ends
+    assert!(!out.join(".pounding.lock").exists());
     hold_lock(&out);
 }
 

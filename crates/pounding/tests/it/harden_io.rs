@@ -263,9 +263,23 @@ fn an_output_directory_has_one_writer_at_a_time() {
     remove_previous_outputs(&first, &["timing.json", "old.png", "never-written.csv"]).unwrap();
     assert_eq!(names(&d), [LOCK_FILE, "mine.txt"]);
     drop(first);
+    // released and its file removed: the directory holds only the outputs
+    assert_eq!(names(&d), ["mine.txt"]);
     let again = lock_output_dir(&d).unwrap();
     drop(again);
     check_output_dir_free(&d).unwrap();
+    // a lock file left by a killed run (no holder) is taken over
+    std::fs::write(d.join(LOCK_FILE), b"").unwrap();
+    check_output_dir_free(&d).unwrap();
+    let taken = lock_output_dir(&d).unwrap();
+    drop(taken);
+    // a holder whose file was unlinked (a run ending) does not block; the new file is the lock
+    let old = std::fs::File::create(d.join(LOCK_FILE)).unwrap();
+    old.try_lock().unwrap();
+    std::fs::remove_file(d.join(LOCK_FILE)).unwrap();
+    let new = lock_output_dir(&d).unwrap();
+    assert!(lock_output_dir(&d).is_err());
+    drop((old, new));
 }
 
 #[test]
