@@ -344,36 +344,35 @@ pub fn is_temporary_name(name: &str) -> bool {
     pid_ok && (after.is_empty() || (after.starts_with('.') && !after[1..].contains('.')))
 }
 
-/// Whether `path` is `dir` or lies inside it, after resolving symbolic links and `..` (`dir` must
-/// exist; `path` need not: its longest existing ancestor is resolved and the rest appended).
+/// Whether `path` is `dir` or lies inside it, as the operating system will resolve `path` when
+/// it is created: symbolic links are followed, and `..` after a component that does not exist yet
+/// (it will be created as a real directory) cancels that component. `dir` must exist.
 pub fn path_is_within(path: &Path, dir: &Path) -> std::io::Result<bool> {
+    use std::path::Component;
     let dir = std::fs::canonicalize(dir)?;
     let abs = if path.is_absolute() {
         path.to_path_buf()
     } else {
         std::env::current_dir()?.join(path)
     };
-    // resolve the longest existing ancestor, then append the remaining components
-    let mut rest = Vec::new();
-    let mut cur = abs.as_path();
-    let resolved = loop {
-        match std::fs::canonicalize(cur) {
-            Ok(p) => break p,
-            Err(_) => match (cur.parent(), cur.file_name()) {
-                (Some(parent), Some(name)) => {
-                    rest.push(name.to_os_string());
-                    cur = parent;
+    let mut resolved = PathBuf::new();
+    for c in abs.components() {
+        match c {
+            Component::Prefix(_) | Component::RootDir => resolved.push(c.as_os_str()),
+            Component::CurDir => {}
+            Component::ParentDir => {
+                resolved.pop();
+            }
+            Component::Normal(name) => {
+                resolved.push(name);
+                // an existing component may be a link: resolve it (the prefix is canonical)
+                if let Ok(p) = std::fs::canonicalize(&resolved) {
+                    resolved = p;
                 }
-                // `..` or the root: resolve lexically from here
-                _ => break cur.to_path_buf(),
-            },
+            }
         }
-    };
-    let mut full = resolved;
-    for c in rest.iter().rev() {
-        full.push(c);
     }
-    Ok(full.starts_with(&dir))
+    Ok(resolved.starts_with(&dir))
 }
 
 #[cfg(test)]

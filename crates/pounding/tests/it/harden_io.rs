@@ -293,6 +293,12 @@ fn path_within_resolves_links_and_missing_tails() {
     assert!(path_is_within(&d.join("shard1/../shard1/m"), &shard).unwrap());
     assert!(!path_is_within(&d.join("merged"), &shard).unwrap());
     assert!(!path_is_within(&d.join("shard1/../m"), &shard).unwrap());
+    // `..` after a directory that does not exist yet (create_dir_all makes it real)
+    assert!(path_is_within(&d.join("new/../shard1"), &shard).unwrap());
+    assert!(path_is_within(&d.join("new/a/../../shard1/x"), &shard).unwrap());
+    assert!(!path_is_within(&d.join("new/../other"), &shard).unwrap());
+    // a sibling whose name starts with the shard's is not inside it
+    assert!(!path_is_within(&d.join("shard10"), &shard).unwrap());
     #[cfg(unix)]
     {
         std::os::unix::fs::symlink(&shard, d.join("link")).unwrap();
