@@ -115,6 +115,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
             .map_err(|e| anyhow!("{e} (--dt)"))?;
         setups.push(s);
     }
+    pounding::output::check_output_dir_free(&args.out)?;
     let mut runs = Vec::new();
     for (l, s) in laws.iter().zip(&setups) {
         let t = Instant::now();
@@ -141,8 +142,8 @@ pub fn run(args: Args) -> Result<ExitCode> {
     }
 
     let out = &args.out;
-    std::fs::create_dir_all(out)
-        .with_context(|| format!("cannot create output directory {}", out.display()))?;
+    let lock = pounding::output::lock_output_dir(out)?;
+    pounding::output::remove_previous_outputs(&lock, COMPARE_OUTPUTS)?;
     let wr = |name: &str, bytes: &[u8]| {
         write_atomic(&out.join(name), bytes)
             .with_context(|| format!("cannot write {}", out.join(name).display()))
@@ -167,6 +168,15 @@ pub fn run(args: Args) -> Result<ExitCode> {
 }
 
 const DEG: Real = 180.0 / std::f64::consts::PI;
+
+/// Every file `compare` writes; removed before a new run writes. `timing.json` is written last
+/// and marks a complete run (as in `pounding study`).
+const COMPARE_OUTPUTS: &[&str] = &[
+    "timing.json",
+    "compare.csv",
+    "joint_gap.png",
+    "contact_force.png",
+];
 
 /// Columns of `compare.csv` (the stdout table shows a subset).
 const HEADER: &str = "law,impacts,impacting_contacts,peak_contact_force_N,peak_penetration_m,\
@@ -247,8 +257,8 @@ static REGISTER: std::sync::Once = std::sync::Once::new();
 const FAMILY: &str = "sans-serif";
 type R = std::result::Result<(), String>;
 
-fn e<E: std::fmt::Debug>(err: E) -> String {
-    format!("{err:?}")
+fn e<E: std::fmt::Display>(err: E) -> String {
+    err.to_string()
 }
 
 const COLORS: [RGBColor; 6] = [
@@ -401,18 +411,10 @@ fn panel<DB: DrawingBackend>(
 }
 
 fn save(out: &Path, name: &str, draw: impl Fn(&DrawingArea<BitMapBackend, Shift>) -> R) -> R {
-    let tmp = out.join(format!(".{name}.{}.tmp.png", std::process::id()));
-    let res = (|| {
-        let root = BitMapBackend::new(&tmp, (1200, 900)).into_drawing_area();
+    crate::figures::save_png(&out.join(name), (1200, 900), |root| {
         root.fill(&WHITE).map_err(e)?;
-        draw(&root)?;
-        root.present().map_err(e)
-    })();
-    if let Err(err) = res {
-        let _ = std::fs::remove_file(&tmp);
-        return Err(err);
-    }
-    std::fs::rename(&tmp, out.join(name)).map_err(|err| format!("cannot write {name}: {err}"))
+        draw(root)
+    })
 }
 
 fn plots(out: &Path, runs: &[Run]) -> R {

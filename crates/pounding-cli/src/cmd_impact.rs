@@ -573,6 +573,8 @@ fn check_keys(obj: &Map<String, Value>, allowed: &[&str], path: &str) -> Result<
 
 /// Parses the generic problem JSON (see the module docs); errors name the offending key.
 pub fn parse_problem(text: &str) -> Result<ImpactProblem> {
+    pounding::input::check_json_duplicate_keys(text)
+        .context("the problem file is not valid JSON")?;
     let root: Value = serde_json::from_str(text).context("the problem file is not valid JSON")?;
     let root = root.as_object().ok_or_else(|| {
         anyhow!("the problem must be a JSON object with \"bodies\" and \"contacts\"")
@@ -691,9 +693,10 @@ fn solution_json(p: &ImpactProblem, s: &ImpactSolution) -> Value {
     })
 }
 
-fn run_generic(path: &PathBuf, as_json: bool) -> Result<ExitCode> {
-    let text = std::fs::read_to_string(path)
-        .with_context(|| format!("invalid --problem: cannot read {}", path.display()))?;
+fn run_generic(path: &std::path::Path, as_json: bool) -> Result<ExitCode> {
+    let text =
+        pounding::input::read_text(path, "impact problem file", pounding::input::PROBLEM_LIMIT)
+            .with_context(|| format!("invalid --problem: cannot read {}", path.display()))?;
     let problem =
         parse_problem(&text).with_context(|| format!("in problem file {}", path.display()))?;
     let s = impact::solve(&problem, &ImpactSettings::default());

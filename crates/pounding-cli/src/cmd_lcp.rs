@@ -85,7 +85,8 @@ enum LcpCmd {
     /// Per class: `count`, `solved`, `solves_per_s` (median of the repeats; each repeat runs the
     /// class's solve loop, including the solver's own verification, until it has taken at least
     /// --min-time seconds; parsing is outside the timer) and `max_residual`
-    /// (max_i |min(z_i, w_i)| / max(1, ||q||_inf) over the solved problems). Single-threaded.
+    /// (max_i |min(z_i, w_i)| / max(1, ||q||_inf) over the solved problems; `null` when the
+    /// class has no solved problem). Single-threaded.
     Bench {
         /// Problem file: Siconos .dat or LCPSET 1.
         file: PathBuf,
@@ -122,15 +123,15 @@ pub fn run(args: Args) -> anyhow::Result<ExitCode> {
 
 fn read(file: &Path, solver: Solver) -> anyhow::Result<Vec<LcpEntry>> {
     let set = io::read_any(file)?;
-    if solver == Solver::Enum {
-        if let Some(e) = set.iter().find(|e| e.problem.dim() > 12) {
-            bail!(
-                "{}: problem {} has n = {}; --solver enum needs n <= 12 (use --solver lemke)",
-                file.display(),
-                e.id,
-                e.problem.dim()
-            );
-        }
+    if solver == Solver::Enum
+        && let Some(e) = set.iter().find(|e| e.problem.dim() > 12)
+    {
+        bail!(
+            "{}: problem {} has n = {}; --solver enum needs n <= 12 (use --solver lemke)",
+            file.display(),
+            e.id,
+            e.problem.dim()
+        );
     }
     Ok(set)
 }
@@ -215,6 +216,17 @@ fn solve(file: &Path, solver: Solver, out: Option<&Path>) -> anyhow::Result<Exit
 }
 
 /// One class's solve loop: returns (solved count, max residual) — the work that is timed.
+/// `max(a, b)` that keeps a NaN (`f64::max` would drop it and report a clean residual).
+fn nan_max(a: f64, b: f64) -> f64 {
+    if a.is_nan() || b.is_nan() {
+        f64::NAN
+    } else {
+        a.max(b)
+    }
+}
+
+/// Solves every problem of a class once: the number solved and the largest residual among them
+/// (NaN when none was solved: there is no residual to report, and `0.0` would claim a perfect one).
 fn run_class(
     solver: Solver,
     probs: &[LcpProblem],
@@ -229,7 +241,7 @@ fn run_class(
                 lemke.solve_into(black_box(p), sol);
                 if sol.status == LcpStatus::Solved {
                     solved += 1;
-                    maxres = maxres.max(sol.residual);
+                    maxres = nan_max(maxres, sol.residual);
                 }
             }
         }
@@ -241,10 +253,13 @@ fn run_class(
                     solved += 1;
                 }
                 for z in &sols {
-                    maxres = maxres.max(residual(p, z));
+                    maxres = nan_max(maxres, residual(p, z));
                 }
             }
         }
+    }
+    if solved == 0 {
+        maxres = f64::NAN;
     }
     (solved, maxres)
 }

@@ -505,8 +505,9 @@ fn build(args: &Args) -> Result<Setup> {
 pub(crate) fn build_with(args: &Args, law: Option<&str>) -> Result<Setup> {
     let src = match &args.scenario {
         Some(p) => {
-            let text = std::fs::read_to_string(p)
-                .with_context(|| format!("cannot read scenario file {}", p.display()))?;
+            let text =
+                pounding::input::read_text(p, "scenario file", pounding::input::SCENARIO_LIMIT)
+                    .with_context(|| format!("cannot read scenario file {}", p.display()))?;
             let dir = p
                 .parent()
                 .map(Path::to_path_buf)
@@ -718,14 +719,14 @@ pub fn run(args: Args) -> Result<ExitCode> {
     if !args.records.is_empty() {
         return sim_batch::run(&args, &setup.problem, &setup.settings, setup.units, t_start);
     }
+    pounding::output::check_output_dir_free(&args.out)?;
     let t_sim = Instant::now();
     let sol = simulate(&setup.problem, &setup.settings).map_err(|e| anyhow!("{e}"))?;
     let sim_secs = t_sim.elapsed().as_secs_f64();
     warn_time_step(&sol);
 
     let out = &args.out;
-    std::fs::create_dir_all(out)
-        .with_context(|| format!("cannot create output directory {}", out.display()))?;
+    let _lock = lock_and_clear(out)?;
     let t_write = Instant::now();
     let wr = |name: &str, bytes: &[u8]| {
         write_atomic(&out.join(name), bytes)
@@ -792,6 +793,33 @@ pub fn run(args: Args) -> Result<ExitCode> {
 }
 
 const DEG: Real = 180.0 / std::f64::consts::PI;
+
+/// Every file `simulate` writes (single run and batch). A run into a directory first removes all
+/// of them, so that no earlier run's plots (e.g. `abutment_gap.png` of a run with abutments) or
+/// `timing.json` stay beside the new results. `timing.json` is written last and marks a complete
+/// run (as in `pounding study`).
+pub(crate) const SIM_OUTPUTS: &[&str] = &[
+    "timing.json",
+    "history.csv",
+    "impacts.csv",
+    "summary.json",
+    "displacements.png",
+    "layout.png",
+    "rotations.png",
+    "joint_gap.png",
+    "abutment_gap.png",
+    "impulses.png",
+    "energy.png",
+    "batch.csv",
+    "batch.png",
+];
+
+/// Locks the output directory `out` (creating it) and removes the earlier run's [`SIM_OUTPUTS`].
+pub(crate) fn lock_and_clear(out: &Path) -> Result<pounding::output::OutputLock> {
+    let lock = pounding::output::lock_output_dir(out)?;
+    pounding::output::remove_previous_outputs(&lock, SIM_OUTPUTS)?;
+    Ok(lock)
+}
 
 /// Prints a warning to stderr when a compliance law's contact is not resolved by `dt`.
 pub(crate) fn warn_time_step(sol: &SimSolution) {

@@ -4,7 +4,10 @@
 
 use anyhow::{Context, Result, bail};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use pounding::output::write_atomic;
+use pounding::input::{
+    SCENARIO_LIMIT, SHARD_MANIFEST_LIMIT, check_threads, read_text, shard_rows_limit,
+};
+use pounding::output::{OutputLock, lock_output_dir, write_atomic};
 use pounding::study::{
     DEFAULT_SCENARIO_TOML, Scenario, Shard, Study,
     run::compute_rows,
@@ -76,18 +79,11 @@ pub fn run(args: Args) -> Result<ExitCode> {
     }
 }
 
-/// Upper bound of `--threads` (a guard against typos such as `--threads 100000`).
-const MAX_THREADS: usize = 1024;
-
 /// Upper bound of the rows one run (or one shard) holds in memory, about 0.5 KB each.
 const MAX_ROWS_PER_RUN: usize = 20_000_000;
 
 fn pool(threads: Option<usize>) -> Result<rayon::ThreadPool> {
-    if let Some(n) = threads
-        && !(1..=MAX_THREADS).contains(&n)
-    {
-        bail!("invalid --threads {n}: must lie in [1, {MAX_THREADS}]");
-    }
+    check_threads(threads).map_err(anyhow::Error::msg)?;
     let mut b = rayon::ThreadPoolBuilder::new();
     if let Some(n) = threads {
         b = b.num_threads(n);
@@ -102,7 +98,7 @@ fn load_scenario(path: Option<&Path>) -> Result<(String, Scenario)> {
             Ok((DEFAULT_SCENARIO_TOML.to_string(), s))
         }
         Some(p) => {
-            let text = std::fs::read_to_string(p)
+            let text = read_text(p, "scenario file", SCENARIO_LIMIT)
                 .with_context(|| format!("cannot read scenario file {}", p.display()))?;
             let s = Scenario::from_toml(&text, &p.display().to_string())?;
             Ok((text, s))
@@ -119,11 +115,6 @@ fn progress_bar(total: usize, what: &str) -> ProgressBar {
     }
     pb.set_message(what.to_string());
     pb
-}
-
-fn create_dir(dir: &Path) -> Result<()> {
-    std::fs::create_dir_all(dir)
-        .with_context(|| format!("cannot create output directory {}", dir.display()))
 }
 
 fn write(dir: &Path, name: &str, text: &str) -> Result<()> {
@@ -148,6 +139,7 @@ fn run_study(path: Option<&Path>, shard: Option<&str>, common: &Common) -> Resul
              parameter values, or split the study with --shard K/N"
         );
     }
+    pounding::output::check_output_dir_free(&common.out)?;
     eprintln!(
         "study: {} configurations x {} cases x {} cells = {} rows on {} threads",
         scenario.configuration_count(),
@@ -161,9 +153,10 @@ fn run_study(path: Option<&Path>, shard: Option<&str>, common: &Common) -> Resul
     if let Some(shard) = shard {
         let rows = pool.install(|| compute_rows(&scenario, shard, &tick))?;
         pb.finish_and_clear();
-        let manifest = manifest_json(shard, &text, total, rows.len());
         let csv = pool.install(|| shard_rows_csv(&scenario, &rows));
-        create_dir(&common.out)?;
+        let manifest = manifest_json(shard, &text, total, rows.len(), &csv);
+        let _lock = lock_output_dir(&common.out)?;
+        refuse_mixed_outputs(&common.out, true)?;
         write(&common.out, "rows.csv", &csv)?;
         write(&common.out, "shard.json", &manifest)?;
         eprintln!(
@@ -184,22 +177,75 @@ fn run_study(path: Option<&Path>, shard: Option<&str>, common: &Common) -> Resul
 
 fn run_merge(dirs: &[PathBuf], common: &Common) -> Result<ExitCode> {
     let t0 = Instant::now();
+    refuse_out_inside_shards(&common.out, dirs)?;
+    pounding::output::check_output_dir_free(&common.out)?;
     let mut parts = Vec::with_capacity(dirs.len());
     for d in dirs {
-        let read = |name: &str| {
+        let read = |name: &str, what: &str, limit: u64| {
             let p = d.join(name);
-            std::fs::read_to_string(&p).with_context(|| format!("cannot read {}", p.display()))
+            read_text(&p, what, limit).with_context(|| format!("cannot read {}", p.display()))
         };
+        let manifest = read("shard.json", "shard manifest", SHARD_MANIFEST_LIMIT)?;
+        // rows.csv may hold about SHARD_ROW_BYTES per row the manifest declares (merge checks
+        // the count and the checksum).
+        let declared = serde_json::from_str::<serde_json::Value>(&manifest)
+            .ok()
+            .and_then(|v| v["rows"].as_u64())
+            .unwrap_or(0);
+        let rows = read("rows.csv", "shard rows file", shard_rows_limit(declared))?;
         parts.push(ShardFiles {
             origin: d.display().to_string(),
-            manifest: read("shard.json")?,
-            rows: read("rows.csv")?,
+            manifest,
+            rows,
         });
     }
     let merged = merge(&parts)?;
     let pool = pool(common.threads)?;
     let study = Study::from_rows(merged.scenario_text, merged.scenario, merged.rows);
     finish(study, &pool, common, t0)
+}
+
+/// Refuses an output directory equal to or inside one of the shard directories being merged
+/// (the merged files would land beside a shard's `shard.json` and `rows.csv`).
+fn refuse_out_inside_shards(out: &Path, dirs: &[PathBuf]) -> Result<()> {
+    for d in dirs {
+        if pounding::output::path_is_within(out, d)
+            .with_context(|| format!("cannot resolve {}", d.display()))?
+        {
+            bail!(
+                "--out {} is inside (or equal to) the shard directory {}: the merged study \
+                 would be written among the shard's files; choose another --out",
+                out.display(),
+                d.display()
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Refuses to mix a shard and a complete study in one directory: a shard run into a directory
+/// that holds a study's `bounds.csv`, or a complete run (or merge) into one that holds a
+/// `shard.json`.
+fn refuse_mixed_outputs(out: &Path, shard: bool) -> Result<()> {
+    let (other, what) = if shard {
+        ("bounds.csv", "a complete study")
+    } else {
+        ("shard.json", "a shard")
+    };
+    let p = out.join(other);
+    if p.exists() {
+        bail!(
+            "--out {} holds {what} ({} exists): write {} into another directory",
+            out.display(),
+            p.display(),
+            if shard {
+                "the shard"
+            } else {
+                "the complete study"
+            }
+        );
+    }
+    Ok(())
 }
 
 fn exit_for(disagreements: usize) -> ExitCode {
@@ -216,20 +262,21 @@ fn exit_for(disagreements: usize) -> ExitCode {
 /// Removes what an earlier run may have left in `out` (`report.html` and `timing.json`, which are
 /// written last and so mark a complete run, and the figures), so that an interrupted run never
 /// leaves a set of files that looks complete but mixes two runs.
-fn remove_previous_outputs(out: &Path) -> Result<()> {
+fn remove_previous_outputs(lock: &OutputLock) -> Result<()> {
+    pounding::output::remove_previous_outputs(lock, &["report.html", "timing.json"])?;
+    let out = lock.dir();
     let remove = |p: &Path| match std::fs::remove_file(p) {
         Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
             Err(e).with_context(|| format!("cannot remove the earlier output {}", p.display()))
         }
         _ => Ok(()),
     };
-    remove(&out.join("report.html"))?;
-    remove(&out.join("timing.json"))?;
     let figs = out.join("figures");
     if let Ok(entries) = std::fs::read_dir(&figs) {
         for e in entries.flatten() {
             let p = e.path();
-            if matches!(p.extension().and_then(|x| x.to_str()), Some("png" | "svg")) {
+            let temporary = pounding::output::is_temporary_name(&e.file_name().to_string_lossy());
+            if temporary || matches!(p.extension().and_then(|x| x.to_str()), Some("png" | "svg")) {
                 remove(&p)?;
             }
         }
@@ -250,8 +297,9 @@ fn finish(
     let summary_csv = study.summary_csv();
     let summary_json = study.summary_json();
     let t_text = t0.elapsed().as_secs_f64();
-    create_dir(out)?;
-    remove_previous_outputs(out)?;
+    let lock = lock_output_dir(out)?;
+    refuse_mixed_outputs(out, false)?;
+    remove_previous_outputs(&lock)?;
     write(out, "bounds.csv", &bounds)?;
     write(out, "summary.csv", &summary_csv)?;
     write(out, "summary.json", &summary_json)?;

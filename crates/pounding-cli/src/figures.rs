@@ -69,8 +69,31 @@ type DrawResult = Result<(), String>;
 /// A triangle in chart coordinates (θ1, r, θ2).
 type Tri = [(Real, Real, Real); 3];
 
-fn e<E: std::fmt::Debug>(err: E) -> String {
-    format!("{err:?}")
+fn e<E: std::fmt::Display>(err: E) -> String {
+    err.to_string()
+}
+
+/// Draws a PNG of `size` pixels in memory with `draw` and writes it to `path` atomically
+/// ([`write_atomic`]: a temporary beside it, renamed; removed on any error). Errors name `path`.
+/// The bytes are those plotters' file backend writes (the same `image` PNG encoder, default
+/// settings).
+pub(crate) fn save_png<F>(path: &Path, (w, h): (u32, u32), draw: F) -> Result<(), String>
+where
+    F: FnOnce(&DrawingArea<BitMapBackend, Shift>) -> Result<(), String>,
+{
+    use image::ImageEncoder;
+    let mut buf = vec![0u8; w as usize * h as usize * 3];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
+        draw(&root).map_err(|err| format!("cannot draw {}: {err}", path.display()))?;
+        root.present()
+            .map_err(|err| format!("cannot draw {}: {err}", path.display()))?;
+    }
+    let mut png = Vec::new();
+    image::codecs::png::PngEncoder::new(&mut png)
+        .write_image(&buf, w, h, image::ColorType::Rgb8)
+        .map_err(|err| format!("cannot encode {}: {err}", path.display()))?;
+    write_atomic(path, &png).map_err(|err| format!("cannot write {}: {err}", path.display()))
 }
 
 fn font(size: u32) -> TextStyle<'static> {
@@ -245,13 +268,7 @@ fn draw_job(study: &Study, out: &Path, svg: bool, job: &Job) -> Result<Figure, S
     };
     let png_rel = format!("figures/{name}.png");
     let png = out.join(&png_rel);
-    let tmp = out.join(format!("figures/.{name}.{}.tmp.png", std::process::id()));
-    {
-        let root = BitMapBackend::new(&tmp, size).into_drawing_area();
-        render(study, job, &root)?;
-        root.present().map_err(e)?;
-    }
-    std::fs::rename(&tmp, &png).map_err(|err| format!("cannot write {}: {err}", png.display()))?;
+    save_png(&png, size, |root| render(study, job, root))?;
     let svg_rel = if svg {
         let rel = format!("figures/{name}.svg");
         let mut text = String::new();
@@ -261,7 +278,7 @@ fn draw_job(study: &Study, out: &Path, svg: bool, job: &Job) -> Result<Figure, S
             root.present().map_err(e)?;
         }
         write_atomic(&out.join(&rel), text.as_bytes())
-            .map_err(|err| format!("cannot write {rel}: {err}"))?;
+            .map_err(|err| format!("cannot write {}: {err}", out.join(&rel).display()))?;
         Some(rel)
     } else {
         None

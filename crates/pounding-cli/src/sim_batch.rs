@@ -141,9 +141,7 @@ pub fn run(
         Some(s) => BatchShard::parse(s).map_err(|e| anyhow!("{e}"))?,
         None => BatchShard::ALL,
     };
-    if args.threads == Some(0) {
-        bail!("invalid --threads 0: must be >= 1");
-    }
+    pounding::input::check_threads(args.threads).map_err(anyhow::Error::msg)?;
     let records: Vec<BatchRecord> = paths
         .iter()
         .map(|p| BatchRecord {
@@ -178,6 +176,7 @@ pub fn run(
     {
         pb.set_style(style);
     }
+    pounding::output::check_output_dir_free(&args.out)?;
     let t_runs = Instant::now();
     let rows = pool
         .install(|| {
@@ -190,8 +189,7 @@ pub fn run(
     let runs_secs = t_runs.elapsed().as_secs_f64();
 
     let out = &args.out;
-    std::fs::create_dir_all(out)
-        .with_context(|| format!("cannot create output directory {}", out.display()))?;
+    let _lock = super::lock_and_clear(out)?;
     let wr = |name: &str, bytes: &[u8]| {
         write_atomic(&out.join(name), bytes)
             .with_context(|| format!("cannot write {}", out.join(name).display()))

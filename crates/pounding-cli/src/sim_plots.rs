@@ -32,8 +32,8 @@ fn register() {
 
 type R<T = ()> = Result<T, String>;
 
-fn e<E: std::fmt::Debug>(err: E) -> String {
-    format!("{err:?}")
+fn e<E: std::fmt::Display>(err: E) -> String {
+    err.to_string()
 }
 
 const BLUE: RGBColor = RGBColor(31, 97, 180);
@@ -157,18 +157,10 @@ fn save(
     size: (u32, u32),
     draw: impl Fn(&DrawingArea<BitMapBackend, Shift>) -> R,
 ) -> R {
-    let tmp = out.join(format!(".{name}.{}.tmp.png", std::process::id()));
-    let res = (|| {
-        let root = BitMapBackend::new(&tmp, size).into_drawing_area();
+    crate::figures::save_png(&out.join(name), size, |root| {
         root.fill(&WHITE).map_err(e)?;
-        draw(&root)?;
-        root.present().map_err(e)
-    })();
-    if let Err(err) = res {
-        let _ = std::fs::remove_file(&tmp);
-        return Err(err);
-    }
-    std::fs::rename(&tmp, out.join(name)).map_err(|err| format!("cannot write {name}: {err}"))
+        draw(root)
+    })
 }
 
 const DEG: Real = 180.0 / std::f64::consts::PI;

@@ -305,10 +305,12 @@ impl Record {
 
     /// Reads a record file: `.csv` (any case) as CSV in `csv_units`, anything else as PEER `.AT2`.
     pub fn from_path(path: &Path, csv_units: AccelUnits) -> Result<Self, GroundMotionError> {
-        let text = std::fs::read_to_string(path).map_err(|e| GroundMotionError::Io {
-            path: path.display().to_string(),
-            message: e.to_string(),
-        })?;
+        let text =
+            crate::input::read_text(path, "ground-motion record", crate::input::RECORD_LIMIT)
+                .map_err(|e| GroundMotionError::Io {
+                    path: path.display().to_string(),
+                    message: e.to_string(),
+                })?;
         let name = path.display().to_string();
         if let Some(ext) = path.extension().and_then(|e| e.to_str())
             && ["VT2", "DT2"].iter().any(|k| ext.eq_ignore_ascii_case(k))

@@ -25,6 +25,7 @@
 //!   Moreau–Jean time stepping with the impact LCP at every step, abutments, batch runs.
 //! * [`toml_schema`] — strict table and fixed-length array shapes for scenario files.
 //! * [`output`] — deterministic number formatting and atomic file output shared by every writer.
+//! * [`input`] — input files read within documented size limits, strict JSON, the thread limit.
 //!
 //! Errors (bad input) are [`thiserror`] enums per module; numerical outcomes (ray termination,
 //! pivot limit, no impact) are *statuses* inside results, never errors and never panics.
@@ -36,6 +37,7 @@ pub mod contact_law;
 pub mod geometry;
 pub mod ground_motion;
 pub mod impact;
+pub mod input;
 pub mod lcp;
 pub mod math;
 pub mod output;

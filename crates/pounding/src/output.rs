@@ -5,7 +5,7 @@
 //! in CSV and `null` in JSON.
 
 use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// Shortest round-trip text of a float for CSV and plain-text outputs.
 ///
@@ -38,31 +38,341 @@ pub fn json_float(x: f64) -> serde_json::Value {
         .unwrap_or(serde_json::Value::Null)
 }
 
-/// Writes `bytes` to `path` atomically: the data go to a temporary file in the same directory,
-/// which is flushed, synced and then renamed over `path`. An interrupted run therefore leaves
-/// either the old file or no file, never a half-written one under the final name.
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => std::path::PathBuf::from("."),
+/// What an output path names, as far as writing it is concerned.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Target {
+    /// A new path or an existing regular file (or a link to one): replaced atomically.
+    Replace,
+    /// An existing character device or FIFO (`/dev/null`, `/dev/stdout`, `/dev/full`, a pipe):
+    /// written through, never replaced.
+    WriteThrough,
+}
+
+/// Classifies `path` for writing: a new path or a regular file is [`Target::Replace`]; a
+/// character device or a FIFO is [`Target::WriteThrough`]; a directory, a block device or a
+/// socket is refused (an error saying what it is), since replacing it would destroy it and writing
+/// into it is never what was meant. Symbolic links are followed.
+pub fn target_kind(path: &Path) -> std::io::Result<Target> {
+    use std::io::{Error, ErrorKind};
+    let meta = match std::fs::metadata(path) {
+        Ok(m) => m,
+        Err(e) if e.kind() == ErrorKind::NotFound => return Ok(Target::Replace),
+        Err(e) => return Err(e),
     };
-    let name = path.file_name().ok_or_else(|| {
-        std::io::Error::new(std::io::ErrorKind::InvalidInput, "path has no file name")
-    })?;
-    let mut tmp_name = std::ffi::OsString::from(".");
-    tmp_name.push(name);
-    tmp_name.push(format!(".{}.tmp", std::process::id()));
-    let tmp = dir.join(tmp_name);
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(bytes)?;
-        f.sync_all()?;
-        std::fs::rename(&tmp, path)
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
+    let ft = meta.file_type();
+    if ft.is_file() {
+        return Ok(Target::Replace);
     }
-    result
+    let what = if ft.is_dir() {
+        "a directory"
+    } else {
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::FileTypeExt;
+            if ft.is_char_device() || ft.is_fifo() {
+                return Ok(Target::WriteThrough);
+            }
+            if ft.is_block_device() {
+                "a block device"
+            } else if ft.is_socket() {
+                "a socket"
+            } else {
+                "not a regular file"
+            }
+        }
+        #[cfg(not(unix))]
+        {
+            "not a regular file"
+        }
+    };
+    Err(Error::new(
+        ErrorKind::InvalidInput,
+        format!("is {what}: refusing to write over it (give a new path or a regular file)"),
+    ))
+}
+
+/// A temporary file beside `target` (`.NAME.PID.tmp`, in the same directory) that is removed
+/// when dropped unless [`TempFile::commit`] renamed it over the target: every error path (and a
+/// panic) cleans up after itself.
+#[derive(Debug)]
+pub struct TempFile {
+    tmp: PathBuf,
+    target: PathBuf,
+    done: bool,
+}
+
+impl TempFile {
+    /// The temporary for `target`: `DIR/.NAME.PID.tmp` (nothing is created yet).
+    pub fn new(target: &Path) -> std::io::Result<Self> {
+        let dir = match target.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
+        let name = target.file_name().ok_or_else(|| {
+            std::io::Error::new(std::io::ErrorKind::InvalidInput, "path has no file name")
+        })?;
+        let mut tmp_name = std::ffi::OsString::from(".");
+        tmp_name.push(name);
+        tmp_name.push(format!(".{}.tmp", std::process::id()));
+        Ok(Self {
+            tmp: dir.join(tmp_name),
+            target: target.to_path_buf(),
+            done: false,
+        })
+    }
+
+    /// Path of the temporary file.
+    pub fn path(&self) -> &Path {
+        &self.tmp
+    }
+
+    /// Renames the temporary over the target.
+    pub fn commit(mut self) -> std::io::Result<()> {
+        std::fs::rename(&self.tmp, &self.target)?;
+        self.done = true;
+        Ok(())
+    }
+}
+
+impl Drop for TempFile {
+    fn drop(&mut self) {
+        if !self.done {
+            let _ = std::fs::remove_file(&self.tmp);
+        }
+    }
+}
+
+/// Writes `bytes` to `path`.
+///
+/// A new path or a regular file is written atomically: the data go to a temporary file in the
+/// same directory ([`TempFile`]), which is flushed, synced and then renamed over `path`. An
+/// interrupted run therefore leaves either the old file or no file, never a half-written one
+/// under the final name, and a failed write removes its temporary. A character device or a FIFO
+/// (`/dev/null`, `/dev/stdout`, `/dev/full`, a pipe) is written through and never replaced; its
+/// write error (e.g. `ENOSPC` from `/dev/full`) is returned. A directory, block device or socket
+/// is refused ([`target_kind`]). Errors do not contain the path: callers add it.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    if target_kind(path)? == Target::WriteThrough {
+        let mut f = std::fs::OpenOptions::new().write(true).open(path)?;
+        f.write_all(bytes)?;
+        return f.flush();
+    }
+    let tmp = TempFile::new(path)?;
+    let mut f = std::fs::File::create(tmp.path())?;
+    f.write_all(bytes)?;
+    f.sync_all()?;
+    drop(f);
+    tmp.commit()
+}
+
+/// Name of the advisory lock file that a run holds in its output directory while it writes.
+pub const LOCK_FILE: &str = ".pounding.lock";
+
+/// Errors of preparing an output directory.
+#[derive(Debug, thiserror::Error)]
+pub enum OutputError {
+    /// Another run holds the directory's lock.
+    #[error(
+        "output directory {dir} is in use by another pounding run (it holds the lock {lock}); \
+         wait for that run to end or choose another output directory"
+    )]
+    Locked {
+        /// The output directory.
+        dir: PathBuf,
+        /// Its lock file.
+        lock: PathBuf,
+    },
+    /// An I/O error on `path`.
+    #[error("{what} {path}: {source}")]
+    Io {
+        /// What was being done ("cannot create output directory").
+        what: &'static str,
+        /// The file or directory.
+        path: PathBuf,
+        /// The cause.
+        source: std::io::Error,
+    },
+}
+
+/// The exclusive lock of an output directory. Dropping it removes the lock file and releases the
+/// lock (the operating system also releases it when the process ends, however it ends; a lock
+/// file left by a killed run is then free and is taken over).
+#[derive(Debug)]
+pub struct OutputLock {
+    file: Option<std::fs::File>,
+    dir: PathBuf,
+}
+
+impl OutputLock {
+    /// The locked directory.
+    pub fn dir(&self) -> &Path {
+        &self.dir
+    }
+}
+
+impl Drop for OutputLock {
+    fn drop(&mut self) {
+        // Unlink while still holding the lock: a run that opened the old file and locks it after
+        // this sees that the path no longer names it and gives up (`lock_output_dir`).
+        let _ = std::fs::remove_file(lock_path(&self.dir));
+        drop(self.file.take());
+    }
+}
+
+fn lock_path(dir: &Path) -> PathBuf {
+    dir.join(LOCK_FILE)
+}
+
+/// Whether the open file `f` is still the file at `path` (not unlinked or replaced).
+fn still_linked(f: &std::fs::File, path: &Path) -> bool {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        match (f.metadata(), std::fs::metadata(path)) {
+            (Ok(a), Ok(b)) => a.dev() == b.dev() && a.ino() == b.ino(),
+            _ => false,
+        }
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = (f, path);
+        true
+    }
+}
+
+/// Fails with [`OutputError::Locked`] when another process holds the lock of `dir`; creates
+/// nothing (for an early check, before a long computation, that writes nothing on bad input).
+pub fn check_output_dir_free(dir: &Path) -> Result<(), OutputError> {
+    let lock = lock_path(dir);
+    let Ok(f) = std::fs::OpenOptions::new()
+        .read(true)
+        .write(true)
+        .open(&lock)
+    else {
+        return Ok(()); // no lock file (or unreadable: lock_output_dir reports it)
+    };
+    match f.try_lock() {
+        Err(std::fs::TryLockError::WouldBlock) => Err(OutputError::Locked {
+            dir: dir.to_path_buf(),
+            lock,
+        }),
+        _ => Ok(()),
+    }
+}
+
+/// Creates `dir` (and its parents) if needed and takes the exclusive advisory lock
+/// `dir/.pounding.lock` ([`LOCK_FILE`], `flock`), without waiting: a second writer into the same
+/// directory gets [`OutputError::Locked`]. Hold the returned lock until every output (and the
+/// completion marker) is written; dropping it removes the lock file.
+pub fn lock_output_dir(dir: &Path) -> Result<OutputLock, OutputError> {
+    let io = |what, path: &Path| {
+        let path = path.to_path_buf();
+        move |source| OutputError::Io { what, path, source }
+    };
+    std::fs::create_dir_all(dir).map_err(io("cannot create output directory", dir))?;
+    let lock = lock_path(dir);
+    let locked = || OutputError::Locked {
+        dir: dir.to_path_buf(),
+        lock: lock.clone(),
+    };
+    // A few tries: the file may be unlinked by a run that ends between our open and our lock.
+    for _ in 0..3 {
+        let f = std::fs::OpenOptions::new()
+            .read(true)
+            .write(true)
+            .create(true)
+            .truncate(false)
+            .open(&lock)
+            .map_err(io("cannot open the lock file", &lock))?;
+        match f.try_lock() {
+            Ok(()) if still_linked(&f, &lock) => {
+                return Ok(OutputLock {
+                    file: Some(f),
+                    dir: dir.to_path_buf(),
+                });
+            }
+            Ok(()) => continue,
+            Err(std::fs::TryLockError::WouldBlock) => return Err(locked()),
+            Err(std::fs::TryLockError::Error(e)) => return Err(io("cannot lock", &lock)(e)),
+        }
+    }
+    Err(locked())
+}
+
+/// Removes the earlier outputs `names` (files, relative to the locked directory) and the
+/// temporaries an interrupted run may have left there (`.NAME.PID.tmp…`), so that a new run never
+/// leaves a set of files that mixes two runs. Call it under the lock, before writing anything;
+/// write the completion marker last.
+pub fn remove_previous_outputs(lock: &OutputLock, names: &[&str]) -> Result<(), OutputError> {
+    let remove = |p: &Path| match std::fs::remove_file(p) {
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(OutputError::Io {
+            what: "cannot remove the earlier output",
+            path: p.to_path_buf(),
+            source: e,
+        }),
+        _ => Ok(()),
+    };
+    for n in names {
+        remove(&lock.dir.join(n))?;
+    }
+    if let Ok(entries) = std::fs::read_dir(&lock.dir) {
+        for e in entries.flatten() {
+            let name = e.file_name();
+            let name = name.to_string_lossy();
+            if is_temporary_name(&name) && e.file_type().is_ok_and(|t| t.is_file()) {
+                remove(&e.path())?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Whether `name` is a temporary of [`TempFile`]: `.NAME.PID.tmp` (optionally followed by an
+/// extension).
+pub fn is_temporary_name(name: &str) -> bool {
+    let Some(rest) = name.strip_prefix('.') else {
+        return false;
+    };
+    let Some(pos) = rest.rfind(".tmp") else {
+        return false;
+    };
+    let before = &rest[..pos];
+    let after = &rest[pos + 4..];
+    let pid_ok = before.rsplit_once('.').is_some_and(|(n, pid)| {
+        !n.is_empty() && !pid.is_empty() && pid.bytes().all(|b| b.is_ascii_digit())
+    });
+    pid_ok && (after.is_empty() || (after.starts_with('.') && !after[1..].contains('.')))
+}
+
+/// Whether `path` is `dir` or lies inside it, as the operating system will resolve `path` when
+/// it is created: symbolic links are followed, and `..` after a component that does not exist yet
+/// (it will be created as a real directory) cancels that component. `dir` must exist.
+pub fn path_is_within(path: &Path, dir: &Path) -> std::io::Result<bool> {
+    use std::path::Component;
+    let dir = std::fs::canonicalize(dir)?;
+    let abs = if path.is_absolute() {
+        path.to_path_buf()
+    } else {
+        std::env::current_dir()?.join(path)
+    };
+    let mut resolved = PathBuf::new();
+    for c in abs.components() {
+        match c {
+            Component::Prefix(_) | Component::RootDir => resolved.push(c.as_os_str()),
+            Component::CurDir => {}
+            Component::ParentDir => {
+                resolved.pop();
+            }
+            Component::Normal(name) => {
+                resolved.push(name);
+                // an existing component may be a link: resolve it (the prefix is canonical)
+                if let Ok(p) = std::fs::canonicalize(&resolved) {
+                    resolved = p;
+                }
+            }
+        }
+    }
+    Ok(resolved.starts_with(&dir))
 }
 
 #[cfg(test)]

@@ -40,6 +40,7 @@ mod batch;
 mod compare;
 mod harden;
 mod harden_input;
+mod harden_io;
 mod lcp;
 mod shapes;
 mod simulate;

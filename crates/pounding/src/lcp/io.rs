@@ -90,13 +90,7 @@ fn read_text(path: &Path) -> Result<String, LcpIoError> {
         path: path.to_path_buf(),
         cause,
     };
-    if path.is_dir() {
-        return Err(io(std::io::Error::new(
-            std::io::ErrorKind::InvalidInput,
-            "is a directory, expected a file",
-        )));
-    }
-    std::fs::read_to_string(path).map_err(io)
+    crate::input::read_text(path, "LCP file", crate::input::LCP_LIMIT).map_err(io)
 }
 
 /// Reads a file that is either an `LCPSET 1` set (first non-empty line `LCPSET 1`) or a single

@@ -1,30 +1,43 @@
 //! Sharded runs (`--shard K/N`) and their merge (`pounding study merge DIR...`).
 //!
 //! A shard run writes two texts: a manifest ([`manifest_json`]: format tag, `K`, `N`, the total row
-//! count, the row count of this shard and the scenario text) and the shard's rows
+//! count, the row count of this shard, the FNV-1a 64 checksum of the exact bytes of the rows text
+//! (`rows_fnv1a64`, [`crate::input::fnv1a64_hex`]) and the scenario text) and the shard's rows
 //! ([`shard_rows_csv`]: `row,` + the `bounds.csv` header, then `global_index,` + the row's
-//! `bounds.csv` line). [`merge`] checks that the shards come from the same scenario, that every
-//! `K = 1..N` is present exactly once and that every row is present exactly once, and returns the
-//! rows in global order — parsing is exact (shortest round-trip floats), so the merged outputs equal
-//! an unsharded run's byte for byte.
+//! `bounds.csv` line). [`merge`] checks that the manifest has no duplicate keys, that the rows text
+//! matches its checksum (a value edited by hand, or `nan` put in, is refused), that `rows_total`
+//! is the scenario's row count and `rows` both the shard's share of it and the number of rows in
+//! the file, that the shards come from the same scenario, that every `K = 1..N` is present exactly
+//! once and that every row is present exactly once, and returns the rows in global order — parsing
+//! is exact (shortest round-trip floats), so the merged outputs equal an unsharded run's byte for
+//! byte.
 
 use super::StudyError;
 use super::csv::{RowWriter, bounds_header, parse_bounds_line};
 use super::run::{Layout, Row, Shard};
 use super::scenario::Scenario;
+use crate::input::{check_json_duplicate_keys, fnv1a64_hex};
 use serde_json::{Value, json};
 
 /// Format tag of shard manifests.
 pub const SHARD_FORMAT: &str = "pounding-study-shard 1";
 
-/// The manifest of shard `shard` of the study described by `scenario_text`.
-pub fn manifest_json(shard: Shard, scenario_text: &str, rows_total: usize, rows: usize) -> String {
+/// The manifest of shard `shard` of the study described by `scenario_text`, whose rows text
+/// ([`shard_rows_csv`]) is `rows_csv` and holds `rows` rows of the study's `rows_total`.
+pub fn manifest_json(
+    shard: Shard,
+    scenario_text: &str,
+    rows_total: usize,
+    rows: usize,
+    rows_csv: &str,
+) -> String {
     let v = json!({
         "format": SHARD_FORMAT,
         "shard": shard.index,
         "of": shard.count,
         "rows_total": rows_total,
         "rows": rows,
+        "rows_fnv1a64": fnv1a64_hex(rows_csv.as_bytes()),
         "scenario": scenario_text,
     });
     let mut s = serde_json::to_string_pretty(&v).unwrap_or_default();
@@ -50,7 +63,8 @@ pub fn shard_rows_csv(scenario: &Scenario, rows: &[Row]) -> String {
 /// One shard's files as read from disk.
 #[derive(Debug, Clone)]
 pub struct ShardFiles {
-    /// Where the shard came from (for error messages), e.g. its directory.
+    /// Where the shard came from (for error messages), e.g. its directory: errors name
+    /// `ORIGIN/shard.json` and `ORIGIN/rows.csv`.
     pub origin: String,
     /// The manifest text.
     pub manifest: String,
@@ -83,8 +97,11 @@ pub fn merge(parts: &[ShardFiles]) -> Result<Merged, StudyError> {
     let mut seen: Vec<Option<String>> = Vec::new();
     let mut parsed = Vec::with_capacity(parts.len());
     for p in parts {
+        let mf = format!("{}/shard.json", p.origin);
+        check_json_duplicate_keys(&p.manifest)
+            .map_err(|e| err(&mf, format!("manifest is not valid JSON: {e}")))?;
         let v: Value = serde_json::from_str(&p.manifest)
-            .map_err(|e| err(&p.origin, format!("manifest is not valid JSON: {e}")))?;
+            .map_err(|e| err(&mf, format!("manifest is not valid JSON: {e}")))?;
         if v["format"] != SHARD_FORMAT {
             return Err(err(
                 &p.origin,
@@ -101,6 +118,37 @@ pub fn merge(parts: &[ShardFiles]) -> Result<Merged, StudyError> {
             .as_str()
             .ok_or_else(|| err(&p.origin, "manifest lacks `scenario`"))?;
         let shard = Shard::new(k, n).map_err(|e| err(&p.origin, e))?;
+        let declared = |key: &str| {
+            v[key]
+                .as_u64()
+                .ok_or_else(|| err(&mf, format!("manifest lacks `{key}`")))
+        };
+        let rows_total = declared("rows_total")?;
+        let rows_declared = declared("rows")?;
+        let sum = v["rows_fnv1a64"].as_str().ok_or_else(|| {
+            err(
+                &mf,
+                "manifest lacks `rows_fnv1a64` (the checksum of rows.csv; shards written before \
+                 it existed must be computed again)",
+            )
+        })?;
+        let actual = fnv1a64_hex(p.rows.as_bytes());
+        if actual != sum {
+            return Err(err(
+                &format!("{}/rows.csv", p.origin),
+                format!(
+                    "checksum {actual} differs from rows_fnv1a64 = {sum} in {mf}: the rows were \
+                     edited or corrupted after the shard run; compute the shard again"
+                ),
+            ));
+        }
+        let lines = p.rows.lines().count().saturating_sub(1) as u64;
+        if lines != rows_declared {
+            return Err(err(
+                &format!("{}/rows.csv", p.origin),
+                format!("holds {lines} rows but {mf} declares rows = {rows_declared}"),
+            ));
+        }
         match (&scenario_text, count) {
             (None, None) => {
                 scenario_text = Some(text.to_string());
@@ -124,7 +172,7 @@ pub fn merge(parts: &[ShardFiles]) -> Result<Merged, StudyError> {
             ));
         }
         seen[k - 1] = Some(p.origin.clone());
-        parsed.push((shard, p));
+        parsed.push((shard, p, rows_total, rows_declared));
     }
     if let Some(k) = seen.iter().position(Option::is_none) {
         return Err(StudyError::Merge(format!(
@@ -138,22 +186,45 @@ pub fn merge(parts: &[ShardFiles]) -> Result<Merged, StudyError> {
     let layout = Layout::of(&scenario);
     let total = layout.total();
     let mut rows: Vec<Option<Row>> = vec![None; total];
-    for (shard, p) in parsed {
+    for (shard, p, rows_total, rows_declared) in parsed {
+        let mf = format!("{}/shard.json", p.origin);
+        if rows_total != total as u64 {
+            return Err(err(
+                &mf,
+                format!("rows_total = {rows_total}, but its scenario has {total} rows"),
+            ));
+        }
+        let first = shard.index - 1;
+        let share = if total > first {
+            ((total - first).div_ceil(shard.count)) as u64
+        } else {
+            0
+        };
+        if rows_declared != share {
+            return Err(err(
+                &mf,
+                format!(
+                    "rows = {rows_declared}, but shard {}/{} of {total} rows has {share}",
+                    shard.index, shard.count
+                ),
+            ));
+        }
+        let rf = format!("{}/rows.csv", p.origin);
         let mut lines = p.rows.lines();
         let header = lines.next().unwrap_or("");
         if header.strip_prefix("row,") != Some(bounds_header(&scenario).as_str()) {
-            return Err(err(&p.origin, "rows file has the wrong header"));
+            return Err(err(&rf, "rows file has the wrong header"));
         }
         for line in lines {
             let (idx, rest) = line
                 .split_once(',')
-                .ok_or_else(|| err(&p.origin, "malformed row line"))?;
+                .ok_or_else(|| err(&rf, "malformed row line"))?;
             let idx: usize = idx
                 .parse()
-                .map_err(|_| err(&p.origin, format!("bad row index {idx:?}")))?;
+                .map_err(|_| err(&rf, format!("bad row index {idx:?}")))?;
             if idx >= total || !shard.contains(idx) {
                 return Err(err(
-                    &p.origin,
+                    &rf,
                     format!(
                         "row {idx} does not belong to shard {}/{}",
                         shard.index, shard.count
@@ -161,10 +232,9 @@ pub fn merge(parts: &[ShardFiles]) -> Result<Merged, StudyError> {
                 ));
             }
             if rows[idx].is_some() {
-                return Err(err(&p.origin, format!("row {idx} appears twice")));
+                return Err(err(&rf, format!("row {idx} appears twice")));
             }
-            rows[idx] =
-                Some(parse_bounds_line(&scenario, idx, rest).map_err(|e| err(&p.origin, e))?);
+            rows[idx] = Some(parse_bounds_line(&scenario, idx, rest).map_err(|e| err(&rf, e))?);
         }
     }
     let rows: Vec<Row> = rows

@@ -10,6 +10,7 @@ mod geometry;
 mod ground_motion;
 mod harden;
 mod harden_input;
+mod harden_io;
 mod impact;
 mod lcp;
 mod shapes;

@@ -536,10 +536,11 @@ fn sharded_and_merged_equals_unsharded() {
         let shard = Shard::new(k, n).unwrap();
         let rows = compute_rows(s, shard, &none).unwrap();
         assert!(rows.iter().all(|r| r.index % n == k - 1));
+        let csv = shard_rows_csv(s, &rows);
         parts.push(ShardFiles {
             origin: format!("shard{k}"),
-            manifest: manifest_json(shard, SMALL, s.row_count(), rows.len()),
-            rows: shard_rows_csv(s, &rows),
+            manifest: manifest_json(shard, SMALL, s.row_count(), rows.len(), &csv),
+            rows: csv,
         });
     }
     let merged = merge(&parts).unwrap();
@@ -556,8 +557,12 @@ fn sharded_and_merged_equals_unsharded() {
     let t = &mut truncated[1].rows;
     let cut = t.trim_end().rfind('\n').unwrap();
     t.truncate(cut + 1);
+    // (a truncated rows file no longer matches the checksum in its manifest)
     let err = merge(&truncated).unwrap_err().to_string();
-    assert!(err.contains("missing"), "{err}");
+    assert!(
+        err.contains("shard2/rows.csv") && err.contains("checksum"),
+        "{err}"
+    );
     assert!(Shard::parse("0/3").is_err());
     assert!(Shard::parse("4/3").is_err());
     assert_eq!(Shard::parse("2/3").unwrap(), Shard::new(2, 3).unwrap());
@@ -636,10 +641,11 @@ mod prop {
             for k in 1..=n {
                 let shard = Shard::new(k, n).unwrap();
                 let rows = compute_rows(&s, shard, &none).unwrap();
+                let csv = shard_rows_csv(&s, &rows);
                 parts.push(ShardFiles {
                     origin: format!("s{k}"),
-                    manifest: manifest_json(shard, &text, s.row_count(), rows.len()),
-                    rows: shard_rows_csv(&s, &rows),
+                    manifest: manifest_json(shard, &text, s.row_count(), rows.len(), &csv),
+                    rows: csv,
                 });
             }
             parts.rotate_left(rot % n);

@@ -411,6 +411,7 @@ figures = false
     for k in 1..=2 {
         let shard = Shard::new(k, 2).unwrap();
         let rows = compute_rows(&sc, shard, &none).unwrap();
+        let text = pounding::study::shard::shard_rows_csv(&sc, &rows);
         files.push(pounding::study::shard::ShardFiles {
             origin: format!("shard {k}"),
             manifest: pounding::study::shard::manifest_json(
@@ -418,8 +419,9 @@ figures = false
                 skew,
                 sc.row_count(),
                 rows.len(),
+                &text,
             ),
-            rows: pounding::study::shard::shard_rows_csv(&sc, &rows),
+            rows: text,
         });
     }
     let m = pounding::study::shard::merge(&files).unwrap();
