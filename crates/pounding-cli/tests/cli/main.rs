@@ -21,6 +21,7 @@ fn help_lists_subcommands() {
 
 mod batch;
 mod compare;
+mod golden;
 mod harden;
 mod lcp;
 mod shapes;
