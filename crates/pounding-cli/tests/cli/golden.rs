@@ -307,25 +307,112 @@ fn shorten(s: &str) -> String {
     }
 }
 
-/// The first differing line of two texts, with both versions.
+/// The first differing line of two texts, with both versions (around the first differing
+/// character when the line is long) and, for comma-separated lines, the column.
 fn first_diff(old: &[u8], new: &[u8]) -> String {
     let (a, b) = (lines_of(old), lines_of(new));
     for k in 0..a.len().max(b.len()) {
         let (x, y) = (a.get(k), b.get(k));
-        if x != y {
-            let show = |l: Option<&&[u8]>| match l {
-                Some(l) => shorten(String::from_utf8_lossy(l).trim_end_matches('\n')),
-                None => "<end of file>".to_owned(),
-            };
-            return format!(
-                "first difference at line {}:\n      golden: {}\n      now:    {}",
-                k + 1,
-                show(x),
-                show(y)
-            );
+        if x == y {
+            continue;
         }
+        let text = |l: Option<&&[u8]>| {
+            l.map(|l| String::from_utf8_lossy(l).trim_end_matches('\n').to_owned())
+        };
+        let (x, y) = (text(x), text(y));
+        // Character index of the first difference, and the field (column) it falls in.
+        let (xs, ys) = (x.as_deref().unwrap_or(""), y.as_deref().unwrap_or(""));
+        let at = xs
+            .chars()
+            .zip(ys.chars())
+            .take_while(|(p, q)| p == q)
+            .count();
+        let column = ys.chars().take(at).filter(|&c| c == ',').count() + 1;
+        let start = at.saturating_sub(60);
+        let show = |l: &Option<String>| match l {
+            None => "<end of file>".to_owned(),
+            Some(l) if start > 0 => {
+                format!("…{}", shorten(&l.chars().skip(start).collect::<String>()))
+            }
+            Some(l) => shorten(l),
+        };
+        let col = if ys.contains(',') || xs.contains(',') {
+            format!(", column {column}")
+        } else {
+            String::new()
+        };
+        return format!(
+            "first difference at line {}{col}, character {}:\n      golden: {}\n      now:    {}",
+            k + 1,
+            at + 1,
+            show(&x),
+            show(&y)
+        );
     }
     "identical lines".to_owned()
+}
+
+/// Tokens of a text: runs separated by whitespace, `,`, `:`, brackets, braces and quotes.
+fn tokens(text: &str) -> Vec<&str> {
+    text.split(|c: char| c.is_whitespace() || ",:[]{}\"".contains(c))
+        .filter(|t| !t.is_empty())
+        .collect()
+}
+
+/// Compares two texts number by number: when they have the same tokens except for numbers, the
+/// largest absolute and relative difference of those numbers (how far a change is from rounding);
+/// otherwise the first token that differs in kind.
+fn numeric_diff(old: &[u8], new: &[u8]) -> String {
+    let (a, b) = (String::from_utf8_lossy(old), String::from_utf8_lossy(new));
+    let (ta, tb) = (tokens(&a), tokens(&b));
+    if ta.len() != tb.len() {
+        return format!(
+            "not a numbers-only change: {} tokens, golden {}",
+            tb.len(),
+            ta.len()
+        );
+    }
+    let (mut n, mut changed, mut abs, mut rel) = (0usize, 0usize, 0.0f64, 0.0f64);
+    for (x, y) in ta.iter().zip(&tb) {
+        match (x.parse::<f64>(), y.parse::<f64>()) {
+            (Ok(u), Ok(v)) => {
+                n += 1;
+                if u.to_bits() != v.to_bits() && !(u.is_nan() && v.is_nan()) {
+                    changed += 1;
+                    let d = (u - v).abs();
+                    abs = abs.max(d);
+                    rel = rel.max(d / u.abs().max(v.abs()).max(f64::MIN_POSITIVE));
+                }
+            }
+            _ if x == y => {}
+            _ => return format!("not a numbers-only change: token {y:?}, golden {x:?}"),
+        }
+    }
+    format!(
+        "numbers only: {changed} of {n} numbers differ, max |Δ| = {abs:e}, max relative Δ = {rel:e}"
+    )
+}
+
+/// `POUNDING_GOLDEN_DUMP=DIR`: also write each case's outputs to `DIR/<case>/` (e.g. from the
+/// commit before a refactor, to compare with `POUNDING_GOLDEN_REFERENCE`).
+fn dump(case: &Case, files: &BTreeMap<String, Vec<u8>>) {
+    let Some(dir) = std::env::var_os("POUNDING_GOLDEN_DUMP") else {
+        return;
+    };
+    let dir = PathBuf::from(dir).join(case.name);
+    let _ = std::fs::remove_dir_all(&dir);
+    for (path, bytes) in files {
+        let p = dir.join(path);
+        std::fs::create_dir_all(p.parent().unwrap()).unwrap();
+        std::fs::write(p, bytes).unwrap();
+    }
+}
+
+/// `POUNDING_GOLDEN_REFERENCE=DIR` (a `POUNDING_GOLDEN_DUMP` of an earlier build): the full copy
+/// of a file the manifest stores only as hashes.
+fn reference_copy(case: &Case, path: &str) -> Option<Vec<u8>> {
+    let dir = std::env::var_os("POUNDING_GOLDEN_REFERENCE")?;
+    std::fs::read(PathBuf::from(dir).join(case.name).join(path)).ok()
 }
 
 /// Compares one variant's files with the manifest; returns the problems found.
@@ -358,12 +445,16 @@ fn compare_files(
                 continue;
             };
             if old != *bytes {
-                errs.push(format!(
+                let mut msg = format!(
                     "{path}: {} bytes, golden {} bytes; {}",
                     bytes.len(),
                     old.len(),
                     first_diff(&old, bytes)
-                ));
+                );
+                if is_text(&old) {
+                    write!(msg, "\n    {}", numeric_diff(&old, bytes)).unwrap();
+                }
+                errs.push(msg);
             }
         } else if g.size != now.size || g.hash != now.hash {
             let mut msg = format!(
@@ -391,6 +482,22 @@ fn compare_files(
                 }
             } else if !is_text(bytes) {
                 msg.push_str(" (binary file)");
+            }
+            match reference_copy(case, path) {
+                Some(old) if is_text(bytes) => {
+                    write!(
+                        msg,
+                        "\n    against POUNDING_GOLDEN_REFERENCE: {}\n    {}",
+                        first_diff(&old, bytes),
+                        numeric_diff(&old, bytes)
+                    )
+                    .unwrap();
+                }
+                _ if is_text(bytes) => msg.push_str(
+                    "\n    (to see the lines and the size of the change: POUNDING_GOLDEN_DUMP=DIR \
+                     with the old build, then POUNDING_GOLDEN_REFERENCE=DIR with the new one)",
+                ),
+                _ => {}
             }
             errs.push(msg);
         }
@@ -430,8 +537,11 @@ fn check(cases: &[Case]) {
             ));
             continue;
         }
-        for variant in variants {
+        for (k, variant) in variants.iter().enumerate() {
             let (code, files) = run(case, variant);
+            if k == 0 {
+                dump(case, &files);
+            }
             let errs = compare_files(case, &manifest, code, &files);
             if !errs.is_empty() {
                 let mut msg = format!(
