@@ -17,7 +17,7 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-/// Files at most this large that are valid UTF-8 text are stored in full.
+/// Valid UTF-8 text files smaller than this are stored in full.
 const FULL_LIMIT: usize = 20_000;
 /// Lines per block hash of a large text file.
 const BLOCK_LINES: usize = 100;
