@@ -38,6 +38,7 @@ fn help_lists_subcommands() {
 
 mod batch;
 mod compare;
+mod golden;
 mod harden;
 mod harden_input;
 mod harden_io;
