@@ -23,6 +23,7 @@ mod batch;
 mod compare;
 mod harden;
 mod lcp;
+mod physics_check;
 mod shapes;
 mod simulate;
 mod study;
