@@ -11,6 +11,7 @@ mod ground_motion;
 mod harden;
 mod impact;
 mod lcp;
+mod lemke_degenerate;
 mod physics_check;
 mod shapes;
 mod sim;
