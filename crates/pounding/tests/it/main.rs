@@ -15,6 +15,7 @@ mod lemke_degenerate;
 mod physics_check;
 mod shapes;
 mod sim;
+mod sim_bearings;
 mod sim_compliance;
 mod sim_shapes;
 mod study;
