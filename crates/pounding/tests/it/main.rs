@@ -17,6 +17,7 @@ mod shapes;
 mod sim;
 mod sim_bearings;
 mod sim_compliance;
+mod sim_friction;
 mod sim_shapes;
 mod study;
 mod study_shapes;
