@@ -18,7 +18,10 @@
 //! `τ = `[`LAW_TOLERANCE`] is relative: `s_k` is the rounding scale of the recovered velocity `k`,
 //! the sum of the magnitudes of the terms it was computed from (for body velocities
 //! `s_k = Σ_d |W_dk| (|u⁻_d| + Σ_j |M⁻¹_d W_dj Λ_j|)`, in contact space
-//! `s_k = |γ_k⁻| + Σ_j |G_kj Λ_j|`). The impulse tolerance `t_k = τ max(‖Λ‖∞, s_k / G_kk)` is
+//! `s_k = |γ_k⁻| + Σ_j |G_kj Λ_j|`), plus the pre-impact velocity scale `V = max_k |γ_k⁻|` (so
+//! the laws hold to `τ` of the impact's own velocities: the split `Λ_T = Λ_TR − μΛ_N` loses
+//! `≈ 1e-16 μΛ_N` to rounding, whose effect `G_TT·1e-16 μΛ_N` is negligible against `V` unless `G`
+//! is ill-conditioned). The impulse tolerance `t_k = τ max(‖Λ‖∞, s_k / G_kk)` is
 //! relative to the largest impulse or, when every impulse is rounding noise, to the impulse whose
 //! effect on velocity `k` is of the order of that velocity's rounding. Every check compares
 //! quantities of one unit, so scaling all masses (or lengths, or velocities) by any factor changes
@@ -122,7 +125,8 @@ impl fmt::Display for LawViolation {
 /// Checks the Newton and Coulomb laws of `n = laws.len()` contacts on recovered post-impact
 /// velocities (module documentation). Slices have length `2n` (blocks `[N…, T…]`):
 /// `gamma_pre` (the `γ⁻` of the Newton law), `lambda` (`Λ_N`, `Λ_T`), `gamma_post` (recovered
-/// `γ⁺`), `scale` (their rounding scales `s_k`) and `g_diag` (the Delassus diagonal `G_kk > 0`).
+/// `γ⁺`), `scale` (their rounding scales `s_k`, without `V`, which is added here) and `g_diag`
+/// (the Delassus diagonal `G_kk > 0`).
 pub fn check_laws(
     laws: &[ImpactLaw],
     gamma_pre: &[Real],
@@ -135,9 +139,13 @@ pub fn check_laws(
     let lmax = lambda[..2 * n]
         .iter()
         .fold(0.0, |m: Real, &x| m.max(x.abs()));
+    let vmax = gamma_pre[..2 * n]
+        .iter()
+        .fold(0.0, |m: Real, &x| m.max(x.abs()));
+    let sc = |k: usize| scale[k] + vmax;
     let tol_impulse = |k: usize| {
         let by_velocity = if g_diag[k] > 0.0 {
-            scale[k] / g_diag[k]
+            sc(k) / g_diag[k]
         } else {
             0.0
         };
@@ -147,7 +155,7 @@ pub fn check_laws(
         let (tn, tt) = (tol_impulse(i), tol_impulse(n + i));
         let (ln, lt) = (lambda[i], lambda[n + i]);
         let (gnp, gtp) = (gamma_post[i], gamma_post[n + i]);
-        let (sn, st) = (scale[i], scale[n + i]);
+        let (sn, st) = (sc(i), sc(n + i));
         if ![ln, lt, gnp, gtp, sn, st, gamma_pre[i]]
             .iter()
             .all(|x| x.is_finite())

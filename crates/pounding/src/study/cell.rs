@@ -183,7 +183,8 @@ pub fn test_ratios(lower: Real, upper: Real) -> Vec<Real> {
 ///
 /// `M = [[G_NN − μG_NT, G_NT, 0], [G_NT − μG_TT, G_TT, 1], [2μ, −1, 0]]`,
 /// `q = ((1+ε_N)γ_N⁻, γ_T⁻, 0)`, unknowns `z = (Λ_N, Λ_TR, γ_TL)`, `w = (ξ_N, γ_TR, Λ_TL)`,
-/// `γ_T⁺ = γ_TR − γ_TL`; stick iff `|γ_T⁺| ≤ 1e-9·n` with `n = −γ_N⁻ = 1` (spec §10), outward slip
+/// `γ_T⁺ = γ_T⁻ + G_TN Λ_N + G_TT Λ_T` recovered from `Λ_T = Λ_TR − μΛ_N` (equal to
+/// `γ_TR − γ_TL` up to rounding for a well-conditioned `G`); stick iff `|γ_T⁺| ≤ 1e-9·n` with `n = −γ_N⁻ = 1` (spec §10), outward slip
 /// iff `γ_T⁺ > 0`, inward slip iff `γ_T⁺ < 0`.
 ///
 /// The LCP is solved with `G/G_NN` (entries `1, κ, ϱ`): scaling `G` by `c` maps a solution
@@ -221,7 +222,9 @@ pub fn lcp_mode(g: &Delassus, law: &ImpactLaw, ratio: Real) -> Option<SlipMode> 
         &[nn, tt],
     )
     .ok()?;
-    let gamma_t_post = sol.w[1] - sol.z[2];
+    // classify on the recovered velocity (what the check verified), not on the LCP's own
+    // γ_TR − γ_TL, which can disagree with it for an ill-conditioned G
+    let gamma_t_post = post[1];
     let n = -gamma_n;
     Some(if gamma_t_post.abs() <= 1e-9 * n {
         SlipMode::Stick
