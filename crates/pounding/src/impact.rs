@@ -505,7 +505,9 @@ impl Assembled {
             .map(|d| (self.u[d].abs() + u_post[d].abs()) * a[d] / self.minv[d])
             .sum();
         let gain = e1 - e0;
-        if !(gain <= bound + LAW_TOLERANCE * (bscale + escale)) {
+        let allowed = bound + LAW_TOLERANCE * (bscale + escale);
+        // NaN (from any operand) fails too
+        if gain.is_nan() || allowed.is_nan() || gain > allowed {
             return Err(LawViolation::EnergyCreated { gain, bound });
         }
         Ok(())

@@ -778,7 +778,7 @@ fn ratio_case(case: u8, l: f64, u: f64, fallback: f64) -> f64 {
 proptest! {
     // Deterministic (fixed seed, nothing persisted to the tracked regressions file); the filter
     // `resolvable` was validated on 3.6e7 random-seed cases without a failure.
-    #![proptest_config(ProptestConfig { cases: 2000, max_global_rejects: 20000, failure_persistence: None, rng_seed: proptest::test_runner::RngSeed::Fixed(0x5eed_15), ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 2000, max_global_rejects: 20000, failure_persistence: None, rng_seed: proptest::test_runner::RngSeed::Fixed(0x005e_ed15), ..ProptestConfig::default() })]
 
     /// impact3 with `G` scaled by `10^k`, `k ∈ [−9, 5]` (bridge decks: `k ≈ −6`; known limit: in the
     /// Painlevé regime with `k ≥ 6` Lemke and enumeration can both fail verification — see README), μ, ε ∈ [0, 1], `r` just outside / inside

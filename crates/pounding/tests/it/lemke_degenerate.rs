@@ -10,6 +10,7 @@
 //! counted like [`pounding::lcp::LcpSolution::pivots`] (including the pivots in which `z₀` enters
 //! and leaves). Every fixture has ties in its ratio tests, so the tie rule is exercised, and one
 //! of them cycles forever under a naive (first-index) tie rule.
+#![allow(clippy::needless_range_loop)]
 
 use pounding::lcp::{LcpProblem, LcpStatus, Lemke, LemkeSettings, solve_fixed};
 
@@ -203,8 +204,11 @@ fn exact_lemke(m: &[Vec<i128>], q: &[i128], rule: Ties, max_pivots: usize) -> Ex
     }
 }
 
+/// A fixture: name, integer `M` (rows), integer `q`.
+type Fixture = (&'static str, Vec<Vec<i128>>, Vec<i128>);
+
 /// Degenerate fixtures `(name, M, q)`.
-fn fixtures() -> Vec<(&'static str, Vec<Vec<i128>>, Vec<i128>)> {
+fn fixtures() -> Vec<Fixture> {
     vec![
         // Murty's cyclic matrix with equal q: ties in the initial row and in the ratio tests
         (
