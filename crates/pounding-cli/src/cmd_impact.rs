@@ -9,8 +9,8 @@ use pounding::geometry::{
     SigmaMode, validate_rotation,
 };
 use pounding::impact::{
-    self, ContactMode, ContactSpec, ImpactProblem, ImpactSettings, ImpactSolution, ImpactStatus,
-    RigidBody, SingleSolution,
+    self, ContactMode, ContactSpec, ImpactProblem, ImpactSettings, ImpactSolution, RigidBody,
+    SingleSolution,
 };
 use pounding::lcp::LemkeSettings;
 use pounding::math::Vector;
@@ -354,7 +354,7 @@ fn run_bridge(a: &ImpactArgs) -> Result<ExitCode> {
             );
             out.insert("painleve".into(), json!(b.painleve));
             if let Some((r, sol)) = &b.solved {
-                failed = sol.status == ImpactStatus::Failed;
+                failed = !sol.status.is_trustworthy();
                 out.insert("ratio".into(), json_float(*r));
                 out.insert("mode".into(), json!(bridge_label(sol.mode)));
                 out.insert(
@@ -738,6 +738,9 @@ fn run_generic(path: &std::path::Path, as_json: bool) -> Result<ExitCode> {
             fmt(s.energy_before),
             fmt(s.energy_after)
         );
+        if let Some(v) = &s.law_violation {
+            println!("  post-solve check failed (numbers not trustworthy): {v}");
+        }
         if s.enumerated {
             println!(
                 "  enumeration: {} distinct solution(s); post-impact velocities {}",
@@ -755,7 +758,7 @@ fn run_generic(path: &std::path::Path, as_json: bool) -> Result<ExitCode> {
             );
         }
     }
-    Ok(if s.status == ImpactStatus::Failed {
+    Ok(if !s.status.is_trustworthy() {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS
@@ -1042,7 +1045,7 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
             "longitudinal".into(),
             json!({"ratio": json_float(long_ratio), "mode": long.mode.name(), "status": long.status.name()}),
         );
-        failed |= long.status == ImpactStatus::Failed;
+        failed |= !long.status.is_trustworthy();
         lines.push(format!(
             "Corner {} ({}) alone: arms r×n = {} m, r×t = {} m",
             k,
@@ -1070,7 +1073,7 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
         ));
         if let Some(r) = a.ratio {
             let sol = impact::solve_single(&g, &law, -1.0, -r, &LemkeSettings::default());
-            failed |= sol.status == ImpactStatus::Failed;
+            failed |= !sol.status.is_trustworthy();
             out.insert("ratio".into(), json_float(r));
             out.insert("mode".into(), json!(sol.mode.name()));
             out.insert(
@@ -1104,7 +1107,7 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
     } else {
         let problem = abutment_problem(&shape, DeckEnd::Far, &[0, 1], speed * axis, 0.0, &law)?;
         let s = impact::solve(&problem, &ImpactSettings::default());
-        failed |= s.status == ImpactStatus::Failed;
+        failed |= !s.status.is_trustworthy();
         let pivot = frictionless_pivot(&shape, DeckEnd::Far);
         let omega = s.bodies[0].omega;
         // relative threshold: ω against the characteristic rate |v⁻|/ℓ of the approach, with ℓ the
@@ -1360,7 +1363,7 @@ fn run_joint(a: &ImpactArgs, deck1: &DeckShape) -> Result<ExitCode> {
             fmt(s.energy_after)
         );
     }
-    Ok(if s.status == ImpactStatus::Failed {
+    Ok(if !s.status.is_trustworthy() {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS

@@ -4,7 +4,8 @@
 //!
 //! A record that cannot be read is reported in its rows (`status = error`, `error` = the message
 //! naming the file) and in the final message; every other run is still done and written, and the
-//! exit code is 1.
+//! exit code is 1. A run that ends with a status other than `Completed` (e.g. `Diverged`) is
+//! written and also makes the exit code 1.
 
 use super::sim_plots::{self, BatchCurve};
 use super::{Args, DEG};
@@ -14,7 +15,7 @@ use pounding::ground_motion::{AccelUnits, G0, Record};
 use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
 use pounding::sim::batch::{BatchRecord, BatchRow, BatchShard, run_batch};
-use pounding::sim::{SEAT_ENDS, SimProblem, SimSettings};
+use pounding::sim::{SEAT_ENDS, SimProblem, SimSettings, SimStatus};
 use serde_json::json;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -250,8 +251,26 @@ pub fn run(
         failed.len(),
         out.display()
     );
+    // runs that finished but are not trustworthy (diverged, LCP/law-check or Newton failures)
+    let untrusted: Vec<(&BatchRow, SimStatus)> = rows
+        .iter()
+        .filter_map(|r| r.outcome.as_ref().ok().map(|o| (r, o.status)))
+        .filter(|(_, st)| *st != SimStatus::Completed)
+        .collect();
+    if let Some((_, st)) = untrusted.first() {
+        eprintln!(
+            "error: {} of {} runs ended with a status other than Completed (first: {:?}); their rows in              batch.csv are not trustworthy",
+            untrusted.len(),
+            rows.len(),
+            st
+        );
+    }
     if failed.is_empty() {
-        return Ok(ExitCode::SUCCESS);
+        return Ok(if untrusted.is_empty() {
+            ExitCode::SUCCESS
+        } else {
+            ExitCode::from(1)
+        });
     }
     // One message per distinct error (an unreadable record fails all its scales alike).
     let mut msgs: Vec<&str> = failed

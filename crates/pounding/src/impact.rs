@@ -38,9 +38,19 @@
 //! and two contacts); on a secondary ray (or another Lemke failure) the complementary bases are
 //! enumerated, and for one contact the analytic solution of spec §9 is the last resort
 //! ([`ImpactStatus::SolvedByFallback`]).
+//!
+//! # Post-solve checks
+//!
+//! Every solution is checked on the recovered body velocities ([`crate::law_check`]): Newton's
+//! law, the Coulomb cone and the sliding direction at every contact, and the kinetic energy
+//! `T⁺ − T⁻` against the provable Newton–Coulomb bound `½ Σ_i (c_i Λ_N,i + γ_T,i⁻ Λ_T,i)`. A
+//! solution that fails (e.g. a body with a tiny moment of inertia, where the LCP's split variables
+//! lose the tangential impulse to rounding) is reported as [`ImpactStatus::IllConditioned`] with
+//! the violated law in [`ImpactSolution::law_violation`]; its numbers are not trustworthy.
 
 use crate::analytic::{self, ImpactLaw};
 use crate::contact::Delassus;
+use crate::law_check::{self, LAW_TOLERANCE, LawViolation};
 use crate::lcp::{self, LcpProblem, LcpStatus, LemkeSettings};
 use crate::math::{Real, Vector, cross, perp};
 use thiserror::Error;
@@ -267,17 +277,29 @@ pub enum ImpactStatus {
     NoImpact,
     /// No solution was found (numbers are NaN).
     Failed,
+    /// A solution of the LCP was found, but the recovered post-impact velocities violate the
+    /// impact laws or create energy beyond the Newton–Coulomb bound ([`crate::law_check`]): the
+    /// problem is too ill-conditioned for the LCP formulation in double precision (e.g. a moment
+    /// of inertia many orders of magnitude below `m r²`). The numbers are reported but not
+    /// trustworthy.
+    IllConditioned,
 }
 
 impl ImpactStatus {
-    /// Output name: `solved`, `solved-by-fallback`, `no-impact`, `failed`.
+    /// Output name: `solved`, `solved-by-fallback`, `no-impact`, `failed`, `ill-conditioned`.
     pub fn name(self) -> &'static str {
         match self {
             Self::Solved => "solved",
             Self::SolvedByFallback => "solved-by-fallback",
             Self::NoImpact => "no-impact",
             Self::Failed => "failed",
+            Self::IllConditioned => "ill-conditioned",
         }
+    }
+    /// `false` for [`ImpactStatus::Failed`] and [`ImpactStatus::IllConditioned`] (a run reporting
+    /// such an impact must not exit successfully).
+    pub fn is_trustworthy(self) -> bool {
+        !matches!(self, Self::Failed | Self::IllConditioned)
     }
 }
 
@@ -358,6 +380,9 @@ pub struct ImpactSolution {
     /// All enumerated solutions give the same post-impact velocities (`true` when enumeration did
     /// not run). With `solutions > 1` and this `true`, only the split of the impulses is non-unique.
     pub post_velocity_unique: bool,
+    /// The law the recovered velocities violate when `status` is
+    /// [`ImpactStatus::IllConditioned`], else `None`.
+    pub law_violation: Option<LawViolation>,
 }
 
 /// Internal dense representation: `W` (3B × 2n, column-major by contact column), `M⁻¹` diag, `u⁻`.
@@ -437,6 +462,55 @@ impl Assembled {
             .zip(&self.minv)
             .map(|(v, mi)| 0.5 * v * v / mi)
             .sum()
+    }
+    /// Post-solve checks ([`crate::law_check`]) on the recovered velocities `u⁺` (`gamma_post =
+    /// Wᵀu⁺`): the contact laws with the rounding scales `s_k = Σ_d |W_dk| a_d`,
+    /// `a_d = |u⁻_d| + Σ_j |M⁻¹_d W_dj Λ_j|`, then `T⁺ − T⁻ ≤ bound + τ (|bound terms| +
+    /// Σ_d m_d (|u⁻_d| + |u⁺_d|) a_d)`.
+    #[allow(clippy::too_many_arguments)]
+    fn check(
+        &self,
+        laws: &[ImpactLaw],
+        gamma_pre: &[Real],
+        lambda: &[Real],
+        u_post: &[Real],
+        gamma_post: &[Real],
+        e0: Real,
+        e1: Real,
+    ) -> Result<(), LawViolation> {
+        let a: Vec<Real> = (0..self.u.len())
+            .map(|d| {
+                self.u[d].abs()
+                    + self
+                        .w
+                        .iter()
+                        .zip(lambda)
+                        .map(|(c, l)| (self.minv[d] * c[d] * l).abs())
+                        .sum::<Real>()
+            })
+            .collect();
+        let scale: Vec<Real> = self
+            .w
+            .iter()
+            .map(|c| c.iter().zip(&a).map(|(w, a)| w.abs() * a).sum())
+            .collect();
+        let diag: Vec<Real> = self
+            .w
+            .iter()
+            .map(|c| c.iter().zip(&self.minv).map(|(w, m)| w * w * m).sum())
+            .collect();
+        law_check::check_laws(laws, gamma_pre, lambda, gamma_post, &scale, &diag)?;
+        let (bound, bscale) = law_check::energy_bound(laws, gamma_pre, lambda);
+        let escale: Real = (0..self.u.len())
+            .map(|d| (self.u[d].abs() + u_post[d].abs()) * a[d] / self.minv[d])
+            .sum();
+        let gain = e1 - e0;
+        let allowed = bound + LAW_TOLERANCE * (bscale + escale);
+        // NaN (from any operand) fails too
+        if gain.is_nan() || allowed.is_nan() || gain > allowed {
+            return Err(LawViolation::EnergyCreated { gain, bound });
+        }
+        Ok(())
     }
 }
 
@@ -561,16 +635,40 @@ pub fn solve(problem: &ImpactProblem, settings: &ImpactSettings) -> ImpactSoluti
                 omega: u[3 * b + 2],
             })
             .collect();
+        let energy_after = asm.energy(&u);
+        let law_violation = if matches!(
+            status,
+            ImpactStatus::Solved | ImpactStatus::SolvedByFallback
+        ) {
+            asm.check(
+                &laws,
+                &gamma_pre,
+                &lambda,
+                &u,
+                &gamma_post,
+                e0,
+                energy_after,
+            )
+            .err()
+        } else {
+            None
+        };
+        let status = if law_violation.is_some() {
+            ImpactStatus::IllConditioned
+        } else {
+            status
+        };
         ImpactSolution {
             status,
             lemke_status,
             contacts,
             bodies,
             energy_before: e0,
-            energy_after: asm.energy(&u),
+            energy_after,
             solutions,
             enumerated,
             post_velocity_unique: unique,
+            law_violation,
         }
     };
     if gamma_pre[..n].iter().all(|&g| g >= 0.0) {
@@ -731,6 +829,8 @@ pub struct SingleSolution {
     pub gamma_t_post: Real,
     /// Mode (`Open` only for no impact).
     pub mode: ContactMode,
+    /// The law `γ⁺` violates when `status` is [`ImpactStatus::IllConditioned`], else `None`.
+    pub law_violation: Option<LawViolation>,
 }
 
 impl SingleSolution {
@@ -745,6 +845,8 @@ impl SingleSolution {
 /// [`lcp::solve_fixed::<3>`](crate::lcp::solve_fixed), with the analytic solution (spec §9) as the
 /// fallback on a Lemke failure. `γ⁺ = γ⁻ + G Λ`; the mode is classified with
 /// `|γ_T⁺| ≤ 1e−9 |γ_N⁻|` as stick (spec §10); `SlipPositive` is the bridge label `slip-outward`.
+/// The result is checked against the impact laws ([`crate::law_check`], contact space, rounding
+/// scales `s_k = |γ_k⁻| + Σ_j |G_kj Λ_j|`); a violation gives [`ImpactStatus::IllConditioned`].
 #[inline]
 pub fn solve_single(
     g: &Delassus,
@@ -762,6 +864,7 @@ pub fn solve_single(
             gamma_n_post: Real::NAN,
             gamma_t_post: Real::NAN,
             mode: ContactMode::Open,
+            law_violation: None,
         };
     }
     if gamma_n_pre >= 0.0 {
@@ -773,6 +876,7 @@ pub fn solve_single(
             gamma_n_post: gamma_n_pre,
             gamma_t_post: gamma_t_pre,
             mode: ContactMode::Open,
+            law_violation: None,
         };
     }
     let mu = law.mu();
@@ -805,8 +909,30 @@ pub fn solve_single(
             gamma_n_post: Real::NAN,
             gamma_t_post: Real::NAN,
             mode: ContactMode::Open,
+            law_violation: None,
         };
     }
+    // post-solve check (crate::law_check) in contact space
+    let lambda = [ln, lt];
+    let post = [gnp, gtp];
+    let scale = [
+        gamma_n_pre.abs() + (g.nn * ln).abs() + (g.nt * lt).abs(),
+        gamma_t_pre.abs() + (g.nt * ln).abs() + (g.tt * lt).abs(),
+    ];
+    let law_violation = law_check::check_laws(
+        std::slice::from_ref(law),
+        &[gamma_n_pre, gamma_t_pre],
+        &lambda,
+        &post,
+        &scale,
+        &[g.nn, g.tt],
+    )
+    .err();
+    let status = if law_violation.is_some() {
+        ImpactStatus::IllConditioned
+    } else {
+        status
+    };
     let n = -gamma_n_pre;
     let mode = if gtp.abs() <= analytic::STICK_TOLERANCE * n {
         ContactMode::Stick
@@ -823,5 +949,6 @@ pub fn solve_single(
         gamma_n_post: gnp,
         gamma_t_post: gtp,
         mode,
+        law_violation,
     }
 }

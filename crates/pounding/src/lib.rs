@@ -15,6 +15,8 @@
 //!   calibrations, a two-mass collision integrator and joint sharing (used by `sim` for compliance runs).
 //! * [`analytic`] — the closed-form single-impact solution: stick interval `[L, U]`, modes, impulses (§9–§11).
 //! * [`impact`] — the generic multi-contact frictional impact of planar rigid bodies, solved as an LCP (§8).
+//! * [`law_check`] — post-solve physics checks: the impact laws and the energy bound verified on the
+//!   recovered post-impact velocities.
 //! * [`shape`] — straight and skewed decks beside the curved one (mass properties, end faces, corners in
 //!   one body frame) and corner impacts against a rigid abutment.
 //! * [`pair`] — the joint-anchored impact configuration and Delassus matrix of two decks of any shape.
@@ -38,6 +40,7 @@ pub mod geometry;
 pub mod ground_motion;
 pub mod impact;
 pub mod input;
+pub mod law_check;
 pub mod lcp;
 pub mod math;
 pub mod output;

@@ -43,6 +43,7 @@ mod harden;
 mod harden_input;
 mod harden_io;
 mod lcp;
+mod physics_check;
 mod shapes;
 mod simulate;
 mod study;

@@ -60,7 +60,7 @@
 use super::contact::{Pose, candidates};
 use super::{
     ComplianceContact, Energy, History, ImpactRecord, SimContact, SimError, SimProblem,
-    SimSettings, SimSolution, SimStatus, SimSummary,
+    SimSettings, SimSolution, SimStatus, SimSummary, balance_error, energies_finite, max_nan,
 };
 use crate::analytic::SlipMode;
 use crate::contact_law::sharing::JointLaw;
@@ -435,8 +435,8 @@ pub(crate) fn simulate_compliance(
         peak_force = peak_force.max(f_joint);
         let (tk, vk) = energy_of(&q, &u);
         let bal = e0 + w_in - (tk + vk + d_visc + d_cont);
-        max_bal = max_bal.max(bal.abs());
-        max_in = max_in.max((e0 + w_in).abs());
+        max_bal = max_nan(max_bal, bal.abs());
+        max_in = max_nan(max_in, (e0 + w_in).abs());
         if k % settings.history_stride == 0 || k == n_steps {
             hist.t.push(t);
             hist.q.push(qa);
@@ -453,6 +453,10 @@ pub(crate) fn simulate_compliance(
             });
             hist.contact_force.push([ends[0].f_n, ends[1].f_n]);
             hist.abutment_gaps.push([Real::NAN; 2]);
+        }
+        if !energies_finite(&[tk, vk, w_in, d_visc, d_cont, e0]) {
+            status = SimStatus::Diverged;
+            break;
         }
         if k == n_steps {
             break;
@@ -672,7 +676,7 @@ pub(crate) fn simulate_compliance(
         unseating_time: unseat.map(|u| u.0),
         unseated_end: unseat.map(|u| u.1),
         max_penetration: max_pen,
-        energy_balance_error: if max_in > 0.0 { max_bal / max_in } else { 0.0 },
+        energy_balance_error: balance_error(max_bal, max_in),
         final_energy: Energy {
             input: w_in,
             kinetic: tf,

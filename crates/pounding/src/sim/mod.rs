@@ -57,9 +57,10 @@ pub mod contact;
 pub mod model;
 pub mod options;
 
-use crate::analytic::SlipMode;
+use crate::analytic::{ImpactLaw, SlipMode};
 use crate::geometry::{ContactCase, GeometryError, SArrangement};
 use crate::ground_motion::{GroundMotion, GroundMotionError};
+use crate::law_check;
 use crate::lcp::{self, LcpStatus, LemkeSettings};
 use crate::math::{Real, Vector, cross};
 use crate::shape::{DeckShape, SkewedDeck, StraightDeck};
@@ -767,10 +768,11 @@ pub struct SimSummary {
 pub enum SimStatus {
     /// All steps done, every contact LCP solved.
     Completed,
-    /// All steps done, but some contact LCPs were not solved by Lemke nor by enumeration; in those
-    /// steps the frictionless LCP was used (see [`SimSolution::lcp_failures`]).
+    /// All steps done, but some contact LCPs were not solved by Lemke nor by enumeration (in those
+    /// steps the frictionless LCP was used), or a solution failed the post-solve checks of the
+    /// impact laws on the recovered velocities (see [`SimSolution::lcp_failures`]).
     CompletedWithLcpFailures,
-    /// The state became non-finite; the run stopped.
+    /// The state or an energy of the bookkeeping became non-finite; the run stopped.
     Diverged,
     /// All steps done with a compliance law, but the Newton iteration on the contact forces
     /// did not converge in some steps (see [`SimSolution::newton_failures`]).
@@ -796,7 +798,9 @@ pub struct SimSolution {
     pub lcp_solves: usize,
     /// LCP solves where Lemke failed but enumeration succeeded.
     pub lcp_enumeration_fallbacks: usize,
-    /// LCP solves where both failed.
+    /// LCP solves where both failed, plus solves whose solution failed the post-solve checks
+    /// ([`crate::law_check::check_laws`] on `γ_{k+1} = Wᵀ u_{k+1}`: Newton, Coulomb cone and
+    /// sliding direction at every active contact).
     pub lcp_failures: usize,
     /// Natural frequencies of each deck \[rad/s\].
     pub frequencies: [[Real; 3]; 2],
@@ -810,6 +814,38 @@ pub struct SimSolution {
     /// Compliance laws: steps solved by the graph closure of a force jump at contact onset
     /// (Kelvin's dashpot; [`compliance`] module doc).
     pub closure_steps: usize,
+}
+
+/// `a.max(b)` that propagates NaN (`f64::max` drops it, which once made a NaN energy balance
+/// read as 0).
+#[inline]
+pub(crate) fn max_nan(a: Real, b: Real) -> Real {
+    if a.is_nan() || b.is_nan() {
+        Real::NAN
+    } else {
+        a.max(b)
+    }
+}
+
+/// [`SimSummary::energy_balance_error`] from `max |balance|` and `max |E_0 + W_in|`: NaN when
+/// either is NaN (never 0), `0` only for an exact balance of a run without energy.
+pub(crate) fn balance_error(max_bal: Real, max_in: Real) -> Real {
+    if max_bal.is_nan() || max_in.is_nan() {
+        Real::NAN
+    } else if max_in > 0.0 {
+        max_bal / max_in
+    } else if max_bal == 0.0 {
+        0.0
+    } else {
+        Real::INFINITY
+    }
+}
+
+/// All energies of the bookkeeping finite (a run whose energies overflow has diverged even when
+/// the state itself is still finite, e.g. under a ground motion of 1e300 g).
+#[inline]
+pub(crate) fn energies_finite(e: &[Real]) -> bool {
+    e.iter().all(|x| x.is_finite())
 }
 
 /// Most contacts at once: two at the joint, two at each abutment.
@@ -953,6 +989,13 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
     let mut peak_abut: [Option<Real>; 2] = [None, None];
     let mut n_abut_contacts = 0usize;
     let (mu, eps) = (model.friction, model.restitution);
+    let law = ImpactLaw::new(mu, eps).map_err(|e| match e {
+        crate::analytic::LawError::Friction(v) => SimError::invalid("friction", v, "must be >= 0"),
+        crate::analytic::LawError::Restitution(v) => {
+            SimError::invalid("restitution", v, "must lie in [0, 1]")
+        }
+    })?;
+    let laws = [law; MAX_CONTACTS];
     let g0 = model.gap;
 
     let mut q = Vector6::from(problem.q0);
@@ -1034,8 +1077,8 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
         }
         let (tk, vk) = energy_of(&q, &u);
         let bal = e0 + w_in - (tk + vk + d_visc + d_cont);
-        max_bal = max_bal.max(bal.abs());
-        max_in = max_in.max((e0 + w_in).abs());
+        max_bal = max_nan(max_bal, bal.abs());
+        max_in = max_nan(max_in, (e0 + w_in).abs());
         if k % settings.history_stride == 0 || k == n_steps {
             hist.t.push(t);
             hist.q.push(qa);
@@ -1051,6 +1094,10 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
                 viscous: d_visc,
                 contact: d_cont,
             });
+        }
+        if !energies_finite(&[tk, vk, w_in, d_visc, d_cont, e0]) {
+            status = SimStatus::Diverged;
+            break;
         }
         if k == n_steps {
             break;
@@ -1172,6 +1219,35 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
             for i in 0..nc {
                 gam_post[i] = dot6(&wcols[i], &u_new);
             }
+            if ok || any {
+                // post-solve check on the recovered velocities (crate::law_check): rounding scale
+                // s_k = Σ_d |W_dk| (|u_free,d| + Σ_j |(Ŵ⁻¹W)_dj P_j|)
+                let mut ad = [0.0; 6];
+                for (d, a) in ad.iter_mut().enumerate() {
+                    *a = u_free[d].abs();
+                    for j in 0..nc {
+                        *a += (wiw[j][d] * p[j]).abs();
+                    }
+                }
+                let mut scale = [0.0; 2 * MAX_CONTACTS];
+                let mut diag = [0.0; 2 * MAX_CONTACTS];
+                for k in 0..nc {
+                    scale[k] = wcols[k].iter().zip(&ad).map(|(w, a)| w.abs() * a).sum();
+                    diag[k] = g[k][k];
+                }
+                if law_check::check_laws(
+                    &laws[..n],
+                    &gam_pre[..nc],
+                    &p[..nc],
+                    &gam_post[..nc],
+                    &scale[..nc],
+                    &diag[..nc],
+                )
+                .is_err()
+                {
+                    lcp_fail += 1;
+                }
+            }
             let mut impacting = false;
             for i in 0..n {
                 if gam_pre[i] < -settings.impact_velocity && p[i] > 0.0 {
@@ -1242,7 +1318,7 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
         unseating_time: unseat.map(|u| u.0),
         unseated_end: unseat.map(|u| u.1),
         max_penetration: max_pen,
-        energy_balance_error: if max_in > 0.0 { max_bal / max_in } else { 0.0 },
+        energy_balance_error: balance_error(max_bal, max_in),
         final_energy: Energy {
             input: w_in,
             kinetic: tf,

@@ -8,6 +8,7 @@
 use crate::analytic::{self, ImpactLaw, SlipMode};
 use crate::contact::{self, Delassus};
 use crate::geometry::{ContactCase, Degeneracy, SArrangement, SigmaMode};
+use crate::law_check;
 use crate::lcp::{self, LcpStatus, LemkeSettings};
 use crate::math::Real;
 use crate::pair::DeckPair;
@@ -176,11 +177,14 @@ pub fn test_ratios(lower: Real, upper: Real) -> Vec<Real> {
 }
 
 /// The mode of the Lemke solution of the single-contact impact LCP (spec §8, n = 1) at
-/// `γ_N⁻ = −1`, `γ_T⁻ = −r`, or `None` when Lemke does not return a verified solution.
+/// `γ_N⁻ = −1`, `γ_T⁻ = −r`, or `None` when Lemke does not return a verified solution or the
+/// recovered `Λ_T = Λ_TR − μΛ_N`, `γ⁺ = γ⁻ + GΛ` fail the post-solve checks
+/// ([`crate::law_check::check_laws`]).
 ///
 /// `M = [[G_NN − μG_NT, G_NT, 0], [G_NT − μG_TT, G_TT, 1], [2μ, −1, 0]]`,
 /// `q = ((1+ε_N)γ_N⁻, γ_T⁻, 0)`, unknowns `z = (Λ_N, Λ_TR, γ_TL)`, `w = (ξ_N, γ_TR, Λ_TL)`,
-/// `γ_T⁺ = γ_TR − γ_TL`; stick iff `|γ_T⁺| ≤ 1e-9·n` with `n = −γ_N⁻ = 1` (spec §10), outward slip
+/// `γ_T⁺ = γ_T⁻ + G_TN Λ_N + G_TT Λ_T` recovered from `Λ_T = Λ_TR − μΛ_N` (equal to
+/// `γ_TR − γ_TL` up to rounding for a well-conditioned `G`); stick iff `|γ_T⁺| ≤ 1e-9·n` with `n = −γ_N⁻ = 1` (spec §10), outward slip
 /// iff `γ_T⁺ > 0`, inward slip iff `γ_T⁺ < 0`.
 ///
 /// The LCP is solved with `G/G_NN` (entries `1, κ, ϱ`): scaling `G` by `c` maps a solution
@@ -202,7 +206,25 @@ pub fn lcp_mode(g: &Delassus, law: &ImpactLaw, ratio: Real) -> Option<SlipMode> 
     if sol.status != LcpStatus::Solved {
         return None;
     }
-    let gamma_t_post = sol.w[1] - sol.z[2];
+    // post-solve check on the recovered velocities γ⁺ = γ⁻ + GΛ (crate::law_check)
+    let (ln, lt) = (sol.z[0], sol.z[1] - mu * sol.z[0]);
+    let post = [gamma_n + nn * ln + nt * lt, gamma_t + nt * ln + tt * lt];
+    let scale = [
+        gamma_n.abs() + (nn * ln).abs() + (nt * lt).abs(),
+        gamma_t.abs() + (nt * ln).abs() + (tt * lt).abs(),
+    ];
+    law_check::check_laws(
+        std::slice::from_ref(law),
+        &[gamma_n, gamma_t],
+        &[ln, lt],
+        &post,
+        &scale,
+        &[nn, tt],
+    )
+    .ok()?;
+    // classify on the recovered velocity (what the check verified), not on the LCP's own
+    // γ_TR − γ_TL, which can disagree with it for an ill-conditioned G
+    let gamma_t_post = post[1];
     let n = -gamma_n;
     Some(if gamma_t_post.abs() <= 1e-9 * n {
         SlipMode::Stick

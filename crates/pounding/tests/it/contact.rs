@@ -280,7 +280,9 @@ fn force_directions_match_spec_closed_forms() {
                 let inv_m = 1.0 / q1.mass + 1.0 / q2.mass;
                 let nn = inv_m + a1 * a1 / q1.inertia + a2 * a2 / q2.inertia;
                 let nt = a1 * b1 / q1.inertia + a2 * b2 / q2.inertia;
+                let tt = inv_m + b1 * b1 / q1.inertia + b2 * b2 / q2.inertia;
                 assert!((g.nn - nn).abs() < 1e-12 * nn && (g.nt - nt).abs() < 1e-11 * nn);
+                assert!((g.tt - tt).abs() < 1e-12 * tt, "{case:?} {mode:?} G_TT");
             }
         }
     }
