@@ -164,6 +164,22 @@ pub fn run(args: Args) -> Result<ExitCode> {
         (serde_json::to_string_pretty(&timing)? + "\n").as_bytes(),
     )?;
     eprintln!("outputs in {}", out.display());
+    // Like `simulate`: a law whose run did not complete is written, then reported with exit 1.
+    let bad: Vec<String> = runs
+        .iter()
+        .filter(|r| r.sol.status != pounding::sim::SimStatus::Completed)
+        .map(|r| format!("{} ({:?})", r.law, r.sol.status))
+        .collect();
+    if !bad.is_empty() {
+        eprintln!(
+            "error: {} of {} laws ended with a status other than Completed: {}; their results are not \
+             trustworthy (see compare.csv, column status)",
+            bad.len(),
+            runs.len(),
+            bad.join(", ")
+        );
+        return Ok(ExitCode::FAILURE);
+    }
     Ok(ExitCode::SUCCESS)
 }
 

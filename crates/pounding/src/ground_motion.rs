@@ -196,7 +196,7 @@ impl Record {
             ));
         }
         let factor =
-            at2_units_factor(&lines[..3]).map_err(|(k, m)| parse_err(source_name, k, m))?;
+            at2_units_factor(&lines[..4]).map_err(|(k, m)| parse_err(source_name, k, m))?;
         let header = lines[3];
         let (npts, dt) = parse_at2_npts_dt(header)
             .map_err(|m| parse_err(source_name, 4, format!("{m} in AT2 header line {header:?}")))?;
@@ -260,9 +260,19 @@ impl Record {
             let cols: Vec<&str> = line.split(',').map(str::trim).collect();
             let first = !seen_content;
             seen_content = true;
+            // A header is a first line in which no column is a number (`nan`, `1e999` and
+            // `0.1g`-like cells are not headers: they are refused below, naming the line).
+            let is_header = first
+                && cols.iter().all(|c| {
+                    c.parse::<f64>().is_err()
+                        && parse_real(c).is_none()
+                        && !c.starts_with(|ch: char| {
+                            ch.is_ascii_digit() || matches!(ch, '-' | '+' | '.')
+                        })
+                });
             if cols.len() != 2 {
-                if first && cols.iter().any(|c| parse_real(c).is_none()) {
-                    continue; // header
+                if is_header {
+                    continue;
                 }
                 return Err(parse_err(
                     source_name,
@@ -287,7 +297,7 @@ impl Record {
                     times.push(t);
                     values.push(a * units.factor());
                 }
-                _ if first => continue, // header
+                _ if is_header => continue,
                 _ => {
                     return Err(parse_err(
                         source_name,
@@ -395,10 +405,31 @@ impl Record {
     }
 }
 
-/// The factor to m/s² of the AT2 header `lines` (the first three), or the 1-based line and reason
-/// why the file is not an acceleration record in known units.
+/// The factor to m/s² of the acceleration units `token` (upper case, `**` written `^`, `SEC`
+/// written `S`), or `None` if it is not a unit of acceleration this reader knows.
+fn accel_unit_factor(token: &str) -> Option<Real> {
+    Some(match token {
+        "G" => G0,
+        "CM/S/S" | "CM/S^2" | "CM/S2" | "CM/S²" | "GAL" | "GALS" => 0.01,
+        "MM/S/S" | "MM/S^2" | "MM/S2" | "MM/S²" => 0.001,
+        "M/S/S" | "M/S^2" | "M/S2" | "M/S²" => 1.0,
+        "IN/S/S" | "IN/S^2" | "IN/S2" | "IN/S²" => 0.0254,
+        "FT/S/S" | "FT/S^2" | "FT/S2" | "FT/S²" => 0.3048,
+        _ => return None,
+    })
+}
+
+/// The factor to m/s² of the AT2 header `lines` (the first three, plus the `NPTS`/`DT` line), or
+/// the 1-based line and reason why the file is not an acceleration record in known units.
+///
+/// A unit is recognised wherever the header writes it (`IN UNITS OF G`, `(CM/SEC**2)`,
+/// `UNITS: CM/S/S`, on the `NPTS` line too). `G` counts only after `OF`, `IN`, `UNITS` or in
+/// parentheses (a bare `G` may be part of a station name). A header that mentions units it does not
+/// understand, or two different units, is refused; a header that names none is read in g (PEER).
 fn at2_units_factor(lines: &[&str]) -> Result<Real, (usize, String)> {
-    let mut factor = G0;
+    let accepted =
+        "accepted: G, CM/S/S (CM/S^2, CM/SEC**2, GAL), MM/S/S, M/S/S (M/S^2), IN/S/S, FT/S/S";
+    let mut found: Option<(Real, String)> = None;
     for (k, line) in lines.iter().enumerate() {
         let upper = line.to_ascii_uppercase();
         for kind in ["VELOCITY", "DISPLACEMENT"] {
@@ -413,30 +444,58 @@ fn at2_units_factor(lines: &[&str]) -> Result<Real, (usize, String)> {
                 ));
             }
         }
-        if let Some(p) = upper.find("UNITS OF") {
-            let unit = upper[p + "UNITS OF".len()..]
-                .split(|c: char| c.is_whitespace() || c == ',')
-                .find(|t| !t.is_empty())
-                .unwrap_or("");
-            factor = match unit {
-                "G" => G0,
-                "CM/S/S" | "CM/S^2" | "CM/S2" | "CM/SEC/SEC" | "CM/SEC^2" | "CM/SEC2" | "GAL" => {
-                    0.01
+        let norm = upper.replace("**", "^").replace("SEC", "S");
+        let mut prev = "";
+        let mut mentions_units = false;
+        let mut unit_on_line = false;
+        for raw in norm.split(|c: char| c.is_whitespace() || matches!(c, ',' | ':' | '=' | ';')) {
+            if raw.is_empty() {
+                continue;
+            }
+            let paren = raw.starts_with('(') || raw.ends_with(')');
+            let tok = raw.trim_matches(|c| matches!(c, '(' | ')' | '[' | ']'));
+            mentions_units |= tok.starts_with("UNIT");
+            let bare_g = tok == "G" && !(paren || matches!(prev, "OF" | "IN" | "UNITS" | "UNIT"));
+            match accel_unit_factor(tok).filter(|_| !bare_g) {
+                Some(f) => {
+                    if let Some((g, u)) = &found
+                        && *g != f
+                    {
+                        return Err((
+                            k + 1,
+                            format!(
+                                "the header names two different units, {u} and {tok}; {accepted}"
+                            ),
+                        ));
+                    }
+                    found = Some((f, tok.to_string()));
+                    unit_on_line = true;
                 }
-                "M/S/S" | "M/S^2" | "M/S2" | "M/SEC/SEC" | "M/SEC^2" | "M/SEC2" => 1.0,
-                other => {
+                None if looks_like_accel_unit(tok) => {
                     return Err((
                         k + 1,
-                        format!(
-                            "unknown units {other:?} in header line {line:?}; accepted: G, \
-                             CM/S/S (CM/S^2, GAL), M/S/S (M/S^2)"
-                        ),
+                        format!("unknown units {tok:?} in header line {line:?}; {accepted}"),
                     ));
                 }
-            };
+                None => {}
+            }
+            prev = tok;
+        }
+        if mentions_units && !unit_on_line {
+            return Err((
+                k + 1,
+                format!("cannot read the units in header line {line:?}; {accepted}"),
+            ));
         }
     }
-    Ok(factor)
+    Ok(found.map_or(G0, |(f, _)| f))
+}
+
+/// Whether `tok` looks like a unit of acceleration (`X/S/S`, `X/S^2`, `X/S2`).
+fn looks_like_accel_unit(tok: &str) -> bool {
+    ["/S/S", "/S^2", "/S2", "/S²"]
+        .iter()
+        .any(|e| tok.ends_with(e))
 }
 
 fn parse_at2_npts_dt(line: &str) -> Result<(usize, Real), String> {
@@ -460,6 +519,22 @@ fn parse_at2_npts_dt(line: &str) -> Result<(usize, Real), String> {
                 .unwrap_or(rest.len());
             Some(rest[..end].to_string())
         };
+        // DT must be in seconds: the word after its value, if any, must say so.
+        if let Some(p) = upper.find("DT") {
+            let after = upper[p + 2..].trim_start().strip_prefix('=').unwrap_or("");
+            let mut words = after
+                .split(|c: char| c == ',' || c.is_whitespace())
+                .filter(|w| !w.is_empty());
+            let _value = words.next();
+            if let Some(unit) = words.next()
+                && !matches!(unit, "SEC" | "S" | "SECS" | "SECOND" | "SECONDS")
+                && !unit.starts_with("NPTS")
+            {
+                return Err(format!(
+                    "DT is given in {unit:?}: only seconds (SEC) are accepted"
+                ));
+            }
+        }
         (
             grab("NPTS").ok_or("cannot find NPTS=")?,
             grab("DT").ok_or("cannot find DT=")?,

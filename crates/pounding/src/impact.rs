@@ -101,7 +101,8 @@ pub struct ContactSpec {
     pub body_b: Option<String>,
     /// Contact point \[m\].
     pub point: Vector,
-    /// Normal direction pointing into body `a` (normalised internally; must be non-zero).
+    /// Normal direction pointing into body `a` (any non-zero finite vector; normalised internally
+    /// without overflow or underflow).
     pub normal: Vector,
     /// Coulomb friction coefficient `μ ≥ 0`.
     pub mu: Real,
@@ -126,6 +127,12 @@ pub struct Contact {
     pub law: ImpactLaw,
 }
 
+/// Largest number of bodies of an [`ImpactProblem`].
+pub const MAX_BODIES: usize = 1024;
+
+/// Largest number of contacts of an [`ImpactProblem`] (a 768-row LCP, well under a second).
+pub const MAX_CONTACTS: usize = 256;
+
 /// A validated impact problem.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ImpactProblem {
@@ -133,11 +140,16 @@ pub struct ImpactProblem {
     contacts: Vec<Contact>,
 }
 
+use crate::output::float_token as ft;
+
 fn finite_vec(name: String, v: &Vector) -> Result<(), ImpactError> {
     if v.x.is_finite() && v.y.is_finite() {
         Ok(())
     } else {
-        Err(invalid(name, format!("[{}, {}] is not finite", v.x, v.y)))
+        Err(invalid(
+            name,
+            format!("[{}, {}] is not finite", ft(v.x), ft(v.y)),
+        ))
     }
 }
 
@@ -145,7 +157,25 @@ impl ImpactProblem {
     /// Validates bodies and contacts: unique non-empty names; finite `m > 0`, `I > 0`, positions,
     /// velocities and ω; contacts naming existing, distinct bodies; finite points; non-zero finite
     /// normals; `μ ≥ 0`; `ε_N ∈ [0, 1]`.
+    ///
+    /// At most [`MAX_BODIES`] bodies and [`MAX_CONTACTS`] contacts: the dense impact LCP has
+    /// `3n` rows, and Lemke's work grows like `(3n)³`.
     pub fn new(bodies: Vec<RigidBody>, contacts: Vec<ContactSpec>) -> Result<Self, ImpactError> {
+        if bodies.len() > MAX_BODIES {
+            return Err(invalid(
+                "bodies",
+                format!("{} bodies: at most {MAX_BODIES} are accepted", bodies.len()),
+            ));
+        }
+        if contacts.len() > MAX_CONTACTS {
+            return Err(invalid(
+                "contacts",
+                format!(
+                    "{} contacts: at most {MAX_CONTACTS} are accepted (the impact LCP has 3 rows per contact)",
+                    contacts.len()
+                ),
+            ));
+        }
         for (i, b) in bodies.iter().enumerate() {
             let p = |f: &str| format!("bodies[{i}].{f}");
             if b.name.trim().is_empty() {
@@ -160,19 +190,22 @@ impl ImpactProblem {
             if !(b.mass.is_finite() && b.mass > 0.0) {
                 return Err(invalid(
                     p("mass"),
-                    format!("{} must be finite and > 0", b.mass),
+                    format!("{} must be finite and > 0", ft(b.mass)),
                 ));
             }
             if !(b.inertia.is_finite() && b.inertia > 0.0) {
                 return Err(invalid(
                     p("inertia"),
-                    format!("{} must be finite and > 0", b.inertia),
+                    format!("{} must be finite and > 0", ft(b.inertia)),
                 ));
             }
             finite_vec(p("position"), &b.position)?;
             finite_vec(p("velocity"), &b.velocity)?;
             if !b.omega.is_finite() {
-                return Err(invalid(p("omega"), format!("{} is not finite", b.omega)));
+                return Err(invalid(
+                    p("omega"),
+                    format!("{} is not finite", ft(b.omega)),
+                ));
             }
         }
         let find = |name: &str| bodies.iter().position(|b| b.name == name);
@@ -194,19 +227,22 @@ impl ImpactProblem {
             };
             finite_vec(p("point"), &c.point)?;
             finite_vec(p("normal"), &c.normal)?;
-            let len = c.normal.norm();
-            if len.is_nan() || len <= 1e-12 {
+            // A direction: scale by its largest component first, so that neither a huge normal
+            // (|n|² overflows) nor a tiny one (|n|² underflows) loses it.
+            let big = c.normal.x.abs().max(c.normal.y.abs());
+            if !(big > 0.0) {
                 return Err(invalid(p("normal"), "must be a non-zero vector"));
             }
+            let scaled = c.normal / big;
             let law = ImpactLaw::new(c.mu, c.restitution).map_err(|e| match e {
                 analytic::LawError::Friction(v) => {
-                    invalid(p("mu"), format!("{v} must be finite and >= 0"))
+                    invalid(p("mu"), format!("{} must be finite and >= 0", ft(v)))
                 }
                 analytic::LawError::Restitution(v) => {
-                    invalid(p("restitution"), format!("{v} must lie in [0, 1]"))
+                    invalid(p("restitution"), format!("{} must lie in [0, 1]", ft(v)))
                 }
             })?;
-            let normal = c.normal / len;
+            let normal = scaled / scaled.norm();
             out.push(Contact {
                 a,
                 b,

@@ -174,3 +174,67 @@ fn impact_reports_a_bad_rotation_in_degrees() {
         assert!(err.contains(&format!("--theta1 = {t}:")), "{err}");
     }
 }
+
+/// A disc on the ground with the given contact normal, as an `impact --problem` file.
+fn disc_with_normal(normal: &str) -> String {
+    format!(
+        r#"{{"bodies": [{{"name": "disc", "mass": 2.0, "inertia": 0.09, "position": [0, 0.3],
+             "velocity": [1.0, -2.0], "omega": 40.0}}],
+ "contacts": [{{"body_a": "disc", "body_b": null, "point": [0, 0], "normal": {normal},
+               "mu": 0.2, "restitution": 0.5}}]}}"#
+    )
+}
+
+#[test]
+fn a_huge_or_tiny_contact_normal_is_the_same_direction() {
+    // [0, 1e200] used to overflow |n| to inf and become (0, 0): "no-impact", exit 0.
+    let d = tmp("normal");
+    let run = |n: &str| {
+        std::fs::write(d.join("p.json"), disc_with_normal(n)).unwrap();
+        let o = pounding()
+            .current_dir(&d)
+            .args(["impact", "--problem", "p.json", "--json"])
+            .output()
+            .unwrap();
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{n}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        String::from_utf8(o.stdout).unwrap()
+    };
+    let unit = run("[0, 1]");
+    assert!(unit.contains("\"solved\""), "{unit}");
+    for n in ["[0, 1e200]", "[0, 1e-200]", "[0, 5e-324]", "[0, 1.7e308]"] {
+        assert_eq!(run(n), unit, "{n}");
+    }
+}
+
+#[test]
+fn too_many_contacts_are_refused_before_solving() {
+    let d = tmp("contacts");
+    let c = r#"{"body_a": "b", "body_b": null, "point": [0, 0], "normal": [0, 1], "mu": 0.5, "restitution": 0}"#;
+    let text = format!(
+        r#"{{"bodies": [{{"name": "b", "mass": 1, "inertia": 0.5, "position": [0, 0.1], "velocity": [0.3, -1], "omega": 0}}], "contacts": [{}]}}"#,
+        vec![c; 257].join(",")
+    );
+    std::fs::write(d.join("p.json"), text).unwrap();
+    let (code, err) = run_in(&d, &["impact", "--problem", "p.json"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("257 contacts") && err.contains("256"), "{err}");
+}
+
+#[test]
+fn compare_exits_1_when_a_law_does_not_complete() {
+    let d = tmp("cmpdiv");
+    std::fs::write(
+        d.join("s.toml"),
+        "[time]\nduration = 0.5\n[ground_motion]\nscale_y = 1e200\n",
+    )
+    .unwrap();
+    let (code, err) = run_in(&d, &["compare", "s.toml", "--laws", "rigid", "--out", "o"]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(err.contains("rigid (Diverged)"), "{err}");
+    assert!(d.join("o/compare.csv").is_file() && d.join("o/timing.json").is_file());
+}

@@ -170,12 +170,15 @@ mod records {
             let r = Record::from_at2_str(&at2(&l3, "NPTS= 2, DT= .01 SEC"), "x.AT2").unwrap();
             assert_eq!(r.values(), &[0.1 * factor, -0.2 * factor], "{unit}");
         }
-        let l3 = "ACCELERATION TIME SERIES IN UNITS OF FT/S/S";
+        let l3 = "ACCELERATION TIME SERIES IN UNITS OF FURLONG/S/S";
         let (line, msg) = parse_line(
             Record::from_at2_str(&at2(l3, "NPTS= 2, DT= .01 SEC"), "x.AT2").unwrap_err(),
         );
         assert_eq!(line, 3);
-        assert!(msg.contains("FT/S/S") && msg.contains("accepted"), "{msg}");
+        assert!(
+            msg.contains("FURLONG/S/S") && msg.contains("accepted"),
+            "{msg}"
+        );
     }
 
     #[test]
@@ -199,5 +202,79 @@ mod records {
         // Starting at or after zero is fine (zero acceleration before the first sample).
         let r = Record::from_csv_str("0.5,0.1\n0.6,0.2\n", "r.csv", AccelUnits::G).unwrap();
         assert_eq!(r.accel(0.2), 0.0);
+    }
+}
+
+mod records_round2 {
+    //! Found by the fresh-clone hostile trial: units written other than `UNITS OF`, DT in other
+    //! units, a malformed first CSV row taken for a header.
+    use pounding::ground_motion::{AccelUnits, Record};
+
+    fn rec(line3: &str, line4: &str) -> Result<Record, String> {
+        let text = format!("PEER\nTest\n{line3}\n{line4}\n100 200 300 400 500\n");
+        Record::from_at2_str(&text, "x.AT2").map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn units_are_recognised_wherever_the_header_writes_them() {
+        let n5 = "NPTS=   5, DT=   .0100 SEC,";
+        for (l3, l4, factor) in [
+            ("ACCELERATION (CM/SEC**2)", n5, 0.01),
+            ("ACCELERATION TIME SERIES, UNITS: CM/S/S", n5, 0.01),
+            (
+                "ACCELERATION",
+                "NPTS=   5, DT=   .0100 SEC, UNITS OF CM/S/S",
+                0.01,
+            ),
+            ("ACCELERATION IN G", n5, 9.80665),
+            ("ACCELERATION (G)", n5, 9.80665),
+            ("ACCELERATION IN M/S^2", n5, 1.0),
+            ("ACCELERATION IN FT/SEC/SEC", n5, 0.3048),
+            ("ACCELERATION TIME SERIES", n5, 9.80665), // none named: PEER's g
+        ] {
+            let r = rec(l3, l4).unwrap_or_else(|e| panic!("{l3} / {l4}: {e}"));
+            assert_eq!(r.values()[0], 100.0 * factor, "{l3} / {l4}");
+        }
+    }
+
+    #[test]
+    fn unreadable_or_conflicting_units_and_dt_units_are_refused() {
+        let n5 = "NPTS=   5, DT=   .0100 SEC,";
+        for (l3, l4, want) in [
+            ("ACCELERATION, UNITS: FURLONG", n5, "cannot read the units"),
+            ("ACCELERATION IN KM/S/S", n5, "unknown units"),
+            (
+                "ACCELERATION IN CM/S/S",
+                "NPTS= 5, DT= .01 SEC, UNITS OF G",
+                "two different units",
+            ),
+            (
+                "ACCELERATION IN G",
+                "NPTS=   5, DT=   10 MSEC,",
+                "only seconds",
+            ),
+        ] {
+            let e = rec(l3, l4).unwrap_err();
+            assert!(e.contains(want), "{l3} / {l4}: {e}");
+        }
+    }
+
+    #[test]
+    fn a_malformed_first_csv_row_is_an_error_not_a_header() {
+        for text in [
+            "0,0.1g\n0.01,0.2\n0.02,0.3\n",
+            "0,nan\n0.01,0.2\n",
+            "0.1g,0\n0.01,0.2\n",
+        ] {
+            let e = Record::from_csv_str(text, "r.csv", AccelUnits::G).unwrap_err();
+            assert!(
+                e.to_string().contains("r.csv") && e.to_string().contains("1"),
+                "{text}: {e}"
+            );
+        }
+        // A real header is still skipped.
+        let r = Record::from_csv_str("time_s, accel_g\n0,0.1\n0.01,0.2\n", "r.csv", AccelUnits::G)
+            .unwrap();
+        assert_eq!(r.times().len(), 2);
     }
 }
