@@ -21,6 +21,7 @@ fn help_lists_subcommands() {
 
 mod batch;
 mod compare;
+mod fuzz;
 mod harden;
 mod lcp;
 mod shapes;

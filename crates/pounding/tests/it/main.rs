@@ -6,6 +6,7 @@ mod common;
 mod contact;
 mod contact_law;
 mod event_exact;
+mod fuzz;
 mod geometry;
 mod ground_motion;
 mod harden;
