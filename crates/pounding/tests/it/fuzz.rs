@@ -7,7 +7,7 @@ use std::path::PathBuf;
 
 #[allow(dead_code)]
 #[path = "../../../../fuzz/src/lib.rs"]
-mod oracle;
+pub(crate) mod oracle;
 
 fn inputs(kind: &str, target: &str) -> Vec<PathBuf> {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"))

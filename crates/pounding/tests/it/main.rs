@@ -12,6 +12,7 @@ mod ground_motion;
 mod harden;
 mod impact;
 mod lcp;
+mod props;
 mod shapes;
 mod sim;
 mod sim_compliance;
