@@ -9,7 +9,8 @@
 #
 # Each target first replays its regression inputs (fuzz/regressions/TARGET/*), then fuzzes from the
 # committed seed corpus (fuzz/corpus/TARGET, read only) into a scratch corpus under
-# $FUZZ_WORK (default: $CARGO_TARGET_DIR/fuzz-work, kept between runs so a longer campaign resumes).
+# $FUZZ_WORK (default: fuzz-work/ in the instrumented target directory, kept between runs so a
+# longer campaign resumes).
 # Exit status: 0 when nothing crashed, 1 otherwise; every crash input is copied to
 # $FUZZ_WORK/artifacts/TARGET/ and its path printed as `CRASH TARGET PATH`.
 set -euo pipefail
@@ -21,7 +22,15 @@ if [ ${#TARGETS[@]} -eq 0 ]; then
     TARGETS=(lcp_io lcp_solve record study_toml impact_json sim_model)
 fi
 TRIPLE=$(rustc -vV | sed -n 's/^host: //p')
-export CARGO_TARGET_DIR=${FUZZ_TARGET_DIR:-${CARGO_TARGET_DIR:-../target}-sancov}
+# Instrumented builds never share a target directory with normal builds (different RUSTFLAGS
+# would rebuild everything each time): $FUZZ_TARGET_DIR, else $CARGO_TARGET_DIR-sancov, else fuzz/target.
+if [ -n "${FUZZ_TARGET_DIR:-}" ]; then
+    export CARGO_TARGET_DIR=$FUZZ_TARGET_DIR
+elif [ -n "${CARGO_TARGET_DIR:-}" ]; then
+    export CARGO_TARGET_DIR=$CARGO_TARGET_DIR-sancov
+else
+    export CARGO_TARGET_DIR=$PWD/target
+fi
 export RUSTFLAGS="--cfg fuzzing -Cpasses=sancov-module -Cllvm-args=-sanitizer-coverage-level=4 \
 -Cllvm-args=-sanitizer-coverage-inline-8bit-counters -Cllvm-args=-sanitizer-coverage-pc-table \
 -Cllvm-args=-sanitizer-coverage-trace-compares -Cdebug-assertions -Coverflow-checks"

@@ -489,9 +489,7 @@ mod sim_model_impl {
             history_stride: 1 + d.b.u8() as usize % 4,
             ..SimSettings::default()
         };
-        if settings.validate().is_err()
-            || !(settings.dt <= duration)
-            || duration / settings.dt > 200.0
+        if settings.validate().is_err() || settings.dt > duration || duration / settings.dt > 200.0
         {
             return;
         }

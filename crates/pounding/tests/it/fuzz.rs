@@ -87,3 +87,42 @@ fn fuzz_lcp_oracle_rejects_wrong_solutions() {
         std::panic::catch_unwind(|| oracle::check_lcp(&p, LcpStatus::Solved, &[-1e-3])).is_err()
     );
 }
+
+/// Found by `impact_json`: one contact on a body of mass 7.2e117 kg and moment of inertia 2 with
+/// μ = 6e43. Lemke and enumeration fail, and the closed-form fallback returned `Λ_N = −8.6e15`
+/// (the Delassus determinant is lost to rounding) as `solved-by-fallback`. A negative normal
+/// impulse is no solution: the impact is now `failed`. The same guard covers `solve_single`.
+#[test]
+fn impact_fallback_never_reports_a_negative_normal_impulse() {
+    use pounding::impact::{ContactSpec, ImpactProblem, ImpactSettings, ImpactStatus, RigidBody};
+    use pounding::math::Vector;
+    let p = ImpactProblem::new(
+        vec![RigidBody {
+            name: "rod".into(),
+            mass: 7.222222222222222e117,
+            inertia: 2.0,
+            position: Vector::new(2.0, 0.5),
+            velocity: Vector::new(0.0, 0.0),
+            omega: 1.0,
+        }],
+        vec![ContactSpec {
+            body_a: "rod".into(),
+            body_b: None,
+            point: Vector::new(1.0, 0.0),
+            normal: Vector::new(1.0, 1.0),
+            mu: 5.99e43,
+            restitution: 0.3,
+        }],
+    )
+    .unwrap();
+    let s = pounding::impact::solve(&p, &ImpactSettings::default());
+    match s.status {
+        ImpactStatus::Solved | ImpactStatus::SolvedByFallback => {
+            let c = &s.contacts[0];
+            assert!(c.normal_impulse >= 0.0, "{s:?}");
+            oracle::check_impact(&p, &s);
+        }
+        ImpactStatus::NoImpact => panic!("the contact approaches: {s:?}"),
+        _ => {}
+    }
+}
