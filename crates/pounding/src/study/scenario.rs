@@ -155,7 +155,7 @@ pub struct Scenario {
     pub theta2: AngleRange,
     /// Lower end of the pre-impact ratio range `r = γ_T⁻/γ_N⁻` used by summaries and region maps.
     pub ratio_min: Real,
-    /// Upper end of the ratio range (`> ratio_min`).
+    /// Upper end of the ratio range (`> ratio_min`, with a finite width `ratio_max − ratio_min`).
     pub ratio_max: Real,
     /// Candidate cases, always in the canonical order of [`ContactCase::ALL`].
     pub cases: Vec<ContactCase>,
@@ -484,6 +484,7 @@ impl Scenario {
     /// ([`ScenarioError::Syntax`]); an unknown `decks.shape`, keys of another shape, `L ≤ 0`,
     /// skew `∉ [0, 90)`, empty or duplicate lists, `R ≤ W/2`, `step ≤ 0`, `μ < 0`,
     /// `ε ∉ [0, 1]`, `β ∉ (0, 360)`, non-positive width/thickness/density, `ratio_max ≤ ratio_min`
+    /// or an infinite `ratio_max − ratio_min`
     /// ([`ScenarioError::Invalid`]).
     pub fn from_toml(text: &str, origin: &str) -> Result<Self, ScenarioError> {
         let raw: RawScenario = toml::from_str(text).map_err(|e| {
@@ -695,8 +696,12 @@ impl Scenario {
             &grid.ratio_max,
             d.ratio_max,
             "grid.ratio_max",
-            |x| x > ratio_min,
-            &format!("must be finite and > ratio_min = {}", fmt_num(ratio_min)),
+            // the width ratio_max − ratio_min divides every share: it must be finite too
+            |x| x > ratio_min && (x - ratio_min).is_finite(),
+            &format!(
+                "must be finite, > ratio_min = {} and ratio_max − ratio_min finite",
+                fmt_num(ratio_min)
+            ),
         )?;
         let cases = match &grid.cases {
             None => d.cases.clone(),

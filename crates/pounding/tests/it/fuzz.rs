@@ -126,3 +126,24 @@ fn impact_fallback_never_reports_a_negative_normal_impulse() {
         _ => {}
     }
 }
+
+/// Issue 15 item 3, kept as a fuzz regression (`fuzz/regressions/study_toml/`): `ratio_min =
+/// −1e308, ratio_max = 1e308` has an infinite width, which made every share 0 with a successful
+/// run. It is now refused as bad input naming `grid.ratio_max` and its line.
+#[test]
+fn study_ratio_range_of_infinite_width_is_refused() {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../fuzz/regressions/study_toml/ratio-range-infinite-width.toml");
+    let text = std::fs::read_to_string(path).unwrap();
+    let e = pounding::study::Scenario::from_toml(&text, "wide.toml").unwrap_err();
+    let msg = e.to_string();
+    assert!(
+        msg.contains("wide.toml: line 16")
+            && msg.contains("grid.ratio_max")
+            && msg.contains("finite"),
+        "{msg}"
+    );
+    // a wide but finite width is still accepted
+    let ok = text.replace("ratio_min = -1e308", "ratio_min = -1e307");
+    assert!(pounding::study::Scenario::from_toml(&ok, "x").is_ok());
+}
