@@ -147,3 +147,31 @@ fn study_ratio_range_of_infinite_width_is_refused() {
     let ok = text.replace("ratio_min = -1e308", "ratio_min = -1e307");
     assert!(pounding::study::Scenario::from_toml(&ok, "x").is_ok());
 }
+
+/// Found by `lcp_solve` (`fuzz/regressions/lcp_solve/complementarity-1`): enumeration reported
+/// `z = (0, 1.3e-3, 0, 0, 0)` for a problem with `q ≥ 0`, although `w₁ = 0.162` beside `z₁ > 0`.
+/// The verification had set `z₁` aside as rounding noise (it is negligible in every row with
+/// other content: `M₁₁ = 1e−299`, `q₂ = 1e18`) — but it is the only content of rows 0 and 4 — and
+/// then reported the unverified `z`. The verified vector (noise entries at 0) is now reported.
+#[test]
+fn lcp_verified_solution_is_the_one_reported() {
+    use pounding::lcp::{self, LcpProblem, LcpStatus, Lemke, LemkeSettings};
+    #[rustfmt::skip]
+    let m = vec![
+        0.13, 0.241, 7.8125, 8.1875e20, -4.25,
+        66.0, 1.1116129922346925e-299, 0.12, -0.8125, 2.0625e-40,
+        1.000000000118, 0.5, 0.875, 6.3125, 0.0,
+        0.999999999961, 0.0, 0.0, 0.0, 0.0,
+        0.999999999872, -5.8125, 0.0, 0.0, 0.0,
+    ];
+    let q = vec![0.0, 0.162, 1e18, 2.46657e-319, 0.0];
+    let p = LcpProblem::new(m, q).unwrap();
+    let sols = lcp::enumerate(&p).unwrap();
+    assert!(!sols.is_empty());
+    for z in &sols {
+        oracle::check_lcp(&p, LcpStatus::Solved, z);
+    }
+    assert!(sols.iter().any(|z| z.iter().all(|&x| x == 0.0)), "{sols:?}");
+    let s = Lemke::new(LemkeSettings::default()).solve(&p);
+    oracle::check_lcp(&p, s.status, &s.z);
+}
