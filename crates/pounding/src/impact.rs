@@ -812,7 +812,12 @@ pub fn solve(problem: &ImpactProblem, settings: &ImpactSettings) -> ImpactSoluti
             tt: g[3],
         };
         let s = analytic::single_impact(&gd, &laws[0], gamma_pre[0], gamma_pre[1]);
-        if !(s.normal_impulse.is_finite() && s.tangential_impulse.is_finite()) {
+        // The closed form is no solution when it gives `Λ_N < 0` (a Delassus matrix whose
+        // determinant is lost to rounding, e.g. masses of 1e117 kg beside a moment of inertia of 2)
+        if !(s.normal_impulse.is_finite()
+            && s.tangential_impulse.is_finite()
+            && s.normal_impulse >= 0.0)
+        {
             return finish(ImpactStatus::Failed, lemke_status, None, 0, ran, true);
         }
         return finish(
@@ -927,11 +932,13 @@ pub fn solve_single(
         (ImpactStatus::Solved, s.z[0], s.z[1] - mu * s.z[0])
     } else {
         let an = analytic::single_impact(g, law, gamma_n_pre, gamma_t_pre);
-        (
-            ImpactStatus::SolvedByFallback,
-            an.normal_impulse,
-            an.tangential_impulse,
-        )
+        // `Λ_N < 0` is no solution (see `solve`): NaN, hence `Failed` below
+        let ln = if an.normal_impulse >= 0.0 {
+            an.normal_impulse
+        } else {
+            Real::NAN
+        };
+        (ImpactStatus::SolvedByFallback, ln, an.tangential_impulse)
     };
     let gnp = gamma_n_pre + g.nn * ln + g.nt * lt;
     let gtp = gamma_t_pre + g.nt * ln + g.tt * lt;

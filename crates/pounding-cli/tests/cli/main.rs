@@ -39,6 +39,7 @@ fn help_lists_subcommands() {
 mod batch;
 mod compare;
 mod golden;
+mod fuzz;
 mod harden;
 mod harden_input;
 mod harden_io;

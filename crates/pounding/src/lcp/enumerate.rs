@@ -107,7 +107,7 @@ pub fn enumerate_with(
             continue;
         }
         z.iter_mut().for_each(|x| *x = x.max(0.0));
-        let (ok, _) = verify(n, m, q, &z, &mut w, settings.verify_tol);
+        let (ok, _) = verify(n, m, q, &mut z, &mut w, settings.verify_tol);
         if !ok {
             continue;
         }

@@ -563,13 +563,18 @@ pub fn parse_lcpsol(text: &str, file: &str) -> Result<Vec<SolRecord>, LcpIoError
             "1" => false,
             s => return Err(perr(ln, "status 0 or 1", &format!("`{s}`"))),
         };
-        let z = t[4..]
+        let mut z = t[4..]
             .iter()
             .map(|s| {
                 s.parse::<f64>()
                     .map_err(|_| perr(ln, "a number (or nan)", &format!("`{s}`")))
             })
             .collect::<Result<Vec<_>, _>>()?;
+        if !solved {
+            // A failed solve has no solution: whatever numbers follow status 1, `z` is all NaN
+            // (as documented on [`SolRecord::solved`] and written by [`write_lcpsol`]).
+            z.fill(f64::NAN);
+        }
         out.push(SolRecord {
             id,
             solver: t[2].to_string(),

@@ -37,7 +37,8 @@
 //! ```
 //!
 //! after setting aside entries of `z` that are rounding noise in every row they touch (see
-//! `verify`). Each row is judged in its own units, so the test is invariant under positive row and
+//! `verify`); such entries are then reported as exactly 0, so that the `z` and `w` reported with
+//! [`LcpStatus::Solved`] are always the ones verified. Each row is judged in its own units, so the test is invariant under positive row and
 //! column scalings of the LCP. The reported residual is `maxᵢ |min(zᵢ, wᵢ)| / max(1, ‖q‖∞)`.
 //!
 //! # Badly scaled data: the equilibrated retry
@@ -123,13 +124,13 @@ pub(crate) fn verify(
     n: usize,
     m: &[f64],
     q: &[f64],
-    z: &[f64],
+    z: &mut [f64],
     w: &mut [f64],
     tol: f64,
 ) -> (bool, f64) {
     let m = &m[..n * n];
     let q = &q[..n];
-    let z = &z[..n];
+    let z = &mut z[..n];
     let w = &mut w[..n];
     let mut qn = 1.0f64;
     for &qi in q {
@@ -158,7 +159,9 @@ pub(crate) fn verify(
     }
     if !ok && finite {
         // some wᵢ is neither ≈ 0 nor ≥ −tol·sᵢ with zᵢ = 0: the per-component test (cold)
-        ok = componentwise(n, m, q, z, w, tol);
+        if let Some(r) = componentwise(n, m, q, z, w, tol) {
+            (ok, res) = (true, r);
+        }
     }
     (ok && finite, res / qn)
 }
@@ -173,7 +176,7 @@ pub(crate) fn verify_small(
     n: usize,
     m: &[f64],
     q: &[f64],
-    z: &[f64],
+    z: &mut [f64],
     w: &mut [f64],
     tol: f64,
 ) -> (bool, f64) {
@@ -182,7 +185,7 @@ pub(crate) fn verify_small(
     }
     let m = &m[..n * n];
     let q = &q[..n];
-    let z = &z[..n];
+    let z = &mut z[..n];
     let w = &mut w[..n];
     let mut wa = [0.0f64; FULL_MAX];
     let mut sa = [0.0f64; FULL_MAX];
@@ -216,7 +219,9 @@ pub(crate) fn verify_small(
         ok &= (wi >= -lim) & (zi >= 0.0) & ((wi <= lim) | (zi == 0.0));
     }
     if !ok && finite {
-        ok = componentwise(n, m, q, z, w, tol);
+        if let Some(r) = componentwise(n, m, q, z, w, tol) {
+            (ok, res) = (true, r);
+        }
     }
     (ok && finite, res / qn)
 }
@@ -227,11 +232,22 @@ pub(crate) fn verify_small(
 /// With `z'` = `z` without its negligible entries, `w' = M z' + q`, `s'ᵢ = |qᵢ| + Σⱼ |Mᵢⱼ z'ⱼ|`,
 /// the test passes when `z' ≥ 0`, `w'ᵢ ≥ −tol·s'ᵢ` and `|w'ᵢ| ≤ tol·s'ᵢ` wherever `z'ᵢ ≠ 0`.
 /// (A row that only a noise entry touches — `w₃ = 2μΛ_N − Λ_TR` with `μ = 0` and `Λ_TR ≈ 1e−17` —
-/// has no scale of its own; it is judged without that entry.) The reported `z`, `w` are unchanged.
+/// has no scale of its own; it is judged without that entry.) When the test passes, the verified
+/// `z'`, `w'` are what is reported (`z`, `w` overwritten) and the returned value is the raw residual
+/// `maxᵢ |min(z'ᵢ, w'ᵢ)|`; `None` when it fails. (Reporting `z` itself was wrong: an entry that is
+/// noise in every row with other content can be the *only* content of another row, e.g. `z₁ = 1e−3`
+/// against `q₂ = 1e18` and `M₁₁ = 1e−299`, `q₁ = 0.16`, yet alone in a row with `q₀ = 0`; the full
+/// `z` then broke `z₁ w₁ = 0` by far while `z'` = 0 is the true solution. Found by fuzzing.)
 #[cold]
 #[inline(never)]
-fn componentwise(n: usize, m: &[f64], q: &[f64], z: &[f64], w: &[f64], tol: f64) -> bool {
-    let _ = w;
+fn componentwise(
+    n: usize,
+    m: &[f64],
+    q: &[f64],
+    z: &mut [f64],
+    w: &mut [f64],
+    tol: f64,
+) -> Option<f64> {
     let s = |k: usize, zz: &dyn Fn(usize) -> f64| -> f64 {
         q[k].abs() + (0..n).map(|j| (m[k * n + j] * zz(j)).abs()).sum::<f64>()
     };
@@ -258,15 +274,22 @@ fn componentwise(n: usize, m: &[f64], q: &[f64], z: &[f64], w: &[f64], tol: f64)
     for i in 0..n {
         let zi = zc(i);
         if zi < 0.0 {
-            return false;
+            return None;
         }
         let wi = q[i] + (0..n).map(|j| m[i * n + j] * zc(j)).sum::<f64>();
         let lim = tol * s(i, &zc);
         if wi < -lim || (zi != 0.0 && wi.abs() > lim) {
-            return false;
+            return None;
         }
     }
-    true
+    let zv: Vec<f64> = (0..n).map(zc).collect();
+    let mut res = 0.0f64;
+    for i in 0..n {
+        w[i] = q[i] + (0..n).map(|j| m[i * n + j] * zv[j]).sum::<f64>();
+        z[i] = zv[i];
+        res = res.max(z[i].min(w[i]).abs());
+    }
+    Some(res)
 }
 
 /// The lexicographic Lemke kernel. `m` is row-major `n × n`; `z`, `w` receive the result
@@ -686,7 +709,7 @@ fn retry_fixed<const N: usize>(
     for (zi, di) in sol.z.iter_mut().zip(&dsc) {
         *zi *= di;
     }
-    let (ok, residual) = verify_small(N, m, q, &sol.z, &mut sol.w, settings.verify_tol());
+    let (ok, residual) = verify_small(N, m, q, &mut sol.z, &mut sol.w, settings.verify_tol());
     if !ok {
         return first;
     }
@@ -842,7 +865,7 @@ impl Lemke {
             for (zi, di) in out.z.iter_mut().zip(&dsc) {
                 *zi *= di;
             }
-            (ok, residual) = verify(n, m, q, &out.z, &mut out.w, self.settings.verify_tol());
+            (ok, residual) = verify(n, m, q, &mut out.z, &mut out.w, self.settings.verify_tol());
         }
         if ok {
             KernelOut {

@@ -159,7 +159,7 @@ pub struct Scenario {
     pub theta2: AngleRange,
     /// Lower end of the pre-impact ratio range `r = γ_T⁻/γ_N⁻` used by summaries and region maps.
     pub ratio_min: Real,
-    /// Upper end of the ratio range (`> ratio_min`).
+    /// Upper end of the ratio range (`> ratio_min`, with a finite width `ratio_max − ratio_min`).
     pub ratio_max: Real,
     /// Candidate cases, always in the canonical order of [`ContactCase::ALL`].
     pub cases: Vec<ContactCase>,
@@ -507,6 +507,7 @@ impl Scenario {
     /// ([`ScenarioError::Syntax`]); an unknown `decks.shape`, keys of another shape, `L ≤ 0`,
     /// skew `∉ [0, 90)`, empty or duplicate lists, `R ≤ W/2`, `step ≤ 0`, `μ < 0`,
     /// `ε ∉ [0, 1]`, `β ∉ (0, 360)`, non-positive width/thickness/density, `ratio_max ≤ ratio_min`
+    /// or an infinite `ratio_max − ratio_min`
     /// ([`ScenarioError::Invalid`]).
     pub fn from_toml(text: &str, origin: &str) -> Result<Self, ScenarioError> {
         let raw: RawScenario = toml::from_str(text).map_err(|e| {
