@@ -552,7 +552,8 @@ pub fn check_impact(p: &pounding::impact::ImpactProblem, s: &pounding::impact::I
                 assert_eq!((c.normal_impulse, c.tangential_impulse), (0.0, 0.0));
             }
         }
-        ImpactStatus::Failed => {}
+        // Not trustworthy, and reported so: nothing to check.
+        ImpactStatus::Failed | ImpactStatus::IllConditioned => {}
     }
 }
 

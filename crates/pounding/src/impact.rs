@@ -230,7 +230,7 @@ impl ImpactProblem {
             // A direction: scale by its largest component first, so that neither a huge normal
             // (|n|² overflows) nor a tiny one (|n|² underflows) loses it.
             let big = c.normal.x.abs().max(c.normal.y.abs());
-            if !(big > 0.0) {
+            if big.is_nan() || big <= 0.0 {
                 return Err(invalid(p("normal"), "must be a non-zero vector"));
             }
             let scaled = c.normal / big;

@@ -218,10 +218,11 @@ pub(crate) fn verify_small(
         // |wᵢ| ≤ lim ⇔ wᵢ ≤ lim given wᵢ ≥ −lim
         ok &= (wi >= -lim) & (zi >= 0.0) & ((wi <= lim) | (zi == 0.0));
     }
-    if !ok && finite {
-        if let Some(r) = componentwise(n, m, q, z, w, tol) {
-            (ok, res) = (true, r);
-        }
+    if !ok
+        && finite
+        && let Some(r) = componentwise(n, m, q, z, w, tol)
+    {
+        (ok, res) = (true, r);
     }
     (ok && finite, res / qn)
 }
