@@ -138,6 +138,9 @@ fn read(file: &Path, solver: Solver) -> anyhow::Result<Vec<LcpEntry>> {
 
 fn solve(file: &Path, solver: Solver, out: Option<&Path>) -> anyhow::Result<ExitCode> {
     let set = read(file, solver)?;
+    if set.is_empty() {
+        bail!("{}: the file holds no problems (COUNT 0)", file.display());
+    }
     let mut records = Vec::with_capacity(set.len());
     let mut counts: Vec<(&'static str, usize)> = Vec::new();
     let bump = |c: &mut Vec<(&'static str, usize)>, k: &'static str| {
@@ -212,6 +215,20 @@ fn solve(file: &Path, solver: Solver, out: Option<&Path>) -> anyhow::Result<Exit
         set.len(),
         parts.join(", ")
     );
+    // Like `impact`: a problem without a solution is written (status 1, `nan`), then reported
+    // with exit 1.
+    let ids: std::collections::BTreeSet<_> = records.iter().map(|r| r.id).collect();
+    let solved: std::collections::BTreeSet<_> =
+        records.iter().filter(|r| r.solved).map(|r| r.id).collect();
+    let unsolved = ids.len() - solved.len();
+    if unsolved > 0 {
+        eprintln!(
+            "error: {unsolved} of {} problems not solved by {} (status 1 in the output)",
+            set.len(),
+            solver.name()
+        );
+        return Ok(ExitCode::FAILURE);
+    }
     Ok(ExitCode::SUCCESS)
 }
 

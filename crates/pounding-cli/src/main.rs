@@ -33,8 +33,18 @@ enum Command {
     Compare(cmd_compare::Args),
 }
 
-fn main() -> ExitCode {
-    let cli = Cli::parse();
+/// The message of a panic raised by `print!`/`eprint!` when standard output or error cannot be
+/// written (`/dev/full`, a closed pipe), e.g. `failed printing to stdout: Broken pipe`.
+fn stdio_failure(payload: &(dyn std::any::Any + Send)) -> Option<String> {
+    let msg = payload
+        .downcast_ref::<String>()
+        .map(String::as_str)
+        .or_else(|| payload.downcast_ref::<&str>().copied())?;
+    msg.starts_with("failed printing to std")
+        .then(|| msg.to_string())
+}
+
+fn run(cli: Cli) -> ExitCode {
     let result = match cli.command {
         Command::Lcp(a) => cmd_lcp::run(a),
         Command::Impact(a) => cmd_impact::run(a),
@@ -48,5 +58,28 @@ fn main() -> ExitCode {
             eprintln!("error: {e:#}");
             ExitCode::from(2)
         }
+    }
+}
+
+fn main() -> ExitCode {
+    // A failed write to standard output or error (`> /dev/full`, `| head`) makes `print!` panic;
+    // it is an I/O error, reported as one (exit 2), never a panic with a backtrace.
+    let default_hook = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        if stdio_failure(info.payload()).is_none() {
+            default_hook(info);
+        }
+    }));
+    let cli = Cli::parse();
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run(cli))) {
+        Ok(code) => code,
+        Err(payload) => match stdio_failure(payload.as_ref()) {
+            Some(msg) => {
+                use std::io::Write;
+                let _ = writeln!(std::io::stderr(), "error: {msg}");
+                ExitCode::from(2)
+            }
+            None => std::panic::resume_unwind(payload),
+        },
     }
 }

@@ -270,6 +270,9 @@ impl Record {
                             ch.is_ascii_digit() || matches!(ch, '-' | '+' | '.')
                         })
                 });
+            if is_header {
+                check_csv_header_units(raw, units).map_err(|m| parse_err(source_name, k + 1, m))?;
+            }
             if cols.len() != 2 {
                 if is_header {
                     continue;
@@ -427,8 +430,6 @@ fn accel_unit_factor(token: &str) -> Option<Real> {
 /// parentheses (a bare `G` may be part of a station name). A header that mentions units it does not
 /// understand, or two different units, is refused; a header that names none is read in g (PEER).
 fn at2_units_factor(lines: &[&str]) -> Result<Real, (usize, String)> {
-    let accepted =
-        "accepted: G, CM/S/S (CM/S^2, CM/SEC**2, GAL), MM/S/S, M/S/S (M/S^2), IN/S/S, FT/S/S";
     let mut found: Option<(Real, String)> = None;
     for (k, line) in lines.iter().enumerate() {
         let upper = line.to_ascii_uppercase();
@@ -444,51 +445,79 @@ fn at2_units_factor(lines: &[&str]) -> Result<Real, (usize, String)> {
                 ));
             }
         }
-        let norm = upper.replace("**", "^").replace("SEC", "S");
-        let mut prev = "";
-        let mut mentions_units = false;
-        let mut unit_on_line = false;
-        for raw in norm.split(|c: char| c.is_whitespace() || matches!(c, ',' | ':' | '=' | ';')) {
-            if raw.is_empty() {
-                continue;
+        if let Some((f, tok)) = line_units(line).map_err(|m| (k + 1, m))? {
+            if let Some((g, u)) = &found
+                && *g != f
+            {
+                return Err((
+                    k + 1,
+                    format!(
+                        "the header names two different units, {u} and {tok}; {ACCEPTED_UNITS}"
+                    ),
+                ));
             }
-            let paren = raw.starts_with('(') || raw.ends_with(')');
-            let tok = raw.trim_matches(|c| matches!(c, '(' | ')' | '[' | ']'));
-            mentions_units |= tok.starts_with("UNIT");
-            let bare_g = tok == "G" && !(paren || matches!(prev, "OF" | "IN" | "UNITS" | "UNIT"));
-            match accel_unit_factor(tok).filter(|_| !bare_g) {
-                Some(f) => {
-                    if let Some((g, u)) = &found
-                        && *g != f
-                    {
-                        return Err((
-                            k + 1,
-                            format!(
-                                "the header names two different units, {u} and {tok}; {accepted}"
-                            ),
-                        ));
-                    }
-                    found = Some((f, tok.to_string()));
-                    unit_on_line = true;
-                }
-                None if looks_like_accel_unit(tok) => {
-                    return Err((
-                        k + 1,
-                        format!("unknown units {tok:?} in header line {line:?}; {accepted}"),
-                    ));
-                }
-                None => {}
-            }
-            prev = tok;
-        }
-        if mentions_units && !unit_on_line {
-            return Err((
-                k + 1,
-                format!("cannot read the units in header line {line:?}; {accepted}"),
-            ));
+            found = Some((f, tok));
         }
     }
     Ok(found.map_or(G0, |(f, _)| f))
+}
+
+const ACCEPTED_UNITS: &str =
+    "accepted: G, CM/S/S (CM/S^2, CM/SEC**2, GAL), MM/S/S, M/S/S (M/S^2), IN/S/S, FT/S/S";
+
+/// The acceleration unit a header `line` names (factor to m/s² and the unit as written,
+/// normalised), `None` if it names none, or an error for units it mentions but this reader does
+/// not know. `G` counts only after `OF`, `IN`, `UNITS` or in brackets (a bare `G` may be part of a
+/// name).
+fn line_units(line: &str) -> Result<Option<(Real, String)>, String> {
+    let norm = line
+        .to_ascii_uppercase()
+        .replace("**", "^")
+        .replace("SEC", "S");
+    let mut prev = "";
+    let mut mentions_units = false;
+    let mut found = None;
+    let seps = |c: char| c.is_whitespace() || matches!(c, ',' | ':' | '=' | ';' | '_');
+    for raw in norm.split(seps) {
+        if raw.is_empty() {
+            continue;
+        }
+        let bracketed = raw.starts_with(['(', '[']) || raw.ends_with([')', ']']);
+        let tok = raw.trim_matches(|c| matches!(c, '(' | ')' | '[' | ']'));
+        mentions_units |= tok.starts_with("UNIT");
+        let bare_g = tok == "G" && !(bracketed || matches!(prev, "OF" | "IN" | "UNITS" | "UNIT"));
+        match accel_unit_factor(tok).filter(|_| !bare_g) {
+            Some(f) => found = Some((f, tok.to_string())),
+            None if looks_like_accel_unit(tok) => {
+                return Err(format!(
+                    "unknown units {tok:?} in header line {line:?}; {ACCEPTED_UNITS}"
+                ));
+            }
+            None => {}
+        }
+        prev = tok;
+    }
+    if mentions_units && found.is_none() {
+        return Err(format!(
+            "cannot read the units in header line {line:?}; {ACCEPTED_UNITS}"
+        ));
+    }
+    Ok(found)
+}
+
+/// A CSV header that names acceleration units must agree with the units the file is read in.
+fn check_csv_header_units(line: &str, units: AccelUnits) -> Result<(), String> {
+    match line_units(line)? {
+        Some((f, tok)) if f != units.factor() => Err(format!(
+            "the header names the units {tok} but the record is read in {} (csv_units): set \
+             csv_units to match (\"g\" or \"m/s2\"), or convert the file",
+            match units {
+                AccelUnits::G => "g",
+                AccelUnits::MetresPerSecondSquared => "m/s2",
+            }
+        )),
+        _ => Ok(()),
+    }
 }
 
 /// Whether `tok` looks like a unit of acceleration (`X/S/S`, `X/S^2`, `X/S2`).

@@ -238,3 +238,78 @@ fn compare_exits_1_when_a_law_does_not_complete() {
     assert!(err.contains("rigid (Diverged)"), "{err}");
     assert!(d.join("o/compare.csv").is_file() && d.join("o/timing.json").is_file());
 }
+
+#[test]
+fn a_huge_shard_count_is_refused_not_a_panic() {
+    let d = tmp("shards");
+    for n in ["18446744073709551615", "1000000000000", "100001"] {
+        let (code, err) = run_in(&d, &["study", "--shard", &format!("1/{n}"), "--out", "s"]);
+        assert_eq!(code, Some(2), "{n}: {err}");
+        assert!(err.contains("100000"), "{err}");
+    }
+}
+
+#[test]
+fn a_failed_write_to_stdout_is_an_error_not_a_panic() {
+    let d = tmp("stdout");
+    let full = std::fs::OpenOptions::new().write(true).open("/dev/full");
+    let Ok(full) = full else {
+        crate::skipped("/dev/full is absent");
+        return;
+    };
+    for args in [
+        vec!["simulate", "--print-default"],
+        vec!["study", "--print-default"],
+        vec![
+            "impact",
+            "--shape",
+            "straight",
+            "--length",
+            "30",
+            "--length2",
+            "50",
+            "--mu",
+            "0.5",
+            "--eps",
+            "0.5",
+            "--json",
+        ],
+    ] {
+        let o = pounding()
+            .current_dir(&d)
+            .args(&args)
+            .stdout(full.try_clone().unwrap())
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains("error: failed printing to stdout"), "{err}");
+        assert!(!err.contains("panicked"), "{err}");
+    }
+}
+
+#[test]
+fn lcp_solve_exits_1_when_a_problem_is_not_solved_and_2_for_an_empty_set() {
+    let d = tmp("lcpexit");
+    // M = [[0]], q = [-1]: no solution (Lemke ends on a ray).
+    std::fs::write(d.join("ray.dat"), "1\n0\n1\n1\n1 1\n0\n-1\n").unwrap();
+    let (code, err) = run_in(&d, &["lcp", "solve", "ray.dat"]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(err.contains("1 of 1 problems not solved"), "{err}");
+    std::fs::write(d.join("empty.txt"), "LCPSET 1\nCOUNT 0\n").unwrap();
+    let (code, err) = run_in(&d, &["lcp", "solve", "empty.txt"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("COUNT 0"), "{err}");
+}
+
+#[test]
+fn a_repeated_block_column_in_a_sparse_block_file_is_refused() {
+    let d = tmp("dupblk");
+    // 2 block rows x 2 block columns of size 2; block row 0 lists block column 0 twice (the
+    // second block would silently overwrite the first).
+    let text = "4\n1\n4\n4\n3\n2\n2\n2 4\n2 4\n3\n3\n0 2 3\n0 0 1\n";
+    std::fs::write(d.join("dup.dat"), text).unwrap();
+    let (code, err) = run_in(&d, &["lcp", "solve", "dup.dat"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("not already used in this block row"), "{err}");
+}

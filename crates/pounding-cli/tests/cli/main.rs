@@ -38,8 +38,8 @@ fn help_lists_subcommands() {
 
 mod batch;
 mod compare;
-mod golden;
 mod fuzz;
+mod golden;
 mod harden;
 mod harden_input;
 mod harden_io;

@@ -118,7 +118,7 @@ pub(crate) fn kernel_full(
     let mut entering = n + r0; // the complement of w_{r0}
 
     loop {
-        if pivots >= s.max_pivots() {
+        if pivots >= s.pivot_limit(n) {
             return fail(LcpStatus::MaxPivots, pivots, z, w);
         }
         // entering column

@@ -333,6 +333,19 @@ fn parse_sbm(t: &mut Tokens<'_>, n: usize, m: &mut [f64]) -> Result<(), LcpIoErr
         if c >= bn1 {
             return Err(t.err(l, &format!("a block column index < {bn1}"), &c.to_string()));
         }
+        // Within one block row each block column appears once (a repeat would overwrite a block).
+        let row_start = ptr
+            .iter()
+            .take(bn0)
+            .rposition(|&p| p <= k)
+            .map_or(0, |r| ptr[r]);
+        if bcol[row_start..].contains(&c) {
+            return Err(t.err(
+                l,
+                "a block column index not already used in this block row",
+                &c.to_string(),
+            ));
+        }
         bcol.push(c);
     }
     for br in 0..bn0 {

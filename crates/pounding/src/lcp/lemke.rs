@@ -384,7 +384,7 @@ pub(crate) fn kernel(
     let last = n.saturating_sub(1);
 
     loop {
-        if pivots >= s.max_pivots() {
+        if pivots >= s.pivot_limit(n) {
             return fail(LcpStatus::MaxPivots, pivots, z, w);
         }
         // entering column (the entering variable is always nonbasic), with the scales of the

@@ -113,12 +113,16 @@ pub enum LcpStatus {
     IllConditioned,
 }
 
+/// Work bound of one Lemke solve, in units of `n²` pivot operations (see
+/// [`LemkeSettings::pivot_limit`]).
+pub const PIVOT_WORK: u128 = 20_000_000_000;
+
 /// Settings of Lemke's method, validated (every constructor and setter returns
 /// `Err(LcpError::Invalid)` for a value out of range).
 ///
 /// | field | default | meaning |
 /// |---|---|---|
-/// | `max_pivots` | 100 000 | pivot limit (counting the pivots in which `z₀` enters and leaves); reaching it gives [`LcpStatus::MaxPivots`] |
+/// | `max_pivots` | 100 000 | pivot limit (counting the pivots in which `z₀` enters and leaves), further capped at `2·10¹⁰/n²` for large `n` ([`pivot_limit`](LemkeSettings::pivot_limit)); reaching it gives [`LcpStatus::MaxPivots`] |
 /// | `pivot_tol` | 1e-12 | an entry `dᵢ` of the entering column takes part in the ratio test only if `dᵢ > pivot_tol · maxₖ |dₖ|` (relative to the column, hence scale-free) |
 /// | `tie_tol` | 1e-11 | two ratios `bᵢ/dᵢ`, `bⱼ/dⱼ` tie when they differ by at most `tie_tol · ‖b‖∞ · (1/dᵢ + 1/dⱼ)` (the rounding scale of the ratios, relative to the current right-hand side); tied `B⁻¹` entries likewise relative to the tied rows' scale; the initial row ties when `qᵢ ≤ min q + tie_tol·‖q‖∞` |
 /// | `verify_tol` | 1e-9 | [`LcpStatus::Solved`] requires, with `w = M z + q` recomputed from the data and `sᵢ = |qᵢ| + Σⱼ |Mᵢⱼ zⱼ|` (the rounding scale of row `i`): `z ≥ 0`, `wᵢ ≥ −verify_tol·sᵢ` and `|wᵢ| ≤ verify_tol·sᵢ` wherever `zᵢ > 0` (rounding-noise entries of `z` set aside; see the [`lemke`] module) |
@@ -189,6 +193,16 @@ impl LemkeSettings {
     /// Pivot limit.
     pub fn max_pivots(&self) -> usize {
         self.max_pivots
+    }
+
+    /// The pivot limit for a problem of size `n`: `max_pivots`, but at most
+    /// `⌈PIVOT_WORK / n²⌉` (each pivot costs about `n²` operations), so that no problem runs for
+    /// more than seconds. Nothing changes for `n ≤ 447` with the default `max_pivots`; a 1000 × 1000
+    /// problem that needs more (Murty's example needs `2ⁿ`) ends `MaxPivots` after 20 000 pivots.
+    pub fn pivot_limit(&self, n: usize) -> usize {
+        let n2 = (n.max(1) as u128) * (n.max(1) as u128);
+        let cap = PIVOT_WORK.div_ceil(n2).min(usize::MAX as u128) as usize;
+        self.max_pivots.min(cap)
     }
     /// Relative pivot tolerance.
     pub fn pivot_tol(&self) -> f64 {

@@ -36,10 +36,11 @@ impl BatchShard {
 
     /// Validated shard `K/N` with `1 ≤ K ≤ N`.
     pub fn new(index: usize, count: usize) -> Result<Self, SimError> {
-        if count == 0 || index == 0 || index > count {
+        let max = crate::study::run::MAX_SHARDS;
+        if count == 0 || index == 0 || index > count || count > max {
             return Err(SimError::InvalidArgument {
                 name: format!("shard {index}/{count}"),
-                reason: "need 1 <= K <= N".into(),
+                reason: format!("need 1 <= K <= N <= {max}"),
             });
         }
         Ok(Self { index, count })
@@ -49,7 +50,10 @@ impl BatchShard {
     pub fn parse(s: &str) -> Result<Self, SimError> {
         let bad = || SimError::InvalidArgument {
             name: format!("--shard {s:?}"),
-            reason: "expected K/N with 1 <= K <= N".into(),
+            reason: format!(
+                "expected K/N with 1 <= K <= N <= {}",
+                crate::study::run::MAX_SHARDS
+            ),
         };
         let (k, n) = s.split_once('/').ok_or_else(bad)?;
         let k = k.trim().parse::<usize>().map_err(|_| bad())?;

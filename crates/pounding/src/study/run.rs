@@ -32,9 +32,9 @@ impl Shard {
 
     /// Validated shard `K/N` with `1 ≤ K ≤ N`.
     pub fn new(index: usize, count: usize) -> Result<Self, StudyError> {
-        if count == 0 || index == 0 || index > count {
+        if count == 0 || index == 0 || index > count || count > MAX_SHARDS {
             return Err(StudyError::Shard(format!(
-                "shard {index}/{count}: need 1 <= K <= N"
+                "shard {index}/{count}: need 1 <= K <= N <= {MAX_SHARDS}"
             )));
         }
         Ok(Self { index, count })
@@ -42,7 +42,11 @@ impl Shard {
 
     /// Parses `K/N`.
     pub fn parse(s: &str) -> Result<Self, StudyError> {
-        let bad = || StudyError::Shard(format!("--shard {s:?}: expected K/N with 1 <= K <= N"));
+        let bad = || {
+            StudyError::Shard(format!(
+                "--shard {s:?}: expected K/N with 1 <= K <= N <= {MAX_SHARDS}"
+            ))
+        };
         let (k, n) = s.split_once('/').ok_or_else(bad)?;
         let k = k.trim().parse::<usize>().map_err(|_| bad())?;
         let n = n.trim().parse::<usize>().map_err(|_| bad())?;
@@ -79,6 +83,9 @@ pub struct RowKey {
     /// Index of `θ2` in its grid.
     pub j: usize,
 }
+
+/// Largest number of shards `N` of `--shard K/N` (study and batch): a merge holds one slot per shard.
+pub const MAX_SHARDS: usize = 100_000;
 
 /// The mixed-radix layout of the rows of a scenario.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -132,6 +132,13 @@ pub fn merge(parts: &[ShardFiles]) -> Result<Merged, StudyError> {
                  it existed must be computed again)",
             )
         })?;
+        let lines = p.rows.lines().count().saturating_sub(1) as u64;
+        if lines != rows_declared {
+            return Err(err(
+                &format!("{}/rows.csv", p.origin),
+                format!("holds {lines} rows but {mf} declares rows = {rows_declared}"),
+            ));
+        }
         let actual = fnv1a64_hex(p.rows.as_bytes());
         if actual != sum {
             return Err(err(
@@ -142,13 +149,6 @@ pub fn merge(parts: &[ShardFiles]) -> Result<Merged, StudyError> {
                 ),
             ));
         }
-        let lines = p.rows.lines().count().saturating_sub(1) as u64;
-        if lines != rows_declared {
-            return Err(err(
-                &format!("{}/rows.csv", p.origin),
-                format!("holds {lines} rows but {mf} declares rows = {rows_declared}"),
-            ));
-        }
         match (&scenario_text, count) {
             (None, None) => {
                 scenario_text = Some(text.to_string());
@@ -157,7 +157,25 @@ pub fn merge(parts: &[ShardFiles]) -> Result<Merged, StudyError> {
             }
             (Some(t), Some(c)) => {
                 if t != text {
-                    return Err(err(&p.origin, "scenario differs from the other shards'"));
+                    let (line, a, b) = t
+                        .lines()
+                        .chain(std::iter::repeat(""))
+                        .zip(text.lines().chain(std::iter::repeat("")))
+                        .take(t.lines().count().max(text.lines().count()))
+                        .enumerate()
+                        .find(|(_, (a, b))| a != b)
+                        .map_or((0, "(line endings or final newline)", ""), |(i, (a, b))| {
+                            (i + 1, a, b)
+                        });
+                    return Err(err(
+                        &mf,
+                        format!(
+                            "its scenario text differs from that of {} at line {line}: {b:?} vs \
+                             {a:?} (shards must come from the same scenario file, comments \
+                             included: merge writes it to scenario.toml)",
+                            parts[0].origin
+                        ),
+                    ));
                 }
                 if c != n {
                     return Err(err(&p.origin, format!("shard count {n} differs from {c}")));

@@ -278,3 +278,58 @@ mod records_round2 {
         assert_eq!(r.times().len(), 2);
     }
 }
+
+mod round2_more {
+    use pounding::ground_motion::{AccelUnits, Record};
+    use pounding::lcp::LemkeSettings;
+
+    #[test]
+    fn a_csv_header_naming_other_units_than_csv_units_is_refused() {
+        let text = "time,acc (m/s^2)\n0,1.0\n0.01,2.0\n";
+        let e = Record::from_csv_str(text, "m.csv", AccelUnits::G).unwrap_err();
+        assert!(
+            e.to_string().contains("m.csv") && e.to_string().contains("M/S^2"),
+            "{e}"
+        );
+        let r = Record::from_csv_str(text, "m.csv", AccelUnits::MetresPerSecondSquared).unwrap();
+        assert_eq!(r.values(), &[1.0, 2.0]);
+        // a header in g read in g is fine
+        assert!(Record::from_csv_str("t, a (g)\n0,0.1\n", "g.csv", AccelUnits::G).is_ok());
+    }
+
+    #[test]
+    fn the_pivot_limit_bounds_the_work_of_large_problems() {
+        let s = LemkeSettings::default();
+        assert_eq!(
+            s.pivot_limit(12),
+            100_000,
+            "impact-sized problems keep the full limit"
+        );
+        assert_eq!(s.pivot_limit(447), 100_000);
+        assert_eq!(s.pivot_limit(1000), 20_000);
+        assert!(s.pivot_limit(4096) * 4096 * 4096 <= 2 * pounding::lcp::PIVOT_WORK as usize);
+        assert!(s.pivot_limit(usize::MAX) >= 1);
+    }
+
+    #[test]
+    fn murty_ends_max_pivots_with_a_status() {
+        // Murty's example needs 2^n pivots; it must end with a status, not run for hours.
+        let n = 300;
+        let mut m = vec![0.0; n * n];
+        for i in 0..n {
+            for j in 0..n {
+                m[i * n + j] = if i == j {
+                    1.0
+                } else if i > j {
+                    2.0
+                } else {
+                    0.0
+                };
+            }
+        }
+        let p = pounding::lcp::LcpProblem::new(m, vec![-1.0; n]).unwrap();
+        let s = LemkeSettings::default().with_max_pivots(5_000).unwrap();
+        let sol = pounding::lcp::Lemke::new(s).solve(&p);
+        assert_eq!(sol.status, pounding::lcp::LcpStatus::MaxPivots);
+    }
+}
