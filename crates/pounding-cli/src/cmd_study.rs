@@ -259,11 +259,21 @@ fn exit_for(disagreements: usize) -> ExitCode {
     }
 }
 
-/// Removes what an earlier run may have left in `out` (`report.html` and `timing.json`, which are
-/// written last and so mark a complete run, and the figures), so that an interrupted run never
-/// leaves a set of files that looks complete but mixes two runs.
+/// Removes what an earlier run may have left in `out` (every file a study writes: `report.html`
+/// and `timing.json`, which are written last and so mark a complete run, the tables and the
+/// figures), so that an interrupted run never leaves an earlier run's results beside its own.
 fn remove_previous_outputs(lock: &OutputLock) -> Result<()> {
-    pounding::output::remove_previous_outputs(lock, &["report.html", "timing.json"])?;
+    pounding::output::remove_previous_outputs(
+        lock,
+        &[
+            "report.html",
+            "timing.json",
+            "bounds.csv",
+            "summary.csv",
+            "summary.json",
+            "scenario.toml",
+        ],
+    )?;
     let out = lock.dir();
     let remove = |p: &Path| match std::fs::remove_file(p) {
         Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
