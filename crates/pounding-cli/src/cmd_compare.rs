@@ -8,13 +8,14 @@
 //! force of the compliance laws), each with a full-duration panel and a zoom around the largest
 //! contact event.
 
-use crate::cmd_simulate::{self, sim_contact::LAW_NAMES};
+use crate::cmd_simulate;
 use anyhow::{Context, Result, anyhow, bail};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::{FontStyle, register_font};
 use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
+use pounding::sim::scenario::LAW_NAMES;
 use pounding::sim::{SimSolution, simulate};
 use serde_json::json;
 use std::path::{Path, PathBuf};
@@ -75,21 +76,14 @@ pub fn run(args: Args) -> Result<ExitCode> {
     {
         bail!("invalid --dt {dt}: must be finite and > 0");
     }
-    let sim_args = cmd_simulate::Args {
-        scenario: args.scenario.clone(),
-        record: None,
-        scale: None,
-        out: args.out.clone(),
-        print_default: false,
-        records: Vec::new(),
-        scales: Vec::new(),
-        threads: None,
-        shard: None,
-    };
     // Build (and validate) every law's setup before running anything.
+    let base = cmd_simulate::load_scenario(args.scenario.as_deref())?;
     let mut setups = Vec::new();
     for l in &laws {
-        let mut s = cmd_simulate::build_with(&sim_args, Some(l))
+        let mut s = base
+            .clone()
+            .with_law(l)
+            .build()
             .with_context(|| format!("contact law {l:?}"))?;
         if let Some(dt) = args.dt {
             s.settings.dt = dt;
