@@ -47,6 +47,28 @@ pub(super) fn sim_error(src: &Src, e: SimError) -> ScenarioError {
     }
 }
 
+/// [`sim_error`] for the model after `massJ` scaled the densities: a density that is no longer a
+/// normal number comes from the mass given, not from `density`.
+fn scaled_mass_error(src: &Src, e: SimError) -> ScenarioError {
+    let mut err = sim_error(src, e);
+    if let ScenarioError::Invalid { at, .. } = &mut err
+        && at.len() == 1
+        && at[0].key.section == Section::Decks
+        && at[0].key.key == "density"
+    {
+        let given: Vec<_> = [1, 2]
+            .into_iter()
+            .map(|j| ParamKey::of_deck(Section::Decks, if j == 1 { "mass1" } else { "mass2" }, j))
+            .filter(|&k| src.is_set(k))
+            .map(|k| src.at(k))
+            .collect();
+        if !given.is_empty() {
+            *at = given;
+        }
+    }
+    err
+}
+
 fn mass_key(src: &Src, deck: u8) -> ParamKey {
     let key = ParamKey::of_deck(
         Section::Decks,
@@ -351,7 +373,7 @@ pub(super) fn build(sc: &Scenario) -> Result<SimSetup, ScenarioError> {
         ..SimSettings::default()
     };
     settings.validate().map_err(|e| sim_error(src, e))?;
-    model.validate().map_err(|e| sim_error(src, e))?;
+    model.validate().map_err(|e| scaled_mass_error(src, e))?;
     model.linear_system().map_err(|e| sim_error(src, e))?;
     if !sc.batch && settings.duration.is_none() && ground.end_time() <= 0.0 {
         return Err(src.key_error(
