@@ -19,7 +19,7 @@ use pounding::sim::batch::{BatchRecord, BatchRow, run_batch};
 use pounding::sim::output::batch_csv;
 use pounding::sim::{SimProblem, SimSettings, SimStatus};
 use serde_json::json;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
@@ -129,7 +129,26 @@ pub fn run(
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
     wr("batch.csv", batch_csv(&rows).as_bytes())?;
-    let curves: Vec<BatchCurve> = records
+    let curves = curves(&records, &rows);
+    sim_plots::batch_plot(out, "batch.png", &curves, base.model.seat_length)
+        .map_err(|e| anyhow!("plotting: {e}"))?;
+    let timing = json!({
+        "runs_s": runs_secs,
+        "wall_time_s": t_start.elapsed().as_secs_f64(),
+        "runs": rows.len(),
+        "threads": pool.current_num_threads(),
+    });
+    wr(
+        "timing.json",
+        (serde_json::to_string_pretty(&timing)? + "\n").as_bytes(),
+    )?;
+
+    Ok(report(&rows, runs_secs, out))
+}
+
+/// The curves of `batch.png`: per record, the peak responses of its completed runs against PGA.
+fn curves(records: &[BatchRecord], rows: &[BatchRow]) -> Vec<BatchCurve> {
+    records
         .iter()
         .enumerate()
         .map(|(a, rec)| {
@@ -157,20 +176,11 @@ pub fn run(
             BatchCurve { label, pts }
         })
         .filter(|c| !c.pts.is_empty())
-        .collect();
-    sim_plots::batch_plot(out, "batch.png", &curves, base.model.seat_length)
-        .map_err(|e| anyhow!("plotting: {e}"))?;
-    let timing = json!({
-        "runs_s": runs_secs,
-        "wall_time_s": t_start.elapsed().as_secs_f64(),
-        "runs": rows.len(),
-        "threads": pool.current_num_threads(),
-    });
-    wr(
-        "timing.json",
-        (serde_json::to_string_pretty(&timing)? + "\n").as_bytes(),
-    )?;
+        .collect()
+}
 
+/// Prints the batch's summary and errors; exit code 1 when a run failed or is not trustworthy.
+fn report(rows: &[BatchRow], runs_secs: f64, out: &Path) -> ExitCode {
     let failed: Vec<&BatchRow> = rows.iter().filter(|r| r.outcome.is_err()).collect();
     let unseated = rows
         .iter()
@@ -199,11 +209,11 @@ pub fn run(
         );
     }
     if failed.is_empty() {
-        return Ok(if untrusted.is_empty() {
+        return if untrusted.is_empty() {
             ExitCode::SUCCESS
         } else {
             ExitCode::from(1)
-        });
+        };
     }
     // One message per distinct error (an unreadable record fails all its scales alike).
     let mut msgs: Vec<&str> = failed
@@ -219,5 +229,5 @@ pub fn run(
         failed.len(),
         rows.len()
     );
-    Ok(ExitCode::from(1))
+    ExitCode::from(1)
 }

@@ -105,19 +105,14 @@ const fn contact(key: &'static str) -> ParamKey {
     ParamKey::new(Section::Contact, key)
 }
 
-/// Builds the joint contact for `law` (overriding `[contact] law` when given) from the section;
-/// `eps_n` is the default restitution, `masses` the deck masses (Kelvin, Jankowski calibrations).
-pub(super) fn build_contact(
+/// The compliance law `name` (not `rigid`) from the `[contact]` keys and their defaults.
+fn compliance_law(
     src: &Src,
     sec: &ContactSec,
-    law: Option<&str>,
+    name: &str,
     eps_n: f64,
     masses: [f64; 2],
-) -> Result<JointContact, ScenarioError> {
-    let name = law
-        .map(str::to_string)
-        .or_else(|| sec.law.clone())
-        .unwrap_or_else(|| "rigid".into());
+) -> Result<ContactLaw, ScenarioError> {
     let e = sec.restitution.unwrap_or(eps_n);
     let cal = sec.calibration.as_deref().unwrap_or("numerical");
     let bad_cal = |allowed: &str| {
@@ -130,8 +125,7 @@ pub(super) fn build_contact(
         )
     };
     let le = |r: Result<ContactLaw, ContactLawError>| r.map_err(|e| law_err(src, e));
-    let law: ContactLaw = match name.as_str() {
-        "rigid" => return Ok(JointContact::Rigid),
+    Ok(match name {
         "kelvin" => {
             let k = sec.k.unwrap_or(DEFAULT_K);
             le(match sec.c {
@@ -224,7 +218,26 @@ pub(super) fn build_contact(
                 &[contact("law")],
             ));
         }
-    };
+    })
+}
+
+/// Builds the joint contact for `law` (overriding `[contact] law` when given) from the section;
+/// `eps_n` is the default restitution, `masses` the deck masses (Kelvin, Jankowski calibrations).
+pub(super) fn build_contact(
+    src: &Src,
+    sec: &ContactSec,
+    law: Option<&str>,
+    eps_n: f64,
+    masses: [f64; 2],
+) -> Result<JointContact, ScenarioError> {
+    let name = law
+        .map(str::to_string)
+        .or_else(|| sec.law.clone())
+        .unwrap_or_else(|| "rigid".into());
+    if name == "rigid" {
+        return Ok(JointContact::Rigid);
+    }
+    let law = compliance_law(src, sec, &name, eps_n, masses)?;
     let mut cc = ComplianceContact::new(law);
     if let Some(v) = sec.friction_velocity {
         if !(v.is_finite() && v > 0.0) {
