@@ -43,7 +43,7 @@ pub(super) fn sim_error(src: &Src, e: SimError) -> ScenarioError {
     };
     match key {
         Some(key) => src.invalid(e.to_string(), key),
-        None => ScenarioError::Model(e),
+        None => ScenarioError::Model(Box::new(e)),
     }
 }
 
@@ -188,11 +188,17 @@ fn load_record(
         };
         return Record::from_at2_str(text, name)
             .map(Some)
-            .map_err(|error| ScenarioError::Record { at: at(), error });
+            .map_err(|error| ScenarioError::Record {
+                at: at(),
+                error: Box::new(error),
+            });
     }
     Record::from_path(&src.dir.join(spec_t), units)
         .map(Some)
-        .map_err(|error| ScenarioError::Record { at: at(), error })
+        .map_err(|error| ScenarioError::Record {
+            at: at(),
+            error: Box::new(error),
+        })
 }
 
 /// The model of `[decks]`, `[joint]`, `[abutments]`, `[bearings]` and `[contact]`.
@@ -325,7 +331,7 @@ fn build_ground(sc: &Scenario) -> Result<(GroundMotion, [String; 2], AccelUnits)
             let r = Record::from_path(p, u.unwrap_or(units)).map_err(|error| {
                 ScenarioError::RecordOverride {
                     path: p.display().to_string(),
-                    error,
+                    error: Box::new(error),
                 }
             })?;
             (Some(r), None, [p.display().to_string(), "none".into()])

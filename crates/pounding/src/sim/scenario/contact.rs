@@ -86,7 +86,7 @@ pub fn default_k_h() -> f64 {
 fn law_err(src: &Src, e: ContactLawError) -> ScenarioError {
     let ContactLawError::InvalidParameter { name, .. } = &e;
     let Some(key) = ParamKey::of_contact_parameter(name) else {
-        return ScenarioError::Law(e);
+        return ScenarioError::Law(Box::new(e));
     };
     let at = src.at(key);
     let note = if key.key == "restitution" && at.line.is_none() {

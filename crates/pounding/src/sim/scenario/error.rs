@@ -248,7 +248,7 @@ pub enum ScenarioError {
         /// The key that names the record.
         at: KeyRef,
         /// Why it cannot be read (names the file and line).
-        error: GroundMotionError,
+        error: Box<GroundMotionError>,
     },
     /// The record given instead of the scenario's ([`super::Scenario::with_record`]) cannot be read.
     #[error("--record {path}: {error}")]
@@ -256,17 +256,17 @@ pub enum ScenarioError {
         /// The path as given.
         path: String,
         /// Why it cannot be read.
-        error: GroundMotionError,
+        error: Box<GroundMotionError>,
     },
     /// A scale multiplier ([`super::Scenario::with_scale`]) that is not finite.
     #[error("invalid --scale {0}: must be finite")]
     Scale(f64),
     /// A contact-law error of a parameter that no `[contact]` key sets.
     #[error(transparent)]
-    Law(#[from] crate::contact_law::ContactLawError),
+    Law(Box<crate::contact_law::ContactLawError>),
     /// A model error of a parameter that no scenario key sets.
     #[error(transparent)]
-    Model(#[from] SimError),
+    Model(Box<SimError>),
 }
 
 impl ScenarioError {
