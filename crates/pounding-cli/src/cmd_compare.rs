@@ -8,13 +8,15 @@
 //! force of the compliance laws), each with a full-duration panel and a zoom around the largest
 //! contact event.
 
-use crate::cmd_simulate::{self, sim_contact::LAW_NAMES};
+use crate::cmd_simulate;
 use anyhow::{Context, Result, anyhow, bail};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::{FontStyle, register_font};
 use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
+use pounding::sim::output::{COMPARE_OUTPUTS, compare_csv, compare_table};
+use pounding::sim::scenario::LAW_NAMES;
 use pounding::sim::{SimSolution, simulate};
 use serde_json::json;
 use std::path::{Path, PathBuf};
@@ -75,21 +77,14 @@ pub fn run(args: Args) -> Result<ExitCode> {
     {
         bail!("invalid --dt {dt}: must be finite and > 0");
     }
-    let sim_args = cmd_simulate::Args {
-        scenario: args.scenario.clone(),
-        record: None,
-        scale: None,
-        out: args.out.clone(),
-        print_default: false,
-        records: Vec::new(),
-        scales: Vec::new(),
-        threads: None,
-        shard: None,
-    };
     // Build (and validate) every law's setup before running anything.
+    let base = cmd_simulate::load_scenario(args.scenario.as_deref())?;
     let mut setups = Vec::new();
     for l in &laws {
-        let mut s = cmd_simulate::build_with(&sim_args, Some(l))
+        let mut s = base
+            .clone()
+            .with_law(l)
+            .build()
             .with_context(|| format!("contact law {l:?}"))?;
         if let Some(dt) = args.dt {
             s.settings.dt = dt;
@@ -144,12 +139,13 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let out = &args.out;
     let lock = pounding::output::lock_output_dir(out)?;
     pounding::output::remove_previous_outputs(&lock, COMPARE_OUTPUTS)?;
+    let rows: Vec<(&str, &SimSolution)> = runs.iter().map(|r| (r.law.as_str(), &r.sol)).collect();
     let wr = |name: &str, bytes: &[u8]| {
         write_atomic(&out.join(name), bytes)
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
-    wr("compare.csv", compare_csv(&runs).as_bytes())?;
-    print!("{}", table(&runs));
+    wr("compare.csv", compare_csv(&rows).as_bytes())?;
+    print!("{}", compare_table(&rows));
     plots(out, &runs).map_err(|e| anyhow!("plotting: {e}"))?;
     let mut timing = serde_json::Map::new();
     for r in &runs {
@@ -181,89 +177,6 @@ pub fn run(args: Args) -> Result<ExitCode> {
         return Ok(ExitCode::FAILURE);
     }
     Ok(ExitCode::SUCCESS)
-}
-
-const DEG: Real = 180.0 / std::f64::consts::PI;
-
-/// Every file `compare` writes; removed before a new run writes. `timing.json` is written last
-/// and marks a complete run (as in `pounding study`).
-const COMPARE_OUTPUTS: &[&str] = &[
-    "timing.json",
-    "compare.csv",
-    "joint_gap.png",
-    "contact_force.png",
-];
-
-/// Columns of `compare.csv` (the stdout table shows a subset).
-const HEADER: &str = "law,impacts,impacting_contacts,peak_contact_force_N,peak_penetration_m,\
-peak_joint_closing_m,peak_joint_opening_m,peak_rotation1_deg,peak_rotation2_deg,peak_slip_m,\
-peak_seat_displacement_m,unseated,unseating_time_s,contact_dissipation_J,steps_per_contact,status";
-
-fn compare_csv(runs: &[Run]) -> String {
-    let mut s = String::from(HEADER);
-    s.push('\n');
-    for r in runs {
-        let m = &r.sol.summary;
-        let row = [
-            r.law.clone(),
-            m.impacts.to_string(),
-            m.impacting_contacts.to_string(),
-            float_token(m.peak_contact_force.unwrap_or(Real::NAN)),
-            float_token(m.peak_penetration),
-            float_token(m.peak_joint_closing),
-            float_token(m.peak_joint_opening),
-            float_token(m.peak_rotation[0] * DEG),
-            float_token(m.peak_rotation[1] * DEG),
-            float_token(m.peak_slip),
-            float_token(m.peak_seat_displacement),
-            m.unseated.to_string(),
-            float_token(m.unseating_time.unwrap_or(Real::NAN)),
-            float_token(m.final_energy.contact),
-            float_token(
-                r.sol
-                    .time_step_advice
-                    .map_or(Real::NAN, |a| a.steps_per_contact),
-            ),
-            format!("{:?}", r.sol.status),
-        ];
-        s.push_str(&row.join(","));
-        s.push('\n');
-    }
-    s
-}
-
-fn table(runs: &[Run]) -> String {
-    let mut s = format!(
-        "{:<11} {:>7} {:>11} {:>10} {:>11} {:>17} {:>9} {:>9}\n",
-        "law",
-        "impacts",
-        "force [MN]",
-        "pen. [mm]",
-        "closing [m]",
-        "rotation [deg]",
-        "seat [m]",
-        "unseated"
-    );
-    for r in runs {
-        let m = &r.sol.summary;
-        let f = m
-            .peak_contact_force
-            .map_or("-".to_string(), |f| format!("{:.3}", f / 1e6));
-        s.push_str(&format!(
-            "{:<11} {:>7} {:>11} {:>10.3} {:>11.5} {:>8.4}/{:<8.4} {:>9.4} {:>9}\n",
-            r.law,
-            m.impacts,
-            f,
-            m.peak_penetration * 1e3,
-            m.peak_joint_closing,
-            m.peak_rotation[0] * DEG,
-            m.peak_rotation[1] * DEG,
-            m.peak_seat_displacement,
-            if m.unseated { "YES" } else { "no" }
-        ));
-    }
-    s.push_str("(rigid contact has impulses, no force: its force column is '-')\n");
-    s
 }
 
 // ---------------------------------------------------------------- plots

@@ -7,19 +7,24 @@
 //! exit code is 1. A run that ends with a status other than `Completed` (e.g. `Diverged`) is
 //! written and also makes the exit code 1.
 
+use super::Args;
 use super::sim_plots::{self, BatchCurve};
-use super::{Args, DEG};
 use anyhow::{Context, Result, anyhow, bail};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use pounding::ground_motion::{AccelUnits, G0, Record};
 use pounding::math::Real;
-use pounding::output::{float_token, write_atomic};
-use pounding::sim::batch::{BatchRecord, BatchRow, BatchShard, run_batch};
-use pounding::sim::{SEAT_ENDS, SimProblem, SimSettings, SimStatus};
+use pounding::output::write_atomic;
+use pounding::shard::Shard;
+use pounding::sim::batch::{BatchRecord, BatchRow, run_batch};
+use pounding::sim::output::batch_csv;
+use pounding::sim::{SimProblem, SimSettings, SimStatus};
 use serde_json::json;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
+
+/// Degrees per radian (as in `summary.json`).
+const DEG: Real = 180.0 / std::f64::consts::PI;
 
 /// The record files of `--records`: files as given, directories expanded to their `.AT2` / `.csv`
 /// files (any case) sorted by file name.
@@ -52,78 +57,6 @@ fn expand_records(paths: &[PathBuf]) -> Result<Vec<PathBuf>> {
     Ok(out)
 }
 
-/// CSV field: quoted when it contains a comma, a quote or a line break.
-fn field(s: &str) -> String {
-    if s.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
-    }
-}
-
-/// Header of `batch.csv`.
-pub const BATCH_HEADER: &str = "index,record,scale,pga_g,pga_mps2,status,impacts,impacting_contacts,\
-peak_joint_closing_m,peak_joint_opening_m,peak_rotation1_deg,peak_rotation2_deg,peak_slip_m,\
-peak_seat_displacement_m,unseated,unseating_time_s,unseated_end,max_penetration_m,\
-energy_balance_error,input_energy_J,viscous_dissipation_J,contact_dissipation_J,duration_s,steps,\
-lcp_solves,lcp_failures,error";
-
-fn batch_csv(rows: &[BatchRow]) -> String {
-    let mut s = String::from(BATCH_HEADER);
-    s.push('\n');
-    let ncols = BATCH_HEADER.split(',').count();
-    for r in rows {
-        let mut c: Vec<String> = vec![r.index.to_string(), field(&r.record), float_token(r.scale)];
-        match &r.outcome {
-            Err(msg) => {
-                c.extend(["".into(), "".into(), "error".into()]);
-                c.resize(ncols - 1, String::new());
-                c.push(field(msg));
-            }
-            Ok(o) => {
-                let m = &o.summary;
-                c.push(float_token(r.pga / G0));
-                c.push(float_token(r.pga));
-                c.push(format!("{:?}", o.status));
-                c.push(m.impacts.to_string());
-                c.push(m.impacting_contacts.to_string());
-                for v in [
-                    m.peak_joint_closing,
-                    m.peak_joint_opening,
-                    m.peak_rotation[0] * DEG,
-                    m.peak_rotation[1] * DEG,
-                    m.peak_slip,
-                    m.peak_seat_displacement,
-                ] {
-                    c.push(float_token(v));
-                }
-                c.push(m.unseated.to_string());
-                c.push(m.unseating_time.map_or(String::new(), float_token));
-                c.push(m.unseated_end.map_or("", |i| SEAT_ENDS[i]).to_string());
-                let e = &m.final_energy;
-                for v in [
-                    m.max_penetration,
-                    m.energy_balance_error,
-                    e.input,
-                    e.viscous,
-                    e.contact,
-                    o.steps as Real * o.dt,
-                ] {
-                    c.push(float_token(v));
-                }
-                c.push(o.steps.to_string());
-                c.push(o.lcp_solves.to_string());
-                c.push(o.lcp_failures.to_string());
-                c.push(String::new());
-            }
-        }
-        debug_assert_eq!(c.len(), ncols);
-        s.push_str(&c.join(","));
-        s.push('\n');
-    }
-    s
-}
-
 /// Runs the batch (after the scenario has been built and validated).
 pub fn run(
     args: &Args,
@@ -139,8 +72,8 @@ pub fn run(
         args.scales.clone()
     };
     let shard = match &args.shard {
-        Some(s) => BatchShard::parse(s).map_err(|e| anyhow!("{e}"))?,
-        None => BatchShard::ALL,
+        Some(s) => Shard::parse(s)?,
+        None => Shard::ALL,
     };
     pounding::input::check_threads(args.threads).map_err(anyhow::Error::msg)?;
     let records: Vec<BatchRecord> = paths
@@ -163,7 +96,7 @@ pub fn run(
         records.len(),
         scales.len(),
         total,
-        if shard == BatchShard::ALL {
+        if shard == Shard::ALL {
             String::new()
         } else {
             format!(" (shard {}/{}: {todo} runs)", shard.index, shard.count)
@@ -196,7 +129,26 @@ pub fn run(
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
     wr("batch.csv", batch_csv(&rows).as_bytes())?;
-    let curves: Vec<BatchCurve> = records
+    let curves = curves(&records, &rows);
+    sim_plots::batch_plot(out, "batch.png", &curves, base.model.seat_length)
+        .map_err(|e| anyhow!("plotting: {e}"))?;
+    let timing = json!({
+        "runs_s": runs_secs,
+        "wall_time_s": t_start.elapsed().as_secs_f64(),
+        "runs": rows.len(),
+        "threads": pool.current_num_threads(),
+    });
+    wr(
+        "timing.json",
+        (serde_json::to_string_pretty(&timing)? + "\n").as_bytes(),
+    )?;
+
+    Ok(report(&rows, runs_secs, out))
+}
+
+/// The curves of `batch.png`: per record, the peak responses of its completed runs against PGA.
+fn curves(records: &[BatchRecord], rows: &[BatchRow]) -> Vec<BatchCurve> {
+    records
         .iter()
         .enumerate()
         .map(|(a, rec)| {
@@ -224,20 +176,11 @@ pub fn run(
             BatchCurve { label, pts }
         })
         .filter(|c| !c.pts.is_empty())
-        .collect();
-    sim_plots::batch_plot(out, "batch.png", &curves, base.model.seat_length)
-        .map_err(|e| anyhow!("plotting: {e}"))?;
-    let timing = json!({
-        "runs_s": runs_secs,
-        "wall_time_s": t_start.elapsed().as_secs_f64(),
-        "runs": rows.len(),
-        "threads": pool.current_num_threads(),
-    });
-    wr(
-        "timing.json",
-        (serde_json::to_string_pretty(&timing)? + "\n").as_bytes(),
-    )?;
+        .collect()
+}
 
+/// Prints the batch's summary and errors; exit code 1 when a run failed or is not trustworthy.
+fn report(rows: &[BatchRow], runs_secs: f64, out: &Path) -> ExitCode {
     let failed: Vec<&BatchRow> = rows.iter().filter(|r| r.outcome.is_err()).collect();
     let unseated = rows
         .iter()
@@ -266,11 +209,11 @@ pub fn run(
         );
     }
     if failed.is_empty() {
-        return Ok(if untrusted.is_empty() {
+        return if untrusted.is_empty() {
             ExitCode::SUCCESS
         } else {
             ExitCode::from(1)
-        });
+        };
     }
     // One message per distinct error (an unreadable record fails all its scales alike).
     let mut msgs: Vec<&str> = failed
@@ -286,5 +229,5 @@ pub fn run(
         failed.len(),
         rows.len()
     );
-    Ok(ExitCode::from(1))
+    ExitCode::from(1)
 }

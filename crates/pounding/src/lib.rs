@@ -25,6 +25,7 @@
 //!   the embedded El Centro 1940 record.
 //! * [`sim`] — seismic time histories of two decks with pounding: bearings, Rayleigh damping,
 //!   Moreau–Jean time stepping with the impact LCP at every step, abutments, batch runs.
+//! * [`shard`] — `--shard K/N`: which rows of a study or runs of a batch one process computes.
 //! * [`toml_schema`] — strict table and fixed-length array shapes for scenario files.
 //! * [`output`] — deterministic number formatting and atomic file output shared by every writer.
 //! * [`input`] — input files read within documented size limits, strict JSON, the thread limit.
@@ -46,6 +47,7 @@ pub mod math;
 pub mod output;
 pub mod pair;
 pub mod shape;
+pub mod shard;
 pub mod sim;
 pub mod study;
 pub mod toml_schema;

@@ -1,4 +1,6 @@
-//! Strict shapes for scenario files read with `serde` and `toml`.
+//! Strict shapes for scenario files read with `serde` and `toml`, and the one locator of keys and
+//! lines ([`line_col`], [`key_on_line`], [`line_of_key`]) that `study` and `simulate` use in
+//! their error messages.
 //!
 //! `serde`'s derived `Deserialize` for a struct accepts a *sequence* as well as a map: the values
 //! are taken as the fields in declaration order. In a scenario file that turns a slip of the pen
@@ -87,6 +89,67 @@ impl<'de, const N: usize> Deserialize<'de> for Exact<N> {
     }
 }
 
+/// 1-based `(line, column)` of byte offset `pos` in `text` (column in characters).
+pub fn line_col(text: &str, pos: usize) -> (usize, usize) {
+    let pos = floor_char_boundary(text, pos.min(text.len()));
+    let before = &text[..pos];
+    let line = before.matches('\n').count() + 1;
+    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, col)
+}
+
+fn floor_char_boundary(text: &str, mut pos: usize) -> usize {
+    while !text.is_char_boundary(pos) {
+        pos -= 1;
+    }
+    pos
+}
+
+/// The key written on the line containing byte offset `pos` (the text before `=`), prefixed by
+/// its enclosing `[table]` as `table.key`; `None` on a comment, a header or a line without `=`.
+pub fn key_on_line(text: &str, pos: usize) -> Option<String> {
+    let pos = floor_char_boundary(text, pos.min(text.len()));
+    let start = text[..pos].rfind('\n').map_or(0, |i| i + 1);
+    let end = text[pos..].find('\n').map_or(text.len(), |i| pos + i);
+    let line = &text[start..end];
+    let (k, _) = line.split_once('=')?;
+    let k = k.trim();
+    if k.is_empty() || k.starts_with('#') || k.starts_with('[') {
+        return None;
+    }
+    // Prefix the enclosing `[table]`, if any.
+    let table = text[..start].lines().rev().find_map(|l| {
+        let l = l.trim();
+        l.strip_prefix('[')
+            .and_then(|r| r.split(']').next())
+            .map(|t| t.trim().to_string())
+    });
+    Some(match table {
+        Some(t) if !t.is_empty() => format!("{t}.{k}"),
+        _ => k.to_string(),
+    })
+}
+
+/// 1-based line on which `key` is written in `[section]` of `text` (`key = …`, the key bare or
+/// quoted), or `None` when the file does not set it (commented-out keys do not count).
+pub fn line_of_key(text: &str, section: &str, key: &str) -> Option<usize> {
+    let mut cur = "";
+    for (i, raw) in text.lines().enumerate() {
+        let l = raw.trim();
+        if l.starts_with('[') {
+            cur = l.trim_matches(|c| c == '[' || c == ']').trim();
+            continue;
+        }
+        if cur == section
+            && let Some((k, _)) = l.split_once('=')
+            && k.trim().trim_matches('"') == key
+        {
+            return Some(i + 1);
+        }
+    }
+    None
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -129,6 +192,24 @@ mod tests {
         assert!(e.span().is_some());
         // Unknown fields are still refused inside the table.
         assert!(toml::from_str::<Doc>("r = { start = 1, stop = 2, step = 3 }").is_err());
+    }
+
+    #[test]
+    fn locator_finds_keys_and_lines() {
+        let t = "a = 1\n[decks]\n# R1 = 3\nR1 = 100.0\n\"R2\" = 5\n[time]\ndt = 1e-3\n";
+        assert_eq!(line_of_key(t, "decks", "R1"), Some(4));
+        assert_eq!(line_of_key(t, "decks", "R2"), Some(5));
+        assert_eq!(line_of_key(t, "decks", "dt"), None);
+        assert_eq!(line_of_key(t, "time", "dt"), Some(7));
+        assert_eq!(line_of_key(t, "", "a"), Some(1));
+        let pos = t.find("100.0").unwrap();
+        assert_eq!(line_col(t, pos), (4, 6));
+        assert_eq!(key_on_line(t, pos).as_deref(), Some("decks.R1"));
+        assert_eq!(key_on_line(t, 0).as_deref(), Some("a"));
+        assert_eq!(key_on_line(t, t.find("# R1").unwrap()), None);
+        // offsets past the end or inside a multi-byte character do not panic
+        assert_eq!(line_col("é", 1), (1, 1));
+        assert_eq!(line_col(t, 10_000).0, 8);
     }
 
     #[test]

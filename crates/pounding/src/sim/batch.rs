@@ -21,51 +21,8 @@ use crate::ground_motion::{GroundMotion, Record};
 use crate::math::Real;
 use rayon::prelude::*;
 
-/// Which runs a batch computes: those whose global index `i` satisfies `i mod count = index − 1`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub struct BatchShard {
-    /// `K`, 1-based.
-    pub index: usize,
-    /// `N ≥ 1`.
-    pub count: usize,
-}
-
-impl BatchShard {
-    /// Every run (`1/1`).
-    pub const ALL: BatchShard = BatchShard { index: 1, count: 1 };
-
-    /// Validated shard `K/N` with `1 ≤ K ≤ N`.
-    pub fn new(index: usize, count: usize) -> Result<Self, SimError> {
-        let max = crate::study::run::MAX_SHARDS;
-        if count == 0 || index == 0 || index > count || count > max {
-            return Err(SimError::InvalidArgument {
-                name: format!("shard {index}/{count}"),
-                reason: format!("need 1 <= K <= N <= {max}"),
-            });
-        }
-        Ok(Self { index, count })
-    }
-
-    /// Parses `K/N` (errors name `--shard`).
-    pub fn parse(s: &str) -> Result<Self, SimError> {
-        let bad = || SimError::InvalidArgument {
-            name: format!("--shard {s:?}"),
-            reason: format!(
-                "expected K/N with 1 <= K <= N <= {}",
-                crate::study::run::MAX_SHARDS
-            ),
-        };
-        let (k, n) = s.split_once('/').ok_or_else(bad)?;
-        let k = k.trim().parse::<usize>().map_err(|_| bad())?;
-        let n = n.trim().parse::<usize>().map_err(|_| bad())?;
-        Self::new(k, n).map_err(|_| bad())
-    }
-
-    /// Whether global run `i` belongs to this shard.
-    pub fn contains(&self, i: usize) -> bool {
-        i % self.count == self.index - 1
-    }
-}
+/// Which runs a batch computes (the shard type shared with `study`).
+pub type BatchShard = crate::shard::Shard;
 
 /// One ground-motion record of a batch, or the reason it could not be read.
 #[derive(Debug, Clone, PartialEq)]

@@ -56,6 +56,8 @@ pub mod compliance;
 pub mod contact;
 pub mod model;
 pub mod options;
+pub mod output;
+pub mod scenario;
 
 use crate::analytic::{ImpactLaw, SlipMode};
 use crate::geometry::{ContactCase, GeometryError, SArrangement};

@@ -39,8 +39,8 @@ pub enum StudyError {
     #[error(transparent)]
     Law(#[from] crate::analytic::LawError),
     /// A bad `--shard K/N`.
-    #[error("{0}")]
-    Shard(String),
+    #[error(transparent)]
+    Shard(#[from] crate::shard::ShardError),
     /// A `bounds.csv` line that cannot be parsed back.
     #[error("cannot parse bounds row: {0}")]
     Parse(String),

@@ -17,47 +17,7 @@ use crate::pair::DeckPair;
 use crate::shape::{DeckShape, SkewedDeck, StraightDeck};
 use rayon::prelude::*;
 
-/// Which rows a run computes: those whose global index `i` satisfies `i mod count = index − 1`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub struct Shard {
-    /// `K`, 1-based.
-    pub index: usize,
-    /// `N ≥ 1`.
-    pub count: usize,
-}
-
-impl Shard {
-    /// The whole study (`1/1`).
-    pub const ALL: Shard = Shard { index: 1, count: 1 };
-
-    /// Validated shard `K/N` with `1 ≤ K ≤ N`.
-    pub fn new(index: usize, count: usize) -> Result<Self, StudyError> {
-        if count == 0 || index == 0 || index > count || count > MAX_SHARDS {
-            return Err(StudyError::Shard(format!(
-                "shard {index}/{count}: need 1 <= K <= N <= {MAX_SHARDS}"
-            )));
-        }
-        Ok(Self { index, count })
-    }
-
-    /// Parses `K/N`.
-    pub fn parse(s: &str) -> Result<Self, StudyError> {
-        let bad = || {
-            StudyError::Shard(format!(
-                "--shard {s:?}: expected K/N with 1 <= K <= N <= {MAX_SHARDS}"
-            ))
-        };
-        let (k, n) = s.split_once('/').ok_or_else(bad)?;
-        let k = k.trim().parse::<usize>().map_err(|_| bad())?;
-        let n = n.trim().parse::<usize>().map_err(|_| bad())?;
-        Self::new(k, n).map_err(|_| bad())
-    }
-
-    /// Whether global row `i` belongs to this shard.
-    pub fn contains(&self, i: usize) -> bool {
-        i % self.count == self.index - 1
-    }
-}
+pub use crate::shard::Shard;
 
 /// Indices of a row in the scenario's lists. The four geometry indices address the geometry axes
 /// of [`Scenario::geometry_dims`]: for straight and skewed decks `beta1` indexes `l1_m`, `beta2`
@@ -84,8 +44,7 @@ pub struct RowKey {
     pub j: usize,
 }
 
-/// Largest number of shards `N` of `--shard K/N` (study and batch): a merge holds one slot per shard.
-pub const MAX_SHARDS: usize = 100_000;
+pub use crate::shard::MAX_SHARDS;
 
 /// The mixed-radix layout of the rows of a scenario.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -10,7 +10,7 @@
 
 use crate::geometry::{ContactCase, SigmaMode};
 use crate::math::Real;
-use crate::toml_schema::Table;
+use crate::toml_schema::{Table, key_on_line, line_col};
 use serde::Deserialize;
 use std::ops::Range;
 use thiserror::Error;
@@ -334,39 +334,6 @@ struct RawOutput {
     figures: S<bool>,
     svg: S<bool>,
     region_map_samples: S<i64>,
-}
-
-/// 1-based (line, column) of byte offset `pos` in `text`.
-fn line_col(text: &str, pos: usize) -> (usize, usize) {
-    let pos = pos.min(text.len());
-    let before = &text[..pos];
-    let line = before.matches('\n').count() + 1;
-    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-    (line, col)
-}
-
-/// The key written on the line containing `pos` (text before `=`), if any.
-fn key_on_line(text: &str, pos: usize) -> Option<String> {
-    let pos = pos.min(text.len());
-    let start = text[..pos].rfind('\n').map_or(0, |i| i + 1);
-    let end = text[pos..].find('\n').map_or(text.len(), |i| pos + i);
-    let line = &text[start..end];
-    let (k, _) = line.split_once('=')?;
-    let k = k.trim();
-    if k.is_empty() || k.starts_with('#') || k.starts_with('[') {
-        return None;
-    }
-    // Prefix the enclosing `[table]`, if any.
-    let table = text[..start].lines().rev().find_map(|l| {
-        let l = l.trim();
-        l.strip_prefix('[')
-            .and_then(|r| r.split(']').next())
-            .map(|t| t.trim().to_string())
-    });
-    Some(match table {
-        Some(t) if !t.is_empty() => format!("{t}.{k}"),
-        _ => k.to_string(),
-    })
 }
 
 struct Ctx<'a> {

@@ -212,12 +212,7 @@ pub fn merge(parts: &[ShardFiles]) -> Result<Merged, StudyError> {
                 format!("rows_total = {rows_total}, but its scenario has {total} rows"),
             ));
         }
-        let first = shard.index - 1;
-        let share = if total > first {
-            ((total - first).div_ceil(shard.count)) as u64
-        } else {
-            0
-        };
+        let share = shard.share(total) as u64;
         if rows_declared != share {
             return Err(err(
                 &mf,

@@ -22,6 +22,7 @@ mod sim;
 mod sim_bearings;
 mod sim_compliance;
 mod sim_friction;
+mod sim_scenario;
 mod sim_shapes;
 mod study;
 mod study_shapes;

@@ -1,17 +1,18 @@
-//! Scenario sections added for compliance contact laws (issue 7): `[contact]` (the joint's normal
-//! contact law and its parameters) and the straight-deck / dashpot keys of `[decks]` and
-//! `[bearings]`. A child module of `cmd_simulate` (uses its `Source` for error locations).
+//! `[contact]`: the joint's normal contact law (rigid, or one of the compliance laws with its
+//! parameters and calibrations), and the `[decks] mass1`/`mass2` and `[bearings] damping` keys.
 
-use super::Source;
-use anyhow::{Result, anyhow, bail};
-use pounding::contact_law::calibration::{
+use super::Src;
+use super::error::{ParamKey, ScenarioError, Section};
+use super::sections::DecksSec;
+use crate::contact_law::calibration::{
     HertzDampCalibration, JankowskiCalibration, KelvinCalibration,
 };
-use pounding::contact_law::{
+use crate::contact_law::{
     BilinearImpact, ContactLaw, ContactLawError, Hertz, HertzDamp, HertzDamping, Jankowski,
     KelvinVoigt, units,
 };
-use pounding::sim::{ComplianceContact, JointContact};
+use crate::shape::DeckShape;
+use crate::sim::{ComplianceContact, DampingModel, JointContact, SimModel};
 use serde::Deserialize;
 
 /// Names accepted by `[contact] law` and `pounding compare --laws`.
@@ -25,27 +26,44 @@ pub const LAW_NAMES: [&str; 6] = [
 ];
 
 /// `[contact]`: the joint's normal contact law. Every key optional.
-#[derive(Deserialize, Default, Clone)]
+#[derive(Deserialize, Default, Clone, Debug)]
 #[serde(deny_unknown_fields, default)]
 pub struct ContactSec {
     /// `rigid` (default), `kelvin`, `hertz`, `hertz-damp`, `bilinear`, `jankowski`.
     pub law: Option<String>,
+    /// Kelvin stiffness \\[N/m\\].
     pub k: Option<f64>,
+    /// Kelvin damping \\[N s/m\\] (instead of `restitution`).
     pub c: Option<f64>,
+    /// Hertz stiffness \\[N/m^1.5\\].
     pub k_h: Option<f64>,
+    /// Hertz-damp constant damping ratio.
     pub zeta: Option<f64>,
+    /// Hertz-damp per-impact damping factor.
     pub chi: Option<f64>,
+    /// Target restitution of the damped laws (default: `\\[joint\\] eps_n`).
     pub restitution: Option<f64>,
+    /// How the damping follows from `restitution`.
     pub calibration: Option<String>,
+    /// Hertz-damp design impact velocity \\[m/s\\].
     pub design_velocity: Option<f64>,
+    /// Hertz-damp floor of the impact velocity \\[m/s\\].
     pub min_velocity: Option<f64>,
+    /// Bilinear first stiffness \\[N/m\\].
     pub k1: Option<f64>,
+    /// Bilinear second stiffness \\[N/m\\].
     pub k2: Option<f64>,
+    /// Bilinear yield penetration \\[m\\].
     pub delta_y: Option<f64>,
+    /// Bilinear design maximum penetration \\[m\\].
     pub delta_m: Option<f64>,
+    /// Bilinear yield ratio.
     pub a: Option<f64>,
+    /// Jankowski stiffness \\[N/m^1.5\\].
     pub beta: Option<f64>,
+    /// Jankowski damping ratio.
     pub xi: Option<f64>,
+    /// Regularisation velocity of Coulomb friction \\[m/s\\].
     pub friction_velocity: Option<f64>,
 }
 
@@ -64,44 +82,50 @@ pub fn default_k_h() -> f64 {
     units::kip_per_in_1_5(25_000.0)
 }
 
-fn law_err(src: &Source, e: ContactLawError) -> anyhow::Error {
+/// A contact-law error located at the `[contact]` key that sets the parameter.
+fn law_err(src: &Src, e: ContactLawError) -> ScenarioError {
     let ContactLawError::InvalidParameter { name, .. } = &e;
-    let key = match name.as_str() {
-        n @ ("k" | "c" | "k_h" | "zeta" | "chi" | "restitution" | "design_velocity"
-        | "min_velocity" | "k1" | "k2" | "delta_y" | "delta_m" | "a" | "beta" | "xi") => n,
-        _ => return anyhow!("{e}"),
+    let Some(key) = ParamKey::of_contact_parameter(name) else {
+        return ScenarioError::Law(Box::new(e));
     };
-    let mut msg = format!("{e} — set by {}", src.key_ref("contact", key));
-    if key == "restitution" && src.line_of("contact", "restitution").is_none() {
-        msg.push_str(" (the default is `[joint] eps_n`)");
+    let at = src.at(key);
+    let note = if key.key == "restitution" && at.line.is_none() {
+        " (the default is `[joint] eps_n`)".to_string()
+    } else {
+        String::new()
+    };
+    ScenarioError::Invalid {
+        message: e.to_string(),
+        at: vec![at],
+        note,
     }
-    anyhow!(msg)
 }
 
-/// Builds the joint contact for `law` (overriding `[contact] law` when given) from the section;
-/// `eps_n` is the default restitution, `masses` the deck masses (Kelvin, Jankowski calibrations).
-pub(super) fn build_contact(
-    src: &Source,
+const fn contact(key: &'static str) -> ParamKey {
+    ParamKey::new(Section::Contact, key)
+}
+
+/// The compliance law `name` (not `rigid`) from the `[contact]` keys and their defaults.
+fn compliance_law(
+    src: &Src,
     sec: &ContactSec,
-    law: Option<&str>,
+    name: &str,
     eps_n: f64,
     masses: [f64; 2],
-) -> Result<JointContact> {
-    let name = law
-        .map(str::to_string)
-        .or_else(|| sec.law.clone())
-        .unwrap_or_else(|| "rigid".into());
+) -> Result<ContactLaw, ScenarioError> {
     let e = sec.restitution.unwrap_or(eps_n);
     let cal = sec.calibration.as_deref().unwrap_or("numerical");
     let bad_cal = |allowed: &str| {
-        anyhow!(
-            "invalid calibration {cal:?} for law {name:?} at {}: use {allowed}",
-            src.key_ref("contact", "calibration")
+        src.key_error(
+            format!(
+                "invalid calibration {cal:?} for law {name:?} at {}: use {allowed}",
+                src.at(contact("calibration"))
+            ),
+            &[contact("calibration")],
         )
     };
     let le = |r: Result<ContactLaw, ContactLawError>| r.map_err(|e| law_err(src, e));
-    let law: ContactLaw = match name.as_str() {
-        "rigid" => return Ok(JointContact::Rigid),
+    Ok(match name {
         "kelvin" => {
             let k = sec.k.unwrap_or(DEFAULT_K);
             le(match sec.c {
@@ -154,18 +178,24 @@ pub(super) fn build_contact(
             )
             .map(|d| d.law.into()),
             (Some(k1), Some(k2), Some(dy)) => BilinearImpact::new(k1, k2, dy).map(Into::into),
-            _ => bail!(
-                "law \"bilinear\": give all of {}, {} and {} (or none, to derive them from k_h, \
-                 restitution, delta_m, a)",
-                src.key_ref("contact", "k1"),
-                src.key_ref("contact", "k2"),
-                src.key_ref("contact", "delta_y")
-            ),
+            _ => {
+                let keys = [contact("k1"), contact("k2"), contact("delta_y")];
+                return Err(src.key_error(
+                    format!(
+                        "law \"bilinear\": give all of {}, {} and {} (or none, to derive them \
+                         from k_h, restitution, delta_m, a)",
+                        src.at(keys[0]),
+                        src.at(keys[1]),
+                        src.at(keys[2])
+                    ),
+                    &keys,
+                ));
+            }
         })?,
         "jankowski" => {
             let beta = sec.beta.or(sec.k_h).unwrap_or_else(default_k_h);
             le(match sec.xi {
-                Some(xi) => pounding::contact_law::effective_mass(masses[0], masses[1])
+                Some(xi) => crate::contact_law::effective_mass(masses[0], masses[1])
                     .and_then(|m| Jankowski::new(beta, xi, m))
                     .map(Into::into),
                 None => {
@@ -178,82 +208,65 @@ pub(super) fn build_contact(
                 }
             })?
         }
-        other => bail!(
-            "unknown contact law {other:?} at {}: use one of {}",
-            src.key_ref("contact", "law"),
-            LAW_NAMES.join(", ")
-        ),
-    };
+        other => {
+            return Err(src.key_error(
+                format!(
+                    "unknown contact law {other:?} at {}: use one of {}",
+                    src.at(contact("law")),
+                    LAW_NAMES.join(", ")
+                ),
+                &[contact("law")],
+            ));
+        }
+    })
+}
+
+/// Builds the joint contact for `law` (overriding `[contact] law` when given) from the section;
+/// `eps_n` is the default restitution, `masses` the deck masses (Kelvin, Jankowski calibrations).
+pub(super) fn build_contact(
+    src: &Src,
+    sec: &ContactSec,
+    law: Option<&str>,
+    eps_n: f64,
+    masses: [f64; 2],
+) -> Result<JointContact, ScenarioError> {
+    let name = law
+        .map(str::to_string)
+        .or_else(|| sec.law.clone())
+        .unwrap_or_else(|| "rigid".into());
+    if name == "rigid" {
+        return Ok(JointContact::Rigid);
+    }
+    let law = compliance_law(src, sec, &name, eps_n, masses)?;
     let mut cc = ComplianceContact::new(law);
     if let Some(v) = sec.friction_velocity {
         if !(v.is_finite() && v > 0.0) {
-            bail!(
-                "invalid friction_velocity = {v}: must be finite and > 0 — set by {}",
-                src.key_ref("contact", "friction_velocity")
-            );
+            return Err(src.invalid(
+                format!("invalid friction_velocity = {v}: must be finite and > 0"),
+                contact("friction_velocity"),
+            ));
         }
         cc.friction_velocity = v;
     }
     Ok(JointContact::Compliance(cc))
 }
 
-/// Short description of a joint contact for summaries.
-pub fn describe(c: &JointContact) -> serde_json::Value {
-    use pounding::output::json_float;
-    match c {
-        JointContact::Rigid => serde_json::json!({"law": "rigid"}),
-        JointContact::Compliance(cc) => {
-            let mut v = match &cc.law {
-                ContactLaw::KelvinVoigt(l) => {
-                    serde_json::json!({"law": "kelvin", "k": json_float(l.k()), "c": json_float(l.c())})
-                }
-                ContactLaw::Hertz(l) => {
-                    serde_json::json!({"law": "hertz", "k_h": json_float(l.k_h())})
-                }
-                ContactLaw::HertzDamp(l) => {
-                    let d = match l.damping() {
-                        HertzDamping::Constant { zeta } => {
-                            serde_json::json!({"zeta": json_float(zeta)})
-                        }
-                        HertzDamping::PerImpact { chi, min_velocity } => {
-                            serde_json::json!({"chi": json_float(chi), "min_velocity": json_float(min_velocity)})
-                        }
-                    };
-                    serde_json::json!({"law": "hertz-damp", "k_h": json_float(l.k_h()), "damping": d})
-                }
-                ContactLaw::Bilinear(l) => serde_json::json!({
-                    "law": "bilinear", "k1": json_float(l.k1()), "k2": json_float(l.k2()),
-                    "delta_y": json_float(l.delta_y())
-                }),
-                ContactLaw::Jankowski(l) => serde_json::json!({
-                    "law": "jankowski", "beta": json_float(l.beta()), "xi": json_float(l.xi()),
-                    "m_eff": json_float(l.m_eff())
-                }),
-            };
-            v["friction_velocity"] = json_float(cc.friction_velocity);
-            v
-        }
-    }
-}
-
 /// `[decks] mass1`, `mass2` (the deck's mass given directly: its density becomes
 /// `ρ m / m(ρ)`, any shape) and `[bearings] damping = "rayleigh" | "dashpots"`.
 pub(super) fn apply_shape_and_damping(
-    src: &Source,
-    d: &super::DecksSec,
+    src: &Src,
+    d: &DecksSec,
     damping: &str,
-    model: &mut pounding::sim::SimModel,
-) -> Result<()> {
-    use pounding::shape::DeckShape;
-    use pounding::sim::DampingModel;
+    model: &mut SimModel,
+) -> Result<(), ScenarioError> {
     let current = model.masses();
     for (j, m, key) in [(0, d.mass1, "mass1"), (1, d.mass2, "mass2")] {
         let Some(m) = m else { continue };
         if !(m.is_finite() && m > 0.0) {
-            bail!(
-                "invalid {key} = {m}: must be finite and > 0 — set by {}",
-                src.key_ref("decks", key)
-            );
+            return Err(src.invalid(
+                format!("invalid {key} = {m}: must be finite and > 0"),
+                ParamKey::of_deck(Section::Decks, key, j as u8 + 1),
+            ));
         }
         let f = m / current[j];
         match &mut model.shapes {
@@ -274,36 +287,16 @@ pub(super) fn apply_shape_and_damping(
     model.damping_model = match damping {
         "rayleigh" => DampingModel::Rayleigh,
         "dashpots" => DampingModel::TranslationalDashpots,
-        other => bail!(
-            "unknown damping {other:?} at {}: use \"rayleigh\" or \"dashpots\"",
-            src.key_ref("bearings", "damping")
-        ),
+        other => {
+            let key = ParamKey::new(Section::Bearings, "damping");
+            return Err(src.key_error(
+                format!(
+                    "unknown damping {other:?} at {}: use \"rayleigh\" or \"dashpots\"",
+                    src.at(key)
+                ),
+                &[key],
+            ));
+        }
     };
     Ok(())
-}
-
-/// Adds the compliance-law fields to a `summary.json` value (nothing for rigid contact, so the
-/// rigid summary keeps its keys): `contact_law` (parameters), `time_step` (contact duration,
-/// steps per contact, adequate), `newton_failures`.
-pub(super) fn add_compliance_summary(
-    v: &mut serde_json::Value,
-    m: &pounding::sim::SimModel,
-    sol: &pounding::sim::SimSolution,
-) {
-    use pounding::output::json_float;
-    if matches!(m.contact, JointContact::Rigid) {
-        return;
-    }
-    v["contact_law"] = describe(&m.contact);
-    v["model"]["damping"] = serde_json::json!(format!("{:?}", m.damping_model));
-    if let Some(a) = &sol.time_step_advice {
-        v["time_step"] = serde_json::json!({
-            "contact_duration_s": json_float(a.contact_duration),
-            "steps_per_contact": json_float(a.steps_per_contact),
-            "max_step_s": json_float(a.max_step),
-            "adequate": a.adequate,
-        });
-    }
-    v["newton_failures"] = serde_json::json!(sol.newton_failures);
-    v["closure_steps"] = serde_json::json!(sol.closure_steps);
 }

@@ -1,0 +1,306 @@
+//! The files a `simulate` run writes, as text: `history.csv`, `impacts.csv`, `summary.json` and
+//! the batch's `batch.csv`, and those of `pounding compare`. Numbers are shortest round-trip ([`float_token`]: `inf`, `-inf`, `nan`
+//! in CSV; [`json_float`]: `null` in JSON), so the bytes are the same for any thread count.
+
+use super::scenario::SimSetup;
+use super::{JointContact, SEAT_ENDS, SimModel, SimProblem, SimSolution};
+use crate::contact_law::{ContactLaw, HertzDamping};
+use crate::geometry::ContactCase;
+use crate::ground_motion::Record;
+use crate::math::Real;
+use crate::output::{float_token, json_float};
+use crate::shape::DeckShape;
+use serde_json::json;
+
+mod batch;
+mod compare;
+pub use batch::{BATCH_HEADER, batch_csv};
+pub use compare::{COMPARE_HEADER, COMPARE_OUTPUTS, compare_csv, compare_table};
+
+/// Degrees per radian.
+pub(crate) const DEG: Real = 180.0 / std::f64::consts::PI;
+
+/// Every file `simulate` writes (single run and batch). A run into a directory first removes all
+/// of them, so that no earlier run's plots (e.g. `abutment_gap.png` of a run with abutments) or
+/// `timing.json` stay beside the new results. `timing.json` is written last and marks a complete
+/// run (as in `pounding study`).
+pub const SIM_OUTPUTS: &[&str] = &[
+    "timing.json",
+    "history.csv",
+    "impacts.csv",
+    "summary.json",
+    "displacements.png",
+    "layout.png",
+    "rotations.png",
+    "joint_gap.png",
+    "abutment_gap.png",
+    "impulses.png",
+    "energy.png",
+    "batch.csv",
+    "batch.png",
+];
+
+/// `history.csv`: one row per stored step (every `history_stride`-th) — time, ground
+/// acceleration, displacements and velocities of both decks (rotations in degrees), the gaps of
+/// the corner contacts and joint ends, slip, the energy terms, and (compliance laws) the joint
+/// forces and (with abutments) the abutment gaps.
+pub fn history_csv(problem: &SimProblem, sol: &SimSolution) -> String {
+    let h = &sol.history;
+    let mut s = String::with_capacity(h.t.len() * 400);
+    s.push_str(
+        "t_s,ag_x_mps2,ag_y_mps2,x1_m,y1_m,theta1_deg,x2_m,y2_m,theta2_deg,\
+         vx1_mps,vy1_mps,omega1_degps,vx2_mps,vy2_mps,omega2_degps,",
+    );
+    for c in ContactCase::ALL {
+        s.push_str(&format!("gap_{}_m,", c.name()));
+    }
+    s.push_str(
+        "joint_gap_xplus_m,joint_gap_xminus_m,slip_m,\
+         input_energy_J,kinetic_energy_J,strain_energy_J,viscous_dissipation_J,contact_dissipation_J",
+    );
+    let forces = !h.contact_force.is_empty();
+    if forces {
+        s.push_str(",contact_force_xplus_N,contact_force_xminus_N");
+    }
+    // abutment gap columns only when there are abutments (the default's file is unchanged)
+    let abut: Vec<usize> = (0..2)
+        .filter(|&j| problem.model.abutments[j].is_some())
+        .collect();
+    for j in &abut {
+        s.push_str(&format!(",abutment_gap{}_m", j + 1));
+    }
+    s.push('\n');
+    let mut row: Vec<String> = Vec::with_capacity(32);
+    for i in 0..h.t.len() {
+        row.clear();
+        let t = h.t[i];
+        let a = problem.ground.accel(t);
+        row.push(float_token(t));
+        row.push(float_token(a.x));
+        row.push(float_token(a.y));
+        for (k, v) in h.q[i].iter().enumerate() {
+            row.push(float_token(if k % 3 == 2 { v * DEG } else { *v }));
+        }
+        for (k, v) in h.u[i].iter().enumerate() {
+            row.push(float_token(if k % 3 == 2 { v * DEG } else { *v }));
+        }
+        row.extend(h.gaps[i].iter().map(|&g| float_token(g)));
+        row.extend(h.end_gaps[i].iter().map(|&g| float_token(g)));
+        row.push(float_token(h.slip[i]));
+        let e = &h.energy[i];
+        for v in [e.input, e.kinetic, e.potential, e.viscous, e.contact] {
+            row.push(float_token(v));
+        }
+        if forces {
+            row.extend(h.contact_force[i].iter().map(|&f| float_token(f)));
+        }
+        for &j in &abut {
+            row.push(float_token(h.abutment_gaps[i][j]));
+        }
+        s.push_str(&row.join(","));
+        s.push('\n');
+    }
+    s
+}
+
+/// `impacts.csv`: one row per impact of the rigid contact (time, contact, mode, relative
+/// velocities before and after, impulses, dissipated energy).
+pub fn impacts_csv(sol: &SimSolution) -> String {
+    let mut s = String::from(
+        "impact,t_s,contact,mode,gamma_n_pre_mps,gamma_t_pre_mps,gamma_n_post_mps,gamma_t_post_mps,\
+         impulse_n_Ns,impulse_t_Ns,energy_dissipated_J\n",
+    );
+    for r in &sol.impacts {
+        let f = [
+            r.gamma_n_pre,
+            r.gamma_t_pre,
+            r.gamma_n_post,
+            r.gamma_t_post,
+            r.impulse_n,
+            r.impulse_t,
+            r.energy_dissipated,
+        ]
+        .map(float_token)
+        .join(",");
+        s.push_str(&format!(
+            "{},{},{},{},{}\n",
+            r.impact,
+            float_token(r.time),
+            r.contact.name(),
+            r.mode.name(),
+            f
+        ));
+    }
+    s
+}
+
+/// The `summary.json` value: peaks, unseating, energies, status and counters, the ground motion
+/// and the model (keys for straight/skewed decks, abutments and compliance laws only when used).
+pub fn summary_json(setup: &SimSetup, sol: &SimSolution) -> serde_json::Value {
+    let s = &sol.summary;
+    let e = &s.final_energy;
+    let m = &setup.problem.model;
+    let gm = &setup.problem.ground;
+    let pga = |r: &Option<Record>, sc: f64| r.as_ref().map_or(0.0, |r| r.pga() * sc.abs());
+    let seat: serde_json::Map<String, serde_json::Value> = SEAT_ENDS
+        .iter()
+        .zip(s.peak_seat_by_end)
+        .map(|(k, v)| (k.to_string(), json_float(v)))
+        .collect();
+    let mut out = json!({
+        "impacts": s.impacts,
+        "impacting_contacts": s.impacting_contacts,
+        "peak_joint_closing_m": json_float(s.peak_joint_closing),
+        "peak_joint_opening_m": json_float(s.peak_joint_opening),
+        "peak_rotation_deg": [json_float(s.peak_rotation[0] * DEG), json_float(s.peak_rotation[1] * DEG)],
+        "peak_slip_m": json_float(s.peak_slip),
+        "peak_seat_displacement_m": json_float(s.peak_seat_displacement),
+        "peak_seat_displacement_by_end_m": seat,
+        "seat_length_m": json_float(m.seat_length),
+        "unseated": s.unseated,
+        "unseating_time_s": s.unseating_time.map_or(serde_json::Value::Null, json_float),
+        "unseated_end": s.unseated_end.map(|i| SEAT_ENDS[i]),
+        "max_penetration_m": json_float(s.max_penetration),
+        "peak_contact_force_n": s.peak_contact_force.map_or(serde_json::Value::Null, json_float),
+        "peak_penetration_m": json_float(s.peak_penetration),
+        "energy_balance_error": json_float(s.energy_balance_error),
+        "energy_J": {
+            "input": json_float(e.input),
+            "kinetic": json_float(e.kinetic),
+            "strain": json_float(e.potential),
+            "viscous_dissipation": json_float(e.viscous),
+            "contact_dissipation": json_float(e.contact),
+            "max_input": json_float(s.max_input_energy),
+        },
+        "status": format!("{:?}", sol.status),
+        "steps": sol.steps,
+        "dt_s": json_float(sol.dt),
+        "duration_s": json_float(sol.steps as Real * sol.dt),
+        "lcp_solves": sol.lcp_solves,
+        "lcp_enumeration_fallbacks": sol.lcp_enumeration_fallbacks,
+        "lcp_failures": sol.lcp_failures,
+        "natural_periods_s": sol.frequencies.map(|w| w.map(|w| json_float(2.0 * std::f64::consts::PI / w))),
+        "rayleigh_a0_a1": sol.rayleigh.map(|(a, b)| [json_float(a), json_float(b)]),
+        "ground_motion": {
+            "record_y": setup.records[0],
+            "record_x": setup.records[1],
+            "scale_y": json_float(gm.scale_y),
+            "scale_x": json_float(gm.scale_x),
+            "incidence_deg": json_float(gm.incidence * DEG),
+            "pga_y_mps2": json_float(pga(&gm.along_y, gm.scale_y)),
+            "pga_x_mps2": json_float(pga(&gm.along_x, gm.scale_x)),
+        },
+        "model": {
+            "mass_kg": m.masses().map(json_float),
+            "gap_m": json_float(m.gap),
+            "mu": json_float(m.friction),
+            "eps_n": json_float(m.restitution),
+            "damping_ratio": json_float(m.damping_ratio),
+            "bearings": [m.bearings1.len(), m.bearings2.len()],
+        },
+    });
+    // Keys for straight / skewed decks and abutments only when used (the curved default's
+    // summary stays as it was).
+    if let Some(sh) = &m.shapes {
+        let len = |d: &DeckShape| match d {
+            DeckShape::Straight(d) => json_float(d.length),
+            DeckShape::Skewed(d) => json_float(d.length),
+            DeckShape::Curved(_) => serde_json::Value::Null,
+        };
+        let skew = |d: &DeckShape| match d {
+            DeckShape::Skewed(d) => json_float(d.skew * DEG),
+            _ => json_float(0.0),
+        };
+        out["model"]["shape"] = json!([sh[0].name(), sh[1].name()]);
+        out["model"]["length_m"] = json!([len(&sh[0]), len(&sh[1])]);
+        out["model"]["skew_deg"] = json!([skew(&sh[0]), skew(&sh[1])]);
+    }
+    if m.abutments.iter().any(Option::is_some) {
+        let mut ab = serde_json::Map::new();
+        for (j, a) in m.abutments.iter().enumerate() {
+            if let Some(a) = a {
+                ab.insert(
+                    format!("deck{}", j + 1),
+                    json!({
+                        "gap_m": json_float(a.gap),
+                        "seat_length_m": json_float(a.seat_length),
+                        "peak_closing_m": s.peak_abutment_closing[j].map_or(serde_json::Value::Null, json_float),
+                    }),
+                );
+            }
+        }
+        ab.insert(
+            "impacting_contacts".into(),
+            json!(s.abutment_impacting_contacts),
+        );
+        out["abutments"] = serde_json::Value::Object(ab);
+    }
+    add_compliance_summary(&mut out, m, sol);
+    out
+}
+
+/// `summary.json` as written: [`summary_json`] pretty-printed, with a final newline.
+pub fn summary_json_text(setup: &SimSetup, sol: &SimSolution) -> String {
+    let mut s = serde_json::to_string_pretty(&summary_json(setup, sol)).unwrap_or_default();
+    s.push('\n');
+    s
+}
+
+/// Short description of a joint contact for summaries.
+pub fn describe_contact(c: &JointContact) -> serde_json::Value {
+    match c {
+        JointContact::Rigid => serde_json::json!({"law": "rigid"}),
+        JointContact::Compliance(cc) => {
+            let mut v = match &cc.law {
+                ContactLaw::KelvinVoigt(l) => {
+                    serde_json::json!({"law": "kelvin", "k": json_float(l.k()), "c": json_float(l.c())})
+                }
+                ContactLaw::Hertz(l) => {
+                    serde_json::json!({"law": "hertz", "k_h": json_float(l.k_h())})
+                }
+                ContactLaw::HertzDamp(l) => {
+                    let d = match l.damping() {
+                        HertzDamping::Constant { zeta } => {
+                            serde_json::json!({"zeta": json_float(zeta)})
+                        }
+                        HertzDamping::PerImpact { chi, min_velocity } => {
+                            serde_json::json!({"chi": json_float(chi), "min_velocity": json_float(min_velocity)})
+                        }
+                    };
+                    serde_json::json!({"law": "hertz-damp", "k_h": json_float(l.k_h()), "damping": d})
+                }
+                ContactLaw::Bilinear(l) => serde_json::json!({
+                    "law": "bilinear", "k1": json_float(l.k1()), "k2": json_float(l.k2()),
+                    "delta_y": json_float(l.delta_y())
+                }),
+                ContactLaw::Jankowski(l) => serde_json::json!({
+                    "law": "jankowski", "beta": json_float(l.beta()), "xi": json_float(l.xi()),
+                    "m_eff": json_float(l.m_eff())
+                }),
+            };
+            v["friction_velocity"] = json_float(cc.friction_velocity);
+            v
+        }
+    }
+}
+
+/// Adds the compliance-law fields to a `summary.json` value (nothing for rigid contact, so the
+/// rigid summary keeps its keys): `contact_law` (parameters), `time_step` (contact duration,
+/// steps per contact, adequate), `newton_failures`.
+fn add_compliance_summary(v: &mut serde_json::Value, m: &SimModel, sol: &SimSolution) {
+    if matches!(m.contact, JointContact::Rigid) {
+        return;
+    }
+    v["contact_law"] = describe_contact(&m.contact);
+    v["model"]["damping"] = serde_json::json!(format!("{:?}", m.damping_model));
+    if let Some(a) = &sol.time_step_advice {
+        v["time_step"] = serde_json::json!({
+            "contact_duration_s": json_float(a.contact_duration),
+            "steps_per_contact": json_float(a.steps_per_contact),
+            "max_step_s": json_float(a.max_step),
+            "adequate": a.adequate,
+        });
+    }
+    v["newton_failures"] = serde_json::json!(sol.newton_failures);
+    v["closure_steps"] = serde_json::json!(sol.closure_steps);
+}

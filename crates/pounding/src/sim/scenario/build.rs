@@ -1,0 +1,425 @@
+//! [`Scenario::build`]: the model, the ground motion and the settings from the sections, every
+//! value validated with errors located at its key.
+
+use super::contact::{apply_shape_and_damping, build_contact};
+use super::error::{ParamKey, ScenarioError, Section};
+use super::sections::{DecksSec, Raw};
+use super::{Scenario, SimSetup, Src};
+use crate::geometry::{Deck, GeometryError, SArrangement};
+use crate::ground_motion::{
+    AccelUnits, EL_CENTRO_180_AT2, EL_CENTRO_270_AT2, GroundMotion, GroundMotionError, Record,
+};
+use crate::math::Vector;
+use crate::output::float_token;
+use crate::shape::{DeckShape, SkewedDeck, StraightDeck};
+use crate::sim::{Bearing, SimAbutment, SimError, SimModel, SimProblem, SimSettings};
+
+const fn decks(key: &'static str) -> ParamKey {
+    ParamKey::new(Section::Decks, key)
+}
+const fn time(key: &'static str) -> ParamKey {
+    ParamKey::new(Section::Time, key)
+}
+const fn ground(key: &'static str) -> ParamKey {
+    ParamKey::new(Section::GroundMotion, key)
+}
+
+/// A library error located at the scenario key that sets the parameter it names.
+pub(super) fn sim_error(src: &Src, e: SimError) -> ScenarioError {
+    let name = match &e {
+        SimError::InvalidParameter { name, .. } => Some(name.as_str()),
+        SimError::Geometry(GeometryError::InvalidParameter { name, .. }) => Some(name.as_str()),
+        SimError::GroundMotion(GroundMotionError::InvalidParameter { name, .. }) => {
+            Some(name.as_str())
+        }
+        _ => None,
+    };
+    // A deck's mass is set by `massJ` when given, else derived from the geometry and density.
+    let key = match name {
+        Some("mass (deck 1)") => Some(mass_key(src, 1)),
+        Some("mass (deck 2)") => Some(mass_key(src, 2)),
+        Some(n) => ParamKey::of_model_parameter(n),
+        None => None,
+    };
+    match key {
+        Some(key) => src.invalid(e.to_string(), key),
+        None => ScenarioError::Model(Box::new(e)),
+    }
+}
+
+/// [`sim_error`] for the model after `massJ` scaled the densities: a density that is no longer a
+/// normal number comes from the mass given, not from `density`.
+fn scaled_mass_error(src: &Src, e: SimError) -> ScenarioError {
+    let mut err = sim_error(src, e);
+    if let ScenarioError::Invalid { at, .. } = &mut err
+        && at.len() == 1
+        && at[0].key.section == Section::Decks
+        && at[0].key.key == "density"
+    {
+        let given: Vec<_> = [1, 2]
+            .into_iter()
+            .map(|j| ParamKey::of_deck(Section::Decks, if j == 1 { "mass1" } else { "mass2" }, j))
+            .filter(|&k| src.is_set(k))
+            .map(|k| src.at(k))
+            .collect();
+        if !given.is_empty() {
+            *at = given;
+        }
+    }
+    err
+}
+
+fn mass_key(src: &Src, deck: u8) -> ParamKey {
+    let key = ParamKey::of_deck(
+        Section::Decks,
+        if deck == 1 { "mass1" } else { "mass2" },
+        deck,
+    );
+    if src.is_set(key) {
+        key
+    } else {
+        ParamKey::of_deck(Section::Decks, "density", deck)
+    }
+}
+
+/// The deck shapes of `[decks]`: `None` for `shape = "curved"` (the S arrangement of `R1 R2
+/// beta1_deg beta2_deg`), else two straight / skewed decks of lengths `L1`, `L2` (values are
+/// validated later by the model, with errors naming `L1`, `skew_deg`, …).
+fn deck_shapes(src: &Src, d: &DecksSec) -> Result<Option<[DeckShape; 2]>, ScenarioError> {
+    let shape = d.shape.trim();
+    let only = |key: &'static str, for_shape: &str| -> Result<(), ScenarioError> {
+        let k = decks(key);
+        if src.is_set(k) {
+            return Err(src.key_error(
+                format!(
+                    "{} applies to shape = \"{for_shape}\" only (shape is \"{shape}\")",
+                    src.at(k)
+                ),
+                &[k],
+            ));
+        }
+        Ok(())
+    };
+    match shape {
+        "curved" => {
+            for k in ["L1", "L2"] {
+                only(k, "straight\" or \"skew")?;
+            }
+            only("skew_deg", "skew")?;
+            Ok(None)
+        }
+        "straight" | "skew" => {
+            for k in ["R1", "R2", "beta1_deg", "beta2_deg"] {
+                only(k, "curved")?;
+            }
+            if shape == "straight" {
+                only("skew_deg", "skew")?;
+            }
+            let len = |v: Option<f64>, key: &'static str| {
+                v.ok_or_else(|| {
+                    src.key_error(
+                        format!(
+                            "shape = \"{shape}\" needs {} (deck length along its axis, m)",
+                            src.at(decks(key))
+                        ),
+                        &[decks(key)],
+                    )
+                })
+            };
+            let (l1, l2) = (len(d.L1, "L1")?, len(d.L2, "L2")?);
+            let skew = d.skew_deg.unwrap_or(0.0).to_radians();
+            let mk = |l: f64| {
+                if shape == "straight" {
+                    DeckShape::Straight(StraightDeck {
+                        length: l,
+                        width: d.width,
+                        thickness: d.thickness,
+                        density: d.density,
+                    })
+                } else {
+                    DeckShape::Skewed(SkewedDeck {
+                        length: l,
+                        width: d.width,
+                        skew,
+                        thickness: d.thickness,
+                        density: d.density,
+                    })
+                }
+            };
+            Ok(Some([mk(l1), mk(l2)]))
+        }
+        other => Err(src.key_error(
+            format!(
+                "invalid shape {other:?} at {}: use \"curved\", \"straight\" or \"skew\"",
+                src.at(decks("shape"))
+            ),
+            &[decks("shape")],
+        )),
+    }
+}
+
+/// A record named by `[ground_motion] key`: `none`, `builtin:…` or a path relative to the
+/// scenario file.
+fn load_record(
+    src: &Src,
+    spec: &str,
+    key: &'static str,
+    units: AccelUnits,
+) -> Result<Option<Record>, ScenarioError> {
+    let spec_t = spec.trim();
+    if spec_t.eq_ignore_ascii_case("none") {
+        return Ok(None);
+    }
+    let at = || src.at(ground(key));
+    if let Some(b) = spec_t.strip_prefix("builtin:") {
+        let (text, name) = match b {
+            "ELC180" => (EL_CENTRO_180_AT2, "RSN6_IMPVALL.I_I-ELC180-hor1.AT2"),
+            "ELC270" => (EL_CENTRO_270_AT2, "RSN6_IMPVALL.I_I-ELC270-hor2.AT2"),
+            other => {
+                return Err(src.key_error(
+                    format!(
+                        "unknown built-in record {other:?} in {} (use builtin:ELC180 or \
+                         builtin:ELC270)",
+                        at()
+                    ),
+                    &[ground(key)],
+                ));
+            }
+        };
+        return Record::from_at2_str(text, name)
+            .map(Some)
+            .map_err(|error| ScenarioError::Record {
+                at: at(),
+                error: Box::new(error),
+            });
+    }
+    Record::from_path(&src.dir.join(spec_t), units)
+        .map(Some)
+        .map_err(|error| ScenarioError::Record {
+            at: at(),
+            error: Box::new(error),
+        })
+}
+
+/// The model of `[decks]`, `[joint]`, `[abutments]`, `[bearings]` and `[contact]`.
+fn build_model(sc: &Scenario) -> Result<SimModel, ScenarioError> {
+    let (src, raw): (&Src, &Raw) = (&sc.src, &sc.raw);
+    let d = &raw.decks;
+    let deck = |r: f64, b: f64| Deck {
+        radius: r,
+        angle: b.to_radians(),
+        width: d.width,
+        thickness: d.thickness,
+        density: d.density,
+    };
+    let (j, b) = (&raw.joint, &raw.bearings);
+    let mut model = match deck_shapes(src, d)? {
+        None => SimModel::with_corner_bearings(
+            SArrangement {
+                deck1: deck(d.R1, d.beta1_deg),
+                deck2: deck(d.R2, d.beta2_deg),
+            },
+            j.gap,
+            b.stiffness1,
+            b.stiffness2,
+            b.damping_ratio,
+            j.mu,
+            j.eps_n,
+            j.seat_length,
+        ),
+        Some(sh) => SimModel::with_shapes(
+            sh,
+            j.gap,
+            b.stiffness1,
+            b.stiffness2,
+            b.damping_ratio,
+            j.mu,
+            j.eps_n,
+            j.seat_length,
+        ),
+    };
+    let ab = &raw.abutments;
+    for (k, gap, seat) in [(0, ab.gap1, ab.seat_length1), (1, ab.gap2, ab.seat_length2)] {
+        match (gap, seat) {
+            (Some(gap), seat) => {
+                model.abutments[k] = Some(SimAbutment {
+                    gap,
+                    seat_length: seat.unwrap_or(j.seat_length),
+                })
+            }
+            (None, Some(_)) => {
+                let deck = k as u8 + 1;
+                let (s, g) = if k == 0 {
+                    ("seat_length1", "gap1")
+                } else {
+                    ("seat_length2", "gap2")
+                };
+                let keys = [
+                    ParamKey::of_deck(Section::Abutments, s, deck),
+                    ParamKey::of_deck(Section::Abutments, g, deck),
+                ];
+                return Err(src.key_error(
+                    format!(
+                        "{} is set but {} is not (an abutment needs its gap)",
+                        src.at(keys[0]),
+                        src.at(keys[1])
+                    ),
+                    &keys,
+                ));
+            }
+            (None, None) => {}
+        }
+    }
+    // Validate the decks before using them for the default bearing points.
+    model.validate().map_err(|e| sim_error(src, e))?;
+    apply_shape_and_damping(src, d, &b.damping, &mut model)?;
+    model.contact = build_contact(
+        src,
+        &raw.contact,
+        sc.law.as_deref(),
+        j.eps_n,
+        model.masses(),
+    )?;
+    for (deck_no, pts, k, key) in [
+        (1, &b.points1, b.stiffness1, "points1"),
+        (2, &b.points2, b.stiffness2, "points2"),
+    ] {
+        let Some(pts) = pts else { continue };
+        if pts.is_empty() {
+            let key = ParamKey::of_deck(Section::Bearings, key, deck_no);
+            return Err(src.key_error(
+                format!(
+                    "{} is empty (omit it for the default 4 corners)",
+                    src.at(key)
+                ),
+                &[key],
+            ));
+        }
+        let v: Vec<Bearing> = pts
+            .iter()
+            .map(|p| Bearing {
+                point: Vector::new(p[0], p[1]),
+                stiffness: k,
+            })
+            .collect();
+        if deck_no == 1 {
+            model.bearings1 = v;
+        } else {
+            model.bearings2 = v;
+        }
+    }
+    Ok(model)
+}
+
+/// The ground motion of `[ground_motion]` and the overrides, with the record names and units.
+fn build_ground(sc: &Scenario) -> Result<(GroundMotion, [String; 2], AccelUnits), ScenarioError> {
+    let src = &sc.src;
+    let g = &sc.raw.ground_motion;
+    let units = AccelUnits::from_name(&g.csv_units).ok_or_else(|| {
+        src.key_error(
+            format!(
+                "invalid csv_units {:?} at {}: use \"g\" or \"m/s2\"",
+                g.csv_units,
+                src.at(ground("csv_units"))
+            ),
+            &[ground("csv_units")],
+        )
+    })?;
+    let (along_y, along_x, records) = match &sc.record {
+        None if sc.batch => (None, None, ["batch".into(), "none".into()]),
+        Some((p, u)) => {
+            let r = Record::from_path(p, u.unwrap_or(units)).map_err(|error| {
+                ScenarioError::RecordOverride {
+                    path: p.display().to_string(),
+                    error: Box::new(error),
+                }
+            })?;
+            (Some(r), None, [p.display().to_string(), "none".into()])
+        }
+        None => (
+            load_record(src, &g.record_y, "record_y", units)?,
+            load_record(src, &g.record_x, "record_x", units)?,
+            [g.record_y.clone(), g.record_x.clone()],
+        ),
+    };
+    let mult = match sc.scale {
+        Some(s) if s.is_finite() => s,
+        Some(s) => return Err(ScenarioError::Scale(s)),
+        None => 1.0,
+    };
+    let ground = GroundMotion {
+        along_y,
+        scale_y: g.scale_y * mult,
+        along_x,
+        scale_x: g.scale_x * mult,
+        incidence: g.incidence_deg.to_radians(),
+    };
+    ground
+        .validate()
+        .map_err(|e| sim_error(src, SimError::from(e)))?;
+    Ok((ground, records, units))
+}
+
+/// [`Scenario::build`].
+pub(super) fn build(sc: &Scenario) -> Result<SimSetup, ScenarioError> {
+    let src = &sc.src;
+    let model = build_model(sc)?;
+    let (ground, records, units) = build_ground(sc)?;
+    let t = &sc.raw.time;
+    if t.history_every < 1 {
+        return Err(src.invalid(
+            format!("invalid history_every = {}: must be >= 1", t.history_every),
+            time("history_every"),
+        ));
+    }
+    let settings = SimSettings {
+        dt: t.dt,
+        duration: t.duration,
+        history_stride: t.history_every as usize,
+        ..SimSettings::default()
+    };
+    settings.validate().map_err(|e| sim_error(src, e))?;
+    model.validate().map_err(|e| scaled_mass_error(src, e))?;
+    model.linear_system().map_err(|e| sim_error(src, e))?;
+    if !sc.batch && settings.duration.is_none() && ground.end_time() <= 0.0 {
+        return Err(src.key_error(
+            format!(
+                "no ground motion samples after t = 0: set {}",
+                src.at(time("duration"))
+            ),
+            &[time("duration")],
+        ));
+    }
+    // The duration of the run (batch runs without `duration` use each record's length, checked
+    // there).
+    let duration = settings.duration.or((!sc.batch).then(|| ground.end_time()));
+    if let Some(d) = duration {
+        settings.step_count(d).map_err(|e| {
+            let mut at = vec![src.at(time("dt"))];
+            if src.is_set(time("duration")) {
+                at.push(src.at(time("duration")));
+            }
+            ScenarioError::Invalid {
+                message: e.to_string(),
+                at,
+                note: String::new(),
+            }
+        })?;
+        if settings.dt > d {
+            return Err(src.invalid(
+                format!(
+                    "invalid dt = {}: must not exceed the duration {} s",
+                    float_token(settings.dt),
+                    float_token(d)
+                ),
+                time("dt"),
+            ));
+        }
+    }
+    Ok(SimSetup {
+        problem: SimProblem::at_rest(model, ground),
+        settings,
+        records,
+        units,
+    })
+}

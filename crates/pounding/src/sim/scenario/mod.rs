@@ -1,0 +1,203 @@
+//! The scenario of a `simulate` run: a TOML file (every key optional, defaults in
+//! [`DEFAULT_SCENARIO_TOML`]) read into a [`Scenario`], which [`Scenario::build`] turns into a
+//! validated [`SimSetup`] (the [`SimProblem`] and [`SimSettings`] of [`crate::sim::simulate`]).
+//!
+//! ```no_run
+//! use pounding::sim::scenario::Scenario;
+//! let setup = Scenario::load("bridge.toml".as_ref())?.with_law("hertz-damp").build()?;
+//! let sol = pounding::sim::simulate(&setup.problem, &setup.settings)?;
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
+//! Errors are [`ScenarioError`]s that name the file, the `[section] key` (typed, [`ParamKey`])
+//! and the line that sets the bad value, or say that the default applies. Ground-motion record
+//! paths are relative to the scenario file; `builtin:ELC180` / `builtin:ELC270` are the embedded
+//! El Centro 1940 components.
+
+mod build;
+mod contact;
+mod error;
+mod sections;
+
+pub use contact::{
+    DEFAULT_A, DEFAULT_DELTA_M, DEFAULT_K, DEFAULT_MIN_VELOCITY, LAW_NAMES, default_k_h,
+};
+pub use error::{KeyRef, ParamKey, ScenarioError, Section};
+pub use sections::DEFAULT_SCENARIO_TOML;
+
+use super::{SimProblem, SimSettings};
+use crate::ground_motion::AccelUnits;
+use crate::math::Real;
+use std::path::{Path, PathBuf};
+
+/// Where a scenario came from: its name in messages, its text (to locate keys) and the directory
+/// that relative record paths start from.
+#[derive(Debug, Clone)]
+struct Src {
+    origin: String,
+    text: String,
+    dir: PathBuf,
+}
+
+impl Src {
+    /// Where `key` is set (or that it is not).
+    fn at(&self, key: ParamKey) -> KeyRef {
+        KeyRef::locate(key, &self.origin, &self.text)
+    }
+    /// Whether the file sets `key`.
+    fn is_set(&self, key: ParamKey) -> bool {
+        self.at(key).line.is_some()
+    }
+    /// An out-of-range value of `key`.
+    fn invalid(&self, message: String, key: ParamKey) -> ScenarioError {
+        ScenarioError::Invalid {
+            message,
+            at: vec![self.at(key)],
+            note: String::new(),
+        }
+    }
+    /// A message that names `keys` itself.
+    fn key_error(&self, message: String, keys: &[ParamKey]) -> ScenarioError {
+        ScenarioError::Key {
+            message,
+            at: keys.iter().map(|&k| self.at(k)).collect(),
+        }
+    }
+}
+
+/// A `simulate` scenario as read (not yet validated), with the overrides a front end may apply
+/// before [`Scenario::build`].
+#[derive(Debug, Clone)]
+pub struct Scenario {
+    src: Src,
+    raw: sections::Raw,
+    law: Option<String>,
+    record: Option<(PathBuf, Option<AccelUnits>)>,
+    scale: Option<Real>,
+    batch: bool,
+}
+
+/// A validated run: everything [`crate::sim::simulate`] needs, and what the writers of
+/// [`crate::sim::output`] report about the input.
+#[derive(Debug, Clone)]
+pub struct SimSetup {
+    /// The model, the ground motion and the (rest) initial state.
+    pub problem: SimProblem,
+    /// Step size, duration, history stride.
+    pub settings: SimSettings,
+    /// The ground-motion specifications as given (`summary.json`'s `record_y`, `record_x`):
+    /// the scenario's values, the `--record` path and `none`, or `batch` and `none`.
+    pub records: [String; 2],
+    /// Units of `.csv` records (`[ground_motion] csv_units`).
+    pub units: AccelUnits,
+}
+
+impl Default for Scenario {
+    /// The built-in default ([`DEFAULT_SCENARIO_TOML`], named `built-in default` in messages).
+    fn default() -> Self {
+        Self::from_toml(DEFAULT_SCENARIO_TOML, "built-in default")
+            .expect("the built-in default scenario is valid TOML (tested)")
+    }
+}
+
+impl Scenario {
+    /// Reads a scenario from TOML `text`; `origin` names it in error messages. Relative record
+    /// paths start from the current directory (see [`Scenario::with_base_dir`]).
+    ///
+    /// Errors: syntax, unknown keys, wrong types and sections written as arrays
+    /// ([`ScenarioError::Syntax`]). Values are checked by [`Scenario::build`].
+    pub fn from_toml(text: &str, origin: &str) -> Result<Self, ScenarioError> {
+        let raw: sections::Raw = toml::from_str(text).map_err(|e| ScenarioError::Syntax {
+            origin: origin.to_string(),
+            message: e.to_string(),
+        })?;
+        Ok(Self {
+            src: Src {
+                origin: origin.to_string(),
+                text: text.to_string(),
+                dir: PathBuf::from("."),
+            },
+            raw,
+            law: None,
+            record: None,
+            scale: None,
+            batch: false,
+        })
+    }
+
+    /// Reads the scenario file `path` (within [`crate::input::SCENARIO_LIMIT`]); record paths are
+    /// relative to its directory.
+    pub fn load(path: &Path) -> Result<Self, ScenarioError> {
+        let text = crate::input::read_text(path, "scenario file", crate::input::SCENARIO_LIMIT)
+            .map_err(|e| ScenarioError::Read {
+                path: path.display().to_string(),
+                message: e.to_string(),
+            })?;
+        let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        Ok(Self::from_toml(&text, &path.display().to_string())?.with_base_dir(dir))
+    }
+
+    /// Relative record paths start from `dir` (an empty path means the current directory).
+    pub fn with_base_dir(mut self, dir: PathBuf) -> Self {
+        self.src.dir = if dir.as_os_str().is_empty() {
+            PathBuf::from(".")
+        } else {
+            dir
+        };
+        self
+    }
+
+    /// Replaces `[contact] law` by `law` (one of [`LAW_NAMES`]; others are refused by
+    /// [`Scenario::build`]); the other `[contact]` keys and their defaults still apply.
+    pub fn with_law(mut self, law: &str) -> Self {
+        self.law = Some(law.to_string());
+        self
+    }
+
+    /// Uses the record file `path` (PEER `.AT2`, or `.csv` in `units`, by default the scenario's
+    /// `csv_units`) as the only ground-motion component, along `y`, instead of the scenario's
+    /// records (`pounding simulate --record`).
+    pub fn with_record(mut self, path: &Path, units: Option<AccelUnits>) -> Self {
+        self.record = Some((path.to_path_buf(), units));
+        self
+    }
+
+    /// Multiplies both ground-motion scale factors by `s` (`pounding simulate --scale`; must be
+    /// finite).
+    pub fn with_scale(mut self, s: Real) -> Self {
+        self.scale = Some(s);
+        self
+    }
+
+    /// The base problem of a batch: no records are loaded (each run brings its own, see
+    /// [`crate::sim::batch`]) and a missing `duration` means each record's length.
+    pub fn for_batch(mut self) -> Self {
+        self.batch = true;
+        self
+    }
+
+    /// The scenario's name in messages.
+    pub fn origin(&self) -> &str {
+        &self.src.origin
+    }
+
+    /// The contact law that [`Scenario::build`] will use: the override, else `[contact] law`,
+    /// else `rigid`.
+    pub fn law(&self) -> &str {
+        self.law
+            .as_deref()
+            .or(self.raw.contact.law.as_deref())
+            .unwrap_or("rigid")
+    }
+
+    /// Where `key` is set in this scenario (file and line), or that the default applies.
+    pub fn key_ref(&self, key: ParamKey) -> KeyRef {
+        self.src.at(key)
+    }
+
+    /// Validates every value and builds the run (nothing is simulated). Errors name the file,
+    /// key and line ([`ScenarioError`]).
+    pub fn build(&self) -> Result<SimSetup, ScenarioError> {
+        build::build(self)
+    }
+}

@@ -1,0 +1,225 @@
+//! The sections of a `simulate` scenario file as read by `serde` (every key optional, unknown keys
+//! refused, sections only as tables) and their defaults, which are the values of
+//! [`DEFAULT_SCENARIO_TOML`].
+
+use crate::toml_schema::{Exact, Table};
+use serde::Deserialize;
+
+/// The built-in default scenario as commented TOML (what `pounding simulate --print-default`
+/// prints, byte for byte); [`super::Scenario::default`] is this text parsed.
+pub const DEFAULT_SCENARIO_TOML: &str = r#"# pounding simulate — scenario file (TOML). Every key is optional; the values below are the
+# built-in defaults. Unknown keys are errors. Paths are relative to this file.
+# Frame (spec §4): x along the joint line, y normal to it pointing into deck 1; angles in degrees.
+
+[decks]
+# shape = "curved"  # "curved" (the S arrangement, below), "straight" (rectangles L x width) or
+#                   # "skew" (parallelograms: end faces along the joint line, axis turned by
+#                   # skew_deg from the joint normal); straight/skew need L1 and L2 [m]:
+# L1 = 40.0         # length of deck 1 along its axis [m] (straight/skew)
+# L2 = 40.0         # length of deck 2 [m] (straight/skew)
+# skew_deg = 30.0   # skew angle in [0, 90) (skew)
+R1 = 100.0          # centre-line radius of deck 1 [m]
+R2 = 100.0          # centre-line radius of deck 2 [m]
+beta1_deg = 60.0    # curve angle of deck 1 [deg]
+beta2_deg = 60.0    # curve angle of deck 2 [deg]
+width = 10.0        # common deck width W [m]
+thickness = 0.5     # [m]
+density = 2500.0    # [kg/m^3]  (1309 t per deck)
+
+[joint]
+gap = 0.05          # joint opening g [m]
+seat_length = 0.4   # seat length at every deck end [m]; exceeding it = unseating
+mu = 0.5            # Coulomb friction coefficient at the joint
+eps_n = 0.5         # Newton restitution coefficient
+
+# [abutments]       # optional rigid abutments beyond the far end of each deck (same mu, eps_n)
+# gap1 = 0.05       # gap between deck 1's far end face and its abutment [m]
+# seat_length1 = 0.4  # seat length of that end [m] (default: [joint] seat_length)
+# gap2 = 0.05
+# seat_length2 = 0.4
+
+[bearings]
+# One bearing at each of the 4 end-face corners of each deck (linear, same stiffness in x and y).
+stiffness1 = 2.02e7 # per bearing, deck 1 [N/m]  (translational period ~0.8 s)
+stiffness2 = 8.97e6 # per bearing, deck 2 [N/m]  (translational period ~1.2 s)
+damping_ratio = 0.05  # Rayleigh, at each deck's two lowest distinct frequencies
+# points1 = [[5.0, 0.0], [-5.0, 0.0]]  # optional custom bearing points of deck 1 [m],
+#                                      # relative to its joint-face midpoint, reference pose
+
+[ground_motion]
+# A file path (PEER .AT2 in g, or .csv "t, a"), "builtin:ELC180" / "builtin:ELC270"
+# (El Centro 1940, RSN 6, embedded), or "none".
+record_y = "builtin:ELC180"  # acts along y (normal to the joint) for incidence 0
+record_x = "builtin:ELC270"  # acts along x (along the joint)
+scale_y = 1.0
+scale_x = 1.0
+incidence_deg = 0.0          # turns both components counter-clockwise
+csv_units = "g"              # units of .csv records: "g" or "m/s2"
+
+[time]
+dt = 1e-3            # time step [s]
+# duration = 53.71   # [s]; default: until the last record sample
+history_every = 10   # write every n-th step to history.csv (peaks use every step)
+
+# [contact]          # the joint's normal contact law (see the README, "Compliance contact laws in the simulator")
+# law = "rigid"      # rigid (Newton + Coulomb LCP, default) | kelvin | hertz | hertz-damp |
+#                    # bilinear | jankowski: compliance laws (trapezoid + Newton on the forces)
+# restitution = 0.5  # target e of the damped laws (default: [joint] eps_n)
+# k = 1e10           # kelvin [N/m]; c = ... [N s/m] instead of restitution
+# k_h = 2.747e10     # hertz, hertz-damp, bilinear derivation [N/m^1.5] (25 000 kip/in^1.5)
+# k1 = 1.5586e10     # bilinear, all three or none (then from k_h, restitution,
+# k2 = 3.1328e9      #   delta_m = 0.0254, a = 0.1)
+# delta_y = 2.54e-3
+# friction_velocity = 1e-3  # regularisation of Coulomb friction [m/s]
+# Also: [decks] mass1 / mass2 (deck mass directly) and [bearings] damping = "dashpots"
+# (c = 2 zeta m omega to the ground, x and y) instead of "rayleigh".
+"#;
+
+#[derive(Deserialize, Default, Clone, Debug)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct Raw {
+    // `Table`: a section written as an array is an error (serde would read it by position).
+    #[serde(default)]
+    pub(crate) decks: Table<DecksSec>,
+    #[serde(default)]
+    pub(crate) joint: Table<JointSec>,
+    #[serde(default)]
+    pub(crate) bearings: Table<BearingsSec>,
+    #[serde(default)]
+    pub(crate) ground_motion: Table<GroundSec>,
+    #[serde(default)]
+    pub(crate) time: Table<TimeSec>,
+    #[serde(default)]
+    pub(crate) contact: Table<super::contact::ContactSec>,
+    #[serde(default)]
+    pub(crate) abutments: Table<AbutmentsSec>,
+}
+
+#[derive(Deserialize, Default, Clone, Debug)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct AbutmentsSec {
+    pub(crate) gap1: Option<f64>,
+    pub(crate) gap2: Option<f64>,
+    pub(crate) seat_length1: Option<f64>,
+    pub(crate) seat_length2: Option<f64>,
+}
+
+#[derive(Deserialize, Clone, Debug)]
+#[serde(deny_unknown_fields, default)]
+#[allow(non_snake_case)]
+pub(crate) struct DecksSec {
+    pub(crate) shape: String,
+    pub(crate) L1: Option<f64>,
+    pub(crate) L2: Option<f64>,
+    pub(crate) skew_deg: Option<f64>,
+    pub(crate) R1: f64,
+    pub(crate) R2: f64,
+    pub(crate) beta1_deg: f64,
+    pub(crate) beta2_deg: f64,
+    pub(crate) width: f64,
+    pub(crate) thickness: f64,
+    pub(crate) density: f64,
+    pub(crate) mass1: Option<f64>,
+    pub(crate) mass2: Option<f64>,
+}
+impl Default for DecksSec {
+    fn default() -> Self {
+        Self {
+            shape: "curved".into(),
+            L1: None,
+            L2: None,
+            skew_deg: None,
+            R1: 100.0,
+            R2: 100.0,
+            beta1_deg: 60.0,
+            beta2_deg: 60.0,
+            width: 10.0,
+            thickness: 0.5,
+            density: 2500.0,
+            mass1: None,
+            mass2: None,
+        }
+    }
+}
+
+#[derive(Deserialize, Clone, Debug)]
+#[serde(deny_unknown_fields, default)]
+pub(crate) struct JointSec {
+    pub(crate) gap: f64,
+    pub(crate) seat_length: f64,
+    pub(crate) mu: f64,
+    pub(crate) eps_n: f64,
+}
+impl Default for JointSec {
+    fn default() -> Self {
+        Self {
+            gap: 0.05,
+            seat_length: 0.4,
+            mu: 0.5,
+            eps_n: 0.5,
+        }
+    }
+}
+
+#[derive(Deserialize, Clone, Debug)]
+#[serde(deny_unknown_fields, default)]
+pub(crate) struct BearingsSec {
+    pub(crate) stiffness1: f64,
+    pub(crate) stiffness2: f64,
+    pub(crate) damping_ratio: f64,
+    pub(crate) points1: Option<Vec<Exact<2>>>,
+    pub(crate) points2: Option<Vec<Exact<2>>>,
+    pub(crate) damping: String,
+}
+impl Default for BearingsSec {
+    fn default() -> Self {
+        Self {
+            stiffness1: 2.02e7,
+            stiffness2: 8.97e6,
+            damping_ratio: 0.05,
+            points1: None,
+            points2: None,
+            damping: "rayleigh".into(),
+        }
+    }
+}
+
+#[derive(Deserialize, Clone, Debug)]
+#[serde(deny_unknown_fields, default)]
+pub(crate) struct GroundSec {
+    pub(crate) record_y: String,
+    pub(crate) record_x: String,
+    pub(crate) scale_y: f64,
+    pub(crate) scale_x: f64,
+    pub(crate) incidence_deg: f64,
+    pub(crate) csv_units: String,
+}
+impl Default for GroundSec {
+    fn default() -> Self {
+        Self {
+            record_y: "builtin:ELC180".into(),
+            record_x: "builtin:ELC270".into(),
+            scale_y: 1.0,
+            scale_x: 1.0,
+            incidence_deg: 0.0,
+            csv_units: "g".into(),
+        }
+    }
+}
+
+#[derive(Deserialize, Clone, Debug)]
+#[serde(deny_unknown_fields, default)]
+pub(crate) struct TimeSec {
+    pub(crate) dt: f64,
+    pub(crate) duration: Option<f64>,
+    pub(crate) history_every: i64,
+}
+impl Default for TimeSec {
+    fn default() -> Self {
+        Self {
+            dt: 1e-3,
+            duration: None,
+            history_every: 10,
+        }
+    }
+}
