@@ -94,7 +94,11 @@ fn csv_reader_units_header_and_nonuniform_times() {
     let r = Record::from_csv_str(text, "c.csv", AccelUnits::G).unwrap();
     assert_eq!(r.times(), &[0.0, 0.02, 0.05]);
     assert!((r.accel(0.035) - 0.05 * G0).abs() < 1e-12);
-    let m = Record::from_csv_str(text, "c.csv", AccelUnits::MetresPerSecondSquared).unwrap();
+    // The header says g: reading the file in m/s² is refused (it used to be read silently).
+    let e = Record::from_csv_str(text, "c.csv", AccelUnits::MetresPerSecondSquared).unwrap_err();
+    assert!(e.to_string().contains("c.csv:1"), "{e}");
+    let plain = text.replace("acc (g)", "acc");
+    let m = Record::from_csv_str(&plain, "c.csv", AccelUnits::MetresPerSecondSquared).unwrap();
     assert!((m.values()[1] - 0.2).abs() < 1e-15);
 }
 
