@@ -105,6 +105,8 @@ impl Scheme {
         let ag = problem.ground.sample_uniform(h, n_steps);
         let th = settings.theta;
         let (mm, kk, cc) = (&sys.mass, &sys.stiffness, &sys.damping);
+        // h²θ² as the rigid scheme always computed it; the former compliance copy used (hθ)²,
+        // which has the same bits for θ = ½ (scaling by powers of two is exact).
         let what = mm + cc * (h * th) + kk * (h * h * th * th);
         let winv = what
             .try_inverse()
@@ -113,7 +115,7 @@ impl Scheme {
         let a_u = -(winv * (cc + kk * (h * th))) * h;
         let a_q = -(winv * kk) * h;
         let mut mr = Matrix6x2::zeros();
-        for j in 0..2 {
+        for j in 0..mm.nrows() / 3 {
             mr[(3 * j, 0)] = mm[(3 * j, 3 * j)];
             mr[(3 * j + 1, 1)] = mm[(3 * j + 1, 3 * j + 1)];
         }

@@ -50,6 +50,13 @@
 //! For `θ = ½` the discrete balance `E_0 + W_in = T + V + D_viscous + D_contact` holds to rounding,
 //! so [`SimSummary::energy_balance_error`] checks the implementation's bookkeeping (a sign or
 //! scaling slip shows at O(1)); for `θ > ½` it measures the scheme's numerical dissipation.
+//!
+//! # Code layout
+//! [`simulate`] validates, builds the time grid and iteration matrices and hands the loop to the
+//! time-stepping driver (`driver.rs`: monitors, energy bookkeeping, history, summary), which
+//! calls one stepper per step: `rigid.rs` (the scheme above) or [`compliance`] (a compliance
+//! contact law with Newton). A new integrator or contact treatment is a new stepper; a new
+//! monitored quantity goes into the driver and is then reported for every law.
 
 pub mod batch;
 pub mod compliance;
