@@ -856,38 +856,27 @@ pub(crate) fn energies_finite(e: &[Real]) -> bool {
 }
 
 /// Runs the simulation (see the module documentation for the model and the scheme): the
-/// time-stepping driver ([`driver`]) with the stepper of the joint's contact law (rigid:
-/// [`rigid`]; compliance: [`compliance`]).
+/// time-stepping driver (`driver.rs`) with the stepper of the joint's contact law (rigid:
+/// `rigid.rs`; compliance: [`compliance`]).
 ///
 /// Bad input → [`SimError`]; numerical trouble → [`SimSolution::status`].
 pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolution, SimError> {
+    use compliance::ComplianceStepper;
     let sys = driver::checked_system(problem, settings)?;
-    match &problem.model.contact {
-        JointContact::Compliance(cc) => {
-            let joint = compliance::ComplianceStepper::joint_law(cc)?;
-            let scheme = driver::Scheme::new(problem, settings, sys)?;
-            let bridge = driver::Bridge::new(&problem.model);
-            let mut stepper =
-                compliance::ComplianceStepper::new(problem, cc, joint, &scheme, &bridge);
-            Ok(driver::run(
-                problem,
-                settings,
-                scheme,
-                &bridge,
-                &mut stepper,
-            ))
+    let joint = match &problem.model.contact {
+        JointContact::Compliance(cc) => Some((cc, ComplianceStepper::joint_law(cc)?)),
+        JointContact::Rigid => None,
+    };
+    let scheme = driver::Scheme::new(problem, settings, sys)?;
+    let bridge = driver::Bridge::new(&problem.model);
+    Ok(match joint {
+        Some((cc, joint)) => {
+            let mut stepper = ComplianceStepper::new(problem, cc, joint, &scheme, &bridge);
+            driver::run(problem, settings, scheme, &bridge, &mut stepper)
         }
-        JointContact::Rigid => {
-            let scheme = driver::Scheme::new(problem, settings, sys)?;
-            let bridge = driver::Bridge::new(&problem.model);
+        None => {
             let mut stepper = rigid::RigidStepper::new(&problem.model, settings)?;
-            Ok(driver::run(
-                problem,
-                settings,
-                scheme,
-                &bridge,
-                &mut stepper,
-            ))
+            driver::run(problem, settings, scheme, &bridge, &mut stepper)
         }
-    }
+    })
 }
