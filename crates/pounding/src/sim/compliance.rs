@@ -56,23 +56,23 @@
 //! masses) and `v_ref = 1 m/s`; the advice is returned in
 //! [`super::SimSolution::time_step_advice`] (the CLI warns when it is not adequate).
 #![allow(clippy::needless_range_loop)]
-
 use super::contact::{Pose, candidates};
-use super::{
-    ComplianceContact, Energy, History, ImpactRecord, SimContact, SimError, SimProblem,
-    SimSettings, SimSolution, SimStatus, SimSummary, balance_error, energies_finite, max_nan,
-};
+
+use super::driver::{Bridge, ImpactLog, Scheme, StepInput, StepOutput, Stepper, StepperStats};
+use super::model::DeckBody;
+use super::{ComplianceContact, ImpactRecord, SimContact, SimError, SimProblem};
 use crate::analytic::SlipMode;
 use crate::contact_law::sharing::JointLaw;
 use crate::contact_law::timestep::law_time_step_advice;
 use crate::contact_law::{LawState, effective_mass};
-use crate::math::{Real, Vector};
+use crate::geometry::ContactCase;
+use crate::math::Real;
 use nalgebra::{Matrix6, Vector6};
 
 /// One joint end's contact evaluated at a trial state.
 #[derive(Clone, Copy)]
 struct EndEval {
-    case: Option<crate::geometry::ContactCase>,
+    case: Option<ContactCase>,
     wn: Vector6<Real>,
     wt: Vector6<Real>,
     delta: Real,
@@ -87,67 +87,22 @@ struct EndEval {
     state: LawState,
 }
 
-/// Evaluates both ends at `(q, u)`.
-#[allow(clippy::too_many_arguments)]
-fn eval_ends(
-    bodies: &[super::model::DeckBody; 2],
-    half_w: Real,
-    q: &Vector6<Real>,
-    u: &Vector6<Real>,
-    states: &[LawState; 2],
-    joint: &JointLaw,
-    mu: Real,
-    vr: Real,
-    hth: Real,
-) -> [EndEval; 2] {
-    let qa: [Real; 6] = (*q).into();
-    let pose = Pose::new(bodies, &qa);
-    let (cands, sel) = candidates(bodies, &pose, half_w);
-    let mut out = [EndEval {
-        case: None,
-        wn: Vector6::zeros(),
-        wt: Vector6::zeros(),
-        delta: 0.0,
-        f_n: 0.0,
-        f_t: 0.0,
-        kc: 0.0,
-        kt: 0.0,
-        mus: 0.0,
-        state: LawState::default(),
-    }; 2];
-    for e in 0..2 {
-        match sel[e] {
-            Some(i) => {
-                let c = cands[i];
-                let (wn, wt) = c.force_directions(&pose);
-                let (wn, wt) = (Vector6::from(wn), Vector6::from(wt));
-                let delta = -c.gap;
-                let ddot = -wn.dot(u);
-                let ev = joint.corner_evaluate(&states[e], delta, ddot);
-                let gt = wt.dot(u);
-                let root = (gt * gt + vr * vr).sqrt();
-                let s = gt / root;
-                let sp = vr * vr / (root * root * root);
-                out[e] = EndEval {
-                    case: Some(c.case),
-                    wn,
-                    wt,
-                    delta,
-                    f_n: ev.force,
-                    f_t: -mu * ev.force * s,
-                    kc: ev.stiffness * hth + ev.damping,
-                    kt: mu * ev.force * sp,
-                    mus: mu * s,
-                    state: ev.state,
-                };
-            }
-            None => {
-                // No corner over the other face at this end: open, state reset to the open gap.
-                out[e].state = LawState::open_at(-half_w.max(1.0));
-            }
+impl EndEval {
+    /// An end without a contact.
+    fn open() -> Self {
+        EndEval {
+            case: None,
+            wn: Vector6::zeros(),
+            wt: Vector6::zeros(),
+            delta: 0.0,
+            f_n: 0.0,
+            f_t: 0.0,
+            kc: 0.0,
+            kt: 0.0,
+            mus: 0.0,
+            state: LawState::default(),
         }
     }
-    out
 }
 
 fn gen_force(ends: &[EndEval; 2]) -> Vector6<Real> {
@@ -158,121 +113,16 @@ fn gen_force(ends: &[EndEval; 2]) -> Vector6<Real> {
     r
 }
 
-/// What [`closure_step`] needs from the stepper.
-struct ClosureCtx<'a> {
-    bodies: &'a [super::model::DeckBody; 2],
-    half_w: Real,
-    states: &'a [LawState; 2],
-    joint: &'a JointLaw,
-    mu: Real,
-    vr: Real,
-    hth: Real,
-    winv: &'a Matrix6<Real>,
-    base: &'a Vector6<Real>,
-    q: &'a Vector6<Real>,
-    u: &'a Vector6<Real>,
-    th: Real,
-    h: Real,
-}
-
-/// The graph-closure step for a law whose force jumps at `δ = 0` (Kelvin's `c δ̇`): the ends
-/// whose penetration is within 1 µm of zero in the best Newton iterate are held at `δ_{k+1} = 0`
-/// by an unknown force `λ_e`, which must lie in the closure `[0, F(0⁺, δ̇)]` of the law's graph.
-/// Newton on `(u, λ)`; `None` if it does not converge or `λ` leaves the closure.
-fn closure_step(
-    c: &ClosureCtx,
-    u0: &Vector6<Real>,
-    ev0: &[EndEval; 2],
-) -> Option<(Vector6<Real>, [EndEval; 2])> {
-    let held: Vec<usize> = (0..2)
-        .filter(|&e| ev0[e].case.is_some() && ev0[e].delta.abs() < 1e-6)
-        .collect();
-    if held.is_empty() {
-        return None;
-    }
-    let n = 6 + held.len();
-    let q_of = |un: &Vector6<Real>| c.q + (c.u * (1.0 - c.th) + un * c.th) * c.h;
-    let mut un = *u0;
-    let mut lam: Vec<Real> = held.iter().map(|&e| ev0[e].f_n).collect();
-    for _ in 0..30 {
-        let mut ev = eval_ends(
-            c.bodies,
-            c.half_w,
-            &q_of(&un),
-            &un,
-            c.states,
-            c.joint,
-            c.mu,
-            c.vr,
-            c.hth,
-        );
-        for (i, &e) in held.iter().enumerate() {
-            let gt = ev[e].wt.dot(&un);
-            let root = (gt * gt + c.vr * c.vr).sqrt();
-            ev[e].f_n = lam[i];
-            ev[e].f_t = -c.mu * lam[i] * gt / root;
-            ev[e].kc = 0.0;
-            ev[e].kt = c.mu * lam[i] * c.vr * c.vr / (root * root * root);
-            ev[e].mus = c.mu * gt / root;
-        }
-        let r_u = un - c.base - c.winv * gen_force(&ev) * c.hth;
-        let mut r = nalgebra::DVector::<Real>::zeros(n);
-        r.rows_mut(0, 6).copy_from(&r_u);
-        for (i, &e) in held.iter().enumerate() {
-            r[6 + i] = ev[e].delta;
-        }
-        let mut dr = Matrix6::<Real>::zeros();
-        for e in &ev {
+/// `∂R/∂u` of the ends (module doc); `all = false` skips ends without force and stiffness.
+fn force_jacobian(ev: &[EndEval; 2], all: bool) -> Matrix6<Real> {
+    let mut dr = Matrix6::<Real>::zeros();
+    for e in ev {
+        if all || e.f_n > 0.0 || e.kc > 0.0 {
             dr -= e.wn * e.wn.transpose() * e.kc;
             dr += e.wt * (e.wn.transpose() * (e.mus * e.kc) - e.wt.transpose() * e.kt);
         }
-        let mut jac = nalgebra::DMatrix::<Real>::zeros(n, n);
-        jac.view_mut((0, 0), (6, 6))
-            .copy_from(&(Matrix6::identity() - c.winv * dr * c.hth));
-        for (i, &e) in held.iter().enumerate() {
-            let col = -(c.winv * (ev[e].wn - ev[e].wt * ev[e].mus)) * c.hth;
-            jac.view_mut((0, 6 + i), (6, 1)).copy_from(&col);
-            // δ = −g_N, ∂g_N/∂q = w_Nᵀ, ∂q/∂u = hθ
-            let row = -(ev[e].wn.transpose() * c.hth);
-            jac.view_mut((6 + i, 0), (1, 6)).copy_from(&row);
-        }
-        let dx = jac.lu().solve(&(-&r))?;
-        let du = Vector6::from_iterator(dx.rows(0, 6).iter().copied());
-        un += du;
-        for i in 0..held.len() {
-            lam[i] += dx[6 + i];
-        }
-        let small = du.amax() <= 1e-12 + 1e-10 * un.amax()
-            && (0..held.len()).all(|i| dx[6 + i].abs() <= 1e-6 * lam[i].abs().max(1.0));
-        if small {
-            let mut ev = eval_ends(
-                c.bodies,
-                c.half_w,
-                &q_of(&un),
-                &un,
-                c.states,
-                c.joint,
-                c.mu,
-                c.vr,
-                c.hth,
-            );
-            for (i, &e) in held.iter().enumerate() {
-                let ddot = -ev[e].wn.dot(&un);
-                let f_hi = c
-                    .joint
-                    .corner_evaluate(&c.states[e], Real::MIN_POSITIVE, ddot)
-                    .force;
-                if !(lam[i] >= 0.0 && lam[i] <= f_hi * (1.0 + 1e-9)) {
-                    return None;
-                }
-                let gt = ev[e].wt.dot(&un);
-                ev[e].f_n = lam[i];
-                ev[e].f_t = -c.mu * lam[i] * gt / (gt * gt + c.vr * c.vr).sqrt();
-            }
-            return Some((un, ev));
-        }
     }
-    None
+    dr
 }
 
 /// Per-end bookkeeping of an impact in progress.
@@ -284,217 +134,164 @@ struct OpenImpact {
     work: Real,
 }
 
-/// The compliance-law counterpart of [`super::simulate`] (module doc).
-pub(crate) fn simulate_compliance(
-    problem: &SimProblem,
-    settings: &SimSettings,
-    cc: &ComplianceContact,
-) -> Result<SimSolution, SimError> {
-    settings.validate()?;
-    problem.ground.validate()?;
-    let model = &problem.model;
-    let sys = model.linear_system()?;
-    for (i, v) in problem.q0.iter().chain(problem.u0.iter()).enumerate() {
-        if !v.is_finite() {
-            let name = if i < 6 {
-                format!("q0[{i}]")
-            } else {
-                format!("u0[{}]", i - 6)
-            };
-            return Err(SimError::invalid(name, *v, "must be finite"));
-        }
+/// The fixed data of one step's iteration: `q_k`, `u_k`, `Ŵ⁻¹` and
+/// `base = u_free + h (1−θ) Ŵ⁻¹ R_k`.
+struct Trial<'a> {
+    q: &'a Vector6<Real>,
+    u: &'a Vector6<Real>,
+    winv: &'a Matrix6<Real>,
+    base: Vector6<Real>,
+}
+
+/// The compliance-law stepper (module doc).
+pub(crate) struct ComplianceStepper {
+    bodies: [DeckBody; 2],
+    half_w: Real,
+    joint: JointLaw,
+    mu: Real,
+    vr: Real,
+    h: Real,
+    th: Real,
+    hth: Real,
+    /// Committed law state of each end.
+    states: [LawState; 2],
+    /// The ends at `t_k`.
+    ends: [EndEval; 2],
+    /// `R_k`.
+    r_k: Vector6<Real>,
+    joint_in_contact: bool,
+    open_imp: [Option<OpenImpact>; 2],
+    d_cont: Real,
+    stats: StepperStats,
+}
+
+impl ComplianceStepper {
+    /// The joint law shared by the two ends (checked before the time grid is built).
+    pub fn joint_law(cc: &ComplianceContact) -> Result<JointLaw, SimError> {
+        JointLaw::new(cc.law, 2).map_err(|e| SimError::invalid("corners", 2.0, &e.to_string()))
     }
-    let joint =
-        JointLaw::new(cc.law, 2).map_err(|e| SimError::invalid("corners", 2.0, &e.to_string()))?;
-    let h = settings.dt;
-    let duration = match settings.duration {
-        Some(d) => d,
-        None => {
-            let d = problem.ground.end_time();
-            if d <= 0.0 {
-                return Err(SimError::invalid(
-                    "duration",
-                    d,
-                    "must be given when the ground motion has no samples after t = 0",
-                ));
-            }
-            d
-        }
-    };
-    let n_steps = settings.step_count(duration)?;
-    let ag = problem.ground.sample_uniform(h, n_steps);
-    let bodies = model.bodies();
-    let m1 = bodies[0].mass.mass;
-    let m2 = bodies[1].mass.mass;
-    let advice = effective_mass(m1, m2)
-        .and_then(|m| law_time_step_advice(&cc.law, h, m, 1.0))
-        .ok();
 
-    let th = settings.theta;
-    let hth = h * th;
-    let (mm, kk, cmat) = (&sys.mass, &sys.stiffness, &sys.damping);
-    let what = mm + cmat * hth + kk * (hth * hth);
-    let winv = what
-        .try_inverse()
-        .ok_or_else(|| SimError::invalid("dt", h, "iteration matrix is singular"))?;
-    let a_u = -(winv * (cmat + kk * hth)) * h;
-    let a_q = -(winv * kk) * h;
-    let mut mr = nalgebra::Matrix6x2::zeros();
-    for j in 0..2 {
-        mr[(3 * j, 0)] = mm[(3 * j, 3 * j)];
-        mr[(3 * j + 1, 1)] = mm[(3 * j + 1, 3 * j + 1)];
-    }
-    let b_g = -(winv * mr) * h;
-    let f_of = |a: &Vector| -> Vector6<Real> { -(mr * nalgebra::Vector2::new(a.x, a.y)) };
-
-    let half_w = bodies[0].half_face;
-    let (mu, vr) = (model.friction, cc.friction_velocity);
-    let g0 = model.gap;
-
-    let mut q = Vector6::from(problem.q0);
-    let mut u = Vector6::from(problem.u0);
-    // Initial law states: open at the initial gaps (committed δ = −g_N(q_0)).
-    let mut states = [LawState::default(); 2];
-    {
-        let first = eval_ends(&bodies, half_w, &q, &u, &states, &joint, mu, vr, hth);
+    /// The stepper at the initial state: law states open at the initial gaps (committed
+    /// `δ = −g_N(q_0)`).
+    pub fn new(
+        problem: &SimProblem,
+        cc: &ComplianceContact,
+        joint: JointLaw,
+        scheme: &Scheme,
+        bridge: &Bridge,
+    ) -> Self {
+        let (h, th) = (scheme.h, scheme.th);
+        let (m1, m2) = (bridge.bodies[0].mass.mass, bridge.bodies[1].mass.mass);
+        let advice = effective_mass(m1, m2)
+            .and_then(|m| law_time_step_advice(&cc.law, h, m, 1.0))
+            .ok();
+        let mut s = ComplianceStepper {
+            bodies: bridge.bodies,
+            half_w: bridge.half_w,
+            joint,
+            mu: problem.model.friction,
+            vr: cc.friction_velocity,
+            h,
+            th,
+            hth: h * th,
+            states: [LawState::default(); 2],
+            ends: [EndEval::open(); 2],
+            r_k: Vector6::zeros(),
+            joint_in_contact: false,
+            open_imp: [None, None],
+            d_cont: 0.0,
+            stats: StepperStats {
+                time_step_advice: advice,
+                ..StepperStats::default()
+            },
+        };
+        let (q, u) = (Vector6::from(problem.q0), Vector6::from(problem.u0));
+        let first = s.eval_ends(&q, &u, &s.states);
         for e in 0..2 {
-            states[e] = LawState::open_at(first[e].delta.min(0.0));
+            s.states[e] = LawState::open_at(first[e].delta.min(0.0));
         }
-    }
-    let mut ends = eval_ends(&bodies, half_w, &q, &u, &states, &joint, mu, vr, hth);
-    for e in 0..2 {
-        states[e] = ends[e].state;
-    }
-    let mut r_k = gen_force(&ends);
-
-    let energy_of =
-        |q: &Vector6<Real>, u: &Vector6<Real>| (0.5 * u.dot(&(mm * u)), 0.5 * q.dot(&(kk * q)));
-    let (t0, v0) = energy_of(&q, &u);
-    let e0 = t0 + v0;
-    let (mut w_in, mut d_visc, mut d_cont) = (0.0, 0.0, 0.0);
-    let mut max_in: Real = e0.abs();
-    let mut max_bal: Real = 0.0;
-
-    let mut hist = History::default();
-    let mut impacts: Vec<ImpactRecord> = Vec::new();
-    let mut n_impacts = 0usize;
-    let mut joint_in_contact = false;
-    let mut open_imp: [Option<OpenImpact>; 2] = [None, None];
-    let mut peak_close = Real::NEG_INFINITY;
-    let mut peak_open = Real::NEG_INFINITY;
-    let mut peak_rot = [0.0f64; 2];
-    let mut peak_slip: Real = 0.0;
-    let mut peak_seat = [Real::NEG_INFINITY; 4];
-    let mut unseat: Option<(Real, usize)> = None;
-    let mut max_pen: Real = 0.0;
-    let mut peak_force: Real = 0.0;
-    let mut status = SimStatus::Completed;
-    let mut newton_failures = 0usize;
-    let mut closure_steps = 0usize;
-    let mut steps_done = 0usize;
-    let seat_pts: [(usize, [Vector; 2], Vector); 4] = [
-        (0, bodies[0].joint_corners, bodies[0].joint_inward),
-        (0, bodies[0].far_corners, bodies[0].far_inward),
-        (1, bodies[1].joint_corners, bodies[1].joint_inward),
-        (1, bodies[1].far_corners, bodies[1].far_inward),
-    ];
-
-    for k in 0..=n_steps {
-        let t = k as Real * h;
-        let qa: [Real; 6] = q.into();
-        let pose = Pose::new(&bodies, &qa);
-        let (cands, sel) = candidates(&bodies, &pose, half_w);
-        // ---- monitoring at t_k (as the rigid scheme) ----
-        let end_gaps = sel.map(|s| s.map_or(Real::NAN, |i| cands[i].gap));
-        let mut gmin = Real::INFINITY;
-        let mut gmax = Real::NEG_INFINITY;
-        for g in end_gaps.iter().filter(|g| !g.is_nan()) {
-            gmin = gmin.min(*g);
-            gmax = gmax.max(*g);
+        s.ends = s.eval_ends(&q, &u, &s.states);
+        for e in 0..2 {
+            s.states[e] = s.ends[e].state;
         }
-        peak_close = peak_close.max(g0 - gmin);
-        max_pen = max_pen.max(-gmin);
-        peak_open = peak_open.max(gmax - g0);
-        peak_rot[0] = peak_rot[0].max(q[2].abs());
-        peak_rot[1] = peak_rot[1].max(q[5].abs());
-        let fm1 = pose.place(&bodies, 0, &bodies[0].face_mid) - bodies[0].face_mid;
-        let fm2 = pose.place(&bodies, 1, &bodies[1].face_mid) - bodies[1].face_mid;
-        let slip = (fm2.x - fm1.x) + 0.0;
-        peak_slip = peak_slip.max(slip.abs());
-        for (e, (j, pts, n_in)) in seat_pts.iter().enumerate() {
-            let s = pts
-                .iter()
-                .map(|p| (pose.place(&bodies, *j, p) - p).dot(n_in))
-                .fold(Real::NEG_INFINITY, Real::max);
-            peak_seat[e] = peak_seat[e].max(s);
-            if unseat.is_none() && s > model.seat_length {
-                unseat = Some((t, e));
+        s.r_k = gen_force(&s.ends);
+        s
+    }
+
+    /// Evaluates both ends at `(q, u)` from the committed `states`.
+    fn eval_ends(
+        &self,
+        q: &Vector6<Real>,
+        u: &Vector6<Real>,
+        states: &[LawState; 2],
+    ) -> [EndEval; 2] {
+        let (mu, vr) = (self.mu, self.vr);
+        let qa: [Real; 6] = (*q).into();
+        let pose = Pose::new(&self.bodies, &qa);
+        let (cands, sel) = candidates(&self.bodies, &pose, self.half_w);
+        let mut out = [EndEval::open(); 2];
+        for e in 0..2 {
+            match sel[e] {
+                Some(i) => {
+                    let c = cands[i];
+                    let (wn, wt) = c.force_directions(&pose);
+                    let (wn, wt) = (Vector6::from(wn), Vector6::from(wt));
+                    let delta = -c.gap;
+                    let ddot = -wn.dot(u);
+                    let ev = self.joint.corner_evaluate(&states[e], delta, ddot);
+                    let gt = wt.dot(u);
+                    let root = (gt * gt + vr * vr).sqrt();
+                    let s = gt / root;
+                    let sp = vr * vr / (root * root * root);
+                    out[e] = EndEval {
+                        case: Some(c.case),
+                        wn,
+                        wt,
+                        delta,
+                        f_n: ev.force,
+                        f_t: -mu * ev.force * s,
+                        kc: ev.stiffness * self.hth + ev.damping,
+                        kt: mu * ev.force * sp,
+                        mus: mu * s,
+                        state: ev.state,
+                    };
+                }
+                None => {
+                    // No corner over the other face at this end: open, state reset to the open gap.
+                    out[e].state = LawState::open_at(-self.half_w.max(1.0));
+                }
             }
         }
-        let f_joint = ends[0].f_n + ends[1].f_n;
-        peak_force = peak_force.max(f_joint);
-        let (tk, vk) = energy_of(&q, &u);
-        let bal = e0 + w_in - (tk + vk + d_visc + d_cont);
-        max_bal = max_nan(max_bal, bal.abs());
-        max_in = max_nan(max_in, (e0 + w_in).abs());
-        if k % settings.history_stride == 0 || k == n_steps {
-            hist.t.push(t);
-            hist.q.push(qa);
-            hist.u.push(u.into());
-            hist.gaps.push(cands.map(|c| c.gap));
-            hist.end_gaps.push(end_gaps);
-            hist.slip.push(slip);
-            hist.energy.push(Energy {
-                input: w_in,
-                kinetic: tk,
-                potential: vk,
-                viscous: d_visc,
-                contact: d_cont,
-            });
-            hist.contact_force.push([ends[0].f_n, ends[1].f_n]);
-            hist.abutment_gaps.push([Real::NAN; 2]);
-        }
-        if !energies_finite(&[tk, vk, w_in, d_visc, d_cont, e0]) {
-            status = SimStatus::Diverged;
-            break;
-        }
-        if k == n_steps {
-            break;
-        }
-        // ---- step k → k+1 ----
-        let abar = ag[k] * (1.0 - th) + ag[k + 1] * th;
-        let u_free = u + a_u * u + a_q * q + b_g * nalgebra::Vector2::new(abar.x, abar.y);
-        let base = u_free + winv * r_k * (h * (1.0 - th));
-        let q_of = |un: &Vector6<Real>| q + (u * (1.0 - th) + un * th) * h;
-        let resid = |un: &Vector6<Real>, ev: &[EndEval; 2]| un - base - winv * gen_force(ev) * hth;
-        let mut un = base + winv * r_k * hth;
-        let mut ev = eval_ends(
-            &bodies,
-            half_w,
-            &q_of(&un),
-            &un,
-            &states,
-            &joint,
-            mu,
-            vr,
-            hth,
-        );
-        let mut r = resid(&un, &ev);
-        let mut converged = false;
+        out
+    }
+
+    /// `q_{k+1}` for the trial `u_{k+1} = un`.
+    fn q_of(&self, tr: &Trial, un: &Vector6<Real>) -> Vector6<Real> {
+        tr.q + (tr.u * (1.0 - self.th) + un * self.th) * self.h
+    }
+
+    /// The ends at the trial `un`.
+    fn eval_at(&self, tr: &Trial, un: &Vector6<Real>) -> [EndEval; 2] {
+        self.eval_ends(&self.q_of(tr, un), un, &self.states)
+    }
+
+    /// The residual `r(u) = u − base − hθ Ŵ⁻¹ R(u)`.
+    fn resid(&self, tr: &Trial, un: &Vector6<Real>, ev: &[EndEval; 2]) -> Vector6<Real> {
+        un - tr.base - tr.winv * gen_force(ev) * self.hth
+    }
+
+    /// Newton with backtracking on `r(u) = 0` from `un`; returns the converged iterate or, if
+    /// none, the one with the smallest residual (`converged = false`).
+    fn newton(&self, tr: &Trial, mut un: Vector6<Real>) -> (bool, Vector6<Real>, [EndEval; 2]) {
+        let mut ev = self.eval_at(tr, &un);
+        let mut r = self.resid(tr, &un, &ev);
         let mut best = (r.amax(), un, ev);
         // open contacts (no force now or before): the first guess is exact
         if r.amax() <= 1e-12 + 1e-10 * un.amax() {
-            converged = true;
+            return (true, un, ev);
         }
-        for _ in 0..if converged { 0 } else { 50 } {
-            let mut dr = Matrix6::<Real>::zeros();
-            for e in &ev {
-                if e.f_n > 0.0 || e.kc > 0.0 {
-                    dr -= e.wn * e.wn.transpose() * e.kc;
-                    dr += e.wt * (e.wn.transpose() * (e.mus * e.kc) - e.wt.transpose() * e.kt);
-                }
-            }
-            let jac = Matrix6::identity() - winv * dr * hth;
+        for _ in 0..50 {
+            let jac = Matrix6::identity() - tr.winv * force_jacobian(&ev, false) * self.hth;
             let Some(du) = jac.lu().solve(&(-r)) else {
                 break;
             };
@@ -504,18 +301,8 @@ pub(crate) fn simulate_compliance(
             let mut accepted = false;
             for _ in 0..12 {
                 let trial = un + du * step;
-                let ev_t = eval_ends(
-                    &bodies,
-                    half_w,
-                    &q_of(&trial),
-                    &trial,
-                    &states,
-                    &joint,
-                    mu,
-                    vr,
-                    hth,
-                );
-                let r_t = resid(&trial, &ev_t);
+                let ev_t = self.eval_at(tr, &trial);
+                let r_t = self.resid(tr, &trial, &ev_t);
                 if r_t.amax() <= r0 || step < 1e-3 {
                     un = trial;
                     ev = ev_t;
@@ -532,178 +319,230 @@ pub(crate) fn simulate_compliance(
                 best = (r.amax(), un, ev);
             }
             if (du * step).amax() <= 1e-12 + 1e-10 * un.amax() {
-                converged = true;
-                break;
+                return (true, un, ev);
             }
         }
-        if !converged {
-            (_, un, ev) = best;
-            let ctx = ClosureCtx {
-                bodies: &bodies,
-                half_w,
-                states: &states,
-                joint: &joint,
-                mu,
-                vr,
-                hth,
-                winv: &winv,
-                base: &base,
-                q: &q,
-                u: &u,
-                th,
-                h,
-            };
-            match closure_step(&ctx, &un, &ev) {
-                Some((u2, ev2)) => {
-                    un = u2;
-                    ev = ev2;
-                    closure_steps += 1;
-                }
-                // keep the iterate with the smallest residual
-                None => newton_failures += 1,
+        (false, best.1, best.2)
+    }
+
+    /// Holds the ends in `held` with the unknown forces `lam` (closure step).
+    fn hold(&self, ev: &mut [EndEval; 2], held: &[usize], lam: &[Real], un: &Vector6<Real>) {
+        let (mu, vr) = (self.mu, self.vr);
+        for (i, &e) in held.iter().enumerate() {
+            let gt = ev[e].wt.dot(un);
+            let root = (gt * gt + vr * vr).sqrt();
+            ev[e].f_n = lam[i];
+            ev[e].f_t = -mu * lam[i] * gt / root;
+            ev[e].kc = 0.0;
+            ev[e].kt = mu * lam[i] * vr * vr / (root * root * root);
+            ev[e].mus = mu * gt / root;
+        }
+    }
+
+    /// The graph-closure step for a law whose force jumps at `δ = 0` (Kelvin's `c δ̇`): the ends
+    /// whose penetration is within 1 µm of zero in the best Newton iterate are held at
+    /// `δ_{k+1} = 0` by an unknown force `λ_e`, which must lie in the closure `[0, F(0⁺, δ̇)]` of
+    /// the law's graph. Newton on `(u, λ)`; `None` if it does not converge or `λ` leaves the
+    /// closure.
+    fn closure_step(
+        &self,
+        tr: &Trial,
+        u0: &Vector6<Real>,
+        ev0: &[EndEval; 2],
+    ) -> Option<(Vector6<Real>, [EndEval; 2])> {
+        let held: Vec<usize> = (0..2)
+            .filter(|&e| ev0[e].case.is_some() && ev0[e].delta.abs() < 1e-6)
+            .collect();
+        if held.is_empty() {
+            return None;
+        }
+        let (n, hth) = (6 + held.len(), self.hth);
+        let mut un = *u0;
+        let mut lam: Vec<Real> = held.iter().map(|&e| ev0[e].f_n).collect();
+        for _ in 0..30 {
+            let mut ev = self.eval_at(tr, &un);
+            self.hold(&mut ev, &held, &lam, &un);
+            let r_u = un - tr.base - tr.winv * gen_force(&ev) * hth;
+            let mut r = nalgebra::DVector::<Real>::zeros(n);
+            r.rows_mut(0, 6).copy_from(&r_u);
+            for (i, &e) in held.iter().enumerate() {
+                r[6 + i] = ev[e].delta;
+            }
+            let dr = force_jacobian(&ev, true);
+            let mut jac = nalgebra::DMatrix::<Real>::zeros(n, n);
+            jac.view_mut((0, 0), (6, 6))
+                .copy_from(&(Matrix6::identity() - tr.winv * dr * hth));
+            for (i, &e) in held.iter().enumerate() {
+                let col = -(tr.winv * (ev[e].wn - ev[e].wt * ev[e].mus)) * hth;
+                jac.view_mut((0, 6 + i), (6, 1)).copy_from(&col);
+                // δ = −g_N, ∂g_N/∂q = w_Nᵀ, ∂q/∂u = hθ
+                let row = -(ev[e].wn.transpose() * hth);
+                jac.view_mut((6 + i, 0), (1, 6)).copy_from(&row);
+            }
+            let dx = jac.lu().solve(&(-&r))?;
+            let du = Vector6::from_iterator(dx.rows(0, 6).iter().copied());
+            un += du;
+            for i in 0..held.len() {
+                lam[i] += dx[6 + i];
+            }
+            let small = du.amax() <= 1e-12 + 1e-10 * un.amax()
+                && (0..held.len()).all(|i| dx[6 + i].abs() <= 1e-6 * lam[i].abs().max(1.0));
+            if small {
+                return self.closure_accept(tr, un, &held, &lam);
             }
         }
-        let r_new = gen_force(&ev);
-        let rbar = r_k * (1.0 - th) + r_new * th;
-        let u_th = u * (1.0 - th) + un * th;
-        let u_mid = (u + un) * 0.5;
-        let fbar = f_of(&ag[k]) * (1.0 - th) + f_of(&ag[k + 1]) * th;
-        w_in += h * u_mid.dot(&fbar);
-        d_visc += h * u_th.dot(&(cmat * u_th));
-        d_cont -= h * u_mid.dot(&rbar);
-        // impacts: intervals of positive total joint force
+        None
+    }
+
+    /// The converged closure iterate if every `λ` lies in the closure of the law's graph.
+    fn closure_accept(
+        &self,
+        tr: &Trial,
+        un: Vector6<Real>,
+        held: &[usize],
+        lam: &[Real],
+    ) -> Option<(Vector6<Real>, [EndEval; 2])> {
+        let mut ev = self.eval_at(tr, &un);
+        for (i, &e) in held.iter().enumerate() {
+            let ddot = -ev[e].wn.dot(&un);
+            let f_hi = self
+                .joint
+                .corner_evaluate(&self.states[e], Real::MIN_POSITIVE, ddot)
+                .force;
+            if !(lam[i] >= 0.0 && lam[i] <= f_hi * (1.0 + 1e-9)) {
+                return None;
+            }
+            let gt = ev[e].wt.dot(&un);
+            ev[e].f_n = lam[i];
+            ev[e].f_t = -self.mu * lam[i] * gt / (gt * gt + self.vr * self.vr).sqrt();
+        }
+        Some((un, ev))
+    }
+
+    /// Impacts (intervals of positive total joint force) and the per-end impact records of the
+    /// step ending at `time` with velocity `un`, mean velocity `u_mid`, ends `ev`.
+    fn track_impacts(
+        &mut self,
+        log: &mut ImpactLog,
+        time: Real,
+        u: &Vector6<Real>,
+        un: &Vector6<Real>,
+        u_mid: &Vector6<Real>,
+        ev: &[EndEval; 2],
+    ) {
+        let (h, th) = (self.h, self.th);
         let f_now = ev[0].f_n + ev[1].f_n;
-        if f_now > 0.0 && !joint_in_contact {
-            n_impacts += 1;
+        if f_now > 0.0 && !self.joint_in_contact {
+            log.impacts += 1;
         }
-        joint_in_contact = f_now > 0.0;
+        self.joint_in_contact = f_now > 0.0;
         for e in 0..2 {
-            let (fn0, ft0) = (ends[e].f_n, ends[e].f_t);
+            let (fn0, ft0) = (self.ends[e].f_n, self.ends[e].f_t);
             let (fn1, ft1) = (ev[e].f_n, ev[e].f_t);
-            if fn1 > 0.0 && open_imp[e].is_none() {
-                let wn = ev[e].wn;
-                let wt = ev[e].wt;
-                impacts.push(ImpactRecord {
-                    impact: n_impacts,
-                    time: t + h,
-                    contact: SimContact::Joint(
-                        ev[e]
-                            .case
-                            .unwrap_or(crate::geometry::ContactCase::Deck1Inner),
-                    ),
+            if fn1 > 0.0 && self.open_imp[e].is_none() {
+                log.records.push(ImpactRecord {
+                    impact: log.impacts,
+                    time,
+                    contact: SimContact::Joint(ev[e].case.unwrap_or(ContactCase::Deck1Inner)),
                     mode: SlipMode::Stick,
-                    gamma_n_pre: wn.dot(&u),
-                    gamma_t_pre: wt.dot(&u),
+                    gamma_n_pre: ev[e].wn.dot(u),
+                    gamma_t_pre: ev[e].wt.dot(u),
                     gamma_n_post: Real::NAN,
                     gamma_t_post: Real::NAN,
                     impulse_n: 0.0,
                     impulse_t: 0.0,
                     energy_dissipated: 0.0,
                 });
-                open_imp[e] = Some(OpenImpact {
-                    record: impacts.len() - 1,
+                self.open_imp[e] = Some(OpenImpact {
+                    record: log.records.len() - 1,
                     impulse_n: 0.0,
                     impulse_t: 0.0,
                     work: 0.0,
                 });
             }
-            if let Some(oi) = open_imp[e].as_mut() {
+            if let Some(oi) = self.open_imp[e].as_mut() {
                 let pn = h * ((1.0 - th) * fn0 + th * fn1);
                 let pt = h * ((1.0 - th) * ft0 + th * ft1);
                 oi.impulse_n += pn;
                 oi.impulse_t += pt;
-                let wn = if ev[e].case.is_some() {
-                    ev[e].wn
+                let src = if ev[e].case.is_some() {
+                    &ev[e]
                 } else {
-                    ends[e].wn
+                    &self.ends[e]
                 };
-                let wt = if ev[e].case.is_some() {
-                    ev[e].wt
-                } else {
-                    ends[e].wt
-                };
+                let (wn, wt) = (src.wn, src.wt);
                 oi.work -= u_mid.dot(&wn) * pn + u_mid.dot(&wt) * pt;
                 if fn1 <= 0.0 {
-                    let rec = &mut impacts[oi.record];
-                    rec.gamma_n_post = wn.dot(&un);
-                    rec.gamma_t_post = wt.dot(&un);
+                    let rec = &mut log.records[oi.record];
+                    rec.gamma_n_post = wn.dot(un);
+                    rec.gamma_t_post = wt.dot(un);
                     rec.impulse_n = oi.impulse_n;
                     rec.impulse_t = oi.impulse_t;
                     rec.energy_dissipated = oi.work;
                     rec.mode = SlipMode::classify(rec.gamma_t_post, rec.gamma_n_pre);
-                    open_imp[e] = None;
+                    self.open_imp[e] = None;
                 }
             }
-            states[e] = ev[e].state;
-        }
-        for e in &ev {
-            max_pen = max_pen.max(e.delta);
-        }
-        q = q_of(&un);
-        u = un;
-        r_k = r_new;
-        ends = ev;
-        steps_done = k + 1;
-        if !(q.iter().all(|x| x.is_finite()) && u.iter().all(|x| x.is_finite())) {
-            status = SimStatus::Diverged;
-            break;
+            self.states[e] = ev[e].state;
         }
     }
-    // impacts still in progress at the end of the run
-    for oi in open_imp.iter().flatten() {
-        let rec = &mut impacts[oi.record];
-        rec.impulse_n = oi.impulse_n;
-        rec.impulse_t = oi.impulse_t;
-        rec.energy_dissipated = oi.work;
+}
+
+impl Stepper for ComplianceStepper {
+    fn contact_forces(&self) -> Option<[Real; 2]> {
+        Some([self.ends[0].f_n, self.ends[1].f_n])
     }
-    if status == SimStatus::Completed && newton_failures > 0 {
-        status = SimStatus::CompletedWithNewtonFailures;
+
+    fn contact_energy(&self) -> Real {
+        self.d_cont
     }
-    let (tf, vf) = energy_of(&q, &u);
-    let summary = SimSummary {
-        impacts: n_impacts,
-        impacting_contacts: impacts.len(),
-        peak_joint_closing: peak_close,
-        peak_joint_opening: peak_open,
-        peak_rotation: peak_rot,
-        peak_slip,
-        peak_seat_displacement: peak_seat
-            .iter()
-            .copied()
-            .fold(Real::NEG_INFINITY, Real::max),
-        peak_seat_by_end: peak_seat,
-        unseated: unseat.is_some(),
-        unseating_time: unseat.map(|u| u.0),
-        unseated_end: unseat.map(|u| u.1),
-        max_penetration: max_pen,
-        energy_balance_error: balance_error(max_bal, max_in),
-        final_energy: Energy {
-            input: w_in,
-            kinetic: tf,
-            potential: vf,
-            viscous: d_visc,
-            contact: d_cont,
-        },
-        max_input_energy: max_in,
-        peak_abutment_closing: [None, None],
-        abutment_impacting_contacts: 0,
-        peak_contact_force: Some(peak_force),
-        peak_penetration: max_pen,
-    };
-    Ok(SimSolution {
-        status,
-        history: hist,
-        impacts,
-        summary,
-        steps: steps_done,
-        dt: h,
-        lcp_solves: 0,
-        lcp_enumeration_fallbacks: 0,
-        lcp_failures: 0,
-        frequencies: sys.frequencies,
-        rayleigh: sys.rayleigh,
-        time_step_advice: advice,
-        newton_failures,
-        closure_steps,
-    })
+
+    fn step(&mut self, inp: &StepInput, log: &mut ImpactLog) -> StepOutput {
+        let (h, th, hth) = (self.h, self.th, self.hth);
+        let winv = &inp.scheme.winv;
+        let r_k = self.r_k;
+        let tr = Trial {
+            q: inp.q,
+            u: inp.u,
+            winv,
+            base: inp.u_free + winv * r_k * (h * (1.0 - th)),
+        };
+        let (converged, mut un, mut ev) = self.newton(&tr, tr.base + winv * r_k * hth);
+        if !converged {
+            match self.closure_step(&tr, &un, &ev) {
+                Some((u2, ev2)) => {
+                    un = u2;
+                    ev = ev2;
+                    self.stats.closure_steps += 1;
+                }
+                // keep the iterate with the smallest residual
+                None => self.stats.newton_failures += 1,
+            }
+        }
+        let r_new = gen_force(&ev);
+        let rbar = r_k * (1.0 - th) + r_new * th;
+        let u_mid = (inp.u + un) * 0.5;
+        self.d_cont -= h * u_mid.dot(&rbar);
+        self.track_impacts(log, inp.t + h, inp.u, &un, &u_mid, &ev);
+        self.r_k = r_new;
+        self.ends = ev;
+        StepOutput {
+            u: un,
+            penetration: ev
+                .iter()
+                .map(|e| e.delta)
+                .fold(Real::NEG_INFINITY, Real::max),
+        }
+    }
+
+    fn finish(&mut self, log: &mut ImpactLog) -> StepperStats {
+        // impacts still in progress at the end of the run
+        for oi in self.open_imp.iter().flatten() {
+            let rec = &mut log.records[oi.record];
+            rec.impulse_n = oi.impulse_n;
+            rec.impulse_t = oi.impulse_t;
+            rec.energy_dissipated = oi.work;
+        }
+        std::mem::take(&mut self.stats)
+    }
 }

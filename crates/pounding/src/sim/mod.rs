@@ -50,25 +50,32 @@
 //! For `θ = ½` the discrete balance `E_0 + W_in = T + V + D_viscous + D_contact` holds to rounding,
 //! so [`SimSummary::energy_balance_error`] checks the implementation's bookkeeping (a sign or
 //! scaling slip shows at O(1)); for `θ > ½` it measures the scheme's numerical dissipation.
+//!
+//! # Code layout
+//! [`simulate`] validates, builds the time grid and iteration matrices and hands the loop to the
+//! time-stepping driver (`driver.rs`: monitors, energy bookkeeping, history, summary), which
+//! calls one stepper per step: `rigid.rs` (the scheme above) or [`compliance`] (a compliance
+//! contact law with Newton). A new integrator or contact treatment is a new stepper; a new
+//! monitored quantity goes into the driver and is then reported for every law.
 
 pub mod batch;
 pub mod compliance;
 pub mod contact;
+mod driver;
 pub mod model;
 pub mod options;
 pub mod output;
 pub mod scenario;
+mod rigid;
 
-use crate::analytic::{ImpactLaw, SlipMode};
+use crate::analytic::SlipMode;
 use crate::geometry::{ContactCase, GeometryError, SArrangement};
 use crate::ground_motion::{GroundMotion, GroundMotionError};
-use crate::law_check;
-use crate::lcp::{self, LcpStatus, LemkeSettings};
-use crate::math::{Real, Vector, cross};
+use crate::lcp::LemkeSettings;
+use crate::math::{Real, Vector};
 use crate::shape::{DeckShape, SkewedDeck, StraightDeck};
-use contact::{Pose, candidates};
 use model::{DeckBody, LinearSystem};
-use nalgebra::{Matrix3, Matrix6, Vector6};
+use nalgebra::{Matrix3, Matrix6};
 use thiserror::Error;
 
 pub use model::Bearing;
@@ -850,504 +857,28 @@ pub(crate) fn energies_finite(e: &[Real]) -> bool {
     e.iter().all(|x| x.is_finite())
 }
 
-/// Most contacts at once: two at the joint, two at each abutment.
-const MAX_CONTACTS: usize = 6;
-
-/// Lemke on the leading `N × N` block of `a` (fixed-size kernel).
-fn lemke_block<const N: usize>(
-    a: &[[Real; 3 * MAX_CONTACTS]; 3 * MAX_CONTACTS],
-    b: &[Real; 3 * MAX_CONTACTS],
-    settings: &LemkeSettings,
-) -> Option<Vec<Real>> {
-    let mut aa = [[0.0; N]; N];
-    let mut bb = [0.0; N];
-    for i in 0..N {
-        aa[i].copy_from_slice(&a[i][..N]);
-        bb[i] = b[i];
-    }
-    let s = lcp::solve_fixed::<N>(&aa, &bb, settings);
-    (s.status == LcpStatus::Solved).then(|| s.z.to_vec())
-}
-
-/// Solves the contact LCP of size `3n` (`n = 1 … 6`) for `x = (P_N, P_TR, γ_TL)` (spec §8).
-/// Returns `(x, lemke_ok, any_ok)`.
-fn solve_contact_lcp(
-    n: usize,
-    a: &[[Real; 3 * MAX_CONTACTS]; 3 * MAX_CONTACTS],
-    b: &[Real; 3 * MAX_CONTACTS],
-    settings: &LemkeSettings,
-) -> (Vec<Real>, bool, bool) {
-    let m = 3 * n;
-    let sol = match n {
-        1 => lemke_block::<3>(a, b, settings),
-        2 => lemke_block::<6>(a, b, settings),
-        3 => lemke_block::<9>(a, b, settings),
-        4 => lemke_block::<12>(a, b, settings),
-        5 => lemke_block::<15>(a, b, settings),
-        _ => lemke_block::<18>(a, b, settings),
-    };
-    if let Some(z) = sol {
-        return (z, true, true);
-    }
-    let rows: Vec<Real> = (0..m).flat_map(|i| a[i][..m].to_vec()).collect();
-    if let Ok(p) = lcp::LcpProblem::new(rows, b[..m].to_vec())
-        && let Ok(sols) = lcp::enumerate(&p)
-        && let Some(z) = sols.into_iter().next()
-    {
-        return (z, false, true);
-    }
-    (vec![0.0; m], false, false)
-}
-
-/// An active contact with its `w_N`, `w_T`.
-type ActiveContact = (SimContact, [Real; 6], [Real; 6]);
-
-#[inline]
-fn dot6(a: &[Real; 6], b: &Vector6<Real>) -> Real {
-    a.iter().zip(b.iter()).map(|(x, y)| x * y).sum()
-}
-
-/// Runs the simulation (see the module documentation for the model and the scheme).
+/// Runs the simulation (see the module documentation for the model and the scheme): the
+/// time-stepping driver (`driver.rs`) with the stepper of the joint's contact law (rigid:
+/// `rigid.rs`; compliance: [`compliance`]).
 ///
 /// Bad input → [`SimError`]; numerical trouble → [`SimSolution::status`].
 pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolution, SimError> {
-    if let JointContact::Compliance(c) = &problem.model.contact {
-        return compliance::simulate_compliance(problem, settings, c);
-    }
-    settings.validate()?;
-    problem.ground.validate()?;
-    let model = &problem.model;
-    let sys = model.linear_system()?;
-    for (i, v) in problem.q0.iter().chain(problem.u0.iter()).enumerate() {
-        if !v.is_finite() {
-            let name = if i < 6 {
-                format!("q0[{i}]")
-            } else {
-                format!("u0[{}]", i - 6)
-            };
-            return Err(SimError::invalid(name, *v, "must be finite"));
+    use compliance::ComplianceStepper;
+    let sys = driver::checked_system(problem, settings)?;
+    let joint = match &problem.model.contact {
+        JointContact::Compliance(cc) => Some((cc, ComplianceStepper::joint_law(cc)?)),
+        JointContact::Rigid => None,
+    };
+    let scheme = driver::Scheme::new(problem, settings, sys)?;
+    let bridge = driver::Bridge::new(&problem.model);
+    Ok(match joint {
+        Some((cc, joint)) => {
+            let mut stepper = ComplianceStepper::new(problem, cc, joint, &scheme, &bridge);
+            driver::run(problem, settings, scheme, &bridge, &mut stepper)
         }
-    }
-    let h = settings.dt;
-    let duration = match settings.duration {
-        Some(d) => d,
         None => {
-            let d = problem.ground.end_time();
-            if d <= 0.0 {
-                return Err(SimError::invalid(
-                    "duration",
-                    d,
-                    "must be given when the ground motion has no samples after t = 0",
-                ));
-            }
-            d
+            let mut stepper = rigid::RigidStepper::new(&problem.model, settings)?;
+            driver::run(problem, settings, scheme, &bridge, &mut stepper)
         }
-    };
-    let n_steps = settings.step_count(duration)?;
-    let ag = problem.ground.sample_uniform(h, n_steps);
-
-    let th = settings.theta;
-    let (mm, kk, cc) = (&sys.mass, &sys.stiffness, &sys.damping);
-    let what = mm + cc * (h * th) + kk * (h * h * th * th);
-    let winv = what
-        .try_inverse()
-        .ok_or_else(|| SimError::invalid("dt", h, "iteration matrix is singular"))?;
-    // u_free = u + A_u u + A_q q + B_g ā,  B_g = −h Ŵ⁻¹ M r
-    let a_u = -(winv * (cc + kk * (h * th))) * h;
-    let a_q = -(winv * kk) * h;
-    let mut mr = nalgebra::Matrix6x2::zeros();
-    for j in 0..2 {
-        mr[(3 * j, 0)] = mm[(3 * j, 3 * j)];
-        mr[(3 * j + 1, 1)] = mm[(3 * j + 1, 3 * j + 1)];
-    }
-    let b_g = -(winv * mr) * h;
-
-    let bodies = model.bodies();
-    let half_w = bodies[0].half_face;
-    // abutments: (deck index j, normal n into the deck, tangent t = perp(n), face point A, gap)
-    let abut: Vec<(usize, Vector, Vector, Vector, Real)> = model
-        .abutments
-        .iter()
-        .enumerate()
-        .filter_map(|(j, a)| {
-            a.map(|a| {
-                let n = bodies[j].far_inward;
-                (
-                    j,
-                    n,
-                    Vector::new(-n.y, n.x),
-                    bodies[j].far_mid() - n * a.gap,
-                    a.gap,
-                )
-            })
-        })
-        .collect();
-    let mut seat_len = [model.seat_length; 4];
-    for (j, a) in model.abutments.iter().enumerate() {
-        if let Some(a) = a {
-            seat_len[2 * j + 1] = a.seat_length;
-        }
-    }
-    let mut peak_abut: [Option<Real>; 2] = [None, None];
-    let mut n_abut_contacts = 0usize;
-    let (mu, eps) = (model.friction, model.restitution);
-    let law = ImpactLaw::new(mu, eps).map_err(|e| match e {
-        crate::analytic::LawError::Friction(v) => SimError::invalid("friction", v, "must be >= 0"),
-        crate::analytic::LawError::Restitution(v) => {
-            SimError::invalid("restitution", v, "must lie in [0, 1]")
-        }
-    })?;
-    let laws = [law; MAX_CONTACTS];
-    let g0 = model.gap;
-
-    let mut q = Vector6::from(problem.q0);
-    let mut u = Vector6::from(problem.u0);
-    let energy_of =
-        |q: &Vector6<Real>, u: &Vector6<Real>| (0.5 * u.dot(&(mm * u)), 0.5 * q.dot(&(kk * q)));
-    let (t0, v0) = energy_of(&q, &u);
-    let e0 = t0 + v0;
-    let mut w_in = 0.0;
-    let mut d_visc = 0.0;
-    let mut d_cont = 0.0;
-    let mut max_in: Real = e0.abs();
-    let mut max_bal: Real = 0.0;
-
-    let mut hist = History::default();
-    let mut impacts: Vec<ImpactRecord> = Vec::new();
-    let mut n_impacts = 0usize;
-    let mut peak_close = Real::NEG_INFINITY;
-    let mut peak_open = Real::NEG_INFINITY;
-    let mut peak_rot = [0.0f64; 2];
-    let mut peak_slip: Real = 0.0;
-    let mut peak_seat = [Real::NEG_INFINITY; 4];
-    let mut unseat: Option<(Real, usize)> = None;
-    let mut max_pen: Real = 0.0;
-    let mut status = SimStatus::Completed;
-    let (mut lcp_solves, mut lcp_enum, mut lcp_fail) = (0usize, 0usize, 0usize);
-    let mut steps_done = 0usize;
-
-    let seat_pts: [(usize, [Vector; 2], Vector); 4] = [
-        (0, bodies[0].joint_corners, bodies[0].joint_inward),
-        (0, bodies[0].far_corners, bodies[0].far_inward),
-        (1, bodies[1].joint_corners, bodies[1].joint_inward),
-        (1, bodies[1].far_corners, bodies[1].far_inward),
-    ];
-    let f_of = |a: &Vector| -> Vector6<Real> { -(mr * nalgebra::Vector2::new(a.x, a.y)) };
-
-    for k in 0..=n_steps {
-        let t = k as Real * h;
-        let qa: [Real; 6] = q.into();
-        let pose = Pose::new(&bodies, &qa);
-        let (cands, sel) = candidates(&bodies, &pose, half_w);
-        // ---- monitoring at t_k ----
-        let end_gaps = sel.map(|s| s.map_or(Real::NAN, |i| cands[i].gap));
-        let mut gmin = Real::INFINITY;
-        let mut gmax = Real::NEG_INFINITY;
-        for g in end_gaps.iter().filter(|g| !g.is_nan()) {
-            gmin = gmin.min(*g);
-            gmax = gmax.max(*g);
-        }
-        peak_close = peak_close.max(g0 - gmin);
-        max_pen = max_pen.max(-gmin);
-        peak_open = peak_open.max(gmax - g0);
-        peak_rot[0] = peak_rot[0].max(q[2].abs());
-        peak_rot[1] = peak_rot[1].max(q[5].abs());
-        let m1 = pose.place(&bodies, 0, &bodies[0].face_mid) - bodies[0].face_mid;
-        let m2 = pose.place(&bodies, 1, &bodies[1].face_mid) - bodies[1].face_mid;
-        let slip = (m2.x - m1.x) + 0.0; // `+ 0.0` turns −0 into +0
-        peak_slip = peak_slip.max(slip.abs());
-        for (e, (j, pts, n_in)) in seat_pts.iter().enumerate() {
-            let s = pts
-                .iter()
-                .map(|p| (pose.place(&bodies, *j, p) - p).dot(n_in))
-                .fold(Real::NEG_INFINITY, Real::max);
-            peak_seat[e] = peak_seat[e].max(s);
-            if unseat.is_none() && s > seat_len[e] {
-                unseat = Some((t, e));
-            }
-        }
-        let mut abut_gaps = [Real::NAN; 2];
-        for &(j, n, _, a, ga) in &abut {
-            let gm = bodies[j]
-                .far_corners
-                .iter()
-                .map(|c| (pose.place(&bodies, j, c) - a).dot(&n))
-                .fold(Real::INFINITY, Real::min);
-            abut_gaps[j] = gm;
-            let pk = peak_abut[j].get_or_insert(Real::NEG_INFINITY);
-            *pk = pk.max(ga - gm);
-        }
-        let (tk, vk) = energy_of(&q, &u);
-        let bal = e0 + w_in - (tk + vk + d_visc + d_cont);
-        max_bal = max_nan(max_bal, bal.abs());
-        max_in = max_nan(max_in, (e0 + w_in).abs());
-        if k % settings.history_stride == 0 || k == n_steps {
-            hist.t.push(t);
-            hist.q.push(qa);
-            hist.u.push(u.into());
-            hist.gaps.push(cands.map(|c| c.gap));
-            hist.end_gaps.push(end_gaps);
-            hist.slip.push(slip);
-            hist.abutment_gaps.push(abut_gaps);
-            hist.energy.push(Energy {
-                input: w_in,
-                kinetic: tk,
-                potential: vk,
-                viscous: d_visc,
-                contact: d_cont,
-            });
-        }
-        if !energies_finite(&[tk, vk, w_in, d_visc, d_cont, e0]) {
-            status = SimStatus::Diverged;
-            break;
-        }
-        if k == n_steps {
-            break;
-        }
-        // ---- step k → k+1 ----
-        let abar = ag[k] * (1.0 - th) + ag[k + 1] * th;
-        let u_free = u + a_u * u + a_q * q + b_g * nalgebra::Vector2::new(abar.x, abar.y);
-        let mut active: [Option<ActiveContact>; MAX_CONTACTS] = [None; MAX_CONTACTS];
-        let mut n_act = 0;
-        for s in sel.iter().flatten() {
-            let c = cands[*s];
-            let (wn, wt) = c.force_directions(&pose);
-            if c.gap + h * dot6(&wn, &u) <= 0.0 {
-                active[n_act] = Some((SimContact::Joint(c.case), wn, wt));
-                n_act += 1;
-            }
-        }
-        for &(j, n, tn, a, _) in &abut {
-            for (k, c0) in bodies[j].far_corners.iter().enumerate() {
-                let pc = pose.place(&bodies, j, c0);
-                let r = pc - pose.g[j];
-                let mut wn = [0.0; 6];
-                let mut wt = [0.0; 6];
-                wn[3 * j..3 * j + 3].copy_from_slice(&[n.x, n.y, cross(&r, &n)]);
-                wt[3 * j..3 * j + 3].copy_from_slice(&[tn.x, tn.y, cross(&r, &tn)]);
-                if (pc - a).dot(&n) + h * dot6(&wn, &u) <= 0.0 {
-                    active[n_act] = Some((
-                        SimContact::Abutment {
-                            deck: j + 1,
-                            corner: k,
-                        },
-                        wn,
-                        wt,
-                    ));
-                    n_act += 1;
-                }
-            }
-        }
-        let mut u_new = u_free;
-        if n_act > 0 {
-            lcp_solves += 1;
-            // W columns, Ŵ⁻¹ W, Delassus G (order N_1..N_n, T_1..T_n)
-            let mut wcols = [[0.0; 6]; 2 * MAX_CONTACTS];
-            for (i, a) in active.iter().take(n_act).enumerate() {
-                let (_, wn, wt) = a.as_ref().unwrap();
-                wcols[i] = *wn;
-                wcols[n_act + i] = *wt;
-            }
-            let nc = 2 * n_act;
-            let mut wiw = [Vector6::zeros(); 2 * MAX_CONTACTS];
-            for i in 0..nc {
-                wiw[i] = winv * Vector6::from(wcols[i]);
-            }
-            let mut g = [[0.0; 2 * MAX_CONTACTS]; 2 * MAX_CONTACTS];
-            for i in 0..nc {
-                for j in 0..nc {
-                    g[i][j] = dot6(&wcols[i], &wiw[j]);
-                }
-            }
-            let n = n_act;
-            let mut gam_pre = [0.0; 2 * MAX_CONTACTS];
-            let mut gam_free = [0.0; 2 * MAX_CONTACTS];
-            for i in 0..nc {
-                gam_pre[i] = dot6(&wcols[i], &u);
-                gam_free[i] = dot6(&wcols[i], &u_free);
-            }
-            // LCP matrix (spec §8) of size 3n
-            let mut a = [[0.0; 3 * MAX_CONTACTS]; 3 * MAX_CONTACTS];
-            let mut b = [0.0; 3 * MAX_CONTACTS];
-            for i in 0..n {
-                for j in 0..n {
-                    a[i][j] = g[i][j] - g[i][n + j] * mu;
-                    a[i][n + j] = g[i][n + j];
-                    a[n + i][j] = g[n + i][j] - g[n + i][n + j] * mu;
-                    a[n + i][n + j] = g[n + i][n + j];
-                }
-                a[n + i][2 * n + i] = 1.0;
-                a[2 * n + i][i] = 2.0 * mu;
-                a[2 * n + i][n + i] = -1.0;
-                b[i] = gam_free[i] + eps * gam_pre[i].min(0.0);
-                b[n + i] = gam_free[n + i];
-            }
-            let (mut z, ok, any) = solve_contact_lcp(n, &a, &b, &settings.lemke);
-            if !ok {
-                if any {
-                    lcp_enum += 1;
-                } else {
-                    lcp_fail += 1;
-                    // frictionless fallback: LCP in P_N only
-                    let mut a0 = [[0.0; 3 * MAX_CONTACTS]; 3 * MAX_CONTACTS];
-                    let mut b0 = [0.0; 3 * MAX_CONTACTS];
-                    for i in 0..n {
-                        for j in 0..n {
-                            a0[i][j] = g[i][j];
-                        }
-                        b0[i] = b[i];
-                        // decouple the dummy rows: z = 0, w = 1
-                        a0[n + i][n + i] = 1.0;
-                        a0[2 * n + i][2 * n + i] = 1.0;
-                        b0[n + i] = 1.0;
-                        b0[2 * n + i] = 1.0;
-                    }
-                    let (z0, _, _) = solve_contact_lcp(n, &a0, &b0, &settings.lemke);
-                    z = z0;
-                    for i in 0..n {
-                        z[n + i] = mu * z[i]; // P_T = 0
-                    }
-                }
-            }
-            let mut p = [0.0; 2 * MAX_CONTACTS];
-            for i in 0..n {
-                p[i] = z[i];
-                p[n + i] = z[n + i] - mu * z[i];
-            }
-            for i in 0..nc {
-                u_new += wiw[i] * p[i];
-            }
-            let mut gam_post = [0.0; 2 * MAX_CONTACTS];
-            for i in 0..nc {
-                gam_post[i] = dot6(&wcols[i], &u_new);
-            }
-            if ok || any {
-                // post-solve check on the recovered velocities (crate::law_check): rounding scale
-                // s_k = Σ_d |W_dk| (|u_free,d| + Σ_j |(Ŵ⁻¹W)_dj P_j|)
-                let mut ad = [0.0; 6];
-                for (d, a) in ad.iter_mut().enumerate() {
-                    *a = u_free[d].abs();
-                    for j in 0..nc {
-                        *a += (wiw[j][d] * p[j]).abs();
-                    }
-                }
-                let mut scale = [0.0; 2 * MAX_CONTACTS];
-                let mut diag = [0.0; 2 * MAX_CONTACTS];
-                for k in 0..nc {
-                    scale[k] = wcols[k].iter().zip(&ad).map(|(w, a)| w.abs() * a).sum();
-                    diag[k] = g[k][k];
-                }
-                if law_check::check_laws(
-                    &laws[..n],
-                    &gam_pre[..nc],
-                    &p[..nc],
-                    &gam_post[..nc],
-                    &scale[..nc],
-                    &diag[..nc],
-                )
-                .is_err()
-                {
-                    lcp_fail += 1;
-                }
-            }
-            let mut impacting = false;
-            for i in 0..n {
-                if gam_pre[i] < -settings.impact_velocity && p[i] > 0.0 {
-                    impacting = true;
-                }
-            }
-            if impacting {
-                n_impacts += 1;
-            }
-            for i in 0..n {
-                let dn = -0.5 * (gam_pre[i] + gam_post[i]) * p[i];
-                let dt_ = -0.5 * (gam_pre[n + i] + gam_post[n + i]) * p[n + i];
-                d_cont += dn + dt_;
-                if impacting && gam_pre[i] < -settings.impact_velocity && p[i] > 0.0 {
-                    let nrm = -gam_pre[i];
-                    let gt = gam_post[n + i];
-                    let mode = SlipMode::classify(gt, nrm);
-                    let contact = active[i].as_ref().unwrap().0;
-                    if matches!(contact, SimContact::Abutment { .. }) {
-                        n_abut_contacts += 1;
-                    }
-                    impacts.push(ImpactRecord {
-                        impact: n_impacts,
-                        time: t + h,
-                        contact,
-                        mode,
-                        gamma_n_pre: gam_pre[i],
-                        gamma_t_pre: gam_pre[n + i],
-                        gamma_n_post: gam_post[i],
-                        gamma_t_post: gt,
-                        impulse_n: p[i],
-                        impulse_t: p[n + i],
-                        energy_dissipated: dn + dt_,
-                    });
-                }
-            }
-        }
-        let u_th = u * (1.0 - th) + u_new * th;
-        let u_mid = (u + u_new) * 0.5;
-        let fbar = f_of(&ag[k]) * (1.0 - th) + f_of(&ag[k + 1]) * th;
-        w_in += h * u_mid.dot(&fbar);
-        d_visc += h * u_th.dot(&(cc * u_th));
-        q += u_th * h;
-        u = u_new;
-        steps_done = k + 1;
-        if !(q.iter().all(|x| x.is_finite()) && u.iter().all(|x| x.is_finite())) {
-            status = SimStatus::Diverged;
-            break;
-        }
-    }
-    if status == SimStatus::Completed && lcp_fail > 0 {
-        status = SimStatus::CompletedWithLcpFailures;
-    }
-    let (tf, vf) = energy_of(&q, &u);
-    let summary = SimSummary {
-        impacts: n_impacts,
-        impacting_contacts: impacts.len(),
-        peak_joint_closing: peak_close,
-        peak_joint_opening: peak_open,
-        peak_rotation: peak_rot,
-        peak_slip,
-        peak_seat_displacement: peak_seat
-            .iter()
-            .copied()
-            .fold(Real::NEG_INFINITY, Real::max),
-        peak_seat_by_end: peak_seat,
-        unseated: unseat.is_some(),
-        unseating_time: unseat.map(|u| u.0),
-        unseated_end: unseat.map(|u| u.1),
-        max_penetration: max_pen,
-        energy_balance_error: balance_error(max_bal, max_in),
-        final_energy: Energy {
-            input: w_in,
-            kinetic: tf,
-            potential: vf,
-            viscous: d_visc,
-            contact: d_cont,
-        },
-        max_input_energy: max_in,
-        peak_contact_force: None,
-        peak_penetration: max_pen,
-        peak_abutment_closing: peak_abut,
-        abutment_impacting_contacts: n_abut_contacts,
-    };
-    Ok(SimSolution {
-        status,
-        history: hist,
-        impacts,
-        summary,
-        steps: steps_done,
-        dt: h,
-        lcp_solves,
-        lcp_enumeration_fallbacks: lcp_enum,
-        lcp_failures: lcp_fail,
-        frequencies: sys.frequencies,
-        rayleigh: sys.rayleigh,
-        time_step_advice: None,
-        newton_failures: 0,
-        closure_steps: 0,
     })
 }

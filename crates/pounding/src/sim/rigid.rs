@@ -1,0 +1,361 @@
+//! The rigid-contact stepper: Moreau–Jean with the impact LCP (module doc of [`super`]).
+//!
+//! Per step: the active set (joint ends and abutment corners whose predicted gap
+//! `g_i(q_k) + h γ_N,i(u_k) ≤ 0`), the Delassus matrix `G = Wᵀ Ŵ⁻¹ W`, the LCP of spec §8 solved
+//! by Lemke (fixed-size kernels; enumeration, then the frictionless LCP as fallbacks), the
+//! impulses applied `u_{k+1} = u_free + Ŵ⁻¹ W P`, the post-solve law check
+//! ([`crate::law_check::check_laws`]) and the contact dissipation `−½ (γ_k + γ_{k+1})·P`.
+#![allow(clippy::needless_range_loop)]
+
+use super::driver::{ImpactLog, StepInput, StepOutput, Stepper, StepperStats};
+use super::{ImpactRecord, SimContact, SimError, SimModel, SimSettings};
+use crate::analytic::{ImpactLaw, LawError, SlipMode};
+use crate::law_check;
+use crate::lcp::{self, LcpStatus, LemkeSettings};
+use crate::math::{Real, cross};
+use nalgebra::Vector6;
+
+/// Most contacts at once: two at the joint, two at each abutment.
+const MAX_CONTACTS: usize = 6;
+/// Most LCP unknowns (`3 n`).
+const MAX_LCP: usize = 3 * MAX_CONTACTS;
+/// Most contact directions (`2 n`).
+const MAX_DIR: usize = 2 * MAX_CONTACTS;
+
+type LcpMatrix = [[Real; MAX_LCP]; MAX_LCP];
+
+/// An active contact with its `w_N`, `w_T`.
+type ActiveContact = (SimContact, [Real; 6], [Real; 6]);
+
+#[inline]
+fn dot6(a: &[Real; 6], b: &Vector6<Real>) -> Real {
+    a.iter().zip(b.iter()).map(|(x, y)| x * y).sum()
+}
+
+/// Lemke on the leading `N × N` block of `a` (fixed-size kernel).
+fn lemke_block<const N: usize>(
+    a: &LcpMatrix,
+    b: &[Real; MAX_LCP],
+    settings: &LemkeSettings,
+) -> Option<Vec<Real>> {
+    let mut aa = [[0.0; N]; N];
+    let mut bb = [0.0; N];
+    for i in 0..N {
+        aa[i].copy_from_slice(&a[i][..N]);
+        bb[i] = b[i];
+    }
+    let s = lcp::solve_fixed::<N>(&aa, &bb, settings);
+    (s.status == LcpStatus::Solved).then(|| s.z.to_vec())
+}
+
+/// Solves the contact LCP of size `3n` (`n = 1 … 6`) for `x = (P_N, P_TR, γ_TL)` (spec §8).
+/// Returns `(x, lemke_ok, any_ok)`.
+fn solve_contact_lcp(
+    n: usize,
+    a: &LcpMatrix,
+    b: &[Real; MAX_LCP],
+    settings: &LemkeSettings,
+) -> (Vec<Real>, bool, bool) {
+    let m = 3 * n;
+    let sol = match n {
+        1 => lemke_block::<3>(a, b, settings),
+        2 => lemke_block::<6>(a, b, settings),
+        3 => lemke_block::<9>(a, b, settings),
+        4 => lemke_block::<12>(a, b, settings),
+        5 => lemke_block::<15>(a, b, settings),
+        _ => lemke_block::<18>(a, b, settings),
+    };
+    if let Some(z) = sol {
+        return (z, true, true);
+    }
+    let rows: Vec<Real> = (0..m).flat_map(|i| a[i][..m].to_vec()).collect();
+    if let Ok(p) = lcp::LcpProblem::new(rows, b[..m].to_vec())
+        && let Ok(sols) = lcp::enumerate(&p)
+        && let Some(z) = sols.into_iter().next()
+    {
+        return (z, false, true);
+    }
+    (vec![0.0; m], false, false)
+}
+
+/// The active contacts' directions and velocities (order `N_1..N_n, T_1..T_n`).
+struct Assembled {
+    n: usize,
+    wcols: [[Real; 6]; MAX_DIR],
+    /// `Ŵ⁻¹ W`.
+    wiw: [Vector6<Real>; MAX_DIR],
+    /// Delassus `G = Wᵀ Ŵ⁻¹ W`.
+    g: [[Real; MAX_DIR]; MAX_DIR],
+    gam_pre: [Real; MAX_DIR],
+    gam_free: [Real; MAX_DIR],
+}
+
+/// The rigid-contact stepper (module doc).
+pub(crate) struct RigidStepper {
+    laws: [ImpactLaw; MAX_CONTACTS],
+    mu: Real,
+    eps: Real,
+    impact_velocity: Real,
+    lemke: LemkeSettings,
+    d_cont: Real,
+    stats: StepperStats,
+}
+
+impl RigidStepper {
+    /// The stepper of `model`'s impact law (ε_N, μ).
+    pub fn new(model: &SimModel, settings: &SimSettings) -> Result<Self, SimError> {
+        let (mu, eps) = (model.friction, model.restitution);
+        let law = ImpactLaw::new(mu, eps).map_err(|e| match e {
+            LawError::Friction(v) => SimError::invalid("friction", v, "must be >= 0"),
+            LawError::Restitution(v) => SimError::invalid("restitution", v, "must lie in [0, 1]"),
+        })?;
+        Ok(RigidStepper {
+            laws: [law; MAX_CONTACTS],
+            mu,
+            eps,
+            impact_velocity: settings.impact_velocity,
+            lemke: settings.lemke.clone(),
+            d_cont: 0.0,
+            stats: StepperStats::default(),
+        })
+    }
+
+    /// Contacts whose predicted gap `g + h γ_N(u_k) ≤ 0`.
+    fn active_set(inp: &StepInput) -> ([Option<ActiveContact>; MAX_CONTACTS], usize) {
+        let (fr, br, u, h) = (inp.frame, inp.bridge, inp.u, inp.scheme.h);
+        let (pose, bodies) = (&fr.pose, &br.bodies);
+        let mut active: [Option<ActiveContact>; MAX_CONTACTS] = [None; MAX_CONTACTS];
+        let mut n_act = 0;
+        for s in fr.sel.iter().flatten() {
+            let c = fr.cands[*s];
+            let (wn, wt) = c.force_directions(pose);
+            if c.gap + h * dot6(&wn, u) <= 0.0 {
+                active[n_act] = Some((SimContact::Joint(c.case), wn, wt));
+                n_act += 1;
+            }
+        }
+        for ab in &br.abutments {
+            let (j, n, tn) = (ab.body, ab.normal, ab.tangent);
+            for (k, c0) in bodies[j].far_corners.iter().enumerate() {
+                let pc = pose.place(bodies, j, c0);
+                let r = pc - pose.g[j];
+                let mut wn = [0.0; 6];
+                let mut wt = [0.0; 6];
+                wn[3 * j..3 * j + 3].copy_from_slice(&[n.x, n.y, cross(&r, &n)]);
+                wt[3 * j..3 * j + 3].copy_from_slice(&[tn.x, tn.y, cross(&r, &tn)]);
+                if (pc - ab.point).dot(&n) + h * dot6(&wn, u) <= 0.0 {
+                    let contact = SimContact::Abutment {
+                        deck: j + 1,
+                        corner: k,
+                    };
+                    active[n_act] = Some((contact, wn, wt));
+                    n_act += 1;
+                }
+            }
+        }
+        (active, n_act)
+    }
+
+    /// `W`, `Ŵ⁻¹ W`, `G` and the velocities of the active contacts.
+    fn assemble(
+        inp: &StepInput,
+        active: &[Option<ActiveContact>; MAX_CONTACTS],
+        n_act: usize,
+    ) -> Assembled {
+        let (u, u_free, winv) = (inp.u, inp.u_free, &inp.scheme.winv);
+        let mut wcols = [[0.0; 6]; MAX_DIR];
+        for (i, a) in active.iter().take(n_act).enumerate() {
+            let (_, wn, wt) = a.as_ref().unwrap();
+            wcols[i] = *wn;
+            wcols[n_act + i] = *wt;
+        }
+        let nc = 2 * n_act;
+        let mut wiw = [Vector6::zeros(); MAX_DIR];
+        for i in 0..nc {
+            wiw[i] = winv * Vector6::from(wcols[i]);
+        }
+        let mut g = [[0.0; MAX_DIR]; MAX_DIR];
+        for i in 0..nc {
+            for j in 0..nc {
+                g[i][j] = dot6(&wcols[i], &wiw[j]);
+            }
+        }
+        let mut gam_pre = [0.0; MAX_DIR];
+        let mut gam_free = [0.0; MAX_DIR];
+        for i in 0..nc {
+            gam_pre[i] = dot6(&wcols[i], u);
+            gam_free[i] = dot6(&wcols[i], u_free);
+        }
+        Assembled {
+            n: n_act,
+            wcols,
+            wiw,
+            g,
+            gam_pre,
+            gam_free,
+        }
+    }
+
+    /// The LCP (spec §8) of size `3n` and its solution `z = (P_N, P_TR, γ_TL)`, with the
+    /// fallbacks; returns `(z, ok, any)`.
+    fn solve(&mut self, asm: &Assembled) -> (Vec<Real>, bool, bool) {
+        let (n, g, mu, eps) = (asm.n, &asm.g, self.mu, self.eps);
+        let mut a = [[0.0; MAX_LCP]; MAX_LCP];
+        let mut b = [0.0; MAX_LCP];
+        for i in 0..n {
+            for j in 0..n {
+                a[i][j] = g[i][j] - g[i][n + j] * mu;
+                a[i][n + j] = g[i][n + j];
+                a[n + i][j] = g[n + i][j] - g[n + i][n + j] * mu;
+                a[n + i][n + j] = g[n + i][n + j];
+            }
+            a[n + i][2 * n + i] = 1.0;
+            a[2 * n + i][i] = 2.0 * mu;
+            a[2 * n + i][n + i] = -1.0;
+            b[i] = asm.gam_free[i] + eps * asm.gam_pre[i].min(0.0);
+            b[n + i] = asm.gam_free[n + i];
+        }
+        let (mut z, ok, any) = solve_contact_lcp(n, &a, &b, &self.lemke);
+        if !ok {
+            if any {
+                self.stats.lcp_enumeration_fallbacks += 1;
+            } else {
+                self.stats.lcp_failures += 1;
+                // frictionless fallback: LCP in P_N only
+                let mut a0 = [[0.0; MAX_LCP]; MAX_LCP];
+                let mut b0 = [0.0; MAX_LCP];
+                for i in 0..n {
+                    for j in 0..n {
+                        a0[i][j] = g[i][j];
+                    }
+                    b0[i] = b[i];
+                    // decouple the dummy rows: z = 0, w = 1
+                    a0[n + i][n + i] = 1.0;
+                    a0[2 * n + i][2 * n + i] = 1.0;
+                    b0[n + i] = 1.0;
+                    b0[2 * n + i] = 1.0;
+                }
+                let (z0, _, _) = solve_contact_lcp(n, &a0, &b0, &self.lemke);
+                z = z0;
+                for i in 0..n {
+                    z[n + i] = mu * z[i]; // P_T = 0
+                }
+            }
+        }
+        (z, ok, any)
+    }
+
+    /// Post-solve check on the recovered velocities ([`crate::law_check`]): rounding scale
+    /// `s_k = Σ_d |W_dk| (|u_free,d| + Σ_j |(Ŵ⁻¹W)_dj P_j|)`.
+    fn check(&mut self, asm: &Assembled, u_free: &Vector6<Real>, p: &[Real], gam_post: &[Real]) {
+        let nc = 2 * asm.n;
+        let mut ad = [0.0; 6];
+        for (d, a) in ad.iter_mut().enumerate() {
+            *a = u_free[d].abs();
+            for j in 0..nc {
+                *a += (asm.wiw[j][d] * p[j]).abs();
+            }
+        }
+        let mut scale = [0.0; MAX_DIR];
+        let mut diag = [0.0; MAX_DIR];
+        for k in 0..nc {
+            scale[k] = asm.wcols[k].iter().zip(&ad).map(|(w, a)| w.abs() * a).sum();
+            diag[k] = asm.g[k][k];
+        }
+        if law_check::check_laws(
+            &self.laws[..asm.n],
+            &asm.gam_pre[..nc],
+            &p[..nc],
+            &gam_post[..nc],
+            &scale[..nc],
+            &diag[..nc],
+        )
+        .is_err()
+        {
+            self.stats.lcp_failures += 1;
+        }
+    }
+
+    /// Contact dissipation and the impact records of one step.
+    fn account(
+        &mut self,
+        asm: &Assembled,
+        active: &[Option<ActiveContact>; MAX_CONTACTS],
+        p: &[Real],
+        gam_post: &[Real],
+        time: Real,
+        log: &mut ImpactLog,
+    ) {
+        let (n, gam_pre, v_imp) = (asm.n, &asm.gam_pre, self.impact_velocity);
+        let impacting = (0..n).any(|i| gam_pre[i] < -v_imp && p[i] > 0.0);
+        if impacting {
+            log.impacts += 1;
+        }
+        for i in 0..n {
+            let dn = -0.5 * (gam_pre[i] + gam_post[i]) * p[i];
+            let dt_ = -0.5 * (gam_pre[n + i] + gam_post[n + i]) * p[n + i];
+            self.d_cont += dn + dt_;
+            if impacting && gam_pre[i] < -v_imp && p[i] > 0.0 {
+                let gt = gam_post[n + i];
+                log.records.push(ImpactRecord {
+                    impact: log.impacts,
+                    time,
+                    contact: active[i].as_ref().unwrap().0,
+                    mode: SlipMode::classify(gt, -gam_pre[i]),
+                    gamma_n_pre: gam_pre[i],
+                    gamma_t_pre: gam_pre[n + i],
+                    gamma_n_post: gam_post[i],
+                    gamma_t_post: gt,
+                    impulse_n: p[i],
+                    impulse_t: p[n + i],
+                    energy_dissipated: dn + dt_,
+                });
+            }
+        }
+    }
+}
+
+impl Stepper for RigidStepper {
+    fn contact_forces(&self) -> Option<[Real; 2]> {
+        None
+    }
+
+    fn contact_energy(&self) -> Real {
+        self.d_cont
+    }
+
+    fn step(&mut self, inp: &StepInput, log: &mut ImpactLog) -> StepOutput {
+        let mut u_new = *inp.u_free;
+        let (active, n_act) = Self::active_set(inp);
+        if n_act > 0 {
+            self.stats.lcp_solves += 1;
+            let asm = Self::assemble(inp, &active, n_act);
+            let (n, nc, mu) = (n_act, 2 * n_act, self.mu);
+            let (z, ok, any) = self.solve(&asm);
+            let mut p = [0.0; MAX_DIR];
+            for i in 0..n {
+                p[i] = z[i];
+                p[n + i] = z[n + i] - mu * z[i];
+            }
+            for i in 0..nc {
+                u_new += asm.wiw[i] * p[i];
+            }
+            let mut gam_post = [0.0; MAX_DIR];
+            for i in 0..nc {
+                gam_post[i] = dot6(&asm.wcols[i], &u_new);
+            }
+            if ok || any {
+                self.check(&asm, inp.u_free, &p, &gam_post);
+            }
+            self.account(&asm, &active, &p, &gam_post, inp.t + inp.scheme.h, log);
+        }
+        StepOutput {
+            u: u_new,
+            penetration: Real::NEG_INFINITY,
+        }
+    }
+
+    fn finish(&mut self, _log: &mut ImpactLog) -> StepperStats {
+        std::mem::take(&mut self.stats)
+    }
+}
