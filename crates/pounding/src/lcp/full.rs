@@ -7,7 +7,7 @@
 
 use super::LcpStatus;
 use super::LemkeSettings;
-use super::tableau::{KernelOut, fail, initial_row, verify_small};
+use super::tableau::{KernelOut, fail, initial_row, verdict, verify_small};
 
 /// Mutable workspace of the kernel (all slices at least as long as stated).
 pub(crate) struct WorkFull<'a> {
@@ -213,23 +213,7 @@ pub(crate) fn kernel_full(
         *zj = v;
     }
     let (ok, residual) = verify_small(n, m, q, z, w, s.verify_tol());
-    if ok {
-        KernelOut {
-            status: LcpStatus::Solved,
-            pivots,
-            residual,
-        }
-    } else {
-        for i in 0..n {
-            z[i] = f64::NAN;
-            w[i] = f64::NAN;
-        }
-        KernelOut {
-            status: LcpStatus::IllConditioned,
-            pivots,
-            residual,
-        }
-    }
+    verdict(ok, pivots, residual, z, w)
 }
 
 /// Lexicographic tie-break among the tied rows: the lexicographic minimum of `(B⁻¹)ᵢ / dᵢ`,

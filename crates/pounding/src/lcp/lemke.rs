@@ -70,7 +70,7 @@
 
 use super::full::{WorkFull, kernel_full};
 use super::scale::equilibrate;
-use super::tableau::{FULL_MAX, KernelOut, fail, initial_row, verify, verify_small};
+use super::tableau::{FULL_MAX, KernelOut, fail, initial_row, verdict, verify, verify_small};
 use super::{FixedSolution, LcpProblem, LcpSolution, LcpStatus, LemkeSettings};
 
 /// Mutable workspace of the kernel (every slice at least as long as stated).
@@ -301,23 +301,7 @@ pub(crate) fn kernel(
         }
     }
     let (ok, residual) = verify(n, m, q, z, w, s.verify_tol());
-    if ok {
-        KernelOut {
-            status: LcpStatus::Solved,
-            pivots,
-            residual,
-        }
-    } else {
-        for i in 0..n {
-            z[i] = f64::NAN;
-            w[i] = f64::NAN;
-        }
-        KernelOut {
-            status: LcpStatus::IllConditioned,
-            pivots,
-            residual,
-        }
-    }
+    verdict(ok, pivots, residual, z, w)
 }
 
 /// The tied rows of the ratio test: `z₀`'s row if it is among them (the artificial variable

@@ -244,3 +244,31 @@ pub(crate) fn initial_row(
     }
     Ok(r0)
 }
+
+/// The kernels' exit once `z₀` has left: [`LcpStatus::Solved`] when the verification passed,
+/// else [`LcpStatus::IllConditioned`] with `z`, `w` set to `NaN` (never a wrong number with a
+/// success status).
+#[inline(always)]
+pub(crate) fn verdict(
+    ok: bool,
+    pivots: usize,
+    residual: f64,
+    z: &mut [f64],
+    w: &mut [f64],
+) -> KernelOut {
+    if ok {
+        KernelOut {
+            status: LcpStatus::Solved,
+            pivots,
+            residual,
+        }
+    } else {
+        z.fill(f64::NAN);
+        w.fill(f64::NAN);
+        KernelOut {
+            status: LcpStatus::IllConditioned,
+            pivots,
+            residual,
+        }
+    }
+}
