@@ -16,35 +16,35 @@ use serde::Serialize;
 /// Input of the bridge form. Angles in degrees, lengths in m, density in kg/m³.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BridgeInput {
-    /// Centre-line radius of deck 1 `R1` [m] (> W/2).
+    /// Centre-line radius of deck 1 `R1` \[m\] (> W/2).
     pub r1: f64,
-    /// Centre-line radius of deck 2 `R2` [m] (> W/2).
+    /// Centre-line radius of deck 2 `R2` \[m\] (> W/2).
     pub r2: f64,
-    /// Curve angle of deck 1 `β1` [deg], in (0, 360).
+    /// Curve angle of deck 1 `β1` \[deg\], in (0, 360).
     pub beta1_deg: f64,
-    /// Curve angle of deck 2 `β2` [deg], in (0, 360).
+    /// Curve angle of deck 2 `β2` \[deg\], in (0, 360).
     pub beta2_deg: f64,
-    /// Deck width `W` [m] (both decks).
+    /// Deck width `W` \[m\] (both decks).
     pub width: f64,
-    /// Deck thickness `t` [m] (both decks).
+    /// Deck thickness `t` \[m\] (both decks).
     pub thickness: f64,
-    /// Density `ρ` [kg/m³] (both decks).
+    /// Density `ρ` \[kg/m³\] (both decks).
     pub density: f64,
-    /// Rotation of deck 1 `θ1` [deg], counter-clockwise, `|θ| < 90`.
+    /// Rotation of deck 1 `θ1` \[deg\], counter-clockwise, `|θ| < 90`.
     pub theta1_deg: f64,
-    /// Rotation of deck 2 `θ2` [deg], counter-clockwise, `|θ| < 90`.
+    /// Rotation of deck 2 `θ2` \[deg\], counter-clockwise, `|θ| < 90`.
     pub theta2_deg: f64,
     /// The candidate contact.
     pub case: ContactCase,
     /// Coulomb friction coefficient `μ ≥ 0`.
     pub mu: f64,
-    /// Newton restitution coefficient `ε_N ∈ [0, 1]`.
+    /// Newton restitution coefficient `ε_N ∈ \[0, 1\]`.
     pub eps: f64,
     /// Where the struck point lies (exact corner or the paper's face-end idealisation).
     pub sigma_mode: SigmaMode,
     /// Pre-impact ratio `r = γ_T⁻/γ_N⁻` (solved with `γ_N⁻ = −1 m/s`): also solve the impact.
     pub ratio: Option<f64>,
-    /// Joint opening `g` [m]: also report which corner touches first (spec §5.5).
+    /// Joint opening `g` \[m\]: also report which corner touches first (spec §5.5).
     pub opening: Option<f64>,
 }
 
@@ -53,9 +53,9 @@ pub struct BridgeInput {
 pub struct BridgeEcho {
     /// Contact case name.
     pub case: &'static str,
-    /// `θ1` [deg].
+    /// `θ1` \[deg\].
     pub theta1_deg: f64,
-    /// `θ2` [deg].
+    /// `θ2` \[deg\].
     pub theta2_deg: f64,
     /// `μ`.
     pub mu: f64,
@@ -63,34 +63,34 @@ pub struct BridgeEcho {
     pub eps: f64,
     /// σ mode name.
     pub sigma_mode: &'static str,
-    /// `W` [m].
+    /// `W` \[m\].
     pub width: f64,
-    /// `t` [m].
+    /// `t` \[m\].
     pub thickness: f64,
-    /// `ρ` [kg/m³].
+    /// `ρ` \[kg/m³\].
     pub density: f64,
 }
 
 /// Geometry and mass properties of one curved deck.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CurvedDeckReport {
-    /// `R` [m].
+    /// `R` \[m\].
     pub radius: f64,
-    /// `β` [deg].
+    /// `β` \[deg\].
     pub angle_deg: f64,
-    /// Plan area [m²].
+    /// Plan area \[m²\].
     pub area: f64,
-    /// Mass [kg].
+    /// Mass \[kg\].
     pub mass: f64,
-    /// Radius of the centroid [m].
+    /// Radius of the centroid \[m\].
     pub centroid_radius: f64,
-    /// Centroid x in the deck frame [m].
+    /// Centroid x in the deck frame \[m\].
     pub x_m: f64,
-    /// Centroid y in the deck frame [m].
+    /// Centroid y in the deck frame \[m\].
     pub y_m: f64,
-    /// Polar moment of inertia about the centroid [kg m²].
+    /// Polar moment of inertia about the centroid \[kg m²\].
     pub inertia: f64,
-    /// Radius of gyration [m].
+    /// Radius of gyration \[m\].
     pub radius_of_gyration: f64,
 }
 
@@ -113,13 +113,13 @@ impl CurvedDeckReport {
 /// Contact detection at a given joint opening.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DetectionReport {
-    /// The opening `g` [m].
+    /// The opening `g` \[m\].
     pub opening: f64,
     /// The first-contact case (`None` for a degenerate pose).
     pub first_contact_case: Option<&'static str>,
-    /// Closing distance before first contact [m] (`None` unless the decks are apart).
+    /// Closing distance before first contact \[m\] (`None` unless the decks are apart).
     pub closing_distance: Option<f64>,
-    /// Overlap of the stated pose [m] (`None` unless the decks interpenetrate).
+    /// Overlap of the stated pose \[m\] (`None` unless the decks interpenetrate).
     pub overlap: Option<f64>,
     /// The degeneracy of the pose (not in the JSON; `None` unless degenerate).
     #[serde(skip)]
@@ -139,11 +139,11 @@ pub struct BridgeReport {
     pub first_contact: bool,
     /// Whether the end closes.
     pub end_closes: bool,
-    /// Gap `h` of the candidate [m] (`NaN` when degenerate).
+    /// Gap `h` of the candidate \[m\] (`NaN` when degenerate).
     pub h: f64,
-    /// `σ` [m] (`NaN` when degenerate).
+    /// `σ` \[m\] (`NaN` when degenerate).
     pub sigma: f64,
-    /// Contact point [m] (absent when degenerate).
+    /// Contact point \[m\] (absent when degenerate).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub point: Option<[f64; 2]>,
     /// Contact normal (absent when degenerate).

@@ -16,16 +16,15 @@
 //! `NaN` (JSON `null`). Each report says through `trustworthy()` whether its solver statuses
 //! allow the numbers to be used (the command exits 1 otherwise).
 
-mod bridge;
-mod problem;
-mod shapes;
+pub mod bridge;
+pub mod joint;
+pub mod problem;
+pub mod shapes;
 
 pub use bridge::{BridgeInput, BridgeReport, CurvedDeckReport, DetectionReport, bridge_report};
+pub use joint::{JointInput, JointReport, joint_report};
 pub use problem::{ProblemReport, parse_problem, problem_report};
-pub use shapes::{
-    AbutmentInput, AbutmentReport, DeckSection, JointInput, JointReport, ShapeSpec,
-    abutment_report, joint_report,
-};
+pub use shapes::{AbutmentInput, AbutmentReport, DeckSection, ShapeSpec, abutment_report};
 
 use crate::analytic::{LawError, StickInterval};
 use crate::contact::Delassus;
@@ -97,7 +96,7 @@ pub fn readable(x: f64) -> String {
     }
 }
 
-/// The Delassus entries of one contact `[1/kg]` (`NaN` when undefined).
+/// The Delassus entries of one contact `\[1/kg\]` (`NaN` when undefined).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct DelassusReport {
     /// `G_NN`.
@@ -123,7 +122,7 @@ impl DelassusReport {
     };
 }
 
-/// The stick interval `[L, U]` in `r = γ_T⁻/γ_N⁻` (`NaN` when undefined).
+/// The stick interval `\[L, U\]` in `r = γ_T⁻/γ_N⁻` (`NaN` when undefined).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct IntervalReport {
     /// `L`.
@@ -141,7 +140,7 @@ impl IntervalReport {
     }
 }
 
-/// Normal and tangential impulse `[N s]`.
+/// Normal and tangential impulse `\[N s\]`.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct ImpulseReport {
     /// `Λ_N`.
@@ -150,7 +149,7 @@ pub struct ImpulseReport {
     pub tangential: f64,
 }
 
-/// Post-impact relative velocities `[m/s]`.
+/// Post-impact relative velocities `\[m/s\]`.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct RelativeVelocityReport {
     /// `γ_N⁺`.
@@ -170,7 +169,7 @@ pub struct SingleImpactReport {
     pub impulse: ImpulseReport,
     /// Post-impact relative velocities (`NaN` when degenerate).
     pub post: RelativeVelocityReport,
-    /// Kinetic energy change `ΔT` [J] (`NaN` when degenerate).
+    /// Kinetic energy change `ΔT` \[J\] (`NaN` when degenerate).
     pub energy_change: f64,
     /// Solver status (`None` when degenerate).
     pub status: Option<&'static str>,
@@ -241,21 +240,21 @@ impl SingleImpactReport {
 pub struct CornerContactReport {
     /// Corner name (`c0`/`c1`, `acute`/`obtuse`, `outer`/`inner`).
     pub corner: &'static str,
-    /// Corner position `[m]`.
+    /// Corner position `\[m\]`.
     pub point: [f64; 2],
-    /// `Λ_N` [N s].
+    /// `Λ_N` \[N s\].
     pub normal_impulse: f64,
-    /// `Λ_T` [N s].
+    /// `Λ_T` \[N s\].
     pub tangential_impulse: f64,
     /// Post-impact mode.
     pub mode: &'static str,
-    /// `γ_N⁻` [m/s].
+    /// `γ_N⁻` \[m/s\].
     pub gamma_n_pre: f64,
-    /// `γ_T⁻` [m/s].
+    /// `γ_T⁻` \[m/s\].
     pub gamma_t_pre: f64,
-    /// `γ_N⁺` [m/s].
+    /// `γ_N⁺` \[m/s\].
     pub gamma_n_post: f64,
-    /// `γ_T⁺` [m/s].
+    /// `γ_T⁺` \[m/s\].
     pub gamma_t_post: f64,
 }
 
@@ -281,7 +280,7 @@ fn corner_contacts(
         .collect()
 }
 
-/// Kinetic energy before and after the impact [J].
+/// Kinetic energy before and after the impact \[J\].
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct EnergyReport {
     /// Before.

@@ -1,9 +1,9 @@
 //! The generic form: planar rigid bodies and contacts read from JSON.
 //!
 //! ```json
-//! {"bodies": [{"name": "a", "mass": 1.0, "inertia": 0.1, "position": [0, 0],
-//!              "velocity": [1, 0], "omega": 0}],
-//!  "contacts": [{"body_a": "a", "body_b": null, "point": [0.5, 0], "normal": [-1, 0],
+//! {"bodies": [{"name": "a", "mass": 1.0, "inertia": 0.1, "position": \[0, 0\],
+//!              "velocity": \[1, 0\], "omega": 0}],
+//!  "contacts": [{"body_a": "a", "body_b": null, "point": \[0.5, 0\], "normal": \[-1, 0\],
 //!                "mu": 0.3, "restitution": 0.5}]}
 //! ```
 //!
@@ -144,28 +144,28 @@ pub fn parse_problem(text: &str) -> Result<ImpactProblem, ReportError> {
 pub struct BodyStateReport {
     /// Body name.
     pub name: String,
-    /// Post-impact velocity of the centre of mass [m/s].
+    /// Post-impact velocity of the centre of mass \[m/s\].
     pub velocity: [f64; 2],
-    /// Post-impact angular velocity [rad/s].
+    /// Post-impact angular velocity \[rad/s\].
     pub omega: f64,
 }
 
 /// One contact of the generic form.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ContactReport {
-    /// `Λ_N` [N s].
+    /// `Λ_N` \[N s\].
     pub normal_impulse: f64,
-    /// `Λ_T` [N s].
+    /// `Λ_T` \[N s\].
     pub tangential_impulse: f64,
     /// Post-impact mode.
     pub mode: &'static str,
-    /// `γ_N⁻` [m/s].
+    /// `γ_N⁻` \[m/s\].
     pub gamma_n_pre: f64,
-    /// `γ_T⁻` [m/s].
+    /// `γ_T⁻` \[m/s\].
     pub gamma_t_pre: f64,
-    /// `γ_N⁺` [m/s].
+    /// `γ_N⁺` \[m/s\].
     pub gamma_n_post: f64,
-    /// `γ_T⁺` [m/s].
+    /// `γ_T⁺` \[m/s\].
     pub gamma_t_post: f64,
 }
 

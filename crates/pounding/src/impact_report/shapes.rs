@@ -1,5 +1,5 @@
-//! The shape forms: one deck (curved, straight or skew) against a rigid abutment beyond its far
-//! end, and two straight or skew decks face to face at the joint.
+//! The abutment form: one deck (curved, straight or skew) against a rigid abutment beyond its far
+//! end; the deck shape and cross-section inputs shared with the joint form.
 
 use super::{
     CornerContactReport, DelassusReport, EnergyReport, IntervalReport, ReportError,
@@ -7,35 +7,35 @@ use super::{
 };
 use crate::analytic::{self, ImpactLaw};
 use crate::geometry::{Deck, GeometryError};
-use crate::impact::{self, ContactMode, ImpactSettings, ImpactSolution};
+use crate::impact::{self, ContactMode, ImpactSettings};
 use crate::lcp::LemkeSettings;
 use crate::math::Vector;
 use crate::shape::{
     Abutment, DeckEnd, DeckShape, SkewedDeck, StraightDeck, abutment_contact, abutment_delassus,
-    abutment_problem, frictionless_pivot, joint_problem,
+    abutment_problem, frictionless_pivot,
 };
 use serde::Serialize;
 
 /// A deck's plan shape. Lengths in m, angles in degrees.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum ShapeSpec {
-    /// A curved deck: centre-line radius `R` [m] (> W/2) and curve angle `β` [deg] in (0, 360).
+    /// A curved deck: centre-line radius `R` \[m\] (> W/2) and curve angle `β` \[deg\] in (0, 360).
     Curved {
-        /// `R` [m].
+        /// `R` \[m\].
         radius: f64,
-        /// `β` [deg].
+        /// `β` \[deg\].
         angle_deg: f64,
     },
-    /// A rectangle of length `L` [m] (> 0) along its axis.
+    /// A rectangle of length `L` \[m\] (> 0) along its axis.
     Straight {
-        /// `L` [m].
+        /// `L` \[m\].
         length: f64,
     },
-    /// A parallelogram: length `L` [m] (> 0), skew angle `θ_s` [deg] in [0, 90) of the end faces.
+    /// A parallelogram: length `L` \[m\] (> 0), skew angle `θ_s` \[deg\] in [0, 90) of the end faces.
     Skew {
-        /// `L` [m].
+        /// `L` \[m\].
         length: f64,
-        /// `θ_s` [deg].
+        /// `θ_s` \[deg\].
         skew_deg: f64,
     },
 }
@@ -43,16 +43,16 @@ pub enum ShapeSpec {
 /// The cross-section shared by the decks of a report.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DeckSection {
-    /// Width `W` [m].
+    /// Width `W` \[m\].
     pub width: f64,
-    /// Thickness `t` [m].
+    /// Thickness `t` \[m\].
     pub thickness: f64,
-    /// Density `ρ` [kg/m³].
+    /// Density `ρ` \[kg/m³\].
     pub density: f64,
 }
 
 impl ShapeSpec {
-    fn build(&self, s: &DeckSection) -> Result<DeckShape, GeometryError> {
+    pub(super) fn build(&self, s: &DeckSection) -> Result<DeckShape, GeometryError> {
         Ok(match *self {
             Self::Curved { radius, angle_deg } => DeckShape::Curved(
                 Deck::new(
@@ -78,8 +78,8 @@ impl ShapeSpec {
     }
 }
 
-/// Names of the far-face corners `[c0, c1]` for a shape.
-fn corner_names(shape: &DeckShape) -> [&'static str; 2] {
+/// Names of the far-face corners `\[c0, c1\]` for a shape.
+pub(super) fn corner_names(shape: &DeckShape) -> [&'static str; 2] {
     match shape {
         DeckShape::Curved(_) => ["outer", "inner"],
         DeckShape::Straight(_) => ["c0", "c1"],
@@ -96,16 +96,16 @@ pub struct AbutmentInput {
     pub section: DeckSection,
     /// Coulomb friction coefficient `μ ≥ 0`.
     pub mu: f64,
-    /// Newton restitution coefficient `ε_N ∈ [0, 1]`.
+    /// Newton restitution coefficient `ε_N ∈ \[0, 1\]`.
     pub eps: f64,
-    /// Abutment gap `g ≥ 0` [m] along the far face's outward normal.
+    /// Abutment gap `g ≥ 0` \[m\] along the far face's outward normal.
     pub gap: f64,
     /// Striking corner(s): `both`, `c0`, `c1`, or the shape's names (`outer`/`inner`,
     /// `acute`/`obtuse`).
     pub corner: String,
     /// With a single corner: pre-impact ratio `r = γ_T⁻/γ_N⁻` to solve (with `γ_N⁻ = −1 m/s`).
     pub ratio: Option<f64>,
-    /// With both corners: speed of the longitudinal approach [m/s] (> 0).
+    /// With both corners: speed of the longitudinal approach \[m/s\] (> 0).
     pub speed: f64,
 }
 
@@ -124,24 +124,24 @@ pub struct AbutmentEcho {
     pub mu: f64,
     /// `ε_N`.
     pub eps: f64,
-    /// Gap [m].
+    /// Gap \[m\].
     pub gap: f64,
-    /// `W` [m].
+    /// `W` \[m\].
     pub width: f64,
-    /// `t` [m].
+    /// `t` \[m\].
     pub thickness: f64,
-    /// `ρ` [kg/m³].
+    /// `ρ` \[kg/m³\].
     pub density: f64,
-    /// `R` [m] (curved).
+    /// `R` \[m\] (curved).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub radius: Option<f64>,
-    /// `β` [deg] (curved).
+    /// `β` \[deg\] (curved).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub angle_deg: Option<f64>,
-    /// `L` [m] (straight, skew).
+    /// `L` \[m\] (straight, skew).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub length: Option<f64>,
-    /// `θ_s` [deg] (skew).
+    /// `θ_s` \[deg\] (skew).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub skew_deg: Option<f64>,
 }
@@ -149,13 +149,13 @@ pub struct AbutmentEcho {
 /// The struck end face.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FaceReport {
-    /// Corner positions `[c0, c1]` [m].
+    /// Corner positions `\[c0, c1\]` \[m\].
     pub corners: [[f64; 2]; 2],
     /// Corner names.
     pub corner_names: [&'static str; 2],
-    /// Interior corner angles [deg].
+    /// Interior corner angles \[deg\].
     pub corner_angles_deg: [f64; 2],
-    /// Face length [m].
+    /// Face length \[m\].
     pub length: f64,
     /// Outward unit normal.
     pub outward_normal: [f64; 2],
@@ -164,15 +164,15 @@ pub struct FaceReport {
 /// The deck's mass properties and far face.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ShapeDeckReport {
-    /// Plan area [m²].
+    /// Plan area \[m²\].
     pub area: f64,
-    /// Mass [kg].
+    /// Mass \[kg\].
     pub mass: f64,
-    /// Centroid [m].
+    /// Centroid \[m\].
     pub centroid: [f64; 2],
-    /// Moment of inertia about the centroid [kg m²].
+    /// Moment of inertia about the centroid \[kg m²\].
     pub inertia: f64,
-    /// Radius of gyration [m].
+    /// Radius of gyration \[m\].
     pub radius_of_gyration: f64,
     /// Unit axis direction toward the far end.
     pub axis: [f64; 2],
@@ -183,13 +183,13 @@ pub struct ShapeDeckReport {
 /// Where the abutment is.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct AbutmentPlacement {
-    /// A point of the abutment face [m].
+    /// A point of the abutment face \[m\].
     pub face_point: [f64; 2],
-    /// Travel along the axis until the first corner touches [m].
+    /// Travel along the axis until the first corner touches \[m\].
     pub travel_to_contact: f64,
 }
 
-/// Lever arms of a corner [m].
+/// Lever arms of a corner \[m\].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct LeverArms {
     /// `r × n`.
@@ -216,7 +216,7 @@ pub struct SingleCornerReport {
     pub corner_index: usize,
     /// Corner name.
     pub corner_name: &'static str,
-    /// Contact point [m].
+    /// Contact point \[m\].
     pub point: [f64; 2],
     /// Contact normal.
     pub normal: [f64; 2],
@@ -243,7 +243,7 @@ pub struct SingleCornerReport {
     trustworthy: bool,
 }
 
-/// Post-impact state of a body [m/s, rad/s].
+/// Post-impact state of a body \[m/s, rad/s\].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct BodyVelocity {
     /// Velocity of the centroid.
@@ -261,7 +261,7 @@ pub struct RotationReport {
     pub rotates: bool,
     /// The pivot the LCP found (the corner keeping contact while the other opens).
     pub pivot: Option<&'static str>,
-    /// `ω⁺` [rad/s].
+    /// `ω⁺` \[rad/s\].
     pub omega: f64,
     /// `sin 2θ_s` (skew).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -280,7 +280,7 @@ pub struct RotationReport {
 /// Both corners strike after a longitudinal approach (flattened into [`AbutmentReport`]).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct BothCornersReport {
-    /// Approach speed [m/s].
+    /// Approach speed \[m/s\].
     pub speed: f64,
     /// Per-corner results.
     pub contacts: Vec<CornerContactReport>,
@@ -339,7 +339,7 @@ fn resolve_corner(corner: &str, names: &[&'static str; 2]) -> Result<Vec<usize>,
     })
 }
 
-fn check_speed(speed: f64) -> Result<(), ReportError> {
+pub(super) fn check_speed(speed: f64) -> Result<(), ReportError> {
     if speed.is_finite() && speed > 0.0 {
         Ok(())
     } else {
@@ -682,232 +682,5 @@ impl BothCornersReport {
                 }
             ));
         }
-    }
-}
-
-/// Input of the joint form: two straight or skew decks face to face at the joint (reference pose,
-/// zero opening); deck 1 approaches along its axis at `speed`, deck 2 rests.
-#[derive(Debug, Clone, PartialEq)]
-pub struct JointInput {
-    /// Deck 1's shape ([`ShapeSpec::Straight`] or [`ShapeSpec::Skew`]); deck 2 has the same
-    /// shape with length `length2`.
-    pub shape: ShapeSpec,
-    /// The cross-section of both decks.
-    pub section: DeckSection,
-    /// Length of deck 2 [m] (> 0; default deck 1's).
-    pub length2: Option<f64>,
-    /// Coulomb friction coefficient `μ ≥ 0`.
-    pub mu: f64,
-    /// Newton restitution coefficient `ε_N ∈ [0, 1]`.
-    pub eps: f64,
-    /// Deck 1's approach speed [m/s] (> 0).
-    pub speed: f64,
-}
-
-/// The joint form's input as echoed in the report.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct JointEcho {
-    /// Shape name.
-    pub shape: &'static str,
-    /// Always `false`.
-    pub abutment: bool,
-    /// `μ`.
-    pub mu: f64,
-    /// `ε_N`.
-    pub eps: f64,
-    /// Speed [m/s].
-    pub speed: f64,
-    /// `W` [m].
-    pub width: f64,
-    /// `t` [m].
-    pub thickness: f64,
-    /// `ρ` [kg/m³].
-    pub density: f64,
-    /// Deck 1's length [m].
-    pub length: f64,
-    /// Deck 2's length [m].
-    pub length2: f64,
-    /// `θ_s` [deg] (skew).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub skew_deg: Option<f64>,
-}
-
-/// One deck of the joint form.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct JointDeckReport {
-    /// Body name.
-    pub name: String,
-    /// Mass [kg].
-    pub mass: f64,
-    /// Moment of inertia [kg m²].
-    pub inertia: f64,
-    /// Centroid [m].
-    pub centroid: [f64; 2],
-    /// Pre-impact velocity [m/s].
-    pub velocity_pre: [f64; 2],
-    /// Post-impact velocity [m/s].
-    pub velocity: [f64; 2],
-    /// Post-impact angular velocity [rad/s].
-    pub omega: f64,
-}
-
-/// The report of the joint form.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct JointReport {
-    /// The input.
-    pub input: JointEcho,
-    /// Both decks.
-    pub decks: Vec<JointDeckReport>,
-    /// Deck 1's joint corners.
-    pub contacts: Vec<CornerContactReport>,
-    /// Kinetic energy.
-    pub energy: EnergyReport,
-    /// Solver status.
-    pub status: &'static str,
-    /// Whether the post-impact velocities are unique.
-    pub post_velocity_unique: bool,
-    #[serde(skip)]
-    trustworthy: bool,
-}
-
-/// The same geometry error with the parameter renamed (deck 2's `length` is `length2`).
-fn rename(e: GeometryError, from: &str, to: &str) -> GeometryError {
-    match e {
-        GeometryError::InvalidParameter {
-            name,
-            value,
-            reason,
-        } => GeometryError::InvalidParameter {
-            name: if name == from { to.to_string() } else { name },
-            value,
-            reason,
-        },
-    }
-}
-
-/// Computes the joint form (both joint corners of deck 1 strike deck 2's joint face).
-pub fn joint_report(a: &JointInput) -> Result<JointReport, ReportError> {
-    let deck1 = a.shape.build(&a.section)?;
-    let (length, skew_deg) = match a.shape {
-        ShapeSpec::Straight { length } => (length, None),
-        ShapeSpec::Skew { length, skew_deg } => (length, Some(skew_deg)),
-        ShapeSpec::Curved { .. } => {
-            return Err(invalid(
-                "shape",
-                "curved",
-                "two curved decks use the S-curved bridge form",
-            ));
-        }
-    };
-    let length2 = a.length2.unwrap_or(length);
-    let deck2 = match &deck1 {
-        DeckShape::Skewed(d) => DeckShape::Skewed(
-            SkewedDeck::new(length2, d.width, d.skew, d.thickness, d.density)
-                .map_err(|e| rename(e, "length", "length2"))?,
-        ),
-        _ => DeckShape::Straight(
-            StraightDeck::new(
-                length2,
-                a.section.width,
-                a.section.thickness,
-                a.section.density,
-            )
-            .map_err(|e| rename(e, "length", "length2"))?,
-        ),
-    };
-    let law = ImpactLaw::new(a.mu, a.eps)?;
-    check_speed(a.speed)?;
-    let v1 = a.speed * deck1.axis_direction(DeckEnd::Joint);
-    let problem = joint_problem(&deck1, &deck2, (v1, 0.0), (Vector::zeros(), 0.0), &law)?;
-    let s: ImpactSolution = impact::solve(&problem, &ImpactSettings::default());
-    let names = corner_names(&deck1);
-    let face = deck1.end_face(DeckEnd::Joint);
-    Ok(JointReport {
-        input: JointEcho {
-            shape: deck1.name(),
-            abutment: false,
-            mu: a.mu,
-            eps: a.eps,
-            speed: a.speed,
-            width: a.section.width,
-            thickness: a.section.thickness,
-            density: a.section.density,
-            length,
-            length2,
-            skew_deg,
-        },
-        decks: problem
-            .bodies()
-            .iter()
-            .zip(&s.bodies)
-            .map(|(b, v)| JointDeckReport {
-                name: b.name.clone(),
-                mass: b.mass,
-                inertia: b.inertia,
-                centroid: xy(&b.position),
-                velocity_pre: xy(&b.velocity),
-                velocity: xy(&v.velocity),
-                omega: v.omega,
-            })
-            .collect(),
-        contacts: corner_contacts(&s.contacts, &names, &face.corners),
-        energy: EnergyReport {
-            before: s.energy_before,
-            after: s.energy_after,
-        },
-        status: s.status.name(),
-        post_velocity_unique: s.post_velocity_unique,
-        trustworthy: s.status.is_trustworthy(),
-    })
-}
-
-impl JointReport {
-    /// Whether the solver status allows the numbers to be used.
-    pub fn trustworthy(&self) -> bool {
-        self.trustworthy
-    }
-
-    /// The readable summary (one line per entry) that `pounding impact --shape …` prints.
-    pub fn summary(&self) -> Vec<String> {
-        let i = &self.input;
-        let mut lines = vec![format!(
-            "Two {} decks face to face at the joint (W = {} m{}), deck 1 approaching along its axis at {} m/s; μ = {}, ε_N = {}: {}",
-            i.shape,
-            i.width,
-            i.skew_deg
-                .map_or(String::new(), |sk| format!(", θ_s = {sk}°")),
-            i.speed,
-            i.mu,
-            i.eps,
-            self.status
-        )];
-        for d in &self.decks {
-            lines.push(format!(
-                "  {}: m = {} kg, I = {} kg m²: v⁺ = ({}, {}) m/s, ω⁺ = {} rad/s",
-                d.name,
-                readable(d.mass),
-                readable(d.inertia),
-                readable(d.velocity[0]),
-                readable(d.velocity[1]),
-                readable(d.omega)
-            ));
-        }
-        for c in &self.contacts {
-            lines.push(format!(
-                "  deck 1 {} corner: {}  Λ_N = {} N s  Λ_T = {} N s  γ_N: {} → {} m/s",
-                c.corner,
-                c.mode,
-                readable(c.normal_impulse),
-                readable(c.tangential_impulse),
-                readable(c.gamma_n_pre),
-                readable(c.gamma_n_post)
-            ));
-        }
-        lines.push(format!(
-            "  kinetic energy: {} J → {} J",
-            readable(self.energy.before),
-            readable(self.energy.after)
-        ));
-        lines
     }
 }
