@@ -68,14 +68,8 @@ pub(crate) fn overview<DB: DrawingBackend>(
 
 /// Mean stick bounds and region shares against μ.
 fn overview_mu<DB: DrawingBackend>(o: &Overview, panels: &[DrawingArea<DB, Shift>]) -> DrawResult {
-    let Overview {
-        study,
-        s,
-        rmin,
-        rmax,
-        ref mus,
-        ref range_txt,
-    } = *o;
+    let (study, s, mus) = (o.study, o.s, &o.mus);
+    let (rmin, rmax, range_txt) = (o.rmin, o.rmax, &o.range_txt);
     let share = |c: &pounding::study::Cell| shares(c.lower, c.upper, rmin, rmax);
     let mut series = Vec::new();
     for (ci, case) in s.cases.iter().enumerate() {
@@ -145,14 +139,8 @@ fn overview_beta<DB: DrawingBackend>(
     o: &Overview,
     panels: &[DrawingArea<DB, Shift>],
 ) -> DrawResult {
-    let Overview {
-        study,
-        s,
-        rmin,
-        rmax,
-        ref mus,
-        ref range_txt,
-    } = *o;
+    let (study, s, mus) = (o.study, o.s, &o.mus);
+    let (rmin, rmax, range_txt) = (o.rmin, o.rmax, &o.range_txt);
     let share = |c: &pounding::study::Cell| shares(c.lower, c.upper, rmin, rmax);
     // Striking deck a (owns the corner) and struck deck b.
     for (p, striking) in [(0usize, true), (1, false)] {
@@ -222,14 +210,8 @@ fn overview_radius<DB: DrawingBackend>(
     o: &Overview,
     panels: &[DrawingArea<DB, Shift>],
 ) -> DrawResult {
-    let Overview {
-        study,
-        s,
-        rmin,
-        rmax,
-        ref mus,
-        ref range_txt,
-    } = *o;
+    let (study, s, mus) = (o.study, o.s, &o.mus);
+    let (rmin, rmax, range_txt) = (o.rmin, o.rmax, &o.range_txt);
     let share = |c: &pounding::study::Cell| shares(c.lower, c.upper, rmin, rmax);
     let curved = s.shape == StudyShape::Curved;
     let ratio = |q: &pounding::study::run::RowParams| {

@@ -62,8 +62,8 @@ fn region_panel<DB: DrawingBackend>(
     let tol = s.degeneracy_tolerance_deg();
     let range = if deck1 { s.theta1 } else { s.theta2 };
     let samples = region_samples_in(
-        &arr,
-        &law,
+        arr,
+        law,
         deck1,
         range.start,
         range.stop,
