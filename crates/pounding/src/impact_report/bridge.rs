@@ -1,6 +1,6 @@
 //! The bridge form: two S-curved decks in a given pose, one candidate contact (the paper's model).
 
-use super::{
+use super::common::{
     DelassusReport, IntervalReport, ReportError, SingleImpactReport, invalid, readable, xy,
 };
 use crate::analytic::{self, ImpactLaw};

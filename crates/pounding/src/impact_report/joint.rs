@@ -1,9 +1,9 @@
 //! The joint form: two straight or skew decks face to face at the joint.
 
-use super::shapes::{DeckSection, ShapeSpec, check_speed, corner_names};
-use super::{
+use super::common::{
     CornerContactReport, EnergyReport, ReportError, corner_contacts, invalid, readable, xy,
 };
+use super::shapes::{DeckSection, ShapeSpec, check_speed, corner_names};
 use crate::analytic::ImpactLaw;
 use crate::geometry::GeometryError;
 use crate::impact::{self, ImpactSettings, ImpactSolution};

@@ -10,7 +10,7 @@
 //! Units: kg, kg m², m, m/s, rad/s. `body_b = null` is a fixed obstacle. Unknown and duplicate
 //! keys are errors naming the key.
 
-use super::{EnergyReport, ReportError, readable, xy};
+use super::common::{EnergyReport, ReportError, readable, xy};
 use crate::impact::{self, ContactSpec, ImpactProblem, ImpactSettings, ImpactSolution, RigidBody};
 use crate::math::Vector;
 use serde::Serialize;

@@ -1,7 +1,7 @@
 //! The abutment form: one deck (curved, straight or skew) against a rigid abutment beyond its far
 //! end; the deck shape and cross-section inputs shared with the joint form.
 
-use super::{
+use super::common::{
     CornerContactReport, DelassusReport, EnergyReport, IntervalReport, ReportError,
     SingleImpactReport, corner_contacts, invalid, readable, xy,
 };
