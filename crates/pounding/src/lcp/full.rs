@@ -28,10 +28,8 @@ pub(crate) struct WorkFull<'a> {
 /// The full-tableau lexicographic Lemke kernel (`B⁻¹[I, −M]` and `b` kept; the `z₀` column is
 /// dropped after the first pivot). `m` is row-major `n × n`; `z`, `w` receive the result
 /// (`NaN` unless the status is [`LcpStatus::Solved`]).
-// Longer than 120 lines on purpose: the pivot loop is the solver's hot path, inlined with a
-// compile-time `n`; it keeps the tableau, the basis and the entering column in locals across
-// iterations. Only the cold paths (ties, failures, verification) are separate functions; a
-// split of the loop body would pass that state through `&mut` arguments in every pivot.
+// Longer than 120 lines on purpose, like the compact kernel: the inlined pivot loop keeps the
+// tableau and the basis in locals; only the cold paths are separate functions.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn kernel_full(
