@@ -9,10 +9,13 @@
 //! contact event.
 
 use crate::cmd_simulate;
+use crate::plot_style::{
+    BLUE, DARK, DrawResult, FAMILY, GREEN, ORANGE, PURPLE, RED, e, register, save_white_png,
+    series_legend,
+};
 use anyhow::{Context, Result, anyhow, bail};
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use plotters::style::{FontStyle, register_font};
 use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
 use pounding::sim::output::{COMPARE_OUTPUTS, compare_csv, compare_table};
@@ -181,23 +184,9 @@ pub fn run(args: Args) -> Result<ExitCode> {
 
 // ---------------------------------------------------------------- plots
 
-static FONT: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans.ttf");
-static REGISTER: std::sync::Once = std::sync::Once::new();
-const FAMILY: &str = "sans-serif";
-type R = std::result::Result<(), String>;
+type R = DrawResult;
 
-fn e<E: std::fmt::Display>(err: E) -> String {
-    err.to_string()
-}
-
-const COLORS: [RGBColor; 6] = [
-    RGBColor(20, 20, 20),
-    RGBColor(31, 97, 180),
-    RGBColor(39, 150, 80),
-    RGBColor(200, 40, 40),
-    RGBColor(230, 126, 34),
-    RGBColor(142, 68, 173),
-];
+const COLORS: [RGBColor; 6] = [DARK, BLUE, GREEN, RED, ORANGE, PURPLE];
 
 fn color_of(law: &str) -> RGBColor {
     let i = LAW_NAMES.iter().position(|l| *l == law).unwrap_or(0);
@@ -328,30 +317,15 @@ fn panel<DB: DrawingBackend>(
             .label(*law)
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2)));
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font((FAMILY, 14))
-        .draw()
-        .map_err(e)?;
-    Ok(())
+    series_legend(&mut chart, SeriesLabelPosition::UpperRight, BLACK, 14)
 }
 
 fn save(out: &Path, name: &str, draw: impl Fn(&DrawingArea<BitMapBackend, Shift>) -> R) -> R {
-    crate::figures::save_png(&out.join(name), (1200, 900), |root| {
-        root.fill(&WHITE).map_err(e)?;
-        draw(root)
-    })
+    save_white_png(out, name, (1200, 900), draw)
 }
 
 fn plots(out: &Path, runs: &[Run]) -> R {
-    REGISTER.call_once(|| {
-        for style in [FontStyle::Normal, FontStyle::Bold] {
-            let _ = register_font(FAMILY, style, FONT);
-        }
-    });
+    register();
     let t_end = runs
         .iter()
         .filter_map(|r| r.sol.history.t.last().copied())

@@ -9,6 +9,8 @@ mod cmd_lcp;
 mod cmd_simulate;
 mod cmd_study;
 mod figures;
+mod plot_style;
+mod plots;
 mod report;
 
 /// Nonsmooth rigid-impact analysis of pounding between bridge deck segments.

@@ -40,6 +40,7 @@ pub mod contact_law;
 pub mod geometry;
 pub mod ground_motion;
 pub mod impact;
+pub mod impact_report;
 pub mod input;
 pub mod law_check;
 pub mod lcp;

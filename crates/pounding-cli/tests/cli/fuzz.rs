@@ -6,10 +6,6 @@ use crate::pounding;
 use pounding::impact::{self, ImpactSettings};
 use std::path::PathBuf;
 
-#[allow(dead_code, unused_imports, clippy::all)]
-#[path = "../../src/cmd_impact.rs"]
-mod cmd_impact;
-
 #[allow(dead_code)]
 #[path = "../../../../fuzz/src/lib.rs"]
 mod oracle;
@@ -31,7 +27,7 @@ fn inputs() -> Vec<PathBuf> {
 fn fuzz_replay_impact_json() {
     for p in inputs() {
         let text = std::fs::read_to_string(&p).unwrap_or_default();
-        if let Ok(problem) = cmd_impact::parse_problem(&text) {
+        if let Ok(problem) = pounding::impact_report::parse_problem(&text) {
             let s = impact::solve(&problem, &ImpactSettings::default());
             let r = std::panic::catch_unwind(|| oracle::check_impact(&problem, &s));
             assert!(r.is_ok(), "impact oracle fails on {}", p.display());

@@ -15,7 +15,7 @@
 //! `M_αα`); duplicates (degenerate solutions reached from several supports) are merged when they
 //! agree to `dedup_tol · max(1, ‖z‖∞)`. A continuum of solutions is represented by its vertices.
 
-use super::lemke::verify;
+use super::tableau::verify;
 use super::{LcpError, LcpProblem};
 
 /// Largest size accepted by [`enumerate`] (`2¹²` = 4096 supports).

@@ -7,7 +7,7 @@
 
 use super::LcpStatus;
 use super::LemkeSettings;
-use super::lemke::{KernelOut, fail, verify_small};
+use super::tableau::{KernelOut, fail, initial_row, verdict, verify_small};
 
 /// Mutable workspace of the kernel (all slices at least as long as stated).
 pub(crate) struct WorkFull<'a> {
@@ -28,6 +28,8 @@ pub(crate) struct WorkFull<'a> {
 /// The full-tableau lexicographic Lemke kernel (`B⁻¹[I, −M]` and `b` kept; the `z₀` column is
 /// dropped after the first pivot). `m` is row-major `n × n`; `z`, `w` receive the result
 /// (`NaN` unless the status is [`LcpStatus::Solved`]).
+// Longer than 120 lines on purpose, like the compact kernel: the inlined pivot loop keeps the
+// tableau and the basis in locals; only the cold paths are separate functions.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn kernel_full(
@@ -53,38 +55,10 @@ pub(crate) fn kernel_full(
     let pivot_tol = s.pivot_tol();
 
     // ---- trivial shortcut and the initial row (lexicographic minimum of [q_r | e_rᵀ]) ----
-    let mut qmin = f64::INFINITY;
-    let mut qscale = 0.0f64;
-    let mut finite = true;
-    for &qi in q {
-        qmin = qmin.min(qi);
-        qscale = qscale.max(qi.abs());
-        finite &= qi.is_finite();
-    }
-    if !finite {
-        return fail(LcpStatus::IllConditioned, 0, z, w);
-    }
-    if qmin >= 0.0 {
-        for i in 0..n {
-            z[i] = 0.0;
-            w[i] = q[i];
-        }
-        return KernelOut {
-            status: LcpStatus::Solved,
-            pivots: 0,
-            residual: 0.0,
-        };
-    }
-    let qtie = qmin + tie_tol * qscale;
-    let mut r0 = 0;
-    for (i, &qi) in q.iter().enumerate() {
-        if qi <= qtie {
-            r0 = i; // the largest index among the tied minima
-        }
-    }
-    if s.max_pivots() == 0 {
-        return fail(LcpStatus::MaxPivots, 0, z, w);
-    }
+    let r0 = match initial_row(n, q, s, z, w) {
+        Ok(r0) => r0,
+        Err(out) => return out,
+    };
 
     // ---- tableau after the first pivot (z₀ enters in row r0; its column −e is not kept) ----
     let qr = q[r0];
@@ -237,23 +211,7 @@ pub(crate) fn kernel_full(
         *zj = v;
     }
     let (ok, residual) = verify_small(n, m, q, z, w, s.verify_tol());
-    if ok {
-        KernelOut {
-            status: LcpStatus::Solved,
-            pivots,
-            residual,
-        }
-    } else {
-        for i in 0..n {
-            z[i] = f64::NAN;
-            w[i] = f64::NAN;
-        }
-        KernelOut {
-            status: LcpStatus::IllConditioned,
-            pivots,
-            residual,
-        }
-    }
+    verdict(ok, pivots, residual, z, w)
 }
 
 /// Lexicographic tie-break among the tied rows: the lexicographic minimum of `(B⁻¹)ᵢ / dᵢ`,

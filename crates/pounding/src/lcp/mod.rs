@@ -28,6 +28,7 @@ mod full;
 pub mod io;
 pub mod lemke;
 mod scale;
+mod tableau;
 
 pub use enumerate::{EnumSettings, enumerate, enumerate_with};
 pub use lemke::{Lemke, solve_fixed};

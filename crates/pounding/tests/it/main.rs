@@ -13,6 +13,7 @@ mod harden;
 mod harden_input;
 mod harden_io;
 mod impact;
+mod impact_report;
 mod lcp;
 mod lemke_degenerate;
 mod physics_check;
