@@ -107,9 +107,9 @@ fn solve_siconos_files() {
     let Some(cps3) = siconos("lcp_CPS_3.dat") else {
         return;
     };
-    // Lemke: ray termination -> status 1, nan
+    // Lemke: ray termination -> status 1, nan, written; exit 1 (a problem not solved)
     let o = run(&["lcp", "solve", cps3.to_str().unwrap()]);
-    assert!(o.status.success());
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
     let text = String::from_utf8(o.stdout.clone()).unwrap();
     assert!(
         text.contains("SOL 0 pounding-lemke 1 nan nan nan nan"),
@@ -213,14 +213,15 @@ fn bad_input_fails_cleanly() {
             assert!(!e.contains("panicked"), "{e}");
         }
     }
-    // no problems: solve writes just the header, bench refuses
+    // no problems: solve and bench both refuse (bad input)
     let p = d.join("zero.txt");
     std::fs::write(&p, "LCPSET 1\nCOUNT 0\n").unwrap();
-    let o = run(&["lcp", "solve", p.to_str().unwrap()]);
-    assert!(o.status.success() && String::from_utf8_lossy(&o.stdout).starts_with("LCPSOL 1\n"));
-    let o = run(&["lcp", "bench", p.to_str().unwrap()]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("no problems"), "{}", stderr(&o));
+    for sub in ["solve", "bench"] {
+        let o = run(&["lcp", sub, p.to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(2), "{sub}");
+        assert!(stderr(&o).contains("no problems"), "{}", stderr(&o));
+        assert!(o.stdout.is_empty());
+    }
     // a directory and a missing file
     for p in [d.to_str().unwrap(), "/nonexistent/x.dat"] {
         let o = run(&["lcp", "solve", p]);
