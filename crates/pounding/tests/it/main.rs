@@ -7,6 +7,7 @@ mod contact;
 mod contact_law;
 mod event_exact;
 mod geometry;
+mod geometry_path;
 mod ground_motion;
 mod harden;
 mod harden_input;
