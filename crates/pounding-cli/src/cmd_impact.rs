@@ -3,10 +3,10 @@
 
 use anyhow::{Context, Result, anyhow, bail};
 use pounding::analytic::{self, ImpactLaw};
-use pounding::contact::{self, Delassus};
+use pounding::contact::Delassus;
 use pounding::geometry::{
-    ContactCase, ContactDetection, Deck, ImpactConfiguration, MassProperties, SArrangement,
-    SigmaMode, validate_rotation,
+    ContactCase, ContactDetection, ImpactConfiguration, MassProperties, SigmaMode,
+    validate_rotation,
 };
 use pounding::impact::{
     self, ContactMode, ContactSpec, ImpactProblem, ImpactSettings, ImpactSolution, RigidBody,
@@ -15,6 +15,8 @@ use pounding::impact::{
 use pounding::lcp::LemkeSettings;
 use pounding::math::Vector;
 use pounding::output::{float_token, json_float};
+use pounding::pair::SArrangement;
+use pounding::shape::Deck;
 use pounding::shape::{
     Abutment, DeckEnd, DeckShape, SkewedDeck, StraightDeck, abutment_contact, abutment_delassus,
     abutment_problem, frictionless_pivot, joint_problem,
@@ -194,14 +196,15 @@ fn vec_json(v: &Vector) -> Value {
 }
 
 fn deck_json(d: &Deck, angle_deg: f64, p: &MassProperties) -> Value {
+    let sc = d.sector_centroid();
     json!({
         "radius": json_float(d.radius),
         "angle_deg": json_float(angle_deg),
         "area": json_float(p.area),
         "mass": json_float(p.mass),
-        "centroid_radius": json_float(p.centroid_radius),
-        "x_m": json_float(p.x_m),
-        "y_m": json_float(p.y_m),
+        "centroid_radius": json_float(sc.centroid_radius),
+        "x_m": json_float(sc.x_m),
+        "y_m": json_float(sc.y_m),
         "inertia": json_float(p.inertia),
         "radius_of_gyration": json_float(p.radius_of_gyration()),
     })
@@ -267,7 +270,7 @@ fn run_bridge(a: &ImpactArgs) -> Result<ExitCode> {
     let detection = a.opening.map(|g| (g, s.detect_contact(t1r, t2r, g)));
     let (p1, p2) = (d1.mass_properties(), d2.mass_properties());
     let result = s.configuration(case, t1r, t2r, mode).map(|config| {
-        let g = contact::delassus(&s, &config);
+        let g = s.delassus(&config);
         let bounds = analytic::stick_interval(&g, &law);
         let solved = a.ratio.map(|r| {
             (
@@ -480,7 +483,7 @@ fn print_bridge_summary(
             beta,
             p.area,
             fmt(p.mass),
-            p.centroid_radius,
+            d.sector_centroid().centroid_radius,
             fmt(p.inertia)
         );
     }
@@ -796,14 +799,6 @@ fn corner_contacts_json(
     )
 }
 
-fn corner_names(shape: &DeckShape) -> [&'static str; 2] {
-    match shape {
-        DeckShape::Curved(_) => ["outer", "inner"],
-        DeckShape::Straight(_) => ["c0", "c1"],
-        DeckShape::Skewed(_) => ["acute", "obtuse"],
-    }
-}
-
 /// The abutment form: deck 1 (curved, straight or skew) against a rigid abutment beyond its far end.
 fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
     let shape_name = a.shape.as_deref().unwrap_or("curved");
@@ -878,7 +873,7 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
     let eps = need(a.eps, "eps")?;
     let law = ImpactLaw::new(mu, eps)?;
     let abut = Abutment::new(DeckEnd::Far, a.gap.unwrap_or(0.0))?;
-    let names = corner_names(&shape);
+    let names = shape.corner_names(DeckEnd::Far);
     let corner = a.corner.as_deref().unwrap_or("both");
     let corners: Vec<usize> = match corner {
         "both" => vec![0, 1],
@@ -929,17 +924,19 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
         "thickness": json_float(a.thickness),
         "density": json_float(a.density),
     });
-    let extra = match &shape {
-        DeckShape::Curved(d) => {
-            json!({"radius": json_float(d.radius), "angle_deg": json_float(a.beta1.unwrap_or(d.angle.to_degrees()))})
+    if let Value::Object(m) = &mut input {
+        if let Some(d) = shape.curved() {
+            m.insert("radius".into(), json_float(d.radius));
+            let angle = a.beta1.unwrap_or(d.angle.to_degrees());
+            m.insert("angle_deg".into(), json_float(angle));
         }
-        DeckShape::Straight(d) => json!({"length": json_float(d.length)}),
-        DeckShape::Skewed(d) => {
-            json!({"length": json_float(d.length), "skew_deg": json_float(a.skew.unwrap_or(d.skew.to_degrees()))})
+        if let Some(length) = shape.length() {
+            m.insert("length".into(), json_float(length));
         }
-    };
-    if let (Value::Object(m), Value::Object(e)) = (&mut input, extra) {
-        m.extend(e);
+        if let Some(d) = shape.skewed() {
+            let skew = a.skew.unwrap_or(d.skew.to_degrees());
+            m.insert("skew_deg".into(), json_float(skew));
+        }
     }
     out.insert("input".into(), input);
     out.insert(
@@ -971,22 +968,23 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
         }),
     );
     let mut lines: Vec<String> = Vec::new();
-    lines.push(match &shape {
-        DeckShape::Curved(d) => format!(
+    lines.push(match (shape.curved(), shape.skewed(), shape.length()) {
+        (Some(d), _, _) => format!(
             "Curved deck R = {} m, β = {}°, W = {} m against a rigid abutment at its far end",
             d.radius,
             a.beta1.unwrap_or(d.angle.to_degrees()),
             d.width
         ),
-        DeckShape::Straight(d) => format!(
-            "Straight deck L = {} m, W = {} m against a rigid abutment at its far end",
-            d.length, d.width
-        ),
-        DeckShape::Skewed(d) => format!(
+        (_, Some(d), _) => format!(
             "Skew deck L = {} m, W = {} m, θ_s = {}° against a rigid abutment at its far end",
             d.length,
             d.width,
             a.skew.unwrap_or(d.skew.to_degrees())
+        ),
+        (_, _, length) => format!(
+            "Straight deck L = {} m, W = {} m against a rigid abutment at its far end",
+            length.unwrap_or(f64::NAN),
+            shape.width()
         ),
     });
     lines.push(format!(
@@ -1131,7 +1129,7 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
             "pivot": lcp_pivot,
             "omega": json_float(omega),
         });
-        if let (DeckShape::Skewed(d), Value::Object(m)) = (&shape, &mut rot) {
+        if let (Some(d), Value::Object(m)) = (shape.skewed(), &mut rot) {
             m.insert("sin_2skew".into(), json_float((2.0 * d.skew).sin()));
             m.insert("two_w_over_l".into(), json_float(2.0 * d.width / d.length));
             m.insert(
@@ -1190,8 +1188,8 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
         let predicted = pivot.map_or("no rotation".to_string(), |k| {
             format!("rotation about the {} corner", names[k])
         });
-        lines.push(match &shape {
-            DeckShape::Skewed(d) => format!(
+        lines.push(match shape.skewed() {
+            Some(d) => format!(
                 "  frictionless criterion: sin 2θ_s = {:.6} {} 2W/L = {:.6} → {predicted}",
                 (2.0 * d.skew).sin(),
                 if d.rotates_on_abutment_impact() {
@@ -1201,9 +1199,11 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
                 },
                 2.0 * d.width / d.length
             ),
-            _ => format!("  frictionless criterion (centroid's foot beyond the face): {predicted}"),
+            None => {
+                format!("  frictionless criterion (centroid's foot beyond the face): {predicted}")
+            }
         });
-        if let DeckShape::Skewed(d) = &shape
+        if let Some(d) = shape.skewed()
             && mu > 0.0
         {
             lines.push(format!(
@@ -1254,23 +1254,12 @@ fn run_joint(a: &ImpactArgs, deck1: &DeckShape) -> Result<ExitCode> {
     if a.sigma_mode != "exact" {
         bail!("--sigma-mode is not used with --shape {}", deck1.name());
     }
-    let deck2 = match deck1 {
-        DeckShape::Straight(d) => {
-            let l2 = a.length2.unwrap_or(d.length);
-            DeckShape::Straight(
-                StraightDeck::new(l2, d.width, d.thickness, d.density)
-                    .map_err(|e| rename(e, "length", "length2"))?,
-            )
-        }
-        DeckShape::Skewed(d) => {
-            let l2 = a.length2.unwrap_or(d.length);
-            DeckShape::Skewed(
-                SkewedDeck::new(l2, d.width, d.skew, d.thickness, d.density)
-                    .map_err(|e| rename(e, "length", "length2"))?,
-            )
-        }
-        DeckShape::Curved(_) => bail!("internal: curved decks use the S-curved bridge form"),
+    let Some(length1) = deck1.length() else {
+        bail!("internal: curved decks use the S-curved bridge form")
     };
+    let deck2 = deck1
+        .with_length(a.length2.unwrap_or(length1))
+        .map_err(|e| rename(e, "length", "length2"))?;
     let mu = need(a.mu, "mu")?;
     let eps = need(a.eps, "eps")?;
     let law = ImpactLaw::new(mu, eps)?;
@@ -1281,7 +1270,7 @@ fn run_joint(a: &ImpactArgs, deck1: &DeckShape) -> Result<ExitCode> {
     let v1 = speed * deck1.axis_direction(DeckEnd::Joint);
     let problem = joint_problem(deck1, &deck2, (v1, 0.0), (Vector::zeros(), 0.0), &law)?;
     let s = impact::solve(&problem, &ImpactSettings::default());
-    let names = corner_names(deck1);
+    let names = deck1.corner_names(DeckEnd::Joint);
     let face = deck1.end_face(DeckEnd::Joint);
     let mut out = Map::new();
     let mut input = json!({

@@ -7,12 +7,14 @@
 //! before anything is written. With `--records` it runs a batch instead ([`sim_batch`]).
 
 use anyhow::{Context, Result, anyhow, bail};
-use pounding::geometry::{ContactCase, Deck, SArrangement};
+use pounding::geometry::ContactCase;
 use pounding::ground_motion::{
     AccelUnits, EL_CENTRO_180_AT2, EL_CENTRO_270_AT2, GroundMotion, Record,
 };
 use pounding::math::{Real, Vector};
 use pounding::output::{float_token, json_float, write_atomic};
+use pounding::pair::SArrangement;
+use pounding::shape::Deck;
 use pounding::shape::{DeckShape, SkewedDeck, StraightDeck};
 use pounding::sim::{
     Bearing, SEAT_ENDS, SimAbutment, SimError, SimModel, SimProblem, SimSettings, SimSolution,
@@ -988,15 +990,8 @@ pub(crate) fn summary_json(setup: &Setup, sol: &SimSolution) -> serde_json::Valu
     // Keys for straight / skewed decks and abutments only when used (the curved default's
     // summary stays as it was).
     if let Some(sh) = &m.shapes {
-        let len = |d: &DeckShape| match d {
-            DeckShape::Straight(d) => json_float(d.length),
-            DeckShape::Skewed(d) => json_float(d.length),
-            DeckShape::Curved(_) => serde_json::Value::Null,
-        };
-        let skew = |d: &DeckShape| match d {
-            DeckShape::Skewed(d) => json_float(d.skew * DEG),
-            _ => json_float(0.0),
-        };
+        let len = |d: &DeckShape| d.length().map_or(serde_json::Value::Null, json_float);
+        let skew = |d: &DeckShape| json_float(d.skew() * DEG);
         out["model"]["shape"] = json!([sh[0].name(), sh[1].name()]);
         out["model"]["length_m"] = json!([len(&sh[0]), len(&sh[1])]);
         out["model"]["skew_deg"] = json!([skew(&sh[0]), skew(&sh[1])]);

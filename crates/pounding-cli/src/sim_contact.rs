@@ -244,7 +244,6 @@ pub(super) fn apply_shape_and_damping(
     damping: &str,
     model: &mut pounding::sim::SimModel,
 ) -> Result<()> {
-    use pounding::shape::DeckShape;
     use pounding::sim::DampingModel;
     let current = model.masses();
     for (j, m, key) in [(0, d.mass1, "mass1"), (1, d.mass2, "mass2")] {
@@ -257,11 +256,7 @@ pub(super) fn apply_shape_and_damping(
         }
         let f = m / current[j];
         match &mut model.shapes {
-            Some(sh) => match &mut sh[j] {
-                DeckShape::Straight(x) => x.density *= f,
-                DeckShape::Skewed(x) => x.density *= f,
-                DeckShape::Curved(x) => x.density *= f,
-            },
+            Some(sh) => sh[j].scale_density(f),
             None => {
                 if j == 0 {
                     model.arrangement.deck1.density *= f;

@@ -432,12 +432,14 @@ fn layout<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, problem: &SimProble
     let g = m.gap;
     let bodies = m.deck_bodies();
     let outline = |j: usize| -> Vec<(Real, Real)> {
-        use pounding::shape::DeckShape;
-        let d = match m.shapes.map(|s| s[j - 1]) {
-            None if j == 1 => m.arrangement.deck1,
-            None => m.arrangement.deck2,
-            Some(DeckShape::Curved(d)) => d,
-            Some(_) => {
+        let curved = match m.shapes {
+            None if j == 1 => Some(m.arrangement.deck1),
+            None => Some(m.arrangement.deck2),
+            Some(s) => s[j - 1].curved().copied(),
+        };
+        let d = match curved {
+            Some(d) => d,
+            None => {
                 // straight / skewed: the four end-face corners (joint c0, c1, far c0, c1)
                 let b = &bodies[j - 1];
                 return [
