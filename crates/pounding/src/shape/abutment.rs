@@ -160,7 +160,7 @@ pub fn abutment_problem(
 /// `|A|` alone in contact (`Λ_k = (1+ε) n₀ / G_kk`; the other corner separates since
 /// `G_jk ≥ G_kk ⟺ A_k (A_j − A_k) ≥ 0`), and the deck turns with `ω⁺ = A_k Λ_k / I`.
 /// The criterion involves neither `ε_N` nor `m`, `I`. For a skewed deck it is
-/// [`SkewedDeck::rotates_on_abutment_impact`] and the pivot is the obtuse corner `c1`.
+/// [`SkewedDeck::rotates_on_abutment_impact`](super::SkewedDeck::rotates_on_abutment_impact) and the pivot is the obtuse corner `c1`.
 pub fn frictionless_pivot(shape: &DeckShape, end: DeckEnd) -> Option<usize> {
     let a0 = abutment_contact(shape, end, 0).arm_n;
     let a1 = abutment_contact(shape, end, 1).arm_n;

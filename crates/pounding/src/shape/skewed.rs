@@ -107,7 +107,7 @@ impl SkewedDeck {
 
     /// `sin 2θ_s > 2W/L`: the frictionless rotation condition for a purely longitudinal approach
     /// of the deck against an abutment with both corners of an end face striking (see
-    /// [`frictionless_pivot`]). Equivalent to `(L/2) sin θ_s > W/(2 cos θ_s)`: the foot of the
+    /// [`frictionless_pivot`](super::frictionless_pivot)). Equivalent to `(L/2) sin θ_s > W/(2 cos θ_s)`: the foot of the
     /// perpendicular from the centroid onto the end-face line lies beyond the obtuse corner.
     pub fn rotates_on_abutment_impact(&self) -> bool {
         (2.0 * self.skew).sin() > 2.0 * self.width / self.length
