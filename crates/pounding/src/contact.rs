@@ -86,8 +86,10 @@ pub fn force_directions(config: &ImpactConfiguration) -> ForceDirections {
 /// contact; they enter `G` squared or as the product `A B`, so a body's common sign drops out).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BodyArms {
-    /// The body's mass and polar moment (its centroid is already in the arms).
-    pub props: MassProperties,
+    /// Mass `m` \[kg\].
+    pub mass: Real,
+    /// Polar moment about the centroid `I` \[kg m²\].
+    pub inertia: Real,
     /// `A = r × ν` \[m\].
     pub arm_n: Real,
     /// `B = r × τ` \[m\].
@@ -104,21 +106,21 @@ pub struct BodyArms {
 /// the result is reproducible to the last bit.
 ///
 /// # Panics
-/// If `bodies` is empty.
+/// If `N = 0`.
 #[inline]
-pub fn delassus_of_bodies(bodies: &[BodyArms]) -> Delassus {
+pub fn delassus_of_bodies<const N: usize>(bodies: &[BodyArms; N]) -> Delassus {
     let (first, rest) = bodies
         .split_first()
         .expect("a contact has at least one body");
-    let mut inv_m = 1.0 / first.props.mass;
+    let mut inv_m = 1.0 / first.mass;
     for b in rest {
-        inv_m += 1.0 / b.props.mass;
+        inv_m += 1.0 / b.mass;
     }
-    let i0 = 1.0 / first.props.inertia;
+    let i0 = 1.0 / first.inertia;
     let (a0, b0) = (first.arm_n, first.arm_t);
     let (mut nn, mut nt, mut tt) = (inv_m + a0 * a0 * i0, a0 * b0 * i0, inv_m + b0 * b0 * i0);
     for b in rest {
-        let i = 1.0 / b.props.inertia;
+        let i = 1.0 / b.inertia;
         let (a, bb) = (b.arm_n, b.arm_t);
         nn += a * a * i;
         nt += a * bb * i;
@@ -144,12 +146,14 @@ pub fn delassus_with(
 ) -> Delassus {
     delassus_of_bodies(&[
         BodyArms {
-            props: *props1,
+            mass: props1.mass,
+            inertia: props1.inertia,
             arm_n: w.w_n[2],
             arm_t: w.w_t[2],
         },
         BodyArms {
-            props: *props2,
+            mass: props2.mass,
+            inertia: props2.inertia,
             arm_n: w.w_n[5],
             arm_t: w.w_t[5],
         },

@@ -143,10 +143,19 @@ impl DeckPair {
 /// The degeneracy of a pose with face half-lengths `w1`, `w2` (module docs): `θ1 = θ2` → parallel
 /// faces; then, for `w1 = w2`, `θ1 = −θ2` → corner meets corner (exactly [`degeneracy`]); for
 /// `w1 ≠ w2`, `|w1 cos θ1 − w2 cos θ2| ≤ 1e−12 · max(w1, w2)` → corner meets corner.
+#[inline]
 pub fn pair_degeneracy(w1: Real, w2: Real, theta1: Real, theta2: Real) -> Option<Degeneracy> {
     if w1 == w2 {
-        return degeneracy(theta1, theta2);
+        degeneracy(theta1, theta2)
+    } else {
+        unequal_degeneracy(w1, w2, theta1, theta2)
     }
+}
+
+/// [`pair_degeneracy`] for `w1 ≠ w2` (kept out of line: the study's pairs have equal faces).
+#[cold]
+#[inline(never)]
+fn unequal_degeneracy(w1: Real, w2: Real, theta1: Real, theta2: Real) -> Option<Degeneracy> {
     if (theta1 - theta2).abs() <= DEGENERACY_TOLERANCE {
         Some(Degeneracy::ParallelFaces)
     } else if (w1 * theta1.cos() - w2 * theta2.cos()).abs() <= 1e-12 * w1.max(w2) {
@@ -159,6 +168,7 @@ pub fn pair_degeneracy(w1: Real, w2: Real, theta1: Real, theta2: Real) -> Option
 /// Whether `case` is the real first contact with face half-lengths `w1`, `w2` (module docs): the
 /// striking deck has the smaller `w_a cos θ_a` and the candidate's `h > 0`. For `w1 = w2` this is
 /// exactly [`is_first_contact`].
+#[inline]
 pub fn pair_first_contact(
     case: ContactCase,
     w1: Real,
@@ -167,8 +177,22 @@ pub fn pair_first_contact(
     theta2: Real,
 ) -> bool {
     if w1 == w2 {
-        return is_first_contact(case, theta1, theta2);
+        is_first_contact(case, theta1, theta2)
+    } else {
+        unequal_first_contact(case, w1, w2, theta1, theta2)
     }
+}
+
+/// [`pair_first_contact`] for `w1 ≠ w2` (out of line, see [`unequal_degeneracy`]).
+#[cold]
+#[inline(never)]
+fn unequal_first_contact(
+    case: ContactCase,
+    w1: Real,
+    w2: Real,
+    theta1: Real,
+    theta2: Real,
+) -> bool {
     let (a1, a2) = (w1 * theta1.cos(), w2 * theta2.cos());
     let s12 = (theta1 - theta2).sin();
     match case {
@@ -180,6 +204,7 @@ pub fn pair_first_contact(
 }
 
 /// [`DeckPair::configuration`] from precomputed body data (the study's fast path).
+#[inline(always)]
 pub fn configuration_with(
     d1: &PairDeckData,
     d2: &PairDeckData,
@@ -326,6 +351,7 @@ impl SArrangement {
     /// The same as [`configuration`](Self::configuration) with precomputed mass properties
     /// (saves two `sin` evaluations per call in tight loops): [`configuration_with`] with the face
     /// half-length `W/2` for both decks.
+    #[inline]
     pub fn configuration_with(
         &self,
         props1: &MassProperties,

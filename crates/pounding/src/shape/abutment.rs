@@ -99,8 +99,10 @@ pub fn abutment_contact(shape: &DeckShape, end: DeckEnd, k: usize) -> AbutmentCo
 /// for both.
 pub fn abutment_delassus(shape: &DeckShape, end: DeckEnd, k: usize) -> Delassus {
     let c = abutment_contact(shape, end, k);
+    let p = shape.mass_properties();
     delassus_of_bodies(&[BodyArms {
-        props: shape.mass_properties(),
+        mass: p.mass,
+        inertia: p.inertia,
         arm_n: c.arm_n,
         arm_t: c.arm_t,
     }])
