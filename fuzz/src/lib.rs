@@ -348,9 +348,10 @@ pub fn sim_model(data: &[u8]) {
 mod sim_model_impl {
     #[allow(unused_imports)]
     use super::{Bytes, check_lcp};
-    use pounding::geometry::{Deck, SArrangement};
     use pounding::ground_motion::{GroundMotion, Record};
     use pounding::math::Vector;
+    use pounding::pair::SArrangement;
+    use pounding::shape::Deck;
     use pounding::shape::{DeckShape, SkewedDeck, StraightDeck};
     use pounding::sim::{
         Bearing, DampingModel, SimAbutment, SimModel, SimProblem, SimSettings, SimStatus, simulate,

@@ -13,10 +13,12 @@
 //!   recompute the mass properties for every cell.
 
 use pounding::analytic::{ImpactLaw, stick_interval};
-use pounding::contact::{delassus, delassus_with, force_directions};
-use pounding::geometry::{ContactCase, Deck, SArrangement, SigmaMode};
+use pounding::contact::{delassus_with, force_directions};
+use pounding::geometry::{ContactCase, SigmaMode};
 use pounding::impact::solve_single;
 use pounding::lcp::LemkeSettings;
+use pounding::pair::SArrangement;
+use pounding::shape::Deck;
 use std::hint::black_box;
 
 fn main() {
@@ -67,7 +69,7 @@ fn cell_prepared(bencher: divan::Bencher) {
                 else {
                     continue;
                 };
-                let w = force_directions(&s, &c);
+                let w = force_directions(&c);
                 let g = delassus_with(&p1, &p2, &w);
                 let b = stick_interval(&g, &law);
                 let r = probe(k, b.lower, b.upper);
@@ -90,7 +92,7 @@ fn cell_contract(bencher: divan::Bencher) {
                 let Ok(c) = s.configuration(case, black_box(t1), t2, SigmaMode::Exact) else {
                     continue;
                 };
-                let g = delassus(&s, &c);
+                let g = s.delassus(&c);
                 let b = stick_interval(&g, &law);
                 let r = probe(k, b.lower, b.upper);
                 let sol = solve_single(&g, &law, -1.0, -r, &settings);

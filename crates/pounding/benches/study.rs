@@ -7,7 +7,6 @@
 //! * `bounds_csv_441` — formatting those 441 rows as CSV text.
 
 use pounding::analytic::ImpactLaw;
-use pounding::contact::delassus;
 use pounding::geometry::{ContactCase, SigmaMode};
 use pounding::study::cell::{compute_cell, lcp_agrees};
 use pounding::study::csv::bounds_csv;
@@ -55,7 +54,7 @@ fn lcp_check(b: divan::Bencher) {
             SigmaMode::Exact,
         )
         .expect("non-degenerate");
-    let g = delassus(&arr, &cfg);
+    let g = arr.delassus(&cfg);
     let iv = pounding::analytic::stick_interval(&g, &law);
     b.bench(|| lcp_agrees(black_box(&g), &law, iv.lower, iv.upper));
 }

@@ -1,11 +1,14 @@
-//! Annular-sector decks, mass properties, the S arrangement and impact configurations (spec §2–§5).
+//! The shape-independent vocabulary of a joint between two decks (spec §4–§5): parameter errors,
+//! the one mass-property type, candidate contacts, σ modes, degeneracies, the impact
+//! configuration and the first-contact rules.
 //!
 //! Conventions (spec §4, §5): origin at the midpoint `M_2` of deck 2's joint face, x along the
 //! joint line, y normal to the joint pointing into deck 1, counter-clockwise angles positive.
-//! Deck 1 lies in `y > 0` with its centre of curvature at `M_1 + (R_1, 0)`, deck 2 in `y < 0` with
-//! its centre at `M_2 + (−R_2, 0)`. Impact configurations use the *joint-anchored placement*
-//! (spec §5.2): deck `j` is rotated by `θ_j` about its own face midpoint `M_j`; `M_2 = (0, 0)` stays
-//! and deck 1 is moved along y to `M_1 = (0, h)` until the candidate corner lies on the struck face.
+//! Deck 1 lies in `y > 0`, deck 2 in `y < 0`. Impact configurations use the *joint-anchored
+//! placement* (spec §5.2): deck `j` is rotated by `θ_j` about its own face midpoint `M_j`;
+//! `M_2 = (0, 0)` stays and deck 1 is moved along y to `M_1 = (0, h)` until the candidate corner
+//! lies on the struck face. The deck shapes live in [`crate::shape`], the configuration of a pair
+//! of decks (and the curved S arrangement, its preset) in [`crate::pair`].
 
 use crate::math::{Real, Vector};
 use thiserror::Error;
@@ -26,7 +29,7 @@ pub enum GeometryError {
 }
 
 impl GeometryError {
-    fn invalid(name: &str, value: Real, reason: &str) -> Self {
+    pub(crate) fn invalid(name: &str, value: Real, reason: &str) -> Self {
         Self::InvalidParameter {
             name: name.to_string(),
             value,
@@ -35,7 +38,8 @@ impl GeometryError {
     }
 
     /// The same error with the deck index appended to per-deck parameter names
-    /// (`R` → `R1`, `beta` → `beta2`); shared parameters (`width`, `thickness`, `density`) keep their name.
+    /// (`R` → `R1`, `beta` → `beta2`, `skew` → `skew1`, `length` → `L2`); shared parameters
+    /// (`width`, `thickness`, `density`) keep their name.
     pub fn for_deck(self, index: usize) -> Self {
         match self {
             Self::InvalidParameter {
@@ -43,10 +47,10 @@ impl GeometryError {
                 value,
                 reason,
             } => {
-                let name = if name == "R" || name == "beta" {
-                    format!("{name}{index}")
-                } else {
-                    name
+                let name = match name.as_str() {
+                    "R" | "beta" | "skew" => format!("{name}{index}"),
+                    "length" => format!("L{index}"),
+                    _ => name,
                 };
                 Self::InvalidParameter {
                     name,
@@ -54,117 +58,6 @@ impl GeometryError {
                     reason,
                 }
             }
-        }
-    }
-}
-
-/// One deck: the plane annular sector of centre-line radius `radius` spanning `angle` (spec §2).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Deck {
-    /// Centre-line radius `R` \[m\]; requires `R > W/2`.
-    pub radius: Real,
-    /// Subtended (curve) angle `β` \[rad\], `0 < β < 2π`.
-    pub angle: Real,
-    /// Width `W` \[m\] (radial extent), `> 0`.
-    pub width: Real,
-    /// Thickness `t` \[m\], `> 0`.
-    pub thickness: Real,
-    /// Density `ρ` \[kg/m³\], `> 0`.
-    pub density: Real,
-}
-
-impl Deck {
-    /// A validated deck: all parameters finite, `W > 0`, `R > W/2`, `0 < β < 2π`, `t > 0`, `ρ > 0`.
-    ///
-    /// Errors name the parameter as `R`, `beta`, `width`, `thickness` or `density`; use
-    /// [`GeometryError::for_deck`] to get the per-deck names `R1`, `beta2`, ….
-    pub fn new(
-        radius: Real,
-        angle: Real,
-        width: Real,
-        thickness: Real,
-        density: Real,
-    ) -> Result<Self, GeometryError> {
-        if !(width.is_finite() && width > 0.0) {
-            return Err(GeometryError::invalid(
-                "width",
-                width,
-                "must be finite and > 0",
-            ));
-        }
-        if !(radius.is_finite() && radius > 0.5 * width) {
-            return Err(GeometryError::invalid(
-                "R",
-                radius,
-                &format!(
-                    "the centre-line radius must be finite and > W/2 = {}",
-                    0.5 * width
-                ),
-            ));
-        }
-        if !(angle.is_finite() && angle > 0.0 && angle < std::f64::consts::TAU) {
-            return Err(GeometryError::invalid(
-                "beta",
-                angle,
-                "the curve angle must lie in (0, 360) degrees",
-            ));
-        }
-        if !(thickness.is_finite() && thickness > 0.0) {
-            return Err(GeometryError::invalid(
-                "thickness",
-                thickness,
-                "must be finite and > 0",
-            ));
-        }
-        if !(density.is_finite() && density > 0.0) {
-            return Err(GeometryError::invalid(
-                "density",
-                density,
-                "must be finite and > 0",
-            ));
-        }
-        let deck = Self {
-            radius,
-            angle,
-            width,
-            thickness,
-            density,
-        };
-        let p = deck.mass_properties();
-        let (r, b, w, t, d) = (
-            ("R", radius, radius),
-            ("beta", angle, angle),
-            ("width", width, width),
-            ("thickness", thickness, thickness),
-            ("density", density, density),
-        );
-        check_derived("area", p.area, &[r, b, w])?;
-        check_derived("mass", p.mass, &[t, d, r, b, w])?;
-        check_derived("inertia", p.inertia, &[r, w, b, t, d])?;
-        Ok(deck)
-    }
-
-    /// Mass properties (spec §3), with `ρ t` = `density · thickness`:
-    ///
-    /// * `A = β R W`, `m = ρ t A`;
-    /// * `r_c = (R + W²/(12 R)) · sin(β/2)/(β/2)` (centroid distance from the centre of curvature);
-    /// * `X_m = r_c cos(β/2)`, `Y_m = r_c sin(β/2)`;
-    /// * `I = m (R² + W²/4 − r_c²)` (polar moment about the centroid).
-    pub fn mass_properties(&self) -> MassProperties {
-        let (r, w, b) = (self.radius, self.width, self.angle);
-        let area = b * r * w;
-        let mass = self.density * self.thickness * area;
-        let half = 0.5 * b;
-        let (s, c) = half.sin_cos();
-        let rc = (r + w * w / (12.0 * r)) * s / half;
-        let inertia = mass * (r * r + 0.25 * w * w - rc * rc);
-        MassProperties {
-            area,
-            mass,
-            centroid_radius: rc,
-            x_m: rc * c,
-            y_m: rc * s,
-            inertia,
         }
     }
 }
@@ -195,20 +88,20 @@ pub(crate) fn check_derived(
     ))
 }
 
-/// Mass properties of one deck (spec §3), a value type.
+/// Mass properties of a plane rigid body (a deck) in its body frame: the one mass-property type
+/// of the crate (like parry's `MassProperties`). Every deck shape returns it
+/// ([`Shape::mass_properties`](crate::shape::Shape::mass_properties)); the generic pair
+/// ([`crate::pair`]) and the Delassus matrix ([`crate::contact`]) consume it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MassProperties {
-    /// Plan area `A = β R W` \[m²\].
+    /// Plan area `A` \[m²\].
     pub area: Real,
     /// Mass `m = ρ t A` \[kg\].
     pub mass: Real,
-    /// Distance of the centroid from the centre of curvature `r_c` \[m\].
-    pub centroid_radius: Real,
-    /// `X_m = r_c cos(β/2)`: centroid coordinate along the face line from the centre \[m\].
-    pub x_m: Real,
-    /// `Y_m = r_c sin(β/2)`: centroid distance from the face line \[m\].
-    pub y_m: Real,
-    /// Polar moment about the centroid `I = m (R² + W²/4 − r_c²)` \[kg m²\].
+    /// Centroid `G` in the body frame of [`crate::shape`] (origin at the joint-face midpoint, joint
+    /// face on the x-axis, deck in `y > 0`) \[m\]. For a curved deck `G = (R − X_m, Y_m)` (spec §3–§4).
+    pub centroid: Vector,
+    /// Polar moment of inertia about the centroid `I` \[kg m²\].
     pub inertia: Real,
 }
 
@@ -364,15 +257,6 @@ pub fn validate_rotation(name: &str, theta: Real) -> Result<(), GeometryError> {
     }
 }
 
-/// Two decks in the S arrangement (spec §4). Both share `W` and `ρ t`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SArrangement {
-    /// Deck 1 (on +y, centre of curvature at `M_1 + (R_1, 0)`).
-    pub deck1: Deck,
-    /// Deck 2 (on −y, centre of curvature at `M_2 + (−R_2, 0)`).
-    pub deck2: Deck,
-}
-
 /// The impact configuration of one candidate case at rotations `(θ1, θ2)` (spec §5.2–§5.4),
 /// joint-anchored placement, global frame of spec §4.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -471,225 +355,4 @@ pub enum ContactDetection {
     },
     /// The pose is degenerate (spec §5.4), no single first contact.
     Degenerate(Degeneracy),
-}
-
-impl SArrangement {
-    /// Validated arrangement (equal width and equal `ρ t`).
-    pub fn new(deck1: Deck, deck2: Deck) -> Result<Self, GeometryError> {
-        if deck1.width != deck2.width {
-            return Err(GeometryError::invalid(
-                "width",
-                deck2.width,
-                &format!(
-                    "both decks must share the width (deck 1 has {})",
-                    deck1.width
-                ),
-            ));
-        }
-        let rt1 = deck1.density * deck1.thickness;
-        let rt2 = deck2.density * deck2.thickness;
-        if (rt1 - rt2).abs() > 1e-12 * rt1.abs().max(rt2.abs()) {
-            return Err(GeometryError::invalid(
-                "thickness",
-                deck2.thickness,
-                &format!("both decks must share density*thickness (deck 1: {rt1}, deck 2: {rt2})"),
-            ));
-        }
-        Ok(Self { deck1, deck2 })
-    }
-
-    /// The common width `W`.
-    pub fn width(&self) -> Real {
-        self.deck1.width
-    }
-
-    /// The impact configuration of `case` at `(θ1, θ2)`, or the degeneracy when `θ1 = ±θ2`
-    /// (within [`DEGENERACY_TOLERANCE`]).
-    ///
-    /// Closed forms (spec §5.3), with `W/2 =: w`:
-    ///
-    /// | case | `h` | `σ_b` |
-    /// |---|---|---|
-    /// | deck1-inner | `−w sin(θ1−θ2)/cos θ2` | `+w cos θ1/cos θ2` |
-    /// | deck1-outer | `+w sin(θ1−θ2)/cos θ2` | `−w cos θ1/cos θ2` |
-    /// | deck2-inner | `+w sin(θ1−θ2)/cos θ1` | `+w cos θ2/cos θ1` |
-    /// | deck2-outer | `−w sin(θ1−θ2)/cos θ1` | `−w cos θ2/cos θ1` |
-    ///
-    /// `ν = (−sin θ_b, cos θ_b)`, `τ = (−cos θ_b, −sin θ_b)`; in the `end` mode `σ_b = ±w`.
-    /// Precondition: `|θ_j| < 90°` and finite (see [`validate_rotation`]); otherwise the numbers
-    /// are meaningless.
-    pub fn configuration(
-        &self,
-        case: ContactCase,
-        theta1: Real,
-        theta2: Real,
-        sigma_mode: SigmaMode,
-    ) -> Result<ImpactConfiguration, Degeneracy> {
-        let p1 = self.deck1.mass_properties();
-        let p2 = self.deck2.mass_properties();
-        configuration_with(self, &p1, &p2, case, theta1, theta2, sigma_mode)
-    }
-
-    /// The same as [`configuration`](Self::configuration) with precomputed mass properties
-    /// (saves two `sin` evaluations per call in tight loops).
-    pub fn configuration_with(
-        &self,
-        props1: &MassProperties,
-        props2: &MassProperties,
-        case: ContactCase,
-        theta1: Real,
-        theta2: Real,
-        sigma_mode: SigmaMode,
-    ) -> Result<ImpactConfiguration, Degeneracy> {
-        configuration_with(self, props1, props2, case, theta1, theta2, sigma_mode)
-    }
-
-    /// Contact detection at joint opening `g` (spec §5.5): decks placed with `M_1 = (0, g)`,
-    /// `M_2 = (0, 0)`; the first contact under closing along y is the first-contact candidate,
-    /// reached after `g − h_first`.
-    pub fn detect_contact(&self, theta1: Real, theta2: Real, opening: Real) -> ContactDetection {
-        if let Some(d) = degeneracy(theta1, theta2) {
-            return ContactDetection::Degenerate(d);
-        }
-        let case = ContactCase::ALL
-            .into_iter()
-            .find(|&c| is_first_contact(c, theta1, theta2))
-            .expect("off the diagonals exactly one candidate is the first contact");
-        let h = closing_h(self.width(), case, theta1, theta2);
-        if opening >= h {
-            ContactDetection::Contact {
-                case,
-                closing_distance: opening - h,
-            }
-        } else {
-            ContactDetection::Overlap {
-                case,
-                overlap: h - opening,
-            }
-        }
-    }
-}
-
-/// `h` of a case (spec §5.3 table).
-fn closing_h(width: Real, case: ContactCase, theta1: Real, theta2: Real) -> Real {
-    let w = 0.5 * width;
-    let (s1, c1) = theta1.sin_cos();
-    let (s2, c2) = theta2.sin_cos();
-    let s12 = s1 * c2 - c1 * s2;
-    match case {
-        ContactCase::Deck1Inner => -w * s12 / c2,
-        ContactCase::Deck1Outer => w * s12 / c2,
-        ContactCase::Deck2Inner => w * s12 / c1,
-        ContactCase::Deck2Outer => -w * s12 / c1,
-    }
-}
-
-#[inline]
-fn configuration_with(
-    arr: &SArrangement,
-    p1: &MassProperties,
-    p2: &MassProperties,
-    case: ContactCase,
-    theta1: Real,
-    theta2: Real,
-    sigma_mode: SigmaMode,
-) -> Result<ImpactConfiguration, Degeneracy> {
-    if let Some(d) = degeneracy(theta1, theta2) {
-        return Err(d);
-    }
-    let w = 0.5 * arr.width();
-    let (s1, c1) = theta1.sin_cos();
-    let (s2, c2) = theta2.sin_cos();
-    let s12 = s1 * c2 - c1 * s2; // sin(θ1 − θ2)
-    // h, exact σ_b, the corner in its own deck's reference frame relative to M_a.
-    let (h, sigma_exact, corner_x, end_sigma) = match case {
-        ContactCase::Deck1Inner => (-w * s12 / c2, w * c1 / c2, w, w),
-        ContactCase::Deck1Outer => (w * s12 / c2, -w * c1 / c2, -w, -w),
-        ContactCase::Deck2Inner => (w * s12 / c1, w * c2 / c1, -w, w),
-        ContactCase::Deck2Outer => (-w * s12 / c1, -w * c2 / c1, w, -w),
-    };
-    let sigma = match sigma_mode {
-        SigmaMode::Exact => sigma_exact,
-        SigmaMode::End => end_sigma,
-    };
-    let m1 = Vector::new(0.0, h);
-    // Centroids: G_1 = M_1 + Rot(θ1)(R1 − X1, Y1), G_2 = Rot(θ2)(−R2 + X2, −Y2).
-    let g1 = m1 + rot_sc(s1, c1, arr.deck1.radius - p1.x_m, p1.y_m);
-    let g2 = rot_sc(s2, c2, -arr.deck2.radius + p2.x_m, -p2.y_m);
-    let (point, normal, tangent, struck_point) = match case.striking() {
-        DeckId::One => {
-            // corner of deck 1, face of deck 2 (e_2 = (+1, 0))
-            let p = m1 + rot_sc(s1, c1, corner_x, 0.0);
-            let e = Vector::new(c2, s2);
-            (p, Vector::new(-s2, c2), Vector::new(-c2, -s2), e * sigma)
-        }
-        DeckId::Two => {
-            // corner of deck 2, face of deck 1 (e_1 = (−1, 0))
-            let p = rot_sc(s2, c2, corner_x, 0.0);
-            let e = Vector::new(-c1, -s1);
-            (
-                p,
-                Vector::new(-s1, c1),
-                Vector::new(-c1, -s1),
-                m1 + e * sigma,
-            )
-        }
-    };
-    let end_closes = h > 0.0;
-    Ok(ImpactConfiguration {
-        case,
-        theta1,
-        theta2,
-        h,
-        sigma,
-        end_closes,
-        first_contact: is_first_contact(case, theta1, theta2),
-        point,
-        normal,
-        tangent,
-        centroid1: g1,
-        centroid2: g2,
-        sigma_mode,
-        sigma_exact,
-        struck_point,
-        face_mid1: m1,
-    })
-}
-
-/// `Rot(θ)(x, y)` from precomputed `sin θ`, `cos θ`.
-#[inline]
-fn rot_sc(s: Real, c: Real, x: Real, y: Real) -> Vector {
-    Vector::new(c * x - s * y, s * x + c * y)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn deck_validation_names_parameters() {
-        let e = Deck::new(5.0, 1.0, 10.0, 1.0, 1.0).unwrap_err();
-        assert!(e.clone().for_deck(1).to_string().contains("R1"), "{e}");
-        let e = Deck::new(100.0, 7.0, 10.0, 1.0, 1.0).unwrap_err();
-        assert!(e.for_deck(2).to_string().contains("beta2"));
-        let e = Deck::new(100.0, 1.0, 10.0, f64::NAN, 1.0).unwrap_err();
-        assert!(e.to_string().contains("thickness"));
-        assert!(Deck::new(100.0, 1.0, 10.0, 1.0, -1.0).is_err());
-        assert!(Deck::new(100.0, 0.0, 10.0, 1.0, 1.0).is_err());
-    }
-
-    #[test]
-    fn degeneracies() {
-        let d = Deck::new(100.0, 1.0, 10.0, 1.0, 1.0).unwrap();
-        let s = SArrangement::new(d, d).unwrap();
-        assert_eq!(
-            s.configuration(ContactCase::Deck1Inner, 0.1, 0.1, SigmaMode::Exact),
-            Err(Degeneracy::ParallelFaces)
-        );
-        assert_eq!(
-            s.configuration(ContactCase::Deck1Inner, 0.1, -0.1, SigmaMode::Exact),
-            Err(Degeneracy::CornerCorner)
-        );
-        assert_eq!(degeneracy(0.0, 0.0), Some(Degeneracy::ParallelFaces));
-    }
 }

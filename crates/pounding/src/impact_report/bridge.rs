@@ -4,13 +4,14 @@ use super::common::{
     DelassusReport, IntervalReport, ReportError, SingleImpactReport, invalid, readable, xy,
 };
 use crate::analytic::{self, ImpactLaw};
-use crate::contact;
 use crate::geometry::{
-    ContactCase, ContactDetection, Deck, MassProperties, SArrangement, SigmaMode, validate_rotation,
+    ContactCase, ContactDetection, MassProperties, SigmaMode, validate_rotation,
 };
 use crate::impact::{self, ContactMode};
 use crate::lcp::LemkeSettings;
 use crate::output::float_token;
+use crate::pair::SArrangement;
+use crate::shape::Deck;
 use serde::Serialize;
 
 /// Input of the bridge form. Angles in degrees, lengths in m, density in kg/m³.
@@ -101,9 +102,9 @@ impl CurvedDeckReport {
             angle_deg,
             area: p.area,
             mass: p.mass,
-            centroid_radius: p.centroid_radius,
-            x_m: p.x_m,
-            y_m: p.y_m,
+            centroid_radius: d.sector_centroid().centroid_radius,
+            x_m: d.sector_centroid().x_m,
+            y_m: d.sector_centroid().y_m,
             inertia: p.inertia,
             radius_of_gyration: p.radius_of_gyration(),
         }
@@ -261,7 +262,7 @@ pub fn bridge_report(a: &BridgeInput) -> Result<BridgeReport, ReportError> {
     match s.configuration(a.case, t1r, t2r, a.sigma_mode) {
         Err(d) => rep.degenerate = Some(d.name()),
         Ok(c) => {
-            let g = contact::delassus(&s, &c);
+            let g = s.delassus(&c);
             let bounds = analytic::stick_interval(&g, &law);
             rep.first_contact = c.first_contact;
             rep.end_closes = c.end_closes;

@@ -6,10 +6,11 @@ use super::common::{
     SingleImpactReport, corner_contacts, invalid, readable, xy,
 };
 use crate::analytic::{self, ImpactLaw};
-use crate::geometry::{Deck, GeometryError};
+use crate::geometry::GeometryError;
 use crate::impact::{self, ContactMode, ImpactSettings};
 use crate::lcp::LemkeSettings;
 use crate::math::Vector;
+use crate::shape::Deck;
 use crate::shape::{
     Abutment, DeckEnd, DeckShape, SkewedDeck, StraightDeck, abutment_contact, abutment_delassus,
     abutment_problem, frictionless_pivot,

@@ -65,15 +65,16 @@ mod driver;
 pub mod model;
 pub mod options;
 pub mod output;
-pub mod scenario;
 mod rigid;
+pub mod scenario;
 
 use crate::analytic::SlipMode;
-use crate::geometry::{ContactCase, GeometryError, SArrangement};
+use crate::geometry::{ContactCase, GeometryError};
 use crate::ground_motion::{GroundMotion, GroundMotionError};
 use crate::lcp::LemkeSettings;
 use crate::math::{Real, Vector};
-use crate::shape::{DeckShape, SkewedDeck, StraightDeck};
+use crate::pair::SArrangement;
+use crate::shape::DeckShape;
 use model::{DeckBody, LinearSystem};
 use nalgebra::{Matrix3, Matrix6};
 use thiserror::Error;
@@ -324,7 +325,7 @@ impl SimModel {
     /// ρ = 2500 kg/m³ (1309 t per deck) for both decks; 4 corner bearings of 2.02e7 N/m (deck 1)
     /// and 8.97e6 N/m (deck 2); ζ = 5 %; g = 0.05 m; seat 0.4 m; μ = 0.5; ε_N = 0.5.
     pub fn default_bridge() -> Self {
-        let deck = crate::geometry::Deck {
+        let deck = crate::shape::Deck {
             radius: 100.0,
             angle: 60f64.to_radians(),
             width: 10.0,
@@ -508,32 +509,9 @@ impl SimModel {
 /// Re-validates one deck shape through its constructor; parameter names get the deck number
 /// (`L1`, `skew2`, `R1`, …; `width`, `thickness`, `density` keep their name).
 fn validate_shape(shape: &DeckShape, j: usize) -> Result<(), SimError> {
-    let rename = |e: GeometryError| {
-        let GeometryError::InvalidParameter {
-            name,
-            value,
-            reason,
-        } = e;
-        let name = match name.as_str() {
-            "length" => format!("L{j}"),
-            "skew" => format!("skew{j}"),
-            _ => name,
-        };
-        SimError::Geometry(GeometryError::InvalidParameter {
-            name,
-            value,
-            reason,
-        })
-    };
-    match shape {
-        DeckShape::Curved(d) => model::validate_deck(d, j),
-        DeckShape::Straight(d) => StraightDeck::new(d.length, d.width, d.thickness, d.density)
-            .map(|_| ())
-            .map_err(rename),
-        DeckShape::Skewed(d) => SkewedDeck::new(d.length, d.width, d.skew, d.thickness, d.density)
-            .map(|_| ())
-            .map_err(rename),
-    }
+    shape
+        .validate()
+        .map_err(|e| SimError::Geometry(e.for_deck(j)))
 }
 
 /// Everything a run needs besides the settings: model, ground motion, initial state.

@@ -2,9 +2,9 @@
 //! mass / stiffness / Rayleigh-damping matrices.
 
 use super::SimError;
-use crate::geometry::Deck;
+use crate::geometry::MassProperties;
 use crate::math::{Real, Vector};
-use crate::shape::{DeckEnd, DeckShape, PlanarMassProperties};
+use crate::shape::{Deck, DeckEnd, DeckShape};
 use nalgebra::{Matrix3, Matrix6};
 
 /// One discrete elastic bearing: a linear spring of equal stiffness `k` in x and y, attached to a
@@ -39,7 +39,7 @@ pub(crate) fn validate_deck(deck: &Deck, j: usize) -> Result<(), SimError> {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DeckBody {
     /// Mass properties (`centroid` in the deck's body frame, see [`crate::shape`]).
-    pub mass: PlanarMassProperties,
+    pub mass: MassProperties,
     /// Reference centroid `G⁰` (global).
     pub centroid: Vector,
     /// Reference face midpoint `M⁰` (global): `(0, g)` for deck 1, `(0, 0)` for deck 2.
@@ -78,13 +78,8 @@ impl DeckBody {
         let ri = r - w / 2.0;
         let ro = r + w / 2.0;
         DeckBody {
-            mass: PlanarMassProperties {
-                area: mp.area,
-                mass: mp.mass,
-                centroid: Vector::new(r - mp.x_m, mp.y_m),
-                inertia: mp.inertia,
-            },
-            centroid: face_mid + Vector::new(s * (r - mp.x_m), s * mp.y_m),
+            mass: mp,
+            centroid: face_mid + mp.centroid * s,
             face_mid,
             joint_corners: [face_mid + pt(ri, 0.0), face_mid + pt(ro, 0.0)],
             far_corners: [face_mid + pt(ri, b), face_mid + pt(ro, b)],
@@ -156,7 +151,7 @@ pub fn bearing_stiffness(body: &DeckBody, bearings: &[Bearing]) -> Matrix3<Real>
 
 /// Natural circular frequencies `ω_1 ≤ ω_2 ≤ ω_3` \[rad/s\] of `K φ = ω² M φ` for one deck
 /// (`M = diag(m, m, I)`). All three are NaN when `M^{-1/2} K M^{-1/2}` overflows.
-pub fn deck_frequencies(mass: &PlanarMassProperties, k: &Matrix3<Real>) -> [Real; 3] {
+pub fn deck_frequencies(mass: &MassProperties, k: &Matrix3<Real>) -> [Real; 3] {
     let d = nalgebra::Vector3::new(
         mass.mass.sqrt().recip(),
         mass.mass.sqrt().recip(),

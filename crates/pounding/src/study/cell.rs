@@ -6,21 +6,31 @@
 //! both sides of and inside `[L, U]` ([`lcp_agrees`]).
 
 use crate::analytic::{self, ImpactLaw, SlipMode};
-use crate::contact::{self, Delassus};
-use crate::geometry::{ContactCase, Degeneracy, SArrangement, SigmaMode};
+use crate::contact::Delassus;
+use crate::geometry::{ContactCase, Degeneracy, SigmaMode};
 use crate::law_check;
 use crate::lcp::{self, LcpStatus, LemkeSettings};
 use crate::math::Real;
-use crate::pair::DeckPair;
+use crate::pair::{DeckPair, SArrangement};
 
-/// The deck geometry of a study configuration.
+/// The deck geometry of a study configuration. Both kinds are computed by the one pair path
+/// ([`DeckPair::configuration`], [`DeckPair::delassus`]); the curved S arrangement is its preset.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Geometry {
-    /// Two curved decks in the S arrangement (computed by [`SArrangement::configuration`] and
-    /// [`contact::delassus`], exactly as before shapes were added).
+    /// Two curved decks in the S arrangement (the study's `shape = "curved"`).
     Curved(SArrangement),
-    /// Two decks of any shape ([`DeckPair::configuration`], [`DeckPair::delassus`]).
+    /// Two decks of any shape.
     Pair(DeckPair),
+}
+
+impl Geometry {
+    /// The general pair of decks (for [`Geometry::Curved`], [`SArrangement::pair`]).
+    pub fn pair(&self) -> DeckPair {
+        match self {
+            Self::Curved(arrangement) => arrangement.pair(),
+            Self::Pair(pair) => *pair,
+        }
+    }
 }
 
 /// The computed values of one cell. For a degenerate cell (`degeneracy` is `Some`) both flags are
@@ -125,17 +135,10 @@ pub fn compute_cell_in(
         return Cell::degenerate(d);
     }
     let (t1, t2) = (theta1_deg.to_radians(), theta2_deg.to_radians());
-    let (config, g) = match geometry {
-        Geometry::Curved(arrangement) => {
-            match arrangement.configuration(case, t1, t2, sigma_mode) {
-                Ok(c) => (c, contact::delassus(arrangement, &c)),
-                Err(d) => return Cell::degenerate(d),
-            }
-        }
-        Geometry::Pair(pair) => match pair.configuration(case, t1, t2, sigma_mode) {
-            Ok(c) => (c, pair.delassus(&c)),
-            Err(d) => return Cell::degenerate(d),
-        },
+    let pair = geometry.pair();
+    let (config, g) = match pair.configuration(case, t1, t2, sigma_mode) {
+        Ok(c) => (c, pair.delassus(&c)),
+        Err(d) => return Cell::degenerate(d),
     };
     let interval = analytic::stick_interval(&g, law);
     Cell {

@@ -11,10 +11,10 @@ use super::cell::{Cell, compute_cell_in};
 use super::scenario::Scenario;
 use super::scenario::StudyShape;
 use crate::analytic::ImpactLaw;
-use crate::geometry::{ContactCase, Deck, GeometryError, SArrangement};
+use crate::geometry::{ContactCase, GeometryError};
 use crate::math::Real;
-use crate::pair::DeckPair;
-use crate::shape::{DeckShape, SkewedDeck, StraightDeck};
+use crate::pair::{DeckPair, SArrangement};
+use crate::shape::{Deck, DeckShape, SkewedDeck, StraightDeck};
 use rayon::prelude::*;
 
 pub use crate::shard::Shard;

@@ -6,8 +6,9 @@ use pounding::analytic::{
     ImpactLaw, LawError, SlipMode, energy_change, energy_gain_predicted, is_painleve,
     single_impact, stick_gain_possible, stick_interval,
 };
-use pounding::contact::{Delassus, delassus, force_directions};
-use pounding::geometry::{ContactCase, SArrangement, SigmaMode};
+use pounding::contact::{Delassus, force_directions};
+use pounding::geometry::{ContactCase, SigmaMode};
+use pounding::pair::SArrangement;
 
 fn random_g(rng: &mut Rng) -> Delassus {
     // a random SPD 2×2 matrix, G_NT of either sign
@@ -186,8 +187,8 @@ fn energy_example_of_spec_section_11() {
             SigmaMode::Exact,
         )
         .unwrap();
-    let g = delassus(&s, &c);
-    let w = force_directions(&s, &c);
+    let g = s.delassus(&c);
+    let w = force_directions(&c);
     let p = s.deck1.mass_properties();
     let minv = [
         1.0 / p.mass,
@@ -272,7 +273,7 @@ fn no_energy_gain_on_the_paper_set() {
                             let Ok(c) = s.configuration(case, t1, t2, SigmaMode::Exact) else {
                                 continue;
                             };
-                            let g = delassus(&s, &c);
+                            let g = s.delassus(&c);
                             max_ratio = max_ratio.max(g.nt * g.nt / (g.nn * g.tt));
                             for mu in [0.5, 1.0] {
                                 let law = ImpactLaw::new(mu, 0.5).unwrap();
@@ -329,7 +330,7 @@ fn paper_grid_statements_of_the_spec() {
                             let Ok(c) = s.configuration(case, t1, t2, SigmaMode::Exact) else {
                                 continue;
                             };
-                            let g = delassus(&s, &c);
+                            let g = s.delassus(&c);
                             maxc = maxc.max(g.nt * g.nt / (g.nn * g.tt));
                             minq = minq.min(g.nn / g.nt.abs());
                             for (k, mu) in [0.25, 0.5, 1.0].into_iter().enumerate() {

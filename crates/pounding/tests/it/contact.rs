@@ -2,9 +2,11 @@
 
 use crate::geometry::{Rng, deck, sector_polygon, spec_section};
 use pounding::analytic::{ImpactLaw, stick_interval};
-use pounding::contact::{delassus, force_directions};
-use pounding::geometry::{ContactCase, Deck, SArrangement, SigmaMode};
+use pounding::contact::force_directions;
+use pounding::geometry::{ContactCase, SigmaMode};
 use pounding::math::Vector;
+use pounding::pair::SArrangement;
+use pounding::shape::Deck;
 
 /// Spec §15, copied: R1 R2 β1 β2 θ1 θ2 case first σ_b G_NN G_NT G_TT L(.5) U(.5) L(1) U(1).
 const TABLE15: &str = "\
@@ -59,7 +61,7 @@ fn check_table15(table: &str) -> usize {
         let what = format!("row {line}");
         assert_eq!(cfg.first_contact, c[7].starts_with("yes"), "{what}");
         close(cfg.sigma, &c[8], &format!("{what} sigma"));
-        let g = delassus(&s, &cfg);
+        let g = s.delassus(&cfg);
         close(g.nn, &c[9], &format!("{what} G_NN"));
         close(g.nt, &c[10], &format!("{what} G_NT"));
         close(g.tt, &c[11], &format!("{what} G_TT"));
@@ -144,7 +146,7 @@ fn force_directions_match_finite_differences_of_polygon_geometry() {
         let t2 = rng.uniform(-20.0, 20.0).to_radians();
         for case in ContactCase::ALL {
             let cfg = s.configuration(case, t1, t2, SigmaMode::Exact).unwrap();
-            let w = force_directions(&s, &cfg);
+            let w = force_directions(&cfg);
             let m1 = Vector::new(0.0, cfg.h);
             let m2 = Vector::new(0.0, 0.0);
             let a_is_1 = matches!(case, ContactCase::Deck1Inner | ContactCase::Deck1Outer);
@@ -239,12 +241,13 @@ fn force_directions_match_spec_closed_forms() {
         let d2 = deck(rng.uniform(20.0, 400.0), rng.uniform(5.0, 300.0));
         let s = SArrangement::new(d1, d2).unwrap();
         let (q1, q2) = (d1.mass_properties(), d2.mass_properties());
+        let (c1, c2) = (d1.sector_centroid(), d2.sector_centroid());
         let t1 = rng.uniform(-10.0, 10.0).to_radians();
         let t2 = rng.uniform(-10.0, 10.0).to_radians();
         for mode in [SigmaMode::Exact, SigmaMode::End] {
             for case in ContactCase::ALL {
                 let cfg = s.configuration(case, t1, t2, mode).unwrap();
-                let w = force_directions(&s, &cfg);
+                let w = force_directions(&cfg);
                 let a_is_1 = matches!(case, ContactCase::Deck1Inner | ContactCase::Deck1Outer);
                 let inner = matches!(case, ContactCase::Deck1Inner | ContactCase::Deck2Inner);
                 let (ra, delta) = if a_is_1 {
@@ -254,16 +257,16 @@ fn force_directions_match_spec_closed_forms() {
                 };
                 let rho = if inner { ra - 5.0 } else { ra + 5.0 };
                 let u = if a_is_1 {
-                    Vector::new(q1.x_m - rho, -q1.y_m)
+                    Vector::new(c1.x_m - rho, -c1.y_m)
                 } else {
-                    Vector::new(rho - q2.x_m, q2.y_m)
+                    Vector::new(rho - c2.x_m, c2.y_m)
                 };
                 let aa = u.x * delta.cos() + u.y * delta.sin();
                 let ba = -u.x * delta.sin() + u.y * delta.cos();
                 let (ab, bb) = if a_is_1 {
-                    (d2.radius - q2.x_m + cfg.sigma, q2.y_m)
+                    (d2.radius - c2.x_m + cfg.sigma, c2.y_m)
                 } else {
-                    (-(d1.radius - q1.x_m + cfg.sigma), -q1.y_m)
+                    (-(d1.radius - c1.x_m + cfg.sigma), -c1.y_m)
                 };
                 let (a1, b1, a2, b2) = if a_is_1 {
                     (aa, ba, ab, bb)
@@ -275,7 +278,7 @@ fn force_directions_match_spec_closed_forms() {
                 assert!((w.w_t[2] - b1).abs() < tol(b1), "{case:?} {mode:?} B1");
                 assert!((w.w_n[5] + a2).abs() < tol(a2), "{case:?} {mode:?} A2");
                 assert!((w.w_t[5] + b2).abs() < tol(b2), "{case:?} {mode:?} B2");
-                let g = delassus(&s, &cfg);
+                let g = s.delassus(&cfg);
                 assert!(g.det() > 0.0);
                 let inv_m = 1.0 / q1.mass + 1.0 / q2.mass;
                 let nn = inv_m + a1 * a1 / q1.inertia + a2 * a2 / q2.inertia;
@@ -307,7 +310,7 @@ fn point_symmetry_identity() {
             ] {
                 let c = s.configuration(k1, t1, t2, mode).unwrap();
                 let d = m.configuration(k2, t2, t1, mode).unwrap();
-                let (g, h) = (delassus(&s, &c), delassus(&m, &d));
+                let (g, h) = (s.delassus(&c), m.delassus(&d));
                 for (x, y) in [(g.nn, h.nn), (g.nt, h.nt), (g.tt, h.tt)] {
                     let e = (x - y).abs() / g.nn;
                     worst = worst.max(e);
@@ -328,13 +331,11 @@ fn delassus_scales_with_inverse_rho_t() {
     let d = |r: f64, b: f64| Deck::new(r, b.to_radians(), 10.0, 0.5, 2500.0).unwrap();
     let b = SArrangement::new(d(100.0, 60.0), d(200.0, 90.0)).unwrap();
     let (t1, t2) = (-4f64.to_radians(), 1f64.to_radians());
-    let ga = delassus(
-        &a,
+    let ga = a.delassus(
         &a.configuration(ContactCase::Deck1Inner, t1, t2, SigmaMode::Exact)
             .unwrap(),
     );
-    let gb = delassus(
-        &b,
+    let gb = b.delassus(
         &b.configuration(ContactCase::Deck1Inner, t1, t2, SigmaMode::Exact)
             .unwrap(),
     );
@@ -375,7 +376,7 @@ fn paper_grid_ratio_ranges() {
                             let Ok(c) = s.configuration(case, t1, t2, SigmaMode::Exact) else {
                                 continue;
                             };
-                            let g = delassus(&s, &c);
+                            let g = s.delassus(&c);
                             let (k, v) = (g.kappa(), g.varrho());
                             kmin = kmin.min(k);
                             kmax = kmax.max(k);

@@ -1,7 +1,8 @@
 //! Hardening: derived mass properties that overflow or underflow, absurd AT2 NPTS.
 
-use pounding::geometry::{Deck, GeometryError};
+use pounding::geometry::GeometryError;
 use pounding::ground_motion::Record;
+use pounding::shape::Deck;
 use pounding::shape::{SkewedDeck, StraightDeck};
 
 fn name_of(e: GeometryError) -> String {

@@ -5,14 +5,15 @@ use crate::geometry::{Rng, deck};
 use pounding::analytic::{
     ImpactLaw, SlipMode, energy_change, energy_gain_predicted, single_impact, stick_interval,
 };
-use pounding::contact::{Delassus, delassus, force_directions};
-use pounding::geometry::{ContactCase, SArrangement, SigmaMode};
+use pounding::contact::{Delassus, force_directions};
+use pounding::geometry::{ContactCase, SigmaMode};
 use pounding::impact::{
     ContactMode, ContactSpec, EnumeratePolicy, ImpactProblem, ImpactSettings, ImpactStatus,
     RigidBody, impact_lcp, solve, solve_single,
 };
 use pounding::lcp::{LcpProblem, LemkeSettings, enumerate};
 use pounding::math::Vector;
+use pounding::pair::SArrangement;
 
 fn body(name: &str, m: f64, i: f64, x: Vector, v: Vector, w: f64) -> RigidBody {
     RigidBody {
@@ -147,8 +148,8 @@ fn bridge_impact_equals_generic_formulation() {
         let t2 = rng.uniform(-10.0, 10.0).to_radians();
         let case = ContactCase::ALL[(rng.next_u64() % 4) as usize];
         let c = s.configuration(case, t1, t2, SigmaMode::Exact).unwrap();
-        let g = delassus(&s, &c);
-        let w = force_directions(&s, &c);
+        let g = s.delassus(&c);
+        let w = force_directions(&c);
         let (p1, p2) = (s.deck1.mass_properties(), s.deck2.mass_properties());
         let u: Vec<f64> = (0..6).map(|_| rng.uniform(-1.0, 1.0) * 0.3).collect();
         let u6: [f64; 6] = u.clone().try_into().unwrap();
@@ -222,10 +223,7 @@ fn lcp_energy_rises_only_under_spec_conditions() {
         let t1 = rng.uniform(-10.0, 10.0).to_radians();
         let t2 = rng.uniform(-10.0, 10.0).to_radians();
         let case = ContactCase::ALL[(rng.next_u64() % 4) as usize];
-        let g = delassus(
-            &s,
-            &s.configuration(case, t1, t2, SigmaMode::Exact).unwrap(),
-        );
+        let g = s.delassus(&s.configuration(case, t1, t2, SigmaMode::Exact).unwrap());
         let law = ImpactLaw::new(rng.uniform(0.0, 1.5), rng.uniform(0.0, 1.0)).unwrap();
         let r = rng.uniform(-12.0, 12.0);
         let sol = solve_single(&g, &law, -1.0, -r, &LemkeSettings::default());
@@ -254,7 +252,7 @@ fn lcp_energy_rises_only_under_spec_conditions() {
                             let Ok(c) = s.configuration(case, t1, t2, SigmaMode::Exact) else {
                                 continue;
                             };
-                            let g = delassus(&s, &c);
+                            let g = s.delassus(&c);
                             for mu in [0.5, 1.0] {
                                 let law = ImpactLaw::new(mu, 0.5).unwrap();
                                 for k in -12..=12 {
@@ -441,8 +439,8 @@ fn double_contact_parallel_faces() {
         // pose: M_1 = M_2 = (0, 0) (h = 0 for parallel faces), both decks rotated by θ about M_j
         let rot =
             |x: f64, y: f64| Vector::new(th.cos() * x - th.sin() * y, th.sin() * x + th.cos() * y);
-        let g1 = rot(s.deck1.radius - p1.x_m, p1.y_m);
-        let g2 = rot(-s.deck2.radius + p2.x_m, -p2.y_m);
+        let g1 = rot(p1.centroid.x, p1.centroid.y); // (R1 − X1, Y1)
+        let g2 = rot(-p2.centroid.x, -p2.centroid.y); // (−R2 + X2, −Y2)
         let nu = rot(0.0, 1.0);
         let corners = [rot(5.0, 0.0), rot(-5.0, 0.0)];
         // approaching: deck 1 moves toward deck 2 along −ν, plus random perturbation
@@ -729,7 +727,7 @@ fn lcp_modes_around_the_bounds() {
             SigmaMode::Exact,
         )
         .unwrap();
-    let g = delassus(&s, &c);
+    let g = s.delassus(&c);
     for mu in [0.25, 0.5, 1.0] {
         let law = ImpactLaw::new(mu, 0.5).unwrap();
         let b = stick_interval(&g, &law);
@@ -812,7 +810,7 @@ fn lcp_agrees_with_analytic_on_the_study_grid() {
                                 let Ok(c) = s.configuration(case, t1, t2, mode) else {
                                     continue;
                                 };
-                                let g = delassus(&s, &c);
+                                let g = s.delassus(&c);
                                 for mu in [0.0, 0.25, 0.5, 1.0] {
                                     let law = ImpactLaw::new(mu, 0.5).unwrap();
                                     let b = stick_interval(&g, &law);

@@ -8,6 +8,7 @@ mod contact_law;
 mod event_exact;
 mod fuzz;
 mod geometry;
+mod geometry_path;
 mod ground_motion;
 mod harden;
 mod harden_input;

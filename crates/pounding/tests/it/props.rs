@@ -7,8 +7,9 @@
 
 use crate::fuzz::oracle::{check_sim, check_study};
 use pounding::contact_law::{ContactLaw, Hertz, KelvinVoigt};
-use pounding::geometry::{Deck, SArrangement};
 use pounding::ground_motion::{GroundMotion, Record};
+use pounding::pair::SArrangement;
+use pounding::shape::Deck;
 use pounding::shape::{DeckShape, SkewedDeck, StraightDeck};
 use pounding::sim::{
     ComplianceContact, DampingModel, JointContact, SimAbutment, SimModel, SimProblem, SimSettings,

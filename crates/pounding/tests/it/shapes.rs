@@ -6,9 +6,10 @@
 //! solution of spec §9, and the hand derivation of the frictionless double impact.
 
 use pounding::analytic::{self, ImpactLaw, SlipMode};
-use pounding::geometry::{Deck, GeometryError};
+use pounding::geometry::GeometryError;
 use pounding::impact::{self, ContactMode, ImpactProblem, ImpactSettings, ImpactStatus, RigidBody};
 use pounding::math::{Vector, cross, rotate};
+use pounding::shape::Deck;
 use pounding::shape::{
     Abutment, DeckEnd, DeckShape, SkewedDeck, StraightDeck, abutment_contact, abutment_delassus,
     abutment_problem, frictionless_pivot,
@@ -797,4 +798,68 @@ fn curved_shape_matches_the_simulator_bodies() {
         assert!((turn(-jf.outward_normal) - body.joint_inward).norm() < 1e-12);
         assert!((turn(-ff.outward_normal) - body.far_inward).norm() < 1e-12);
     }
+}
+
+/// The [`Shape`](pounding::shape::Shape) trait behind `DeckShape`: the enum returns exactly what
+/// each concrete shape returns (mass properties, both end faces, axes, corner angles and names),
+/// `scale_density` scales mass and inertia only, `validate` re-runs the constructor checks with
+/// per-deck names from `for_deck`, and `with_length` keeps the kind of deck.
+#[test]
+fn deck_shape_dispatches_to_each_shape() {
+    use pounding::shape::Shape;
+    let curved = Deck::new(100.0, 1.0, 10.0, 0.5, 2500.0).unwrap();
+    let straight = StraightDeck::new(30.0, 10.0, 0.5, 2500.0).unwrap();
+    let skewed = SkewedDeck::new(30.0, 10.0, 0.4, 0.5, 2500.0).unwrap();
+    let concrete: [&dyn Shape; 3] = [&curved, &straight, &skewed];
+    let shapes = [
+        DeckShape::Curved(curved),
+        DeckShape::Straight(straight),
+        DeckShape::Skewed(skewed),
+    ];
+    let names = [
+        ("curved", [["inner", "outer"], ["outer", "inner"]]),
+        ("straight", [["c0", "c1"], ["c0", "c1"]]),
+        ("skew", [["acute", "obtuse"], ["acute", "obtuse"]]),
+    ];
+    for ((s, c), (name, corner_names)) in shapes.iter().zip(concrete).zip(names) {
+        assert_eq!(s.name(), name);
+        assert_eq!(s.mass_properties(), c.mass_properties());
+        assert_eq!(s.width(), 10.0);
+        assert_eq!(s.length(), c.length());
+        for (e, end) in [DeckEnd::Joint, DeckEnd::Far].into_iter().enumerate() {
+            assert_eq!(s.end_face(end), c.end_face(end));
+            assert_eq!(s.axis_direction(end), c.axis_direction(end));
+            assert_eq!(s.corner_names(end), corner_names[e]);
+            let sum = s.corner_angle(end, 0) + s.corner_angle(end, 1);
+            assert!((sum - PI).abs() < 1e-15, "{name}: corner angles sum to π");
+        }
+        let mut heavy = *s;
+        heavy.scale_density(2.0);
+        let (p, q) = (s.mass_properties(), heavy.mass_properties());
+        assert_eq!(q.mass, 2.0 * p.mass);
+        assert_eq!(q.inertia, 2.0 * p.inertia);
+        assert_eq!(q.centroid, p.centroid);
+        assert!(heavy.validate().is_ok());
+        heavy.scale_density(-1.0);
+        let e = heavy.validate().unwrap_err();
+        assert!(e.for_deck(2).to_string().contains("density"), "{name}");
+    }
+    assert_eq!(shapes[1].skew(), 0.0);
+    assert_eq!(shapes[2].skew(), 0.4);
+    assert_eq!(shapes[0].length(), None);
+    let longer = shapes[2].with_length(50.0).unwrap();
+    assert_eq!(
+        longer.skewed().map(|d| (d.length, d.skew)),
+        Some((50.0, 0.4))
+    );
+    assert!(shapes[0].with_length(50.0).is_err());
+    let e = shapes[1].with_length(-1.0).unwrap_err().for_deck(2);
+    assert!(e.to_string().contains("L2"), "{e}");
+    let bad_skew = DeckShape::Skewed(SkewedDeck {
+        skew: 2.0,
+        ..skewed
+    });
+    let e = bad_skew.validate().unwrap_err().for_deck(1);
+    assert!(e.to_string().contains("skew1"), "{e}");
+    assert!(shapes[0].curved().is_some() && shapes[1].curved().is_none());
 }

@@ -3,8 +3,9 @@
 #![allow(clippy::needless_range_loop)]
 
 use nalgebra::{SMatrix, SVector};
-use pounding::geometry::{Deck, SArrangement};
 use pounding::ground_motion::{GroundMotion, Record, el_centro_1940};
+use pounding::pair::SArrangement;
+use pounding::shape::Deck;
 use pounding::sim::{SimError, SimModel, SimProblem, SimSettings, SimStatus, simulate};
 
 type M10 = SMatrix<f64, 10, 10>;
@@ -318,8 +319,8 @@ fn free_model(r1: f64, b1: f64, r2: f64, b2: f64, gap: f64, mu: f64, eps: f64) -
 fn joint_anchored_q(arr: &SArrangement, th1: f64, th2: f64) -> [f64; 6] {
     let p1 = arr.deck1.mass_properties();
     let p2 = arr.deck2.mass_properties();
-    let g1 = nalgebra::Vector2::new(arr.deck1.radius - p1.x_m, p1.y_m); // G⁰ − M⁰ (spec §4)
-    let g2 = nalgebra::Vector2::new(-arr.deck2.radius + p2.x_m, -p2.y_m);
+    let g1 = p1.centroid; // G⁰ − M⁰ = (R1 − X1, Y1) (spec §4)
+    let g2 = -p2.centroid; // (−R2 + X2, −Y2)
     let d1 = pounding::math::rotate(&g1, th1) - g1;
     let d2 = pounding::math::rotate(&g2, th2) - g2;
     [d1.x, d1.y, th1, d2.x, d2.y, th2]
@@ -353,7 +354,7 @@ fn isolated_impact(vx: f64, dt: f64) -> (f64, String, String, f64) {
     let mut q0 = joint_anchored_q(&arr, th1, th2);
     q0[0] -= vx * t_star;
     let u0 = [v.x, v.y, 0.0, 0.0, 0.0, 0.0];
-    let w = force_directions(&arr, &cfg);
+    let w = force_directions(&cfg);
     let (p1, p2) = (arr.deck1.mass_properties(), arr.deck2.mass_properties());
     let g = delassus_with(&p1, &p2, &w);
     // spec §15, first row (R = 100, β = 60°, θ = (−5°, 2°), deck1-inner, ρt = 1)
@@ -504,7 +505,7 @@ fn parallel_faces_double_impact_obeys_newton_at_both_ends() {
             name: "deck1".into(),
             mass: p1.mass,
             inertia: p1.inertia,
-            position: v2(arr.deck1.radius - p1.x_m, p1.y_m),
+            position: p1.centroid,
             velocity: v2(0.0, -v),
             omega: 0.0,
         },
@@ -512,7 +513,7 @@ fn parallel_faces_double_impact_obeys_newton_at_both_ends() {
             name: "deck2".into(),
             mass: p2.mass,
             inertia: p2.inertia,
-            position: v2(-arr.deck2.radius + p2.x_m, -p2.y_m),
+            position: -p2.centroid,
             velocity: v2(0.0, 0.0),
             omega: 0.0,
         },

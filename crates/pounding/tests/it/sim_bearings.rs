@@ -4,7 +4,8 @@
 //! eigen-analysis.
 
 use nalgebra::{Matrix3, Vector2, Vector3};
-use pounding::geometry::{Deck, SArrangement};
+use pounding::pair::SArrangement;
+use pounding::shape::Deck;
 use pounding::sim::{Bearing, SimModel};
 use proptest::prelude::*;
 use std::f64::consts::PI;

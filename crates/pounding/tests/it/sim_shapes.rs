@@ -4,10 +4,10 @@
 //! unchanged by the generic body construction, and bad shape / abutment input is rejected by name.
 
 use pounding::analytic::ImpactLaw;
-use pounding::geometry::Deck;
 use pounding::ground_motion::GroundMotion;
 use pounding::impact::{self, ImpactSettings, ImpactStatus};
 use pounding::math::Vector;
+use pounding::shape::Deck;
 use pounding::shape::{DeckEnd, DeckShape, SkewedDeck, StraightDeck, abutment_problem};
 use pounding::sim::{
     SimAbutment, SimContact, SimError, SimModel, SimProblem, SimSettings, SimStatus, simulate,

@@ -4,10 +4,11 @@
 
 use nalgebra::{Matrix6, Vector6};
 use pounding::analytic::{ImpactLaw, stick_interval};
-use pounding::contact::delassus;
-use pounding::geometry::{ContactCase, Deck, SArrangement, SigmaMode};
+use pounding::geometry::{ContactCase, SigmaMode};
 use pounding::math::Vector;
+use pounding::pair::SArrangement;
 use pounding::pair::{DeckPair, pair_degeneracy, pair_first_contact};
+use pounding::shape::Deck;
 use pounding::shape::{DeckShape, SkewedDeck, StraightDeck};
 use pounding::study::csv::{BOUNDS_HEADER, SHAPE_COLUMNS};
 use pounding::study::run::compute_rows;
@@ -62,7 +63,7 @@ fn curved_pair_matches_s_arrangement() {
                             worst = worst.max(e);
                             assert!(e <= 1e-14, "{u:?} vs {v:?}");
                         }
-                        let (ga, gb) = (delassus(&s, &a), p.delassus(&b));
+                        let (ga, gb) = (s.delassus(&a), p.delassus(&b));
                         for (x, y) in [(ga.nn, gb.nn), (ga.nt, gb.nt), (ga.tt, gb.tt)] {
                             let e = rel(x, y, ga.nn);
                             worst = worst.max(e);

@@ -5,12 +5,14 @@ use super::contact::{apply_shape_and_damping, build_contact};
 use super::error::{ParamKey, ScenarioError, Section};
 use super::sections::{DecksSec, Raw};
 use super::{Scenario, SimSetup, Src};
-use crate::geometry::{Deck, GeometryError, SArrangement};
+use crate::geometry::GeometryError;
 use crate::ground_motion::{
     AccelUnits, EL_CENTRO_180_AT2, EL_CENTRO_270_AT2, GroundMotion, GroundMotionError, Record,
 };
 use crate::math::Vector;
 use crate::output::float_token;
+use crate::pair::SArrangement;
+use crate::shape::Deck;
 use crate::shape::{DeckShape, SkewedDeck, StraightDeck};
 use crate::sim::{Bearing, SimAbutment, SimError, SimModel, SimProblem, SimSettings};
 

@@ -11,7 +11,6 @@ use crate::contact_law::{
     BilinearImpact, ContactLaw, ContactLawError, Hertz, HertzDamp, HertzDamping, Jankowski,
     KelvinVoigt, units,
 };
-use crate::shape::DeckShape;
 use crate::sim::{ComplianceContact, DampingModel, JointContact, SimModel};
 use serde::Deserialize;
 
@@ -270,11 +269,7 @@ pub(super) fn apply_shape_and_damping(
         }
         let f = m / current[j];
         match &mut model.shapes {
-            Some(sh) => match &mut sh[j] {
-                DeckShape::Straight(x) => x.density *= f,
-                DeckShape::Skewed(x) => x.density *= f,
-                DeckShape::Curved(x) => x.density *= f,
-            },
+            Some(sh) => sh[j].scale_density(f),
             None => {
                 if j == 0 {
                     model.arrangement.deck1.density *= f;
