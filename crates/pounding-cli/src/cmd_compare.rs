@@ -344,14 +344,11 @@ fn panel<DB: DrawingBackend>(
             }
         }
     }
-    if let Some((y, _)) = hline {
+    if let Some((y, _)) = hline.filter(|h| h.0.is_finite()) {
         lo = lo.min(y);
         hi = hi.max(y);
     }
-    if !(lo.is_finite() && hi.is_finite()) {
-        lo = 0.0;
-        hi = 1.0;
-    }
+    let (lo, hi) = crate::figures::sane_range(lo, hi, (0.0, 1.0));
     let pad = ((hi - lo) * 0.08).max(1e-9);
     let mut chart = ChartBuilder::on(area)
         .caption(title, (FAMILY, 20))

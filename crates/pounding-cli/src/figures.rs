@@ -96,6 +96,24 @@ where
     write_atomic(path, &png).map_err(|err| format!("cannot write {}: {err}", path.display()))
 }
 
+/// Largest magnitude of a plotted data bound: keeps `hi − lo`, the padding and the axis ends
+/// finite (an infinite axis range makes plotters' tick search loop forever).
+pub(crate) const AXIS_LIMIT: Real = 1e300;
+
+/// A sane data range for an axis: `(lo, hi)` clamped to `±`[`AXIS_LIMIT`] when both are finite
+/// (the callers skip non-finite values when they gather them), otherwise `default` (no finite
+/// value at all). The result is finite, so any padding of it stays finite.
+pub(crate) fn sane_range(lo: Real, hi: Real, default: (Real, Real)) -> (Real, Real) {
+    if lo.is_finite() && hi.is_finite() {
+        (
+            lo.clamp(-AXIS_LIMIT, AXIS_LIMIT),
+            hi.clamp(-AXIS_LIMIT, AXIS_LIMIT),
+        )
+    } else {
+        default
+    }
+}
+
 fn font(size: u32) -> TextStyle<'static> {
     (FAMILY, size).into_font().color(&BLACK)
 }
@@ -746,6 +764,8 @@ fn line_chart<DB: DrawingBackend>(
             .map_err(e)?;
         return Ok(());
     }
+    let (x0, x1) = sane_range(x0, x1, (0.0, 1.0));
+    let (y0, y1) = sane_range(y0, y1, (0.0, 1.0));
     let dx = if x1 > x0 { 0.05 * (x1 - x0) } else { 1.0 };
     let dy = if y1 > y0 { 0.08 * (y1 - y0) } else { 1.0 };
     let mut chart = ChartBuilder::on(area)

@@ -8,6 +8,7 @@
 //! * `abutment_gap.png` — with abutments: the gap of each far end face to its abutment;
 //! * `layout.png` — plan view of the two decks, bearings, joint, abutments and axes (reference pose).
 
+use crate::figures::sane_range;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::{FontStyle, register_font};
@@ -69,14 +70,11 @@ fn line_panel<DB: DrawingBackend>(
             }
         }
     }
-    for (y, _, _) in hlines {
+    for (y, _, _) in hlines.iter().filter(|h| h.0.is_finite()) {
         lo = lo.min(*y);
         hi = hi.max(*y);
     }
-    if !(lo.is_finite() && hi.is_finite()) {
-        lo = -1.0;
-        hi = 1.0;
-    }
+    let (lo, hi) = sane_range(lo, hi, (-1.0, 1.0));
     let pad = ((hi - lo) * 0.08).max(1e-12);
     let mut chart = ChartBuilder::on(area)
         .caption(title, (FAMILY, 22))
@@ -329,10 +327,12 @@ pub fn write_all(out: &Path, problem: &SimProblem, sol: &SimSolution) -> R {
             };
             let mut lo: Real = 0.0;
             let mut hi: Real = 0.0;
-            for r in &sol.impacts {
-                lo = lo.min(val(r));
-                hi = hi.max(val(r));
+            for v in sol.impacts.iter().map(val).filter(|v| v.is_finite()) {
+                lo = lo.min(v);
+                hi = hi.max(v);
             }
+            // 0 is always in the range, so it is never the default
+            let (lo, hi) = sane_range(lo, hi, (0.0, 0.0));
             let pad = ((hi - lo) * 0.1).max(1.0);
             let title = if k == 0 {
                 "Normal impulse P_N of each impacting contact (pushes the decks apart)"
@@ -362,13 +362,14 @@ pub fn write_all(out: &Path, problem: &SimProblem, sol: &SimSolution) -> R {
                 let c = mode_color(m);
                 let rs: Vec<_> = sol.impacts.iter().filter(|r| r.mode == m).collect();
                 chart
-                    .draw_series(rs.iter().map(|r| {
+                    .draw_series(rs.iter().filter(|r| val(r).is_finite()).map(|r| {
                         PathElement::new(vec![(r.time, 0.0), (r.time, val(r))], c.stroke_width(3))
                     }))
                     .map_err(e)?;
                 chart
                     .draw_series(
                         rs.iter()
+                            .filter(|r| val(r).is_finite())
                             .map(|r| Circle::new((r.time, val(r)), 5, c.filled())),
                     )
                     .map_err(e)?
@@ -492,11 +493,17 @@ fn layout<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, problem: &SimProble
         .collect();
     let (mut lo_x, mut hi_x, mut lo_y, mut hi_y) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     for &(x, y) in o1.iter().chain(&o2).chain(abut_polys.iter().flatten()) {
-        lo_x = lo_x.min(x);
-        hi_x = hi_x.max(x);
-        lo_y = lo_y.min(y);
-        hi_y = hi_y.max(y);
+        if x.is_finite() && y.is_finite() {
+            lo_x = lo_x.min(x);
+            hi_x = hi_x.max(x);
+            lo_y = lo_y.min(y);
+            hi_y = hi_y.max(y);
+        }
     }
+    let ((lo_x, hi_x), (lo_y, hi_y)) = (
+        sane_range(lo_x, hi_x, (0.0, 0.0)),
+        sane_range(lo_y, hi_y, (0.0, 0.0)),
+    );
     // equal scales: widen the smaller range to the drawing area's aspect ratio
     let (w, h) = root.dim_in_pixel();
     let pad = 0.08 * (hi_x - lo_x).max(hi_y - lo_y);
@@ -650,7 +657,7 @@ fn batch_panel_range(k: usize, curves: &[BatchCurve], seat_length: Real) -> (Rea
     if !(hi.is_finite() && hi > lo) {
         hi = lo + 1.0;
     }
-    (lo, hi)
+    sane_range(lo, hi, (0.0, 1.0))
 }
 
 /// `batch.png`: peak response against intensity (PGA of the applied component) per record, four

@@ -1,0 +1,93 @@
+//! Hardening, second round (issue 15): hangs, memory, silently ignored settings and unreadable
+//! messages found by a hostile tester on a release build.
+
+use crate::pounding;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("pounding-hr2-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// Runs `pounding ARGS` in `dir`, killing it after `limit`; returns (exit code, stderr), or
+/// panics when the limit was reached (a hang).
+fn run_limited(dir: &Path, args: &[&str], limit: Duration) -> (Option<i32>, String) {
+    let mut child = pounding()
+        .current_dir(dir)
+        .args(args)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            let mut err = String::new();
+            use std::io::Read;
+            child
+                .stderr
+                .take()
+                .unwrap()
+                .read_to_string(&mut err)
+                .unwrap();
+            return (status.code(), err);
+        }
+        if start.elapsed() > limit {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("pounding {args:?} did not finish within {limit:?} (hang)");
+        }
+        std::thread::sleep(Duration::from_millis(50));
+    }
+}
+
+/// Runs `pounding ARGS` in `dir` (60 s limit); returns (exit code, stderr).
+fn run_in(dir: &Path, args: &[&str]) -> (Option<i32>, String) {
+    run_limited(dir, args, Duration::from_secs(60))
+}
+
+/// Writes `text` as `dir/name` and runs `pounding simulate name --out o`.
+fn simulate(dir: &Path, name: &str, text: &str) -> (Option<i32>, String) {
+    std::fs::write(dir.join(name), text).unwrap();
+    run_in(dir, &["simulate", name, "--out", "o"])
+}
+
+/// An infinite contact impulse (χ = 1e300 overflows the Hunt–Crossley force) used to make the
+/// impulse plot's axis infinite, and plotters then looped forever: the run must finish, write all
+/// its outputs, release the lock and report Diverged (exit 1).
+#[test]
+fn infinite_impulse_diverges_without_hanging_the_plots() {
+    let d = tmp("chi");
+    let (code, err) = simulate(
+        &d,
+        "chi.toml",
+        "[time]\nduration = 3.0\n[contact]\nlaw = \"hertz-damp\"\nchi = 1e300\n",
+    );
+    assert_eq!(code, Some(1), "{err}");
+    assert!(err.contains("Diverged"), "{err}");
+    let o = d.join("o");
+    for f in [
+        "history.csv",
+        "impacts.csv",
+        "summary.json",
+        "timing.json",
+        "impulses.png",
+        "displacements.png",
+        "energy.png",
+    ] {
+        assert!(o.join(f).is_file(), "{f} missing: {err}");
+    }
+    assert!(!o.join(".pounding.lock").exists(), "lock left behind");
+    // the impulse really is non-finite (else this test would not exercise the fix)
+    let impacts = std::fs::read_to_string(o.join("impacts.csv")).unwrap();
+    assert!(
+        impacts
+            .lines()
+            .skip(1)
+            .any(|l| l.contains("inf") || l.contains("nan")),
+        "{impacts}"
+    );
+}
