@@ -88,6 +88,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
     };
     // Build (and validate) every law's setup before running anything.
     let mut setups = Vec::new();
+    let mut memory = 0u64;
     for l in &laws {
         let mut s = cmd_simulate::build_with(&sim_args, Some(l))
             .with_context(|| format!("contact law {l:?}"))?;
@@ -110,10 +111,24 @@ pub fn run(args: Args) -> Result<ExitCode> {
                 if args.dt.is_some() { " (--dt)" } else { "" }
             );
         }
-        s.settings
+        let n = s
+            .settings
             .step_count(d)
             .map_err(|e| anyhow!("{e} (--dt)"))?;
+        memory += pounding::sim::options::run_memory_bytes(n, s.settings.history_stride);
         setups.push(s);
+    }
+    // every law's history is kept for the plots: the runs together must fit
+    let limit = pounding::sim::options::MAX_RUN_MEMORY_BYTES;
+    if memory > limit {
+        bail!(
+            "run too large: the {} runs need an estimated {:.1} GiB of memory (history every \
+             0.5 ms), more than the limit {:.0} GiB: shorten [time] duration, compare fewer laws \
+             or use a larger --dt",
+            setups.len(),
+            memory as Real / (1u64 << 30) as Real,
+            limit as Real / (1u64 << 30) as Real
+        );
     }
     pounding::output::check_output_dir_free(&args.out)?;
     let mut runs = Vec::new();

@@ -328,6 +328,33 @@ impl Source {
     }
 }
 
+/// Refuses a run whose estimated memory ([`pounding::sim::options::run_memory_bytes`]) exceeds
+/// [`pounding::sim::options::MAX_RUN_MEMORY_BYTES`], naming `[time] history_every`, `duration`
+/// and `dt` and the smallest `history_every` that fits.
+fn check_memory(src: &Source, settings: &SimSettings, duration: Real) -> Result<()> {
+    use pounding::sim::options::{MAX_RUN_MEMORY_BYTES, min_history_stride};
+    let Err(_) = settings.check_memory(duration) else {
+        return Ok(());
+    };
+    let n = settings.step_count(duration).map_err(|e| anyhow!("{e}"))?;
+    let bytes = pounding::sim::options::run_memory_bytes(n, settings.history_stride);
+    let gib = |b: u64| b as Real / (1u64 << 30) as Real;
+    let advice = match min_history_stride(n) {
+        Some(s) => format!("set history_every >= {s} (or shorten the run)"),
+        None => "shorten the run or use a larger dt".into(),
+    };
+    bail!(
+        "run too large: {n} steps with history_every = {} need an estimated \
+         {:.1} GiB of memory, more than the limit {:.0} GiB; {advice} — set by {}, {} and {}",
+        settings.history_stride,
+        gib(bytes),
+        gib(MAX_RUN_MEMORY_BYTES),
+        src.key_ref("time", "history_every"),
+        src.key_ref("time", "duration"),
+        src.key_ref("time", "dt")
+    )
+}
+
 /// Maps a library parameter name onto the scenario key that sets it.
 fn scenario_key(name: &str) -> Option<(&'static str, &'static str)> {
     Some(match name {
@@ -689,6 +716,9 @@ pub(crate) fn build_with(args: &Args, law: Option<&str>) -> Result<Setup> {
             };
             anyhow!("{e} — set by {}{by}", src.key_ref("time", "dt"))
         })?;
+        if law.is_none() && args.records.is_empty() {
+            check_memory(&src, &settings, d)?;
+        }
     }
     if let Some(d) = duration
         && settings.dt > d

@@ -91,3 +91,37 @@ fn infinite_impulse_diverges_without_hanging_the_plots() {
         "{impacts}"
     );
 }
+
+/// A 5 M-step run keeping every step needed more than 1 GB (the 200 M-step limit ~40 GB): it is
+/// refused as bad input before anything runs, naming the three keys with their lines and the
+/// `history_every` that fits (the library test `harden_round2` checks that this value fits).
+#[test]
+fn simulate_refuses_a_history_too_large_for_memory() {
+    let d = tmp("mem");
+    let (code, err) = simulate(
+        &d,
+        "mem.toml",
+        "[ground_motion]\nrecord_x = \"none\"\n[time]\nduration = 5000.0\nhistory_every = 1\n",
+    );
+    assert_eq!(code, Some(2), "{err}");
+    for want in [
+        "GiB",
+        "`[time] history_every` (mem.toml:5)",
+        "`[time] duration` (mem.toml:4)",
+        "`[time] dt`",
+        "history_every >= 2",
+    ] {
+        assert!(err.contains(want), "{want}: {err}");
+    }
+    assert!(!d.join("o").exists(), "nothing may be written");
+    // compare keeps every law's history: refused as a whole
+    std::fs::write(
+        d.join("c.toml"),
+        "[ground_motion]\nrecord_x = \"none\"\n[time]\nduration = 5000.0\n",
+    )
+    .unwrap();
+    let (code, err) = run_in(&d, &["compare", "c.toml", "--out", "oc"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("GiB") && err.contains("duration"), "{err}");
+    assert!(!d.join("oc").exists());
+}

@@ -11,6 +11,7 @@ mod ground_motion;
 mod harden;
 mod harden_input;
 mod harden_io;
+mod harden_round2;
 mod impact;
 mod lcp;
 mod lemke_degenerate;
