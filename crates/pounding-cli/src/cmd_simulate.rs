@@ -355,6 +355,27 @@ fn check_memory(src: &Source, settings: &SimSettings, duration: Real) -> Result<
     )
 }
 
+/// A one-line note on stderr when the given `[time] duration` is not a whole number of steps:
+/// the run takes `⌈duration/dt⌉` steps, so it ends after the duration.
+fn note_rounded_duration(settings: &SimSettings, duration: Real) {
+    let Some(d) = settings.duration else { return };
+    let Ok(n) = settings.step_count(duration) else {
+        return;
+    };
+    let end = n as Real * settings.dt;
+    if (end - d).abs() > 1e-9 * d {
+        // 13 significant digits: 4 × 0.3 reads as 1.2
+        let end: Real = format!("{end:.12e}").parse().unwrap_or(end);
+        eprintln!(
+            "note: duration = {} s is not a multiple of dt = {} s: the run takes {n} steps, to \
+             t = {} s",
+            float_token(d),
+            float_token(settings.dt),
+            float_token(end)
+        );
+    }
+}
+
 /// Maps a library parameter name onto the scenario key that sets it.
 fn scenario_key(name: &str) -> Option<(&'static str, &'static str)> {
     Some(match name {
@@ -461,7 +482,15 @@ fn deck_shapes(src: &Source, d: &DecksSec) -> Result<Option<[DeckShape; 2]>> {
                 })
             };
             let (l1, l2) = (len(d.L1, "L1")?, len(d.L2, "L2")?);
-            let skew = d.skew_deg.unwrap_or(0.0).to_radians();
+            let skew = match d.skew_deg {
+                Some(s) => s.to_radians(),
+                None if shape == "skew" => bail!(
+                    "shape = \"skew\" needs skew_deg (the skew angle in [0, 90) deg, in \
+                     [decks]; use shape = \"straight\" for 0) — set by {}",
+                    src.key_ref("decks", "shape")
+                ),
+                None => 0.0,
+            };
             let mk = |l: f64| {
                 if shape == "straight" {
                     DeckShape::Straight(StraightDeck {
@@ -718,6 +747,7 @@ pub(crate) fn build_with(args: &Args, law: Option<&str>) -> Result<Setup> {
         })?;
         if law.is_none() && args.records.is_empty() {
             check_memory(&src, &settings, d)?;
+            note_rounded_duration(&settings, d);
         }
     }
     if let Some(d) = duration

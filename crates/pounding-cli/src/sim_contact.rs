@@ -78,6 +78,99 @@ fn law_err(src: &Source, e: ContactLawError) -> anyhow::Error {
     anyhow!(msg)
 }
 
+/// Every parameter key of `[contact]` (all but `law`).
+const CONTACT_KEYS: [&str; 17] = [
+    "k",
+    "c",
+    "k_h",
+    "zeta",
+    "chi",
+    "restitution",
+    "calibration",
+    "design_velocity",
+    "min_velocity",
+    "k1",
+    "k2",
+    "delta_y",
+    "delta_m",
+    "a",
+    "beta",
+    "xi",
+    "friction_velocity",
+];
+
+/// The `[contact]` keys law `name` reads with the keys given in `sec` (which of a law's ways
+/// to set its damping is taken depends on them), and a description of that way.
+fn used_keys(name: &str, sec: &ContactSec) -> (Vec<&'static str>, &'static str) {
+    let (keys, how): (&[&str], &str) = match name {
+        "kelvin" if sec.c.is_some() => (&["k", "c"], " with c given"),
+        "kelvin" => (&["k", "restitution", "calibration"], " without c"),
+        "hertz" => (&["k_h"], ""),
+        "hertz-damp" if sec.zeta.is_some() => (&["k_h", "zeta"], " with zeta given"),
+        "hertz-damp" if sec.chi.is_some() => (&["k_h", "chi", "min_velocity"], " with chi given"),
+        "hertz-damp" => (
+            &[
+                "k_h",
+                "restitution",
+                "calibration",
+                "design_velocity",
+                "min_velocity",
+            ],
+            " without zeta or chi",
+        ),
+        "bilinear" if sec.k1.is_some() || sec.k2.is_some() || sec.delta_y.is_some() => {
+            (&["k1", "k2", "delta_y"], " with k1, k2, delta_y given")
+        }
+        "bilinear" => (
+            &["k_h", "restitution", "delta_m", "a"],
+            " without k1, k2, delta_y",
+        ),
+        // beta wins over k_h
+        "jankowski" if sec.beta.is_some() && sec.xi.is_some() => {
+            (&["beta", "xi"], " with beta and xi given")
+        }
+        "jankowski" if sec.beta.is_some() => {
+            (&["beta", "restitution", "calibration"], " with beta given")
+        }
+        "jankowski" if sec.xi.is_some() => (&["k_h", "xi"], " with xi given"),
+        "jankowski" => (&["k_h", "restitution", "calibration"], ""),
+        _ => (&[], ""),
+    };
+    let mut keys = keys.to_vec();
+    if name != "rigid" {
+        keys.push("friction_velocity");
+    }
+    (keys, how)
+}
+
+/// Refuses a `[contact]` key that law `name` does not read (`simulate` only: `compare` builds
+/// every law from the same section, so there a key of another law is no error).
+fn refuse_unused_keys(src: &Source, sec: &ContactSec, name: &str) -> Result<()> {
+    if !LAW_NAMES.contains(&name) {
+        return Ok(()); // reported with the list of laws by build_contact
+    }
+    let (used, how) = used_keys(name, sec);
+    for key in CONTACT_KEYS {
+        if used.contains(&key) || src.line_of("contact", key).is_none() {
+            continue;
+        }
+        if name == "rigid" {
+            bail!(
+                "{key} applies to compliance laws ({}), not to law = \"rigid\" (rigid contact \
+                 uses `[joint] eps_n` and `[joint] mu`) — set by {}",
+                LAW_NAMES[1..].join(", "),
+                src.key_ref("contact", key)
+            );
+        }
+        bail!(
+            "{key} is not used by law = \"{name}\"{how} (it reads {}) — set by {}",
+            used.join(", "),
+            src.key_ref("contact", key)
+        );
+    }
+    Ok(())
+}
+
 /// Builds the joint contact for `law` (overriding `[contact] law` when given) from the section;
 /// `eps_n` is the default restitution, `masses` the deck masses (Kelvin, Jankowski calibrations).
 pub(super) fn build_contact(
@@ -91,6 +184,9 @@ pub(super) fn build_contact(
         .map(str::to_string)
         .or_else(|| sec.law.clone())
         .unwrap_or_else(|| "rigid".into());
+    if law.is_none() {
+        refuse_unused_keys(src, sec, &name)?;
+    }
     let e = sec.restitution.unwrap_or(eps_n);
     let cal = sec.calibration.as_deref().unwrap_or("numerical");
     let bad_cal = |allowed: &str| {

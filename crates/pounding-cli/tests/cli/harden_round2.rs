@@ -125,3 +125,122 @@ fn simulate_refuses_a_history_too_large_for_memory() {
     assert!(err.contains("GiB") && err.contains("duration"), "{err}");
     assert!(!d.join("oc").exists());
 }
+
+/// `[contact]` keys the chosen law does not read used to be accepted and ignored (exit 0): each
+/// is now refused by `simulate`, naming the key and its line.
+#[test]
+fn simulate_refuses_contact_keys_the_law_does_not_use() {
+    let d = tmp("keys");
+    for (text, want) in [
+        (
+            "[contact]\nlaw = \"rigid\"\nk = 1e10\n",
+            "k applies to compliance laws",
+        ),
+        (
+            "[contact]\n# the default law is rigid\nrestitution = 0.5\n",
+            "restitution applies to compliance laws",
+        ),
+        (
+            "[contact]\nlaw = \"hertz\"\nk = 1e10\n",
+            "k is not used by law = \"hertz\"",
+        ),
+        (
+            "[contact]\nlaw = \"hertz-damp\"\nchi = 0.3\nzeta = 0.1\n",
+            "chi is not used by law = \"hertz-damp\" with zeta given",
+        ),
+        (
+            "[contact]\nlaw = \"kelvin\"\nrestitution = 0.5\nc = 1e6\n",
+            "restitution is not used by law = \"kelvin\" with c given",
+        ),
+        (
+            "[contact]\nlaw = \"jankowski\"\nk_h = 1e9\nbeta = 2e9\n",
+            "k_h is not used by law = \"jankowski\"",
+        ),
+    ] {
+        let (code, err) = simulate(&d, "s.toml", text);
+        assert_eq!(code, Some(2), "{text}: {err}");
+        assert!(
+            err.contains(want) && err.contains("(s.toml:3)"),
+            "{text}: {err}"
+        );
+        assert!(!d.join("o").exists(), "{text}: nothing may be written");
+    }
+    // a key the law does read is still accepted (short run)
+    let (code, err) = simulate(
+        &d,
+        "ok.toml",
+        "[time]\nduration = 0.05\n[contact]\nlaw = \"hertz\"\nk_h = 1e9\nfriction_velocity = 0.01\n",
+    );
+    assert_eq!(code, Some(0), "{err}");
+}
+
+/// `compare` builds every law from the one `[contact]` section: a key of one compared law is no
+/// error for the others (documented), while a bad value of a key still is.
+#[test]
+fn compare_accepts_contact_keys_of_any_compared_law() {
+    let d = tmp("cmpkeys");
+    std::fs::write(
+        d.join("c.toml"),
+        "[time]\nduration = 0.05\n[contact]\nk = 2e10\nk_h = 1e9\nzeta = 0.2\n",
+    )
+    .unwrap();
+    let (code, err) = run_in(
+        &d,
+        &[
+            "compare",
+            "c.toml",
+            "--laws",
+            "rigid,kelvin,hertz-damp",
+            "--out",
+            "oc",
+        ],
+    );
+    assert_eq!(code, Some(0), "{err}");
+}
+
+/// `shape = "skew"` without `skew_deg` used to run as a 0° skew; now an error naming the shape's
+/// line.
+#[test]
+fn skew_shape_needs_its_angle() {
+    let d = tmp("skew");
+    let (code, err) = simulate(
+        &d,
+        "s.toml",
+        "[time]\nduration = 0.05\n[decks]\nshape = \"skew\"\nL1 = 30.0\nL2 = 30.0\n",
+    );
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("shape = \"skew\" needs skew_deg") && err.contains("s.toml:4"),
+        "{err}"
+    );
+    assert!(!d.join("o").exists());
+}
+
+/// A study with `svg = true` and `figures = false` used to write no SVG silently.
+#[test]
+fn study_refuses_svg_without_figures() {
+    let d = tmp("svg");
+    std::fs::write(d.join("st.toml"), "[output]\nfigures = false\nsvg = true\n").unwrap();
+    let (code, err) = run_in(&d, &["study", "st.toml", "--out", "os"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("output.svg") && err.contains("st.toml") && err.contains("line 3"),
+        "{err}"
+    );
+    assert!(!d.join("os").exists());
+}
+
+/// A duration that is not a whole number of steps is rounded up (kept), with a note on stderr.
+#[test]
+fn rounded_duration_is_noted() {
+    let d = tmp("round");
+    let (code, err) = simulate(&d, "s.toml", "[time]\nduration = 1.0\ndt = 0.3\n");
+    assert_eq!(code, Some(0), "{err}");
+    assert!(
+        err.contains("note: duration = 1 s is not a multiple of dt = 0.3 s: the run takes 4 steps, to t = 1.2 s"),
+        "{err}"
+    );
+    let (code, err) = simulate(&d, "t.toml", "[time]\nduration = 0.9\ndt = 0.3\n");
+    assert_eq!(code, Some(0), "{err}");
+    assert!(!err.contains("note:"), "{err}");
+}

@@ -764,7 +764,18 @@ impl Scenario {
             }
         };
         let figures = output.figures.map_or(d.output.figures, |s| *s.get_ref());
-        let svg = output.svg.map_or(d.output.svg, |s| *s.get_ref());
+        let svg = output.svg.as_ref().map_or(d.output.svg, |s| *s.get_ref());
+        if let Some(s) = &output.svg
+            && svg
+            && !figures
+        {
+            return Err(cx.invalid(
+                s.span(),
+                "output.svg",
+                "true".into(),
+                "SVG copies of the figures need figures = true (output.figures is false)",
+            ));
+        }
         let region_map_samples = match &output.region_map_samples {
             None => d.output.region_map_samples,
             Some(s) => {
