@@ -15,8 +15,8 @@ use pounding::math::{Real, Vector};
 use pounding::output::{float_token, json_float, write_atomic};
 use pounding::shape::{DeckShape, SkewedDeck, StraightDeck};
 use pounding::sim::{
-    Bearing, SEAT_ENDS, SimAbutment, SimError, SimModel, SimProblem, SimSettings, SimSolution,
-    simulate,
+    Bearing, JointContact, SEAT_ENDS, SimAbutment, SimError, SimModel, SimProblem, SimSettings,
+    SimSolution, simulate,
 };
 use pounding::toml_schema::{Exact, Table};
 use serde::Deserialize;
@@ -355,6 +355,44 @@ fn check_memory(src: &Source, settings: &SimSettings, duration: Real) -> Result<
     )
 }
 
+/// The error of a step `dt` longer than the run `duration`, blaming what the user set: the
+/// record (its name and last sample time) when the duration is the record's, else `[time] dt`
+/// and `[time] duration`.
+fn refuse_dt_beyond_duration(
+    src: &Source,
+    args: &Args,
+    settings: &SimSettings,
+    duration: Real,
+    records: &[String; 2],
+) -> Result<()> {
+    let by_user = |key: &str| args.scenario.is_some() && src.line_of("time", key).is_some();
+    let dt_by = if by_user("dt") {
+        src.key_ref("time", "dt")
+    } else {
+        "the built-in default dt".into()
+    };
+    if settings.duration.is_none() {
+        let names: Vec<&str> = records
+            .iter()
+            .map(String::as_str)
+            .filter(|r| !r.eq_ignore_ascii_case("none"))
+            .collect();
+        bail!(
+            "the ground motion lasts only {} s (the last sample of record {}), less than one time \
+             step dt = {} s ({dt_by}): check the record's sample interval, or set [time] duration",
+            float_token(duration),
+            names.join(" and "),
+            float_token(settings.dt)
+        );
+    }
+    bail!(
+        "invalid dt = {}: must not exceed the duration {} s — set by {dt_by} and {}",
+        float_token(settings.dt),
+        float_token(duration),
+        src.key_ref("time", "duration")
+    )
+}
+
 /// A one-line note on stderr when the given `[time] duration` is not a whole number of steps:
 /// the run takes `⌈duration/dt⌉` steps, so it ends after the duration.
 fn note_rounded_duration(settings: &SimSettings, duration: Real) {
@@ -645,6 +683,23 @@ pub(crate) fn build_with(args: &Args, law: Option<&str>) -> Result<Setup> {
     model.validate().map_err(|e| sim_error(&src, e))?;
     sim_contact::apply_shape_and_damping(&src, d, &b.damping, &mut model)?;
     model.contact = sim_contact::build_contact(&src, &sc.contact, law, j.eps_n, model.masses())?;
+    if !matches!(model.contact, JointContact::Rigid) && model.abutments.iter().any(Option::is_some)
+    {
+        let set: Vec<String> = ["gap1", "gap2", "seat_length1", "seat_length2"]
+            .into_iter()
+            .filter(|k| src.line_of("abutments", k).is_some())
+            .map(|k| src.key_ref("abutments", k))
+            .collect();
+        let by = match law {
+            Some(l) => format!("the compared law {l:?}"),
+            None => src.key_ref("contact", "law"),
+        };
+        bail!(
+            "abutments are only supported with rigid contact: {by} is a compliance law, but \
+             {} set abutments (remove [abutments] or use law = \"rigid\")",
+            set.join(", ")
+        );
+    }
     for (deck_no, pts, k, key) in [
         (1, &b.points1, b.stiffness1, "points1"),
         (2, &b.points2, b.stiffness2, "points2"),
@@ -753,12 +808,7 @@ pub(crate) fn build_with(args: &Args, law: Option<&str>) -> Result<Setup> {
     if let Some(d) = duration
         && settings.dt > d
     {
-        bail!(
-            "invalid dt = {}: must not exceed the duration {} s — set by {}",
-            float_token(settings.dt),
-            float_token(d),
-            src.key_ref("time", "dt")
-        );
+        refuse_dt_beyond_duration(&src, args, &settings, d, &records)?;
     }
     Ok(Setup {
         problem: SimProblem::at_rest(model, ground),

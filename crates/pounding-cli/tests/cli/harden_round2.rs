@@ -244,3 +244,110 @@ fn rounded_duration_is_noted() {
     assert_eq!(code, Some(0), "{err}");
     assert!(!err.contains("note:"), "{err}");
 }
+
+/// A study density whose derived deck mass overflows used to fail during the run with no file,
+/// line or scenario key; it is now refused at load time naming `decks.density_kg_m3` and its
+/// line (and a length whose inertia overflows names `decks.l1_m`).
+#[test]
+fn study_derived_mass_overflow_names_the_key_and_line() {
+    let d = tmp("dens");
+    for (text, want) in [
+        (
+            "[decks]\n# huge\ndensity_kg_m3 = 1e307\n",
+            "line 3: invalid decks.density_kg_m3 = 1e307",
+        ),
+        (
+            "[decks]\nshape = \"straight\"\nl1_m = [1e150]\n",
+            "line 3: invalid decks.l1_m = 1e150",
+        ),
+    ] {
+        std::fs::write(d.join("st.toml"), text).unwrap();
+        let (code, err) = run_in(&d, &["study", "st.toml", "--out", "os"]);
+        assert_eq!(code, Some(2), "{text}: {err}");
+        assert!(
+            err.contains("st.toml") && err.contains(want),
+            "{text}: {err}"
+        );
+        assert!(err.contains("derived"), "{err}");
+        assert!(!d.join("os").exists());
+    }
+}
+
+/// Abutments with a compliance law: the error names `[contact] law` and the `[abutments]` keys
+/// with their lines (it used to say `invalid contact_law = nan` with no location).
+#[test]
+fn abutments_with_a_compliance_law_name_both_keys() {
+    let d = tmp("abut");
+    let (code, err) = simulate(
+        &d,
+        "s.toml",
+        "[time]\nduration = 0.1\n[contact]\nlaw = \"kelvin\"\n[abutments]\ngap1 = 0.05\n",
+    );
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("`[contact] law` (s.toml:4)")
+            && err.contains("`[abutments] gap1` (s.toml:6)")
+            && !err.contains("nan"),
+        "{err}"
+    );
+}
+
+/// A record whose sample interval makes it shorter than the default step used to blame the
+/// built-in default dt; the record is blamed (name and duration), and a user-set dt is named.
+#[test]
+fn too_short_record_is_blamed_not_the_default_dt() {
+    let d = tmp("dt");
+    std::fs::write(
+        d.join("tiny.AT2"),
+        "PEER\nx\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS=   4, DT=   1e-300 SEC\n0.1 0.2 0.1 0.0\n",
+    )
+    .unwrap();
+    let (code, err) = run_in(&d, &["simulate", "--record", "tiny.AT2", "--out", "o"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("lasts only 3e-300 s")
+            && err.contains("tiny.AT2")
+            && err.contains("built-in default dt")
+            && !err.contains("built-in default:"),
+        "{err}"
+    );
+    let (code, err) = simulate(
+        &d,
+        "s.toml",
+        "[ground_motion]\nrecord_y = \"tiny.AT2\"\nrecord_x = \"none\"\n[time]\ndt = 0.01\n",
+    );
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("`[time] dt` (s.toml:5)") && err.contains("tiny.AT2"),
+        "{err}"
+    );
+}
+
+/// A record value finite in the file but infinite in m/s² (1e308 g) is reported as overflowing
+/// on conversion, with the record file and line (it used to say `a[0] = inf: must be finite`).
+#[test]
+fn record_value_overflowing_on_conversion_names_file_and_line() {
+    let d = tmp("ovf");
+    std::fs::write(d.join("big.csv"), "t,a\n0,0\n0.01,1e308\n0.02,0\n").unwrap();
+    std::fs::write(
+        d.join("big.AT2"),
+        "PEER\nx\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS=   4, DT=   0.01 SEC\n0.1 1e308 0.1 0.0\n",
+    )
+    .unwrap();
+    let (code, err) = simulate(
+        &d,
+        "s.toml",
+        "[ground_motion]\nrecord_y = \"big.csv\"\nrecord_x = \"none\"\ncsv_units = \"g\"\n",
+    );
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("big.csv:3") && err.contains("1e308 overflows when converted to m/s²"),
+        "{err}"
+    );
+    let (code, err) = run_in(&d, &["simulate", "--record", "big.AT2", "--out", "o"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("big.AT2:5") && err.contains("overflows"),
+        "{err}"
+    );
+}

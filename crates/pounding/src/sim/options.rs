@@ -70,11 +70,12 @@ impl super::SimModel {
             return Ok(());
         };
         if self.abutments.iter().any(Option::is_some) {
-            return Err(SimError::invalid(
-                "contact_law",
-                f64::NAN,
-                "abutments ([abutments]) are only supported with rigid contact ([contact] law = \"rigid\")",
-            ));
+            return Err(SimError::InvalidArgument {
+                name: "contact_law".into(),
+                reason: "abutments ([abutments]) are only supported with rigid contact \
+                         ([contact] law = \"rigid\")"
+                    .into(),
+            });
         }
         {
             let v = c.friction_velocity;
