@@ -73,7 +73,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
     if let Some(dt) = args.dt
         && !(dt.is_finite() && dt > 0.0)
     {
-        bail!("invalid --dt {dt}: must be finite and > 0");
+        bail!("invalid --dt {}: must be finite and > 0", float_token(dt));
     }
     let sim_args = cmd_simulate::Args {
         scenario: args.scenario.clone(),

@@ -257,12 +257,12 @@ fn run_bridge(a: &ImpactArgs) -> Result<ExitCode> {
     if let Some(r) = a.ratio
         && !r.is_finite()
     {
-        bail!("invalid ratio = {r}: must be finite");
+        bail!("invalid ratio = {}: must be finite", float_token(r));
     }
     if let Some(g) = a.opening
         && !g.is_finite()
     {
-        bail!("invalid opening = {g}: must be finite");
+        bail!("invalid opening = {}: must be finite", float_token(g));
     }
     let detection = a.opening.map(|g| (g, s.detect_contact(t1r, t2r, g)));
     let (p1, p2) = (d1.mass_properties(), d2.mass_properties());
@@ -842,6 +842,13 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
                 let skew = a
                     .skew
                     .ok_or_else(|| anyhow!("missing --skew (required with --shape skew)"))?;
+                // checked in degrees, so that the message shows the user's value
+                if !(skew.is_finite() && (0.0..90.0).contains(&skew)) {
+                    bail!(
+                        "invalid --skew {}: the skew angle must lie in [0, 90) degrees",
+                        float_token(skew)
+                    );
+                }
                 DeckShape::Skewed(SkewedDeck::new(
                     length,
                     a.width,
@@ -897,7 +904,7 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
     };
     if let Some(r) = a.ratio {
         if !r.is_finite() {
-            bail!("invalid ratio = {r}: must be finite");
+            bail!("invalid ratio = {}: must be finite", float_token(r));
         }
         if corners.len() == 2 {
             bail!("--ratio needs a single corner (--corner c0 or c1): both corners use --speed");
@@ -905,7 +912,10 @@ fn run_abutment(a: &ImpactArgs) -> Result<ExitCode> {
     }
     let speed = a.speed.unwrap_or(1.0);
     if !(speed.is_finite() && speed > 0.0) {
-        bail!("invalid speed = {speed}: must be finite and > 0");
+        bail!(
+            "invalid speed = {}: must be finite and > 0",
+            float_token(speed)
+        );
     }
     if a.speed.is_some() && corners.len() == 1 {
         bail!(
@@ -1276,7 +1286,10 @@ fn run_joint(a: &ImpactArgs, deck1: &DeckShape) -> Result<ExitCode> {
     let law = ImpactLaw::new(mu, eps)?;
     let speed = a.speed.unwrap_or(1.0);
     if !(speed.is_finite() && speed > 0.0) {
-        bail!("invalid speed = {speed}: must be finite and > 0");
+        bail!(
+            "invalid speed = {}: must be finite and > 0",
+            float_token(speed)
+        );
     }
     let v1 = speed * deck1.axis_direction(DeckEnd::Joint);
     let problem = joint_problem(deck1, &deck2, (v1, 0.0), (Vector::zeros(), 0.0), &law)?;

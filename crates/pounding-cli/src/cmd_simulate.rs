@@ -328,6 +328,18 @@ impl Source {
     }
 }
 
+/// `x` with `decimals` decimals for `|x| < 1e6`, in exponent form (`1.2346e190`) beyond, and
+/// `inf`/`-inf`/`nan` when not finite: a bounded width for the summary line of a diverged run.
+fn bounded(x: Real, decimals: usize) -> String {
+    if !x.is_finite() {
+        float_token(x)
+    } else if x.abs() < 1e6 {
+        format!("{x:.decimals$}")
+    } else {
+        format!("{x:.4e}")
+    }
+}
+
 /// Refuses a run whose estimated memory ([`pounding::sim::options::run_memory_bytes`]) exceeds
 /// [`pounding::sim::options::MAX_RUN_MEMORY_BYTES`], naming `[time] history_every`, `duration`
 /// and `dt` and the smallest `history_every` that fits.
@@ -521,6 +533,12 @@ fn deck_shapes(src: &Source, d: &DecksSec) -> Result<Option<[DeckShape; 2]>> {
             };
             let (l1, l2) = (len(d.L1, "L1")?, len(d.L2, "L2")?);
             let skew = match d.skew_deg {
+                // checked in degrees, so that the message shows the user's value
+                Some(s) if !(s.is_finite() && (0.0..90.0).contains(&s)) => bail!(
+                    "invalid skew_deg = {}: the skew angle must lie in [0, 90) degrees — set by {}",
+                    float_token(s),
+                    src.key_ref("decks", "skew_deg")
+                ),
                 Some(s) => s.to_radians(),
                 None if shape == "skew" => bail!(
                     "shape = \"skew\" needs skew_deg (the skew angle in [0, 90) deg, in \
@@ -622,8 +640,13 @@ pub(crate) fn build_with(args: &Args, law: Option<&str>) -> Result<Setup> {
             dir: PathBuf::from("."),
         },
     };
-    let sc: Scenario =
-        toml::from_str(&src.text).map_err(|e| anyhow!("invalid scenario {}: {e}", src.name))?;
+    let sc: Scenario = toml::from_str(&src.text).map_err(|e| {
+        anyhow!(
+            "invalid scenario {}: {}",
+            src.name,
+            pounding::input::shorten_lines(&e.to_string(), 200)
+        )
+    })?;
 
     let d = &sc.decks;
     let deck = |r: f64, b: f64| Deck {
@@ -749,7 +772,7 @@ pub(crate) fn build_with(args: &Args, law: Option<&str>) -> Result<Setup> {
     };
     let mult = match args.scale {
         Some(s) if s.is_finite() => s,
-        Some(s) => bail!("invalid --scale {s}: must be finite"),
+        Some(s) => bail!("invalid --scale {}: must be finite", float_token(s)),
         None => 1.0,
     };
     let ground = GroundMotion {
@@ -863,17 +886,17 @@ pub fn run(args: Args) -> Result<ExitCode> {
     )?;
     let s = &sol.summary;
     eprintln!(
-        "simulated {} s in {} steps ({:.1} ms): {} impacts, peak closing {:.4} m, opening {:.4} m, \
-         seat displacement {:.4} m{}, energy balance error {:.1e}; outputs in {}",
+        "simulated {} s in {} steps ({:.1} ms): {} impacts, peak closing {} m, opening {} m, \
+         seat displacement {} m{}, energy balance error {:.1e}; outputs in {}",
         float_token(sol.steps as Real * sol.dt),
         sol.steps,
         sim_secs * 1e3,
         s.impacts,
-        s.peak_joint_closing,
-        s.peak_joint_opening,
-        s.peak_seat_displacement,
+        bounded(s.peak_joint_closing, 4),
+        bounded(s.peak_joint_opening, 4),
+        bounded(s.peak_seat_displacement, 4),
         match s.unseating_time {
-            Some(t) => format!(" (UNSEATED at {t:.3} s)"),
+            Some(t) => format!(" (UNSEATED at {} s)", bounded(t, 3)),
             None => String::new(),
         },
         s.energy_balance_error,
@@ -881,10 +904,10 @@ pub fn run(args: Args) -> Result<ExitCode> {
     );
     if let Some(f) = s.peak_contact_force {
         eprintln!(
-            "contact law {}: peak contact force {:.4} MN, peak penetration {:.4} mm",
+            "contact law {}: peak contact force {} MN, peak penetration {} mm",
             sim_contact::describe(&setup.problem.model.contact)["law"],
-            f / 1e6,
-            s.peak_penetration * 1e3
+            bounded(f / 1e6, 4),
+            bounded(s.peak_penetration * 1e3, 4)
         );
     }
     if sol.status != pounding::sim::SimStatus::Completed {
@@ -1133,4 +1156,21 @@ pub(crate) fn summary_json(setup: &Setup, sol: &SimSolution) -> serde_json::Valu
     }
     sim_contact::add_compliance_summary(&mut out, m, sol);
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::bounded;
+
+    /// The summary line of a diverged run printed a 1e190 m seat displacement with 190+ digits.
+    #[test]
+    fn bounded_keeps_huge_and_non_finite_values_short() {
+        assert_eq!(bounded(0.05493, 4), "0.0549");
+        assert_eq!(bounded(-12.5, 3), "-12.500");
+        assert_eq!(bounded(1.234567e190, 4), "1.2346e190");
+        assert_eq!(bounded(-3e6, 4), "-3.0000e6");
+        assert_eq!(bounded(f64::INFINITY, 4), "inf");
+        assert_eq!(bounded(f64::NAN, 4), "nan");
+        assert!(bounded(-f64::MAX, 4).len() < 16);
+    }
 }

@@ -284,7 +284,8 @@ pub(super) fn build_contact(
     if let Some(v) = sec.friction_velocity {
         if !(v.is_finite() && v > 0.0) {
             bail!(
-                "invalid friction_velocity = {v}: must be finite and > 0 — set by {}",
+                "invalid friction_velocity = {}: must be finite and > 0 — set by {}",
+                pounding::output::float_token(v),
                 src.key_ref("contact", "friction_velocity")
             );
         }
@@ -347,7 +348,8 @@ pub(super) fn apply_shape_and_damping(
         let Some(m) = m else { continue };
         if !(m.is_finite() && m > 0.0) {
             bail!(
-                "invalid {key} = {m}: must be finite and > 0 — set by {}",
+                "invalid {key} = {}: must be finite and > 0 — set by {}",
+                pounding::output::float_token(m),
                 src.key_ref("decks", key)
             );
         }

@@ -351,3 +351,78 @@ fn record_value_overflowing_on_conversion_names_file_and_line() {
         "{err}"
     );
 }
+
+/// Floats in messages are the user's value in shortest form: `--skew -30` is not reported as
+/// `-29.999999999999996`, a restitution of 1e-300 is not a 300-digit decimal.
+#[test]
+fn messages_print_floats_in_shortest_form() {
+    let d = tmp("fmt");
+    let (code, err) = run_in(
+        &d,
+        &[
+            "impact",
+            "--shape",
+            "skew",
+            "--length",
+            "30",
+            "--skew=-30",
+            "--mu",
+            "0.3",
+            "--eps",
+            "0.5",
+        ],
+    );
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("--skew -30:") && !err.contains("29.99"),
+        "{err}"
+    );
+    let (code, err) = simulate(
+        &d,
+        "s.toml",
+        "[time]\nduration = 0.1\n[decks]\nshape = \"skew\"\nL1 = 30.0\nL2 = 30.0\nskew_deg = -30.0\n",
+    );
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("skew_deg = -30:") && err.contains("s.toml:7"),
+        "{err}"
+    );
+    let (code, err) = simulate(
+        &d,
+        "r.toml",
+        "[time]\nduration = 0.1\n[contact]\nlaw = \"kelvin\"\nrestitution = 1e-300\n",
+    );
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("restitution = 1e-300") && err.len() < 400,
+        "{err}"
+    );
+}
+
+/// A parse error quoting a 400 KB scenario line is cut to ~200 characters per line (simulate
+/// and study).
+#[test]
+fn parse_errors_do_not_echo_huge_lines() {
+    let d = tmp("long");
+    let long = "a".repeat(400_000);
+    let (code, err) = simulate(&d, "s.toml", &format!("[time]\nduration = \"{long}\"\n"));
+    assert_eq!(code, Some(2));
+    assert!(
+        err.len() < 2000 && err.contains("s.toml") && err.contains("line 2"),
+        "{}",
+        &err[..err.len().min(3000)]
+    );
+    assert!(err.contains("more characters"), "{err}");
+    std::fs::write(
+        d.join("st.toml"),
+        format!("[decks]\nwidth_m = \"{long}\"\n"),
+    )
+    .unwrap();
+    let (code, err) = run_in(&d, &["study", "st.toml", "--out", "os"]);
+    assert_eq!(code, Some(2));
+    assert!(
+        err.len() < 2000 && err.contains("line 2"),
+        "{}",
+        &err[..err.len().min(3000)]
+    );
+}

@@ -599,7 +599,7 @@ impl Scenario {
                 line,
                 column,
                 key,
-                message: e.message().trim().to_string(),
+                message: crate::input::shorten_lines(e.message().trim(), 200),
             }
         })?;
         let cx = Ctx { text, origin };
