@@ -143,7 +143,7 @@ pub const HISTORY_TEXT_BYTES_PER_ROW: u64 = 31 * 25;
 pub fn history_rows(n_steps: usize, history_stride: usize) -> u64 {
     let s = history_stride.max(1) as u64;
     let n = n_steps as u64;
-    (n / s).saturating_add(1 + u64::from(n % s != 0))
+    (n / s).saturating_add(1 + u64::from(!n.is_multiple_of(s)))
 }
 
 /// Estimated peak memory \[bytes\] of a run of `n_steps` steps keeping every
