@@ -2,7 +2,9 @@
 //!
 //! Builds the scenario exactly as `pounding simulate` does (same TOML, same validation), replaces
 //! its `[contact] law` by each law of `--laws` in turn (the other `[contact]` keys and their
-//! defaults apply to every law), runs [`pounding::sim::simulate`] and writes `compare.csv`, a
+//! defaults apply to every law that reads them; a key that a law does not read is ignored for
+//! that law, since one section serves all of them, whereas `simulate` refuses a key its one law
+//! does not read), runs [`pounding::sim::simulate`] and writes `compare.csv`, a
 //! readable table on stdout, `timing.json` (wall time per law) and two overlay plots:
 //! `joint_gap.png` (the smaller joint gap of the two ends) and `contact_force.png` (total joint
 //! force of the compliance laws), each with a full-duration panel and a zoom around the largest
