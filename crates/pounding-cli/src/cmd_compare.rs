@@ -2,7 +2,9 @@
 //!
 //! Builds the scenario exactly as `pounding simulate` does (same TOML, same validation), replaces
 //! its `[contact] law` by each law of `--laws` in turn (the other `[contact]` keys and their
-//! defaults apply to every law), runs [`pounding::sim::simulate`] and writes `compare.csv`, a
+//! defaults apply to every law that reads them; a key that a law does not read is ignored for
+//! that law, since one section serves all of them, whereas `simulate` refuses a key its one law
+//! does not read), runs [`pounding::sim::simulate`] and writes `compare.csv`, a
 //! readable table on stdout, `timing.json` (wall time per law) and two overlay plots:
 //! `joint_gap.png` (the smaller joint gap of the two ends) and `contact_force.png` (total joint
 //! force of the compliance laws), each with a full-duration panel and a zoom around the largest
@@ -78,11 +80,12 @@ pub fn run(args: Args) -> Result<ExitCode> {
     if let Some(dt) = args.dt
         && !(dt.is_finite() && dt > 0.0)
     {
-        bail!("invalid --dt {dt}: must be finite and > 0");
+        bail!("invalid --dt {}: must be finite and > 0", float_token(dt));
     }
     // Build (and validate) every law's setup before running anything.
     let base = cmd_simulate::load_scenario(args.scenario.as_deref())?;
     let mut setups = Vec::new();
+    let mut memory = 0u64;
     for l in &laws {
         let mut s = base
             .clone()
@@ -108,10 +111,24 @@ pub fn run(args: Args) -> Result<ExitCode> {
                 if args.dt.is_some() { " (--dt)" } else { "" }
             );
         }
-        s.settings
+        let n = s
+            .settings
             .step_count(d)
             .map_err(|e| anyhow!("{e} (--dt)"))?;
+        memory += pounding::sim::options::run_memory_bytes(n, s.settings.history_stride);
         setups.push(s);
+    }
+    // every law's history is kept for the plots: the runs together must fit
+    let limit = pounding::sim::options::MAX_RUN_MEMORY_BYTES;
+    if memory > limit {
+        bail!(
+            "run too large: the {} runs need an estimated {:.1} GiB of memory (history every \
+             0.5 ms), more than the limit {:.0} GiB: shorten [time] duration, compare fewer laws \
+             or use a larger --dt",
+            setups.len(),
+            memory as Real / (1u64 << 30) as Real,
+            limit as Real / (1u64 << 30) as Real
+        );
     }
     pounding::output::check_output_dir_free(&args.out)?;
     let mut runs = Vec::new();
@@ -262,14 +279,11 @@ fn panel<DB: DrawingBackend>(
             }
         }
     }
-    if let Some((y, _)) = hline {
+    if let Some((y, _)) = hline.filter(|h| h.0.is_finite()) {
         lo = lo.min(y);
         hi = hi.max(y);
     }
-    if !(lo.is_finite() && hi.is_finite()) {
-        lo = 0.0;
-        hi = 1.0;
-    }
+    let (lo, hi) = crate::figures::sane_range(lo, hi, (0.0, 1.0));
     let pad = ((hi - lo) * 0.08).max(1e-9);
     let mut chart = ChartBuilder::on(area)
         .caption(title, (FAMILY, 20))

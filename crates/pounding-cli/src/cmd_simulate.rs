@@ -102,6 +102,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
         return sim_batch::run(&args, &setup.problem, &setup.settings, setup.units, t_start);
     }
     pounding::output::check_output_dir_free(&args.out)?;
+    note_rounded_duration(&setup.settings);
     let t_sim = Instant::now();
     let sol = simulate(&setup.problem, &setup.settings).map_err(|e| anyhow!("{e}"))?;
     let sim_secs = t_sim.elapsed().as_secs_f64();
@@ -131,17 +132,17 @@ pub fn run(args: Args) -> Result<ExitCode> {
     )?;
     let s = &sol.summary;
     eprintln!(
-        "simulated {} s in {} steps ({:.1} ms): {} impacts, peak closing {:.4} m, opening {:.4} m, \
-         seat displacement {:.4} m{}, energy balance error {:.1e}; outputs in {}",
+        "simulated {} s in {} steps ({:.1} ms): {} impacts, peak closing {} m, opening {} m, \
+         seat displacement {} m{}, energy balance error {:.1e}; outputs in {}",
         float_token(sol.steps as Real * sol.dt),
         sol.steps,
         sim_secs * 1e3,
         s.impacts,
-        s.peak_joint_closing,
-        s.peak_joint_opening,
-        s.peak_seat_displacement,
+        bounded(s.peak_joint_closing, 4),
+        bounded(s.peak_joint_opening, 4),
+        bounded(s.peak_seat_displacement, 4),
         match s.unseating_time {
-            Some(t) => format!(" (UNSEATED at {t:.3} s)"),
+            Some(t) => format!(" (UNSEATED at {} s)", bounded(t, 3)),
             None => String::new(),
         },
         s.energy_balance_error,
@@ -186,6 +187,39 @@ pub(crate) fn warn_time_step(sol: &SimSolution) {
             "warning: dt = {} s is too coarse for the contact stiffness: the linearised contact \
              lasts {:.3e} s = {:.1} steps; use dt <= {:.2e} s (20 steps per contact)",
             sol.dt, a.contact_duration, a.steps_per_contact, a.max_step
+        );
+    }
+}
+
+/// `x` with `decimals` decimals for `|x| < 1e6`, in exponent form (`1.2346e190`) beyond, and
+/// `inf`/`-inf`/`nan` when not finite: a bounded width for the summary line of a diverged run.
+fn bounded(x: Real, decimals: usize) -> String {
+    if !x.is_finite() {
+        float_token(x)
+    } else if x.abs() < 1e6 {
+        format!("{x:.decimals$}")
+    } else {
+        format!("{x:.4e}")
+    }
+}
+
+/// A one-line note on stderr when the given `[time] duration` is not a whole number of steps:
+/// the run takes `⌈duration/dt⌉` steps, so it ends after the duration.
+fn note_rounded_duration(settings: &pounding::sim::SimSettings) {
+    let Some(d) = settings.duration else { return };
+    let Ok(n) = settings.step_count(d) else {
+        return;
+    };
+    let end = n as Real * settings.dt;
+    if (end - d).abs() > 1e-9 * d {
+        // 13 significant digits: 4 × 0.3 reads as 1.2
+        let end: Real = format!("{end:.12e}").parse().unwrap_or(end);
+        eprintln!(
+            "note: duration = {} s is not a multiple of dt = {} s: the run takes {n} steps, to \
+             t = {} s",
+            float_token(d),
+            float_token(settings.dt),
+            float_token(end)
         );
     }
 }

@@ -233,3 +233,25 @@ fn render<DB: DrawingBackend>(
         Job::Overview(k) => overview(study, *k, root),
     }
 }
+
+/// Largest magnitude of a plotted data bound: keeps `hi − lo`, the padding and the axis ends
+/// finite (an infinite axis range makes plotters' tick search loop forever).
+pub(crate) const AXIS_LIMIT: pounding::math::Real = 1e300;
+
+/// A sane data range for an axis: `(lo, hi)` clamped to `±`[`AXIS_LIMIT`] when both are finite
+/// (the callers skip non-finite values when they gather them), otherwise `default` (no finite
+/// value at all). The result is finite, so any padding of it stays finite.
+pub(crate) fn sane_range(
+    lo: pounding::math::Real,
+    hi: pounding::math::Real,
+    default: (pounding::math::Real, pounding::math::Real),
+) -> (pounding::math::Real, pounding::math::Real) {
+    if lo.is_finite() && hi.is_finite() {
+        (
+            lo.clamp(-AXIS_LIMIT, AXIS_LIMIT),
+            hi.clamp(-AXIS_LIMIT, AXIS_LIMIT),
+        )
+    } else {
+        default
+    }
+}

@@ -270,10 +270,12 @@ fn impulses(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
         };
         let mut lo: Real = 0.0;
         let mut hi: Real = 0.0;
-        for r in &sol.impacts {
-            lo = lo.min(val(r));
-            hi = hi.max(val(r));
+        for v in sol.impacts.iter().map(val).filter(|v| v.is_finite()) {
+            lo = lo.min(v);
+            hi = hi.max(v);
         }
+        // 0 is always in the range, so it is never the default
+        let (lo, hi) = crate::figures::sane_range(lo, hi, (0.0, 0.0));
         let pad = ((hi - lo) * 0.1).max(1.0);
         let title = if k == 0 {
             "Normal impulse P_N of each impacting contact (pushes the decks apart)"
@@ -303,13 +305,14 @@ fn impulses(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
             let c = mode_color(m);
             let rs: Vec<_> = sol.impacts.iter().filter(|r| r.mode == m).collect();
             chart
-                .draw_series(rs.iter().map(|r| {
+                .draw_series(rs.iter().filter(|r| val(r).is_finite()).map(|r| {
                     PathElement::new(vec![(r.time, 0.0), (r.time, val(r))], c.stroke_width(3))
                 }))
                 .map_err(e)?;
             chart
                 .draw_series(
                     rs.iter()
+                        .filter(|r| val(r).is_finite())
                         .map(|r| Circle::new((r.time, val(r)), 5, c.filled())),
                 )
                 .map_err(e)?

@@ -101,6 +101,15 @@ fn parse_err(source: &str, line: usize, message: impl Into<String>) -> GroundMot
     }
 }
 
+/// The message of a record value that is finite in the file but not once converted to m/s².
+fn converted_overflow(tok: &str, factor: Real) -> String {
+    format!(
+        "the value {tok} overflows when converted to m/s² (× {}): use a value of a physical \
+         magnitude",
+        crate::output::float_token(factor)
+    )
+}
+
 /// Parses a Fortran-style real (`.998E-03`, `1.5D-03`, `-.17e+01`).
 fn parse_real(tok: &str) -> Option<Real> {
     let v: Real = if tok.contains(['D', 'd']) {
@@ -225,6 +234,13 @@ impl Record {
                         format!("more values than NPTS = {npts}"),
                     ));
                 }
+                if !(v * factor).is_finite() {
+                    return Err(parse_err(
+                        source_name,
+                        k + 1,
+                        converted_overflow(tok, factor),
+                    ));
+                }
                 values.push(v * factor);
             }
         }
@@ -295,6 +311,13 @@ impl Record {
                             source_name,
                             k + 1,
                             format!("time {t} does not increase (previous {prev})"),
+                        ));
+                    }
+                    if !(a * units.factor()).is_finite() {
+                        return Err(parse_err(
+                            source_name,
+                            k + 1,
+                            converted_overflow(cols[1], units.factor()),
                         ));
                     }
                     times.push(t);

@@ -193,6 +193,26 @@ pub fn fnv1a64_hex(bytes: &[u8]) -> String {
     format!("{h:016x}")
 }
 
+/// `text` with every line longer than `max_chars` characters cut to its first `max_chars`
+/// followed by `… (N more characters)`: error messages that quote an input line (a parser's
+/// excerpt of a 400 KB line) stay readable.
+pub fn shorten_lines(text: &str, max_chars: usize) -> String {
+    let mut out = String::with_capacity(text.len().min(64 * 1024));
+    for (i, line) in text.split('\n').enumerate() {
+        if i > 0 {
+            out.push('\n');
+        }
+        let n = line.chars().count();
+        if n > max_chars {
+            out.extend(line.chars().take(max_chars));
+            out.push_str(&format!("… ({} more characters)", n - max_chars));
+        } else {
+            out.push_str(line);
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -54,7 +54,7 @@ fn batch_panel_range(k: usize, curves: &[BatchCurve], seat_length: Real) -> (Rea
     if !(hi.is_finite() && hi > lo) {
         hi = lo + 1.0;
     }
-    (lo, hi)
+    crate::figures::sane_range(lo, hi, (0.0, 1.0))
 }
 
 /// `batch.png`: peak response against intensity (PGA of the applied component) per record, four

@@ -20,11 +20,17 @@ pub(crate) fn layout<DB: DrawingBackend>(
     let abut_polys = abutment_polygons(problem);
     let (mut lo_x, mut hi_x, mut lo_y, mut hi_y) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     for &(x, y) in o1.iter().chain(&o2).chain(abut_polys.iter().flatten()) {
-        lo_x = lo_x.min(x);
-        hi_x = hi_x.max(x);
-        lo_y = lo_y.min(y);
-        hi_y = hi_y.max(y);
+        if x.is_finite() && y.is_finite() {
+            lo_x = lo_x.min(x);
+            hi_x = hi_x.max(x);
+            lo_y = lo_y.min(y);
+            hi_y = hi_y.max(y);
+        }
     }
+    let ((lo_x, hi_x), (lo_y, hi_y)) = (
+        crate::figures::sane_range(lo_x, hi_x, (0.0, 0.0)),
+        crate::figures::sane_range(lo_y, hi_y, (0.0, 0.0)),
+    );
     // equal scales: widen the smaller range to the drawing area's aspect ratio
     let (w, h) = root.dim_in_pixel();
     let pad = 0.08 * (hi_x - lo_x).max(hi_y - lo_y);

@@ -35,14 +35,12 @@ pub(crate) fn line_panel<DB: DrawingBackend>(
             }
         }
     }
-    for (y, _, _) in hlines {
+    for (y, _, _) in hlines.iter().filter(|h| h.0.is_finite()) {
         lo = lo.min(*y);
         hi = hi.max(*y);
     }
-    if !(lo.is_finite() && hi.is_finite()) {
-        lo = -1.0;
-        hi = 1.0;
-    }
+    // finite, clamped bounds: an infinite axis range makes plotters' tick search loop forever
+    let (lo, hi) = crate::figures::sane_range(lo, hi, (-1.0, 1.0));
     let pad = ((hi - lo) * 0.08).max(1e-12);
     let mut chart = ChartBuilder::on(area)
         .caption(title, (FAMILY, 22))

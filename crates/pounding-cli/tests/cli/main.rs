@@ -43,6 +43,7 @@ mod golden;
 mod harden;
 mod harden_input;
 mod harden_io;
+mod harden_round2;
 mod lcp;
 mod physics_check;
 mod shapes;

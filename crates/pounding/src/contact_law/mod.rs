@@ -82,7 +82,7 @@ use thiserror::Error;
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum ContactLawError {
     /// A parameter is not finite or out of its range.
-    #[error("invalid contact-law parameter {name} = {value}: {reason}")]
+    #[error("invalid contact-law parameter {name} = {}: {reason}", crate::output::float_token(*value))]
     InvalidParameter {
         /// The parameter (e.g. `k`, `restitution`, `delta_y`).
         name: String,

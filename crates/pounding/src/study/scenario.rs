@@ -463,6 +463,86 @@ impl Ctx<'_> {
     }
 }
 
+/// Checks the derived mass properties (area, mass, polar inertia) of every deck at load time, so
+/// that an overflow or underflow (e.g. `density_kg_m3 = 1e300` on large decks) names the scenario
+/// key and its line instead of failing during the run. Mass and inertia grow with every
+/// dimension, so the extremes of each list suffice; the run validates every configuration again.
+fn check_deck_mass_properties(
+    s: &Scenario,
+    cx: &Ctx,
+    decks: &RawDecks,
+) -> Result<(), ScenarioError> {
+    use crate::geometry::GeometryError;
+    use crate::shape::Deck;
+    use crate::shape::{SkewedDeck, StraightDeck};
+    let span = |v: Option<Range<usize>>| v.unwrap_or(0..0);
+    let scalar = |v: &S<Real>| span(v.as_ref().map(|v| v.span()));
+    let list = |v: &S<Vec<Real>>| span(v.as_ref().map(|v| v.span()));
+    // (scenario key, span) of a deck's parameter named by the geometry error
+    let key_of = |name: &str, j: usize| -> (&'static str, Range<usize>) {
+        match (name, j) {
+            ("density", _) => ("decks.density_kg_m3", scalar(&decks.density_kg_m3)),
+            ("thickness", _) => ("decks.thickness_m", scalar(&decks.thickness_m)),
+            ("width", _) => ("decks.width_m", scalar(&decks.width_m)),
+            ("skew", _) => ("decks.skew_deg", list(&decks.skew_deg)),
+            ("R", 1) => ("decks.r1_m", list(&decks.r1_m)),
+            ("R", _) => ("decks.r2_m", list(&decks.r2_m)),
+            ("beta", 1) => ("decks.beta1_deg", list(&decks.beta1_deg)),
+            ("beta", _) => ("decks.beta2_deg", list(&decks.beta2_deg)),
+            (_, 1) => ("decks.l1_m", list(&decks.l1_m)),
+            _ => ("decks.l2_m", list(&decks.l2_m)),
+        }
+    };
+    let (w, t, rho) = (s.width, s.thickness, s.density);
+    for j in [1usize, 2] {
+        let mut results: Vec<Result<(), GeometryError>> = Vec::new();
+        match s.shape {
+            StudyShape::Curved => {
+                let (rs, bs) = if j == 1 {
+                    (&s.r1_m, &s.beta1_deg)
+                } else {
+                    (&s.r2_m, &s.beta2_deg)
+                };
+                for r in extremes(rs) {
+                    for b in extremes(bs) {
+                        results.push(Deck::new(r, b.to_radians(), w, t, rho).map(|_| ()));
+                    }
+                }
+            }
+            shape => {
+                let ls = if j == 1 { &s.l1_m } else { &s.l2_m };
+                for l in extremes(ls) {
+                    if shape == StudyShape::Straight {
+                        results.push(StraightDeck::new(l, w, t, rho).map(|_| ()));
+                    } else {
+                        for sk in extremes(&s.skew_deg) {
+                            results
+                                .push(SkewedDeck::new(l, w, sk.to_radians(), t, rho).map(|_| ()));
+                        }
+                    }
+                }
+            }
+        }
+        if let Some(Err(GeometryError::InvalidParameter {
+            name,
+            value,
+            reason,
+        })) = results.into_iter().find(Result::is_err)
+        {
+            let (key, span) = key_of(&name, j);
+            return Err(cx.invalid(span, key, fmt_num(value), &format!("deck {j}: {reason}")));
+        }
+    }
+    Ok(())
+}
+
+/// The smallest and the largest value of a list (the list itself when it has one value).
+fn extremes(xs: &[Real]) -> Vec<Real> {
+    let lo = xs.iter().copied().fold(Real::INFINITY, Real::min);
+    let hi = xs.iter().copied().fold(Real::NEG_INFINITY, Real::max);
+    if lo == hi { vec![lo] } else { vec![lo, hi] }
+}
+
 fn fmt_num(x: Real) -> String {
     crate::output::float_token(x)
 }
@@ -488,7 +568,7 @@ impl Scenario {
                 line,
                 column,
                 key,
-                message: e.message().trim().to_string(),
+                message: crate::input::shorten_lines(e.message().trim(), 200),
             }
         })?;
         let cx = Ctx { text, origin };
@@ -732,7 +812,18 @@ impl Scenario {
             }
         };
         let figures = output.figures.map_or(d.output.figures, |s| *s.get_ref());
-        let svg = output.svg.map_or(d.output.svg, |s| *s.get_ref());
+        let svg = output.svg.as_ref().map_or(d.output.svg, |s| *s.get_ref());
+        if let Some(s) = &output.svg
+            && svg
+            && !figures
+        {
+            return Err(cx.invalid(
+                s.span(),
+                "output.svg",
+                "true".into(),
+                "SVG copies of the figures need figures = true (output.figures is false)",
+            ));
+        }
         let region_map_samples = match &output.region_map_samples {
             None => d.output.region_map_samples,
             Some(s) => {
@@ -774,6 +865,7 @@ impl Scenario {
                 region_map_samples,
             },
         };
+        check_deck_mass_properties(&scenario, &cx, &decks)?;
         scenario.check_size(origin).map_err(|e| match e {
             // Point at the finer θ range the user wrote, if any (the usual culprit).
             ScenarioError::Invalid {

@@ -13,6 +13,7 @@ mod ground_motion;
 mod harden;
 mod harden_input;
 mod harden_io;
+mod harden_round2;
 mod impact;
 mod impact_report;
 mod lcp;

@@ -9,7 +9,7 @@ use crate::geometry::GeometryError;
 use crate::ground_motion::{
     AccelUnits, EL_CENTRO_180_AT2, EL_CENTRO_270_AT2, GroundMotion, GroundMotionError, Record,
 };
-use crate::math::Vector;
+use crate::math::{Real, Vector};
 use crate::output::float_token;
 use crate::pair::SArrangement;
 use crate::shape::Deck;
@@ -129,7 +129,30 @@ fn deck_shapes(src: &Src, d: &DecksSec) -> Result<Option<[DeckShape; 2]>, Scenar
                 })
             };
             let (l1, l2) = (len(d.L1, "L1")?, len(d.L2, "L2")?);
-            let skew = d.skew_deg.unwrap_or(0.0).to_radians();
+            let skew = match d.skew_deg {
+                // checked in degrees, so that the message shows the user's value
+                Some(s) if !(s.is_finite() && (0.0..90.0).contains(&s)) => {
+                    return Err(src.invalid(
+                        format!(
+                            "invalid skew_deg = {}: the skew angle must lie in [0, 90) degrees",
+                            crate::output::float_token(s)
+                        ),
+                        decks("skew_deg"),
+                    ));
+                }
+                Some(s) => s.to_radians(),
+                None if shape == "skew" => {
+                    return Err(src.key_error(
+                        format!(
+                            "shape = \"skew\" needs skew_deg (the skew angle in [0, 90) deg, in \
+                             [decks]; use shape = \"straight\" for 0) — set by {}",
+                            src.at(decks("shape"))
+                        ),
+                        &[decks("shape")],
+                    ));
+                }
+                None => 0.0,
+            };
             let mk = |l: f64| {
                 if shape == "straight" {
                     DeckShape::Straight(StraightDeck {
@@ -407,6 +430,32 @@ pub(super) fn build(sc: &Scenario) -> Result<SimSetup, ScenarioError> {
                 note: String::new(),
             }
         })?;
+        if !sc.batch
+            && let Err(_) = settings.check_memory(d)
+        {
+            use crate::sim::options::{MAX_RUN_MEMORY_BYTES, min_history_stride, run_memory_bytes};
+            let n = settings.step_count(d).unwrap_or(usize::MAX);
+            let gib = |b: u64| b as Real / (1u64 << 30) as Real;
+            let advice = match min_history_stride(n) {
+                Some(s) => format!("set history_every >= {s} (or shorten the run)"),
+                None => "shorten the run or use a larger dt".into(),
+            };
+            return Err(ScenarioError::Invalid {
+                message: format!(
+                    "run too large: {n} steps with history_every = {} need an estimated {:.1} GiB \
+                     of memory, more than the limit {:.0} GiB; {advice}",
+                    settings.history_stride,
+                    gib(run_memory_bytes(n, settings.history_stride)),
+                    gib(MAX_RUN_MEMORY_BYTES)
+                ),
+                at: vec![
+                    src.at(time("history_every")),
+                    src.at(time("duration")),
+                    src.at(time("dt")),
+                ],
+                note: String::new(),
+            });
+        }
         if settings.dt > d {
             return Err(src.invalid(
                 format!(

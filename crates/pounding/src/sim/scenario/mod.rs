@@ -109,7 +109,8 @@ impl Scenario {
     pub fn from_toml(text: &str, origin: &str) -> Result<Self, ScenarioError> {
         let raw: sections::Raw = toml::from_str(text).map_err(|e| ScenarioError::Syntax {
             origin: origin.to_string(),
-            message: e.to_string(),
+            // a 400 KB offending line is not echoed whole
+            message: crate::input::shorten_lines(&e.to_string(), 200),
         })?;
         Ok(Self {
             src: Src {

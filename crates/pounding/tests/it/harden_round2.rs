@@ -1,0 +1,82 @@
+//! Hardening, second round (issue 15): the memory estimate that lets front ends refuse runs too
+//! large to hold in memory.
+
+use pounding::ground_motion::el_centro_1940;
+use pounding::sim::options::{
+    GROUND_BYTES_PER_STEP, HISTORY_BYTES_PER_ROW, MAX_RUN_MEMORY_BYTES, history_rows,
+    min_history_stride, run_memory_bytes,
+};
+use pounding::sim::{History, SimError, SimModel, SimProblem, SimSettings, simulate};
+
+/// The row count and the bytes per row of the estimate are those of a real run's [`History`]
+/// (destructured exhaustively: a new history field fails to compile here until it is counted).
+#[test]
+fn memory_estimate_counts_the_rows_and_bytes_a_run_keeps() {
+    let problem = SimProblem::at_rest(SimModel::default_bridge(), el_centro_1940());
+    for stride in [1usize, 7, 10, 50, 1000] {
+        let settings = SimSettings {
+            duration: Some(0.05),
+            history_stride: stride,
+            ..SimSettings::default()
+        };
+        let sol = simulate(&problem, &settings).unwrap();
+        assert_eq!(sol.steps, 50);
+        let History {
+            t,
+            q,
+            u,
+            gaps,
+            end_gaps,
+            slip,
+            energy,
+            contact_force,
+            abutment_gaps,
+        } = &sol.history;
+        assert_eq!(
+            t.len() as u64,
+            history_rows(sol.steps, stride),
+            "stride {stride}"
+        );
+        let row = size_of_val(&t[0])
+            + size_of_val(&q[0])
+            + size_of_val(&u[0])
+            + size_of_val(&gaps[0])
+            + size_of_val(&end_gaps[0])
+            + size_of_val(&slip[0])
+            + size_of_val(&energy[0])
+            + size_of::<[f64; 2]>() // contact_force (empty for rigid contact)
+            + size_of_val(&abutment_gaps[0]);
+        assert!(contact_force.is_empty());
+        assert_eq!(row as u64, HISTORY_BYTES_PER_ROW);
+    }
+    assert_eq!(GROUND_BYTES_PER_STEP, 32);
+}
+
+/// The 5 M-step, every-step history the tester ran (> 1 GB resident) is refused with the
+/// smallest stride that fits; that stride is accepted, one less is not.
+#[test]
+fn runs_beyond_the_memory_limit_are_refused_with_the_stride_that_fits() {
+    let mut settings = SimSettings {
+        dt: 1e-3,
+        history_stride: 1,
+        ..SimSettings::default()
+    };
+    let err = settings.check_memory(5000.0).unwrap_err();
+    let SimError::InvalidParameter { name, reason, .. } = &err else {
+        panic!("{err}");
+    };
+    assert_eq!(name, "history_stride");
+    let s = min_history_stride(5_000_000).unwrap();
+    assert!(s > 1 && reason.contains(&format!("at least {s}")), "{err}");
+    assert!(run_memory_bytes(5_000_000, s) <= MAX_RUN_MEMORY_BYTES);
+    assert!(run_memory_bytes(5_000_000, s - 1) > MAX_RUN_MEMORY_BYTES);
+    settings.history_stride = s;
+    assert!(settings.check_memory(5000.0).is_ok());
+    // the El Centro default run is far below the limit
+    settings.history_stride = 10;
+    assert!(settings.check_memory(53.76).unwrap() < 100 << 20);
+    // near the step limit, the ground samples alone do not fit: no stride helps
+    assert_eq!(min_history_stride(pounding::sim::MAX_STEPS), None);
+    // the estimate never overflows
+    assert_eq!(run_memory_bytes(usize::MAX, 1), u64::MAX);
+}
