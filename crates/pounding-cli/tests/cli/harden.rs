@@ -1,13 +1,9 @@
 //! Hardening: absurd sizes, unchecked claims, overflowing derived quantities, diverged runs.
 
-use crate::pounding;
 use std::path::{Path, PathBuf};
 
 fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("pounding-harden-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    crate::scratch_dir("harden", name)
 }
 
 fn s(p: &Path) -> &str {
@@ -15,12 +11,7 @@ fn s(p: &Path) -> &str {
 }
 
 fn run(args: &[&str]) -> (Option<i32>, String, String) {
-    let o = pounding().args(args).output().unwrap();
-    (
-        o.status.code(),
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        String::from_utf8_lossy(&o.stderr).into_owned(),
-    )
+    crate::run_capture(args)
 }
 
 #[test]

@@ -5,10 +5,7 @@ use crate::pounding;
 use std::path::PathBuf;
 
 fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("pounding-hin-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    crate::scratch_dir("hin", name)
 }
 
 /// Runs `pounding ARGS` in `dir`; returns (exit code, stderr).

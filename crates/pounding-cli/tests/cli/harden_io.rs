@@ -2,14 +2,10 @@
 //! per output directory, input size and thread limits, stale and partial outputs, strict JSON,
 //! honest benchmark residuals.
 
-use crate::pounding;
 use std::path::{Path, PathBuf};
 
 fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("pounding-hio-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    crate::scratch_dir("hio", name)
 }
 
 fn s(p: &Path) -> &str {
@@ -17,12 +13,7 @@ fn s(p: &Path) -> &str {
 }
 
 fn run(args: &[&str]) -> (Option<i32>, String, String) {
-    let o = pounding().args(args).output().unwrap();
-    (
-        o.status.code(),
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        String::from_utf8_lossy(&o.stderr).into_owned(),
-    )
+    crate::run_capture(args)
 }
 
 fn names(dir: &Path) -> Vec<String> {

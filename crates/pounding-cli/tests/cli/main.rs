@@ -21,6 +21,25 @@ pub fn skipped(reason: &str) {
     }
 }
 
+/// A fresh, empty scratch directory `pounding-{prefix}-{pid}-{name}` under the system's temporary
+/// directory (shared by the test modules).
+pub fn scratch_dir(prefix: &str, name: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!("pounding-{prefix}-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// Runs `pounding ARGS`: (exit code, stdout, stderr).
+pub fn run_capture(args: &[&str]) -> (Option<i32>, String, String) {
+    let o = pounding().args(args).output().unwrap();
+    (
+        o.status.code(),
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
 /// The built `pounding` binary.
 pub fn pounding() -> Command {
     Command::new(env!("CARGO_BIN_EXE_pounding"))
