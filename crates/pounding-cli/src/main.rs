@@ -1,5 +1,7 @@
 //! `pounding` — command-line interface. Each subcommand lives in its own module.
 
+#![warn(missing_docs)]
+
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
