@@ -205,50 +205,7 @@ pub fn merge(parts: &[ShardFiles]) -> Result<Merged, StudyError> {
     let total = layout.total();
     let mut rows: Vec<Option<Row>> = vec![None; total];
     for (shard, p, rows_total, rows_declared) in parsed {
-        let mf = format!("{}/shard.json", p.origin);
-        if rows_total != total as u64 {
-            return Err(err(
-                &mf,
-                format!("rows_total = {rows_total}, but its scenario has {total} rows"),
-            ));
-        }
-        let share = shard.share(total) as u64;
-        if rows_declared != share {
-            return Err(err(
-                &mf,
-                format!(
-                    "rows = {rows_declared}, but shard {}/{} of {total} rows has {share}",
-                    shard.index, shard.count
-                ),
-            ));
-        }
-        let rf = format!("{}/rows.csv", p.origin);
-        let mut lines = p.rows.lines();
-        let header = lines.next().unwrap_or("");
-        if header.strip_prefix("row,") != Some(bounds_header(&scenario).as_str()) {
-            return Err(err(&rf, "rows file has the wrong header"));
-        }
-        for line in lines {
-            let (idx, rest) = line
-                .split_once(',')
-                .ok_or_else(|| err(&rf, "malformed row line"))?;
-            let idx: usize = idx
-                .parse()
-                .map_err(|_| err(&rf, format!("bad row index {idx:?}")))?;
-            if idx >= total || !shard.contains(idx) {
-                return Err(err(
-                    &rf,
-                    format!(
-                        "row {idx} does not belong to shard {}/{}",
-                        shard.index, shard.count
-                    ),
-                ));
-            }
-            if rows[idx].is_some() {
-                return Err(err(&rf, format!("row {idx} appears twice")));
-            }
-            rows[idx] = Some(parse_bounds_line(&scenario, idx, rest).map_err(|e| err(&rf, e))?);
-        }
+        fill_rows(&scenario, shard, p, rows_total, rows_declared, &mut rows)?;
     }
     let rows: Vec<Row> = rows
         .into_iter()
@@ -262,4 +219,62 @@ pub fn merge(parts: &[ShardFiles]) -> Result<Merged, StudyError> {
         scenario,
         rows,
     })
+}
+
+/// Checks one shard's counts against the scenario and places its rows (global index order) into
+/// `rows`, refusing rows that do not belong to the shard or appear twice.
+fn fill_rows(
+    scenario: &Scenario,
+    shard: Shard,
+    p: &ShardFiles,
+    rows_total: u64,
+    rows_declared: u64,
+    rows: &mut [Option<Row>],
+) -> Result<(), StudyError> {
+    let total = rows.len();
+    let mf = format!("{}/shard.json", p.origin);
+    if rows_total != total as u64 {
+        return Err(err(
+            &mf,
+            format!("rows_total = {rows_total}, but its scenario has {total} rows"),
+        ));
+    }
+    let share = shard.share(total) as u64;
+    if rows_declared != share {
+        return Err(err(
+            &mf,
+            format!(
+                "rows = {rows_declared}, but shard {}/{} of {total} rows has {share}",
+                shard.index, shard.count
+            ),
+        ));
+    }
+    let rf = format!("{}/rows.csv", p.origin);
+    let mut lines = p.rows.lines();
+    let header = lines.next().unwrap_or("");
+    if header.strip_prefix("row,") != Some(bounds_header(scenario).as_str()) {
+        return Err(err(&rf, "rows file has the wrong header"));
+    }
+    for line in lines {
+        let (idx, rest) = line
+            .split_once(',')
+            .ok_or_else(|| err(&rf, "malformed row line"))?;
+        let idx: usize = idx
+            .parse()
+            .map_err(|_| err(&rf, format!("bad row index {idx:?}")))?;
+        if idx >= total || !shard.contains(idx) {
+            return Err(err(
+                &rf,
+                format!(
+                    "row {idx} does not belong to shard {}/{}",
+                    shard.index, shard.count
+                ),
+            ));
+        }
+        if rows[idx].is_some() {
+            return Err(err(&rf, format!("row {idx} appears twice")));
+        }
+        rows[idx] = Some(parse_bounds_line(scenario, idx, rest).map_err(|e| err(&rf, e))?);
+    }
+    Ok(())
 }
