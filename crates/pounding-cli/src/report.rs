@@ -84,7 +84,62 @@ pub fn report_html(study: &Study, groups: &[FigureGroup], figures_drawn: bool) -
     );
     h.push_str("<nav><a href=\"#claims\">Claims of the paper</a><a href=\"#summary\">Summary table</a><a href=\"#figures\">Figures</a><a href=\"#scenario\">Scenario</a><a href=\"#conventions\">Conventions</a></nav>\n");
 
-    // Claims
+    claims_section(&mut h, study);
+    summary_section(&mut h, study);
+    figures_section(&mut h, study, groups, figures_drawn);
+
+    // Scenario and conventions
+    let _ = writeln!(
+        h,
+        "<h2 id=\"scenario\">Scenario</h2>\n<pre>{}</pre>",
+        esc(&study.scenario_text)
+    );
+    h.push_str("<h2 id=\"conventions\">Conventions</h2>\n<ul>\n\
+<li>R is the centre-line radius; the decks form an S with centres of curvature on the joint line; θ counter-clockwise positive; the contact frame is attached to the struck face, the normal points from deck 2 to deck 1 and the tangent toward deck 1's radially outward side.</li>\n\
+<li>Outward slip (γ_T⁺ &gt; 0, r &lt; L): after impact each deck slides away from its own centre of curvature; inward slip (r &gt; U): toward it.</li>\n\
+<li>Joint-anchored placement: each deck turns about its own face midpoint; the first contact of a cell is decided geometrically (deck 1's inner corner iff θ1 &lt; −|θ2|, outer iff θ1 &gt; |θ2|, likewise for deck 2). Bounds are computed for every cell of every case; the flags mark physically possible ones.</li>\n\
+<li>Degenerate cells (rows with <code>nan</code>): θ1 = θ2 is <em>parallel-faces</em> (line contact, including θ1 = θ2 = 0), θ1 = −θ2 ≠ 0 is <em>corner-corner</em> (normal not unique); the single-impact model does not apply there.</li>\n\
+<li>lcp_agrees: Lemke's method on the single-contact impact LCP reproduces the analytic mode just below L, mid-interval and just above U.</li>\n</ul>\n</body>\n</html>\n");
+    h
+}
+
+/// Where the paper's Figures 3–8 are in this report (when the scenario contains their geometries).
+fn paper_map(study: &Study, groups: &[FigureGroup]) -> String {
+    let s = &study.scenario;
+    let mut rows = String::new();
+    for (fig, b1, b2) in [
+        (3, 60.0, 60.0),
+        (4, 60.0, 90.0),
+        (5, 90.0, 60.0),
+        (6, 90.0, 90.0),
+    ] {
+        if !(s.beta1_deg.contains(&b1) && s.beta2_deg.contains(&b2)) {
+            continue;
+        }
+        let prefix = format!("g-b1-{}-b2-{}-", float_token(b1), float_token(b2));
+        let links: Vec<String> = groups
+            .iter()
+            .filter(|g| g.id.starts_with(&prefix))
+            .map(|g| format!("<a href=\"#{}\">{}</a>", esc(&g.id), esc(&g.title)))
+            .collect();
+        let _ = writeln!(
+            rows,
+            "<tr><td class=\"l\">Figure {fig} (β1 = {b1}°, β2 = {b2}°)</td><td class=\"l\">surface plots of {}</td></tr>",
+            links.join(", ")
+        );
+    }
+    if !rows.is_empty() {
+        rows.push_str("<tr><td class=\"l\">Figures 7 and 8</td><td class=\"l\">the region maps of every geometry: left column = deck 1 strikes (Figure 7), right column = deck 2 strikes (Figure 8)</td></tr>\n");
+        format!(
+            "<table>\n<tr><th class=\"l\">Paper</th><th class=\"l\">Here</th></tr>\n{rows}</table>\n"
+        )
+    } else {
+        String::new()
+    }
+}
+
+/// The paper's claims against this run (one table row per claim).
+fn claims_section(h: &mut String, study: &Study) {
     h.push_str("<h2 id=\"claims\">The paper's claims against this run</h2>\n<table>\n<tr><th class=\"l\">Paper</th><th class=\"l\">This run measured</th><th class=\"l\">Verdict</th></tr>\n");
     for c in study.claims() {
         let class = match c.verdict {
@@ -102,8 +157,10 @@ pub fn report_html(study: &Study, groups: &[FigureGroup], figures_drawn: bool) -
         );
     }
     h.push_str("</table>\n<p>Verdicts follow from the metrics stated, computed under the project's specification (its conventions and modelling choices: joint-anchored placement, the σ mode of the scenario); where the numbers contradict the paper the table says so. The fractions are shares of the ratio range over first-contact cells only (summary.csv); stick shares do not depend on the sign convention of the tangent (reversing it maps [L, U] to [−U, −L]).</p>\n");
+}
 
-    // Summary table
+/// The summary table per configuration and case.
+fn summary_section(h: &mut String, study: &Study) {
     h.push_str("<h2 id=\"summary\">Summary per configuration and case</h2>\n<p>Over first-contact cells: mean shares of the ratio range with outward slip, stick and inward slip; extremes of L and U; LCP disagreements over all cells.</p>\n<div class=\"scroll\"><table>\n<tr>");
     let curved = study.scenario.shape == StudyShape::Curved;
     let geo_heads = if curved {
@@ -161,8 +218,10 @@ pub fn report_html(study: &Study, groups: &[FigureGroup], figures_drawn: bool) -
         );
     }
     h.push_str("</table></div>\n");
+}
 
-    // Figures
+/// Every figure group, or a note when figures were not drawn.
+fn figures_section(h: &mut String, study: &Study, groups: &[FigureGroup], figures_drawn: bool) {
     h.push_str("<h2 id=\"figures\">Figures</h2>\n");
     if !figures_drawn {
         h.push_str("<p>Figures were not drawn in this run (<code>figures = false</code> or <code>--no-figures</code>).</p>\n");
@@ -189,54 +248,5 @@ pub fn report_html(study: &Study, groups: &[FigureGroup], figures_drawn: bool) -
                 );
             }
         }
-    }
-
-    // Scenario and conventions
-    let _ = writeln!(
-        h,
-        "<h2 id=\"scenario\">Scenario</h2>\n<pre>{}</pre>",
-        esc(&study.scenario_text)
-    );
-    h.push_str("<h2 id=\"conventions\">Conventions</h2>\n<ul>\n\
-<li>R is the centre-line radius; the decks form an S with centres of curvature on the joint line; θ counter-clockwise positive; the contact frame is attached to the struck face, the normal points from deck 2 to deck 1 and the tangent toward deck 1's radially outward side.</li>\n\
-<li>Outward slip (γ_T⁺ &gt; 0, r &lt; L): after impact each deck slides away from its own centre of curvature; inward slip (r &gt; U): toward it.</li>\n\
-<li>Joint-anchored placement: each deck turns about its own face midpoint; the first contact of a cell is decided geometrically (deck 1's inner corner iff θ1 &lt; −|θ2|, outer iff θ1 &gt; |θ2|, likewise for deck 2). Bounds are computed for every cell of every case; the flags mark physically possible ones.</li>\n\
-<li>Degenerate cells (rows with <code>nan</code>): θ1 = θ2 is <em>parallel-faces</em> (line contact, including θ1 = θ2 = 0), θ1 = −θ2 ≠ 0 is <em>corner-corner</em> (normal not unique); the single-impact model does not apply there.</li>\n\
-<li>lcp_agrees: Lemke's method on the single-contact impact LCP reproduces the analytic mode just below L, mid-interval and just above U.</li>\n</ul>\n</body>\n</html>\n");
-    h
-}
-
-/// Where the paper's Figures 3–8 are in this report (when the scenario contains their geometries).
-fn paper_map(study: &Study, groups: &[FigureGroup]) -> String {
-    let s = &study.scenario;
-    let mut rows = String::new();
-    for (fig, b1, b2) in [
-        (3, 60.0, 60.0),
-        (4, 60.0, 90.0),
-        (5, 90.0, 60.0),
-        (6, 90.0, 90.0),
-    ] {
-        if !(s.beta1_deg.contains(&b1) && s.beta2_deg.contains(&b2)) {
-            continue;
-        }
-        let prefix = format!("g-b1-{}-b2-{}-", float_token(b1), float_token(b2));
-        let links: Vec<String> = groups
-            .iter()
-            .filter(|g| g.id.starts_with(&prefix))
-            .map(|g| format!("<a href=\"#{}\">{}</a>", esc(&g.id), esc(&g.title)))
-            .collect();
-        let _ = writeln!(
-            rows,
-            "<tr><td class=\"l\">Figure {fig} (β1 = {b1}°, β2 = {b2}°)</td><td class=\"l\">surface plots of {}</td></tr>",
-            links.join(", ")
-        );
-    }
-    if !rows.is_empty() {
-        rows.push_str("<tr><td class=\"l\">Figures 7 and 8</td><td class=\"l\">the region maps of every geometry: left column = deck 1 strikes (Figure 7), right column = deck 2 strikes (Figure 8)</td></tr>\n");
-        format!(
-            "<table>\n<tr><th class=\"l\">Paper</th><th class=\"l\">Here</th></tr>\n{rows}</table>\n"
-        )
-    } else {
-        String::new()
     }
 }
