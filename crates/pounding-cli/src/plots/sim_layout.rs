@@ -18,31 +18,11 @@ pub(crate) fn layout<DB: DrawingBackend>(
     let bodies = m.deck_bodies();
     let (o1, o2) = (deck_outline(problem, 1), deck_outline(problem, 2));
     let abut_polys = abutment_polygons(problem);
-    let (mut lo_x, mut hi_x, mut lo_y, mut hi_y) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
-    for &(x, y) in o1.iter().chain(&o2).chain(abut_polys.iter().flatten()) {
-        if x.is_finite() && y.is_finite() {
-            lo_x = lo_x.min(x);
-            hi_x = hi_x.max(x);
-            lo_y = lo_y.min(y);
-            hi_y = hi_y.max(y);
-        }
-    }
-    let ((lo_x, hi_x), (lo_y, hi_y)) = (
-        crate::figures::sane_range(lo_x, hi_x, (0.0, 0.0)),
-        crate::figures::sane_range(lo_y, hi_y, (0.0, 0.0)),
-    );
-    // equal scales: widen the smaller range to the drawing area's aspect ratio
     let (w, h) = root.dim_in_pixel();
-    let pad = 0.08 * (hi_x - lo_x).max(hi_y - lo_y);
-    let (cx, cy) = ((lo_x + hi_x) / 2.0, (lo_y + hi_y) / 2.0);
-    let mut half_x = (hi_x - lo_x) / 2.0 + pad;
-    let mut half_y = (hi_y - lo_y) / 2.0 + pad;
-    let aspect = (w as Real - 80.0) / (h as Real - 100.0);
-    if half_x / half_y < aspect {
-        half_x = half_y * aspect;
-    } else {
-        half_y = half_x / aspect;
-    }
+    let (cx, cy, half_x, half_y) = view_box(
+        o1.iter().chain(&o2).chain(abut_polys.iter().flatten()),
+        (w as Real - 80.0) / (h as Real - 100.0),
+    );
     let mut chart = ChartBuilder::on(root)
         .caption(
             format!(
@@ -198,4 +178,37 @@ fn abutment_polygons(problem: &SimProblem) -> Vec<Vec<(Real, Real)>> {
             )
         })
         .collect()
+}
+
+/// Centre and half-extents `(cx, cy, half_x, half_y)` of a view of `points` with 8 % padding and
+/// equal scales: the smaller range is widened to the drawing area's aspect ratio `aspect`
+/// (non-finite points are skipped, so the view is always finite).
+fn view_box<'a>(
+    points: impl Iterator<Item = &'a (Real, Real)>,
+    aspect: Real,
+) -> (Real, Real, Real, Real) {
+    let (mut lo_x, mut hi_x, mut lo_y, mut hi_y) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    for &(x, y) in points {
+        if x.is_finite() && y.is_finite() {
+            lo_x = lo_x.min(x);
+            hi_x = hi_x.max(x);
+            lo_y = lo_y.min(y);
+            hi_y = hi_y.max(y);
+        }
+    }
+    let ((lo_x, hi_x), (lo_y, hi_y)) = (
+        crate::figures::sane_range(lo_x, hi_x, (0.0, 0.0)),
+        crate::figures::sane_range(lo_y, hi_y, (0.0, 0.0)),
+    );
+    // equal scales: widen the smaller range to the drawing area's aspect ratio
+    let pad = 0.08 * (hi_x - lo_x).max(hi_y - lo_y);
+    let (cx, cy) = ((lo_x + hi_x) / 2.0, (lo_y + hi_y) / 2.0);
+    let mut half_x = (hi_x - lo_x) / 2.0 + pad;
+    let mut half_y = (hi_y - lo_y) / 2.0 + pad;
+    if half_x / half_y < aspect {
+        half_x = half_y * aspect;
+    } else {
+        half_y = half_x / aspect;
+    }
+    (cx, cy, half_x, half_y)
 }
