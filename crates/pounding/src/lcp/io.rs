@@ -466,40 +466,37 @@ pub fn parse_lcpset(text: &str, file: &str) -> Result<Vec<LcpEntry>, LcpIoError>
                 ));
             }
         };
-        let (ln, mt) = next("`M <n*n numbers>`")?;
-        let m = match mt.split_first() {
-            Some((&"M", rest)) => {
-                if rest.len() != n * n {
-                    return Err(perr(
-                        ln,
-                        &format!("n*n = {} entries of M (n = {n})", n * n),
-                        &format!("{}", rest.len()),
-                    ));
+        // `TAG v1 ... vN`: a tagged line of exactly `want` finite numbers
+        let tagged = |(ln, t): (usize, Vec<&str>),
+                      tag: &str,
+                      form: &str,
+                      want: usize,
+                      count_what: String|
+         -> Result<Vec<f64>, LcpIoError> {
+            match t.split_first() {
+                Some((&x, rest)) if x == tag => {
+                    if rest.len() != want {
+                        return Err(perr(ln, &count_what, &format!("{}", rest.len())));
+                    }
+                    nums(ln, rest, tag)
                 }
-                nums(ln, rest, "M")?
-            }
-            _ => {
-                return Err(perr(
-                    ln,
-                    "`M <n*n numbers>`",
-                    &format!("`{}`", mt.join(" ")),
-                ));
+                _ => Err(perr(ln, form, &format!("`{}`", t.join(" ")))),
             }
         };
-        let (ln, qt) = next("`q <n numbers>`")?;
-        let q = match qt.split_first() {
-            Some((&"q", rest)) => {
-                if rest.len() != n {
-                    return Err(perr(
-                        ln,
-                        &format!("n = {n} entries of q"),
-                        &format!("{}", rest.len()),
-                    ));
-                }
-                nums(ln, rest, "q")?
-            }
-            _ => return Err(perr(ln, "`q <n numbers>`", &format!("`{}`", qt.join(" ")))),
-        };
+        let m = tagged(
+            next("`M <n*n numbers>`")?,
+            "M",
+            "`M <n*n numbers>`",
+            n * n,
+            format!("n*n = {} entries of M (n = {n})", n * n),
+        )?;
+        let q = tagged(
+            next("`q <n numbers>`")?,
+            "q",
+            "`q <n numbers>`",
+            n,
+            format!("n = {n} entries of q"),
+        )?;
         let problem = LcpProblem::new(m, q).map_err(|cause| LcpIoError::Invalid {
             file: file.to_string(),
             line: pl,
