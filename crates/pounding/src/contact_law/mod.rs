@@ -24,6 +24,7 @@
 //! | [`HertzDamp`] | `F = max(0, k_h δ^{3/2} + ζ δ^{3/2} δ̇)` | `k_h`, `ζ` (or `χ = ζ v_i / k_h`) | Muthukumar & DesRoches (2006) |
 //! | [`BilinearImpact`] | incremental bilinear hysteresis (below) | `K1`, `K2`, `δy` | Muthukumar (2003); OpenSees `ImpactMaterial` |
 //! | [`Jankowski`] | `F = β δ^{3/2} + c(δ) δ̇` if `δ̇ > 0`, `β δ^{3/2}` if `δ̇ ≤ 0` | `β`, `ξ`, `m_eff` | Jankowski (2005) |
+//! | [`LinearSpring`] | `F = k δ` | `k` | (elastic spring, no damping) |
 //!
 //! Every law is evaluated through [`ContactLaw::evaluate`], which takes the **committed**
 //! [`LawState`] of the previous accepted step, the trial penetration `δ` and rate `δ̇`, and
@@ -72,8 +73,23 @@
 
 pub mod calibration;
 pub mod collision;
+pub mod registry;
 pub mod sharing;
 pub mod timestep;
+
+mod bilinear;
+mod hertz;
+mod hertz_damp;
+mod jankowski;
+mod kelvin;
+mod linear;
+
+pub use bilinear::{BilinearDerivation, BilinearImpact};
+pub use hertz::Hertz;
+pub use hertz_damp::{HertzDamp, HertzDamping};
+pub use jankowski::Jankowski;
+pub use kelvin::KelvinVoigt;
+pub use linear::LinearSpring;
 
 use crate::math::Real;
 use thiserror::Error;
@@ -247,433 +263,62 @@ impl Evaluation {
     }
 }
 
-/// Linear spring and dashpot in parallel (Kelvin–Voigt), without tension:
-/// ```text
-/// F = max(0, k δ + c δ̇)   for δ > 0,      F = 0 for δ ≤ 0
-/// ```
-/// The dashpot gives a force jump `c δ̇` at contact onset, and the clamp ends the contact when
-/// `k δ + c δ̇` returns to zero (with `δ > 0`). `c` from a target restitution: see
-/// [`KelvinVoigt::from_restitution`] (Anagnostopoulos 1988, or numerically).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct KelvinVoigt {
-    k: Real,
-    c: Real,
-}
-
-impl KelvinVoigt {
-    /// Validates `k > 0` \[N/m\] and `c ≥ 0` \[N s/m\] (finite).
-    pub fn new(k: Real, c: Real) -> Result<Self, ContactLawError> {
-        Ok(KelvinVoigt {
-            k: positive("k", k)?,
-            c: non_negative("c", c)?,
-        })
-    }
-    /// The law whose isolated collision of two free masses `m1`, `m2` rebounds with restitution
-    /// `e ∈ (0, 1]`: `c = 2 ξ √(k m_eff)`, `m_eff = m1 m2/(m1 + m2)`, with the damping ratio `ξ`
-    /// of [`calibration::kelvin_damping_ratio`]. Independent of the impact velocity (the law is
-    /// linear), but dependent on the masses.
-    pub fn from_restitution(
-        k: Real,
-        e: Real,
-        m1: Real,
-        m2: Real,
-        method: calibration::KelvinCalibration,
-    ) -> Result<Self, ContactLawError> {
-        let k = positive("k", k)?;
-        let m = effective_mass(m1, m2)?;
-        let xi = calibration::kelvin_damping_ratio(e, method)?;
-        KelvinVoigt::new(k, 2.0 * xi * (k * m).sqrt())
-    }
-    /// Spring stiffness `k` \[N/m\].
-    pub fn k(&self) -> Real {
-        self.k
-    }
-    /// Dashpot coefficient `c` \[N s/m\].
-    pub fn c(&self) -> Real {
-        self.c
-    }
-    fn evaluate(&self, state: &LawState, delta: Real, delta_dot: Real) -> Evaluation {
-        if delta <= 0.0 {
-            return Evaluation::open(delta);
-        }
-        let f = self.k * delta + self.c * delta_dot;
-        Evaluation::closed(state, delta, delta_dot, f, self.k, self.c)
-    }
-}
-
-/// Hertz's elastic contact law (no dissipation):
-/// ```text
-/// F = k_h δ^{3/2}   for δ > 0,      ∂F/∂δ = (3/2) k_h δ^{1/2}
-/// ```
-/// `k_h` \[N/m^{3/2}\] lumps the contact geometry and the elastic moduli; for bridge decks the
-/// literature uses `k_h ≈ 25 000 kip/in^{3/2}` (Muthukumar & DesRoches 2006;
-/// [`units::kip_per_in_1_5`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Hertz {
-    k_h: Real,
-}
-
-impl Hertz {
-    /// Validates `k_h > 0` \[N/m^{3/2}\].
-    pub fn new(k_h: Real) -> Result<Self, ContactLawError> {
-        Ok(Hertz {
-            k_h: positive("k_h", k_h)?,
-        })
-    }
-    /// Hertz stiffness `k_h` \[N/m^{3/2}\].
-    pub fn k_h(&self) -> Real {
-        self.k_h
-    }
-    fn evaluate(&self, state: &LawState, delta: Real, delta_dot: Real) -> Evaluation {
-        if delta <= 0.0 {
-            return Evaluation::open(delta);
-        }
-        let s = delta.sqrt();
-        Evaluation::closed(
-            state,
-            delta,
-            delta_dot,
-            self.k_h * delta * s,
-            1.5 * self.k_h * s,
-            0.0,
-        )
-    }
-}
-
-/// How the damping constant `ζ` of [`HertzDamp`] is set.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum HertzDamping {
-    /// A fixed `ζ` \[N s/m^{5/2}\] for every impact (e.g. calibrated for a design impact velocity;
-    /// an impact at another velocity then rebounds with another `e`).
-    Constant {
-        /// `ζ ≥ 0`.
-        zeta: Real,
-    },
-    /// `ζ = χ k_h / v_i` with `v_i` the approach rate recorded at the onset of each impact
-    /// (floored at `min_velocity`): every impact rebounds with the `e` the dimensionless `χ` was
-    /// calibrated for, whatever its velocity (the intent of Muthukumar & DesRoches 2006).
-    PerImpact {
-        /// Dimensionless damping `χ = ζ v_i / k_h ≥ 0`.
-        chi: Real,
-        /// Floor of `v_i` \[m/s\] (`> 0`) for grazing contacts, which would otherwise get an
-        /// unbounded damping constant.
-        min_velocity: Real,
-    },
-}
-
-/// Hertz contact with nonlinear (hysteresis) damping, in the form of Muthukumar & DesRoches
-/// (2006) (after Hunt & Crossley 1975; Lankarani & Nikravesh 1990):
-/// ```text
-/// F = max(0, k_h δ^{3/2} + ζ δ^{3/2} δ̇) = max(0, k_h δ^{3/2} (1 + χ δ̇ / v_i))   for δ > 0
-/// ```
-/// with `χ = ζ v_i / k_h` dimensionless. The damping force vanishes with `δ`, so the force is
-/// continuous at contact onset. For two free masses the rebound depends on `χ` only (not on
-/// `k_h`, the masses, the exponent or the velocity), through the exact first integral of the
-/// Hunt–Crossley equation (used by the tests as independent evidence):
-/// `χ (1 + e) = ln((1 + χ) / (1 − χ e))`.
-/// Calibrations of `χ` from `e`: [`calibration::hertz_damp_chi`].
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct HertzDamp {
-    k_h: Real,
-    damping: HertzDamping,
-}
-
-impl HertzDamp {
-    /// Validates `k_h > 0`, and `ζ ≥ 0`, or `χ ≥ 0` and `min_velocity > 0`.
-    pub fn new(k_h: Real, damping: HertzDamping) -> Result<Self, ContactLawError> {
-        let k_h = positive("k_h", k_h)?;
-        let damping = match damping {
-            HertzDamping::Constant { zeta } => HertzDamping::Constant {
-                zeta: non_negative("zeta", zeta)?,
-            },
-            HertzDamping::PerImpact { chi, min_velocity } => HertzDamping::PerImpact {
-                chi: non_negative("chi", chi)?,
-                min_velocity: positive("min_velocity", min_velocity)?,
-            },
-        };
-        Ok(HertzDamp { k_h, damping })
-    }
-    /// The law with `χ` calibrated for restitution `e` by `method`
-    /// ([`calibration::hertz_damp_chi`]). With `design_velocity = Some(v)` the damping is the
-    /// constant `ζ = χ k_h / v` (the published formulas' form: it depends on the impact
-    /// velocity); with `None` it is [`HertzDamping::PerImpact`] with `min_velocity`.
-    pub fn from_restitution(
-        k_h: Real,
-        e: Real,
-        design_velocity: Option<Real>,
-        min_velocity: Real,
-        method: calibration::HertzDampCalibration,
-    ) -> Result<Self, ContactLawError> {
-        let k_h = positive("k_h", k_h)?;
-        let chi = calibration::hertz_damp_chi(e, method)?;
-        let damping = match design_velocity {
-            Some(v) => HertzDamping::Constant {
-                zeta: chi * k_h / positive("design_velocity", v)?,
-            },
-            None => HertzDamping::PerImpact { chi, min_velocity },
-        };
-        HertzDamp::new(k_h, damping)
-    }
-    /// Hertz stiffness `k_h` \[N/m^{3/2}\].
-    pub fn k_h(&self) -> Real {
-        self.k_h
-    }
-    /// The damping setting.
-    pub fn damping(&self) -> HertzDamping {
-        self.damping
-    }
-    fn evaluate(&self, state: &LawState, delta: Real, delta_dot: Real) -> Evaluation {
-        if delta <= 0.0 {
-            return Evaluation::open(delta);
-        }
-        let zeta = match self.damping {
-            HertzDamping::Constant { zeta } => zeta,
-            HertzDamping::PerImpact { chi, min_velocity } => {
-                let onset = if state.in_contact() {
-                    state.onset_velocity.unwrap_or(delta_dot)
-                } else {
-                    delta_dot
-                };
-                chi * self.k_h / onset.max(min_velocity)
-            }
-        };
-        let s = delta.sqrt();
-        let d15 = delta * s;
-        let g = self.k_h + zeta * delta_dot;
-        Evaluation::closed(state, delta, delta_dot, g * d15, 1.5 * g * s, zeta * d15)
-    }
-}
-
-/// Bilinear impact law of Muthukumar (2003), exactly as OpenSees' `ImpactMaterial`.
+/// The interface every normal contact law implements (one file per law in this module; the
+/// scenario keys and defaults of each law are in [`registry`]).
 ///
-/// Parameters: initial stiffness `K1`, secondary stiffness `K2` (`0 < K2 ≤ K1`), yield
-/// penetration `δy > 0` (OpenSees takes `δy` and the gap as negative numbers because its
-/// material is compression-negative; here they are positive and the gap belongs to the caller).
-/// With `F_c`, `δ_c` the committed force and signed penetration and `Δδ = δ − δ_c`:
-/// ```text
-/// δ ≤ 0:           F = 0
-/// Δδ > 0 (load):   F = min(F_c + K1 Δδ,  K1 δy + K2 (δ − δy))
-/// Δδ < 0 (unload): F = max(F_c + K1 Δδ,  K2 δ)
-/// Δδ = 0:          F = F_c
-/// ```
-/// The force stays in the band `K2 δ ≤ F ≤ K1 δy + K2 (δ − δy)`, moving with slope `K1` inside it;
-/// it is never negative (clamped at 0 as a safeguard; the band already excludes it for `δ > 0`).
-/// Loading from rest follows `K1` up to `δy`, then `K2`; unloading from `δm` follows `K1` down to
-/// `δm − δy`, then `K2 δ` to zero: a parallelogram loop of area `(K1 − K2) δy (δm − δy)`
-/// (for `δm ≥ 2 δy`).
-///
-/// **OpenSees quirk, reproduced**: `δ_c` is the committed *signed* penetration, also while the gap
-/// is open, so the first closing step increments from a negative `δ_c` and gets
-/// `F = min(K1 (δ − δ_c), …) > K1 δ`; the excess is at most `K1 |δ̇| Δt` and vanishes with `Δt`.
-/// Rate independent (`∂F/∂δ̇ = 0`).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct BilinearImpact {
-    k1: Real,
-    k2: Real,
-    delta_y: Real,
+/// Sign conventions and the commit semantics of [`LawState`] are in the module doc.
+pub trait ContactForceLaw {
+    /// The `[contact] law` name (e.g. `kelvin`).
+    fn name(&self) -> &'static str;
+    /// Evaluates the law at trial penetration `delta` (`δ`, m) and rate `delta_dot` (`δ̇`, m/s)
+    /// from the committed `state`: the force, `∂F/∂δ`, `∂F/∂δ̇` and the trial state.
+    fn evaluate(&self, state: &LawState, delta: Real, delta_dot: Real) -> Evaluation;
+    /// `true` if the force depends on more than `(δ, δ̇)` (committed state). Default `false`.
+    fn is_history_dependent(&self) -> bool {
+        false
+    }
+    /// Tangent stiffness of the elastic loading backbone at penetration `δ` \[N/m\] (time-step
+    /// advice).
+    fn backbone_stiffness(&self, delta: Real) -> Real;
+    /// The penetration at which the elastic loading backbone stores `½ m_eff v²` (undamped
+    /// peak-penetration estimate); `0` for `v = 0`.
+    fn backbone_penetration(&self, m_eff: Real, v: Real) -> Real;
+    /// The law and its parameters for `summary.json` (`{"law": name, ...}`).
+    fn describe(&self) -> serde_json::Value;
 }
 
-/// The derivation of [`BilinearImpact`] parameters from a Hertz stiffness (OpenSees wiki,
-/// *Impact Material*; Muthukumar & DesRoches 2006), all SI.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct BilinearDerivation {
-    /// Effective stiffness `K_eff = k_h √δm` \[N/m\].
-    pub k_eff: Real,
-    /// Energy dissipated by the Hertz-damp law in an impact reaching `δm`:
-    /// `ΔE = k_h δm^{n+1} (1 − e²) / (n + 1)`, `n = 3/2` \[J\].
-    pub energy: Real,
-    /// The law: `K1 = K_eff + ΔE/(a δm²)`, `K2 = K_eff − ΔE/((1 − a) δm²)`, `δy = a δm`.
-    pub law: BilinearImpact,
+/// `δ* = (5 m_eff v² / (4 k))^{2/5}`: the backbone penetration of the `k δ^{3/2}` laws.
+pub(crate) fn hertz_backbone_penetration(k: Real, m_eff: Real, v: Real) -> Real {
+    let ek = 0.5 * m_eff * v * v;
+    (2.5 * ek / k).powf(0.4)
 }
 
-impl BilinearImpact {
-    /// Validates `K1 > 0`, `0 < K2 ≤ K1` \[N/m\] and `δy > 0` \[m\].
-    pub fn new(k1: Real, k2: Real, delta_y: Real) -> Result<Self, ContactLawError> {
-        let k1 = positive("k1", k1)?;
-        let k2 = positive("k2", k2)?;
-        if k2 > k1 {
-            return Err(invalid("k2", k2, "must not exceed k1"));
+/// Declares [`ContactLaw`] from the list of laws: its variants, `From` conversions and the one
+/// dispatch to [`ContactForceLaw`]. Adding a law adds one line to the invocation below.
+macro_rules! contact_laws {
+    ($($(#[$doc:meta])* $variant:ident($ty:ty),)*) => {
+        /// A validated normal contact law (see the module doc for the table of laws).
+        #[derive(Debug, Clone, Copy, PartialEq)]
+        pub enum ContactLaw {
+            $($(#[$doc])* $variant($ty),)*
         }
-        Ok(BilinearImpact {
-            k1,
-            k2,
-            delta_y: positive("delta_y", delta_y)?,
-        })
-    }
-    /// Derives `K1`, `K2`, `δy` from a Hertz stiffness `k_h` \[N/m^{3/2}\], restitution
-    /// `e ∈ (0, 1]`, design maximum penetration `δm > 0` \[m\] and yield ratio `a ∈ (0, 1)`
-    /// (typically 0.1), as documented by OpenSees (*Impact Material*; Muthukumar & DesRoches 2006):
-    /// ```text
-    /// K_eff = k_h √δm,   ΔE = k_h δm^{5/2} (1 − e²) / (5/2),   δy = a δm
-    /// K1 = K_eff + ΔE / (a δm²),   K2 = K_eff − ΔE / ((1 − a) δm²)
-    /// ```
-    /// so that an impact reaching `δm` dissipates `ΔE` (the loop area
-    /// `(K1 − K2) δy (δm − δy) = ΔE`). Example (the issue's): `k_h = 25 000 kip/in^{3/2}`, `e = 0.6`,
-    /// `δm = 1 in`, `a = 0.1` give `K1 = 89 000 kip/in = 1.5586e7 kN/m`,
-    /// `K2 = 17 889 kip/in = 3.1328e6 kN/m`, `δy = 2.54 mm`. Note: the loop dissipates the
-    /// Hertz-damp energy loss, but the bilinear loading path stores `½ K_eff δm² + ½ ΔE`, more than
-    /// Hertz's `0.4 k_h δm^{5/2}`, so an isolated impact reaching `δm` rebounds with
-    /// `e_bl = √(1 − ΔE / (½ K_eff δm² + ½ ΔE))` > `e` (0.770 for `e = 0.6`).
-    /// Errors name `k_h`, `restitution`, `delta_m`, `a` (`K2 ≤ 0` happens for
-    /// `a ≥ 1 − 0.4 (1 − e²)` and is reported on `a`).
-    pub fn from_hertz(
-        k_h: Real,
-        e: Real,
-        delta_m: Real,
-        a: Real,
-    ) -> Result<BilinearDerivation, ContactLawError> {
-        let k_h = positive("k_h", k_h)?;
-        let e = restitution("restitution", e)?;
-        let dm = positive("delta_m", delta_m)?;
-        if !(a.is_finite() && a > 0.0 && a < 1.0) {
-            return Err(invalid("a", a, "must lie in (0, 1)"));
-        }
-        let n = 1.5;
-        let k_eff = k_h * dm.sqrt();
-        let energy = k_h * dm.powf(n + 1.0) * (1.0 - e * e) / (n + 1.0);
-        let k1 = k_eff + energy / (a * dm * dm);
-        let k2 = k_eff - energy / ((1.0 - a) * dm * dm);
-        if k2.is_nan() || k2 <= 0.0 {
-            return Err(invalid(
-                "a",
-                a,
-                "gives a secondary stiffness K2 <= 0 (need a < 1 - 0.4 (1 - e^2))",
-            ));
-        }
-        Ok(BilinearDerivation {
-            k_eff,
-            energy,
-            law: BilinearImpact::new(k1, k2, a * dm)?,
-        })
-    }
-    /// Initial (and unloading) stiffness `K1` \[N/m\].
-    pub fn k1(&self) -> Real {
-        self.k1
-    }
-    /// Secondary stiffness `K2` \[N/m\].
-    pub fn k2(&self) -> Real {
-        self.k2
-    }
-    /// Yield penetration `δy` \[m\].
-    pub fn delta_y(&self) -> Real {
-        self.delta_y
-    }
-    /// Loading envelope `K1 δ` for `δ ≤ δy`, `K1 δy + K2 (δ − δy)` beyond (`0` for `δ ≤ 0`).
-    pub fn envelope(&self, delta: Real) -> Real {
-        if delta <= 0.0 {
-            0.0
-        } else if delta <= self.delta_y {
-            self.k1 * delta
-        } else {
-            self.k1 * self.delta_y + self.k2 * (delta - self.delta_y)
-        }
-    }
-    fn evaluate(&self, state: &LawState, delta: Real, delta_dot: Real) -> Evaluation {
-        if delta <= 0.0 {
-            return Evaluation::open(delta);
-        }
-        let dd = delta - state.delta;
-        let elastic = state.force + self.k1 * dd;
-        let (f, kt) = if dd > 0.0 {
-            let env = self.k1 * self.delta_y + self.k2 * (delta - self.delta_y);
-            if elastic < env {
-                (elastic, self.k1)
-            } else {
-                (env, self.k2)
+        $(impl From<$ty> for ContactLaw {
+            fn from(l: $ty) -> Self {
+                ContactLaw::$variant(l)
             }
-        } else if dd < 0.0 {
-            let lower = self.k2 * delta;
-            if elastic > lower {
-                (elastic, self.k1)
-            } else {
-                (lower, self.k2)
+        })*
+        impl ContactLaw {
+            /// The law behind the enum (the single dispatch point).
+            pub fn as_law(&self) -> &dyn ContactForceLaw {
+                match self {
+                    $(ContactLaw::$variant(l) => l,)*
+                }
             }
-        } else {
-            (state.force, self.k1)
-        };
-        let mut ev = Evaluation::closed(state, delta, delta_dot, f.max(0.0), kt, 0.0);
-        // The committed δ is the signed penetration whatever the force (OpenSees' strain).
-        ev.state.delta = delta;
-        ev
-    }
-}
-
-/// Nonlinear viscoelastic law of Jankowski (2005):
-/// ```text
-/// F = β δ^{3/2} + c(δ) δ̇   for δ > 0, δ̇ > 0   (approach)
-/// F = β δ^{3/2}            for δ > 0, δ̇ ≤ 0   (restitution)
-/// c(δ) = 2 ξ √(β √δ m_eff),   m_eff = m1 m2 / (m1 + m2)
-/// ```
-/// Damping acts only during approach, so the force is never negative. By scaling, the rebound of
-/// two free masses depends on `ξ` only (not on `β`, the masses or the velocity). Jankowski's
-/// closed-form `ξ(e)` and a numerical calibration: [`calibration::jankowski_xi`].
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Jankowski {
-    beta: Real,
-    xi: Real,
-    m_eff: Real,
-}
-
-impl Jankowski {
-    /// Validates `β > 0` \[N/m^{3/2}\], `ξ ≥ 0`, `m_eff > 0` \[kg\].
-    pub fn new(beta: Real, xi: Real, m_eff: Real) -> Result<Self, ContactLawError> {
-        Ok(Jankowski {
-            beta: positive("beta", beta)?,
-            xi: non_negative("xi", xi)?,
-            m_eff: positive("m_eff", m_eff)?,
-        })
-    }
-    /// The law for colliding masses `m1`, `m2` with `ξ` calibrated for restitution `e` by `method`.
-    pub fn from_restitution(
-        beta: Real,
-        e: Real,
-        m1: Real,
-        m2: Real,
-        method: calibration::JankowskiCalibration,
-    ) -> Result<Self, ContactLawError> {
-        let beta = positive("beta", beta)?;
-        let m = effective_mass(m1, m2)?;
-        Jankowski::new(beta, calibration::jankowski_xi(e, method)?, m)
-    }
-    /// Stiffness `β` \[N/m^{3/2}\].
-    pub fn beta(&self) -> Real {
-        self.beta
-    }
-    /// Damping ratio `ξ`.
-    pub fn xi(&self) -> Real {
-        self.xi
-    }
-    /// Effective mass `m_eff` \[kg\].
-    pub fn m_eff(&self) -> Real {
-        self.m_eff
-    }
-    fn evaluate(&self, state: &LawState, delta: Real, delta_dot: Real) -> Evaluation {
-        if delta <= 0.0 {
-            return Evaluation::open(delta);
         }
-        let s = delta.sqrt();
-        let fe = self.beta * delta * s;
-        let ke = 1.5 * self.beta * s;
-        if delta_dot > 0.0 {
-            let c = 2.0 * self.xi * (self.beta * s * self.m_eff).sqrt();
-            // dc/dδ = c / (4 δ)
-            Evaluation::closed(
-                state,
-                delta,
-                delta_dot,
-                fe + c * delta_dot,
-                ke + c / (4.0 * delta) * delta_dot,
-                c,
-            )
-        } else {
-            Evaluation::closed(state, delta, delta_dot, fe, ke, 0.0)
-        }
-    }
+    };
 }
 
-/// A validated normal contact law (see the module doc for the table of laws).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum ContactLaw {
+contact_laws! {
     /// Linear spring + dashpot.
     KelvinVoigt(KelvinVoigt),
     /// Elastic Hertz.
@@ -684,113 +329,50 @@ pub enum ContactLaw {
     Bilinear(BilinearImpact),
     /// Jankowski nonlinear viscoelastic.
     Jankowski(Jankowski),
-}
-
-impl From<KelvinVoigt> for ContactLaw {
-    fn from(l: KelvinVoigt) -> Self {
-        ContactLaw::KelvinVoigt(l)
-    }
-}
-impl From<Hertz> for ContactLaw {
-    fn from(l: Hertz) -> Self {
-        ContactLaw::Hertz(l)
-    }
-}
-impl From<HertzDamp> for ContactLaw {
-    fn from(l: HertzDamp) -> Self {
-        ContactLaw::HertzDamp(l)
-    }
-}
-impl From<BilinearImpact> for ContactLaw {
-    fn from(l: BilinearImpact) -> Self {
-        ContactLaw::Bilinear(l)
-    }
-}
-impl From<Jankowski> for ContactLaw {
-    fn from(l: Jankowski) -> Self {
-        ContactLaw::Jankowski(l)
-    }
+    /// Linear spring without damping.
+    Linear(LinearSpring),
 }
 
 impl ContactLaw {
-    /// Short name: `kelvin`, `hertz`, `hertz-damp`, `bilinear`, `jankowski`.
+    /// Short name: `kelvin`, `hertz`, `hertz-damp`, `bilinear`, `jankowski`, `linear`.
     pub fn name(&self) -> &'static str {
-        match self {
-            ContactLaw::KelvinVoigt(_) => "kelvin",
-            ContactLaw::Hertz(_) => "hertz",
-            ContactLaw::HertzDamp(_) => "hertz-damp",
-            ContactLaw::Bilinear(_) => "bilinear",
-            ContactLaw::Jankowski(_) => "jankowski",
-        }
+        self.as_law().name()
     }
 
     /// Evaluates the law at trial penetration `delta` (`δ`, m) and rate `delta_dot` (`δ̇`, m/s)
     /// from the committed `state` (module doc: sign conventions and commit semantics).
     /// Non-finite inputs give a non-finite force (the caller's divergence check sees it).
     pub fn evaluate(&self, state: &LawState, delta: Real, delta_dot: Real) -> Evaluation {
-        match self {
-            ContactLaw::KelvinVoigt(l) => l.evaluate(state, delta, delta_dot),
-            ContactLaw::Hertz(l) => l.evaluate(state, delta, delta_dot),
-            ContactLaw::HertzDamp(l) => l.evaluate(state, delta, delta_dot),
-            ContactLaw::Bilinear(l) => l.evaluate(state, delta, delta_dot),
-            ContactLaw::Jankowski(l) => l.evaluate(state, delta, delta_dot),
-        }
+        self.as_law().evaluate(state, delta, delta_dot)
     }
 
     /// `true` if the force depends on more than `(δ, δ̇)`: the bilinear law (committed `δ_c`,
     /// `F_c`) and Hertz-damp with per-impact damping (impact velocity recorded at onset).
     pub fn is_history_dependent(&self) -> bool {
-        matches!(
-            self,
-            ContactLaw::Bilinear(_)
-                | ContactLaw::HertzDamp(HertzDamp {
-                    damping: HertzDamping::PerImpact { .. },
-                    ..
-                })
-        )
+        self.as_law().is_history_dependent()
     }
 
     /// Tangent stiffness of the elastic loading backbone at penetration `δ > 0` \[N/m\]: `k`
-    /// (Kelvin), `(3/2) k_h δ^{1/2}` (Hertz, Hertz-damp, Jankowski with `β`), `K1` (bilinear:
-    /// its stiffest branch, also the unloading slope). Used for time-step advice.
+    /// (Kelvin, linear), `(3/2) k_h δ^{1/2}` (Hertz, Hertz-damp, Jankowski with `β`), `K1`
+    /// (bilinear: its stiffest branch, also the unloading slope). Used for time-step advice.
     pub fn backbone_stiffness(&self, delta: Real) -> Real {
-        let d = delta.max(0.0);
-        match self {
-            ContactLaw::KelvinVoigt(l) => l.k,
-            ContactLaw::Hertz(l) => 1.5 * l.k_h * d.sqrt(),
-            ContactLaw::HertzDamp(l) => 1.5 * l.k_h * d.sqrt(),
-            ContactLaw::Bilinear(l) => l.k1,
-            ContactLaw::Jankowski(l) => 1.5 * l.beta * d.sqrt(),
-        }
+        self.as_law().backbone_stiffness(delta)
     }
 
     /// The penetration at which the law's elastic loading backbone stores the kinetic energy
     /// `½ m_eff v²` of the relative approach: the undamped estimate of the peak penetration.
     /// ```text
-    /// Kelvin:                      δ* = v √(m_eff / k)
+    /// Kelvin, linear:              δ* = v √(m_eff / k)
     /// Hertz, Hertz-damp, Jankowski: δ* = (5 m_eff v² / (4 k_h))^{2/5}
     /// bilinear: on the envelope, ½ K1 δy² + K1 δy s + ½ K2 s² = ½ m_eff v², δ* = δy + s
     /// ```
     /// `m_eff > 0`, `v ≥ 0` (returns `0` for `v = 0`).
     pub fn backbone_penetration(&self, m_eff: Real, v: Real) -> Real {
-        let ek = 0.5 * m_eff * v * v;
-        let hertz = |k: Real| (2.5 * ek / k).powf(0.4);
-        match self {
-            ContactLaw::KelvinVoigt(l) => v.abs() * (m_eff / l.k).sqrt(),
-            ContactLaw::Hertz(l) => hertz(l.k_h),
-            ContactLaw::HertzDamp(l) => hertz(l.k_h),
-            ContactLaw::Jankowski(l) => hertz(l.beta),
-            ContactLaw::Bilinear(l) => {
-                let e_y = 0.5 * l.k1 * l.delta_y * l.delta_y;
-                if ek <= e_y {
-                    v.abs() * (m_eff / l.k1).sqrt()
-                } else {
-                    let r = ek - e_y;
-                    let b = l.k1 * l.delta_y;
-                    let s = 2.0 * r / (b + (b * b + 2.0 * l.k2 * r).sqrt());
-                    l.delta_y + s
-                }
-            }
-        }
+        self.as_law().backbone_penetration(m_eff, v)
+    }
+
+    /// The law and its parameters as written in `summary.json`.
+    pub fn describe(&self) -> serde_json::Value {
+        self.as_law().describe()
     }
 }
