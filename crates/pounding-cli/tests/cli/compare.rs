@@ -276,3 +276,39 @@ fn compare_smoke() {
     assert!(!dir.join("c").exists());
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// `law = "linear"` (added through the contact-law registry) runs through `pounding simulate`
+/// and is reported with its stiffness; an unknown law lists it.
+#[test]
+fn simulate_with_the_linear_law() {
+    let dir = tmp("linear");
+    let out = dir.join("out");
+    std::fs::write(
+        dir.join("s.toml"),
+        "[time]\nduration = 3.0\n[contact]\nlaw = \"linear\"\nk = 1e9\n",
+    )
+    .unwrap();
+    let o = pounding()
+        .arg("simulate")
+        .arg(dir.join("s.toml"))
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(s["contact_law"]["law"], "linear");
+    assert_eq!(s["contact_law"]["k"].as_f64(), Some(1e9));
+    assert_eq!(s["newton_failures"], 0);
+    eprintln!(
+        "linear: impacts {}, peak force {}, peak penetration {}",
+        s["impacts"], s["peak_contact_force_n"], s["peak_penetration_m"]
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+    fails(
+        "law-list",
+        "[contact]\nlaw = \"spring\"\n",
+        &["spring", "jankowski, linear"],
+    );
+}
