@@ -33,7 +33,7 @@ use std::time::Instant;
 pub struct Args {
     /// Scenario file (TOML, as for `pounding simulate`); without it the built-in default runs.
     pub scenario: Option<PathBuf>,
-    /// Contact laws to run, comma separated: rigid, kelvin, hertz, hertz-damp, bilinear, jankowski.
+    /// Contact laws to run, comma separated: rigid, kelvin, hertz, hertz-damp, bilinear, jankowski, linear.
     #[arg(
         long,
         value_delimiter = ',',
@@ -63,10 +63,10 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let mut laws: Vec<String> = Vec::new();
     for l in &args.laws {
         let l = l.trim().to_string();
-        if !LAW_NAMES.contains(&l.as_str()) {
+        if !pounding::contact_law::registry::law_names().contains(&l.as_str()) {
             bail!(
                 "unknown contact law {l:?} in --laws: use one of {}",
-                LAW_NAMES.join(", ")
+                pounding::contact_law::registry::law_names().join(", ")
             );
         }
         if laws.contains(&l) {

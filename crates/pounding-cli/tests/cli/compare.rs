@@ -181,15 +181,12 @@ fn bad_contact_law_parameters_name_the_key() {
     );
 }
 
-#[test]
-fn coarse_dt_warns_on_stderr() {
-    let dir = tmp("coarse");
+/// Runs `pounding simulate` on `scenario` (written to a scratch `s.toml`): the scratch directory,
+/// the process output and `summary.json` (when written).
+fn simulate_in(name: &str, scenario: &str) -> (PathBuf, std::process::Output, serde_json::Value) {
+    let dir = tmp(name);
     let out = dir.join("out");
-    std::fs::write(
-        dir.join("s.toml"),
-        "[contact]\nlaw = \"kelvin\"\nk = 1e12\n[time]\ndt = 2e-3\nduration = 1.0\n",
-    )
-    .unwrap();
+    std::fs::write(dir.join("s.toml"), scenario).unwrap();
     let o = pounding()
         .arg("simulate")
         .arg(dir.join("s.toml"))
@@ -197,14 +194,24 @@ fn coarse_dt_warns_on_stderr() {
         .arg(&out)
         .output()
         .unwrap();
+    let s = std::fs::read_to_string(out.join("summary.json"))
+        .map(|t| serde_json::from_str(&t).unwrap())
+        .unwrap_or(serde_json::Value::Null);
+    (dir, o, s)
+}
+
+#[test]
+fn coarse_dt_warns_on_stderr() {
+    let (dir, o, s) = simulate_in(
+        "coarse",
+        "[contact]\nlaw = \"kelvin\"\nk = 1e12\n[time]\ndt = 2e-3\nduration = 1.0\n",
+    );
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(o.status.success(), "{err}");
     assert!(
         err.contains("too coarse for the contact stiffness"),
         "{err}"
     );
-    let s: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
     assert_eq!(s["time_step"]["adequate"], false);
     std::fs::remove_dir_all(&dir).unwrap();
 }
@@ -275,4 +282,28 @@ fn compare_smoke() {
     assert!(String::from_utf8_lossy(&o.stderr).contains("foo"));
     assert!(!dir.join("c").exists());
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `law = "linear"` (added through the contact-law registry) runs through `pounding simulate`
+/// and is reported with its stiffness; an unknown law lists it.
+#[test]
+fn simulate_with_the_linear_law() {
+    let (dir, o, s) = simulate_in(
+        "linear",
+        "[time]\nduration = 3.0\n[contact]\nlaw = \"linear\"\nk = 1e9\n",
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(s["contact_law"]["law"], "linear");
+    assert_eq!(s["contact_law"]["k"].as_f64(), Some(1e9));
+    assert_eq!(s["newton_failures"], 0);
+    eprintln!(
+        "linear: impacts {}, peak force {}, peak penetration {}",
+        s["impacts"], s["peak_contact_force_n"], s["peak_penetration_m"]
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+    fails(
+        "law-list",
+        "[contact]\nlaw = \"spring\"\n",
+        &["spring", "jankowski, linear"],
+    );
 }

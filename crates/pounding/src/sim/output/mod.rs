@@ -4,7 +4,7 @@
 
 use super::scenario::SimSetup;
 use super::{JointContact, SEAT_ENDS, SimModel, SimProblem, SimSolution};
-use crate::contact_law::{ContactLaw, HertzDamping};
+
 use crate::geometry::ContactCase;
 use crate::ground_motion::Record;
 use crate::math::Real;
@@ -251,33 +251,7 @@ pub fn describe_contact(c: &JointContact) -> serde_json::Value {
     match c {
         JointContact::Rigid => serde_json::json!({"law": "rigid"}),
         JointContact::Compliance(cc) => {
-            let mut v = match &cc.law {
-                ContactLaw::KelvinVoigt(l) => {
-                    serde_json::json!({"law": "kelvin", "k": json_float(l.k()), "c": json_float(l.c())})
-                }
-                ContactLaw::Hertz(l) => {
-                    serde_json::json!({"law": "hertz", "k_h": json_float(l.k_h())})
-                }
-                ContactLaw::HertzDamp(l) => {
-                    let d = match l.damping() {
-                        HertzDamping::Constant { zeta } => {
-                            serde_json::json!({"zeta": json_float(zeta)})
-                        }
-                        HertzDamping::PerImpact { chi, min_velocity } => {
-                            serde_json::json!({"chi": json_float(chi), "min_velocity": json_float(min_velocity)})
-                        }
-                    };
-                    serde_json::json!({"law": "hertz-damp", "k_h": json_float(l.k_h()), "damping": d})
-                }
-                ContactLaw::Bilinear(l) => serde_json::json!({
-                    "law": "bilinear", "k1": json_float(l.k1()), "k2": json_float(l.k2()),
-                    "delta_y": json_float(l.delta_y())
-                }),
-                ContactLaw::Jankowski(l) => serde_json::json!({
-                    "law": "jankowski", "beta": json_float(l.beta()), "xi": json_float(l.xi()),
-                    "m_eff": json_float(l.m_eff())
-                }),
-            };
+            let mut v = cc.law.describe();
             v["friction_velocity"] = json_float(cc.friction_velocity);
             v
         }

@@ -4,17 +4,14 @@
 use super::Src;
 use super::error::{ParamKey, ScenarioError, Section};
 use super::sections::DecksSec;
-use crate::contact_law::calibration::{
-    HertzDampCalibration, JankowskiCalibration, KelvinCalibration,
-};
-use crate::contact_law::{
-    BilinearImpact, ContactLaw, ContactLawError, Hertz, HertzDamp, HertzDamping, Jankowski,
-    KelvinVoigt, units,
-};
+use crate::contact_law::registry::{self, BuildError, LawInputs};
+use crate::contact_law::{ContactLaw, ContactLawError};
 use crate::sim::{ComplianceContact, DampingModel, JointContact, SimModel};
 use serde::Deserialize;
 
-/// Names accepted by `[contact] law` and `pounding compare --laws`.
+/// The default list of `pounding compare --laws`, in order: `rigid` and the five laws of the
+/// first release (kept explicit so that `compare`'s output stays as it is when the
+/// [`registry`] grows). Every name accepted by `[contact] law`: [`registry::law_names`].
 pub const LAW_NAMES: [&str; 6] = [
     "rigid",
     "kelvin",
@@ -28,9 +25,9 @@ pub const LAW_NAMES: [&str; 6] = [
 #[derive(Deserialize, Default, Clone, Debug)]
 #[serde(deny_unknown_fields, default)]
 pub struct ContactSec {
-    /// `rigid` (default), `kelvin`, `hertz`, `hertz-damp`, `bilinear`, `jankowski`.
+    /// `rigid` (default), `kelvin`, `hertz`, `hertz-damp`, `bilinear`, `jankowski`, `linear`.
     pub law: Option<String>,
-    /// Kelvin stiffness \\[N/m\\].
+    /// Kelvin and linear stiffness \\[N/m\\].
     pub k: Option<f64>,
     /// Kelvin damping \\[N s/m\\] (instead of `restitution`).
     pub c: Option<f64>,
@@ -66,20 +63,9 @@ pub struct ContactSec {
     pub friction_velocity: Option<f64>,
 }
 
-/// Default Kelvin stiffness \[N/m\] (the order of the bilinear `K1` of the OpenSees benchmark).
-pub const DEFAULT_K: f64 = 1.0e10;
-/// Default design maximum penetration of the bilinear law, 1 in \[m\].
-pub const DEFAULT_DELTA_M: f64 = units::INCH;
-/// Default yield ratio of the bilinear law.
-pub const DEFAULT_A: f64 = 0.1;
-/// Default floor of the impact velocity of Hertz-damp with per-impact damping \[m/s\].
-pub const DEFAULT_MIN_VELOCITY: f64 = 0.01;
-
-/// Default Hertz stiffness 25 000 kip/in^1.5 \[N/m^1.5\] (Muthukumar & DesRoches; the OpenSees
-/// benchmark).
-pub fn default_k_h() -> f64 {
-    units::kip_per_in_1_5(25_000.0)
-}
+pub use crate::contact_law::registry::{
+    DEFAULT_A, DEFAULT_DELTA_M, DEFAULT_K, DEFAULT_MIN_VELOCITY, default_k_h,
+};
 
 /// A contact-law error located at the `[contact]` key that sets the parameter.
 fn law_err(src: &Src, e: ContactLawError) -> ScenarioError {
@@ -104,7 +90,31 @@ const fn contact(key: &'static str) -> ParamKey {
     ParamKey::new(Section::Contact, key)
 }
 
-/// The compliance law `name` (not `rigid`) from the `[contact]` keys and their defaults.
+/// The value of the numeric `[contact]` key `key` (`None`: not given, or not a numeric key).
+fn numeric_key(sec: &ContactSec, key: &str) -> Option<f64> {
+    match key {
+        "k" => sec.k,
+        "c" => sec.c,
+        "k_h" => sec.k_h,
+        "zeta" => sec.zeta,
+        "chi" => sec.chi,
+        "restitution" => sec.restitution,
+        "design_velocity" => sec.design_velocity,
+        "min_velocity" => sec.min_velocity,
+        "k1" => sec.k1,
+        "k2" => sec.k2,
+        "delta_y" => sec.delta_y,
+        "delta_m" => sec.delta_m,
+        "a" => sec.a,
+        "beta" => sec.beta,
+        "xi" => sec.xi,
+        "friction_velocity" => sec.friction_velocity,
+        _ => None,
+    }
+}
+
+/// The compliance law `name` (not `rigid`) from the `[contact]` keys and their defaults,
+/// built by its [`registry`] entry.
 fn compliance_law(
     src: &Src,
     sec: &ContactSec,
@@ -112,110 +122,41 @@ fn compliance_law(
     eps_n: f64,
     masses: [f64; 2],
 ) -> Result<ContactLaw, ScenarioError> {
-    let e = sec.restitution.unwrap_or(eps_n);
+    let Some(entry) = registry::entry(name) else {
+        return Err(src.key_error(
+            format!(
+                "unknown contact law {name:?} at {}: use one of {}",
+                src.at(contact("law")),
+                registry::law_names().join(", ")
+            ),
+            &[contact("law")],
+        ));
+    };
     let cal = sec.calibration.as_deref().unwrap_or("numerical");
-    let bad_cal = |allowed: &str| {
-        src.key_error(
+    let values = |key: &str| numeric_key(sec, key);
+    let inputs = LawInputs {
+        values: &values,
+        calibration: cal,
+        restitution: sec.restitution.unwrap_or(eps_n),
+        masses,
+    };
+    (entry.build)(&inputs).map_err(|e| match e {
+        BuildError::Law(e) => law_err(src, e),
+        BuildError::Calibration { allowed } => src.key_error(
             format!(
                 "invalid calibration {cal:?} for law {name:?} at {}: use {allowed}",
                 src.at(contact("calibration"))
             ),
             &[contact("calibration")],
-        )
-    };
-    let le = |r: Result<ContactLaw, ContactLawError>| r.map_err(|e| law_err(src, e));
-    Ok(match name {
-        "kelvin" => {
-            let k = sec.k.unwrap_or(DEFAULT_K);
-            le(match sec.c {
-                Some(c) => KelvinVoigt::new(k, c).map(Into::into),
-                None => {
-                    let m = match cal {
-                        "numerical" => KelvinCalibration::Numerical,
-                        "anagnostopoulos" => KelvinCalibration::Anagnostopoulos,
-                        _ => return Err(bad_cal("\"numerical\" or \"anagnostopoulos\"")),
-                    };
-                    KelvinVoigt::from_restitution(k, e, masses[0], masses[1], m).map(Into::into)
-                }
-            })?
-        }
-        "hertz" => le(Hertz::new(sec.k_h.unwrap_or_else(default_k_h)).map(Into::into))?,
-        "hertz-damp" => {
-            let k_h = sec.k_h.unwrap_or_else(default_k_h);
-            let vmin = sec.min_velocity.unwrap_or(DEFAULT_MIN_VELOCITY);
-            le(match (sec.zeta, sec.chi) {
-                (Some(zeta), _) => HertzDamp::new(k_h, HertzDamping::Constant { zeta }),
-                (None, Some(chi)) => HertzDamp::new(
-                    k_h,
-                    HertzDamping::PerImpact {
-                        chi,
-                        min_velocity: vmin,
-                    },
-                ),
-                (None, None) => {
-                    let m = match cal {
-                        "numerical" => HertzDampCalibration::Numerical,
-                        "muthukumar-desroches" => HertzDampCalibration::MuthukumarDesRoches,
-                        "ye" => HertzDampCalibration::YeEtAl,
-                        _ => {
-                            return Err(bad_cal(
-                                "\"numerical\", \"muthukumar-desroches\" or \"ye\"",
-                            ));
-                        }
-                    };
-                    HertzDamp::from_restitution(k_h, e, sec.design_velocity, vmin, m)
-                }
-            }
-            .map(Into::into))?
-        }
-        "bilinear" => le(match (sec.k1, sec.k2, sec.delta_y) {
-            (None, None, None) => BilinearImpact::from_hertz(
-                sec.k_h.unwrap_or_else(default_k_h),
-                e,
-                sec.delta_m.unwrap_or(DEFAULT_DELTA_M),
-                sec.a.unwrap_or(DEFAULT_A),
-            )
-            .map(|d| d.law.into()),
-            (Some(k1), Some(k2), Some(dy)) => BilinearImpact::new(k1, k2, dy).map(Into::into),
-            _ => {
-                let keys = [contact("k1"), contact("k2"), contact("delta_y")];
-                return Err(src.key_error(
-                    format!(
-                        "law \"bilinear\": give all of {}, {} and {} (or none, to derive them \
-                         from k_h, restitution, delta_m, a)",
-                        src.at(keys[0]),
-                        src.at(keys[1]),
-                        src.at(keys[2])
-                    ),
-                    &keys,
-                ));
-            }
-        })?,
-        "jankowski" => {
-            let beta = sec.beta.or(sec.k_h).unwrap_or_else(default_k_h);
-            le(match sec.xi {
-                Some(xi) => crate::contact_law::effective_mass(masses[0], masses[1])
-                    .and_then(|m| Jankowski::new(beta, xi, m))
-                    .map(Into::into),
-                None => {
-                    let m = match cal {
-                        "numerical" => JankowskiCalibration::Numerical,
-                        "jankowski2005" => JankowskiCalibration::Jankowski2005,
-                        _ => return Err(bad_cal("\"numerical\" or \"jankowski2005\"")),
-                    };
-                    Jankowski::from_restitution(beta, e, masses[0], masses[1], m).map(Into::into)
-                }
-            })?
-        }
-        other => {
-            return Err(src.key_error(
-                format!(
-                    "unknown contact law {other:?} at {}: use one of {}",
-                    src.at(contact("law")),
-                    LAW_NAMES.join(", ")
-                ),
-                &[contact("law")],
-            ));
+        ),
+        BuildError::Incomplete { keys, hint } => {
+            let keys: Vec<ParamKey> = keys.iter().map(|k| contact(k)).collect();
+            let at: Vec<String> = keys.iter().map(|k| src.at(*k).to_string()).collect();
+            let list = match at.split_last() {
+                Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
+                _ => at.join(""),
+            };
+            src.key_error(format!("law {name:?}: give all of {list} ({hint})"), &keys)
         }
     })
 }
