@@ -150,17 +150,21 @@ pub fn run(args: Args) -> Result<ExitCode> {
     );
     if let Some(f) = s.peak_contact_force {
         eprintln!(
-            "contact law {}: peak contact force {:.4} MN, peak penetration {:.4} mm",
+            "contact law {}: peak contact force {} MN, peak penetration {} mm",
             describe_contact(&setup.problem.model.contact)["law"],
-            f / 1e6,
-            s.peak_penetration * 1e3
+            bounded(f / 1e6, 4),
+            bounded(s.peak_penetration * 1e3, 4)
         );
     }
     if sol.status != pounding::sim::SimStatus::Completed {
         // outputs are written (they show where the run went wrong), but the run did not succeed
+        let hint = match sol.status {
+            pounding::sim::SimStatus::CompletedWithLcpFailures => "summary.json (lcp_failures)",
+            _ => "summary.json (energies, peaks)",
+        };
         eprintln!(
             "error: simulation status {:?} after {} s ({} steps): the results are not trustworthy; \
-             see summary.json (lcp_failures) and history.csv in {}",
+             see {hint} and history.csv in {}",
             sol.status,
             float_token(sol.steps as Real * sol.dt),
             sol.steps,
