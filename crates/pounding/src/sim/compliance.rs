@@ -56,25 +56,24 @@
 //! masses) and `v_ref = 1 m/s`; the advice is returned in
 //! [`super::SimSolution::time_step_advice`] (the CLI warns when it is not adequate).
 #![allow(clippy::needless_range_loop)]
-use super::contact::{Pose, candidates};
-
+use super::contact::{Pose, State, candidates};
 use super::driver::{Bridge, ImpactLog, Scheme, StepInput, StepOutput, Stepper, StepperStats};
-use super::model::DeckBody;
-use super::{ComplianceContact, ImpactRecord, SimContact, SimError, SimProblem};
+use super::model::SegmentBody;
+use super::{ComplianceContact, ImpactRecord, SimContact, SimError};
 use crate::analytic::SlipMode;
 use crate::contact_law::sharing::JointLaw;
 use crate::contact_law::timestep::law_time_step_advice;
 use crate::contact_law::{LawState, effective_mass};
 use crate::geometry::ContactCase;
 use crate::math::Real;
-use nalgebra::{Matrix6, Vector6};
+use nalgebra::DMatrix;
 
 /// One joint end's contact evaluated at a trial state.
-#[derive(Clone, Copy)]
+#[derive(Clone)]
 struct EndEval {
     case: Option<ContactCase>,
-    wn: Vector6<Real>,
-    wt: Vector6<Real>,
+    wn: State,
+    wt: State,
     delta: Real,
     f_n: Real,
     f_t: Real,
@@ -88,12 +87,12 @@ struct EndEval {
 }
 
 impl EndEval {
-    /// An end without a contact.
-    fn open() -> Self {
+    /// An end without a contact (`n` generalised coordinates).
+    fn open(n: usize) -> Self {
         EndEval {
             case: None,
-            wn: Vector6::zeros(),
-            wt: Vector6::zeros(),
+            wn: State::zeros(n),
+            wt: State::zeros(n),
             delta: 0.0,
             f_n: 0.0,
             f_t: 0.0,
@@ -105,21 +104,23 @@ impl EndEval {
     }
 }
 
-fn gen_force(ends: &[EndEval; 2]) -> Vector6<Real> {
-    let mut r = Vector6::zeros();
+/// `R = Σ_e (w_N f_N + w_T f_T)` over every joint end.
+fn gen_force(ends: &[EndEval]) -> State {
+    let mut r = State::zeros(ends[0].wn.len());
     for e in ends {
-        r += e.wn * e.f_n + e.wt * e.f_t;
+        r += &e.wn * e.f_n + &e.wt * e.f_t;
     }
     r
 }
 
 /// `∂R/∂u` of the ends (module doc); `all = false` skips ends without force and stiffness.
-fn force_jacobian(ev: &[EndEval; 2], all: bool) -> Matrix6<Real> {
-    let mut dr = Matrix6::<Real>::zeros();
+fn force_jacobian(ev: &[EndEval], all: bool) -> DMatrix<Real> {
+    let n = ev[0].wn.len();
+    let mut dr = DMatrix::<Real>::zeros(n, n);
     for e in ev {
         if all || e.f_n > 0.0 || e.kc > 0.0 {
-            dr -= e.wn * e.wn.transpose() * e.kc;
-            dr += e.wt * (e.wn.transpose() * (e.mus * e.kc) - e.wt.transpose() * e.kt);
+            dr -= &e.wn * e.wn.transpose() * e.kc;
+            dr += &e.wt * (e.wn.transpose() * (e.mus * e.kc) - e.wt.transpose() * e.kt);
         }
     }
     dr
@@ -134,19 +135,20 @@ struct OpenImpact {
     work: Real,
 }
 
-/// The fixed data of one step's iteration: `q_k`, `u_k`, `Ŵ⁻¹` and
+/// The fixed data of one step's iteration: `q_k`, `u_k`, the scheme (for `Ŵ⁻¹`) and
 /// `base = u_free + h (1−θ) Ŵ⁻¹ R_k`.
 struct Trial<'a> {
-    q: &'a Vector6<Real>,
-    u: &'a Vector6<Real>,
-    winv: &'a Matrix6<Real>,
-    base: Vector6<Real>,
+    q: &'a State,
+    u: &'a State,
+    sc: &'a Scheme,
+    base: State,
 }
 
-/// The compliance-law stepper (module doc).
+/// The compliance-law stepper (module doc). Joint ends are numbered `2 k + e` (joint `k`, end
+/// `e`).
 pub(crate) struct ComplianceStepper {
-    bodies: [DeckBody; 2],
-    half_w: Real,
+    bodies: Vec<SegmentBody>,
+    joints: Vec<super::contact::JointGeom>,
     joint: JointLaw,
     mu: Real,
     vr: Real,
@@ -154,13 +156,15 @@ pub(crate) struct ComplianceStepper {
     th: Real,
     hth: Real,
     /// Committed law state of each end.
-    states: [LawState; 2],
+    states: Vec<LawState>,
     /// The ends at `t_k`.
-    ends: [EndEval; 2],
+    ends: Vec<EndEval>,
+    /// Normal force of each end at `t_k`, per joint.
+    forces: Vec<[Real; 2]>,
     /// `R_k`.
-    r_k: Vector6<Real>,
-    joint_in_contact: bool,
-    open_imp: [Option<OpenImpact>; 2],
+    r_k: State,
+    joint_in_contact: Vec<bool>,
+    open_imp: Vec<Option<OpenImpact>>,
     d_cont: Real,
     stats: StepperStats,
 }
@@ -171,128 +175,148 @@ impl ComplianceStepper {
         JointLaw::new(cc.law, 2).map_err(|e| SimError::invalid("corners", 2.0, &e.to_string()))
     }
 
-    /// The stepper at the initial state: law states open at the initial gaps (committed
-    /// `δ = −g_N(q_0)`).
+    /// The stepper at the initial state `(q0, u0)`: law states open at the initial gaps
+    /// (committed `δ = −g_N(q_0)`). The time-step advice uses the smallest two-segment effective
+    /// mass over the joints.
+    #[allow(clippy::too_many_arguments)]
     pub fn new(
-        problem: &SimProblem,
+        q0: &State,
+        u0: &State,
+        friction: Real,
         cc: &ComplianceContact,
         joint: JointLaw,
         scheme: &Scheme,
         bridge: &Bridge,
     ) -> Self {
         let (h, th) = (scheme.h, scheme.th);
-        let (m1, m2) = (bridge.bodies[0].mass.mass, bridge.bodies[1].mass.mass);
-        let advice = effective_mass(m1, m2)
-            .and_then(|m| law_time_step_advice(&cc.law, h, m, 1.0))
-            .ok();
+        let n = 3 * bridge.bodies.len();
+        let n_ends = 2 * bridge.joints.len();
+        let m_eff = bridge
+            .joints
+            .iter()
+            .filter_map(|j| {
+                effective_mass(bridge.bodies[j.a].mass.mass, bridge.bodies[j.b].mass.mass).ok()
+            })
+            .reduce(Real::min);
+        let advice = m_eff.and_then(|m| law_time_step_advice(&cc.law, h, m, 1.0).ok());
         let mut s = ComplianceStepper {
-            bodies: bridge.bodies,
-            half_w: bridge.half_w,
+            bodies: bridge.bodies.clone(),
+            joints: bridge.joints.clone(),
             joint,
-            mu: problem.model.friction,
+            mu: friction,
             vr: cc.friction_velocity,
             h,
             th,
             hth: h * th,
-            states: [LawState::default(); 2],
-            ends: [EndEval::open(); 2],
-            r_k: Vector6::zeros(),
-            joint_in_contact: false,
-            open_imp: [None, None],
+            states: vec![LawState::default(); n_ends],
+            ends: vec![EndEval::open(n); n_ends],
+            forces: vec![[0.0; 2]; bridge.joints.len()],
+            r_k: State::zeros(n),
+            joint_in_contact: vec![false; bridge.joints.len()],
+            open_imp: vec![None; n_ends],
             d_cont: 0.0,
             stats: StepperStats {
                 time_step_advice: advice,
                 ..StepperStats::default()
             },
         };
-        let (q, u) = (Vector6::from(problem.q0), Vector6::from(problem.u0));
-        let first = s.eval_ends(&q, &u, &s.states);
-        for e in 0..2 {
-            s.states[e] = LawState::open_at(first[e].delta.min(0.0));
+        let first = s.eval_ends(q0, u0, &s.states);
+        for (st, f) in s.states.iter_mut().zip(&first) {
+            *st = LawState::open_at(f.delta.min(0.0));
         }
-        s.ends = s.eval_ends(&q, &u, &s.states);
-        for e in 0..2 {
-            s.states[e] = s.ends[e].state;
+        s.ends = s.eval_ends(q0, u0, &s.states);
+        for (st, e) in s.states.iter_mut().zip(&s.ends) {
+            *st = e.state;
         }
         s.r_k = gen_force(&s.ends);
+        s.set_forces();
         s
     }
 
-    /// Evaluates both ends at `(q, u)` from the committed `states`.
-    fn eval_ends(
-        &self,
-        q: &Vector6<Real>,
-        u: &Vector6<Real>,
-        states: &[LawState; 2],
-    ) -> [EndEval; 2] {
+    /// Copies the ends' normal forces into [`ComplianceStepper::forces`].
+    fn set_forces(&mut self) {
+        for (k, f) in self.forces.iter_mut().enumerate() {
+            *f = [self.ends[2 * k].f_n, self.ends[2 * k + 1].f_n];
+        }
+    }
+
+    /// Evaluates every joint end at `(q, u)` from the committed `states`.
+    fn eval_ends(&self, q: &State, u: &State, states: &[LawState]) -> Vec<EndEval> {
         let (mu, vr) = (self.mu, self.vr);
-        let qa: [Real; 6] = (*q).into();
-        let pose = Pose::new(&self.bodies, &qa);
-        let (cands, sel) = candidates(&self.bodies, &pose, self.half_w);
-        let mut out = [EndEval::open(); 2];
-        for e in 0..2 {
-            match sel[e] {
-                Some(i) => {
-                    let c = cands[i];
-                    let (wn, wt) = c.force_directions(&pose);
-                    let (wn, wt) = (Vector6::from(wn), Vector6::from(wt));
-                    let delta = -c.gap;
-                    let ddot = -wn.dot(u);
-                    let ev = self.joint.corner_evaluate(&states[e], delta, ddot);
-                    let gt = wt.dot(u);
-                    let root = (gt * gt + vr * vr).sqrt();
-                    let s = gt / root;
-                    let sp = vr * vr / (root * root * root);
-                    out[e] = EndEval {
-                        case: Some(c.case),
-                        wn,
-                        wt,
-                        delta,
-                        f_n: ev.force,
-                        f_t: -mu * ev.force * s,
-                        kc: ev.stiffness * self.hth + ev.damping,
-                        kt: mu * ev.force * sp,
-                        mus: mu * s,
-                        state: ev.state,
-                    };
+        let n = q.len();
+        let pose = Pose::new(&self.bodies, q.as_slice());
+        let mut out = Vec::with_capacity(states.len());
+        for jg in &self.joints {
+            let jf = candidates(&self.bodies, &pose, jg);
+            for e in 0..2 {
+                let mut ev = EndEval::open(n);
+                match jf.sel[e] {
+                    Some(i) => {
+                        let c = jf.cands[i];
+                        let (wn, wt) = c.force_directions(&pose, jg);
+                        let (wn, wt) = (wn.dense(self.bodies.len()), wt.dense(self.bodies.len()));
+                        let delta = -c.gap;
+                        let ddot = -wn.dot(u);
+                        let law = self.joint.corner_evaluate(&states[out.len()], delta, ddot);
+                        let gt = wt.dot(u);
+                        let root = (gt * gt + vr * vr).sqrt();
+                        let s = gt / root;
+                        let sp = vr * vr / (root * root * root);
+                        ev = EndEval {
+                            case: Some(c.case),
+                            wn,
+                            wt,
+                            delta,
+                            f_n: law.force,
+                            f_t: -mu * law.force * s,
+                            kc: law.stiffness * self.hth + law.damping,
+                            kt: mu * law.force * sp,
+                            mus: mu * s,
+                            state: law.state,
+                        };
+                    }
+                    None => {
+                        // No corner over the other face at this end: open, state reset to the
+                        // open gap.
+                        ev.state = LawState::open_at(-jg.half_w.max(1.0));
+                    }
                 }
-                None => {
-                    // No corner over the other face at this end: open, state reset to the open gap.
-                    out[e].state = LawState::open_at(-self.half_w.max(1.0));
-                }
+                out.push(ev);
             }
         }
         out
     }
 
     /// `q_{k+1}` for the trial `u_{k+1} = un`.
-    fn q_of(&self, tr: &Trial, un: &Vector6<Real>) -> Vector6<Real> {
+    fn q_of(&self, tr: &Trial, un: &State) -> State {
         tr.q + (tr.u * (1.0 - self.th) + un * self.th) * self.h
     }
 
     /// The ends at the trial `un`.
-    fn eval_at(&self, tr: &Trial, un: &Vector6<Real>) -> [EndEval; 2] {
+    fn eval_at(&self, tr: &Trial, un: &State) -> Vec<EndEval> {
         self.eval_ends(&self.q_of(tr, un), un, &self.states)
     }
 
     /// The residual `r(u) = u − base − hθ Ŵ⁻¹ R(u)`.
-    fn resid(&self, tr: &Trial, un: &Vector6<Real>, ev: &[EndEval; 2]) -> Vector6<Real> {
-        un - tr.base - tr.winv * gen_force(ev) * self.hth
+    fn resid(&self, tr: &Trial, un: &State, ev: &[EndEval]) -> State {
+        un - &tr.base - tr.sc.winv_mul(&gen_force(ev)) * self.hth
     }
 
     /// Newton with backtracking on `r(u) = 0` from `un`; returns the converged iterate or, if
     /// none, the one with the smallest residual (`converged = false`).
-    fn newton(&self, tr: &Trial, mut un: Vector6<Real>) -> (bool, Vector6<Real>, [EndEval; 2]) {
+    fn newton(&self, tr: &Trial, mut un: State) -> (bool, State, Vec<EndEval>) {
+        let n = un.len();
         let mut ev = self.eval_at(tr, &un);
         let mut r = self.resid(tr, &un, &ev);
-        let mut best = (r.amax(), un, ev);
+        let mut best = (r.amax(), un.clone(), ev.clone());
         // open contacts (no force now or before): the first guess is exact
         if r.amax() <= 1e-12 + 1e-10 * un.amax() {
             return (true, un, ev);
         }
         for _ in 0..50 {
-            let jac = Matrix6::identity() - tr.winv * force_jacobian(&ev, false) * self.hth;
-            let Some(du) = jac.lu().solve(&(-r)) else {
+            let jac = DMatrix::identity(n, n)
+                - tr.sc.winv_mul_mat(&force_jacobian(&ev, false)) * self.hth;
+            let Some(du) = jac.lu().solve(&(-&r)) else {
                 break;
             };
             // backtracking line search on |r|
@@ -300,7 +324,7 @@ impl ComplianceStepper {
             let mut step = 1.0;
             let mut accepted = false;
             for _ in 0..12 {
-                let trial = un + du * step;
+                let trial = &un + &du * step;
                 let ev_t = self.eval_at(tr, &trial);
                 let r_t = self.resid(tr, &trial, &ev_t);
                 if r_t.amax() <= r0 || step < 1e-3 {
@@ -316,9 +340,9 @@ impl ComplianceStepper {
                 break;
             }
             if r.amax() < best.0 {
-                best = (r.amax(), un, ev);
+                best = (r.amax(), un.clone(), ev.clone());
             }
-            if (du * step).amax() <= 1e-12 + 1e-10 * un.amax() {
+            if (&du * step).amax() <= 1e-12 + 1e-10 * un.amax() {
                 return (true, un, ev);
             }
         }
@@ -326,7 +350,7 @@ impl ComplianceStepper {
     }
 
     /// Holds the ends in `held` with the unknown forces `lam` (closure step).
-    fn hold(&self, ev: &mut [EndEval; 2], held: &[usize], lam: &[Real], un: &Vector6<Real>) {
+    fn hold(&self, ev: &mut [EndEval], held: &[usize], lam: &[Real], un: &State) {
         let (mu, vr) = (self.mu, self.vr);
         for (i, &e) in held.iter().enumerate() {
             let gt = ev[e].wt.dot(un);
@@ -347,46 +371,47 @@ impl ComplianceStepper {
     fn closure_step(
         &self,
         tr: &Trial,
-        u0: &Vector6<Real>,
-        ev0: &[EndEval; 2],
-    ) -> Option<(Vector6<Real>, [EndEval; 2])> {
-        let held: Vec<usize> = (0..2)
+        u0: &State,
+        ev0: &[EndEval],
+    ) -> Option<(State, Vec<EndEval>)> {
+        let held: Vec<usize> = (0..ev0.len())
             .filter(|&e| ev0[e].case.is_some() && ev0[e].delta.abs() < 1e-6)
             .collect();
         if held.is_empty() {
             return None;
         }
-        let (n, hth) = (6 + held.len(), self.hth);
-        let mut un = *u0;
+        let nq = u0.len();
+        let (n, hth) = (nq + held.len(), self.hth);
+        let mut un = u0.clone();
         let mut lam: Vec<Real> = held.iter().map(|&e| ev0[e].f_n).collect();
         for _ in 0..30 {
             let mut ev = self.eval_at(tr, &un);
             self.hold(&mut ev, &held, &lam, &un);
-            let r_u = un - tr.base - tr.winv * gen_force(&ev) * hth;
-            let mut r = nalgebra::DVector::<Real>::zeros(n);
-            r.rows_mut(0, 6).copy_from(&r_u);
+            let r_u = &un - &tr.base - tr.sc.winv_mul(&gen_force(&ev)) * hth;
+            let mut r = State::zeros(n);
+            r.rows_mut(0, nq).copy_from(&r_u);
             for (i, &e) in held.iter().enumerate() {
-                r[6 + i] = ev[e].delta;
+                r[nq + i] = ev[e].delta;
             }
             let dr = force_jacobian(&ev, true);
             let mut jac = nalgebra::DMatrix::<Real>::zeros(n, n);
-            jac.view_mut((0, 0), (6, 6))
-                .copy_from(&(Matrix6::identity() - tr.winv * dr * hth));
+            jac.view_mut((0, 0), (nq, nq))
+                .copy_from(&(DMatrix::identity(nq, nq) - tr.sc.winv_mul_mat(&dr) * hth));
             for (i, &e) in held.iter().enumerate() {
-                let col = -(tr.winv * (ev[e].wn - ev[e].wt * ev[e].mus)) * hth;
-                jac.view_mut((0, 6 + i), (6, 1)).copy_from(&col);
+                let col = -(tr.sc.winv_mul(&(&ev[e].wn - &ev[e].wt * ev[e].mus))) * hth;
+                jac.view_mut((0, nq + i), (nq, 1)).copy_from(&col);
                 // δ = −g_N, ∂g_N/∂q = w_Nᵀ, ∂q/∂u = hθ
                 let row = -(ev[e].wn.transpose() * hth);
-                jac.view_mut((6 + i, 0), (1, 6)).copy_from(&row);
+                jac.view_mut((nq + i, 0), (1, nq)).copy_from(&row);
             }
             let dx = jac.lu().solve(&(-&r))?;
-            let du = Vector6::from_iterator(dx.rows(0, 6).iter().copied());
-            un += du;
+            let du: State = dx.rows(0, nq).into_owned();
+            un += &du;
             for i in 0..held.len() {
-                lam[i] += dx[6 + i];
+                lam[i] += dx[nq + i];
             }
             let small = du.amax() <= 1e-12 + 1e-10 * un.amax()
-                && (0..held.len()).all(|i| dx[6 + i].abs() <= 1e-6 * lam[i].abs().max(1.0));
+                && (0..held.len()).all(|i| dx[nq + i].abs() <= 1e-6 * lam[i].abs().max(1.0));
             if small {
                 return self.closure_accept(tr, un, &held, &lam);
             }
@@ -398,10 +423,10 @@ impl ComplianceStepper {
     fn closure_accept(
         &self,
         tr: &Trial,
-        un: Vector6<Real>,
+        un: State,
         held: &[usize],
         lam: &[Real],
-    ) -> Option<(Vector6<Real>, [EndEval; 2])> {
+    ) -> Option<(State, Vec<EndEval>)> {
         let mut ev = self.eval_at(tr, &un);
         for (i, &e) in held.iter().enumerate() {
             let ddot = -ev[e].wn.dot(&un);
@@ -425,18 +450,20 @@ impl ComplianceStepper {
         &mut self,
         log: &mut ImpactLog,
         time: Real,
-        u: &Vector6<Real>,
-        un: &Vector6<Real>,
-        u_mid: &Vector6<Real>,
-        ev: &[EndEval; 2],
+        u: &State,
+        un: &State,
+        u_mid: &State,
+        ev: &[EndEval],
     ) {
         let (h, th) = (self.h, self.th);
-        let f_now = ev[0].f_n + ev[1].f_n;
-        if f_now > 0.0 && !self.joint_in_contact {
-            log.impacts += 1;
+        for k in 0..self.joint_in_contact.len() {
+            let f_now = ev[2 * k].f_n + ev[2 * k + 1].f_n;
+            if f_now > 0.0 && !self.joint_in_contact[k] {
+                log.impacts += 1;
+            }
+            self.joint_in_contact[k] = f_now > 0.0;
         }
-        self.joint_in_contact = f_now > 0.0;
-        for e in 0..2 {
+        for e in 0..ev.len() {
             let (fn0, ft0) = (self.ends[e].f_n, self.ends[e].f_t);
             let (fn1, ft1) = (ev[e].f_n, ev[e].f_t);
             if fn1 > 0.0 && self.open_imp[e].is_none() {
@@ -470,8 +497,8 @@ impl ComplianceStepper {
                 } else {
                     &self.ends[e]
                 };
-                let (wn, wt) = (src.wn, src.wt);
-                oi.work -= u_mid.dot(&wn) * pn + u_mid.dot(&wt) * pt;
+                let (wn, wt) = (&src.wn, &src.wt);
+                oi.work -= u_mid.dot(wn) * pn + u_mid.dot(wt) * pt;
                 if fn1 <= 0.0 {
                     let rec = &mut log.records[oi.record];
                     rec.gamma_n_post = wn.dot(un);
@@ -489,8 +516,8 @@ impl ComplianceStepper {
 }
 
 impl Stepper for ComplianceStepper {
-    fn contact_forces(&self) -> Option<[Real; 2]> {
-        Some([self.ends[0].f_n, self.ends[1].f_n])
+    fn contact_forces(&self) -> Option<&[[Real; 2]]> {
+        Some(&self.forces)
     }
 
     fn contact_energy(&self) -> Real {
@@ -499,15 +526,16 @@ impl Stepper for ComplianceStepper {
 
     fn step(&mut self, inp: &StepInput, log: &mut ImpactLog) -> StepOutput {
         let (h, th, hth) = (self.h, self.th, self.hth);
-        let winv = &inp.scheme.winv;
-        let r_k = self.r_k;
+        let sc = inp.scheme;
+        let wr = sc.winv_mul(&self.r_k);
         let tr = Trial {
             q: inp.q,
             u: inp.u,
-            winv,
-            base: inp.u_free + winv * r_k * (h * (1.0 - th)),
+            sc,
+            base: inp.u_free + &wr * (h * (1.0 - th)),
         };
-        let (converged, mut un, mut ev) = self.newton(&tr, tr.base + winv * r_k * hth);
+        let guess = &tr.base + &wr * hth;
+        let (converged, mut un, mut ev) = self.newton(&tr, guess);
         if !converged {
             match self.closure_step(&tr, &un, &ev) {
                 Some((u2, ev2)) => {
@@ -520,19 +548,18 @@ impl Stepper for ComplianceStepper {
             }
         }
         let r_new = gen_force(&ev);
-        let rbar = r_k * (1.0 - th) + r_new * th;
-        let u_mid = (inp.u + un) * 0.5;
+        let rbar = &self.r_k * (1.0 - th) + &r_new * th;
+        let u_mid = (inp.u + &un) * 0.5;
         self.d_cont -= h * u_mid.dot(&rbar);
         self.track_impacts(log, inp.t + h, inp.u, &un, &u_mid, &ev);
         self.r_k = r_new;
+        let penetration = ev
+            .iter()
+            .map(|e| e.delta)
+            .fold(Real::NEG_INFINITY, Real::max);
         self.ends = ev;
-        StepOutput {
-            u: un,
-            penetration: ev
-                .iter()
-                .map(|e| e.delta)
-                .fold(Real::NEG_INFINITY, Real::max),
-        }
+        self.set_forces();
+        StepOutput { u: un, penetration }
     }
 
     fn finish(&mut self, log: &mut ImpactLog) -> StepperStats {

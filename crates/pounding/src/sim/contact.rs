@@ -1,52 +1,108 @@
-//! Corner-against-face contacts at the joint in the current (moving) pose.
+//! Corner-against-face contacts at the joints in the current (moving) pose.
 //!
-//! Candidate `case` (spec §5.3): corner `c_k` of the striking deck `a` against the joint-face line
-//! of the struck deck `b`. In the current pose (exact rotations, not linearised):
+//! Joint `k` lies between segment `a = k` (its end face) and segment `b = k + 1` (its start face);
+//! `ν⁰` is the inward normal of `a`'s end face (pointing from `b` toward `a`) and `τ⁰ = perp(ν⁰)`.
+//! In the two-deck model `a` is deck 1, `b` deck 2, `ν⁰ = (0, 1)`, `τ⁰ = (−1, 0)` (spec §4).
 //!
-//! * corner `P = G_a + Rot(θ_a)(c_k⁰ − G_a⁰)`, face midpoint `M_b = G_b + Rot(θ_b)(M_b⁰ − G_b⁰)`;
-//! * `ν = Rot(θ_b)(0, 1)` (deck-2 side → deck-1 side), `τ = Rot(θ_b)(−1, 0)`;
-//! * signed gap `g_N = (P_1 − P_2)·ν` = `(P − M_2)·ν` if `a = 1`, `(M_1 − P)·ν` if `a = 2`;
-//! * `σ_b = (P − M_b)·Rot(θ_b) e_b`; the corner lies over the face iff `|σ_b| ≤ W/2`;
+//! Candidate `case` (spec §5.3): corner `c_k` of the striking segment against the joint-face line
+//! of the struck one (`Deck1*`: `a` strikes `b`; `Deck2*`: `b` strikes `a`). In the current pose
+//! (exact rotations, not linearised):
+//!
+//! * corner `P = G_s + Rot(θ_s)(c_k⁰ − G_s⁰)`, struck face midpoint `M = G + Rot(θ)(M⁰ − G⁰)`;
+//! * `ν = Rot(θ_struck) ν⁰`, `τ = Rot(θ_struck) τ⁰`;
+//! * signed gap `g_N = (P_a − P_b)·ν` = `(P − M_b)·ν` if `a` strikes, `(M_a − P)·ν` if `b` strikes;
+//! * `σ = (P − M)·Rot(θ_struck) e` (`e` the struck face's direction); the corner lies over the
+//!   face iff `|σ| ≤ W/2`;
 //! * force directions (spec §6) with the contact point `C = P`, `r_j = C − G_j`:
-//!   `w_N = (ν, r_1 × ν, −ν, −r_2 × ν)`, `w_T = (τ, r_1 × τ, −τ, −r_2 × τ)`.
+//!   `w_N = (ν, r_a × ν)` on `a` and `(−ν, −r_b × ν)` on `b`; `w_T` likewise with `τ`.
 //!
-//! The two candidates at one end of the joint (deck1-inner / deck2-outer at `x = +W/2`,
-//! deck1-outer / deck2-inner at `x = −W/2`, spec §4) describe the same pair of edges; the
+//! The two candidates at one end of the joint (`Deck1Inner` / `Deck2Outer` at corner `c0` of
+//! `a`'s face, `Deck1Outer` / `Deck2Inner` at `c1`) describe the same pair of edges; the
 //! simulator uses, per end, the candidate whose corner lies over the other face (spec §5.4; the
-//! smaller gap if both do, i.e. corner on corner), so at most two contacts enter the LCP.
+//! smaller gap if both do, i.e. corner on corner), so at most two contacts per joint.
 
-use super::model::DeckBody;
+use super::model::SegmentBody;
 use crate::geometry::ContactCase;
 use crate::math::{Real, Vector, cross};
+use nalgebra::DVector;
 
-/// The current pose of both decks.
-#[derive(Debug, Clone, Copy)]
+/// The generalised coordinates (or velocities) of a bridge: `(x_j, y_j, θ_j)` per segment.
+pub(crate) type State = DVector<Real>;
+
+/// `Rot(θ) v` with `sc = (sin θ, cos θ)`.
+#[inline]
+fn rotate(sc: (Real, Real), v: Vector) -> Vector {
+    let (s, c) = sc;
+    Vector::new(c * v.x - s * v.y, s * v.x + c * v.y)
+}
+
+/// The reference geometry of one joint.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct JointGeom {
+    /// Segment whose end face is at the joint (deck 1's role).
+    pub a: usize,
+    /// Segment whose start face is at the joint (deck 2's role), `a + 1`.
+    pub b: usize,
+    /// Reference gap \[m\].
+    pub gap: Real,
+    /// Half the joint-face length \[m\].
+    pub half_w: Real,
+    /// `ν⁰`: unit normal from `b` toward `a`.
+    pub nu0: Vector,
+    /// `τ⁰ = perp(ν⁰)`.
+    pub tau0: Vector,
+}
+
+impl JointGeom {
+    /// The joint between segments `a` and `a + 1`.
+    pub fn new(bodies: &[SegmentBody], a: usize, gap: Real) -> Self {
+        let nu0 = bodies[a].end.inward;
+        JointGeom {
+            a,
+            b: a + 1,
+            gap,
+            half_w: bodies[a].end.half,
+            nu0,
+            tau0: Vector::new(-nu0.y, nu0.x),
+        }
+    }
+}
+
+/// The current pose of every segment.
+#[derive(Debug, Clone)]
 pub(crate) struct Pose {
     /// Centroid displacements `(x_j, y_j)`.
-    pub d: [Vector; 2],
+    pub d: Vec<Vector>,
     /// `(sin θ_j, cos θ_j)`.
-    pub sc: [(Real, Real); 2],
+    pub sc: Vec<(Real, Real)>,
     /// Current centroids.
-    pub g: [Vector; 2],
+    pub g: Vec<Vector>,
 }
 
 impl Pose {
-    pub fn new(bodies: &[DeckBody; 2], q: &[Real; 6]) -> Self {
-        let d = [Vector::new(q[0], q[1]), Vector::new(q[3], q[4])];
-        Pose {
-            d,
-            sc: [q[2].sin_cos(), q[5].sin_cos()],
-            g: [bodies[0].centroid + d[0], bodies[1].centroid + d[1]],
+    pub fn new(bodies: &[SegmentBody], q: &[Real]) -> Self {
+        let n = bodies.len();
+        let mut pose = Pose {
+            d: Vec::with_capacity(n),
+            sc: Vec::with_capacity(n),
+            g: Vec::with_capacity(n),
+        };
+        for (j, b) in bodies.iter().enumerate() {
+            let d = Vector::new(q[3 * j], q[3 * j + 1]);
+            pose.d.push(d);
+            pose.sc.push(q[3 * j + 2].sin_cos());
+            pose.g.push(b.centroid + d);
         }
+        pose
     }
-    /// Current position of deck `j`'s (0-based) body point with reference position `p0`.
+    /// Current position of segment `j`'s (0-based) body point with reference position `p0`.
     #[inline]
-    pub fn place(&self, bodies: &[DeckBody; 2], j: usize, p0: &Vector) -> Vector {
+    pub fn place(&self, bodies: &[SegmentBody], j: usize, p0: &Vector) -> Vector {
         bodies[j].place(p0, &self.d[j], self.sc[j])
     }
 }
 
-/// `(striking deck index a, corner index k)`, 0-based, of a case.
+/// `(striking role r, corner index k)`, 0-based (`r = 0`: segment `a`), of a case.
 pub(crate) fn case_parts(case: ContactCase) -> (usize, usize) {
     match case {
         ContactCase::Deck1Inner => (0, 0),
@@ -56,11 +112,31 @@ pub(crate) fn case_parts(case: ContactCase) -> (usize, usize) {
     }
 }
 
-/// The two candidates of each joint end: end 0 at `x = +W/2`, end 1 at `x = −W/2`.
+/// The two candidates of each joint end: end 0 at `a`'s corner `c0`, end 1 at its `c1`.
 pub(crate) const ENDS: [[ContactCase; 2]; 2] = [
     [ContactCase::Deck1Inner, ContactCase::Deck2Outer],
     [ContactCase::Deck1Outer, ContactCase::Deck2Inner],
 ];
+
+/// A generalised force direction of a contact: the 3-vectors it puts on one or two segments.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Direction {
+    /// `(segment, (f_x, f_y, m))` of the first segment.
+    pub first: (usize, [Real; 3]),
+    /// The second segment, if any (abutments act on one).
+    pub second: Option<(usize, [Real; 3])>,
+}
+
+impl Direction {
+    /// The dense column in `q` coordinates (`3 n_bodies` entries).
+    pub fn dense(&self, n_bodies: usize) -> State {
+        let mut w = State::zeros(3 * n_bodies);
+        for (j, v) in std::iter::once(self.first).chain(self.second) {
+            w.fixed_rows_mut::<3>(3 * j).copy_from_slice(&v);
+        }
+        w
+    }
+}
 
 /// One candidate contact in the current pose.
 #[derive(Debug, Clone, Copy)]
@@ -74,21 +150,34 @@ pub(crate) struct Candidate {
 }
 
 impl Candidate {
-    pub fn new(bodies: &[DeckBody; 2], pose: &Pose, case: ContactCase) -> Self {
-        let (a, k) = case_parts(case);
-        let b = 1 - a;
-        let p = pose.place(bodies, a, &bodies[a].joint_corners[k]);
-        let mb = pose.place(bodies, b, &bodies[b].face_mid);
-        let (s, c) = pose.sc[b];
-        let normal = Vector::new(-s, c);
-        let tangent = Vector::new(-c, -s);
-        let gap = if a == 0 {
+    pub fn new(bodies: &[SegmentBody], pose: &Pose, joint: &JointGeom, case: ContactCase) -> Self {
+        let (r, k) = case_parts(case);
+        let (striker, struck, corner, face) = if r == 0 {
+            (
+                joint.a,
+                joint.b,
+                bodies[joint.a].end.corners[k],
+                bodies[joint.b].start,
+            )
+        } else {
+            (
+                joint.b,
+                joint.a,
+                bodies[joint.b].start.corners[k],
+                bodies[joint.a].end,
+            )
+        };
+        let p = pose.place(bodies, striker, &corner);
+        let mb = pose.place(bodies, struck, &face.mid);
+        let sc = pose.sc[struck];
+        let normal = rotate(sc, joint.nu0);
+        let tangent = rotate(sc, joint.tau0);
+        let gap = if r == 0 {
             (p - mb).dot(&normal)
         } else {
             (mb - p).dot(&normal)
         };
-        let e = bodies[b].face_dir;
-        let e_rot = Vector::new(c * e.x - s * e.y, s * e.x + c * e.y);
+        let e_rot = rotate(sc, face.dir);
         Candidate {
             case,
             gap,
@@ -99,26 +188,30 @@ impl Candidate {
         }
     }
 
-    /// `(w_N, w_T)` in `q` coordinates (spec §6).
-    pub fn force_directions(&self, pose: &Pose) -> ([Real; 6], [Real; 6]) {
-        let r1 = self.point - pose.g[0];
-        let r2 = self.point - pose.g[1];
-        let (n, t) = (self.normal, self.tangent);
-        (
-            [n.x, n.y, cross(&r1, &n), -n.x, -n.y, -cross(&r2, &n)],
-            [t.x, t.y, cross(&r1, &t), -t.x, -t.y, -cross(&r2, &t)],
-        )
+    /// `(w_N, w_T)` of this candidate at `joint` (spec §6).
+    pub fn force_directions(&self, pose: &Pose, joint: &JointGeom) -> (Direction, Direction) {
+        let r1 = self.point - pose.g[joint.a];
+        let r2 = self.point - pose.g[joint.b];
+        let dir = |v: Vector| Direction {
+            first: (joint.a, [v.x, v.y, cross(&r1, &v)]),
+            second: Some((joint.b, [-v.x, -v.y, -cross(&r2, &v)])),
+        };
+        (dir(self.normal), dir(self.tangent))
     }
 }
 
-/// All four candidates (in [`ContactCase::ALL`] order) and, per joint end, the index (into that
-/// array) of the candidate that is geometrically realised, if any.
-pub(crate) fn candidates(
-    bodies: &[DeckBody; 2],
-    pose: &Pose,
-    half_width: Real,
-) -> ([Candidate; 4], [Option<usize>; 2]) {
-    let all = ContactCase::ALL.map(|c| Candidate::new(bodies, pose, c));
+/// The four candidates of one joint (in [`ContactCase::ALL`] order) and, per joint end, the
+/// index (into that array) of the candidate that is geometrically realised, if any.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct JointFrame {
+    pub cands: [Candidate; 4],
+    pub sel: [Option<usize>; 2],
+}
+
+/// The candidates of `joint` in `pose` ([`JointFrame`]).
+pub(crate) fn candidates(bodies: &[SegmentBody], pose: &Pose, joint: &JointGeom) -> JointFrame {
+    let all = ContactCase::ALL.map(|c| Candidate::new(bodies, pose, joint, c));
+    let half_width = joint.half_w;
     let tol = 1e-9 * half_width;
     let mut sel = [None, None];
     for (e, pair) in ENDS.iter().enumerate() {
@@ -133,5 +226,18 @@ pub(crate) fn candidates(
             (false, false) => None,
         };
     }
-    (all, sel)
+    JointFrame { cands: all, sel }
+}
+
+/// `Σ_d w_d v_d` over the entries of `w` in order (a left-to-right sum, as the dense 6-entry
+/// sum of the two-deck model).
+#[inline]
+pub(crate) fn dot_dir(w: &Direction, v: &State) -> Real {
+    let mut it = std::iter::once(w.first).chain(w.second);
+    let (j0, a0) = it.next().unwrap();
+    let head = (0..3).map(move |i| a0[i] * v[3 * j0 + i]);
+    match w.second {
+        None => head.sum(),
+        Some((j1, a1)) => head.chain((0..3).map(move |i| a1[i] * v[3 * j1 + i])).sum(),
+    }
 }

@@ -20,21 +20,20 @@
 //! contact term `D_contact` belongs to the stepper ([`Stepper::contact_energy`]).
 //!
 //! The driver knows the bridge only through lists: bodies (3 DOF each, `q = (x_j, y_j, θ_j)_j`),
-//! deck ends on seats, abutment faces, the joint-end gaps of a [`Frame`]. The two-deck model is
-//! one instance ([`State`] is its 6-vector).
+//! segment ends on seats, abutment faces, the joints' candidates of a [`Frame`]; `M`, `K`, `C`
+//! are block diagonal (one `3 × 3` block per segment). The two-deck model is one instance
+//! ([`Bridge::new`], [`pair_solution`]).
 
-use super::contact::{Candidate, Pose, candidates};
-use super::model::{DeckBody, LinearSystem};
+use super::contact::{JointFrame, JointGeom, Pose, State, candidates};
+use super::model::{LinearSystem, SegmentBody};
 use super::{
     Energy, History, ImpactRecord, SimContact, SimError, SimModel, SimProblem, SimSettings,
     SimSolution, SimStatus, SimSummary, balance_error, energies_finite, max_nan,
 };
 use crate::contact_law::timestep::TimeStepAdvice;
+use crate::ground_motion::GroundMotion;
 use crate::math::{Real, Vector};
-use nalgebra::{Matrix6, Matrix6x2, Vector2, Vector6};
-
-/// The generalised coordinates (or velocities) of the bridge: `(x_j, y_j, θ_j)` per body.
-pub(crate) type State = Vector6<Real>;
+use nalgebra::{DMatrix, Matrix3, Matrix3x2, Vector2, Vector3};
 
 /// Validates the settings, the ground motion, the model and the initial state; returns the
 /// assembled linear system.
@@ -58,7 +57,46 @@ pub(crate) fn checked_system(
     Ok(sys)
 }
 
-/// The time grid and the iteration matrices of the θ-method.
+/// The linear structure of one segment in `(u_x, u_y, θ)`: its mass, bearing stiffness and
+/// damping blocks (`M`, `K`, `C` of the bridge are block diagonal: bearings and dashpots tie a
+/// segment to the ground only), natural frequencies and Rayleigh coefficients.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct BodySystem {
+    /// `diag(m, m, I)`.
+    pub mass: Matrix3<Real>,
+    /// Bearing stiffness.
+    pub stiffness: Matrix3<Real>,
+    /// Damping.
+    pub damping: Matrix3<Real>,
+    /// Natural frequencies \[rad/s\].
+    pub frequencies: [Real; 3],
+    /// Rayleigh coefficients `(a_0, a_1)`.
+    pub rayleigh: (Real, Real),
+}
+
+impl BodySystem {
+    /// The diagonal blocks of the two-deck system (exact copies).
+    pub fn of_pair(sys: &LinearSystem) -> Vec<Self> {
+        (0..2)
+            .map(|j| {
+                let o = 3 * j;
+                BodySystem {
+                    mass: sys.mass.fixed_view::<3, 3>(o, o).into_owned(),
+                    stiffness: sys.stiffness.fixed_view::<3, 3>(o, o).into_owned(),
+                    damping: sys.damping.fixed_view::<3, 3>(o, o).into_owned(),
+                    frequencies: sys.frequencies[j],
+                    rayleigh: sys.rayleigh[j],
+                }
+            })
+            .collect()
+    }
+}
+
+/// The time grid and the iteration matrices of the θ-method, one `3 × 3` block per segment.
+///
+/// Every product is taken block by block; because the full matrices are block diagonal this
+/// gives the same floating-point results as the dense products (the off-block terms are exact
+/// zeros).
 pub(crate) struct Scheme {
     /// Step `h`.
     pub h: Real,
@@ -68,29 +106,29 @@ pub(crate) struct Scheme {
     pub n_steps: usize,
     /// Ground acceleration at `t_0 … t_n`.
     pub ag: Vec<Vector>,
-    /// `M`, `K`, `C`, frequencies.
-    pub sys: LinearSystem,
-    /// `Ŵ⁻¹ = (M + hθC + h²θ²K)⁻¹`.
-    pub winv: Matrix6<Real>,
-    a_u: Matrix6<Real>,
-    a_q: Matrix6<Real>,
-    b_g: Matrix6x2<Real>,
-    /// `M r`: the effective load is `F = −M r a_g`.
-    mr: Matrix6x2<Real>,
+    /// `M`, `K`, `C`, frequencies per segment.
+    pub bodies: Vec<BodySystem>,
+    /// `Ŵ_j⁻¹ = (M_j + hθC_j + h²θ²K_j)⁻¹` per segment.
+    winv: Vec<Matrix3<Real>>,
+    a_u: Vec<Matrix3<Real>>,
+    a_q: Vec<Matrix3<Real>>,
+    b_g: Vec<Matrix3x2<Real>>,
+    /// `M_j r`: the effective load is `F = −M r a_g`.
+    mr: Vec<Matrix3x2<Real>>,
 }
 
 impl Scheme {
     /// Duration, step count, ground-motion samples and `Ŵ⁻¹` (errors name `duration` / `dt`).
     pub fn new(
-        problem: &SimProblem,
+        ground: &GroundMotion,
         settings: &SimSettings,
-        sys: LinearSystem,
+        bodies: Vec<BodySystem>,
     ) -> Result<Self, SimError> {
         let h = settings.dt;
         let duration = match settings.duration {
             Some(d) => d,
             None => {
-                let d = problem.ground.end_time();
+                let d = ground.end_time();
                 if d <= 0.0 {
                     return Err(SimError::invalid(
                         "duration",
@@ -102,56 +140,127 @@ impl Scheme {
             }
         };
         let n_steps = settings.step_count(duration)?;
-        let ag = problem.ground.sample_uniform(h, n_steps);
+        let ag = ground.sample_uniform(h, n_steps);
         let th = settings.theta;
-        let (mm, kk, cc) = (&sys.mass, &sys.stiffness, &sys.damping);
-        // h²θ² as the rigid scheme always computed it; the former compliance copy used (hθ)²,
-        // which has the same bits for θ = ½ (scaling by powers of two is exact).
-        let what = mm + cc * (h * th) + kk * (h * h * th * th);
-        let winv = what
-            .try_inverse()
-            .ok_or_else(|| SimError::invalid("dt", h, "iteration matrix is singular"))?;
-        // u_free = u + A_u u + A_q q + B_g ā,  B_g = −h Ŵ⁻¹ M r
-        let a_u = -(winv * (cc + kk * (h * th))) * h;
-        let a_q = -(winv * kk) * h;
-        let mut mr = Matrix6x2::zeros();
-        for j in 0..mm.nrows() / 3 {
-            mr[(3 * j, 0)] = mm[(3 * j, 3 * j)];
-            mr[(3 * j + 1, 1)] = mm[(3 * j + 1, 3 * j + 1)];
-        }
-        let b_g = -(winv * mr) * h;
-        Ok(Scheme {
+        let n = bodies.len();
+        let mut sc = Scheme {
             h,
             th,
             n_steps,
             ag,
-            sys,
-            winv,
-            a_u,
-            a_q,
-            b_g,
-            mr,
-        })
+            winv: Vec::with_capacity(n),
+            a_u: Vec::with_capacity(n),
+            a_q: Vec::with_capacity(n),
+            b_g: Vec::with_capacity(n),
+            mr: Vec::with_capacity(n),
+            bodies: Vec::new(),
+        };
+        for b in &bodies {
+            let (mm, kk, cc) = (&b.mass, &b.stiffness, &b.damping);
+            // h²θ² as the rigid scheme always computed it; the former compliance copy used (hθ)²,
+            // which has the same bits for θ = ½ (scaling by powers of two is exact).
+            let what = mm + cc * (h * th) + kk * (h * h * th * th);
+            // LU, as the dense inverse of the block-diagonal matrix (not the 3 × 3 cofactor form)
+            let winv = what
+                .lu()
+                .try_inverse()
+                .ok_or_else(|| SimError::invalid("dt", h, "iteration matrix is singular"))?;
+            // u_free = u + A_u u + A_q q + B_g ā,  B_g = −h Ŵ⁻¹ M r
+            let mut mr = Matrix3x2::zeros();
+            mr[(0, 0)] = mm[(0, 0)];
+            mr[(1, 1)] = mm[(1, 1)];
+            sc.a_u.push(-(winv * (cc + kk * (h * th))) * h);
+            sc.a_q.push(-(winv * kk) * h);
+            sc.b_g.push(-(winv * mr) * h);
+            sc.winv.push(winv);
+            sc.mr.push(mr);
+        }
+        sc.bodies = bodies;
+        Ok(sc)
+    }
+
+    /// Number of segments.
+    pub fn n_bodies(&self) -> usize {
+        self.bodies.len()
+    }
+
+    /// Applies a block-diagonal matrix (one `3 × 3` block per segment) to `v`.
+    fn apply(blocks: &[Matrix3<Real>], v: &State) -> State {
+        let mut out = State::zeros(v.len());
+        for (j, b) in blocks.iter().enumerate() {
+            let x: Vector3<Real> = v.fixed_rows::<3>(3 * j).into_owned();
+            out.fixed_rows_mut::<3>(3 * j).copy_from(&(b * x));
+        }
+        out
+    }
+
+    /// `Ŵ⁻¹ v`.
+    pub fn winv_mul(&self, v: &State) -> State {
+        Self::apply(&self.winv, v)
+    }
+
+    /// `Ŵ⁻¹ D` column by column.
+    pub fn winv_mul_mat(&self, d: &DMatrix<Real>) -> DMatrix<Real> {
+        let mut out = DMatrix::zeros(d.nrows(), d.ncols());
+        for c in 0..d.ncols() {
+            let col: State = d.column(c).into_owned();
+            out.set_column(c, &self.winv_mul(&col));
+        }
+        out
+    }
+
+    /// The contact-free velocity `u_free = u + A_u u + A_q q + B_g ā`.
+    fn u_free(&self, q: &State, u: &State, abar: &Vector) -> State {
+        let a = Vector2::new(abar.x, abar.y);
+        let au = Self::apply(&self.a_u, u);
+        let aq = Self::apply(&self.a_q, q);
+        let mut bg = State::zeros(u.len());
+        for (j, b) in self.b_g.iter().enumerate() {
+            bg.fixed_rows_mut::<3>(3 * j).copy_from(&(b * a));
+        }
+        u + au + aq + bg
     }
 
     /// The effective seismic load `F = −M r a_g`.
     fn load(&self, a: &Vector) -> State {
-        -(self.mr * Vector2::new(a.x, a.y))
+        let a = Vector2::new(a.x, a.y);
+        let mut f = State::zeros(3 * self.mr.len());
+        for (j, m) in self.mr.iter().enumerate() {
+            f.fixed_rows_mut::<3>(3 * j).copy_from(&(m * a));
+        }
+        -f
+    }
+
+    fn mass_of(&self) -> Vec<Matrix3<Real>> {
+        self.bodies.iter().map(|b| b.mass).collect()
     }
 
     /// `(T, V) = (½ uᵀ M u, ½ qᵀ K q)`.
     fn energies(&self, q: &State, u: &State) -> (Real, Real) {
-        let (mm, kk) = (&self.sys.mass, &self.sys.stiffness);
-        (0.5 * u.dot(&(mm * u)), 0.5 * q.dot(&(kk * q)))
+        let mu = Self::apply(&self.mass_of(), u);
+        let k: Vec<Matrix3<Real>> = self.bodies.iter().map(|b| b.stiffness).collect();
+        let kq = Self::apply(&k, q);
+        (0.5 * u.dot(&mu), 0.5 * q.dot(&kq))
+    }
+
+    /// `vᵀ C v`.
+    fn damping_power(&self, v: &State) -> Real {
+        let c: Vec<Matrix3<Real>> = self.bodies.iter().map(|b| b.damping).collect();
+        v.dot(&Self::apply(&c, v))
     }
 }
 
-/// An abutment face (the ground) beyond a body's far end ([`super::SimAbutment`]).
+/// An abutment face (the ground) beyond the start face of the first segment or the end face of
+/// the last one ([`super::SimAbutment`]).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct AbutmentFace {
-    /// The body (0-based) whose far face meets it.
+    /// The segment (0-based) whose outer face meets it.
     pub body: usize,
-    /// Normal into the body.
+    /// 0: the start abutment, 1: the end abutment.
+    pub side: usize,
+    /// The segment's face corners (reference pose).
+    pub corners: [Vector; 2],
+    /// Normal into the segment.
     pub normal: Vector,
     /// Tangent `perp(n)`.
     pub tangent: Vector,
@@ -161,52 +270,69 @@ pub(crate) struct AbutmentFace {
     pub gap: Real,
 }
 
-/// A body end resting on a seat.
-#[derive(Debug, Clone, Copy)]
-struct SeatEnd {
-    body: usize,
-    corners: [Vector; 2],
-    inward: Vector,
-    length: Real,
+impl AbutmentFace {
+    /// The abutment at `gap` beyond `side` (0: start, 1: end) of `body`.
+    pub fn new(bodies: &[SegmentBody], body: usize, side: usize, gap: Real) -> Self {
+        let face = if side == 0 {
+            &bodies[body].start
+        } else {
+            &bodies[body].end
+        };
+        let n = face.inward;
+        AbutmentFace {
+            body,
+            side,
+            corners: face.corners,
+            normal: n,
+            tangent: Vector::new(-n.y, n.x),
+            point: face.mid - n * gap,
+            gap,
+        }
+    }
 }
 
-/// The bridge as lists: bodies, joint, seated ends, abutments.
+/// A segment end resting on a seat.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct SeatEnd {
+    /// The segment.
+    pub body: usize,
+    /// Its corners (reference pose).
+    pub corners: [Vector; 2],
+    /// Inward normal of the face.
+    pub inward: Vector,
+    /// Seat length.
+    pub length: Real,
+}
+
+/// The bridge as lists: segments, joints, abutments, seated ends.
 pub(crate) struct Bridge {
-    /// Reference-pose bodies.
-    pub bodies: [DeckBody; 2],
-    /// Half the joint-face length.
-    pub half_w: Real,
-    /// Reference joint gap.
-    pub joint_gap: Real,
-    /// Abutment faces (only the present ones).
+    /// Reference-pose segments.
+    pub bodies: Vec<SegmentBody>,
+    /// Joint `k` between segments `k` and `k + 1`.
+    pub joints: Vec<JointGeom>,
+    /// Abutment faces (only the present ones), start before end.
     pub abutments: Vec<AbutmentFace>,
-    /// Seated ends in [`super::SEAT_ENDS`] order.
-    seats: Vec<SeatEnd>,
+    /// Seated ends, in the order of the seat outputs.
+    pub seats: Vec<SeatEnd>,
 }
 
 impl Bridge {
-    /// The model's bodies, abutments and seats.
+    /// The two-deck model's segments, joint, abutments and seats ([`super::SEAT_ENDS`] order).
     pub fn new(model: &SimModel) -> Self {
-        let bodies = model.bodies();
+        let decks = model.bodies();
+        let bodies = vec![
+            SegmentBody::of_deck(&decks[0], 1),
+            SegmentBody::of_deck(&decks[1], 2),
+        ];
+        let joints = vec![JointGeom::new(&bodies, 0, model.gap)];
         let abutments = model
             .abutments
             .iter()
             .enumerate()
-            .filter_map(|(j, a)| {
-                a.map(|a| {
-                    let n = bodies[j].far_inward;
-                    AbutmentFace {
-                        body: j,
-                        normal: n,
-                        tangent: Vector::new(-n.y, n.x),
-                        point: bodies[j].far_mid() - n * a.gap,
-                        gap: a.gap,
-                    }
-                })
-            })
+            .filter_map(|(j, a)| a.map(|a| AbutmentFace::new(&bodies, j, j, a.gap)))
             .collect();
-        let mut seats = Vec::with_capacity(2 * bodies.len());
-        for (j, b) in bodies.iter().enumerate() {
+        let mut seats = Vec::with_capacity(4);
+        for (j, b) in decks.iter().enumerate() {
             let far_seat = model.abutments[j].map_or(model.seat_length, |a| a.seat_length);
             seats.push(SeatEnd {
                 body: j,
@@ -223,8 +349,7 @@ impl Bridge {
         }
         Bridge {
             bodies,
-            half_w: bodies[0].half_face,
-            joint_gap: model.gap,
+            joints,
             abutments,
             seats,
         }
@@ -232,28 +357,22 @@ impl Bridge {
 
     /// The geometry at `q`.
     pub fn frame(&self, q: &State) -> Frame {
-        let qa: [Real; 6] = (*q).into();
-        let pose = Pose::new(&self.bodies, &qa);
-        let (cands, sel) = candidates(&self.bodies, &pose, self.half_w);
-        Frame {
-            qa,
-            pose,
-            cands,
-            sel,
-        }
+        let pose = Pose::new(&self.bodies, q.as_slice());
+        let joints = self
+            .joints
+            .iter()
+            .map(|j| candidates(&self.bodies, &pose, j))
+            .collect();
+        Frame { pose, joints }
     }
 }
 
-/// The geometry of one state: pose and joint candidates.
+/// The geometry of one state: pose and the candidates of every joint.
 pub(crate) struct Frame {
-    /// `q` as an array.
-    pub qa: [Real; 6],
     /// The pose.
     pub pose: Pose,
-    /// All joint candidates.
-    pub cands: [Candidate; 4],
-    /// The realised candidate of each joint end.
-    pub sel: [Option<usize>; 2],
+    /// Per joint: its candidates and the realised one of each end.
+    pub joints: Vec<JointFrame>,
 }
 
 /// What a stepper gets for one step `k → k+1`.
@@ -304,8 +423,9 @@ pub(crate) struct StepperStats {
 
 /// One step of a contact law's time integrator.
 pub(crate) trait Stepper {
-    /// Normal force of each joint end in the current state (`None`: impulsive contact).
-    fn contact_forces(&self) -> Option<[Real; 2]>;
+    /// Normal force of each joint end, per joint, in the current state (`None`: impulsive
+    /// contact).
+    fn contact_forces(&self) -> Option<&[[Real; 2]]>;
     /// The contact term `D_contact` of the energy balance so far.
     fn contact_energy(&self) -> Real;
     /// Advances `u_k → u_{k+1}`, logging impacts.
@@ -314,61 +434,80 @@ pub(crate) trait Stepper {
     fn finish(&mut self, log: &mut ImpactLog) -> StepperStats;
 }
 
-/// Peaks over time.
-struct Peaks {
-    close: Real,
-    open: Real,
-    rot: [Real; 2],
-    slip: Real,
-    seat: [Real; 4],
-    unseat: Option<(Real, usize)>,
-    pen: Real,
-    abut: [Option<Real>; 2],
-    force: Option<Real>,
+/// Peaks over time, per joint, segment, seat and abutment side.
+pub(crate) struct Peaks {
+    /// Per joint: `max_t (g − min end gap)`.
+    pub close: Vec<Real>,
+    /// Per joint: `max_t (max end gap − g)`.
+    pub open: Vec<Real>,
+    /// Per segment: `max_t |θ|`.
+    pub rot: Vec<Real>,
+    /// Per joint: `max_t |slip|`.
+    pub slip: Vec<Real>,
+    /// Per seated end: the largest seat displacement.
+    pub seat: Vec<Real>,
+    /// First unseating: time and seated-end index.
+    pub unseat: Option<(Real, usize)>,
+    /// Largest penetration of any joint (or contact deformation of the law).
+    pub pen: Real,
+    /// Per abutment side: `max_t (gap − smaller corner gap)`.
+    pub abut: [Option<Real>; 2],
+    /// Per joint: the largest total normal force (compliance laws).
+    pub force: Vec<Option<Real>>,
 }
 
 /// What [`Peaks::observe`] measured for the history.
 struct Observed {
-    end_gaps: [Real; 2],
-    slip: Real,
+    end_gaps: Vec<[Real; 2]>,
+    slip: Vec<Real>,
     abut_gaps: [Real; 2],
 }
 
 impl Peaks {
-    fn new() -> Self {
+    fn new(br: &Bridge) -> Self {
+        let nj = br.joints.len();
         Peaks {
-            close: Real::NEG_INFINITY,
-            open: Real::NEG_INFINITY,
-            rot: [0.0; 2],
-            slip: 0.0,
-            seat: [Real::NEG_INFINITY; 4],
+            close: vec![Real::NEG_INFINITY; nj],
+            open: vec![Real::NEG_INFINITY; nj],
+            rot: vec![0.0; br.bodies.len()],
+            slip: vec![0.0; nj],
+            seat: vec![Real::NEG_INFINITY; br.seats.len()],
             unseat: None,
             pen: 0.0,
             abut: [None, None],
-            force: None,
+            force: vec![None; nj],
         }
     }
 
     /// Monitors the state at `t`.
     fn observe(&mut self, t: Real, q: &State, fr: &Frame, br: &Bridge) -> Observed {
         let (bodies, pose) = (&br.bodies, &fr.pose);
-        let end_gaps = fr.sel.map(|s| s.map_or(Real::NAN, |i| fr.cands[i].gap));
-        let mut gmin = Real::INFINITY;
-        let mut gmax = Real::NEG_INFINITY;
-        for g in end_gaps.iter().filter(|g| !g.is_nan()) {
-            gmin = gmin.min(*g);
-            gmax = gmax.max(*g);
+        let mut end_gaps = Vec::with_capacity(br.joints.len());
+        let mut slips = Vec::with_capacity(br.joints.len());
+        for (k, (jg, jf)) in br.joints.iter().zip(&fr.joints).enumerate() {
+            let eg = jf.sel.map(|s| s.map_or(Real::NAN, |i| jf.cands[i].gap));
+            let mut gmin = Real::INFINITY;
+            let mut gmax = Real::NEG_INFINITY;
+            for g in eg.iter().filter(|g| !g.is_nan()) {
+                gmin = gmin.min(*g);
+                gmax = gmax.max(*g);
+            }
+            self.close[k] = self.close[k].max(jg.gap - gmin);
+            self.pen = self.pen.max(-gmin);
+            self.open[k] = self.open[k].max(gmax - jg.gap);
+            // displacement of each face midpoint; slip = (d_a − d_b)·τ⁰
+            let ma = bodies[jg.a].end.mid;
+            let mb = bodies[jg.b].start.mid;
+            let da = pose.place(bodies, jg.a, &ma) - ma;
+            let db = pose.place(bodies, jg.b, &mb) - mb;
+            let slip = (da - db).dot(&jg.tau0) + 0.0; // `+ 0.0` turns −0 into +0
+            self.slip[k] = self.slip[k].max(slip.abs());
+            end_gaps.push(eg);
+            slips.push(slip);
         }
-        self.close = self.close.max(br.joint_gap - gmin);
-        self.pen = self.pen.max(-gmin);
-        self.open = self.open.max(gmax - br.joint_gap);
         for (j, r) in self.rot.iter_mut().enumerate() {
             *r = r.max(q[3 * j + 2].abs());
         }
-        let m1 = pose.place(bodies, 0, &bodies[0].face_mid) - bodies[0].face_mid;
-        let m2 = pose.place(bodies, 1, &bodies[1].face_mid) - bodies[1].face_mid;
-        let slip = (m2.x - m1.x) + 0.0; // `+ 0.0` turns −0 into +0
-        self.slip = self.slip.max(slip.abs());
         for (e, s_end) in br.seats.iter().enumerate() {
             let s = s_end
                 .corners
@@ -382,19 +521,18 @@ impl Peaks {
         }
         let mut abut_gaps = [Real::NAN; 2];
         for a in &br.abutments {
-            let j = a.body;
-            let gm = bodies[j]
-                .far_corners
+            let gm = a
+                .corners
                 .iter()
-                .map(|c| (pose.place(bodies, j, c) - a.point).dot(&a.normal))
+                .map(|c| (pose.place(bodies, a.body, c) - a.point).dot(&a.normal))
                 .fold(Real::INFINITY, Real::min);
-            abut_gaps[j] = gm;
-            let pk = self.abut[j].get_or_insert(Real::NEG_INFINITY);
+            abut_gaps[a.side] = gm;
+            let pk = self.abut[a.side].get_or_insert(Real::NEG_INFINITY);
             *pk = pk.max(a.gap - gm);
         }
         Observed {
             end_gaps,
-            slip,
+            slip: slips,
             abut_gaps,
         }
     }
@@ -456,50 +594,90 @@ impl Ledger {
         let u_mid = (u + u_new) * 0.5;
         let fbar = sc.load(&sc.ag[k]) * (1.0 - th) + sc.load(&sc.ag[k + 1]) * th;
         self.w_in += sc.h * u_mid.dot(&fbar);
-        self.d_visc += sc.h * u_th.dot(&(sc.sys.damping * u_th));
+        self.d_visc += sc.h * sc.damping_power(&u_th);
         u_th
     }
 }
 
-/// Appends the state at `t` to the history.
-fn record(
-    hist: &mut History,
-    t: Real,
-    fr: &Frame,
-    u: &State,
-    obs: &Observed,
-    energy: Energy,
-    forces: Option<[Real; 2]>,
-) {
-    hist.t.push(t);
-    hist.q.push(fr.qa);
-    hist.u.push((*u).into());
-    hist.gaps.push(fr.cands.map(|c| c.gap));
-    hist.end_gaps.push(obs.end_gaps);
-    hist.slip.push(obs.slip);
-    hist.energy.push(energy);
-    if let Some(f) = forces {
-        hist.contact_force.push(f);
-    }
-    hist.abutment_gaps.push(obs.abut_gaps);
+/// Sampled time histories of a bridge of any size, flat row-major arrays (one row per kept step).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Trace {
+    /// Times.
+    pub t: Vec<Real>,
+    /// `q`, `3 n_bodies` per row.
+    pub q: Vec<Real>,
+    /// `u`, `3 n_bodies` per row.
+    pub u: Vec<Real>,
+    /// Gaps of the four candidates of each joint, `4 n_joints` per row.
+    pub gaps: Vec<Real>,
+    /// End gaps of each joint, `2 n_joints` per row.
+    pub end_gaps: Vec<Real>,
+    /// Slip of each joint, `n_joints` per row.
+    pub slip: Vec<Real>,
+    /// Energies.
+    pub energy: Vec<Energy>,
+    /// Normal force of each joint end (compliance laws), `2 n_joints` per row.
+    pub contact_force: Vec<Real>,
+    /// Smaller abutment corner gap `[start, end]` (NaN without that abutment).
+    pub abutment_gaps: Vec<[Real; 2]>,
 }
 
-/// Runs the time loop with `stepper` (module doc).
+impl Trace {
+    /// Appends the state at `t`.
+    fn record(
+        &mut self,
+        t: Real,
+        q: &State,
+        fr: &Frame,
+        u: &State,
+        obs: &Observed,
+        energy: Energy,
+        forces: Option<&[[Real; 2]]>,
+    ) {
+        self.t.push(t);
+        self.q.extend(q.iter());
+        self.u.extend(u.iter());
+        for jf in &fr.joints {
+            self.gaps.extend(jf.cands.iter().map(|c| c.gap));
+        }
+        self.end_gaps.extend(obs.end_gaps.iter().flatten());
+        self.slip.extend(&obs.slip);
+        self.energy.push(energy);
+        if let Some(f) = forces {
+            self.contact_force.extend(f.iter().flatten());
+        }
+        self.abutment_gaps.push(obs.abut_gaps);
+    }
+}
+
+/// The outcome of [`run`] for a bridge of any size.
+pub(crate) struct RunResult {
+    pub status: SimStatus,
+    pub trace: Trace,
+    pub log: ImpactLog,
+    pub peaks: Peaks,
+    pub stats: StepperStats,
+    pub steps: usize,
+    pub energy_balance_error: Real,
+    pub final_energy: Energy,
+    pub max_input_energy: Real,
+}
+
+/// Runs the time loop with `stepper` from `(q0, u0)` (module doc).
 pub(crate) fn run<S: Stepper>(
-    problem: &SimProblem,
+    q0: State,
+    u0: State,
     settings: &SimSettings,
-    scheme: Scheme,
+    sc: &Scheme,
     bridge: &Bridge,
     stepper: &mut S,
-) -> SimSolution {
-    let sc = &scheme;
+) -> RunResult {
     let (h, th) = (sc.h, sc.th);
-    let mut q = State::from(problem.q0);
-    let mut u = State::from(problem.u0);
+    let (mut q, mut u) = (q0, u0);
     let (t0, v0) = sc.energies(&q, &u);
     let mut ledger = Ledger::new(t0 + v0);
-    let mut peaks = Peaks::new();
-    let mut hist = History::default();
+    let mut peaks = Peaks::new(bridge);
+    let mut trace = Trace::default();
     let mut log = ImpactLog::default();
     let mut status = SimStatus::Completed;
     let mut steps_done = 0usize;
@@ -509,14 +687,16 @@ pub(crate) fn run<S: Stepper>(
         let obs = peaks.observe(t, &q, &frame, bridge);
         let forces = stepper.contact_forces();
         if let Some(f) = forces {
-            let total = f.iter().copied().reduce(|a, b| a + b).unwrap_or(0.0);
-            let pk = peaks.force.get_or_insert(0.0);
-            *pk = pk.max(total);
+            for (pk, fj) in peaks.force.iter_mut().zip(f) {
+                let total = fj.iter().copied().reduce(|a, b| a + b).unwrap_or(0.0);
+                let pk = pk.get_or_insert(0.0);
+                *pk = pk.max(total);
+            }
         }
         let (tk, vk) = sc.energies(&q, &u);
         let energy = ledger.check(tk, vk, stepper.contact_energy());
         if k % settings.history_stride == 0 || k == sc.n_steps {
-            record(&mut hist, t, &frame, &u, &obs, energy, forces);
+            trace.record(t, &q, &frame, &u, &obs, energy, forces);
         }
         if !ledger.finite(&energy) {
             status = SimStatus::Diverged;
@@ -526,7 +706,7 @@ pub(crate) fn run<S: Stepper>(
             break;
         }
         let abar = sc.ag[k] * (1.0 - th) + sc.ag[k + 1] * th;
-        let u_free = u + sc.a_u * u + sc.a_q * q + sc.b_g * Vector2::new(abar.x, abar.y);
+        let u_free = sc.u_free(&q, &u, &abar);
         let input = StepInput {
             t,
             q: &q,
@@ -554,49 +734,92 @@ pub(crate) fn run<S: Stepper>(
         status = SimStatus::CompletedWithNewtonFailures;
     }
     let (tf, vf) = sc.energies(&q, &u);
-    let final_energy = ledger.energy(tf, vf, stepper.contact_energy());
-    let summary = summarize(&peaks, &ledger, &log, final_energy);
-    SimSolution {
+    RunResult {
         status,
-        history: hist,
-        impacts: log.records,
-        summary,
+        trace,
+        peaks,
+        stats,
         steps: steps_done,
-        dt: h,
-        lcp_solves: stats.lcp_solves,
-        lcp_enumeration_fallbacks: stats.lcp_enumeration_fallbacks,
-        lcp_failures: stats.lcp_failures,
-        frequencies: scheme.sys.frequencies,
-        rayleigh: scheme.sys.rayleigh,
-        time_step_advice: stats.time_step_advice,
-        newton_failures: stats.newton_failures,
-        closure_steps: stats.closure_steps,
+        energy_balance_error: balance_error(ledger.max_bal, ledger.max_in),
+        final_energy: ledger.energy(tf, vf, stepper.contact_energy()),
+        max_input_energy: ledger.max_in,
+        log,
     }
 }
 
-/// The [`SimSummary`] of a run.
-fn summarize(peaks: &Peaks, ledger: &Ledger, log: &ImpactLog, final_energy: Energy) -> SimSummary {
+/// The two-deck [`SimSolution`] of a run of the two-deck bridge (pure copies of the run's
+/// values).
+pub(crate) fn pair_solution(r: RunResult, sc: &Scheme) -> SimSolution {
+    let summary = pair_summary(&r);
+    let tr = r.trace;
+    let rows6 = |v: Vec<Real>| -> Vec<[Real; 6]> {
+        v.chunks_exact(6)
+            .map(|c| <[Real; 6]>::try_from(c).unwrap())
+            .collect()
+    };
+    let rows4 = |v: Vec<Real>| -> Vec<[Real; 4]> {
+        v.chunks_exact(4)
+            .map(|c| <[Real; 4]>::try_from(c).unwrap())
+            .collect()
+    };
+    let rows2 = |v: Vec<Real>| -> Vec<[Real; 2]> {
+        v.chunks_exact(2)
+            .map(|c| <[Real; 2]>::try_from(c).unwrap())
+            .collect()
+    };
+    let history = History {
+        t: tr.t,
+        q: rows6(tr.q),
+        u: rows6(tr.u),
+        gaps: rows4(tr.gaps),
+        end_gaps: rows2(tr.end_gaps),
+        slip: tr.slip,
+        energy: tr.energy,
+        contact_force: rows2(tr.contact_force),
+        abutment_gaps: tr.abutment_gaps,
+    };
+    SimSolution {
+        status: r.status,
+        history,
+        impacts: r.log.records,
+        summary,
+        steps: r.steps,
+        dt: sc.h,
+        lcp_solves: r.stats.lcp_solves,
+        lcp_enumeration_fallbacks: r.stats.lcp_enumeration_fallbacks,
+        lcp_failures: r.stats.lcp_failures,
+        frequencies: [sc.bodies[0].frequencies, sc.bodies[1].frequencies],
+        rayleigh: [sc.bodies[0].rayleigh, sc.bodies[1].rayleigh],
+        time_step_advice: r.stats.time_step_advice,
+        newton_failures: r.stats.newton_failures,
+        closure_steps: r.stats.closure_steps,
+    }
+}
+
+/// The [`SimSummary`] of a two-deck run.
+fn pair_summary(r: &RunResult) -> SimSummary {
+    let (peaks, log) = (&r.peaks, &r.log);
     SimSummary {
         impacts: log.impacts,
         impacting_contacts: log.records.len(),
-        peak_joint_closing: peaks.close,
-        peak_joint_opening: peaks.open,
-        peak_rotation: peaks.rot,
-        peak_slip: peaks.slip,
+        peak_joint_closing: peaks.close[0],
+        peak_joint_opening: peaks.open[0],
+        peak_rotation: [peaks.rot[0], peaks.rot[1]],
+        peak_slip: peaks.slip[0],
         peak_seat_displacement: peaks
             .seat
             .iter()
             .copied()
             .fold(Real::NEG_INFINITY, Real::max),
-        peak_seat_by_end: peaks.seat,
+        peak_seat_by_end: [peaks.seat[0], peaks.seat[1], peaks.seat[2], peaks.seat[3]],
         unseated: peaks.unseat.is_some(),
         unseating_time: peaks.unseat.map(|u| u.0),
         unseated_end: peaks.unseat.map(|u| u.1),
         max_penetration: peaks.pen,
-        energy_balance_error: balance_error(ledger.max_bal, ledger.max_in),
-        final_energy,
-        max_input_energy: ledger.max_in,
-        peak_contact_force: peaks.force,
+        energy_balance_error: r.energy_balance_error,
+        final_energy: r.final_energy,
+        max_input_energy: r.max_input_energy,
+        peak_contact_force: peaks.force[0],
         peak_penetration: peaks.pen,
         peak_abutment_closing: peaks.abut,
         abutment_impacting_contacts: log

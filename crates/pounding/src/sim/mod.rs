@@ -847,16 +847,21 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
         JointContact::Compliance(cc) => Some((cc, ComplianceStepper::joint_law(cc)?)),
         JointContact::Rigid => None,
     };
-    let scheme = driver::Scheme::new(problem, settings, sys)?;
+    let scheme = driver::Scheme::new(&problem.ground, settings, driver::BodySystem::of_pair(&sys))?;
     let bridge = driver::Bridge::new(&problem.model);
-    Ok(match joint {
+    let q0 = contact::State::from_column_slice(&problem.q0);
+    let u0 = contact::State::from_column_slice(&problem.u0);
+    let result = match joint {
         Some((cc, joint)) => {
-            let mut stepper = ComplianceStepper::new(problem, cc, joint, &scheme, &bridge);
-            driver::run(problem, settings, scheme, &bridge, &mut stepper)
+            let friction = problem.model.friction;
+            let mut stepper =
+                ComplianceStepper::new(&q0, &u0, friction, cc, joint, &scheme, &bridge);
+            driver::run(q0, u0, settings, &scheme, &bridge, &mut stepper)
         }
         None => {
             let mut stepper = rigid::RigidStepper::new(&problem.model, settings)?;
-            driver::run(problem, settings, scheme, &bridge, &mut stepper)
+            driver::run(q0, u0, settings, &scheme, &bridge, &mut stepper)
         }
-    })
+    };
+    Ok(driver::pair_solution(result, &scheme))
 }

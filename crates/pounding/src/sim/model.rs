@@ -206,3 +206,77 @@ pub struct LinearSystem {
     /// Rayleigh coefficients `(a_0, a_1)` per deck.
     pub rayleigh: [(Real, Real); 2],
 }
+
+/// One end face of a segment in the reference pose (global frame).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EndFace {
+    /// Corners `[c0, c1]` (the shape's corner order).
+    pub corners: [Vector; 2],
+    /// Midpoint of the face.
+    pub mid: Vector,
+    /// Unit direction along the face from `c0` to `c1`.
+    pub dir: Vector,
+    /// Unit normal pointing *into* the segment (the direction in which this end moves off its
+    /// seat).
+    pub inward: Vector,
+    /// Half the face length \[m\]: a corner of the neighbour lies over this face iff its
+    /// coordinate along [`EndFace::dir`] from [`EndFace::mid`] is at most this in magnitude.
+    pub half: Real,
+}
+
+/// A segment of a bridge (a rigid deck, 3 in-plane DOF) in the reference pose, global frame.
+///
+/// Segments form a chain: segment `i`'s **end** face meets segment `i + 1`'s **start** face at
+/// joint `i` (0-based); the start face of the first segment and the end face of the last one face
+/// the abutments, if any. In the two-deck model deck 1 is segment 0 (its joint face is its end
+/// face) and deck 2 is segment 1 (its joint face is its start face).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SegmentBody {
+    /// Mass properties (`centroid` in the deck's body frame).
+    pub mass: MassProperties,
+    /// Reference centroid `G⁰` (global).
+    pub centroid: Vector,
+    /// The start face (toward the previous segment or the start abutment).
+    pub start: EndFace,
+    /// The end face (toward the next segment or the end abutment).
+    pub end: EndFace,
+}
+
+impl SegmentBody {
+    /// The segment of two-deck body `deck` (`j = 1` or `2`, see [`DeckBody`]): deck 1's joint face
+    /// is its end face, deck 2's its start face.
+    pub fn of_deck(deck: &DeckBody, j: usize) -> Self {
+        let joint = EndFace {
+            corners: deck.joint_corners,
+            mid: deck.face_mid,
+            dir: deck.face_dir,
+            inward: deck.joint_inward,
+            half: deck.half_face,
+        };
+        let fc = deck.far_corners;
+        let far = EndFace {
+            corners: fc,
+            mid: deck.far_mid(),
+            dir: (fc[1] - fc[0]).normalize(),
+            inward: deck.far_inward,
+            half: 0.5 * (fc[1] - fc[0]).norm(),
+        };
+        let (start, end) = if j == 1 { (far, joint) } else { (joint, far) };
+        SegmentBody {
+            mass: deck.mass,
+            centroid: deck.centroid,
+            start,
+            end,
+        }
+    }
+
+    /// Position of the body point with reference position `p0` when the centroid is displaced by
+    /// `d` and the segment turned by `θ` (given as `(sin θ, cos θ)`) about it:
+    /// `p = G⁰ + d + Rot(θ)(p0 − G⁰)`.
+    #[inline]
+    pub fn place(&self, p0: &Vector, d: &Vector, sc: (Real, Real)) -> Vector {
+        let r = p0 - self.centroid;
+        let (s, c) = sc;
+        self.centroid + d + Vector::new(c * r.x - s * r.y, s * r.x + c * r.y)
+    }
+}

@@ -7,35 +7,24 @@
 //! ([`crate::law_check::check_laws`]) and the contact dissipation `−½ (γ_k + γ_{k+1})·P`.
 #![allow(clippy::needless_range_loop)]
 
+use super::contact::{Direction, State, dot_dir};
 use super::driver::{ImpactLog, StepInput, StepOutput, Stepper, StepperStats};
 use super::{ImpactRecord, SimContact, SimError, SimModel, SimSettings};
 use crate::analytic::{ImpactLaw, LawError, SlipMode};
 use crate::law_check;
 use crate::lcp::{self, LcpStatus, LemkeSettings};
 use crate::math::{Real, cross};
-use nalgebra::Vector6;
 
-/// Most contacts at once: two at the joint, two at each abutment.
-const MAX_CONTACTS: usize = 6;
-/// Most LCP unknowns (`3 n`).
-const MAX_LCP: usize = 3 * MAX_CONTACTS;
-/// Most contact directions (`2 n`).
-const MAX_DIR: usize = 2 * MAX_CONTACTS;
-
-type LcpMatrix = [[Real; MAX_LCP]; MAX_LCP];
-
+/// Most contacts solved with the size-specialised Lemke kernels (LCP size ≤ 18); larger
+/// active sets (several joints closing at once) use the dynamic kernel.
+const MAX_FIXED_CONTACTS: usize = 6;
 /// An active contact with its `w_N`, `w_T`.
-type ActiveContact = (SimContact, [Real; 6], [Real; 6]);
-
-#[inline]
-fn dot6(a: &[Real; 6], b: &Vector6<Real>) -> Real {
-    a.iter().zip(b.iter()).map(|(x, y)| x * y).sum()
-}
+type ActiveContact = (SimContact, Direction, Direction);
 
 /// Lemke on the leading `N × N` block of `a` (fixed-size kernel).
 fn lemke_block<const N: usize>(
-    a: &LcpMatrix,
-    b: &[Real; MAX_LCP],
+    a: &[Vec<Real>],
+    b: &[Real],
     settings: &LemkeSettings,
 ) -> Option<Vec<Real>> {
     let mut aa = [[0.0; N]; N];
@@ -48,28 +37,36 @@ fn lemke_block<const N: usize>(
     (s.status == LcpStatus::Solved).then(|| s.z.to_vec())
 }
 
-/// Solves the contact LCP of size `3n` (`n = 1 … 6`) for `x = (P_N, P_TR, γ_TL)` (spec §8).
+/// Solves the contact LCP of size `3n` for `x = (P_N, P_TR, γ_TL)` (spec §8): the fixed kernels
+/// for `n ≤ 6`, the dynamic one above, enumeration as the fallback.
 /// Returns `(x, lemke_ok, any_ok)`.
 fn solve_contact_lcp(
     n: usize,
-    a: &LcpMatrix,
-    b: &[Real; MAX_LCP],
+    a: &[Vec<Real>],
+    b: &[Real],
     settings: &LemkeSettings,
 ) -> (Vec<Real>, bool, bool) {
     let m = 3 * n;
+    let rows = || -> Vec<Real> { (0..m).flat_map(|i| a[i][..m].to_vec()).collect() };
     let sol = match n {
         1 => lemke_block::<3>(a, b, settings),
         2 => lemke_block::<6>(a, b, settings),
         3 => lemke_block::<9>(a, b, settings),
         4 => lemke_block::<12>(a, b, settings),
         5 => lemke_block::<15>(a, b, settings),
-        _ => lemke_block::<18>(a, b, settings),
+        6 => lemke_block::<18>(a, b, settings),
+        _ => lcp::LcpProblem::new(rows(), b[..m].to_vec())
+            .ok()
+            .map(|p| lcp::Lemke::new(settings.clone()).solve(&p))
+            .filter(|s| s.status == LcpStatus::Solved)
+            .map(|s| s.z),
     };
     if let Some(z) = sol {
         return (z, true, true);
     }
-    let rows: Vec<Real> = (0..m).flat_map(|i| a[i][..m].to_vec()).collect();
-    if let Ok(p) = lcp::LcpProblem::new(rows, b[..m].to_vec())
+    // enumeration is exponential: only for the sizes of the two-deck model
+    if n <= MAX_FIXED_CONTACTS
+        && let Ok(p) = lcp::LcpProblem::new(rows(), b[..m].to_vec())
         && let Ok(sols) = lcp::enumerate(&p)
         && let Some(z) = sols.into_iter().next()
     {
@@ -81,18 +78,25 @@ fn solve_contact_lcp(
 /// The active contacts' directions and velocities (order `N_1..N_n, T_1..T_n`).
 struct Assembled {
     n: usize,
-    wcols: [[Real; 6]; MAX_DIR],
+    /// Dense columns of `W`.
+    wcols: Vec<State>,
     /// `Ŵ⁻¹ W`.
-    wiw: [Vector6<Real>; MAX_DIR],
+    wiw: Vec<State>,
     /// Delassus `G = Wᵀ Ŵ⁻¹ W`.
-    g: [[Real; MAX_DIR]; MAX_DIR],
-    gam_pre: [Real; MAX_DIR],
-    gam_free: [Real; MAX_DIR],
+    g: Vec<Vec<Real>>,
+    gam_pre: Vec<Real>,
+    gam_free: Vec<Real>,
+}
+
+/// `Σ_d a_d b_d` left to right (the sum of the dense two-deck columns).
+#[inline]
+fn dot_seq(a: &State, b: &State) -> Real {
+    a.iter().zip(b.iter()).map(|(x, y)| x * y).sum()
 }
 
 /// The rigid-contact stepper (module doc).
 pub(crate) struct RigidStepper {
-    laws: [ImpactLaw; MAX_CONTACTS],
+    law: ImpactLaw,
     mu: Real,
     eps: Real,
     impact_velocity: Real,
@@ -110,7 +114,7 @@ impl RigidStepper {
             LawError::Restitution(v) => SimError::invalid("restitution", v, "must lie in [0, 1]"),
         })?;
         Ok(RigidStepper {
-            laws: [law; MAX_CONTACTS],
+            law,
             mu,
             eps,
             impact_velocity: settings.impact_velocity,
@@ -120,72 +124,64 @@ impl RigidStepper {
         })
     }
 
-    /// Contacts whose predicted gap `g + h γ_N(u_k) ≤ 0`.
-    fn active_set(inp: &StepInput) -> ([Option<ActiveContact>; MAX_CONTACTS], usize) {
+    /// Contacts whose predicted gap `g + h γ_N(u_k) ≤ 0`: joint ends in joint order, then the
+    /// abutment corners.
+    fn active_set(inp: &StepInput) -> Vec<ActiveContact> {
         let (fr, br, u, h) = (inp.frame, inp.bridge, inp.u, inp.scheme.h);
         let (pose, bodies) = (&fr.pose, &br.bodies);
-        let mut active: [Option<ActiveContact>; MAX_CONTACTS] = [None; MAX_CONTACTS];
-        let mut n_act = 0;
-        for s in fr.sel.iter().flatten() {
-            let c = fr.cands[*s];
-            let (wn, wt) = c.force_directions(pose);
-            if c.gap + h * dot6(&wn, u) <= 0.0 {
-                active[n_act] = Some((SimContact::Joint(c.case), wn, wt));
-                n_act += 1;
+        let mut active = Vec::new();
+        for (jg, jf) in br.joints.iter().zip(&fr.joints) {
+            for s in jf.sel.iter().flatten() {
+                let c = jf.cands[*s];
+                let (wn, wt) = c.force_directions(pose, jg);
+                if c.gap + h * dot_dir(&wn, u) <= 0.0 {
+                    active.push((SimContact::Joint(c.case), wn, wt));
+                }
             }
         }
         for ab in &br.abutments {
             let (j, n, tn) = (ab.body, ab.normal, ab.tangent);
-            for (k, c0) in bodies[j].far_corners.iter().enumerate() {
+            for (k, c0) in ab.corners.iter().enumerate() {
                 let pc = pose.place(bodies, j, c0);
                 let r = pc - pose.g[j];
-                let mut wn = [0.0; 6];
-                let mut wt = [0.0; 6];
-                wn[3 * j..3 * j + 3].copy_from_slice(&[n.x, n.y, cross(&r, &n)]);
-                wt[3 * j..3 * j + 3].copy_from_slice(&[tn.x, tn.y, cross(&r, &tn)]);
-                if (pc - ab.point).dot(&n) + h * dot6(&wn, u) <= 0.0 {
+                let wn = Direction {
+                    first: (j, [n.x, n.y, cross(&r, &n)]),
+                    second: None,
+                };
+                let wt = Direction {
+                    first: (j, [tn.x, tn.y, cross(&r, &tn)]),
+                    second: None,
+                };
+                if (pc - ab.point).dot(&n) + h * dot_dir(&wn, u) <= 0.0 {
                     let contact = SimContact::Abutment {
-                        deck: j + 1,
+                        deck: ab.side + 1,
                         corner: k,
                     };
-                    active[n_act] = Some((contact, wn, wt));
-                    n_act += 1;
+                    active.push((contact, wn, wt));
                 }
             }
         }
-        (active, n_act)
+        active
     }
 
     /// `W`, `Ŵ⁻¹ W`, `G` and the velocities of the active contacts.
-    fn assemble(
-        inp: &StepInput,
-        active: &[Option<ActiveContact>; MAX_CONTACTS],
-        n_act: usize,
-    ) -> Assembled {
-        let (u, u_free, winv) = (inp.u, inp.u_free, &inp.scheme.winv);
-        let mut wcols = [[0.0; 6]; MAX_DIR];
-        for (i, a) in active.iter().take(n_act).enumerate() {
-            let (_, wn, wt) = a.as_ref().unwrap();
-            wcols[i] = *wn;
-            wcols[n_act + i] = *wt;
-        }
+    fn assemble(inp: &StepInput, active: &[ActiveContact]) -> Assembled {
+        let (u, u_free, sc) = (inp.u, inp.u_free, inp.scheme);
+        let nb = sc.n_bodies();
+        let n_act = active.len();
+        let dirs: Vec<&Direction> = active
+            .iter()
+            .map(|a| &a.1)
+            .chain(active.iter().map(|a| &a.2))
+            .collect();
+        let wcols: Vec<State> = dirs.iter().map(|d| d.dense(nb)).collect();
+        let wiw: Vec<State> = wcols.iter().map(|w| sc.winv_mul(w)).collect();
         let nc = 2 * n_act;
-        let mut wiw = [Vector6::zeros(); MAX_DIR];
-        for i in 0..nc {
-            wiw[i] = winv * Vector6::from(wcols[i]);
-        }
-        let mut g = [[0.0; MAX_DIR]; MAX_DIR];
-        for i in 0..nc {
-            for j in 0..nc {
-                g[i][j] = dot6(&wcols[i], &wiw[j]);
-            }
-        }
-        let mut gam_pre = [0.0; MAX_DIR];
-        let mut gam_free = [0.0; MAX_DIR];
-        for i in 0..nc {
-            gam_pre[i] = dot6(&wcols[i], u);
-            gam_free[i] = dot6(&wcols[i], u_free);
-        }
+        let g = (0..nc)
+            .map(|i| (0..nc).map(|j| dot_seq(&wcols[i], &wiw[j])).collect())
+            .collect();
+        let gam_pre = wcols.iter().map(|w| dot_seq(w, u)).collect();
+        let gam_free = wcols.iter().map(|w| dot_seq(w, u_free)).collect();
         Assembled {
             n: n_act,
             wcols,
@@ -200,8 +196,9 @@ impl RigidStepper {
     /// fallbacks; returns `(z, ok, any)`.
     fn solve(&mut self, asm: &Assembled) -> (Vec<Real>, bool, bool) {
         let (n, g, mu, eps) = (asm.n, &asm.g, self.mu, self.eps);
-        let mut a = [[0.0; MAX_LCP]; MAX_LCP];
-        let mut b = [0.0; MAX_LCP];
+        let m = 3 * n;
+        let mut a = vec![vec![0.0; m]; m];
+        let mut b = vec![0.0; m];
         for i in 0..n {
             for j in 0..n {
                 a[i][j] = g[i][j] - g[i][n + j] * mu;
@@ -222,8 +219,8 @@ impl RigidStepper {
             } else {
                 self.stats.lcp_failures += 1;
                 // frictionless fallback: LCP in P_N only
-                let mut a0 = [[0.0; MAX_LCP]; MAX_LCP];
-                let mut b0 = [0.0; MAX_LCP];
+                let mut a0 = vec![vec![0.0; m]; m];
+                let mut b0 = vec![0.0; m];
                 for i in 0..n {
                     for j in 0..n {
                         a0[i][j] = g[i][j];
@@ -247,23 +244,23 @@ impl RigidStepper {
 
     /// Post-solve check on the recovered velocities ([`crate::law_check`]): rounding scale
     /// `s_k = Σ_d |W_dk| (|u_free,d| + Σ_j |(Ŵ⁻¹W)_dj P_j|)`.
-    fn check(&mut self, asm: &Assembled, u_free: &Vector6<Real>, p: &[Real], gam_post: &[Real]) {
+    fn check(&mut self, asm: &Assembled, u_free: &State, p: &[Real], gam_post: &[Real]) {
         let nc = 2 * asm.n;
-        let mut ad = [0.0; 6];
+        let mut ad = vec![0.0; u_free.len()];
         for (d, a) in ad.iter_mut().enumerate() {
             *a = u_free[d].abs();
             for j in 0..nc {
                 *a += (asm.wiw[j][d] * p[j]).abs();
             }
         }
-        let mut scale = [0.0; MAX_DIR];
-        let mut diag = [0.0; MAX_DIR];
+        let mut scale = vec![0.0; nc];
+        let mut diag = vec![0.0; nc];
         for k in 0..nc {
             scale[k] = asm.wcols[k].iter().zip(&ad).map(|(w, a)| w.abs() * a).sum();
             diag[k] = asm.g[k][k];
         }
         if law_check::check_laws(
-            &self.laws[..asm.n],
+            &vec![self.law; asm.n],
             &asm.gam_pre[..nc],
             &p[..nc],
             &gam_post[..nc],
@@ -280,7 +277,7 @@ impl RigidStepper {
     fn account(
         &mut self,
         asm: &Assembled,
-        active: &[Option<ActiveContact>; MAX_CONTACTS],
+        active: &[ActiveContact],
         p: &[Real],
         gam_post: &[Real],
         time: Real,
@@ -300,7 +297,7 @@ impl RigidStepper {
                 log.records.push(ImpactRecord {
                     impact: log.impacts,
                     time,
-                    contact: active[i].as_ref().unwrap().0,
+                    contact: active[i].0,
                     mode: SlipMode::classify(gt, -gam_pre[i]),
                     gamma_n_pre: gam_pre[i],
                     gamma_t_pre: gam_pre[n + i],
@@ -316,7 +313,7 @@ impl RigidStepper {
 }
 
 impl Stepper for RigidStepper {
-    fn contact_forces(&self) -> Option<[Real; 2]> {
+    fn contact_forces(&self) -> Option<&[[Real; 2]]> {
         None
     }
 
@@ -325,25 +322,22 @@ impl Stepper for RigidStepper {
     }
 
     fn step(&mut self, inp: &StepInput, log: &mut ImpactLog) -> StepOutput {
-        let mut u_new = *inp.u_free;
-        let (active, n_act) = Self::active_set(inp);
-        if n_act > 0 {
+        let mut u_new = inp.u_free.clone();
+        let active = Self::active_set(inp);
+        if !active.is_empty() {
             self.stats.lcp_solves += 1;
-            let asm = Self::assemble(inp, &active, n_act);
-            let (n, nc, mu) = (n_act, 2 * n_act, self.mu);
+            let asm = Self::assemble(inp, &active);
+            let (n, nc, mu) = (active.len(), 2 * active.len(), self.mu);
             let (z, ok, any) = self.solve(&asm);
-            let mut p = [0.0; MAX_DIR];
+            let mut p = vec![0.0; nc];
             for i in 0..n {
                 p[i] = z[i];
                 p[n + i] = z[n + i] - mu * z[i];
             }
             for i in 0..nc {
-                u_new += asm.wiw[i] * p[i];
+                u_new += &asm.wiw[i] * p[i];
             }
-            let mut gam_post = [0.0; MAX_DIR];
-            for i in 0..nc {
-                gam_post[i] = dot6(&asm.wcols[i], &u_new);
-            }
+            let gam_post: Vec<Real> = (0..nc).map(|i| dot_seq(&asm.wcols[i], &u_new)).collect();
             if ok || any {
                 self.check(&asm, inp.u_free, &p, &gam_post);
             }
