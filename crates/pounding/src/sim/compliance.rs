@@ -68,9 +68,12 @@ use crate::geometry::ContactCase;
 use crate::math::Real;
 use nalgebra::DMatrix;
 
-/// One joint end's contact evaluated at a trial state.
+/// One contact end (a joint end or an abutment corner) evaluated at a trial state.
 #[derive(Clone)]
 struct EndEval {
+    /// A contact exists at this end (a corner over the other face; always at an abutment).
+    present: bool,
+    /// The realised candidate of a joint end.
     case: Option<ContactCase>,
     wn: State,
     wt: State,
@@ -90,6 +93,7 @@ impl EndEval {
     /// An end without a contact (`n` generalised coordinates).
     fn open(n: usize) -> Self {
         EndEval {
+            present: false,
             case: None,
             wn: State::zeros(n),
             wt: State::zeros(n),
@@ -144,13 +148,24 @@ struct Trial<'a> {
     base: State,
 }
 
-/// The compliance-law stepper (module doc). Joint ends are numbered `2 k + e` (joint `k`, end
-/// `e`).
+/// A compliance law at one contact site (a joint or an abutment), shared by its two ends.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct SiteLaw {
+    /// The law, shared by the two ends.
+    pub law: JointLaw,
+    /// Coulomb friction coefficient.
+    pub mu: Real,
+}
+
+/// The compliance-law stepper (module doc). Sites are the joints (in order) and then the
+/// compliant abutments (start before end); the ends of site `s` are numbered `2 s` and `2 s + 1`
+/// (a joint's two ends; an abutment's corners `c0`, `c1`).
 pub(crate) struct ComplianceStepper {
     bodies: Vec<SegmentBody>,
     joints: Vec<super::contact::JointGeom>,
-    joint: JointLaw,
-    mu: Real,
+    abutments: Vec<super::driver::AbutmentFace>,
+    /// Law of each site.
+    sites: Vec<SiteLaw>,
     vr: Real,
     h: Real,
     th: Real,
@@ -159,11 +174,11 @@ pub(crate) struct ComplianceStepper {
     states: Vec<LawState>,
     /// The ends at `t_k`.
     ends: Vec<EndEval>,
-    /// Normal force of each end at `t_k`, per joint.
+    /// Normal force of each end at `t_k`, per site.
     forces: Vec<[Real; 2]>,
     /// `R_k`.
     r_k: State,
-    joint_in_contact: Vec<bool>,
+    site_in_contact: Vec<bool>,
     open_imp: Vec<Option<OpenImpact>>,
     d_cont: Real,
     stats: StepperStats,
@@ -176,49 +191,54 @@ impl ComplianceStepper {
     }
 
     /// The stepper at the initial state `(q0, u0)`: law states open at the initial gaps
-    /// (committed `δ = −g_N(q_0)`). The time-step advice uses the smallest two-segment effective
-    /// mass over the joints.
-    #[allow(clippy::too_many_arguments)]
+    /// (committed `δ = −g_N(q_0)`). `sites` holds the law of every joint and then of every
+    /// abutment of `abutments` (a subset of the bridge's, start before end). The time-step advice
+    /// uses the first joint's law and the smallest two-segment effective mass over the joints
+    /// (with no joint: the first site and the smallest segment mass).
     pub fn new(
         q0: &State,
         u0: &State,
-        friction: Real,
-        cc: &ComplianceContact,
-        joint: JointLaw,
+        sites: Vec<SiteLaw>,
+        abutments: Vec<super::driver::AbutmentFace>,
+        friction_velocity: Real,
         scheme: &Scheme,
         bridge: &Bridge,
     ) -> Self {
         let (h, th) = (scheme.h, scheme.th);
         let n = 3 * bridge.bodies.len();
-        let n_ends = 2 * bridge.joints.len();
+        let n_ends = 2 * sites.len();
         let m_eff = bridge
             .joints
             .iter()
             .filter_map(|j| {
                 effective_mass(bridge.bodies[j.a].mass.mass, bridge.bodies[j.b].mass.mass).ok()
             })
-            .reduce(Real::min);
-        let advice = m_eff.and_then(|m| law_time_step_advice(&cc.law, h, m, 1.0).ok());
+            .reduce(Real::min)
+            .or_else(|| bridge.bodies.iter().map(|b| b.mass.mass).reduce(Real::min));
+        let advice = match (m_eff, sites.first()) {
+            (Some(m), Some(site)) => law_time_step_advice(site.law.law(), h, m, 1.0).ok(),
+            _ => None,
+        };
         let mut s = ComplianceStepper {
             bodies: bridge.bodies.clone(),
             joints: bridge.joints.clone(),
-            joint,
-            mu: friction,
-            vr: cc.friction_velocity,
+            abutments,
+            vr: friction_velocity,
             h,
             th,
             hth: h * th,
             states: vec![LawState::default(); n_ends],
             ends: vec![EndEval::open(n); n_ends],
-            forces: vec![[0.0; 2]; bridge.joints.len()],
+            forces: vec![[0.0; 2]; sites.len()],
             r_k: State::zeros(n),
-            joint_in_contact: vec![false; bridge.joints.len()],
+            site_in_contact: vec![false; sites.len()],
             open_imp: vec![None; n_ends],
             d_cont: 0.0,
             stats: StepperStats {
                 time_step_advice: advice,
                 ..StepperStats::default()
             },
+            sites,
         };
         let first = s.eval_ends(q0, u0, &s.states);
         for (st, f) in s.states.iter_mut().zip(&first) {
@@ -233,58 +253,96 @@ impl ComplianceStepper {
         s
     }
 
-    /// Copies the ends' normal forces into [`ComplianceStepper::forces`].
-    fn set_forces(&mut self) {
-        for (k, f) in self.forces.iter_mut().enumerate() {
-            *f = [self.ends[2 * k].f_n, self.ends[2 * k + 1].f_n];
+    /// Friction coefficient of end `e`.
+    fn mu_of(&self, e: usize) -> Real {
+        self.sites[e / 2].mu
+    }
+
+    /// The law evaluation of end `e` with penetration `delta`, rate `ddot`, slip rate `gt`.
+    #[allow(clippy::too_many_arguments)]
+    fn end_eval(
+        &self,
+        e: usize,
+        states: &[LawState],
+        case: Option<ContactCase>,
+        wn: State,
+        wt: State,
+        delta: Real,
+        u: &State,
+    ) -> EndEval {
+        let (mu, vr) = (self.mu_of(e), self.vr);
+        let ddot = -wn.dot(u);
+        let law = self.sites[e / 2]
+            .law
+            .corner_evaluate(&states[e], delta, ddot);
+        let gt = wt.dot(u);
+        let root = (gt * gt + vr * vr).sqrt();
+        let s = gt / root;
+        let sp = vr * vr / (root * root * root);
+        EndEval {
+            present: true,
+            case,
+            wn,
+            wt,
+            delta,
+            f_n: law.force,
+            f_t: -mu * law.force * s,
+            kc: law.stiffness * self.hth + law.damping,
+            kt: mu * law.force * sp,
+            mus: mu * s,
+            state: law.state,
         }
     }
 
-    /// Evaluates every joint end at `(q, u)` from the committed `states`.
+    /// Evaluates every end at `(q, u)` from the committed `states`.
     fn eval_ends(&self, q: &State, u: &State, states: &[LawState]) -> Vec<EndEval> {
-        let (mu, vr) = (self.mu, self.vr);
         let n = q.len();
+        let nb = self.bodies.len();
         let pose = Pose::new(&self.bodies, q.as_slice());
         let mut out = Vec::with_capacity(states.len());
         for jg in &self.joints {
             let jf = candidates(&self.bodies, &pose, jg);
             for e in 0..2 {
-                let mut ev = EndEval::open(n);
-                match jf.sel[e] {
+                let ev = match jf.sel[e] {
                     Some(i) => {
                         let c = jf.cands[i];
                         let (wn, wt) = c.force_directions(&pose, jg);
-                        let (wn, wt) = (wn.dense(self.bodies.len()), wt.dense(self.bodies.len()));
-                        let delta = -c.gap;
-                        let ddot = -wn.dot(u);
-                        let law = self.joint.corner_evaluate(&states[out.len()], delta, ddot);
-                        let gt = wt.dot(u);
-                        let root = (gt * gt + vr * vr).sqrt();
-                        let s = gt / root;
-                        let sp = vr * vr / (root * root * root);
-                        ev = EndEval {
-                            case: Some(c.case),
-                            wn,
-                            wt,
-                            delta,
-                            f_n: law.force,
-                            f_t: -mu * law.force * s,
-                            kc: law.stiffness * self.hth + law.damping,
-                            kt: mu * law.force * sp,
-                            mus: mu * s,
-                            state: law.state,
-                        };
+                        let (wn, wt) = (wn.dense(nb), wt.dense(nb));
+                        self.end_eval(out.len(), states, Some(c.case), wn, wt, -c.gap, u)
                     }
                     None => {
                         // No corner over the other face at this end: open, state reset to the
                         // open gap.
+                        let mut ev = EndEval::open(n);
                         ev.state = LawState::open_at(-jg.half_w.max(1.0));
+                        ev
                     }
-                }
+                };
                 out.push(ev);
             }
         }
+        for ab in &self.abutments {
+            for c0 in &ab.corners {
+                let (j, nn, tn) = (ab.body, ab.normal, ab.tangent);
+                let pc = pose.place(&self.bodies, j, c0);
+                let r = pc - pose.g[j];
+                let dir = |v: crate::math::Vector| super::contact::Direction {
+                    first: (j, [v.x, v.y, crate::math::cross(&r, &v)]),
+                    second: None,
+                };
+                let delta = -(pc - ab.point).dot(&nn);
+                let (wn, wt) = (dir(nn).dense(nb), dir(tn).dense(nb));
+                out.push(self.end_eval(out.len(), states, None, wn, wt, delta, u));
+            }
+        }
         out
+    }
+
+    /// Copies the ends' normal forces into [`ComplianceStepper::forces`].
+    fn set_forces(&mut self) {
+        for (k, f) in self.forces.iter_mut().enumerate() {
+            *f = [self.ends[2 * k].f_n, self.ends[2 * k + 1].f_n];
+        }
     }
 
     /// `q_{k+1}` for the trial `u_{k+1} = un`.
@@ -351,8 +409,9 @@ impl ComplianceStepper {
 
     /// Holds the ends in `held` with the unknown forces `lam` (closure step).
     fn hold(&self, ev: &mut [EndEval], held: &[usize], lam: &[Real], un: &State) {
-        let (mu, vr) = (self.mu, self.vr);
+        let vr = self.vr;
         for (i, &e) in held.iter().enumerate() {
+            let mu = self.mu_of(e);
             let gt = ev[e].wt.dot(un);
             let root = (gt * gt + vr * vr).sqrt();
             ev[e].f_n = lam[i];
@@ -375,7 +434,7 @@ impl ComplianceStepper {
         ev0: &[EndEval],
     ) -> Option<(State, Vec<EndEval>)> {
         let held: Vec<usize> = (0..ev0.len())
-            .filter(|&e| ev0[e].case.is_some() && ev0[e].delta.abs() < 1e-6)
+            .filter(|&e| ev0[e].present && ev0[e].delta.abs() < 1e-6)
             .collect();
         if held.is_empty() {
             return None;
@@ -430,8 +489,8 @@ impl ComplianceStepper {
         let mut ev = self.eval_at(tr, &un);
         for (i, &e) in held.iter().enumerate() {
             let ddot = -ev[e].wn.dot(&un);
-            let f_hi = self
-                .joint
+            let f_hi = self.sites[e / 2]
+                .law
                 .corner_evaluate(&self.states[e], Real::MIN_POSITIVE, ddot)
                 .force;
             if !(lam[i] >= 0.0 && lam[i] <= f_hi * (1.0 + 1e-9)) {
@@ -439,7 +498,7 @@ impl ComplianceStepper {
             }
             let gt = ev[e].wt.dot(&un);
             ev[e].f_n = lam[i];
-            ev[e].f_t = -self.mu * lam[i] * gt / (gt * gt + self.vr * self.vr).sqrt();
+            ev[e].f_t = -self.mu_of(e) * lam[i] * gt / (gt * gt + self.vr * self.vr).sqrt();
         }
         Some((un, ev))
     }
@@ -456,21 +515,42 @@ impl ComplianceStepper {
         ev: &[EndEval],
     ) {
         let (h, th) = (self.h, self.th);
-        for k in 0..self.joint_in_contact.len() {
+        let nj = self.joints.len();
+        for k in 0..self.site_in_contact.len() {
             let f_now = ev[2 * k].f_n + ev[2 * k + 1].f_n;
-            if f_now > 0.0 && !self.joint_in_contact[k] {
+            if f_now > 0.0 && !self.site_in_contact[k] {
                 log.impacts += 1;
+                if k < nj {
+                    log.count_joint(k);
+                } else {
+                    log.count_abutment(self.abutments[k - nj].side);
+                }
             }
-            self.joint_in_contact[k] = f_now > 0.0;
+            self.site_in_contact[k] = f_now > 0.0;
         }
         for e in 0..ev.len() {
             let (fn0, ft0) = (self.ends[e].f_n, self.ends[e].f_t);
             let (fn1, ft1) = (ev[e].f_n, ev[e].f_t);
             if fn1 > 0.0 && self.open_imp[e].is_none() {
+                let (contact, site) = if e / 2 < nj {
+                    let case = ev[e].case.unwrap_or(ContactCase::Deck1Inner);
+                    (SimContact::Joint(case), e / 2)
+                } else {
+                    let side = self.abutments[e / 2 - nj].side;
+                    let corner = e % 2;
+                    (
+                        SimContact::Abutment {
+                            deck: side + 1,
+                            corner,
+                        },
+                        side,
+                    )
+                };
                 log.records.push(ImpactRecord {
                     impact: log.impacts,
                     time,
-                    contact: SimContact::Joint(ev[e].case.unwrap_or(ContactCase::Deck1Inner)),
+                    contact,
+                    site,
                     mode: SlipMode::Stick,
                     gamma_n_pre: ev[e].wn.dot(u),
                     gamma_t_pre: ev[e].wt.dot(u),
@@ -492,11 +572,7 @@ impl ComplianceStepper {
                 let pt = h * ((1.0 - th) * ft0 + th * ft1);
                 oi.impulse_n += pn;
                 oi.impulse_t += pt;
-                let src = if ev[e].case.is_some() {
-                    &ev[e]
-                } else {
-                    &self.ends[e]
-                };
+                let src = if ev[e].present { &ev[e] } else { &self.ends[e] };
                 let (wn, wt) = (&src.wn, &src.wt);
                 oi.work -= u_mid.dot(wn) * pn + u_mid.dot(wt) * pt;
                 if fn1 <= 0.0 {

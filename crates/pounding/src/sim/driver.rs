@@ -314,6 +314,9 @@ pub(crate) struct Bridge {
     pub abutments: Vec<AbutmentFace>,
     /// Seated ends, in the order of the seat outputs.
     pub seats: Vec<SeatEnd>,
+    /// Bearing points of each segment (global reference pose) for the bearing-deformation
+    /// monitor; empty: not monitored.
+    pub bearing_points: Vec<Vec<Vector>>,
 }
 
 impl Bridge {
@@ -352,6 +355,7 @@ impl Bridge {
             joints,
             abutments,
             seats,
+            bearing_points: Vec::new(),
         }
     }
 
@@ -406,8 +410,28 @@ pub(crate) struct StepOutput {
 pub(crate) struct ImpactLog {
     /// Impacting contacts, in time order.
     pub records: Vec<ImpactRecord>,
-    /// Number of impacts.
+    /// Number of impacts (of the whole bridge: steps with an impact for the rigid law, onsets
+    /// of positive force at a site for compliance laws).
     pub impacts: usize,
+    /// Impacts per joint.
+    pub joint_impacts: Vec<usize>,
+    /// Impacts per abutment side `[start, end]`.
+    pub abutment_impacts: [usize; 2],
+}
+
+impl ImpactLog {
+    /// One more impact at joint `k`.
+    pub fn count_joint(&mut self, k: usize) {
+        if self.joint_impacts.len() <= k {
+            self.joint_impacts.resize(k + 1, 0);
+        }
+        self.joint_impacts[k] += 1;
+    }
+
+    /// One more impact at abutment `side`.
+    pub fn count_abutment(&mut self, side: usize) {
+        self.abutment_impacts[side] += 1;
+    }
 }
 
 /// The stepper's counters at the end of a run.
@@ -454,6 +478,12 @@ pub(crate) struct Peaks {
     pub abut: [Option<Real>; 2],
     /// Per joint: the largest total normal force (compliance laws).
     pub force: Vec<Option<Real>>,
+    /// Per abutment side: the largest total normal force (compliance laws).
+    pub abut_force: [Option<Real>; 2],
+    /// Per segment: `max_t |(x, y)|`.
+    pub disp: Vec<Real>,
+    /// Per segment: the largest linearised bearing deformation (0 when not monitored).
+    pub bearing: Vec<Real>,
 }
 
 /// What [`Peaks::observe`] measured for the history.
@@ -476,6 +506,42 @@ impl Peaks {
             pen: 0.0,
             abut: [None, None],
             force: vec![None; nj],
+            abut_force: [None, None],
+            disp: vec![0.0; br.bodies.len()],
+            bearing: vec![0.0; br.bodies.len()],
+        }
+    }
+
+    /// The per-segment monitors of the bridge model (displacement magnitude, bearing
+    /// deformation `u_b = (x − θ r_y, y + θ r_x)`, `r = b − G⁰`).
+    fn observe_segments(&mut self, q: &State, br: &Bridge) {
+        for (j, d) in self.disp.iter_mut().enumerate() {
+            let (x, y) = (q[3 * j], q[3 * j + 1]);
+            *d = d.max((x * x + y * y).sqrt());
+        }
+        for (j, pts) in br.bearing_points.iter().enumerate() {
+            let (x, y, th) = (q[3 * j], q[3 * j + 1], q[3 * j + 2]);
+            let g = br.bodies[j].centroid;
+            for p in pts {
+                let r = p - g;
+                let (ux, uy) = (x - th * r.y, y + th * r.x);
+                self.bearing[j] = self.bearing[j].max((ux * ux + uy * uy).sqrt());
+            }
+        }
+    }
+
+    /// Peak forces: per joint, then per abutment site (`abut_sides[i]` the side of site
+    /// `n_joints + i`).
+    fn observe_forces(&mut self, f: &[[Real; 2]], abut_sides: &[usize]) {
+        let total = |fj: &[Real; 2]| fj.iter().copied().reduce(|a, b| a + b).unwrap_or(0.0);
+        let nj = self.force.len();
+        for (pk, fj) in self.force.iter_mut().zip(f) {
+            let pk = pk.get_or_insert(0.0);
+            *pk = pk.max(total(fj));
+        }
+        for (fj, &side) in f.iter().skip(nj).zip(abut_sides) {
+            let pk = self.abut_force[side].get_or_insert(0.0);
+            *pk = pk.max(total(fj));
         }
     }
 
@@ -658,6 +724,7 @@ pub(crate) struct RunResult {
     pub peaks: Peaks,
     pub stats: StepperStats,
     pub steps: usize,
+    pub final_q: State,
     pub energy_balance_error: Real,
     pub final_energy: Energy,
     pub max_input_energy: Real,
@@ -681,22 +748,21 @@ pub(crate) fn run<S: Stepper>(
     let mut log = ImpactLog::default();
     let mut status = SimStatus::Completed;
     let mut steps_done = 0usize;
+    let abut_sides: Vec<usize> = bridge.abutments.iter().map(|a| a.side).collect();
     for k in 0..=sc.n_steps {
         let t = k as Real * h;
         let frame = bridge.frame(&q);
         let obs = peaks.observe(t, &q, &frame, bridge);
+        peaks.observe_segments(&q, bridge);
         let forces = stepper.contact_forces();
         if let Some(f) = forces {
-            for (pk, fj) in peaks.force.iter_mut().zip(f) {
-                let total = fj.iter().copied().reduce(|a, b| a + b).unwrap_or(0.0);
-                let pk = pk.get_or_insert(0.0);
-                *pk = pk.max(total);
-            }
+            peaks.observe_forces(f, &abut_sides);
         }
         let (tk, vk) = sc.energies(&q, &u);
         let energy = ledger.check(tk, vk, stepper.contact_energy());
         if k % settings.history_stride == 0 || k == sc.n_steps {
-            trace.record(t, &q, &frame, &u, &obs, energy, forces);
+            let nj = bridge.joints.len();
+            trace.record(t, &q, &frame, &u, &obs, energy, forces.map(|f| &f[..nj]));
         }
         if !ledger.finite(&energy) {
             status = SimStatus::Diverged;
@@ -734,14 +800,16 @@ pub(crate) fn run<S: Stepper>(
         status = SimStatus::CompletedWithNewtonFailures;
     }
     let (tf, vf) = sc.energies(&q, &u);
+    let final_energy = ledger.energy(tf, vf, stepper.contact_energy());
     RunResult {
         status,
         trace,
         peaks,
         stats,
         steps: steps_done,
+        final_q: q,
         energy_balance_error: balance_error(ledger.max_bal, ledger.max_in),
-        final_energy: ledger.energy(tf, vf, stepper.contact_energy()),
+        final_energy,
         max_input_energy: ledger.max_in,
         log,
     }

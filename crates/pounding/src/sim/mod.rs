@@ -59,6 +59,7 @@
 //! monitored quantity goes into the driver and is then reported for every law.
 
 pub mod batch;
+pub mod bridge;
 pub mod compliance;
 pub mod contact;
 mod driver;
@@ -634,6 +635,9 @@ pub struct ImpactRecord {
     pub time: Real,
     /// The contact (striking corner at the joint, or a far-face corner at an abutment).
     pub contact: SimContact,
+    /// Where: the joint index `k` (0-based, between segments `k` and `k + 1`) of a
+    /// [`SimContact::Joint`], the abutment side (0 start, 1 end) of a [`SimContact::Abutment`].
+    pub site: usize,
     /// Tangential outcome (spec §10, `|γ_T⁺| ≤ 1e-9 |γ_N⁻|` is stick).
     pub mode: SlipMode,
     /// Pre-impact normal velocity `γ_N⁻ = w_Nᵀ u_k` (< 0, closing) \[m/s\].
@@ -853,9 +857,13 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
     let u0 = contact::State::from_column_slice(&problem.u0);
     let result = match joint {
         Some((cc, joint)) => {
-            let friction = problem.model.friction;
+            let sites = vec![compliance::SiteLaw {
+                law: joint,
+                mu: problem.model.friction,
+            }];
+            let vr = cc.friction_velocity;
             let mut stepper =
-                ComplianceStepper::new(&q0, &u0, friction, cc, joint, &scheme, &bridge);
+                ComplianceStepper::new(&q0, &u0, sites, Vec::new(), vr, &scheme, &bridge);
             driver::run(q0, u0, settings, &scheme, &bridge, &mut stepper)
         }
         None => {

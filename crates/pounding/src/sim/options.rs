@@ -99,17 +99,30 @@ impl super::SimModel {
         a0: Real,
         a1: Real,
     ) -> (nalgebra::Matrix3<Real>, Real, Real) {
-        match self.damping_model {
-            DampingModel::Rayleigh => (mj * a0 + kj * a1, a0, a1),
-            DampingModel::TranslationalDashpots => {
-                let m = mj[(0, 0)];
-                let c = 2.0 * self.damping_ratio * m * (kj[(1, 1)] / m).max(0.0).sqrt();
-                (
-                    nalgebra::Matrix3::from_diagonal(&nalgebra::Vector3::new(c, c, 0.0)),
-                    0.0,
-                    0.0,
-                )
-            }
+        damping_block(self.damping_model, self.damping_ratio, mj, kj, a0, a1)
+    }
+}
+
+/// `(C_j, a_0, a_1)` of one deck (segment) for the damping model (`a_0`, `a_1` the Rayleigh
+/// coefficients; zero for dashpots).
+pub(crate) fn damping_block(
+    model: DampingModel,
+    zeta: Real,
+    mj: &nalgebra::Matrix3<Real>,
+    kj: &nalgebra::Matrix3<Real>,
+    a0: Real,
+    a1: Real,
+) -> (nalgebra::Matrix3<Real>, Real, Real) {
+    match model {
+        DampingModel::Rayleigh => (mj * a0 + kj * a1, a0, a1),
+        DampingModel::TranslationalDashpots => {
+            let m = mj[(0, 0)];
+            let c = 2.0 * zeta * m * (kj[(1, 1)] / m).max(0.0).sqrt();
+            (
+                nalgebra::Matrix3::from_diagonal(&nalgebra::Vector3::new(c, c, 0.0)),
+                0.0,
+                0.0,
+            )
         }
     }
 }

@@ -18,8 +18,15 @@ use crate::math::{Real, cross};
 /// Most contacts solved with the size-specialised Lemke kernels (LCP size ≤ 18); larger
 /// active sets (several joints closing at once) use the dynamic kernel.
 const MAX_FIXED_CONTACTS: usize = 6;
-/// An active contact with its `w_N`, `w_T`.
-type ActiveContact = (SimContact, Direction, Direction);
+/// An active contact: what it is, its site (joint index or abutment side), its impact law and
+/// its `w_N`, `w_T`.
+struct ActiveContact {
+    contact: SimContact,
+    site: usize,
+    law: ImpactLaw,
+    wn: Direction,
+    wt: Direction,
+}
 
 /// Lemke on the leading `N × N` block of `a` (fixed-size kernel).
 fn lemke_block<const N: usize>(
@@ -96,9 +103,10 @@ fn dot_seq(a: &State, b: &State) -> Real {
 
 /// The rigid-contact stepper (module doc).
 pub(crate) struct RigidStepper {
-    law: ImpactLaw,
-    mu: Real,
-    eps: Real,
+    /// Impact law of each joint.
+    joint_laws: Vec<ImpactLaw>,
+    /// Impact law of the start and end abutments.
+    abutment_laws: [ImpactLaw; 2],
     impact_velocity: Real,
     lemke: LemkeSettings,
     d_cont: Real,
@@ -106,36 +114,50 @@ pub(crate) struct RigidStepper {
 }
 
 impl RigidStepper {
-    /// The stepper of `model`'s impact law (ε_N, μ).
+    /// The stepper of `model`'s impact law (ε_N, μ), the same at the joint and the abutments.
     pub fn new(model: &SimModel, settings: &SimSettings) -> Result<Self, SimError> {
         let (mu, eps) = (model.friction, model.restitution);
         let law = ImpactLaw::new(mu, eps).map_err(|e| match e {
             LawError::Friction(v) => SimError::invalid("friction", v, "must be >= 0"),
             LawError::Restitution(v) => SimError::invalid("restitution", v, "must lie in [0, 1]"),
         })?;
-        Ok(RigidStepper {
-            law,
-            mu,
-            eps,
+        Ok(Self::with_laws(vec![law], [law, law], settings))
+    }
+
+    /// The stepper with an impact law per joint and per abutment side.
+    pub fn with_laws(
+        joint_laws: Vec<ImpactLaw>,
+        abutment_laws: [ImpactLaw; 2],
+        settings: &SimSettings,
+    ) -> Self {
+        RigidStepper {
+            joint_laws,
+            abutment_laws,
             impact_velocity: settings.impact_velocity,
             lemke: settings.lemke.clone(),
             d_cont: 0.0,
             stats: StepperStats::default(),
-        })
+        }
     }
 
     /// Contacts whose predicted gap `g + h γ_N(u_k) ≤ 0`: joint ends in joint order, then the
     /// abutment corners.
-    fn active_set(inp: &StepInput) -> Vec<ActiveContact> {
+    fn active_set(&self, inp: &StepInput) -> Vec<ActiveContact> {
         let (fr, br, u, h) = (inp.frame, inp.bridge, inp.u, inp.scheme.h);
         let (pose, bodies) = (&fr.pose, &br.bodies);
         let mut active = Vec::new();
-        for (jg, jf) in br.joints.iter().zip(&fr.joints) {
+        for (k, (jg, jf)) in br.joints.iter().zip(&fr.joints).enumerate() {
             for s in jf.sel.iter().flatten() {
                 let c = jf.cands[*s];
                 let (wn, wt) = c.force_directions(pose, jg);
                 if c.gap + h * dot_dir(&wn, u) <= 0.0 {
-                    active.push((SimContact::Joint(c.case), wn, wt));
+                    active.push(ActiveContact {
+                        contact: SimContact::Joint(c.case),
+                        site: k,
+                        law: self.joint_laws[k],
+                        wn,
+                        wt,
+                    });
                 }
             }
         }
@@ -157,7 +179,13 @@ impl RigidStepper {
                         deck: ab.side + 1,
                         corner: k,
                     };
-                    active.push((contact, wn, wt));
+                    active.push(ActiveContact {
+                        contact,
+                        site: ab.side,
+                        law: self.abutment_laws[ab.side],
+                        wn,
+                        wt,
+                    });
                 }
             }
         }
@@ -171,8 +199,8 @@ impl RigidStepper {
         let n_act = active.len();
         let dirs: Vec<&Direction> = active
             .iter()
-            .map(|a| &a.1)
-            .chain(active.iter().map(|a| &a.2))
+            .map(|a| &a.wn)
+            .chain(active.iter().map(|a| &a.wt))
             .collect();
         let wcols: Vec<State> = dirs.iter().map(|d| d.dense(nb)).collect();
         let wiw: Vec<State> = wcols.iter().map(|w| sc.winv_mul(w)).collect();
@@ -194,22 +222,24 @@ impl RigidStepper {
 
     /// The LCP (spec §8) of size `3n` and its solution `z = (P_N, P_TR, γ_TL)`, with the
     /// fallbacks; returns `(z, ok, any)`.
-    fn solve(&mut self, asm: &Assembled) -> (Vec<Real>, bool, bool) {
-        let (n, g, mu, eps) = (asm.n, &asm.g, self.mu, self.eps);
+    fn solve(&mut self, asm: &Assembled, active: &[ActiveContact]) -> (Vec<Real>, bool, bool) {
+        let (n, g) = (asm.n, &asm.g);
+        let mu = |j: usize| active[j].law.mu();
+        let eps = |i: usize| active[i].law.eps();
         let m = 3 * n;
         let mut a = vec![vec![0.0; m]; m];
         let mut b = vec![0.0; m];
         for i in 0..n {
             for j in 0..n {
-                a[i][j] = g[i][j] - g[i][n + j] * mu;
+                a[i][j] = g[i][j] - g[i][n + j] * mu(j);
                 a[i][n + j] = g[i][n + j];
-                a[n + i][j] = g[n + i][j] - g[n + i][n + j] * mu;
+                a[n + i][j] = g[n + i][j] - g[n + i][n + j] * mu(j);
                 a[n + i][n + j] = g[n + i][n + j];
             }
             a[n + i][2 * n + i] = 1.0;
-            a[2 * n + i][i] = 2.0 * mu;
+            a[2 * n + i][i] = 2.0 * mu(i);
             a[2 * n + i][n + i] = -1.0;
-            b[i] = asm.gam_free[i] + eps * asm.gam_pre[i].min(0.0);
+            b[i] = asm.gam_free[i] + eps(i) * asm.gam_pre[i].min(0.0);
             b[n + i] = asm.gam_free[n + i];
         }
         let (mut z, ok, any) = solve_contact_lcp(n, &a, &b, &self.lemke);
@@ -235,7 +265,7 @@ impl RigidStepper {
                 let (z0, _, _) = solve_contact_lcp(n, &a0, &b0, &self.lemke);
                 z = z0;
                 for i in 0..n {
-                    z[n + i] = mu * z[i]; // P_T = 0
+                    z[n + i] = mu(i) * z[i]; // P_T = 0
                 }
             }
         }
@@ -244,7 +274,14 @@ impl RigidStepper {
 
     /// Post-solve check on the recovered velocities ([`crate::law_check`]): rounding scale
     /// `s_k = Σ_d |W_dk| (|u_free,d| + Σ_j |(Ŵ⁻¹W)_dj P_j|)`.
-    fn check(&mut self, asm: &Assembled, u_free: &State, p: &[Real], gam_post: &[Real]) {
+    fn check(
+        &mut self,
+        asm: &Assembled,
+        active: &[ActiveContact],
+        u_free: &State,
+        p: &[Real],
+        gam_post: &[Real],
+    ) {
         let nc = 2 * asm.n;
         let mut ad = vec![0.0; u_free.len()];
         for (d, a) in ad.iter_mut().enumerate() {
@@ -260,7 +297,7 @@ impl RigidStepper {
             diag[k] = asm.g[k][k];
         }
         if law_check::check_laws(
-            &vec![self.law; asm.n],
+            &active.iter().map(|a| a.law).collect::<Vec<_>>(),
             &asm.gam_pre[..nc],
             &p[..nc],
             &gam_post[..nc],
@@ -288,6 +325,19 @@ impl RigidStepper {
         if impacting {
             log.impacts += 1;
         }
+        // per site: at most one impact per joint (abutment) and step
+        let mut counted: Vec<(bool, usize)> = Vec::new();
+        for (i, a) in active.iter().enumerate() {
+            let key = (matches!(a.contact, SimContact::Joint(_)), a.site);
+            if gam_pre[i] < -v_imp && p[i] > 0.0 && !counted.contains(&key) {
+                counted.push(key);
+                if key.0 {
+                    log.count_joint(key.1);
+                } else {
+                    log.count_abutment(key.1);
+                }
+            }
+        }
         for i in 0..n {
             let dn = -0.5 * (gam_pre[i] + gam_post[i]) * p[i];
             let dt_ = -0.5 * (gam_pre[n + i] + gam_post[n + i]) * p[n + i];
@@ -297,7 +347,8 @@ impl RigidStepper {
                 log.records.push(ImpactRecord {
                     impact: log.impacts,
                     time,
-                    contact: active[i].0,
+                    contact: active[i].contact,
+                    site: active[i].site,
                     mode: SlipMode::classify(gt, -gam_pre[i]),
                     gamma_n_pre: gam_pre[i],
                     gamma_t_pre: gam_pre[n + i],
@@ -323,23 +374,23 @@ impl Stepper for RigidStepper {
 
     fn step(&mut self, inp: &StepInput, log: &mut ImpactLog) -> StepOutput {
         let mut u_new = inp.u_free.clone();
-        let active = Self::active_set(inp);
+        let active = self.active_set(inp);
         if !active.is_empty() {
             self.stats.lcp_solves += 1;
             let asm = Self::assemble(inp, &active);
-            let (n, nc, mu) = (active.len(), 2 * active.len(), self.mu);
-            let (z, ok, any) = self.solve(&asm);
+            let (n, nc) = (active.len(), 2 * active.len());
+            let (z, ok, any) = self.solve(&asm, &active);
             let mut p = vec![0.0; nc];
             for i in 0..n {
                 p[i] = z[i];
-                p[n + i] = z[n + i] - mu * z[i];
+                p[n + i] = z[n + i] - active[i].law.mu() * z[i];
             }
             for i in 0..nc {
                 u_new += &asm.wiw[i] * p[i];
             }
             let gam_post: Vec<Real> = (0..nc).map(|i| dot_seq(&asm.wcols[i], &u_new)).collect();
             if ok || any {
-                self.check(&asm, inp.u_free, &p, &gam_post);
+                self.check(&asm, &active, inp.u_free, &p, &gam_post);
             }
             self.account(&asm, &active, &p, &gam_post, inp.t + inp.scheme.h, log);
         }

@@ -1,0 +1,899 @@
+//! Whole bridges: `N ≥ 1` deck segments in a row, joints between them, optional abutments at the
+//! start and the end (issue 11), simulated by the same driver and steppers as the two-deck model.
+//!
+//! # Layout and frames **\[C\]**
+//! Segment 1 is at the start of the bridge, segment `N` at its end; joint `k` (array index
+//! `k − 1`) lies between segments `k` and `k + 1`. Every segment is one of the deck shapes of
+//! [`crate::shape`] in its body frame (origin at the midpoint of the shape's *joint* face, that
+//! face on the x-axis, the deck in `y > 0`), optionally mirrored (`x → −x`, [`Segment::mirrored`]:
+//! a curved deck then curves the other way). The segments are placed end to end in the global
+//! frame of the two-deck model (spec §4), anchored at joint 1:
+//!
+//! * segment 1 is its body frame (mirrored or not) translated by `(0, g_1)`: its shape's joint
+//!   face is its **end** face, on the line `y = g_1`, and the segment lies in `y ≥ g_1`;
+//! * every later segment has its shape's joint face as its **start** face; it is turned (and
+//!   translated) so that this face is parallel to the previous segment's end face, at the joint's
+//!   gap `g_k` from it along that face's normal, facing it, midpoints aligned. For two segments
+//!   this is exactly the two-deck arrangement (segment 2 = the body frame turned by π).
+//!
+//! So a straight chain runs along `−y` from the start abutment to the end one: "joint `k` closes
+//! as `x_k − x_{k+1}` grows" of issue 11 reads `y_{k+1} − y_k` here, and a ground acceleration
+//! toward the end abutment is `a_g` along `−y` (`scale_y = -1` for a record positive toward the
+//! end). A curved segment with [`Segment::mirrored`] `= false` curves **left** when segment 1 and
+//! **right** when a later segment, walking from the start to the end; the paper's S is two
+//! unmirrored segments.
+//!
+//! Displacements `q = (x_j, y_j, θ_j)` are those of each segment's centroid relative to the
+//! ground and its rotation about the centroid, as in the two-deck model.
+//!
+//! # Model
+//! Bearings tie each segment to the ground ([`Bearing`]: linear springs of equal stiffness in x
+//! and y at body points, linearised kinematics); damping is Rayleigh per segment or translational
+//! dashpots ([`DampingModel`]); `M`, `K`, `C` are block diagonal. The contacts are those of the
+//! two-deck model at every joint (four corner-against-face candidates, at most two realised) and
+//! the outer-face corners at each abutment. With the rigid law the contacts active in one step
+//! are solved together (one impact LCP over the bridge); with a compliance law every joint and
+//! abutment carries its own law (shared by its two corners) and the Newton iteration couples
+//! them. All joints and abutments must use the same kind of contact (all rigid, or all
+//! compliance laws); their parameters may differ.
+
+use super::contact::{JointGeom, State};
+use super::driver::{self, AbutmentFace, BodySystem, Bridge, SeatEnd};
+use super::model::{EndFace, SegmentBody, deck_frequencies, rayleigh_coefficients};
+use super::{
+    Bearing, DampingModel, Energy, ImpactRecord, JointContact, SimContact, SimError, SimSettings,
+    SimStatus, compliance, rigid,
+};
+use crate::analytic::ImpactLaw;
+use crate::contact_law::timestep::TimeStepAdvice;
+use crate::geometry::MassProperties;
+use crate::ground_motion::GroundMotion;
+use crate::math::{Real, Vector, cross};
+use crate::shape::{DeckEnd, DeckShape};
+use nalgebra::{Matrix2x3, Matrix3, Vector3};
+
+/// One deck segment.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Segment {
+    /// Its outline in the body frame of [`crate::shape`].
+    pub shape: DeckShape,
+    /// Mirror the body frame (`x → −x`) before placing the segment (module doc: a curved
+    /// segment then curves the other way; a skewed one gets the opposite skew).
+    pub mirrored: bool,
+    /// Bearings; points in the segment's body frame (after the mirror, before placement).
+    pub bearings: Vec<Bearing>,
+}
+
+impl Segment {
+    /// A segment with one bearing of stiffness `k` at each of the four end-face corners.
+    pub fn with_corner_bearings(shape: DeckShape, mirrored: bool, k: Real) -> Self {
+        let mut s = Segment {
+            shape,
+            mirrored,
+            bearings: Vec::new(),
+        };
+        s.bearings = s
+            .corner_points()
+            .into_iter()
+            .map(|point| Bearing {
+                point,
+                stiffness: k,
+            })
+            .collect();
+        s
+    }
+
+    /// The four end-face corners in the (mirrored) body frame: `[joint c0, joint c1, far c0,
+    /// far c1]` of the shape.
+    pub fn corner_points(&self) -> [Vector; 4] {
+        let m = |p: Vector| self.mirror(p);
+        let j = self.shape.end_face(DeckEnd::Joint);
+        let f = self.shape.end_face(DeckEnd::Far);
+        [
+            m(j.corners[0]),
+            m(j.corners[1]),
+            m(f.corners[0]),
+            m(f.corners[1]),
+        ]
+    }
+
+    fn mirror(&self, p: Vector) -> Vector {
+        if self.mirrored {
+            Vector::new(-p.x, p.y)
+        } else {
+            p
+        }
+    }
+
+    /// A face of the (mirrored) body frame as an [`EndFace`] (corners re-ordered after a mirror so
+    /// that the segment stays to the right of `c0 → c1`).
+    fn body_face(&self, end: DeckEnd) -> EndFace {
+        let f = self.shape.end_face(end);
+        let (c0, c1) = if self.mirrored {
+            (self.mirror(f.corners[1]), self.mirror(f.corners[0]))
+        } else {
+            (f.corners[0], f.corners[1])
+        };
+        let n_out = if self.mirrored {
+            Vector::new(-f.outward_normal.x, f.outward_normal.y)
+        } else {
+            f.outward_normal
+        };
+        face([c0, c1], -n_out)
+    }
+}
+
+/// The [`EndFace`] with corners `c` and inward normal `inward`.
+fn face(c: [Vector; 2], inward: Vector) -> EndFace {
+    EndFace {
+        corners: c,
+        mid: (c[0] + c[1]) * 0.5,
+        dir: (c[1] - c[0]).normalize(),
+        inward,
+        half: 0.5 * (c[1] - c[0]).norm(),
+    }
+}
+
+/// A joint between two segments.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Joint {
+    /// Reference opening `g ≥ 0` \[m\].
+    pub gap: Real,
+    /// Coulomb friction coefficient `μ ≥ 0`.
+    pub friction: Real,
+    /// Newton restitution coefficient `ε_N ∈ [0, 1]` (rigid law).
+    pub restitution: Real,
+    /// Seat length `> 0` of the two ends at this joint \[m\].
+    pub seat_length: Real,
+    /// Contact law.
+    pub contact: JointContact,
+}
+
+/// An abutment at the start or the end of the bridge: the ground, beyond the outer face of the
+/// first or last segment (as [`super::SimAbutment`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BridgeAbutment {
+    /// Gap `≥ 0` between the segment's outer face and the abutment face \[m\].
+    pub gap: Real,
+    /// Seat length `> 0` of the segment end on the abutment \[m\].
+    pub seat_length: Real,
+    /// Coulomb friction coefficient `μ ≥ 0`.
+    pub friction: Real,
+    /// Newton restitution coefficient `ε_N ∈ [0, 1]` (rigid law).
+    pub restitution: Real,
+    /// Contact law.
+    pub contact: JointContact,
+}
+
+/// Which abutment.
+pub const ABUTMENT_SIDES: [&str; 2] = ["start", "end"];
+
+/// A whole bridge.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BridgeModel {
+    /// Segments from the start to the end (`N ≥ 1`).
+    pub segments: Vec<Segment>,
+    /// Joint `k` (0-based) between segments `k` and `k + 1` (`N − 1` of them).
+    pub joints: Vec<Joint>,
+    /// Abutments `[start, end]`.
+    pub abutments: [Option<BridgeAbutment>; 2],
+    /// Seat length of an outer end without an abutment (it rests on a pier) \[m\].
+    pub outer_seat_length: Real,
+    /// Damping ratio `ζ ∈ [0, 1)`.
+    pub damping_ratio: Real,
+    /// Damping model.
+    pub damping_model: DampingModel,
+}
+
+/// `segment[i].key`, `joint[k].key`, `abutment.start.key` (0-based indices, as in the arrays of
+/// a scenario).
+fn seg_key(i: usize, key: &str) -> String {
+    format!("segment[{i}].{key}")
+}
+fn joint_key(k: usize, key: &str) -> String {
+    format!("joint[{k}].{key}")
+}
+fn abut_key(side: usize, key: &str) -> String {
+    format!("abutment.{}.{key}", ABUTMENT_SIDES[side])
+}
+
+fn check(name: String, v: Real, ok: bool, reason: &str) -> Result<(), SimError> {
+    if ok && v.is_finite() {
+        Ok(())
+    } else {
+        Err(SimError::invalid(name, v, reason))
+    }
+}
+
+impl BridgeModel {
+    /// Validates every parameter; errors name `segment[i].key`, `joint[k].key`,
+    /// `abutment.start.key`, ….
+    pub fn validate(&self) -> Result<(), SimError> {
+        let n = self.segments.len();
+        if n == 0 {
+            return Err(SimError::InvalidArgument {
+                name: "segment".into(),
+                reason: "a bridge needs at least one segment".into(),
+            });
+        }
+        if self.joints.len() + 1 != n {
+            return Err(SimError::InvalidArgument {
+                name: "joint".into(),
+                reason: format!(
+                    "{n} segments need {} joints, found {}",
+                    n - 1,
+                    self.joints.len()
+                ),
+            });
+        }
+        for (i, s) in self.segments.iter().enumerate() {
+            s.shape.validate().map_err(|e| SimError::InvalidParameter {
+                name: seg_key(i, &e.to_string()),
+                value: Real::NAN,
+                reason: "invalid shape".into(),
+            })?;
+            for (b, br) in s.bearings.iter().enumerate() {
+                let kr2 = br.stiffness * br.point.norm_squared();
+                check(
+                    seg_key(i, &format!("bearing[{b}].stiffness")),
+                    br.stiffness,
+                    br.stiffness >= 0.0 && kr2.is_finite(),
+                    "must be finite and >= 0",
+                )?;
+            }
+        }
+        for (k, j) in self.joints.iter().enumerate() {
+            check(joint_key(k, "gap"), j.gap, j.gap >= 0.0, "must be >= 0")?;
+            check(
+                joint_key(k, "mu"),
+                j.friction,
+                j.friction >= 0.0,
+                "must be >= 0",
+            )?;
+            check(
+                joint_key(k, "eps_n"),
+                j.restitution,
+                (0.0..=1.0).contains(&j.restitution),
+                "must lie in [0, 1]",
+            )?;
+            check(
+                joint_key(k, "seat_length"),
+                j.seat_length,
+                j.seat_length > 0.0,
+                "must be > 0",
+            )?;
+            let (a, b) = (&self.segments[k], &self.segments[k + 1]);
+            let (wa, wb) = (
+                a.shape.end_face(DeckEnd::Joint).length(),
+                b.shape.end_face(DeckEnd::Joint).length(),
+            );
+            let wa = if k == 0 {
+                wa
+            } else {
+                a.shape.end_face(DeckEnd::Far).length()
+            };
+            if (wa - wb).abs() > 1e-9 * wa.max(wb) {
+                return Err(SimError::invalid(
+                    joint_key(k, "width"),
+                    wb,
+                    &format!(
+                        "the faces at this joint must have the same length to meet face to face \
+                         (segment {} ends with a face of {} m)",
+                        k + 1,
+                        crate::output::float_token(wa)
+                    ),
+                ));
+            }
+        }
+        for (side, a) in self.abutments.iter().enumerate() {
+            if let Some(a) = a {
+                check(abut_key(side, "gap"), a.gap, a.gap >= 0.0, "must be >= 0")?;
+                check(
+                    abut_key(side, "seat_length"),
+                    a.seat_length,
+                    a.seat_length > 0.0,
+                    "must be > 0",
+                )?;
+                check(
+                    abut_key(side, "mu"),
+                    a.friction,
+                    a.friction >= 0.0,
+                    "must be >= 0",
+                )?;
+                check(
+                    abut_key(side, "eps_n"),
+                    a.restitution,
+                    (0.0..=1.0).contains(&a.restitution),
+                    "must lie in [0, 1]",
+                )?;
+            }
+        }
+        check(
+            "outer_seat_length".into(),
+            self.outer_seat_length,
+            self.outer_seat_length > 0.0,
+            "must be > 0",
+        )?;
+        check(
+            "damping_ratio".into(),
+            self.damping_ratio,
+            (0.0..1.0).contains(&self.damping_ratio),
+            "must lie in [0, 1)",
+        )?;
+        self.contact_kind()?;
+        Ok(())
+    }
+
+    /// The contact laws of the joints and the present abutments, in that order.
+    fn contacts(&self) -> impl Iterator<Item = (String, &JointContact)> {
+        let joints = self
+            .joints
+            .iter()
+            .enumerate()
+            .map(|(k, j)| (joint_key(k, "law"), &j.contact));
+        let abuts = self
+            .abutments
+            .iter()
+            .enumerate()
+            .filter_map(|(s, a)| a.as_ref().map(|a| (abut_key(s, "law"), &a.contact)));
+        joints.chain(abuts)
+    }
+
+    /// `true` for compliance laws, `false` for rigid contact; an error when they are mixed.
+    fn contact_kind(&self) -> Result<bool, SimError> {
+        let mut kind: Option<(String, bool)> = None;
+        for (name, c) in self.contacts() {
+            let comp = matches!(c, JointContact::Compliance(_));
+            if let JointContact::Compliance(cc) = c {
+                let v = cc.friction_velocity;
+                check(
+                    name.replace(".law", ".friction_velocity"),
+                    v,
+                    v > 0.0,
+                    "must be finite and > 0",
+                )?;
+            }
+            match &kind {
+                None => kind = Some((name, comp)),
+                Some((first, k)) if *k != comp => {
+                    return Err(SimError::InvalidArgument {
+                        name,
+                        reason: format!(
+                            "mixes rigid and compliance contact ({first} is {}); every joint and \
+                             abutment of a bridge must use rigid contact, or every one a \
+                             compliance law",
+                            if *k { "a compliance law" } else { "rigid" }
+                        ),
+                    });
+                }
+                Some(_) => {}
+            }
+        }
+        Ok(kind.is_some_and(|k| k.1))
+    }
+
+    /// The segments placed end to end in the global frame (module doc).
+    pub fn layout(&self) -> Vec<SegmentBody> {
+        let mut out: Vec<SegmentBody> = Vec::with_capacity(self.segments.len());
+        for (i, s) in self.segments.iter().enumerate() {
+            let mp = s.shape.mass_properties();
+            let jf = s.body_face(DeckEnd::Joint);
+            let ff = s.body_face(DeckEnd::Far);
+            let g0 = s.mirror(mp.centroid);
+            let body = if i == 0 {
+                let off = Vector::new(0.0, self.joints.first().map_or(0.0, |j| j.gap));
+                let t = |p: Vector| off + p;
+                let mv = |f: &EndFace| face([t(f.corners[0]), t(f.corners[1])], f.inward);
+                SegmentBody {
+                    mass: MassProperties { centroid: g0, ..mp },
+                    centroid: t(g0),
+                    start: mv(&ff),
+                    end: mv(&jf),
+                }
+            } else {
+                let prev = out[i - 1].end;
+                let gap = self.joints[i - 1].gap;
+                // turn the joint face's outward normal (−inward) onto the previous face's inward
+                // normal, then move its midpoint to the previous midpoint − gap ν
+                let (a, b) = (-jf.inward, prev.inward);
+                let (c, sn) = (a.dot(&b), cross(&a, &b));
+                let rot = |p: Vector| Vector::new(c * p.x - sn * p.y, sn * p.x + c * p.y);
+                let t = prev.mid - prev.inward * gap - rot(jf.mid);
+                let tr = |p: Vector| rot(p) + t;
+                let mv = |f: &EndFace| face([tr(f.corners[0]), tr(f.corners[1])], rot(f.inward));
+                SegmentBody {
+                    mass: MassProperties { centroid: g0, ..mp },
+                    centroid: tr(g0),
+                    start: mv(&jf),
+                    end: mv(&ff),
+                }
+            };
+            out.push(body);
+        }
+        out
+    }
+
+    /// Bearing points of every segment in the global reference pose.
+    pub fn bearing_points(&self) -> Vec<Vec<Vector>> {
+        let bodies = self.layout();
+        self.segments
+            .iter()
+            .zip(&bodies)
+            .enumerate()
+            .map(|(i, (s, b))| {
+                let place = placement(b, s, i == 0);
+                s.bearings.iter().map(|br| place(br.point)).collect()
+            })
+            .collect()
+    }
+
+    /// `M`, `K`, `C`, frequencies per segment (errors name the segment).
+    pub(crate) fn body_systems(&self) -> Result<Vec<BodySystem>, SimError> {
+        let bodies = self.layout();
+        let points = self.bearing_points();
+        let mut out = Vec::with_capacity(bodies.len());
+        for (i, (b, s)) in bodies.iter().zip(&self.segments).enumerate() {
+            let mp = b.mass;
+            let mj = Matrix3::from_diagonal(&Vector3::new(mp.mass, mp.mass, mp.inertia));
+            let mut kj = Matrix3::zeros();
+            for (br, p) in s.bearings.iter().zip(&points[i]) {
+                let r = p - b.centroid;
+                let bm = Matrix2x3::new(1.0, 0.0, -r.y, 0.0, 1.0, r.x);
+                kj += br.stiffness * bm.transpose() * bm;
+            }
+            let om = deck_frequencies(&mp, &kj);
+            if om.iter().any(|w| !w.is_finite()) {
+                return Err(SimError::invalid(
+                    seg_key(i, "mass"),
+                    mp.mass,
+                    "the bearing stiffness over this mass (or inertia) overflows",
+                ));
+            }
+            let (a0, a1) = rayleigh_coefficients(self.damping_ratio, &om).ok_or_else(|| {
+                SimError::invalid(
+                    seg_key(i, "bearings"),
+                    0.0,
+                    "this segment has no bearing stiffness, so its damping is undefined",
+                )
+            })?;
+            let (cj, a0, a1) = super::options::damping_block(
+                self.damping_model,
+                self.damping_ratio,
+                &mj,
+                &kj,
+                a0,
+                a1,
+            );
+            out.push(BodySystem {
+                mass: mj,
+                stiffness: kj,
+                damping: cj,
+                frequencies: om,
+                rayleigh: (a0, a1),
+            });
+        }
+        Ok(out)
+    }
+
+    /// The driver's view of the bridge: segments, joints, abutments, seats (per segment
+    /// `[start, end]`).
+    fn bridge(&self) -> Bridge {
+        let bodies = self.layout();
+        let n = bodies.len();
+        let joints = self
+            .joints
+            .iter()
+            .enumerate()
+            .map(|(k, j)| JointGeom::new(&bodies, k, j.gap))
+            .collect();
+        let abutments = self
+            .abutments
+            .iter()
+            .enumerate()
+            .filter_map(|(side, a)| {
+                a.map(|a| {
+                    AbutmentFace::new(&bodies, if side == 0 { 0 } else { n - 1 }, side, a.gap)
+                })
+            })
+            .collect();
+        let mut seats = Vec::with_capacity(2 * n);
+        for (i, b) in bodies.iter().enumerate() {
+            let start = if i == 0 {
+                self.abutments[0].map_or(self.outer_seat_length, |a| a.seat_length)
+            } else {
+                self.joints[i - 1].seat_length
+            };
+            let end = if i + 1 == n {
+                self.abutments[1].map_or(self.outer_seat_length, |a| a.seat_length)
+            } else {
+                self.joints[i].seat_length
+            };
+            for (f, length) in [(&b.start, start), (&b.end, end)] {
+                seats.push(SeatEnd {
+                    body: i,
+                    corners: f.corners,
+                    inward: f.inward,
+                    length,
+                });
+            }
+        }
+        Bridge {
+            bodies,
+            joints,
+            abutments,
+            seats,
+            bearing_points: self.bearing_points(),
+        }
+    }
+}
+
+/// Maps a point of segment `s`'s (mirrored) body frame to its global reference position, given
+/// the placed body `b`.
+fn placement(b: &SegmentBody, s: &Segment, first: bool) -> impl Fn(Vector) -> Vector + use<> {
+    // recover the rigid map from the placed shape face: first segment: translation only
+    let jf = s.body_face(DeckEnd::Joint);
+    let placed = if first { b.end } else { b.start };
+    let a = -jf.inward;
+    let bb = -placed.inward;
+    let (c, sn) = (a.dot(&bb), cross(&a, &bb));
+    let rot = move |p: Vector| Vector::new(c * p.x - sn * p.y, sn * p.x + c * p.y);
+    let t = placed.mid - rot(jf.mid);
+    move |p: Vector| rot(p) + t
+}
+
+/// Everything a bridge run needs besides the settings.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BridgeProblem {
+    /// The bridge.
+    pub model: BridgeModel,
+    /// The ground acceleration.
+    pub ground: GroundMotion,
+    /// Initial displacements `q(0)`, `3 N` entries \[m, rad\].
+    pub q0: Vec<Real>,
+    /// Initial velocities `u(0)` relative to the ground \[m/s, rad/s\].
+    pub u0: Vec<Real>,
+}
+
+impl BridgeProblem {
+    /// At rest in the reference pose.
+    pub fn at_rest(model: BridgeModel, ground: GroundMotion) -> Self {
+        let n = 3 * model.segments.len();
+        Self {
+            model,
+            ground,
+            q0: vec![0.0; n],
+            u0: vec![0.0; n],
+        }
+    }
+}
+
+/// Peaks of one joint.
+#[derive(Debug, Clone, PartialEq)]
+pub struct JointSummary {
+    /// Impacts: rigid law, steps in which a contact of this joint approaching at ≥
+    /// [`SimSettings::impact_velocity`] gets a positive normal impulse; compliance laws, the
+    /// maximal intervals of positive total force.
+    pub impacts: usize,
+    /// Largest total normal force of the joint's contacts \[N\] (`None` for rigid contact).
+    pub peak_contact_force: Option<Real>,
+    /// Largest normal impulse of one impact (the sum over the joint's contacts) \[N s\].
+    pub peak_impulse: Real,
+    /// `max_t (g − smallest end gap)` \[m\].
+    pub peak_closing: Real,
+    /// `max_t (largest end gap − g)` \[m\].
+    pub peak_opening: Real,
+    /// Either end at this joint exceeded its seat length.
+    pub unseated: bool,
+}
+
+/// Peaks of one abutment.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AbutmentSummary {
+    /// Impacts (as for a joint).
+    pub impacts: usize,
+    /// Largest total normal force \[N\] (`None` for rigid contact).
+    pub peak_contact_force: Option<Real>,
+    /// Largest normal impulse of one impact \[N s\].
+    pub peak_impulse: Real,
+    /// `max_t (gap − smaller corner gap)` \[m\].
+    pub peak_closing: Real,
+}
+
+/// Peaks of one segment.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SegmentSummary {
+    /// `max_t |(x, y)|` of the centroid relative to the ground \[m\].
+    pub peak_displacement: Real,
+    /// `|(x, y)|` at the end \[m\].
+    pub final_displacement: Real,
+    /// `max_t |θ|` \[rad\].
+    pub peak_rotation: Real,
+    /// Largest bearing deformation `max_t max_b |u_b|` (linearised) \[m\].
+    pub peak_bearing_deformation: Real,
+    /// Energy dissipated by yielding bearings \[J\] (0 for linear bearings).
+    pub hysteretic_energy: Real,
+    /// Natural frequencies `ω_1 ≤ ω_2 ≤ ω_3` on the bearings \[rad/s\].
+    pub frequencies: [Real; 3],
+}
+
+/// Peaks and the energy check of a bridge run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BridgeSummary {
+    /// Impacts of the whole bridge (rigid: steps with an impact; compliance: the sum over sites).
+    pub impacts: usize,
+    /// Per joint.
+    pub joints: Vec<JointSummary>,
+    /// `[start, end]`; `None` where absent.
+    pub abutments: [Option<AbutmentSummary>; 2],
+    /// Per segment.
+    pub segments: Vec<SegmentSummary>,
+    /// Some end exceeded its seat length.
+    pub unseated: bool,
+    /// First time an end exceeded its seat length \[s\].
+    pub unseating_time: Option<Real>,
+    /// Which end first: `segment<i>-start` / `segment<i>-end` (1-based).
+    pub unseated_end: Option<String>,
+    /// Largest penetration at a joint (rigid: the scheme's overlap; compliance: the law's
+    /// deformation) \[m\].
+    pub peak_penetration: Real,
+    /// `max_t |E_0 + W_in − (T + V + D_viscous + D_contact)| / max_t |E_0 + W_in|`.
+    pub energy_balance_error: Real,
+    /// Energies at the end.
+    pub final_energy: Energy,
+    /// `max_t |E_0 + W_in|` \[J\].
+    pub max_input_energy: Real,
+}
+
+/// Result of [`simulate_bridge`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct BridgeSolution {
+    /// Outcome.
+    pub status: SimStatus,
+    /// Steps taken.
+    pub steps: usize,
+    /// Step size \[s\].
+    pub dt: Real,
+    /// Number of segments.
+    pub n_segments: usize,
+    /// Kept times \[s\].
+    pub t: Vec<Real>,
+    /// `q` rows (`3 N` per kept time).
+    pub q: Vec<Real>,
+    /// `u` rows.
+    pub u: Vec<Real>,
+    /// End gaps of each joint (`2 (N − 1)` per kept time; NaN where no corner is over the face) \[m\].
+    pub end_gaps: Vec<Real>,
+    /// Normal force of each joint end (compliance; `2 (N − 1)` per kept time) \[N\].
+    pub contact_force: Vec<Real>,
+    /// Smaller abutment corner gap `[start, end]` per kept time (NaN where absent) \[m\].
+    pub abutment_gaps: Vec<[Real; 2]>,
+    /// Energies per kept time.
+    pub energy: Vec<Energy>,
+    /// Impacting contacts in time order ([`ImpactRecord::site`] names the joint or abutment).
+    pub impacts: Vec<ImpactRecord>,
+    /// Peaks.
+    pub summary: BridgeSummary,
+    /// LCP solves / enumeration fallbacks / failures (rigid law).
+    pub lcp_solves: usize,
+    /// Steps where Lemke failed but enumeration succeeded.
+    pub lcp_enumeration_fallbacks: usize,
+    /// Steps whose LCP failed or whose solution failed the post-solve checks.
+    pub lcp_failures: usize,
+    /// Newton failures (compliance laws).
+    pub newton_failures: usize,
+    /// Closure steps (compliance laws).
+    pub closure_steps: usize,
+    /// Time-step adequacy of the compliance law.
+    pub time_step_advice: Option<TimeStepAdvice>,
+}
+
+/// Runs a bridge (module doc; the scheme of [`super::simulate`]).
+///
+/// Bad input → [`SimError`]; numerical trouble → [`BridgeSolution::status`].
+pub fn simulate_bridge(
+    problem: &BridgeProblem,
+    settings: &SimSettings,
+) -> Result<BridgeSolution, SimError> {
+    let model = &problem.model;
+    settings.validate()?;
+    problem.ground.validate()?;
+    model.validate()?;
+    let n = 3 * model.segments.len();
+    for (name, v) in [("q0", &problem.q0), ("u0", &problem.u0)] {
+        if v.len() != n {
+            return Err(SimError::InvalidArgument {
+                name: name.into(),
+                reason: format!("must have {n} entries (3 per segment), found {}", v.len()),
+            });
+        }
+        if let Some((i, x)) = v.iter().enumerate().find(|(_, x)| !x.is_finite()) {
+            return Err(SimError::invalid(
+                format!("{name}[{i}]"),
+                *x,
+                "must be finite",
+            ));
+        }
+    }
+    let compliant = model.contact_kind()?;
+    let systems = model.body_systems()?;
+    let scheme = driver::Scheme::new(&problem.ground, settings, systems)?;
+    let bridge = model.bridge();
+    let q0 = State::from_column_slice(&problem.q0);
+    let u0 = State::from_column_slice(&problem.u0);
+    let result = if compliant {
+        let mut sites = Vec::new();
+        let mut vr = Real::INFINITY;
+        let mut law_of = |name: String, c: &JointContact, mu: Real| -> Result<_, SimError> {
+            let JointContact::Compliance(cc) = c else {
+                unreachable!("contact_kind checked")
+            };
+            vr = vr.min(cc.friction_velocity);
+            let law = crate::contact_law::sharing::JointLaw::new(cc.law, 2)
+                .map_err(|e| SimError::invalid(name, 2.0, &e.to_string()))?;
+            Ok(compliance::SiteLaw { law, mu })
+        };
+        for (k, j) in model.joints.iter().enumerate() {
+            sites.push(law_of(joint_key(k, "law"), &j.contact, j.friction)?);
+        }
+        for (s, a) in model.abutments.iter().enumerate() {
+            if let Some(a) = a {
+                sites.push(law_of(abut_key(s, "law"), &a.contact, a.friction)?);
+            }
+        }
+        let abuts = bridge.abutments.clone();
+        let mut stepper =
+            compliance::ComplianceStepper::new(&q0, &u0, sites, abuts, vr, &scheme, &bridge);
+        driver::run(q0, u0, settings, &scheme, &bridge, &mut stepper)
+    } else {
+        let law = |name: String, mu: Real, eps: Real| {
+            ImpactLaw::new(mu, eps).map_err(|_| SimError::invalid(name, mu, "invalid impact law"))
+        };
+        let joint_laws = model
+            .joints
+            .iter()
+            .enumerate()
+            .map(|(k, j)| law(joint_key(k, "law"), j.friction, j.restitution))
+            .collect::<Result<Vec<_>, _>>()?;
+        let mut abut = [ImpactLaw::new(0.0, 0.0).expect("valid"); 2];
+        for (s, a) in model.abutments.iter().enumerate() {
+            if let Some(a) = a {
+                abut[s] = law(abut_key(s, "law"), a.friction, a.restitution)?;
+            }
+        }
+        let mut stepper = rigid::RigidStepper::with_laws(joint_laws, abut, settings);
+        driver::run(q0, u0, settings, &scheme, &bridge, &mut stepper)
+    };
+    Ok(solution(result, &scheme, &bridge, model, compliant))
+}
+
+/// Assembles the [`BridgeSolution`] of a run.
+fn solution(
+    r: driver::RunResult,
+    sc: &driver::Scheme,
+    br: &Bridge,
+    model: &BridgeModel,
+    compliant: bool,
+) -> BridgeSolution {
+    let nj = br.joints.len();
+    let nb = br.bodies.len();
+    let (peaks, log) = (&r.peaks, &r.log);
+    // largest summed normal impulse of one impact at a site
+    let mut imp_joint = vec![0.0; nj];
+    let mut imp_abut = [0.0; 2];
+    {
+        let mut cur: Option<(usize, bool, usize, Real)> = None;
+        let mut flush = |c: Option<(usize, bool, usize, Real)>| {
+            if let Some((_, is_joint, site, p)) = c {
+                let slot = if is_joint {
+                    &mut imp_joint[site]
+                } else {
+                    &mut imp_abut[site]
+                };
+                *slot = Real::max(*slot, p);
+            }
+        };
+        for rec in &log.records {
+            let key = (
+                rec.impact,
+                matches!(rec.contact, SimContact::Joint(_)),
+                rec.site,
+            );
+            match cur {
+                Some((i, j, s, p)) if (i, j, s) == key => cur = Some((i, j, s, p + rec.impulse_n)),
+                _ => {
+                    flush(cur);
+                    cur = Some((key.0, key.1, key.2, rec.impulse_n));
+                }
+            }
+        }
+        flush(cur);
+    }
+    let joint_impacts = |k: usize| log.joint_impacts.get(k).copied().unwrap_or(0);
+    let joints = (0..nj)
+        .map(|k| JointSummary {
+            impacts: joint_impacts(k),
+            peak_contact_force: if compliant {
+                Some(peaks.force[k].unwrap_or(0.0))
+            } else {
+                None
+            },
+            peak_impulse: imp_joint[k],
+            peak_closing: peaks.close[k],
+            peak_opening: peaks.open[k],
+            // seats per segment [start, end]: joint k is segment k's end and k+1's start
+            unseated: peaks.seat[2 * k + 1] > br.seats[2 * k + 1].length
+                || peaks.seat[2 * k + 2] > br.seats[2 * k + 2].length,
+        })
+        .collect();
+    let mut abutments = [None, None];
+    for (side, a) in model.abutments.iter().enumerate() {
+        if a.is_some() {
+            abutments[side] = Some(AbutmentSummary {
+                impacts: log.abutment_impacts[side],
+                peak_contact_force: if compliant {
+                    Some(peaks.abut_force[side].unwrap_or(0.0))
+                } else {
+                    None
+                },
+                peak_impulse: imp_abut[side],
+                peak_closing: peaks.abut[side].unwrap_or(Real::NAN),
+            });
+        }
+    }
+    let segments = (0..nb)
+        .map(|i| {
+            let x = r.final_q[3 * i];
+            let y = r.final_q[3 * i + 1];
+            SegmentSummary {
+                peak_displacement: peaks.disp[i],
+                final_displacement: (x * x + y * y).sqrt(),
+                peak_rotation: peaks.rot[i],
+                peak_bearing_deformation: peaks.bearing[i],
+                hysteretic_energy: 0.0,
+                frequencies: sc.bodies[i].frequencies,
+            }
+        })
+        .collect();
+    let unseated_end = peaks.unseat.map(|(_, e)| {
+        format!(
+            "segment{}-{}",
+            e / 2 + 1,
+            if e % 2 == 0 { "start" } else { "end" }
+        )
+    });
+    let summary = BridgeSummary {
+        impacts: log.impacts,
+        joints,
+        abutments,
+        segments,
+        unseated: peaks.unseat.is_some(),
+        unseating_time: peaks.unseat.map(|u| u.0),
+        unseated_end,
+        peak_penetration: peaks.pen,
+        energy_balance_error: r.energy_balance_error,
+        final_energy: r.final_energy,
+        max_input_energy: r.max_input_energy,
+    };
+    let tr = r.trace;
+    BridgeSolution {
+        status: r.status,
+        steps: r.steps,
+        dt: sc.h,
+        n_segments: nb,
+        t: tr.t,
+        q: tr.q,
+        u: tr.u,
+        end_gaps: tr.end_gaps,
+        contact_force: tr.contact_force,
+        abutment_gaps: tr.abutment_gaps,
+        energy: tr.energy,
+        impacts: r.log.records,
+        summary,
+        lcp_solves: r.stats.lcp_solves,
+        lcp_enumeration_fallbacks: r.stats.lcp_enumeration_fallbacks,
+        lcp_failures: r.stats.lcp_failures,
+        newton_failures: r.stats.newton_failures,
+        closure_steps: r.stats.closure_steps,
+        time_step_advice: r.stats.time_step_advice,
+    }
+}
