@@ -527,6 +527,54 @@ impl BridgeModel {
     }
 }
 
+impl BridgeModel {
+    /// The two-deck model as a bridge of two segments (deck 1 = segment 1, deck 2 = segment 2,
+    /// abutment of deck 1 = start, of deck 2 = end); the same physics, laid out by
+    /// [`BridgeModel::layout`].
+    pub fn from_pair(model: &super::SimModel) -> Self {
+        let shapes = model.shapes.unwrap_or([
+            DeckShape::Curved(model.arrangement.deck1),
+            DeckShape::Curved(model.arrangement.deck2),
+        ]);
+        // two-deck bearing points are relative to M_j in the global orientation: deck 2 is its
+        // body frame turned by π
+        let seg = |j: usize, bs: &[Bearing]| Segment {
+            shape: shapes[j],
+            mirrored: false,
+            bearings: bs
+                .iter()
+                .map(|b| Bearing {
+                    point: if j == 0 { b.point } else { -b.point },
+                    stiffness: b.stiffness,
+                })
+                .collect(),
+        };
+        let abut = |a: Option<super::SimAbutment>| {
+            a.map(|a| BridgeAbutment {
+                gap: a.gap,
+                seat_length: a.seat_length,
+                friction: model.friction,
+                restitution: model.restitution,
+                contact: model.contact,
+            })
+        };
+        BridgeModel {
+            segments: vec![seg(0, &model.bearings1), seg(1, &model.bearings2)],
+            joints: vec![Joint {
+                gap: model.gap,
+                friction: model.friction,
+                restitution: model.restitution,
+                seat_length: model.seat_length,
+                contact: model.contact,
+            }],
+            abutments: [abut(model.abutments[0]), abut(model.abutments[1])],
+            outer_seat_length: model.seat_length,
+            damping_ratio: model.damping_ratio,
+            damping_model: model.damping_model,
+        }
+    }
+}
+
 /// Maps a point of segment `s`'s (mirrored) body frame to its global reference position, given
 /// the placed body `b`.
 fn placement(b: &SegmentBody, s: &Segment, first: bool) -> impl Fn(Vector) -> Vector + use<> {

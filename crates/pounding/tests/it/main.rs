@@ -24,6 +24,7 @@ mod props;
 mod shapes;
 mod sim;
 mod sim_bearings;
+mod sim_bridge;
 mod sim_compliance;
 mod sim_friction;
 mod sim_scenario;
