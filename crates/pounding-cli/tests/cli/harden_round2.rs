@@ -199,9 +199,9 @@ fn compare_refuses_contact_keys_no_compared_law_uses() {
             "it is read by kelvin without c; hertz-damp",
         ),
         (
-            "[contact]\n\nfriction_velocity = 0.01\n",
+            "[contact]\nlaw = \"kelvin\"\nfriction_velocity = 0.01\n",
             "rigid",
-            "friction_velocity applies to compliance laws",
+            "friction_velocity is not used by any of the compared laws (rigid)",
         ),
     ] {
         std::fs::write(d.join("c.toml"), text).unwrap();

@@ -177,9 +177,9 @@ pub(super) fn check_contact_keys(
         }
         let at = src.at(contact(key));
         let message = match read.as_slice() {
-            [(law, None)] => {
+            [(law, None)] if !compared => {
                 let compliance: Vec<&str> = registry::LAWS.iter().map(|e| e.name).collect();
-                let default = if compared || src.is_set(contact("law")) || *law != "rigid" {
+                let default = if src.is_set(contact("law")) || *law != "rigid" {
                     ""
                 } else {
                     ", the default"
