@@ -83,6 +83,9 @@ pub struct LawReads {
     pub how: &'static str,
 }
 
+/// Whether a `[contact]` key is given (the argument of [`LawEntry::reads`]).
+pub type KeyGiven<'a> = dyn Fn(&str) -> bool + 'a;
+
 /// Shorthand for the `reads` functions of [`LAWS`].
 const fn reads(keys: &'static [&'static str], how: &'static str) -> LawReads {
     LawReads { keys, how }
@@ -100,7 +103,7 @@ pub struct LawEntry {
     /// law reads is refused by the scenario reader (`sim::scenario`) rather than ignored.
     /// Checked against `build` by the test `contact_law_keys` (a key read changes the law, a
     /// key not read does not).
-    pub reads: fn(given: &dyn Fn(&str) -> bool) -> LawReads,
+    pub reads: fn(given: &KeyGiven<'_>) -> LawReads,
     /// One-line description.
     pub description: &'static str,
     /// Builds the law from the keys and the defaults.

@@ -143,9 +143,12 @@ fn given(sec: &ContactSec, key: &str) -> bool {
     }
 }
 
+/// The keys a law reads and how its way was chosen (`None`: `rigid` or an unknown law).
+type KeysRead = Option<(Vec<&'static str>, &'static str)>;
+
 /// The `[contact]` keys law `name` reads with the keys given in `sec`, and how its way was
 /// chosen (for messages); `None` for `rigid` (reads none) and unknown names.
-fn keys_read(sec: &ContactSec, name: &str) -> Option<(Vec<&'static str>, &'static str)> {
+fn keys_read(sec: &ContactSec, name: &str) -> KeysRead {
     let entry = registry::entry(name)?;
     let r = (entry.reads)(&|k| given(sec, k));
     let mut keys = r.keys.to_vec();
@@ -163,8 +166,7 @@ pub(super) fn check_contact_keys(
     laws: &[&str],
     compared: bool,
 ) -> Result<(), ScenarioError> {
-    let read: Vec<(&str, Option<(Vec<&'static str>, &'static str)>)> =
-        laws.iter().map(|&l| (l, keys_read(sec, l))).collect();
+    let read: Vec<(&str, KeysRead)> = laws.iter().map(|&l| (l, keys_read(sec, l))).collect();
     if read.iter().any(|(l, r)| r.is_none() && *l != "rigid") {
         return Ok(());
     }
