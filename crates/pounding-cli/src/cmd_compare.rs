@@ -1,14 +1,13 @@
 //! `pounding compare`: one scenario, several joint contact laws, side by side.
 //!
 //! Builds the scenario exactly as `pounding simulate` does (same TOML, same validation), replaces
-//! its `[contact] law` by each law of `--laws` in turn (the other `[contact]` keys and their
-//! defaults apply to every law that reads them; a key that a law does not read is ignored for
-//! that law, since one section serves all of them, whereas `simulate` refuses a key its one law
-//! does not read), runs [`pounding::sim::simulate`] and writes `compare.csv`, a
-//! readable table on stdout, `timing.json` (wall time per law) and two overlay plots:
-//! `joint_gap.png` (the smaller joint gap of the two ends) and `contact_force.png` (total joint
-//! force of the compliance laws), each with a full-duration panel and a zoom around the largest
-//! contact event.
+//! its `[contact] law` by each law of `--laws` in turn (the other `[contact]` keys apply to every
+//! law that reads them; one section serves all laws, so a key is refused only when no law of
+//! `--laws` reads it: `Scenario::with_compared_laws`), runs [`pounding::sim::simulate`] and
+//! writes `compare.csv`, a readable table on stdout, `timing.json` (wall time per law) and two
+//! overlay plots: `joint_gap.png` (the smaller joint gap of the two ends) and `contact_force.png`
+//! (total joint force of the compliance laws), each with a full-duration panel and a zoom around
+//! the largest contact event.
 
 use crate::cmd_simulate;
 use crate::plot_style::{
@@ -18,6 +17,7 @@ use crate::plot_style::{
 use anyhow::{Context, Result, anyhow, bail};
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use pounding::contact_law::registry::law_names;
 use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
 use pounding::sim::output::{COMPARE_OUTPUTS, compare_csv, compare_table};
@@ -63,11 +63,9 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let mut laws: Vec<String> = Vec::new();
     for l in &args.laws {
         let l = l.trim().to_string();
-        if !pounding::contact_law::registry::law_names().contains(&l.as_str()) {
-            bail!(
-                "unknown contact law {l:?} in --laws: use one of {}",
-                pounding::contact_law::registry::law_names().join(", ")
-            );
+        if !law_names().contains(&l.as_str()) {
+            let names = law_names().join(", ");
+            bail!("unknown contact law {l:?} in --laws: use one of {names}");
         }
         if laws.contains(&l) {
             bail!("contact law {l:?} is given twice in --laws");
@@ -83,7 +81,8 @@ pub fn run(args: Args) -> Result<ExitCode> {
         bail!("invalid --dt {}: must be finite and > 0", float_token(dt));
     }
     // Build (and validate) every law's setup before running anything.
-    let base = cmd_simulate::load_scenario(args.scenario.as_deref())?;
+    let base = cmd_simulate::load_scenario(args.scenario.as_deref())?.with_compared_laws(&laws);
+    base.check_contact_keys()?;
     let mut setups = Vec::new();
     let mut memory = 0u64;
     for l in &laws {

@@ -292,6 +292,13 @@ fn shape_spec(a: &ImpactArgs) -> Result<ShapeSpec> {
                 let skew_deg = a
                     .skew
                     .ok_or_else(|| anyhow!("missing --skew (required with --shape skew)"))?;
+                // checked in degrees, so that the message shows the user's value
+                if !(skew_deg.is_finite() && (0.0..90.0).contains(&skew_deg)) {
+                    bail!(
+                        "invalid --skew {}: the skew angle must lie in [0, 90) degrees",
+                        pounding::output::float_token(skew_deg)
+                    );
+                }
                 Ok(ShapeSpec::Skew { length, skew_deg })
             }
         }

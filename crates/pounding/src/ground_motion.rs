@@ -310,7 +310,11 @@ impl Record {
                         return Err(parse_err(
                             source_name,
                             k + 1,
-                            format!("time {t} does not increase (previous {prev})"),
+                            format!(
+                                "time {} does not increase (previous {})",
+                                crate::output::float_token(t),
+                                crate::output::float_token(prev)
+                            ),
                         ));
                     }
                     if !(a * units.factor()).is_finite() {
@@ -609,7 +613,10 @@ fn parse_at2_npts_dt(line: &str) -> Result<(usize, Real), String> {
     }
     let dt = parse_real(&dt_s).ok_or_else(|| format!("DT {dt_s:?} is not a number"))?;
     if dt <= 0.0 {
-        return Err(format!("DT = {dt} must be > 0"));
+        return Err(format!(
+            "DT = {} must be > 0",
+            crate::output::float_token(dt)
+        ));
     }
     Ok((npts, dt))
 }

@@ -129,7 +129,6 @@ fn simulate_refuses_a_history_too_large_for_memory() {
 /// `[contact]` keys the chosen law does not read used to be accepted and ignored (exit 0): each
 /// is now refused by `simulate`, naming the key and its line.
 #[test]
-#[ignore = "issue 15 round 2: built on branch h-h2 against the old CLI scenario; not yet ported to pounding::sim::scenario"]
 fn simulate_refuses_contact_keys_the_law_does_not_use() {
     let d = tmp("keys");
     for (text, want) in [
@@ -172,6 +171,55 @@ fn simulate_refuses_contact_keys_the_law_does_not_use() {
         "ok.toml",
         "[time]\nduration = 0.05\n[contact]\nlaw = \"hertz\"\nk_h = 1e9\nfriction_velocity = 0.01\n",
     );
+    assert_eq!(code, Some(0), "{err}");
+}
+
+/// `compare` applies simulate's rule to the list of compared laws: a `[contact]` key that no law
+/// of `--laws` reads (with the other keys given) is refused, naming the key, its line, the
+/// compared laws and the laws that would read it; nothing is written. `[contact] law` itself is
+/// replaced by each compared law and is no error.
+#[test]
+fn compare_refuses_contact_keys_no_compared_law_uses() {
+    let d = tmp("cmpunused");
+    for (text, laws, want) in [
+        (
+            "[contact]\nlaw = \"linear\"\nzeta = 0.1\n",
+            "rigid,kelvin,linear",
+            "zeta is not used by any of the compared laws (rigid, kelvin, linear)",
+        ),
+        // chi is not read by hertz-damp when zeta is given, nor by any other law
+        (
+            "[contact]\nzeta = 0.1\nchi = 0.3\n",
+            "hertz-damp,kelvin",
+            "no law reads it together with the other keys given",
+        ),
+        (
+            "[contact]\nk_h = 1e9\nrestitution = 0.6\n",
+            "rigid,hertz",
+            "it is read by kelvin without c; hertz-damp",
+        ),
+        (
+            "[contact]\nlaw = \"kelvin\"\nfriction_velocity = 0.01\n",
+            "rigid",
+            "friction_velocity is not used by any of the compared laws (rigid)",
+        ),
+    ] {
+        std::fs::write(d.join("c.toml"), text).unwrap();
+        let (code, err) = run_in(&d, &["compare", "c.toml", "--laws", laws, "--out", "oc"]);
+        assert_eq!(code, Some(2), "{text}: {err}");
+        assert!(
+            err.contains(want) && err.contains("(c.toml:3)"),
+            "{text}: {err}"
+        );
+        assert!(!d.join("oc").exists(), "{text}: nothing may be written");
+    }
+    // the default list reads every key of the section (zeta: hertz-damp), and `law` is no error
+    std::fs::write(
+        d.join("c.toml"),
+        "[time]\nduration = 0.02\n[contact]\nlaw = \"linear\"\nzeta = 0.1\n",
+    )
+    .unwrap();
+    let (code, err) = run_in(&d, &["compare", "c.toml", "--out", "oc"]);
     assert_eq!(code, Some(0), "{err}");
 }
 
@@ -277,7 +325,6 @@ fn study_derived_mass_overflow_names_the_key_and_line() {
 /// Abutments with a compliance law: the error names `[contact] law` and the `[abutments]` keys
 /// with their lines (it used to say `invalid contact_law = nan` with no location).
 #[test]
-#[ignore = "issue 15 round 2: built on branch h-h2 against the old CLI scenario; not yet ported to pounding::sim::scenario"]
 fn abutments_with_a_compliance_law_name_both_keys() {
     let d = tmp("abut");
     let (code, err) = simulate(
@@ -297,7 +344,6 @@ fn abutments_with_a_compliance_law_name_both_keys() {
 /// A record whose sample interval makes it shorter than the default step used to blame the
 /// built-in default dt; the record is blamed (name and duration), and a user-set dt is named.
 #[test]
-#[ignore = "issue 15 round 2: built on branch h-h2 against the old CLI scenario; not yet ported to pounding::sim::scenario"]
 fn too_short_record_is_blamed_not_the_default_dt() {
     let d = tmp("dt");
     std::fs::write(
@@ -358,7 +404,6 @@ fn record_value_overflowing_on_conversion_names_file_and_line() {
 /// Floats in messages are the user's value in shortest form: `--skew -30` is not reported as
 /// `-29.999999999999996`, a restitution of 1e-300 is not a 300-digit decimal.
 #[test]
-#[ignore = "issue 15 round 2: built on branch h-h2 against the old CLI scenario; not yet ported to pounding::sim::scenario"]
 fn messages_print_floats_in_shortest_form() {
     let d = tmp("fmt");
     let (code, err) = run_in(

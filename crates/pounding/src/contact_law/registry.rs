@@ -72,12 +72,38 @@ pub enum BuildError {
     },
 }
 
+/// The `[contact]` keys a law reads for one choice of the keys given (see [`LawEntry::reads`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LawReads {
+    /// The keys read (a subset of [`LawEntry::keys`]; `friction_velocity`, read by every
+    /// compliance law, is not listed).
+    pub keys: &'static [&'static str],
+    /// How the law was chosen to be set, for messages: e.g. ` with zeta given` (leading
+    /// space), or empty when the law has one way only.
+    pub how: &'static str,
+}
+
+/// Whether a `[contact]` key is given (the argument of [`LawEntry::reads`]).
+pub type KeyGiven<'a> = dyn Fn(&str) -> bool + 'a;
+
+/// Shorthand for the `reads` functions of [`LAWS`].
+const fn reads(keys: &'static [&'static str], how: &'static str) -> LawReads {
+    LawReads { keys, how }
+}
+
 /// One registered law.
 pub struct LawEntry {
     /// The `[contact] law` name.
     pub name: &'static str,
-    /// The `[contact]` keys the law reads.
+    /// Every `[contact]` key the law may read (the union over its ways to be set).
     pub keys: &'static [&'static str],
+    /// The keys the law reads when the keys for which `given(key)` is true are given: a law
+    /// with several ways to set its damping reads only the keys of the way chosen (e.g.
+    /// `hertz-damp` with `zeta` reads neither `chi` nor `restitution`). A given key that no
+    /// law reads is refused by the scenario reader (`sim::scenario`) rather than ignored.
+    /// Checked against `build` by the test `contact_law_keys` (a key read changes the law, a
+    /// key not read does not).
+    pub reads: fn(given: &KeyGiven<'_>) -> LawReads,
     /// One-line description.
     pub description: &'static str,
     /// Builds the law from the keys and the defaults.
@@ -89,12 +115,17 @@ pub static LAWS: &[LawEntry] = &[
     LawEntry {
         name: "kelvin",
         keys: &["k", "c", "restitution", "calibration"],
+        reads: |given| match given("c") {
+            true => reads(&["k", "c"], " with c given"),
+            false => reads(&["k", "restitution", "calibration"], " without c"),
+        },
         description: "linear spring and dashpot (Kelvin-Voigt)",
         build: kelvin,
     },
     LawEntry {
         name: "hertz",
         keys: &["k_h"],
+        reads: |_| reads(&["k_h"], ""),
         description: "Hertz elastic k_h d^1.5",
         build: hertz,
     },
@@ -109,24 +140,56 @@ pub static LAWS: &[LawEntry] = &[
             "design_velocity",
             "min_velocity",
         ],
+        reads: |given| {
+            if given("zeta") {
+                reads(&["k_h", "zeta"], " with zeta given")
+            } else if given("chi") {
+                reads(&["k_h", "chi", "min_velocity"], " with chi given")
+            } else if given("design_velocity") {
+                reads(
+                    &["k_h", "restitution", "calibration", "design_velocity"],
+                    " with design_velocity given (a constant zeta)",
+                )
+            } else {
+                reads(
+                    &["k_h", "restitution", "calibration", "min_velocity"],
+                    " without zeta, chi or design_velocity",
+                )
+            }
+        },
         description: "Hertz with nonlinear damping (Muthukumar & DesRoches)",
         build: hertz_damp,
     },
     LawEntry {
         name: "bilinear",
         keys: &["k1", "k2", "delta_y", "k_h", "restitution", "delta_m", "a"],
+        reads: |given| match given("k1") || given("k2") || given("delta_y") {
+            true => reads(&["k1", "k2", "delta_y"], " with k1, k2, delta_y given"),
+            false => reads(
+                &["k_h", "restitution", "delta_m", "a"],
+                " without k1, k2, delta_y",
+            ),
+        },
         description: "bilinear impact (OpenSees ImpactMaterial)",
         build: bilinear,
     },
     LawEntry {
         name: "jankowski",
         keys: &["beta", "k_h", "xi", "restitution", "calibration"],
+        // beta, when given, is the stiffness (k_h is its fallback)
+        reads: |given| match (given("beta"), given("xi")) {
+            (true, true) => reads(&["beta", "xi"], " with beta and xi given"),
+            (true, false) => reads(&["beta", "restitution", "calibration"], " with beta given"),
+            (false, true) => reads(&["k_h", "xi"], " with xi given"),
+            (false, false) => reads(&["k_h", "restitution", "calibration"], ""),
+        },
         description: "Jankowski nonlinear viscoelastic",
         build: jankowski,
     },
     LawEntry {
         name: "linear",
         keys: &["k"],
+        reads: |_| reads(&["k"], ""),
         description: "linear elastic spring k d, no damping",
         build: super::linear::build,
     },

@@ -68,6 +68,17 @@ impl ShapeSpec {
             Self::Straight { length } => {
                 DeckShape::Straight(StraightDeck::new(length, s.width, s.thickness, s.density)?)
             }
+            // checked in degrees, so that the error shows the value given (-30, not
+            // -29.999999999999996 back from radians)
+            Self::Skew { skew_deg, .. }
+                if !(skew_deg.is_finite() && (0.0..90.0).contains(&skew_deg)) =>
+            {
+                return Err(GeometryError::invalid(
+                    "skew",
+                    skew_deg,
+                    "the skew angle must lie in [0, 90) degrees",
+                ));
+            }
             Self::Skew { length, skew_deg } => DeckShape::Skewed(SkewedDeck::new(
                 length,
                 s.width,

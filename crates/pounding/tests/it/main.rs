@@ -5,6 +5,7 @@ mod batch;
 mod common;
 mod contact;
 mod contact_law;
+mod contact_law_keys;
 mod contact_law_linear;
 mod event_exact;
 mod fuzz;

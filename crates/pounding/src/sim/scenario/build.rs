@@ -14,7 +14,7 @@ use crate::output::float_token;
 use crate::pair::SArrangement;
 use crate::shape::Deck;
 use crate::shape::{DeckShape, SkewedDeck, StraightDeck};
-use crate::sim::{Bearing, SimAbutment, SimError, SimModel, SimProblem, SimSettings};
+use crate::sim::{Bearing, JointContact, SimAbutment, SimError, SimModel, SimProblem, SimSettings};
 
 const fn decks(key: &'static str) -> ParamKey {
     ParamKey::new(Section::Decks, key)
@@ -298,6 +298,7 @@ fn build_model(sc: &Scenario) -> Result<SimModel, ScenarioError> {
     // Validate the decks before using them for the default bearing points.
     model.validate().map_err(|e| sim_error(src, e))?;
     apply_shape_and_damping(src, d, &b.damping, &mut model)?;
+    sc.check_contact_keys()?;
     model.contact = build_contact(
         src,
         &raw.contact,
@@ -305,6 +306,10 @@ fn build_model(sc: &Scenario) -> Result<SimModel, ScenarioError> {
         j.eps_n,
         model.masses(),
     )?;
+    if !matches!(model.contact, JointContact::Rigid) && model.abutments.iter().any(Option::is_some)
+    {
+        return Err(abutments_need_rigid_contact(sc));
+    }
     for (deck_no, pts, k, key) in [
         (1, &b.points1, b.stiffness1, "points1"),
         (2, &b.points2, b.stiffness2, "points2"),
@@ -334,6 +339,86 @@ fn build_model(sc: &Scenario) -> Result<SimModel, ScenarioError> {
         }
     }
     Ok(model)
+}
+
+/// The error of abutments with a compliance law (rigid contact only, for now): it names the law
+/// (`[contact] law` and its line, unless [`Scenario::with_law`] replaced it) and every
+/// `[abutments]` key given.
+fn abutments_need_rigid_contact(sc: &Scenario) -> ScenarioError {
+    let src = &sc.src;
+    let law_key = ParamKey::new(Section::Contact, "law");
+    let mut at = Vec::new();
+    let by = match &sc.law {
+        Some(l) => format!("law {l:?}"),
+        None => {
+            at.push(src.at(law_key));
+            format!("law = {:?}, set by {},", sc.law(), at[0])
+        }
+    };
+    let abut: Vec<_> = [
+        (1, "gap1"),
+        (1, "seat_length1"),
+        (2, "gap2"),
+        (2, "seat_length2"),
+    ]
+    .into_iter()
+    .map(|(deck, key)| ParamKey::of_deck(Section::Abutments, key, deck))
+    .filter(|&k| src.is_set(k))
+    .map(|k| src.at(k))
+    .collect();
+    let list: Vec<String> = abut.iter().map(ToString::to_string).collect();
+    at.extend(abut);
+    ScenarioError::Key {
+        message: format!(
+            "abutments are only supported with rigid contact: {by} is a compliance law, but {} \
+             set abutments (remove [abutments] or use law = \"rigid\")",
+            list.join(", ")
+        ),
+        at,
+    }
+}
+
+/// The error of a step `dt` longer than the run `duration`. Without `[time] duration` the
+/// duration is the ground motion's: the record is blamed (its name and length), and `dt` is
+/// named as set (its line, or "the built-in default dt").
+fn dt_beyond_duration(
+    sc: &Scenario,
+    settings: &SimSettings,
+    duration: Real,
+    records: &[String; 2],
+) -> ScenarioError {
+    let src = &sc.src;
+    let dt_at = src.at(time("dt"));
+    if settings.duration.is_some() {
+        return ScenarioError::Invalid {
+            message: format!(
+                "invalid dt = {}: must not exceed the duration {} s",
+                float_token(settings.dt),
+                float_token(duration)
+            ),
+            at: vec![dt_at, src.at(time("duration"))],
+            note: String::new(),
+        };
+    }
+    let names: Vec<&str> = records
+        .iter()
+        .map(String::as_str)
+        .filter(|r| !r.trim().eq_ignore_ascii_case("none"))
+        .collect();
+    let dt_by = match src.builtin {
+        true => "the built-in default dt".to_string(),
+        false => format!("set by {dt_at}"),
+    };
+    ScenarioError::Key {
+        message: format!(
+            "the ground motion lasts only {} s (the last sample of record {}), less than one time \
+             step dt = {} s ({dt_by}): check the record's sample interval, or set [time] duration",
+            float_token(duration),
+            names.join(" and "),
+            float_token(settings.dt)
+        ),
+        at: vec![dt_at],
+    }
 }
 
 /// The ground motion of `[ground_motion]` and the overrides, with the record names and units.
@@ -457,14 +542,7 @@ pub(super) fn build(sc: &Scenario) -> Result<SimSetup, ScenarioError> {
             });
         }
         if settings.dt > d {
-            return Err(src.invalid(
-                format!(
-                    "invalid dt = {}: must not exceed the duration {} s",
-                    float_token(settings.dt),
-                    float_token(d)
-                ),
-                time("dt"),
-            ));
+            return Err(dt_beyond_duration(sc, &settings, d, &records));
         }
     }
     Ok(SimSetup {

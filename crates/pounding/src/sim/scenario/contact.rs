@@ -6,6 +6,7 @@ use super::error::{ParamKey, ScenarioError, Section};
 use super::sections::DecksSec;
 use crate::contact_law::registry::{self, BuildError, LawInputs};
 use crate::contact_law::{ContactLaw, ContactLawError};
+use crate::output::float_token;
 use crate::sim::{ComplianceContact, DampingModel, JointContact, SimModel};
 use serde::Deserialize;
 
@@ -113,6 +114,114 @@ fn numeric_key(sec: &ContactSec, key: &str) -> Option<f64> {
     }
 }
 
+/// Every parameter key of `[contact]` (all but `law`), in the order of the section.
+pub const CONTACT_KEYS: [&str; 17] = [
+    "k",
+    "c",
+    "k_h",
+    "zeta",
+    "chi",
+    "restitution",
+    "calibration",
+    "design_velocity",
+    "min_velocity",
+    "k1",
+    "k2",
+    "delta_y",
+    "delta_m",
+    "a",
+    "beta",
+    "xi",
+    "friction_velocity",
+];
+
+/// Whether the section gives `key`.
+fn given(sec: &ContactSec, key: &str) -> bool {
+    match key {
+        "calibration" => sec.calibration.is_some(),
+        _ => numeric_key(sec, key).is_some(),
+    }
+}
+
+/// The keys a law reads and how its way was chosen (`None`: `rigid` or an unknown law).
+type KeysRead = Option<(Vec<&'static str>, &'static str)>;
+
+/// The `[contact]` keys law `name` reads with the keys given in `sec`, and how its way was
+/// chosen (for messages); `None` for `rigid` (reads none) and unknown names.
+fn keys_read(sec: &ContactSec, name: &str) -> KeysRead {
+    let entry = registry::entry(name)?;
+    let r = (entry.reads)(&|k| given(sec, k));
+    let mut keys = r.keys.to_vec();
+    keys.push("friction_velocity");
+    Some((keys, r.how))
+}
+
+/// Refuses a `[contact]` key that none of `laws` reads with the keys given (it would be
+/// ignored silently). `compared`: the laws are those of a comparison, which builds each of
+/// them from the one section, so a key is refused only when no compared law reads it.
+/// Unknown law names are skipped (reported with the list of laws when built).
+pub(super) fn check_contact_keys(
+    src: &Src,
+    sec: &ContactSec,
+    laws: &[&str],
+    compared: bool,
+) -> Result<(), ScenarioError> {
+    let read: Vec<(&str, KeysRead)> = laws.iter().map(|&l| (l, keys_read(sec, l))).collect();
+    if read.iter().any(|(l, r)| r.is_none() && *l != "rigid") {
+        return Ok(());
+    }
+    for key in CONTACT_KEYS {
+        let is_read = read
+            .iter()
+            .any(|(_, r)| r.as_ref().is_some_and(|(keys, _)| keys.contains(&key)));
+        if !given(sec, key) || is_read {
+            continue;
+        }
+        let at = src.at(contact(key));
+        let message = match read.as_slice() {
+            [(law, None)] if !compared => {
+                let compliance: Vec<&str> = registry::LAWS.iter().map(|e| e.name).collect();
+                let default = if src.is_set(contact("law")) || *law != "rigid" {
+                    ""
+                } else {
+                    ", the default"
+                };
+                format!(
+                    "{key} applies to compliance laws ({}), not to law = \"rigid\"{default} (rigid \
+                     contact uses `[joint] eps_n` and `[joint] mu`) — set by {at}",
+                    compliance.join(", ")
+                )
+            }
+            [(law, Some((keys, how)))] if !compared => format!(
+                "{key} is not used by law = \"{law}\"{how} (it reads {}) — set by {at}",
+                keys.join(", ")
+            ),
+            _ => {
+                let readers: Vec<String> = registry::LAWS
+                    .iter()
+                    .filter_map(|e| {
+                        let (keys, how) = keys_read(sec, e.name)?;
+                        keys.contains(&key).then(|| format!("{}{how}", e.name))
+                    })
+                    .collect();
+                let hint = match readers.is_empty() {
+                    true => "no law reads it together with the other keys given".to_string(),
+                    false => format!("it is read by {}", readers.join("; ")),
+                };
+                format!(
+                    "{key} is not used by any of the compared laws ({}) — set by {at}; {hint}",
+                    laws.join(", ")
+                )
+            }
+        };
+        return Err(ScenarioError::Key {
+            message,
+            at: vec![at],
+        });
+    }
+    Ok(())
+}
+
 /// The compliance law `name` (not `rigid`) from the `[contact]` keys and their defaults,
 /// built by its [`registry`] entry.
 fn compliance_law(
@@ -182,7 +291,10 @@ pub(super) fn build_contact(
     if let Some(v) = sec.friction_velocity {
         if !(v.is_finite() && v > 0.0) {
             return Err(src.invalid(
-                format!("invalid friction_velocity = {v}: must be finite and > 0"),
+                format!(
+                    "invalid friction_velocity = {}: must be finite and > 0",
+                    float_token(v)
+                ),
                 contact("friction_velocity"),
             ));
         }
@@ -204,7 +316,7 @@ pub(super) fn apply_shape_and_damping(
         let Some(m) = m else { continue };
         if !(m.is_finite() && m > 0.0) {
             return Err(src.invalid(
-                format!("invalid {key} = {m}: must be finite and > 0"),
+                format!("invalid {key} = {}: must be finite and > 0", float_token(m)),
                 ParamKey::of_deck(Section::Decks, key, j as u8 + 1),
             ));
         }

@@ -20,7 +20,8 @@ mod error;
 mod sections;
 
 pub use contact::{
-    DEFAULT_A, DEFAULT_DELTA_M, DEFAULT_K, DEFAULT_MIN_VELOCITY, LAW_NAMES, default_k_h,
+    CONTACT_KEYS, DEFAULT_A, DEFAULT_DELTA_M, DEFAULT_K, DEFAULT_MIN_VELOCITY, LAW_NAMES,
+    default_k_h,
 };
 pub use error::{KeyRef, ParamKey, ScenarioError, Section};
 pub use sections::DEFAULT_SCENARIO_TOML;
@@ -37,6 +38,8 @@ struct Src {
     origin: String,
     text: String,
     dir: PathBuf,
+    /// The built-in default scenario (messages name its values as defaults, not by line).
+    builtin: bool,
 }
 
 impl Src {
@@ -72,6 +75,7 @@ pub struct Scenario {
     src: Src,
     raw: sections::Raw,
     law: Option<String>,
+    compared: Option<Vec<String>>,
     record: Option<(PathBuf, Option<AccelUnits>)>,
     scale: Option<Real>,
     batch: bool,
@@ -95,8 +99,10 @@ pub struct SimSetup {
 impl Default for Scenario {
     /// The built-in default ([`DEFAULT_SCENARIO_TOML`], named `built-in default` in messages).
     fn default() -> Self {
-        Self::from_toml(DEFAULT_SCENARIO_TOML, "built-in default")
-            .expect("the built-in default scenario is valid TOML (tested)")
+        let mut sc = Self::from_toml(DEFAULT_SCENARIO_TOML, "built-in default")
+            .expect("the built-in default scenario is valid TOML (tested)");
+        sc.src.builtin = true;
+        sc
     }
 }
 
@@ -117,9 +123,11 @@ impl Scenario {
                 origin: origin.to_string(),
                 text: text.to_string(),
                 dir: PathBuf::from("."),
+                builtin: false,
             },
             raw,
             law: None,
+            compared: None,
             record: None,
             scale: None,
             batch: false,
@@ -153,6 +161,30 @@ impl Scenario {
     pub fn with_law(mut self, law: &str) -> Self {
         self.law = Some(law.to_string());
         self
+    }
+
+    /// Declares that this scenario is run with each of `laws` in turn (`pounding compare`, with
+    /// [`Scenario::with_law`] per run): a given `[contact]` key is then refused only when none
+    /// of `laws` reads it, since one section serves them all (see
+    /// [`Scenario::check_contact_keys`]).
+    pub fn with_compared_laws<S: AsRef<str>>(mut self, laws: &[S]) -> Self {
+        self.compared = Some(laws.iter().map(|l| l.as_ref().to_string()).collect());
+        self
+    }
+
+    /// Refuses a `[contact]` key that would be ignored: one that the law of the run
+    /// ([`Scenario::law`]) does not read with the other keys given (e.g. `k` with `law =
+    /// "hertz"`, `chi` with `law = "hertz-damp"` and `zeta`, any key with `law = "rigid"`), or,
+    /// after [`Scenario::with_compared_laws`], one that no compared law reads. The error
+    /// ([`ScenarioError::Key`]) names the key and its line and the keys the law reads.
+    /// [`Scenario::build`] calls it; the laws' keys are those of
+    /// [`crate::contact_law::registry::LawEntry::reads`].
+    pub fn check_contact_keys(&self) -> Result<(), ScenarioError> {
+        let (laws, compared): (Vec<&str>, bool) = match &self.compared {
+            Some(list) => (list.iter().map(String::as_str).collect(), true),
+            None => (vec![self.law()], false),
+        };
+        contact::check_contact_keys(&self.src, &self.raw.contact, &laws, compared)
     }
 
     /// Uses the record file `path` (PEER `.AT2`, or `.csv` in `units`, by default the scenario's
