@@ -422,7 +422,9 @@ fn dt_beyond_duration(
 }
 
 /// The ground motion of `[ground_motion]` and the overrides, with the record names and units.
-fn build_ground(sc: &Scenario) -> Result<(GroundMotion, [String; 2], AccelUnits), ScenarioError> {
+pub(super) fn build_ground(
+    sc: &Scenario,
+) -> Result<(GroundMotion, [String; 2], AccelUnits), ScenarioError> {
     let src = &sc.src;
     let g = &sc.raw.ground_motion;
     let units = AccelUnits::from_name(&g.csv_units).ok_or_else(|| {
@@ -475,6 +477,29 @@ pub(super) fn build(sc: &Scenario) -> Result<SimSetup, ScenarioError> {
     let src = &sc.src;
     let model = build_model(sc)?;
     let (ground, records, units) = build_ground(sc)?;
+    let settings = build_settings(sc, &ground, &records, || {
+        model.validate().map_err(|e| scaled_mass_error(src, e))?;
+        model.linear_system().map_err(|e| sim_error(src, e))?;
+        Ok(())
+    })?;
+    Ok(SimSetup {
+        problem: SimProblem::at_rest(model, ground),
+        settings,
+        records,
+        units,
+    })
+}
+
+/// `[time]`: the settings of a run under `ground`, checked against its duration and the memory
+/// limit; `model_checks` runs once the settings themselves are valid (the order of the errors
+/// a file with several mistakes reports).
+pub(super) fn build_settings(
+    sc: &Scenario,
+    ground: &GroundMotion,
+    records: &[String; 2],
+    model_checks: impl FnOnce() -> Result<(), ScenarioError>,
+) -> Result<SimSettings, ScenarioError> {
+    let src = &sc.src;
     let t = &sc.raw.time;
     if t.history_every < 1 {
         return Err(src.invalid(
@@ -489,8 +514,7 @@ pub(super) fn build(sc: &Scenario) -> Result<SimSetup, ScenarioError> {
         ..SimSettings::default()
     };
     settings.validate().map_err(|e| sim_error(src, e))?;
-    model.validate().map_err(|e| scaled_mass_error(src, e))?;
-    model.linear_system().map_err(|e| sim_error(src, e))?;
+    model_checks()?;
     if !sc.batch && settings.duration.is_none() && ground.end_time() <= 0.0 {
         return Err(src.key_error(
             format!(
@@ -542,13 +566,8 @@ pub(super) fn build(sc: &Scenario) -> Result<SimSetup, ScenarioError> {
             });
         }
         if settings.dt > d {
-            return Err(dt_beyond_duration(sc, &settings, d, &records));
+            return Err(dt_beyond_duration(sc, &settings, d, records));
         }
     }
-    Ok(SimSetup {
-        problem: SimProblem::at_rest(model, ground),
-        settings,
-        records,
-        units,
-    })
+    Ok(settings)
 }

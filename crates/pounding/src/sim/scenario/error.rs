@@ -267,6 +267,19 @@ pub enum ScenarioError {
     /// A model error of a parameter that no scenario key sets.
     #[error(transparent)]
     Model(Box<SimError>),
+    /// A bad value in a bridge scenario (`[[segment]]`, `[[joint]]`, `[abutment.*]`, `[bridge]`):
+    /// the key with its array index, e.g. `segment[2].L`, and its line.
+    #[error("{message} — set by `{key}` ({})", match line { Some(l) => format!("{origin}:{l}"), None => format!("not set in {origin}; default") })]
+    Bridge {
+        /// What is wrong.
+        message: String,
+        /// The key, e.g. `segment[2].L` (0-based array index, as in the file's order).
+        key: String,
+        /// The scenario's name.
+        origin: String,
+        /// 1-based line, `None` when the default applies.
+        line: Option<usize>,
+    },
 }
 
 impl ScenarioError {

@@ -14,11 +14,13 @@
 //! paths are relative to the scenario file; `builtin:ELC180` / `builtin:ELC270` are the embedded
 //! El Centro 1940 components.
 
+mod bridge;
 mod build;
 mod contact;
 mod error;
 mod sections;
 
+pub use bridge::BridgeSetup;
 pub use contact::{
     CONTACT_KEYS, DEFAULT_A, DEFAULT_DELTA_M, DEFAULT_K, DEFAULT_MIN_VELOCITY, LAW_NAMES,
     default_k_h,
@@ -79,6 +81,9 @@ pub struct Scenario {
     record: Option<(PathBuf, Option<AccelUnits>)>,
     scale: Option<Real>,
     batch: bool,
+    /// A bridge of `[[segment]]`s (then `raw` holds only its `[ground_motion]`, `[time]` and
+    /// `[contact]`).
+    bridge: Option<Box<bridge::BridgeRaw>>,
 }
 
 /// A validated run: everything [`crate::sim::simulate`] needs, and what the writers of
@@ -113,11 +118,26 @@ impl Scenario {
     /// Errors: syntax, unknown keys, wrong types and sections written as arrays
     /// ([`ScenarioError::Syntax`]). Values are checked by [`Scenario::build`].
     pub fn from_toml(text: &str, origin: &str) -> Result<Self, ScenarioError> {
-        let raw: sections::Raw = toml::from_str(text).map_err(|e| ScenarioError::Syntax {
+        let syntax = |e: toml::de::Error| ScenarioError::Syntax {
             origin: origin.to_string(),
             // a 400 KB offending line is not echoed whole
             message: crate::input::shorten_lines(&e.to_string(), 200),
-        })?;
+        };
+        let is_bridge = toml::from_str::<toml::Table>(text)
+            .map_err(syntax)?
+            .contains_key("segment");
+        let (raw, bridge) = if is_bridge {
+            let b: bridge::BridgeRaw = toml::from_str(text).map_err(syntax)?;
+            let raw = sections::Raw {
+                ground_motion: b.ground_motion.clone(),
+                time: b.time.clone(),
+                contact: b.contact.clone(),
+                ..Default::default()
+            };
+            (raw, Some(Box::new(b)))
+        } else {
+            (toml::from_str(text).map_err(syntax)?, None)
+        };
         Ok(Self {
             src: Src {
                 origin: origin.to_string(),
@@ -131,6 +151,7 @@ impl Scenario {
             record: None,
             scale: None,
             batch: false,
+            bridge,
         })
     }
 
@@ -231,6 +252,36 @@ impl Scenario {
     /// Validates every value and builds the run (nothing is simulated). Errors name the file,
     /// key and line ([`ScenarioError`]).
     pub fn build(&self) -> Result<SimSetup, ScenarioError> {
+        if self.bridge.is_some() {
+            return Err(ScenarioError::Key {
+                message: format!(
+                    "{} describes a bridge of [[segment]]s: this command runs the two-deck model \
+                     ([decks], [joint], [bearings]) only",
+                    self.src.origin
+                ),
+                at: Vec::new(),
+            });
+        }
         build::build(self)
+    }
+
+    /// `true` when the file describes a bridge of `[[segment]]`s ([`Scenario::build_bridge`]).
+    pub fn is_bridge(&self) -> bool {
+        self.bridge.is_some()
+    }
+
+    /// The bridge of a `[[segment]]` scenario, validated (errors name `segment[i].key` and its
+    /// line); an error for a two-deck scenario.
+    pub fn build_bridge(&self) -> Result<BridgeSetup, ScenarioError> {
+        match &self.bridge {
+            Some(b) => bridge::build(self, b),
+            None => Err(ScenarioError::Key {
+                message: format!(
+                    "{} has no [[segment]] tables: it is a two-deck scenario",
+                    self.src.origin
+                ),
+                at: Vec::new(),
+            }),
+        }
     }
 }

@@ -1,0 +1,514 @@
+//! Bridge scenarios: a `simulate` file with `[[segment]]` tables describes a whole bridge of
+//! `N ≥ 1` segments ([`crate::sim::bridge`]) instead of the two decks of `[decks]`.
+//!
+//! ```toml
+//! [bridge]                  # shared settings and the defaults of every joint
+//! damping = "rayleigh"      # or "dashpots" (c = 2 zeta m omega to the ground, x and y)
+//! damping_ratio = 0.05
+//! gap = 0.05                # joint defaults: gap [m], mu, eps_n, seat_length [m]
+//! outer_seat_length = 0.4   # an outer end without an abutment rests on a pier seat this long
+//!
+//! [[segment]]               # segment 1 (at the start); one table per segment, in order
+//! shape = "straight"        # "straight" (L), "skew" (L, skew_deg) or "curved" (R, beta_deg)
+//! L = 30.0
+//! mass = 1.0e6              # optional, else density x volume
+//! period_s = 1.2            # four corner bearings with k = m (2 pi / T)^2 / 4 each, or
+//! # bearing_stiffness = 1e7 # the stiffness of each corner bearing [N/m]
+//!
+//! [[joint]]                 # joint 1, between segments 1 and 2 (none given: all defaults)
+//! gap = 0.02
+//!
+//! [abutment.start]          # optional; also [abutment.end]
+//! gap = 0.04
+//! ```
+//!
+//! `[contact]`, `[ground_motion]` and `[time]` are those of the two-deck file; the `[contact]`
+//! law applies to every joint and abutment (a compliance law at an abutment is built with the
+//! segment's mass as the effective mass).
+
+use super::build::{build_ground, build_settings};
+use super::contact::build_contact;
+use super::sections::{GroundSec, TimeSec};
+use super::{Scenario, ScenarioError};
+use crate::ground_motion::AccelUnits;
+use crate::math::Real;
+use crate::output::float_token;
+use crate::shape::{Deck, DeckShape, SkewedDeck, StraightDeck};
+use crate::sim::bridge::{
+    BridgeAbutment, BridgeModel, BridgeProblem, Joint, Segment, simulate_bridge,
+};
+use crate::sim::{DampingModel, SimSettings};
+use crate::toml_schema::{Table, line_col};
+use serde::Deserialize;
+use toml::Spanned;
+
+type Sp<T> = Option<Spanned<T>>;
+
+/// A bridge scenario file as read by `serde`.
+#[derive(Deserialize, Clone, Debug)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct BridgeRaw {
+    #[serde(default)]
+    bridge: Table<BridgeSec>,
+    segment: Vec<SegmentSec>,
+    #[serde(default)]
+    joint: Vec<Spanned<JointSec>>,
+    #[serde(default)]
+    abutment: Table<AbutmentTables>,
+    #[serde(default)]
+    pub(crate) ground_motion: Table<GroundSec>,
+    #[serde(default)]
+    pub(crate) time: Table<TimeSec>,
+    #[serde(default)]
+    pub(crate) contact: Table<super::contact::ContactSec>,
+}
+
+#[derive(Deserialize, Default, Clone, Debug)]
+#[serde(deny_unknown_fields, default)]
+struct BridgeSec {
+    damping: Sp<String>,
+    damping_ratio: Sp<f64>,
+    outer_seat_length: Sp<f64>,
+    gap: Sp<f64>,
+    mu: Sp<f64>,
+    eps_n: Sp<f64>,
+    seat_length: Sp<f64>,
+}
+
+#[derive(Deserialize, Default, Clone, Debug)]
+#[serde(deny_unknown_fields, default)]
+#[allow(non_snake_case)]
+struct SegmentSec {
+    shape: Sp<String>,
+    L: Sp<f64>,
+    skew_deg: Sp<f64>,
+    R: Sp<f64>,
+    beta_deg: Sp<f64>,
+    curve: Sp<String>,
+    width: Sp<f64>,
+    thickness: Sp<f64>,
+    density: Sp<f64>,
+    mass: Sp<f64>,
+    period_s: Sp<f64>,
+    bearing_stiffness: Sp<f64>,
+}
+
+#[derive(Deserialize, Default, Clone, Debug)]
+#[serde(deny_unknown_fields, default)]
+struct JointSec {
+    gap: Sp<f64>,
+    mu: Sp<f64>,
+    eps_n: Sp<f64>,
+    seat_length: Sp<f64>,
+}
+
+#[derive(Deserialize, Default, Clone, Debug)]
+#[serde(deny_unknown_fields, default)]
+struct AbutmentTables {
+    start: Option<Spanned<AbutmentSec>>,
+    end: Option<Spanned<AbutmentSec>>,
+}
+
+#[derive(Deserialize, Default, Clone, Debug)]
+#[serde(deny_unknown_fields, default)]
+struct AbutmentSec {
+    gap: Sp<f64>,
+    seat_length: Sp<f64>,
+    mu: Sp<f64>,
+    eps_n: Sp<f64>,
+}
+
+/// What [`Scenario::build_bridge`] returns: the problem and settings of
+/// [`crate::sim::bridge::simulate_bridge`] and what the records were.
+#[derive(Debug, Clone)]
+pub struct BridgeSetup {
+    /// The bridge, its ground motion, at rest.
+    pub problem: BridgeProblem,
+    /// Step, duration, history stride.
+    pub settings: SimSettings,
+    /// The records used `[record_y, record_x]` as written.
+    pub records: [String; 2],
+    /// Units of CSV records.
+    pub units: AccelUnits,
+}
+
+impl BridgeSetup {
+    /// Runs it.
+    pub fn run(&self) -> Result<crate::sim::bridge::BridgeSolution, crate::sim::SimError> {
+        simulate_bridge(&self.problem, &self.settings)
+    }
+}
+
+/// Reads the value of `v` or the default `d`, with the key's line for errors.
+struct Val<'a> {
+    origin: &'a str,
+    text: &'a str,
+}
+
+impl Val<'_> {
+    fn line(&self, s: &Spanned<impl Sized>) -> usize {
+        line_col(self.text, s.span().start).0
+    }
+    fn err(&self, key: String, line: Option<usize>, message: String) -> ScenarioError {
+        ScenarioError::Bridge {
+            message,
+            key,
+            origin: self.origin.to_string(),
+            line,
+        }
+    }
+    /// `v` (or `default`), which must satisfy `ok`.
+    fn num(
+        &self,
+        key: String,
+        v: &Sp<f64>,
+        default: Option<f64>,
+        ok: impl Fn(f64) -> bool,
+        reason: &str,
+    ) -> Result<f64, ScenarioError> {
+        let (x, line) = match (v, default) {
+            (Some(s), _) => (*s.get_ref(), Some(self.line(s))),
+            (None, Some(d)) => (d, None),
+            (None, None) => {
+                return Err(self.err(key.clone(), None, format!("{key} is required")));
+            }
+        };
+        if x.is_finite() && ok(x) {
+            Ok(x)
+        } else {
+            Err(self.err(
+                key.clone(),
+                line,
+                format!("invalid {key} = {}: {reason}", float_token(x)),
+            ))
+        }
+    }
+}
+
+fn positive(x: f64) -> bool {
+    x > 0.0
+}
+fn non_negative(x: f64) -> bool {
+    x >= 0.0
+}
+fn unit(x: f64) -> bool {
+    (0.0..=1.0).contains(&x)
+}
+
+/// [`Scenario::build_bridge`].
+pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, ScenarioError> {
+    let v = Val {
+        origin: &sc.src.origin,
+        text: &sc.src.text,
+    };
+    let b = &raw.bridge;
+    let bk = |k: &str| format!("bridge.{k}");
+    let damping_ratio = v.num(
+        bk("damping_ratio"),
+        &b.damping_ratio,
+        Some(0.05),
+        |x| (0.0..1.0).contains(&x),
+        "must lie in [0, 1)",
+    )?;
+    let damping_model = match b
+        .damping
+        .as_ref()
+        .map(|s| (s.get_ref().as_str(), v.line(s)))
+    {
+        None | Some(("rayleigh", _)) => DampingModel::Rayleigh,
+        Some(("dashpots", _)) => DampingModel::TranslationalDashpots,
+        Some((other, line)) => {
+            return Err(v.err(
+                bk("damping"),
+                Some(line),
+                format!("invalid bridge.damping {other:?}: use \"rayleigh\" or \"dashpots\""),
+            ));
+        }
+    };
+    let outer_seat_length = v.num(
+        bk("outer_seat_length"),
+        &b.outer_seat_length,
+        Some(0.4),
+        positive,
+        "must be > 0",
+    )?;
+    let d_gap = v.num(bk("gap"), &b.gap, Some(0.05), non_negative, "must be >= 0")?;
+    let d_mu = v.num(bk("mu"), &b.mu, Some(0.5), non_negative, "must be >= 0")?;
+    let d_eps = v.num(bk("eps_n"), &b.eps_n, Some(0.5), unit, "must lie in [0, 1]")?;
+    let d_seat = v.num(
+        bk("seat_length"),
+        &b.seat_length,
+        Some(0.4),
+        positive,
+        "must be > 0",
+    )?;
+    if raw.segment.is_empty() {
+        return Err(v.err(
+            "segment".into(),
+            None,
+            "a bridge needs at least one [[segment]]".into(),
+        ));
+    }
+    let n = raw.segment.len();
+    let mut segments = Vec::with_capacity(n);
+    for (i, s) in raw.segment.iter().enumerate() {
+        segments.push(segment(&v, i, s)?);
+    }
+    let nj = n - 1;
+    if !raw.joint.is_empty() && raw.joint.len() != nj {
+        let line = raw.joint.get(nj).map(|j| v.line(j));
+        return Err(v.err(
+            "joint".into(),
+            line.or(raw.joint.first().map(|j| v.line(j))),
+            format!(
+                "{n} segments have {nj} joints, but {} [[joint]] tables are given (give none to use \
+                 the [bridge] defaults for every joint)",
+                raw.joint.len()
+            ),
+        ));
+    }
+    let masses: Vec<Real> = segments
+        .iter()
+        .map(|s: &Segment| s.shape.mass_properties().mass)
+        .collect();
+    let law = sc.law.as_deref();
+    let contact_for =
+        |eps_n: f64, m: [f64; 2]| build_contact(&sc.src, &sc.raw.contact, law, eps_n, m);
+    let mut joints = Vec::with_capacity(nj);
+    for k in 0..nj {
+        let d = JointSec::default();
+        let j = raw.joint.get(k).map_or(&d, |j| j.get_ref());
+        let jk = |key: &str| format!("joint[{k}].{key}");
+        let gap = v.num(jk("gap"), &j.gap, Some(d_gap), non_negative, "must be >= 0")?;
+        let friction = v.num(jk("mu"), &j.mu, Some(d_mu), non_negative, "must be >= 0")?;
+        let restitution = v.num(
+            jk("eps_n"),
+            &j.eps_n,
+            Some(d_eps),
+            unit,
+            "must lie in [0, 1]",
+        )?;
+        let seat_length = v.num(
+            jk("seat_length"),
+            &j.seat_length,
+            Some(d_seat),
+            positive,
+            "must be > 0",
+        )?;
+        joints.push(Joint {
+            gap,
+            friction,
+            restitution,
+            seat_length,
+            contact: contact_for(restitution, [masses[k], masses[k + 1]])?,
+        });
+    }
+    let mut abutments = [None, None];
+    for (side, (name, a)) in [("start", &raw.abutment.start), ("end", &raw.abutment.end)]
+        .into_iter()
+        .enumerate()
+    {
+        let Some(a) = a else { continue };
+        let a = a.get_ref();
+        let ak = |key: &str| format!("abutment.{name}.{key}");
+        let restitution = v.num(
+            ak("eps_n"),
+            &a.eps_n,
+            Some(d_eps),
+            unit,
+            "must lie in [0, 1]",
+        )?;
+        // a rigid wall: the two-body calibrations see the segment's mass (m_eff = 2m·2m/4m = m)
+        let m = masses[if side == 0 { 0 } else { n - 1 }];
+        abutments[side] = Some(BridgeAbutment {
+            gap: v.num(ak("gap"), &a.gap, Some(d_gap), non_negative, "must be >= 0")?,
+            seat_length: v.num(
+                ak("seat_length"),
+                &a.seat_length,
+                Some(d_seat),
+                positive,
+                "must be > 0",
+            )?,
+            friction: v.num(ak("mu"), &a.mu, Some(d_mu), non_negative, "must be >= 0")?,
+            restitution,
+            contact: contact_for(restitution, [2.0 * m, 2.0 * m])?,
+        });
+    }
+    let model = BridgeModel {
+        segments,
+        joints,
+        abutments,
+        outer_seat_length,
+        damping_ratio,
+        damping_model,
+    };
+    let (ground, records, units) = build_ground(sc)?;
+    let settings = build_settings(sc, &ground, &records, || {
+        model
+            .validate()
+            .map_err(|e| ScenarioError::Model(Box::new(e)))?;
+        Ok(())
+    })?;
+    Ok(BridgeSetup {
+        problem: BridgeProblem::at_rest(model, ground),
+        settings,
+        records,
+        units,
+    })
+}
+
+/// One `[[segment]]` table.
+fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> {
+    let sk = |key: &str| format!("segment[{i}].{key}");
+    let width = v.num(sk("width"), &s.width, Some(10.0), positive, "must be > 0")?;
+    let thickness = v.num(
+        sk("thickness"),
+        &s.thickness,
+        Some(0.5),
+        positive,
+        "must be > 0",
+    )?;
+    let density = v.num(
+        sk("density"),
+        &s.density,
+        Some(2500.0),
+        positive,
+        "must be > 0",
+    )?;
+    let shape_name = s
+        .shape
+        .as_ref()
+        .map_or("straight", |x| x.get_ref().as_str());
+    let geo = |key: &str, e: crate::geometry::GeometryError| {
+        v.err(sk(key), None, format!("invalid segment {}: {e}", i + 1))
+    };
+    let natural_left = i == 0;
+    let mut mirrored = false;
+    let mut shape = match shape_name {
+        "straight" => {
+            let l = v.num(sk("L"), &s.L, None, positive, "must be > 0")?;
+            DeckShape::Straight(
+                StraightDeck::new(l, width, thickness, density).map_err(|e| geo("L", e))?,
+            )
+        }
+        "skew" => {
+            let l = v.num(sk("L"), &s.L, None, positive, "must be > 0")?;
+            let sk_deg = v.num(
+                sk("skew_deg"),
+                &s.skew_deg,
+                None,
+                |x| (0.0..90.0).contains(&x),
+                "must lie in [0, 90)",
+            )?;
+            DeckShape::Skewed(
+                SkewedDeck::new(l, width, sk_deg.to_radians(), thickness, density)
+                    .map_err(|e| geo("skew_deg", e))?,
+            )
+        }
+        "curved" => {
+            let r = v.num(
+                sk("R"),
+                &s.R,
+                None,
+                |x| x > width / 2.0,
+                "must exceed width / 2",
+            )?;
+            let beta = v.num(
+                sk("beta_deg"),
+                &s.beta_deg,
+                None,
+                |x| x > 0.0 && x < 180.0,
+                "must lie in (0, 180)",
+            )?;
+            let left = match s.curve.as_ref().map(|c| (c.get_ref().as_str(), v.line(c))) {
+                None => i % 2 == 0,
+                Some(("left", _)) => true,
+                Some(("right", _)) => false,
+                Some((other, line)) => {
+                    return Err(v.err(
+                        sk("curve"),
+                        Some(line),
+                        format!(
+                            "invalid {} {other:?}: use \"left\" or \"right\"",
+                            sk("curve")
+                        ),
+                    ));
+                }
+            };
+            mirrored = left != natural_left;
+            DeckShape::Curved(
+                Deck::new(r, beta.to_radians(), width, thickness, density)
+                    .map_err(|e| geo("R", e))?,
+            )
+        }
+        other => {
+            let line = s.shape.as_ref().map(|x| v.line(x));
+            return Err(v.err(
+                sk("shape"),
+                line,
+                format!(
+                    "invalid {} {other:?}: use \"straight\", \"skew\" or \"curved\"",
+                    sk("shape")
+                ),
+            ));
+        }
+    };
+    if shape_name != "curved"
+        && let Some(c) = &s.curve
+    {
+        return Err(v.err(
+            sk("curve"),
+            Some(v.line(c)),
+            format!("{} applies to curved segments only", sk("curve")),
+        ));
+    }
+    for (key, val, ok) in [
+        ("L", &s.L, shape_name != "curved"),
+        ("R", &s.R, shape_name == "curved"),
+        ("beta_deg", &s.beta_deg, shape_name == "curved"),
+        ("skew_deg", &s.skew_deg, shape_name == "skew"),
+    ] {
+        if let (Some(x), false) = (val, ok) {
+            return Err(v.err(
+                sk(key),
+                Some(v.line(x)),
+                format!("{} does not apply to shape = {shape_name:?}", sk(key)),
+            ));
+        }
+    }
+    if let Some(m) = &s.mass {
+        let m = v.num(sk("mass"), &Some(m.clone()), None, positive, "must be > 0")?;
+        let f = m / shape.mass_properties().mass;
+        shape.scale_density(f);
+    }
+    let mass = shape.mass_properties().mass;
+    let k = match (&s.period_s, &s.bearing_stiffness) {
+        (Some(_), Some(b)) => {
+            return Err(v.err(
+                sk("bearing_stiffness"),
+                Some(v.line(b)),
+                format!(
+                    "give {} or {}, not both",
+                    sk("period_s"),
+                    sk("bearing_stiffness")
+                ),
+            ));
+        }
+        (Some(_), None) => {
+            let t = v.num(sk("period_s"), &s.period_s, None, positive, "must be > 0")?;
+            let w = 2.0 * std::f64::consts::PI / t;
+            mass * w * w / 4.0
+        }
+        (None, Some(_)) => v.num(
+            sk("bearing_stiffness"),
+            &s.bearing_stiffness,
+            None,
+            positive,
+            "must be > 0",
+        )?,
+        (None, None) => {
+            return Err(v.err(sk("period_s"), None, format!("segment {} needs its bearings: give {} (translational period on four corner bearings) or {} (per corner bearing, N/m)", i + 1, sk("period_s"), sk("bearing_stiffness"))));
+        }
+    };
+    Ok(Segment::with_corner_bearings(shape, mirrored, k))
+}
