@@ -41,10 +41,16 @@ const LINEAR: &str = "linear bearing";
 /// band and `b E0` on it (`f_p` clamped to `[−R, R]` is the same clamp written for `σ`).
 ///
 /// # Energy and the trapezoidal rule
-/// Over one step with the force `f_k` at the start, the trapezoidal work of the plastic part
-/// exceeds its stored-energy change plus `D` by `½ (|f_tr| − R)(f_p,k · n + R)/k_e ≥ 0`
-/// (because `|f_p,k| ≤ R`): zero in 1-D continued plastic flow, second order in the step at a
-/// yield onset or while the direction turns.
+/// Over one plastic step from the force `f_p,k` (inside the disc), the trapezoidal work of the
+/// plastic spring minus its stored-energy change is
+/// ```text
+/// ½ (f_p,k + f_p,k+1)·Δu − ΔE_p = ½ (|f_tr| − R)(R + f_p,k · n)/k_e  ∈ [0, D]
+/// ```
+/// (because `|f_p,k| ≤ R`; the hardening spring's trapezoidal work equals its energy change
+/// exactly). So a driver booking hysteretic energy as `W − ΔE` gets a non-negative dissipation
+/// that falls short of `D` by `½ (|f_tr| − R)(R − f_p,k · n)/k_e`: zero in 1-D continued plastic
+/// flow, first order in the step at a yield onset, and second order per step while the flow
+/// direction turns; the two converge as the step shrinks.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BilinearBearing {
     k0: Real,

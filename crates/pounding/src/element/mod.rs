@@ -22,10 +22,11 @@
 //! computed in closed form, never negative). For a quasi-static path in increments `Δu → 0`,
 //! `Σ ½ (f_k + f_{k+1}) · Δu = ΔE + Σ D` (the tests check this converges). A time stepper with
 //! the trapezoidal rule books the element work `½ (f_k + f_{k+1}) · Δu` exactly; the difference
-//! `W_step − ΔE − D` ([`step_work`] minus the rest) is the discretisation error of the law's
-//! kinks (yield onset, a cable becoming taut), which vanishes as the step shrinks; a driver whose
-//! balance must close to rounding books it as its own term (for the bilinear bearing it is
-//! provably ≥ 0, see [`bearing::BilinearBearing`]; for a cable it has either sign).
+//! `W_step − ΔE − D` is the discretisation error of the law's kinks (yield onset, a cable
+//! becoming taut or slack), which vanishes as the step shrinks. A driver whose balance must
+//! close to rounding should book the hysteretic energy as `W_step − ΔE` (for the bilinear
+//! bearing provably in `[0, D]`, see [`bearing::BilinearBearing`]; for a cable crossing its
+//! slack within a step it has either sign) and may report `Σ D` beside it.
 //!
 //! # Errors
 //! Bad parameters give an [`ElementError`] naming the parameter key (`k0`, `fy`, `b`, `k`,

@@ -6,6 +6,7 @@ mod common;
 mod contact;
 mod contact_law;
 mod contact_law_linear;
+mod element_bearing;
 mod event_exact;
 mod fuzz;
 mod geometry;
