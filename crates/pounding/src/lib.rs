@@ -13,6 +13,8 @@
 //! * [`contact`] — generalised force directions `w_N`, `w_T` (§6) and the Delassus matrix (§7).
 //! * [`contact_law`] — compliance contact laws (Kelvin, Hertz, Hertz-damp, bilinear, Jankowski), their
 //!   calibrations, a two-mass collision integrator and joint sharing (used by `sim` for compliance runs).
+//! * [`element`] — bearings (linear; bilinear with kinematic hardening, 2-D `Steel01`) and cable
+//!   restrainers (tension-only with slack, optional yield; `ElasticPPGap`) as constitutive laws.
 //! * [`analytic`] — the closed-form single-impact solution: stick interval `[L, U]`, modes, impulses (§9–§11).
 //! * [`impact`] — the generic multi-contact frictional impact of planar rigid bodies, solved as an LCP (§8).
 //! * [`law_check`] — post-solve physics checks: the impact laws and the energy bound verified on the
@@ -37,6 +39,7 @@
 pub mod analytic;
 pub mod contact;
 pub mod contact_law;
+pub mod element;
 pub mod geometry;
 pub mod ground_motion;
 pub mod impact;

@@ -7,6 +7,8 @@ mod contact;
 mod contact_law;
 mod contact_law_keys;
 mod contact_law_linear;
+mod element_bearing;
+mod element_restrainer;
 mod event_exact;
 mod fuzz;
 mod geometry;
