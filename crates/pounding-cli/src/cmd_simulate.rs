@@ -97,6 +97,12 @@ pub fn run(args: Args) -> Result<ExitCode> {
         return Ok(ExitCode::SUCCESS);
     }
     let t_start = Instant::now();
+    if let Some(p) = args.scenario.as_deref() {
+        let sc = Scenario::load(p)?;
+        if sc.is_bridge() {
+            return crate::sim_bridge::run(&args, sc, t_start);
+        }
+    }
     let setup = build(&args)?;
     if !args.records.is_empty() {
         return sim_batch::run(&args, &setup.problem, &setup.settings, setup.units, t_start);

@@ -13,8 +13,12 @@ use crate::shape::DeckShape;
 use serde_json::json;
 
 mod batch;
+mod bridge;
 mod compare;
 pub use batch::{BATCH_HEADER, batch_csv};
+pub use bridge::{
+    bridge_history_csv, bridge_impacts_csv, bridge_summary_json, bridge_summary_json_text,
+};
 pub use compare::{COMPARE_HEADER, COMPARE_OUTPUTS, compare_csv, compare_table};
 
 /// Degrees per radian.

@@ -1,0 +1,107 @@
+//! `pounding simulate` of a bridge of `[[segment]]`s: builds the run with the library, writes
+//! `history.csv`, `impacts.csv`, `summary.json` and `timing.json` (last) and prints a summary.
+
+use crate::cmd_simulate::{Args, lock_and_clear};
+use anyhow::{Context, Result, anyhow, bail};
+use pounding::math::Real;
+use pounding::output::{float_token, write_atomic};
+use pounding::sim::SimStatus;
+use pounding::sim::output::{bridge_history_csv, bridge_impacts_csv, bridge_summary_json_text};
+use pounding::sim::scenario::Scenario;
+use serde_json::json;
+use std::process::ExitCode;
+use std::time::Instant;
+
+/// Runs a bridge scenario (single run).
+pub fn run(args: &Args, mut sc: Scenario, t_start: Instant) -> Result<ExitCode> {
+    if !args.records.is_empty() {
+        bail!(
+            "--records (batch mode) is not available for bridges of [[segment]]s yet; run one \
+             record at a time with --record"
+        );
+    }
+    if let Some(p) = &args.record {
+        sc = sc.with_record(p, None);
+    }
+    if let Some(s) = args.scale {
+        sc = sc.with_scale(s);
+    }
+    let setup = sc.build_bridge()?;
+    pounding::output::check_output_dir_free(&args.out)?;
+    let t_sim = Instant::now();
+    let sol = setup.run().map_err(|e| anyhow!("{e}"))?;
+    let sim_secs = t_sim.elapsed().as_secs_f64();
+    if let Some(a) = &sol.time_step_advice
+        && !a.adequate
+    {
+        eprintln!(
+            "warning: dt = {} s is too coarse for the contact law: about {} steps per contact \
+             (contact duration {} s); use dt <= {} s",
+            float_token(sol.dt),
+            float_token(a.steps_per_contact.round()),
+            float_token(a.contact_duration),
+            float_token(a.max_step)
+        );
+    }
+    let out = &args.out;
+    let _lock = lock_and_clear(out)?;
+    let t_write = Instant::now();
+    let wr = |name: &str, bytes: &[u8]| {
+        write_atomic(&out.join(name), bytes)
+            .with_context(|| format!("cannot write {}", out.join(name).display()))
+    };
+    wr("history.csv", bridge_history_csv(&setup, &sol).as_bytes())?;
+    wr("impacts.csv", bridge_impacts_csv(&sol).as_bytes())?;
+    wr(
+        "summary.json",
+        bridge_summary_json_text(&setup, &sol).as_bytes(),
+    )?;
+    let timing = json!({
+        "simulate_s": sim_secs,
+        "write_s": t_write.elapsed().as_secs_f64(),
+        "wall_time_s": t_start.elapsed().as_secs_f64(),
+        "steps": sol.steps,
+    });
+    wr(
+        "timing.json",
+        (serde_json::to_string_pretty(&timing)? + "\n").as_bytes(),
+    )?;
+    let s = &sol.summary;
+    let joints: Vec<String> = s
+        .joints
+        .iter()
+        .map(|j| format!("{} (closing {:.4} m)", j.impacts, j.peak_closing))
+        .collect();
+    eprintln!(
+        "simulated a bridge of {} segments for {} s in {} steps ({:.1} ms): {} impacts; per joint: \
+         {}; energy balance error {:.1e}{}; outputs in {}",
+        sol.n_segments,
+        float_token(sol.steps as Real * sol.dt),
+        sol.steps,
+        sim_secs * 1e3,
+        s.impacts,
+        if joints.is_empty() {
+            "none".into()
+        } else {
+            joints.join(", ")
+        },
+        s.energy_balance_error,
+        match (&s.unseated_end, s.unseating_time) {
+            (Some(e), Some(t)) => format!(" (UNSEATED: {e} at {t:.3} s)"),
+            _ => String::new(),
+        },
+        out.display()
+    );
+    if sol.status != SimStatus::Completed {
+        eprintln!(
+            "error: simulation status {:?} after {} s ({} steps): the results are not trustworthy; \
+             see summary.json and history.csv in {}",
+            sol.status,
+            float_token(sol.steps as Real * sol.dt),
+            sol.steps,
+            out.display()
+        );
+        return Ok(ExitCode::from(1));
+    }
+    Ok(ExitCode::SUCCESS)
+}

@@ -1,0 +1,274 @@
+//! The files of a bridge run (`[[segment]]` scenarios): `history.csv`, `impacts.csv` and
+//! `summary.json` with per-joint, per-abutment and per-segment entries in bridge order.
+
+use super::{DEG, describe_contact};
+use crate::ground_motion::Record;
+use crate::math::Real;
+use crate::output::{float_token, json_float};
+use crate::sim::bridge::{ABUTMENT_SIDES, BridgeSolution};
+use crate::sim::scenario::BridgeSetup;
+use crate::sim::{JointContact, SimContact};
+use serde_json::{Value, json};
+
+/// `history.csv` of a bridge: per kept step the time, the ground acceleration, `x_i, y_i, θ_i`
+/// and their rates per segment (1-based names), each joint's two end gaps (the realised corner
+/// of the end at the start corner `c0` / `c1` of segment `k`'s end face; `nan` where no corner
+/// is over the other face), the joint forces (compliance), the abutment gaps, the energies.
+pub fn bridge_history_csv(setup: &BridgeSetup, sol: &BridgeSolution) -> String {
+    let n = sol.n_segments;
+    let nj = n.saturating_sub(1);
+    let ab: Vec<usize> = (0..2)
+        .filter(|&s| setup.problem.model.abutments[s].is_some())
+        .collect();
+    let forces = !sol.contact_force.is_empty();
+    let mut head = vec!["t_s".to_string(), "ag_x_mps2".into(), "ag_y_mps2".into()];
+    for i in 1..=n {
+        head.extend([
+            format!("x{i}_m"),
+            format!("y{i}_m"),
+            format!("theta{i}_deg"),
+        ]);
+    }
+    for i in 1..=n {
+        head.extend([
+            format!("vx{i}_mps"),
+            format!("vy{i}_mps"),
+            format!("omega{i}_degps"),
+        ]);
+    }
+    for k in 1..=nj {
+        head.extend([format!("joint{k}_gap_c0_m"), format!("joint{k}_gap_c1_m")]);
+    }
+    if forces {
+        for k in 1..=nj {
+            head.push(format!("joint{k}_force_N"));
+        }
+    }
+    for &s in &ab {
+        head.push(format!("abutment_{}_gap_m", ABUTMENT_SIDES[s]));
+    }
+    head.extend(
+        [
+            "input_energy_J",
+            "kinetic_energy_J",
+            "strain_energy_J",
+            "viscous_dissipation_J",
+            "contact_dissipation_J",
+        ]
+        .map(String::from),
+    );
+    let mut s = head.join(",");
+    s.push('\n');
+    let deg = |k: usize, v: Real| if k % 3 == 2 { v * DEG } else { v };
+    for (r, &t) in sol.t.iter().enumerate() {
+        let a = setup.problem.ground.accel(t);
+        let mut row = vec![float_token(t), float_token(a.x), float_token(a.y)];
+        let q = &sol.q[3 * n * r..3 * n * (r + 1)];
+        let u = &sol.u[3 * n * r..3 * n * (r + 1)];
+        row.extend(q.iter().enumerate().map(|(k, v)| float_token(deg(k, *v))));
+        row.extend(u.iter().enumerate().map(|(k, v)| float_token(deg(k, *v))));
+        row.extend(
+            sol.end_gaps[2 * nj * r..2 * nj * (r + 1)]
+                .iter()
+                .map(|g| float_token(*g)),
+        );
+        if forces {
+            let f = &sol.contact_force[2 * nj * r..2 * nj * (r + 1)];
+            row.extend(f.chunks(2).map(|c| float_token(c[0] + c[1])));
+        }
+        for &side in &ab {
+            row.push(float_token(sol.abutment_gaps[r][side]));
+        }
+        let e = &sol.energy[r];
+        row.extend([e.input, e.kinetic, e.potential, e.viscous, e.contact].map(float_token));
+        s.push_str(&row.join(","));
+        s.push('\n');
+    }
+    s
+}
+
+/// Where a contact is: `joint<k>` (1-based) or `abutment-start` / `abutment-end`.
+fn site_name(c: &SimContact, site: usize) -> String {
+    match c {
+        SimContact::Joint(_) => format!("joint{}", site + 1),
+        SimContact::Abutment { .. } => format!("abutment-{}", ABUTMENT_SIDES[site]),
+    }
+}
+
+/// The contact's corner within its site: the joint candidate (`deck1-inner` … with segment `k`
+/// as deck 1) or the abutment corner `c0` / `c1` of the segment's outer face.
+fn corner_name(c: &SimContact) -> &'static str {
+    match c {
+        SimContact::Joint(case) => case.name(),
+        SimContact::Abutment { corner: 0, .. } => "c0",
+        SimContact::Abutment { .. } => "c1",
+    }
+}
+
+/// `impacts.csv` of a bridge: one row per impacting contact (as the two-deck file, with the
+/// site and the corner in separate columns).
+pub fn bridge_impacts_csv(sol: &BridgeSolution) -> String {
+    let mut s = String::from(
+        "impact,t_s,site,contact,mode,gamma_n_pre_mps,gamma_t_pre_mps,gamma_n_post_mps,\
+         gamma_t_post_mps,impulse_n_Ns,impulse_t_Ns,energy_dissipated_J\n",
+    );
+    for r in &sol.impacts {
+        let f = [
+            r.gamma_n_pre,
+            r.gamma_t_pre,
+            r.gamma_n_post,
+            r.gamma_t_post,
+            r.impulse_n,
+            r.impulse_t,
+            r.energy_dissipated,
+        ]
+        .map(float_token)
+        .join(",");
+        s.push_str(&format!(
+            "{},{},{},{},{},{f}\n",
+            r.impact,
+            float_token(r.time),
+            site_name(&r.contact, r.site),
+            corner_name(&r.contact),
+            r.mode.name(),
+        ));
+    }
+    s
+}
+
+fn opt(v: Option<Real>) -> Value {
+    v.map_or(Value::Null, json_float)
+}
+
+/// The `summary.json` of a bridge run: `joints`, `abutments` (`[start, end]`, `null` where
+/// absent) and `segments` arrays in bridge order, the whole-bridge figures, status, ground motion
+/// and model.
+pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
+    let s = &sol.summary;
+    let m = &setup.problem.model;
+    let e = &s.final_energy;
+    let gm = &setup.problem.ground;
+    let pga = |r: &Option<Record>, sc: f64| r.as_ref().map_or(0.0, |r| r.pga() * sc.abs());
+    let joints: Vec<Value> = s
+        .joints
+        .iter()
+        .zip(&m.joints)
+        .map(|(j, mj)| {
+            json!({
+                "impacts": j.impacts,
+                "peak_contact_force_n": opt(j.peak_contact_force),
+                "peak_impulse_ns": json_float(j.peak_impulse),
+                "peak_closing_m": json_float(j.peak_closing),
+                "peak_opening_m": json_float(j.peak_opening),
+                "restrainer_engagements": 0,
+                "restrainer_peak_force_n": Value::Null,
+                "unseated": j.unseated,
+                "gap_m": json_float(mj.gap),
+                "mu": json_float(mj.friction),
+                "eps_n": json_float(mj.restitution),
+                "seat_length_m": json_float(mj.seat_length),
+                "contact_law": describe_contact(&mj.contact),
+            })
+        })
+        .collect();
+    let abutments: Vec<Value> = (0..2)
+        .map(|side| match (&s.abutments[side], &m.abutments[side]) {
+            (Some(a), Some(ma)) => json!({
+                "impacts": a.impacts,
+                "peak_contact_force_n": opt(a.peak_contact_force),
+                "peak_impulse_ns": json_float(a.peak_impulse),
+                "peak_closing_m": json_float(a.peak_closing),
+                "gap_m": json_float(ma.gap),
+                "seat_length_m": json_float(ma.seat_length),
+                "contact_law": describe_contact(&ma.contact),
+            }),
+            _ => Value::Null,
+        })
+        .collect();
+    let segments: Vec<Value> = s
+        .segments
+        .iter()
+        .zip(&m.segments)
+        .map(|(g, ms)| {
+            let mp = ms.shape.mass_properties();
+            json!({
+                "peak_displacement_m": json_float(g.peak_displacement),
+                "final_displacement_m": json_float(g.final_displacement),
+                "peak_rotation_deg": json_float(g.peak_rotation * DEG),
+                "peak_bearing_deformation_m": json_float(g.peak_bearing_deformation),
+                "hysteretic_energy_j": json_float(g.hysteretic_energy),
+                "shape": ms.shape.name(),
+                "mass_kg": json_float(mp.mass),
+                "natural_periods_s": g.frequencies.map(|w| json_float(2.0 * std::f64::consts::PI / w)),
+            })
+        })
+        .collect();
+    let compliant = m
+        .joints
+        .first()
+        .map(|j| j.contact)
+        .or(m.abutments.iter().flatten().next().map(|a| a.contact))
+        .is_some_and(|c| !matches!(c, JointContact::Rigid));
+    let mut out = json!({
+        "impacts": s.impacts,
+        "impacting_contacts": sol.impacts.len(),
+        "joints": joints,
+        "abutments": abutments,
+        "segments": segments,
+        "unseated": s.unseated,
+        "unseating_time_s": opt(s.unseating_time),
+        "unseated_end": s.unseated_end,
+        "peak_penetration_m": json_float(s.peak_penetration),
+        "energy_balance_error": json_float(s.energy_balance_error),
+        "energy_J": {
+            "input": json_float(e.input),
+            "kinetic": json_float(e.kinetic),
+            "strain": json_float(e.potential),
+            "viscous_dissipation": json_float(e.viscous),
+            "contact_dissipation": json_float(e.contact),
+            "max_input": json_float(s.max_input_energy),
+        },
+        "status": format!("{:?}", sol.status),
+        "steps": sol.steps,
+        "dt_s": json_float(sol.dt),
+        "duration_s": json_float(sol.steps as Real * sol.dt),
+        "lcp_solves": sol.lcp_solves,
+        "lcp_enumeration_fallbacks": sol.lcp_enumeration_fallbacks,
+        "lcp_failures": sol.lcp_failures,
+        "ground_motion": {
+            "record_y": setup.records[0],
+            "record_x": setup.records[1],
+            "scale_y": json_float(gm.scale_y),
+            "scale_x": json_float(gm.scale_x),
+            "incidence_deg": json_float(gm.incidence * DEG),
+            "pga_y_mps2": json_float(pga(&gm.along_y, gm.scale_y)),
+            "pga_x_mps2": json_float(pga(&gm.along_x, gm.scale_x)),
+        },
+        "model": {
+            "segments": m.segments.len(),
+            "damping": format!("{:?}", m.damping_model),
+            "damping_ratio": json_float(m.damping_ratio),
+            "outer_seat_length_m": json_float(m.outer_seat_length),
+        },
+    });
+    if compliant {
+        out["newton_failures"] = json!(sol.newton_failures);
+        out["closure_steps"] = json!(sol.closure_steps);
+        if let Some(a) = &sol.time_step_advice {
+            out["time_step"] = json!({
+                "contact_duration_s": json_float(a.contact_duration),
+                "steps_per_contact": json_float(a.steps_per_contact),
+                "max_step_s": json_float(a.max_step),
+                "adequate": a.adequate,
+            });
+        }
+    }
+    out
+}
+
+/// `summary.json` as written: pretty-printed with a final newline.
+pub fn bridge_summary_json_text(setup: &BridgeSetup, sol: &BridgeSolution) -> String {
+    let mut s = serde_json::to_string_pretty(&bridge_summary_json(setup, sol)).unwrap_or_default();
+    s.push('\n');
+    s
+}
