@@ -6,6 +6,8 @@ mod common;
 mod contact;
 mod contact_law;
 mod contact_law_linear;
+mod event_chain;
+mod event_chain_checks;
 mod event_exact;
 mod fuzz;
 mod geometry;
