@@ -8,6 +8,7 @@ mod contact_law;
 mod contact_law_linear;
 mod event_chain;
 mod event_chain_checks;
+mod event_chain_sim;
 mod event_exact;
 mod fuzz;
 mod geometry;
