@@ -23,9 +23,10 @@
 //!   an abutment is at rest. Contact forces of closed contacts follow from the equations of motion
 //!   by a recursion from the cluster's free end.
 //! * **Event functions**: open gaps `g + δ_g` (`δ_g` = [`GAP_EVENT`]) and closed forces
-//!   `λ + δ_λ` (`δ_λ` = [`FORCE_EVENT_PER_KG`]` · Σm`); each linear piece of the record is cut into
-//!   [`SUB`] parts, each part split at the minima of the function (derivative sign change, found by
-//!   bisection), and the first sign change is bisected to the rounding level (≈ 1e-16 s).
+//!   `λ + δ_λ` (`δ_λ` = [`FORCE_EVENT_PER_KG`]` · Σm`); each linear piece of the record (at most
+//!   10 ms) is cut into [`Chain::sub`] parts, each part split at the minima of the function
+//!   (derivative sign change, found by bisection), and the first sign change is bisected to the
+//!   rounding level (≈ 1e-16 s).
 //! * **Impacts**: at an event, every contact touching (`gap ≤` [`GAP_TOUCH`]) or closed takes part
 //!   in one simultaneous Newton impact LCP (spec §8 as amended: `ξ_j = γ_j⁺ + ε_j min(γ_j⁻, 0) ≥ 0
 //!   ⊥ P_j ≥ 0`, restitution only for approaching contacts) solved exactly by enumerating the
@@ -56,7 +57,7 @@ pub const GAP_TOUCH: f64 = 1e-11;
 pub const FORCE_EVENT_PER_KG: f64 = 1e-10;
 /// Tolerance of the acceleration-level contact LCP \[m/s²\].
 const ACC_TOL: f64 = 1e-9;
-/// Parts of each record interval for bracketing roots and extrema.
+/// Default parts of each piece for bracketing roots and extrema ([`Chain::sub`]).
 pub const SUB: usize = 16;
 /// Events allowed inside one record interval before the reference gives up (Zeno guard).
 const MAX_EVENTS_PER_INTERVAL: usize = 100_000;
@@ -78,6 +79,8 @@ pub struct Chain {
     pub gap_end: Option<f64>,
     /// Newton restitution per contact `[start, joint 1, …, joint N−1, end]` (length `N + 1`).
     pub eps: Vec<f64>,
+    /// Parts of each piece for bracketing roots and extrema (default [`SUB`]).
+    pub sub: usize,
 }
 
 /// One event with an impact (the simultaneous LCP of all touching contacts).
@@ -95,7 +98,7 @@ pub struct ChainImpact {
     pub impulse: Vec<f64>,
     /// Deck velocities before and after \[m/s\].
     pub v_pre: Vec<f64>,
-    /// Deck velocities after (joined clusters at their common velocity).
+    /// Deck velocities after the impact (before sticking contacts are joined).
     pub v_post: Vec<f64>,
 }
 
@@ -326,6 +329,7 @@ impl Chain {
             gap_start,
             gap_end,
             eps: vec![eps; n + 1],
+            sub: SUB,
         }
     }
 
@@ -543,8 +547,8 @@ impl Chain {
         let nc = self.n() + 1;
         let mut lo = 0.0;
         let mut e_lo = self.events(p, 0.0);
-        for s in 1..=SUB {
-            let hi = len * s as f64 / SUB as f64;
+        for s in 1..=self.sub {
+            let hi = len * s as f64 / self.sub as f64;
             let e_hi = self.events(p, hi);
             let mut first: Option<f64> = None;
             for j in 0..nc {
@@ -943,7 +947,7 @@ impl ChainSolution {
         self.pieces.len()
     }
 
-    /// Peak quantities, extrema located exactly: each piece is cut into [`SUB`] parts and an
+    /// Peak quantities, extrema located exactly: each piece is cut into [`Chain::sub`] parts and an
     /// interior extremum (rate sign change) is bisected on the rate.
     pub fn summary(&self) -> ChainSummary {
         let c = &self.chain;
@@ -971,10 +975,10 @@ impl ChainSolution {
             if len <= 0.0 {
                 continue;
             }
-            for s in 1..=SUB {
+            for s in 1..=c.sub {
                 let (a, b) = (
-                    len * (s - 1) as f64 / SUB as f64,
-                    len * s as f64 / SUB as f64,
+                    len * (s - 1) as f64 / c.sub as f64,
+                    len * s as f64 / c.sub as f64,
                 );
                 let cur = q(p, b);
                 for i in 0..nq {

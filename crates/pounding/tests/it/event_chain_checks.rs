@@ -335,4 +335,66 @@ fn chain_viaduct_rigid_1d_reference_numbers() {
     }
     assert_admissible(&sol, 1e-4);
     assert!(e.relative_residual() < 1e-9, "{e:?}");
+    // the same bridge under the EW component, and under NS with the opposite sign (for a front
+    // end whose sign convention is in doubt)
+    let ew = pounding::ground_motion::el_centro_1940().along_x.unwrap();
+    for (rec, scale) in [(&ew, 1.0), (&rec, -1.0)] {
+        let sol = chain.solve(Some(rec), scale, &[0.0; 3], &[0.0; 3], rec.end_time());
+        eprintln!("{} × {scale}: {:?}", rec.name, sol.summary());
+        assert_admissible(&sol, 1e-3);
+    }
+}
+
+/// A bouncing ball (no spring, constant acceleration `A` toward the end abutment, ε = 0.6): the
+/// approach speeds are `εⁿ s0` (`s0 = √(2 A g)`), so exactly the `n` with `εⁿ s0 ≥ 1 mm/s`
+/// count, and the accumulation ends (Zeno cut-off at `V_CUT`) in sustained contact at
+/// `t∞ = √(2g/A) + 2 ε s0 / (A (1 − ε))`, with the contact force `m A` afterwards.
+#[test]
+fn chain_zeno_accumulation_ends_in_sustained_contact_at_the_closed_form_time() {
+    let (g, acc, eps, m) = (0.05, 2.0, 0.6, 3.0);
+    let chain = Chain::new(vec![m], vec![0.0], vec![0.0], vec![], None, Some(g), eps);
+    let rec = Record::new("push", vec![0.0, 5.0], vec![-acc, -acc]).unwrap();
+    let sol = chain.solve(Some(&rec), 1.0, &[0.0], &[0.0], 3.0);
+    let s0 = (2.0 * acc * g).sqrt();
+    let counted = (0..).take_while(|&n| eps.powi(n) * s0 >= 1e-3).count();
+    assert_eq!(sol.impact_counts, vec![0, counted]);
+    let t_inf = (2.0 * g / acc).sqrt() + 2.0 * eps * s0 / (acc * (1.0 - eps));
+    let last = sol.impacts.last().unwrap();
+    // the cut-off leaves out the flights after the approach falls below V_CUT: ≤ 2 V_CUT/(A(1−ε))
+    let left_out = 2.0 * crate::event_chain::V_CUT / (acc * (1.0 - eps));
+    assert!(
+        last.t < t_inf && t_inf - last.t < left_out,
+        "joined at {} vs t∞ {t_inf}",
+        last.t
+    );
+    assert_eq!((sol.joins, sol.releases), (1, 0));
+    for t in [last.t + 1e-6, 2.0, 3.0] {
+        let (x, v) = sol.at(t);
+        assert!(x[0] == g && v[0] == 0.0);
+        assert!((sol.contact_forces(t)[1] - m * acc).abs() < 1e-12);
+    }
+    let e = sol.energy();
+    assert!(e.relative_residual() < 1e-11, "{e:?}");
+}
+
+/// The bracketing is fine enough: cutting each piece into 64 parts instead of 16 changes neither
+/// the impacts nor (beyond rounding) the motion of the viaduct over the whole record.
+#[test]
+fn chain_viaduct_does_not_depend_on_the_bracketing_subdivision() {
+    let (mut chain, rec) = viaduct_rigid_1d();
+    let t_end = rec.end_time();
+    let a = chain.solve(Some(&rec), 1.0, &[0.0; 3], &[0.0; 3], t_end);
+    chain.sub = 64;
+    let b = chain.solve(Some(&rec), 1.0, &[0.0; 3], &[0.0; 3], t_end);
+    assert_eq!(a.impacts.len(), b.impacts.len());
+    for (p, q) in a.impacts.iter().zip(&b.impacts) {
+        assert!((p.t - q.t).abs() < 1e-12 && p.contacts == q.contacts);
+    }
+    let (sa, sb) = (a.summary(), b.summary());
+    assert_eq!(sa.impacts, sb.impacts);
+    let pairs = sa.peak_opening.iter().zip(&sb.peak_opening);
+    let pairs = pairs.chain(sa.peak_displacement.iter().zip(&sb.peak_displacement));
+    for (p, q) in pairs {
+        assert!((p - q).abs() < 1e-12, "{sa:?} vs {sb:?}");
+    }
 }
