@@ -498,7 +498,7 @@ impl Chain {
                     let (ri, dri) = r(i);
                     l -= ri;
                     dl -= dri;
-                    if i + 1 <= n && p.closed[i + 1] {
+                    if p.closed[i + 1] {
                         lam[i + 1] = l;
                         dlam[i + 1] = dl;
                     }
