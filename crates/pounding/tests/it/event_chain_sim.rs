@@ -109,49 +109,80 @@ fn run(c: &Chain, r: &ChainSolution, gm: &GroundMotion, dt: f64) -> (f64, ChainS
     (err, s)
 }
 
-/// Acceptance shape of issue 11 for N = 2 with both abutments: at dt = 1e-4 impact counts
-/// within ±2, peak opening and displacements within 2 %; the error decreases as dt → 0 (the
-/// fitted order is printed).
-#[test]
-fn two_deck_simulator_with_abutments_converges_to_the_chain_reference() {
+/// Runs the simulator at `dts` against the reference on `[0, t_end]`; asserts issue 11's
+/// acceptance at the last (finest) dt (impact counts ±2, peak opening and displacements within
+/// 2 %), prints the errors and returns them with the least-squares order.
+fn converges(rec: &pounding::ground_motion::Record, t_end: f64, dts: &[f64]) -> (Vec<f64>, f64) {
     let c = chain2();
-    let rec = pounding::ground_motion::el_centro_1940().along_y.unwrap();
     let gm = GroundMotion {
         along_y: Some(rec.clone()),
         ..GroundMotion::none()
     };
-    let r = c.solve(Some(&rec), 1.0, &[0.0; 2], &[0.0; 2], rec.end_time());
+    let r = c.solve(Some(rec), 1.0, &[0.0; 2], &[0.0; 2], t_end);
     let rs = r.summary();
-    eprintln!("reference: {rs:?}");
-    let dts = [1e-3, 5e-4, 2.5e-4, 1e-4];
+    eprintln!(
+        "{}: reference {rs:?}; {} joins, {} releases",
+        rec.name, r.joins, r.releases
+    );
     let mut errs = Vec::new();
-    for &dt in &dts {
+    let mut last = None;
+    for &dt in dts {
         let (e, s) = run(&c, &r, &gm, dt);
         eprintln!("dt {dt:e}: max |x error| {e:.3e} m; {s:?}");
         errs.push(e);
-        if dt == 1e-4 {
-            for (a, b) in s.impacts.iter().zip(&rs.impacts) {
-                assert!(
-                    a.abs_diff(*b) <= 2,
-                    "impacts {:?} vs {:?}",
-                    s.impacts,
-                    rs.impacts
-                );
-            }
-            let rel = |a: f64, b: f64| (a - b).abs() / b.abs();
-            assert!(rel(s.peak_opening[0], rs.peak_opening[0]) < 0.02);
-            for i in 0..2 {
-                assert!(rel(s.peak_displacement[i], rs.peak_displacement[i]) < 0.02);
-            }
-        }
+        last = Some(s);
     }
+    let s = last.unwrap();
+    for (a, b) in s.impacts.iter().zip(&rs.impacts) {
+        assert!(
+            a.abs_diff(*b) <= 2,
+            "impacts {:?} vs {:?}",
+            s.impacts,
+            rs.impacts
+        );
+    }
+    let rel = |a: f64, b: f64| (a - b).abs() / b.abs();
+    assert!(rel(s.peak_opening[0], rs.peak_opening[0]) < 0.02);
+    for i in 0..2 {
+        assert!(rel(s.peak_displacement[i], rs.peak_displacement[i]) < 0.02);
+    }
+    let n = dts.len() as f64;
     let lx: Vec<f64> = dts.iter().map(|d| d.ln()).collect();
     let ly: Vec<f64> = errs.iter().map(|e| e.ln()).collect();
-    let (mx, my) = (lx.iter().sum::<f64>() / 4.0, ly.iter().sum::<f64>() / 4.0);
+    let (mx, my) = (lx.iter().sum::<f64>() / n, ly.iter().sum::<f64>() / n);
     let sxy: f64 = lx.iter().zip(&ly).map(|(a, b)| (a - mx) * (b - my)).sum();
     let sxx: f64 = lx.iter().map(|a| (a - mx) * (a - mx)).sum();
     let order = sxy / sxx;
     eprintln!("dt {dts:?}: errors {errs:?}; least-squares order {order:.3}");
+    (errs, order)
+}
+
+const DTS: [f64; 4] = [1e-3, 5e-4, 2.5e-4, 1e-4];
+
+/// Acceptance shape of issue 11 for N = 2 with both abutments under El Centro; the error
+/// decreases as dt → 0 (measured order 1.4: 2.0e-3, 2.6e-4, 3.5e-4, 5.1e-5 m).
+#[test]
+fn two_deck_simulator_with_abutments_converges_to_the_chain_reference() {
+    let rec = pounding::ground_motion::el_centro_1940().along_y.unwrap();
+    let (errs, order) = converges(&rec, rec.end_time(), &DTS);
     assert!(order > 0.7, "order {order}");
     assert!(errs[3] < errs[0] / 5.0, "{errs:?}");
+}
+
+/// Sustained contact against an abutment and between the decks (a load pressing the two decks
+/// into the end abutment for 3 s, then into the start one, accumulations ended by sticking):
+/// the simulator converges at first order here too (measured 5.7e-4, 2.8e-4, 1.2e-4, 4.1e-5 m).
+/// At coarse dt a chatter's impacts merge into fewer steps (joint: 11 counted at dt = 5e-4 vs
+/// 17), so the counts are compared at dt = 1e-4 only.
+#[test]
+fn two_deck_simulator_sticking_to_abutments_converges_to_the_chain_reference() {
+    let rec = pounding::ground_motion::Record::new(
+        "press-release",
+        vec![0.0, 0.1, 3.0, 3.1, 6.0],
+        vec![0.0, -6.0, -6.0, 6.0, 6.0],
+    )
+    .unwrap();
+    let (errs, order) = converges(&rec, 8.0, &DTS);
+    assert!(order > 0.8, "order {order}");
+    assert!(errs[3] < errs[0] / 8.0, "{errs:?}");
 }
