@@ -61,7 +61,33 @@ pub struct Segment {
     /// segment then curves the other way; a skewed one gets the opposite skew).
     pub mirrored: bool,
     /// Bearings; points in the segment's body frame (after the mirror, before placement).
+    /// [`Bearing::stiffness`] is the initial stiffness `k0` of a yielding bearing.
     pub bearings: Vec<Bearing>,
+    /// Yielding bearings ([`crate::element::bearing::BilinearBearing`]): `None` = linear.
+    pub bearing_yield: Option<BearingYield>,
+}
+
+/// The yield of a segment's bearings: bilinear with kinematic hardening, each bearing `b` with
+/// `k0 = k_b`, yield force `F_y k_b / Σ k` (so the bearings of a translating segment yield
+/// together at the segment's `F_y`) and post-yield ratio `b`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BearingYield {
+    /// Yield force of all the segment's bearings together `F_y > 0` \[N\].
+    pub fy: Real,
+    /// Post-yield stiffness ratio `b ∈ [0, 1)`.
+    pub b: Real,
+}
+
+/// A restrainer across a joint: a tension-only cable between the midpoints of the two faces
+/// ([`crate::element::restrainer::Restrainer`], the slack growing with yield).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RestrainerSpec {
+    /// Stiffness `k > 0` \[N/m\].
+    pub k: Real,
+    /// Slack `s ≥ 0` \[m\]: the cable is taut once the joint opens by more than this.
+    pub slack: Real,
+    /// Yield force \[N\] (`None`: elastic).
+    pub fy: Option<Real>,
 }
 
 impl Segment {
@@ -71,6 +97,7 @@ impl Segment {
             shape,
             mirrored,
             bearings: Vec::new(),
+            bearing_yield: None,
         };
         s.bearings = s
             .corner_points()
@@ -147,6 +174,8 @@ pub struct Joint {
     pub seat_length: Real,
     /// Contact law.
     pub contact: JointContact,
+    /// A restrainer across the joint, if any.
+    pub restrainer: Option<RestrainerSpec>,
 }
 
 /// An abutment at the start or the end of the bridge: the ground, beyond the outer face of the
@@ -242,7 +271,37 @@ impl BridgeModel {
                 )?;
             }
         }
+        for (i, s) in self.segments.iter().enumerate() {
+            if let Some(y) = &s.bearing_yield {
+                check(seg_key(i, "fy"), y.fy, y.fy > 0.0, "must be finite and > 0")?;
+                check(
+                    seg_key(i, "b"),
+                    y.b,
+                    (0.0..1.0).contains(&y.b),
+                    "must lie in [0, 1)",
+                )?;
+                if s.bearings.iter().all(|b| b.stiffness == 0.0) {
+                    return Err(SimError::invalid(
+                        seg_key(i, "fy"),
+                        y.fy,
+                        "yielding bearings need a positive stiffness",
+                    ));
+                }
+            }
+        }
         for (k, j) in self.joints.iter().enumerate() {
+            if let Some(r) = &j.restrainer {
+                crate::element::restrainer::Restrainer::new(
+                    r.k,
+                    r.slack,
+                    r.fy,
+                    crate::element::restrainer::SlackGrowth::Permanent,
+                )
+                .map_err(|e| SimError::InvalidArgument {
+                    name: joint_key(k, &format!("restrainer_{}", e.key())),
+                    reason: e.to_string(),
+                })?;
+            }
             check(joint_key(k, "gap"), j.gap, j.gap >= 0.0, "must be >= 0")?;
             check(
                 joint_key(k, "mu"),
@@ -517,12 +576,14 @@ impl BridgeModel {
                 });
             }
         }
+        let elements = self.elements(&bodies);
         Bridge {
             bodies,
             joints,
             abutments,
             seats,
             bearing_points: self.bearing_points(),
+            elements,
         }
     }
 }
@@ -548,6 +609,7 @@ impl BridgeModel {
                     stiffness: b.stiffness,
                 })
                 .collect(),
+            bearing_yield: None,
         };
         let abut = |a: Option<super::SimAbutment>| {
             a.map(|a| BridgeAbutment {
@@ -566,12 +628,54 @@ impl BridgeModel {
                 restitution: model.restitution,
                 seat_length: model.seat_length,
                 contact: model.contact,
+                restrainer: None,
             }],
             abutments: [abut(model.abutments[0]), abut(model.abutments[1])],
             outer_seat_length: model.seat_length,
             damping_ratio: model.damping_ratio,
             damping_model: model.damping_model,
         }
+    }
+}
+
+impl BridgeModel {
+    /// The yielding bearings and restrainers (validated parameters).
+    fn elements(&self, bodies: &[SegmentBody]) -> super::elements::Elements {
+        use crate::element::bearing::{BearingState, BilinearBearing};
+        use crate::element::restrainer::{Restrainer, RestrainerElement, SlackGrowth};
+        let mut el = super::elements::Elements::default();
+        let points = self.bearing_points();
+        for (i, s) in self.segments.iter().enumerate() {
+            let Some(y) = s.bearing_yield else { continue };
+            let total: Real = s.bearings.iter().map(|b| b.stiffness).sum();
+            for (b, p) in s.bearings.iter().zip(&points[i]) {
+                if b.stiffness == 0.0 {
+                    continue;
+                }
+                let law = BilinearBearing::new(b.stiffness, y.fy * b.stiffness / total, y.b)
+                    .expect("validated");
+                el.bearings.push(super::elements::YieldingBearing {
+                    body: i,
+                    arm: p - bodies[i].centroid,
+                    law,
+                    state: BearingState::default(),
+                });
+            }
+        }
+        for (k, j) in self.joints.iter().enumerate() {
+            let Some(r) = j.restrainer else { continue };
+            let law =
+                Restrainer::new(r.k, r.slack, r.fy, SlackGrowth::Permanent).expect("validated");
+            let (pa, pb) = (bodies[k].end.mid, bodies[k + 1].start.mid);
+            el.cables.push(super::elements::Cable {
+                joint: k,
+                a: (k, pa),
+                b: (k + 1, pb),
+                length: (pb - pa).norm(),
+                element: RestrainerElement::new(law),
+            });
+        }
+        el
     }
 }
 
@@ -632,6 +736,10 @@ pub struct JointSummary {
     pub peak_opening: Real,
     /// Either end at this joint exceeded its seat length.
     pub unseated: bool,
+    /// Episodes of positive restrainer force (0 without a restrainer).
+    pub restrainer_engagements: usize,
+    /// Largest restrainer force \[N\] (`None` without a restrainer).
+    pub restrainer_peak_force: Option<Real>,
 }
 
 /// Peaks of one abutment.
@@ -690,6 +798,8 @@ pub struct BridgeSummary {
     pub final_energy: Energy,
     /// `max_t |E_0 + W_in|` \[J\].
     pub max_input_energy: Real,
+    /// Work done on the restrainers (stored plus plastic) at the end \[J\].
+    pub restrainer_work: Real,
 }
 
 /// Result of [`simulate_bridge`].
@@ -871,6 +981,20 @@ fn solution(
             // seats per segment [start, end]: joint k is segment k's end and k+1's start
             unseated: peaks.seat[2 * k + 1] > br.seats[2 * k + 1].length
                 || peaks.seat[2 * k + 2] > br.seats[2 * k + 2].length,
+            restrainer_engagements: r
+                .elements
+                .cables
+                .iter()
+                .filter(|c| c.joint == k)
+                .map(|c| c.element.engagements())
+                .sum(),
+            restrainer_peak_force: r
+                .elements
+                .cables
+                .iter()
+                .filter(|c| c.joint == k)
+                .map(|c| c.element.peak_force())
+                .reduce(Real::max),
         })
         .collect();
     let mut abutments = [None, None];
@@ -888,6 +1012,7 @@ fn solution(
             });
         }
     }
+    let correction = r.elements.bearing_energy_correction(&r.final_q, nb);
     let segments = (0..nb)
         .map(|i| {
             let x = r.final_q[3 * i];
@@ -897,7 +1022,8 @@ fn solution(
                 final_displacement: (x * x + y * y).sqrt(),
                 peak_rotation: peaks.rot[i],
                 peak_bearing_deformation: peaks.bearing[i],
-                hysteretic_energy: 0.0,
+                hysteretic_energy: r.elements.w_bearings.get(i).copied().unwrap_or(0.0)
+                    - correction[i],
                 frequencies: sc.bodies[i].frequencies,
             }
         })
@@ -921,6 +1047,7 @@ fn solution(
         energy_balance_error: r.energy_balance_error,
         final_energy: r.final_energy,
         max_input_energy: r.max_input_energy,
+        restrainer_work: r.elements.w_cables,
     };
     let tr = r.trace;
     BridgeSolution {

@@ -317,6 +317,8 @@ pub(crate) struct Bridge {
     /// Bearing points of each segment (global reference pose) for the bearing-deformation
     /// monitor; empty: not monitored.
     pub bearing_points: Vec<Vec<Vector>>,
+    /// Yielding bearings and restrainers in their initial state.
+    pub elements: super::elements::Elements,
 }
 
 impl Bridge {
@@ -356,6 +358,7 @@ impl Bridge {
             abutments,
             seats,
             bearing_points: Vec::new(),
+            elements: Default::default(),
         }
     }
 
@@ -624,9 +627,14 @@ impl Ledger {
         }
     }
 
-    /// Energies at one instant; updates the balance monitor.
-    fn check(&mut self, tk: Real, vk: Real, d_cont: Real) -> Energy {
-        let bal = self.e0 + self.w_in - (tk + vk + self.d_visc + d_cont);
+    /// Energies at one instant; updates the balance monitor. `w_el`: the work done on the
+    /// nonlinear elements (`None` without any, so that the two-deck sums keep their bits).
+    fn check(&mut self, tk: Real, vk: Real, d_cont: Real, w_el: Option<Real>) -> Energy {
+        let other = match w_el {
+            Some(w) => d_cont + w,
+            None => d_cont,
+        };
+        let bal = self.e0 + self.w_in - (tk + vk + self.d_visc + other);
         self.max_bal = max_nan(self.max_bal, bal.abs());
         self.max_in = max_nan(self.max_in, (self.e0 + self.w_in).abs());
         self.energy(tk, vk, d_cont)
@@ -639,6 +647,7 @@ impl Ledger {
             potential: vk,
             viscous: self.d_visc,
             contact: d_cont,
+            elements: 0.0,
         }
     }
 
@@ -725,6 +734,7 @@ pub(crate) struct RunResult {
     pub stats: StepperStats,
     pub steps: usize,
     pub final_q: State,
+    pub elements: super::elements::Elements,
     pub energy_balance_error: Real,
     pub final_energy: Energy,
     pub max_input_energy: Real,
@@ -749,6 +759,8 @@ pub(crate) fn run<S: Stepper>(
     let mut status = SimStatus::Completed;
     let mut steps_done = 0usize;
     let abut_sides: Vec<usize> = bridge.abutments.iter().map(|a| a.side).collect();
+    let mut el = bridge.elements.clone();
+    let nb = bridge.bodies.len();
     for k in 0..=sc.n_steps {
         let t = k as Real * h;
         let frame = bridge.frame(&q);
@@ -759,7 +771,9 @@ pub(crate) fn run<S: Stepper>(
             peaks.observe_forces(f, &abut_sides);
         }
         let (tk, vk) = sc.energies(&q, &u);
-        let energy = ledger.check(tk, vk, stepper.contact_energy());
+        let w_el = (!el.is_empty()).then(|| el.w_bearings.iter().sum::<Real>() + el.w_cables);
+        let mut energy = ledger.check(tk, vk, stepper.contact_energy(), w_el);
+        energy.elements = w_el.unwrap_or(0.0);
         if k % settings.history_stride == 0 || k == sc.n_steps {
             let nj = bridge.joints.len();
             trace.record(t, &q, &frame, &u, &obs, energy, forces.map(|f| &f[..nj]));
@@ -772,7 +786,11 @@ pub(crate) fn run<S: Stepper>(
             break;
         }
         let abar = sc.ag[k] * (1.0 - th) + sc.ag[k + 1] * th;
-        let u_free = sc.u_free(&q, &u, &abar);
+        let mut u_free = sc.u_free(&q, &u, &abar);
+        let r_el = (!el.is_empty()).then(|| el.force(&q, &bridge.bodies));
+        if let Some(r) = &r_el {
+            u_free += sc.winv_mul(r) * h;
+        }
         let input = StepInput {
             t,
             q: &q,
@@ -785,8 +803,14 @@ pub(crate) fn run<S: Stepper>(
         let out = stepper.step(&input, &mut log);
         peaks.pen = peaks.pen.max(out.penetration);
         let u_th = ledger.advance(sc, k, &u, &out.u);
+        if let Some(r) = &r_el {
+            el.book(h, &((&u + &out.u) * 0.5), r, nb);
+        }
         q += u_th * h;
         u = out.u;
+        if r_el.is_some() {
+            el.commit(&q, &bridge.bodies);
+        }
         steps_done = k + 1;
         if !(q.iter().all(|x| x.is_finite()) && u.iter().all(|x| x.is_finite())) {
             status = SimStatus::Diverged;
@@ -800,7 +824,8 @@ pub(crate) fn run<S: Stepper>(
         status = SimStatus::CompletedWithNewtonFailures;
     }
     let (tf, vf) = sc.energies(&q, &u);
-    let final_energy = ledger.energy(tf, vf, stepper.contact_energy());
+    let mut final_energy = ledger.energy(tf, vf, stepper.contact_energy());
+    final_energy.elements = el.w_bearings.iter().sum::<Real>() + el.w_cables;
     RunResult {
         status,
         trace,
@@ -808,6 +833,7 @@ pub(crate) fn run<S: Stepper>(
         stats,
         steps: steps_done,
         final_q: q,
+        elements: el,
         energy_balance_error: balance_error(ledger.max_bal, ledger.max_in),
         final_energy,
         max_input_energy: ledger.max_in,

@@ -63,6 +63,7 @@ pub mod bridge;
 pub mod compliance;
 pub mod contact;
 mod driver;
+mod elements;
 pub mod model;
 pub mod options;
 pub mod output;
@@ -671,6 +672,9 @@ pub struct Energy {
     pub viscous: Real,
     /// Energy dissipated by the contacts since t = 0 (may decrease, spec §11).
     pub contact: Real,
+    /// Work done on the nonlinear elements of a bridge (yielding bearings beyond `½ qᵀ K q`,
+    /// restrainers) since t = 0 (`sim::bridge`; 0 without any).
+    pub elements: Real,
 }
 
 /// Sampled time histories (every `history_stride`-th step and the last one).

@@ -54,6 +54,7 @@ pub fn bridge_history_csv(setup: &BridgeSetup, sol: &BridgeSolution) -> String {
             "strain_energy_J",
             "viscous_dissipation_J",
             "contact_dissipation_J",
+            "element_work_J",
         ]
         .map(String::from),
     );
@@ -80,7 +81,17 @@ pub fn bridge_history_csv(setup: &BridgeSetup, sol: &BridgeSolution) -> String {
             row.push(float_token(sol.abutment_gaps[r][side]));
         }
         let e = &sol.energy[r];
-        row.extend([e.input, e.kinetic, e.potential, e.viscous, e.contact].map(float_token));
+        row.extend(
+            [
+                e.input,
+                e.kinetic,
+                e.potential,
+                e.viscous,
+                e.contact,
+                e.elements,
+            ]
+            .map(float_token),
+        );
         s.push_str(&row.join(","));
         s.push('\n');
     }
@@ -160,8 +171,8 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
                 "peak_impulse_ns": json_float(j.peak_impulse),
                 "peak_closing_m": json_float(j.peak_closing),
                 "peak_opening_m": json_float(j.peak_opening),
-                "restrainer_engagements": 0,
-                "restrainer_peak_force_n": Value::Null,
+                "restrainer_engagements": j.restrainer_engagements,
+                "restrainer_peak_force_n": opt(j.restrainer_peak_force),
                 "unseated": j.unseated,
                 "gap_m": json_float(mj.gap),
                 "mu": json_float(mj.friction),
@@ -203,6 +214,7 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
             })
         })
         .collect();
+    let hyst: Real = s.segments.iter().map(|g| g.hysteretic_energy).sum();
     let compliant = m
         .joints
         .first()
@@ -223,9 +235,11 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
         "energy_J": {
             "input": json_float(e.input),
             "kinetic": json_float(e.kinetic),
-            "strain": json_float(e.potential),
+            "strain": json_float(e.potential + (e.elements - hyst - s.restrainer_work)),
             "viscous_dissipation": json_float(e.viscous),
             "contact_dissipation": json_float(e.contact),
+            "hysteretic_dissipation": json_float(hyst),
+            "restrainer_work": json_float(s.restrainer_work),
             "max_input": json_float(s.max_input_energy),
         },
         "status": format!("{:?}", sol.status),

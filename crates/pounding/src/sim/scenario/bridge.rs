@@ -35,7 +35,8 @@ use crate::math::Real;
 use crate::output::float_token;
 use crate::shape::{Deck, DeckShape, SkewedDeck, StraightDeck};
 use crate::sim::bridge::{
-    BridgeAbutment, BridgeModel, BridgeProblem, Joint, Segment, simulate_bridge,
+    BearingYield, BridgeAbutment, BridgeModel, BridgeProblem, Joint, RestrainerSpec, Segment,
+    simulate_bridge,
 };
 use crate::sim::{DampingModel, SimSettings};
 use crate::toml_schema::{Table, line_col};
@@ -73,6 +74,9 @@ struct BridgeSec {
     mu: Sp<f64>,
     eps_n: Sp<f64>,
     seat_length: Sp<f64>,
+    restrainer_k: Sp<f64>,
+    restrainer_slack: Sp<f64>,
+    restrainer_fy: Sp<f64>,
 }
 
 #[derive(Deserialize, Default, Clone, Debug)]
@@ -91,6 +95,9 @@ struct SegmentSec {
     mass: Sp<f64>,
     period_s: Sp<f64>,
     bearing_stiffness: Sp<f64>,
+    bearing: Sp<String>,
+    fy: Sp<f64>,
+    b: Sp<f64>,
 }
 
 #[derive(Deserialize, Default, Clone, Debug)]
@@ -100,6 +107,9 @@ struct JointSec {
     mu: Sp<f64>,
     eps_n: Sp<f64>,
     seat_length: Sp<f64>,
+    restrainer_k: Sp<f64>,
+    restrainer_slack: Sp<f64>,
+    restrainer_fy: Sp<f64>,
 }
 
 #[derive(Deserialize, Default, Clone, Debug)]
@@ -295,12 +305,14 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
             positive,
             "must be > 0",
         )?;
+        let restrainer = restrainer(&v, k, j, b)?;
         joints.push(Joint {
             gap,
             friction,
             restitution,
             seat_length,
             contact: contact_for(restitution, [masses[k], masses[k + 1]])?,
+            restrainer,
         });
     }
     let mut abutments = [None, None];
@@ -355,6 +367,42 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
         records,
         units,
     })
+}
+
+/// The restrainer of joint `k` from its keys or the `[bridge]` defaults: present when
+/// `restrainer_k` is given (slack default 0, no yield by default).
+fn restrainer(
+    v: &Val,
+    k: usize,
+    j: &JointSec,
+    b: &BridgeSec,
+) -> Result<Option<RestrainerSpec>, ScenarioError> {
+    let pick = |own: &Sp<f64>, def: &Sp<f64>, key: &str| match (own, def) {
+        (Some(x), _) => (Some(x.clone()), format!("joint[{k}].{key}")),
+        (None, Some(x)) => (Some(x.clone()), format!("bridge.{key}")),
+        (None, None) => (None, format!("joint[{k}].{key}")),
+    };
+    let (rk, kk) = pick(&j.restrainer_k, &b.restrainer_k, "restrainer_k");
+    let (rs, ks) = pick(&j.restrainer_slack, &b.restrainer_slack, "restrainer_slack");
+    let (rf, kf) = pick(&j.restrainer_fy, &b.restrainer_fy, "restrainer_fy");
+    if rk.is_none() {
+        if let Some(x) = rs.as_ref().or(rf.as_ref()) {
+            let key = if rs.is_some() { ks } else { kf };
+            return Err(v.err(
+                key.clone(),
+                Some(v.line(x)),
+                format!("{key} needs a restrainer: give its stiffness restrainer_k too"),
+            ));
+        }
+        return Ok(None);
+    }
+    let k_ = v.num(kk, &rk, None, positive, "must be > 0")?;
+    let slack = v.num(ks, &rs, Some(0.0), non_negative, "must be >= 0")?;
+    let fy = match rf {
+        Some(_) => Some(v.num(kf, &rf, None, positive, "must be > 0")?),
+        None => None,
+    };
+    Ok(Some(RestrainerSpec { k: k_, slack, fy }))
 }
 
 /// One `[[segment]]` table.
@@ -510,5 +558,54 @@ fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> 
             return Err(v.err(sk("period_s"), None, format!("segment {} needs its bearings: give {} (translational period on four corner bearings) or {} (per corner bearing, N/m)", i + 1, sk("period_s"), sk("bearing_stiffness"))));
         }
     };
-    Ok(Segment::with_corner_bearings(shape, mirrored, k))
+    let mut seg = Segment::with_corner_bearings(shape, mirrored, k);
+    let kind = s
+        .bearing
+        .as_ref()
+        .map(|x| (x.get_ref().as_str(), v.line(x)));
+    match kind {
+        None | Some(("linear", _)) => {
+            for (key, x) in [("fy", &s.fy), ("b", &s.b)] {
+                if let Some(x) = x {
+                    return Err(v.err(
+                        sk(key),
+                        Some(v.line(x)),
+                        format!(
+                            "{} applies to yielding bearings: set {} = \"bilinear\"",
+                            sk(key),
+                            sk("bearing")
+                        ),
+                    ));
+                }
+            }
+        }
+        Some(("bilinear", _)) => {
+            let fy = v.num(
+                sk("fy"),
+                &s.fy,
+                None,
+                positive,
+                "must be > 0 (yield force of the segment's bearings together, N)",
+            )?;
+            let b = v.num(
+                sk("b"),
+                &s.b,
+                None,
+                |x| (0.0..1.0).contains(&x),
+                "must lie in [0, 1)",
+            )?;
+            seg.bearing_yield = Some(BearingYield { fy, b });
+        }
+        Some((other, line)) => {
+            return Err(v.err(
+                sk("bearing"),
+                Some(line),
+                format!(
+                    "invalid {} {other:?}: use \"linear\" or \"bilinear\"",
+                    sk("bearing")
+                ),
+            ));
+        }
+    }
+    Ok(seg)
 }

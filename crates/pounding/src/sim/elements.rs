@@ -1,0 +1,169 @@
+//! Nonlinear structural elements of a bridge in the time stepping: yielding bearings and
+//! restrainers ([`crate::element`]).
+//!
+//! # Scheme
+//! A bilinear bearing's force is `f = k0 u − (1 − b) k0 u_p` (`u` its linearised deformation,
+//! `u_p` the plastic displacement of its elastic–perfectly-plastic spring): the linear part
+//! `k0 u` is in the segment's stiffness `K` (so `Ŵ`, the periods and the Rayleigh damping use the
+//! initial stiffness) and the rest is a generalised force `R_p = Σ_b Bᵀ (1 − b) k0 u_p`. A
+//! restrainer pulls its two anchor points together with the tension `F(e)` of its elongation
+//! `e = |P_b − P_a| − L_0` (exact positions): `R_r = F (n, r_a × n)` on the first segment and
+//! `−F (n, r_b × n)` on the second, `n` the unit vector from `P_a` to `P_b`. Both are taken at the
+//! start of each step and held over it (the time-stepping load `R̄ = R(q_k)`, first order in the
+//! plastic flow and the cable's engagement; their natural periods are long against the step);
+//! after `q_{k+1}` the return mappings commit the new states.
+//!
+//! # Energy
+//! With `R̄` inside the momentum balance the discrete energy balance stays exact when the work
+//! `W_el = −Σ h ū·R̄` done *on* these forces is booked beside the other terms. It splits into
+//! the bearings' stored-energy correction and their hysteretic dissipation
+//! `D_h = W_el,bearings − (V_bearings − ½ qᵀ K q)` (`V_bearings = Σ ½ b k0 |u|² + ½ (1 − b) k0
+//! |u − u_p|²`, which tends to the plastic work `Σ f_p·Δu_p` as `h → 0`), and the work done on the
+//! restrainers (their stored energy plus, with yield, their plastic work).
+
+use super::contact::State;
+use super::model::SegmentBody;
+use crate::element::bearing::{BearingState, BilinearBearing};
+use crate::element::restrainer::{RestrainerElement, RestrainerResponse};
+use crate::math::{Real, Vector, cross};
+
+/// One yielding bearing of a segment.
+#[derive(Debug, Clone)]
+pub(crate) struct YieldingBearing {
+    /// The segment.
+    pub body: usize,
+    /// Lever arm `r = p − G⁰` (reference pose).
+    pub arm: Vector,
+    /// Its law.
+    pub law: BilinearBearing,
+    /// Committed state.
+    pub state: BearingState,
+}
+
+/// One restrainer across a joint.
+#[derive(Debug, Clone)]
+pub(crate) struct Cable {
+    /// The joint it crosses.
+    pub joint: usize,
+    /// First segment and its anchor (reference pose, global).
+    pub a: (usize, Vector),
+    /// Second segment and its anchor.
+    pub b: (usize, Vector),
+    /// Reference length `L_0 = |P_b⁰ − P_a⁰|`.
+    pub length: Real,
+    /// The cable.
+    pub element: RestrainerElement,
+}
+
+/// The nonlinear elements and their energy bookkeeping.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Elements {
+    pub bearings: Vec<YieldingBearing>,
+    pub cables: Vec<Cable>,
+    /// Work done on the bearing corrections, per segment.
+    pub w_bearings: Vec<Real>,
+    /// Work done on the restrainers.
+    pub w_cables: Real,
+}
+
+impl Elements {
+    /// Nothing to do.
+    pub fn is_empty(&self) -> bool {
+        self.bearings.is_empty() && self.cables.is_empty()
+    }
+
+    /// `R(q)` with the committed bearing states and the cables' trial tension at `q`
+    /// (`bodies` in the reference pose).
+    pub fn force(&self, q: &State, bodies: &[SegmentBody]) -> State {
+        let mut r = State::zeros(q.len());
+        for b in &self.bearings {
+            let fp = (1.0 - b.law.b()) * b.law.k0() * b.state.u_p;
+            let o = 3 * b.body;
+            r[o] += fp.x;
+            r[o + 1] += fp.y;
+            r[o + 2] += -b.arm.y * fp.x + b.arm.x * fp.y;
+        }
+        for c in &self.cables {
+            let (pa, pb, ga, gb) = cable_points(c, q, bodies);
+            let d = pb - pa;
+            let len = d.norm();
+            let f = c.element.trial(len - c.length).force;
+            if f == 0.0 || len == 0.0 {
+                continue;
+            }
+            let n = d / len;
+            for (j, p, g, s) in [(c.a.0, pa, ga, f), (c.b.0, pb, gb, -f)] {
+                let fv = n * s;
+                r[3 * j] += fv.x;
+                r[3 * j + 1] += fv.y;
+                r[3 * j + 2] += cross(&(p - g), &fv);
+            }
+        }
+        r
+    }
+
+    /// Books the work `−h ū·R` of the step done on the elements.
+    pub fn book(&mut self, h: Real, u_mid: &State, r: &State, bodies: usize) {
+        if self.w_bearings.len() < bodies {
+            self.w_bearings.resize(bodies, 0.0);
+        }
+        // split R into the bearing and cable parts per segment: recompute the bearing part
+        let mut rb = State::zeros(r.len());
+        for b in &self.bearings {
+            let fp = (1.0 - b.law.b()) * b.law.k0() * b.state.u_p;
+            let o = 3 * b.body;
+            rb[o] += fp.x;
+            rb[o + 1] += fp.y;
+            rb[o + 2] += -b.arm.y * fp.x + b.arm.x * fp.y;
+        }
+        for (j, w) in self.w_bearings.iter_mut().enumerate() {
+            let s: Real = (0..3).map(|i| u_mid[3 * j + i] * rb[3 * j + i]).sum();
+            *w -= h * s;
+        }
+        let rc = r - &rb;
+        self.w_cables -= h * u_mid.dot(&rc);
+    }
+
+    /// Commits the return mappings at the new state `q`.
+    pub fn commit(&mut self, q: &State, bodies: &[SegmentBody]) {
+        for b in &mut self.bearings {
+            let u = deformation(q, b.body, &b.arm);
+            b.state = b.law.response(&u, &b.state).trial;
+        }
+        for i in 0..self.cables.len() {
+            let (pa, pb, _, _) = cable_points(&self.cables[i], q, bodies);
+            let c = &mut self.cables[i];
+            let resp: RestrainerResponse = c.element.trial((pb - pa).norm() - c.length);
+            c.element.commit(&resp);
+        }
+    }
+
+    /// `(Σ stored − Σ ½ k0 |u|²)` of each segment's yielding bearings at `q`: what the bearings
+    /// store beyond the linear `½ qᵀ K q`.
+    pub fn bearing_energy_correction(&self, q: &State, bodies: usize) -> Vec<Real> {
+        let mut out = vec![0.0; bodies];
+        for b in &self.bearings {
+            let u = deformation(q, b.body, &b.arm);
+            out[b.body] += b.law.stored_energy(&b.state) - 0.5 * b.law.k0() * u.norm_squared();
+        }
+        out
+    }
+}
+
+/// Linearised deformation `u = (x − θ r_y, y + θ r_x)` of a bearing with arm `r` on `body`.
+fn deformation(q: &State, body: usize, r: &Vector) -> Vector {
+    let (x, y, th) = (q[3 * body], q[3 * body + 1], q[3 * body + 2]);
+    Vector::new(x - th * r.y, y + th * r.x)
+}
+
+/// The cable's anchors and the two current centroids at `q`.
+fn cable_points(c: &Cable, q: &State, bodies: &[SegmentBody]) -> (Vector, Vector, Vector, Vector) {
+    let place = |(j, p0): (usize, Vector)| {
+        let d = Vector::new(q[3 * j], q[3 * j + 1]);
+        let sc = q[3 * j + 2].sin_cos();
+        (bodies[j].place(&p0, &d, sc), bodies[j].centroid + d)
+    };
+    let (pa, ga) = place(c.a);
+    let (pb, gb) = place(c.b);
+    (pa, pb, ga, gb)
+}
