@@ -1,5 +1,6 @@
 //! End-to-end tests of the `pounding` binary (one test binary; one module per subcommand).
 
+mod bridge;
 mod impact;
 
 use std::process::Command;

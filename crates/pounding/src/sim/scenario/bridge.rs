@@ -51,7 +51,7 @@ type Sp<T> = Option<Spanned<T>>;
 pub(crate) struct BridgeRaw {
     #[serde(default)]
     bridge: Table<BridgeSec>,
-    segment: Vec<SegmentSec>,
+    segment: Vec<Spanned<SegmentSec>>,
     #[serde(default)]
     joint: Vec<Spanned<JointSec>>,
     #[serde(default)]
@@ -262,7 +262,7 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
     let n = raw.segment.len();
     let mut segments = Vec::with_capacity(n);
     for (i, s) in raw.segment.iter().enumerate() {
-        segments.push(segment(&v, i, s)?);
+        segments.push(segment(&v, i, s.get_ref())?);
     }
     let nj = n - 1;
     if !raw.joint.is_empty() && raw.joint.len() != nj {
@@ -356,9 +356,7 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
     };
     let (ground, records, units) = build_ground(sc)?;
     let settings = build_settings(sc, &ground, &records, || {
-        model
-            .validate()
-            .map_err(|e| ScenarioError::Model(Box::new(e)))?;
+        model.validate().map_err(|e| model_error(&v, raw, e))?;
         Ok(())
     })?;
     Ok(BridgeSetup {
@@ -367,6 +365,46 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
         records,
         units,
     })
+}
+
+/// A model error (named `segment[i].key`, `joint[k].key`, `abutment.side.key`, `bridge.key`) with
+/// the line of that key, or of its table when the key is not written there.
+fn model_error(v: &Val, raw: &BridgeRaw, e: crate::sim::SimError) -> ScenarioError {
+    use crate::sim::SimError;
+    let (name, message) = match &e {
+        SimError::InvalidParameter { name, .. } | SimError::InvalidArgument { name, .. } => {
+            (name.clone(), e.to_string())
+        }
+        _ => return ScenarioError::Model(Box::new(e)),
+    };
+    let index = |prefix: &str| -> Option<usize> {
+        let rest = name.strip_prefix(prefix)?;
+        rest.split(']').next()?.parse().ok()
+    };
+    let line = if let Some(i) = index("segment[") {
+        raw.segment.get(i).map(|t| v.line(t))
+    } else if let Some(k) = index("joint[") {
+        // faces of different widths: the `width` of the segment after the joint (or before it),
+        // else that segment's table; other joint keys: the joint's table
+        let width = |i: usize| {
+            raw.segment
+                .get(i)
+                .and_then(|t| t.get_ref().width.as_ref().map(|w| v.line(w)))
+        };
+        if name.ends_with(".width") {
+            width(k + 1)
+                .or_else(|| width(k))
+                .or_else(|| raw.segment.get(k + 1).map(|t| v.line(t)))
+        } else {
+            raw.joint
+                .get(k)
+                .map(|t| v.line(t))
+                .or_else(|| raw.segment.get(k + 1).map(|t| v.line(t)))
+        }
+    } else {
+        None
+    };
+    v.err(name, line, message)
 }
 
 /// The restrainer of joint `k` from its keys or the `[bridge]` defaults: present when

@@ -73,6 +73,43 @@ history_every = 10   # write every n-th step to history.csv (peaks use every ste
 # friction_velocity = 1e-3  # regularisation of Coulomb friction [m/s]
 # Also: [decks] mass1 / mass2 (deck mass directly) and [bearings] damping = "dashpots"
 # (c = 2 zeta m omega to the ground, x and y) instead of "rayleigh".
+
+# ---- A whole bridge instead of two decks -------------------------------------------------
+# A file with [[segment]] tables describes N >= 1 segments in a row (segment 1 at the start,
+# joint k between segments k and k + 1); [decks], [joint], [abutments] and [bearings] are then
+# not allowed, while [contact], [ground_motion] and [time] are as above. The chain is laid out
+# along -y from the start (see the README, "Whole bridges"; examples/viaduct-*.toml).
+# [bridge]
+# damping = "dashpots"      # or "rayleigh"
+# damping_ratio = 0.05
+# gap = 0.02                # defaults of every joint: gap [m], mu, eps_n, seat_length [m]
+# mu = 0.0
+# eps_n = 0.6
+# seat_length = 0.4
+# outer_seat_length = 0.4   # seat of an outer end without an abutment [m]
+# restrainer_k = 5.0e7      # optional restrainer at every joint [N/m]; restrainer_slack [m],
+# restrainer_slack = 0.03   #   restrainer_fy [N] (yield; none by default)
+#
+# [[segment]]               # one table per segment, from the start
+# shape = "straight"        # "straight" (L), "skew" (L, skew_deg) or "curved" (R, beta_deg,
+# L = 30.0                  #   curve = "left" / "right"; default: alternating, left first)
+# mass = 1.0e6              # optional (else width 10, thickness 0.5, density 2500)
+# period_s = 1.2            # four corner bearings of this translational period, or
+#                           # bearing_stiffness = ... per corner bearing [N/m]
+# bearing = "bilinear"      # optional yielding bearings: fy [N] (all four together), b in [0, 1)
+# fy = 588399.0
+# b = 0.1
+#
+# [[segment]]
+# shape = "straight"
+# L = 30.0
+# period_s = 0.5
+#
+# [[joint]]                 # optional: N - 1 tables overriding the [bridge] defaults
+# gap = 0.02
+#
+# [abutment.start]          # optional; also [abutment.end]: gap, seat_length, mu, eps_n
+# gap = 0.04
 "#;
 
 #[derive(Deserialize, Default, Clone, Debug)]

@@ -1,0 +1,190 @@
+//! `pounding simulate` of bridges of `[[segment]]`s (issue 11): a run writes its files with the
+//! per-joint / per-abutment / per-segment summary arrays; bad input is an error naming the key
+//! (with its array index) and its line, exit 2, nothing written.
+
+use crate::{run_capture, scratch_dir};
+
+/// A short rigid three-segment bridge (1 s of El Centro).
+const BRIDGE: &str = r#"
+[bridge]
+damping = "dashpots"
+gap = 0.02
+mu = 0.0
+eps_n = 0.6
+
+[[segment]]
+shape = "straight"
+L = 30.0
+mass = 1.0e6
+period_s = 1.2
+
+[[segment]]
+shape = "straight"
+L = 30.0
+mass = 1.2e6
+period_s = 0.5
+
+[[segment]]
+shape = "straight"
+L = 30.0
+mass = 0.8e6
+period_s = 1.5
+
+[abutment.start]
+gap = 0.04
+
+[abutment.end]
+gap = 0.04
+
+[ground_motion]
+record_y = "builtin:ELC180"
+record_x = "none"
+scale_y = -3.0
+
+[time]
+dt = 1e-3
+duration = 3.0
+"#;
+
+fn simulate(name: &str, text: &str) -> (Option<i32>, String, std::path::PathBuf) {
+    let d = scratch_dir("bridge", name);
+    let f = d.join("bridge.toml");
+    std::fs::write(&f, text).unwrap();
+    let out = d.join("out");
+    let (code, _, err) = run_capture(&[
+        "simulate",
+        f.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    (code, err, out)
+}
+
+#[test]
+fn bridge_run_writes_its_files_with_arrays_in_bridge_order() {
+    let (code, err, out) = simulate("run", BRIDGE);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(err.contains("bridge of 3 segments"), "{err}");
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(s["joints"].as_array().unwrap().len(), 2);
+    assert_eq!(s["segments"].as_array().unwrap().len(), 3);
+    assert_eq!(s["abutments"].as_array().unwrap().len(), 2);
+    assert!(
+        s["joints"][0]["peak_contact_force_n"].is_null(),
+        "rigid: no force"
+    );
+    assert!(
+        s["joints"][0]["restrainer_peak_force_n"].is_null(),
+        "no restrainer"
+    );
+    assert!(s["impacts"].as_u64().unwrap() > 0);
+    let h = std::fs::read_to_string(out.join("history.csv")).unwrap();
+    let head = h.lines().next().unwrap();
+    for col in [
+        "y3_m",
+        "joint2_gap_c1_m",
+        "abutment_end_gap_m",
+        "element_work_J",
+    ] {
+        assert!(head.split(',').any(|c| c == col), "{col} in {head}");
+    }
+    let imp = std::fs::read_to_string(out.join("impacts.csv")).unwrap();
+    assert!(
+        imp.lines()
+            .skip(1)
+            .any(|l| l.split(',').nth(2) == Some("joint1"))
+    );
+    assert!(out.join("timing.json").exists());
+    // same input, same bytes
+    let (code, _, out2) = simulate("run2", BRIDGE);
+    assert_eq!(code, Some(0));
+    for f in ["history.csv", "impacts.csv", "summary.json"] {
+        assert_eq!(
+            std::fs::read(out.join(f)).unwrap(),
+            std::fs::read(out2.join(f)).unwrap(),
+            "{f}"
+        );
+    }
+}
+
+#[test]
+fn bad_bridges_name_the_key_and_line_and_write_nothing() {
+    let cases: &[(&str, &str, &[&str])] = &[
+        // (replace, with, expected fragments)
+        (
+            "gap = 0.02\nmu",
+            "gap = -0.02\nmu",
+            &["bridge.gap", "bridge.toml:4", "must be >= 0"],
+        ),
+        (
+            "period_s = 0.5",
+            "period_s = 0.5\nbearing = \"bilinear\"\nfy = 1e5\nb = 1.0",
+            &["segment[1].b", "must lie in [0, 1)"],
+        ),
+        (
+            "period_s = 0.5",
+            "period_s = 0.5\nbearing = \"bilinear\"\nfy = 0.0\nb = 0.1",
+            &["segment[1].fy", "must be > 0"],
+        ),
+        (
+            "period_s = 1.5\n",
+            "\n",
+            &["segment[2].period_s", "needs its bearings"],
+        ),
+        (
+            "[abutment.start]",
+            "[[joint]]\ngap = 0.01\n\n[abutment.start]",
+            &["3 segments have 2 joints", "1 [[joint]]"],
+        ),
+        (
+            "mass = 0.8e6",
+            "mass = 0.8e6\nwidth = 12.0",
+            &["joint[1].width", "same length", "bridge.toml:24"],
+        ),
+        (
+            "mass = 0.8e6",
+            "mass = 0.8e6\nlength = 3.0",
+            &["unknown field", "length"],
+        ),
+        (
+            "[abutment.start]",
+            "[decks]\nR1 = 100.0\n\n[abutment.start]",
+            &["unknown field", "decks"],
+        ),
+        (
+            "eps_n = 0.6",
+            "eps_n = 0.6\nrestrainer_slack = 0.03",
+            &["bridge.restrainer_slack", "restrainer_k"],
+        ),
+        (
+            "eps_n = 0.6",
+            "eps_n = 0.6\nrestrainer_k = -5e7",
+            &["bridge.restrainer_k", "must be > 0"],
+        ),
+        (
+            "shape = \"straight\"\nL = 30.0\nmass = 1.2e6",
+            "shape = \"curved\"\nL = 30.0\nmass = 1.2e6",
+            &["segment[1].R", "required"],
+        ),
+        (
+            "[abutment.end]\ngap = 0.04",
+            "[abutment.end]\ngap = 0.04\nseat_length = -1.0",
+            &["abutment.end.seat_length", "must be > 0"],
+        ),
+    ];
+    for (i, (from, to, want)) in cases.iter().enumerate() {
+        assert!(BRIDGE.contains(from), "case {i}: {from}");
+        let text = BRIDGE.replacen(from, to, 1);
+        let (code, err, out) = simulate(&format!("bad{i}"), &text);
+        assert_eq!(code, Some(2), "case {i}: {err}");
+        for w in *want {
+            assert!(err.contains(w), "case {i}: {w:?} not in {err}");
+        }
+        assert!(!err.contains("panicked"), "{err}");
+        assert!(
+            !out.exists() || std::fs::read_dir(&out).unwrap().next().is_none(),
+            "case {i} wrote files"
+        );
+    }
+}
