@@ -7,7 +7,10 @@ use super::sections::DecksSec;
 use crate::contact_law::registry::{self, BuildError, LawInputs};
 use crate::contact_law::{ContactLaw, ContactLawError};
 use crate::sim::{ComplianceContact, DampingModel, JointContact, SimModel};
-use serde::Deserialize;
+use serde::de::{self, Deserialize, Deserializer, MapAccess, Visitor};
+use std::collections::BTreeMap;
+use std::fmt;
+use std::sync::LazyLock;
 
 /// The default list of `pounding compare --laws`, in order: `rigid` and the five laws of the
 /// first release (kept explicit so that `compare`'s output stays as it is when the
@@ -22,45 +25,82 @@ pub const LAW_NAMES: [&str; 6] = [
 ];
 
 /// `[contact]`: the joint's normal contact law. Every key optional.
-#[derive(Deserialize, Default, Clone, Debug)]
-#[serde(deny_unknown_fields, default)]
+///
+/// The section is read generically from the [`registry`], so that a new law with a new key
+/// needs no change here: its keys are `law`, `friction_velocity` (every compliance law) and
+/// every key that some registered law lists ([`registry::law_keys`]); all are numbers but `law`
+/// and `calibration` ([`registry::CALIBRATION_KEY`]), which are text. Any other key, or a value
+/// of the wrong type, is refused while the TOML is read (the message names the line).
+#[derive(Default, Clone, Debug)]
 pub struct ContactSec {
-    /// `rigid` (default), `kelvin`, `hertz`, `hertz-damp`, `bilinear`, `jankowski`, `linear`.
+    /// `rigid` (default) or a [`registry`] name (`kelvin`, `hertz`, …).
     pub law: Option<String>,
-    /// Kelvin and linear stiffness \\[N/m\\].
-    pub k: Option<f64>,
-    /// Kelvin damping \\[N s/m\\] (instead of `restitution`).
-    pub c: Option<f64>,
-    /// Hertz stiffness \\[N/m^1.5\\].
-    pub k_h: Option<f64>,
-    /// Hertz-damp constant damping ratio.
-    pub zeta: Option<f64>,
-    /// Hertz-damp per-impact damping factor.
-    pub chi: Option<f64>,
-    /// Target restitution of the damped laws (default: `\\[joint\\] eps_n`).
-    pub restitution: Option<f64>,
-    /// How the damping follows from `restitution`.
+    /// How the damping follows from `restitution` (the law's [`registry::LawInputs::calibration`]).
     pub calibration: Option<String>,
-    /// Hertz-damp design impact velocity \\[m/s\\].
-    pub design_velocity: Option<f64>,
-    /// Hertz-damp floor of the impact velocity \\[m/s\\].
-    pub min_velocity: Option<f64>,
-    /// Bilinear first stiffness \\[N/m\\].
-    pub k1: Option<f64>,
-    /// Bilinear second stiffness \\[N/m\\].
-    pub k2: Option<f64>,
-    /// Bilinear yield penetration \\[m\\].
-    pub delta_y: Option<f64>,
-    /// Bilinear design maximum penetration \\[m\\].
-    pub delta_m: Option<f64>,
-    /// Bilinear yield ratio.
-    pub a: Option<f64>,
-    /// Jankowski stiffness \\[N/m^1.5\\].
-    pub beta: Option<f64>,
-    /// Jankowski damping ratio.
-    pub xi: Option<f64>,
     /// Regularisation velocity of Coulomb friction \\[m/s\\].
     pub friction_velocity: Option<f64>,
+    /// The numeric law keys given, by name ([`registry::law_keys`]).
+    pub values: BTreeMap<&'static str, f64>,
+}
+
+impl ContactSec {
+    /// The value of the numeric law key `key` (`None`: not given).
+    fn value(&self, key: &str) -> Option<f64> {
+        self.values.get(key).copied()
+    }
+}
+
+/// Every key of `[contact]`: `law`, the registered laws' keys, `friction_velocity`.
+fn section_keys() -> &'static [&'static str] {
+    static KEYS: LazyLock<Vec<&'static str>> = LazyLock::new(|| {
+        let mut keys = vec!["law"];
+        keys.extend_from_slice(registry::law_keys());
+        keys.push("friction_velocity");
+        keys
+    });
+    &KEYS
+}
+
+/// A `[contact]` key, checked against [`section_keys`] as it is read (so that the TOML reader's
+/// message points at it).
+struct Key(&'static str);
+
+impl<'de> Deserialize<'de> for Key {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let name = String::deserialize(d)?;
+        let keys = section_keys();
+        match keys.iter().find(|&&k| k == name) {
+            Some(k) => Ok(Key(k)),
+            None => Err(de::Error::unknown_field(&name, keys)),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for ContactSec {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = ContactSec;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("the [contact] table")
+            }
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<ContactSec, A::Error> {
+                let mut sec = ContactSec::default();
+                while let Some(Key(key)) = map.next_key()? {
+                    match key {
+                        "law" => sec.law = Some(map.next_value()?),
+                        registry::CALIBRATION_KEY => sec.calibration = Some(map.next_value()?),
+                        "friction_velocity" => sec.friction_velocity = Some(map.next_value()?),
+                        _ => {
+                            sec.values.insert(key, map.next_value()?);
+                        }
+                    }
+                }
+                Ok(sec)
+            }
+        }
+        d.deserialize_map(V)
+    }
 }
 
 pub use crate::contact_law::registry::{
@@ -90,29 +130,6 @@ const fn contact(key: &'static str) -> ParamKey {
     ParamKey::new(Section::Contact, key)
 }
 
-/// The value of the numeric `[contact]` key `key` (`None`: not given, or not a numeric key).
-fn numeric_key(sec: &ContactSec, key: &str) -> Option<f64> {
-    match key {
-        "k" => sec.k,
-        "c" => sec.c,
-        "k_h" => sec.k_h,
-        "zeta" => sec.zeta,
-        "chi" => sec.chi,
-        "restitution" => sec.restitution,
-        "design_velocity" => sec.design_velocity,
-        "min_velocity" => sec.min_velocity,
-        "k1" => sec.k1,
-        "k2" => sec.k2,
-        "delta_y" => sec.delta_y,
-        "delta_m" => sec.delta_m,
-        "a" => sec.a,
-        "beta" => sec.beta,
-        "xi" => sec.xi,
-        "friction_velocity" => sec.friction_velocity,
-        _ => None,
-    }
-}
-
 /// The compliance law `name` (not `rigid`) from the `[contact]` keys and their defaults,
 /// built by its [`registry`] entry.
 fn compliance_law(
@@ -133,11 +150,11 @@ fn compliance_law(
         ));
     };
     let cal = sec.calibration.as_deref().unwrap_or("numerical");
-    let values = |key: &str| numeric_key(sec, key);
+    let values = |key: &str| sec.value(key);
     let inputs = LawInputs {
         values: &values,
         calibration: cal,
-        restitution: sec.restitution.unwrap_or(eps_n),
+        restitution: sec.value("restitution").unwrap_or(eps_n),
         masses,
     };
     (entry.build)(&inputs).map_err(|e| match e {
