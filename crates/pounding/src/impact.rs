@@ -624,10 +624,10 @@ fn is_singular(g: &[Real], k: usize) -> bool {
 /// Solves the impact problem (see the module documentation for the model and the LCP).
 ///
 /// In order: no approaching contact → [`ImpactStatus::NoImpact`]; else Lemke on the impact LCP
-/// ([`lemke_impact`]); enumeration of the LCP's solutions when the policy asks for it
-/// ([`enumerated_solutions`]: how many distinct impulses, whether the post-impact velocity is
+/// (`lemke_impact`); enumeration of the LCP's solutions when the policy asks for it
+/// (`enumerated_solutions`: how many distinct impulses, whether the post-impact velocity is
 /// unique); then the first of Lemke's solution, the first enumerated one, the closed form of a
-/// single contact ([`single_contact_fallback`]) that exists; else [`ImpactStatus::Failed`].
+/// single contact (`single_contact_fallback`) that exists; else [`ImpactStatus::Failed`].
 pub fn solve(problem: &ImpactProblem, settings: &ImpactSettings) -> ImpactSolution {
     let pre = PreImpact::new(problem, settings);
     let n = pre.asm.nc;
