@@ -9,19 +9,14 @@
 //! (total joint force of the compliance laws), each with a full-duration panel and a zoom around
 //! the largest contact event.
 
+mod plots;
+
 use crate::cmd_simulate;
-use crate::plot_style::{
-    BLUE, DARK, DrawResult, FAMILY, GREEN, ORANGE, PURPLE, RED, e, register, save_white_png,
-    series_legend,
-};
 use anyhow::{Context, Result, anyhow, bail};
-use plotters::coord::Shift;
-use plotters::prelude::*;
-use pounding::contact_law::registry::law_names;
 use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
 use pounding::sim::output::{COMPARE_OUTPUTS, compare_csv, compare_table};
-use pounding::sim::scenario::LAW_NAMES;
+use pounding::sim::scenario::SimSetup;
 use pounding::sim::{SimSolution, simulate};
 use serde_json::json;
 use std::path::{Path, PathBuf};
@@ -57,15 +52,50 @@ struct Run {
     gap0: Real,
 }
 
-/// Runs `pounding compare`.
+/// Runs `pounding compare`: checks `--laws` and `--dt`, builds and validates every law's run
+/// before running any, runs them, writes the outputs, and exits 1 if a run did not complete.
 pub fn run(args: Args) -> Result<ExitCode> {
     let t_start = Instant::now();
+    let laws = parse_laws(&args.laws)?;
+    if let Some(dt) = args.dt
+        && !(dt.is_finite() && dt > 0.0)
+    {
+        bail!("invalid --dt {}: must be finite and > 0", float_token(dt));
+    }
+    let setups = build_setups(&args, &laws)?;
+    pounding::output::check_output_dir_free(&args.out)?;
+    let runs = run_laws(&laws, &setups)?;
+    write_outputs(&args.out, &runs, t_start)?;
+    // Like `simulate`: a law whose run did not complete is written, then reported with exit 1.
+    let bad: Vec<String> = runs
+        .iter()
+        .filter(|r| r.sol.status != pounding::sim::SimStatus::Completed)
+        .map(|r| format!("{} ({:?})", r.law, r.sol.status))
+        .collect();
+    if !bad.is_empty() {
+        eprintln!(
+            "error: {} of {} laws ended with a status other than Completed: {}; their results are not \
+             trustworthy (see compare.csv, column status)",
+            bad.len(),
+            runs.len(),
+            bad.join(", ")
+        );
+        return Ok(ExitCode::FAILURE);
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The `--laws` list, trimmed: every name registered, none twice, not empty.
+fn parse_laws(given: &[String]) -> Result<Vec<String>> {
+    let names = pounding::contact_law::registry::law_names();
     let mut laws: Vec<String> = Vec::new();
-    for l in &args.laws {
+    for l in given {
         let l = l.trim().to_string();
-        if !law_names().contains(&l.as_str()) {
-            let names = law_names().join(", ");
-            bail!("unknown contact law {l:?} in --laws: use one of {names}");
+        if !names.contains(&l.as_str()) {
+            bail!(
+                "unknown contact law {l:?} in --laws: use one of {}",
+                names.join(", ")
+            );
         }
         if laws.contains(&l) {
             bail!("contact law {l:?} is given twice in --laws");
@@ -75,17 +105,19 @@ pub fn run(args: Args) -> Result<ExitCode> {
     if laws.is_empty() {
         bail!("--laws is empty");
     }
-    if let Some(dt) = args.dt
-        && !(dt.is_finite() && dt > 0.0)
-    {
-        bail!("invalid --dt {}: must be finite and > 0", float_token(dt));
-    }
-    // Build (and validate) every law's setup before running anything.
-    let base = cmd_simulate::load_scenario(args.scenario.as_deref())?.with_compared_laws(&laws);
+    Ok(laws)
+}
+
+/// Every law's validated setup (scenario with the law, `--dt`, a history sample per 0.5 ms for
+/// the plots), with the rules of `simulate` (a step no longer than the run, not too many steps)
+/// and the memory of all histories together within the limit. A `[contact]` key that no law of
+/// `laws` reads is refused first (`Scenario::check_contact_keys` after `with_compared_laws`).
+fn build_setups(args: &Args, laws: &[String]) -> Result<Vec<SimSetup>> {
+    let base = cmd_simulate::load_scenario(args.scenario.as_deref())?.with_compared_laws(laws);
     base.check_contact_keys()?;
     let mut setups = Vec::new();
     let mut memory = 0u64;
-    for l in &laws {
+    for l in laws {
         let mut s = base
             .clone()
             .with_law(l)
@@ -94,10 +126,8 @@ pub fn run(args: Args) -> Result<ExitCode> {
         if let Some(dt) = args.dt {
             s.settings.dt = dt;
         }
-        // history resolution for the plots: at least one sample per 0.5 ms
         s.settings.history_stride = ((5e-4 / s.settings.dt).floor() as usize).max(1);
         s.settings.validate().map_err(|e| anyhow!("{e} (--dt)"))?;
-        // Same rules as `simulate`: a step no longer than the run, and not too many steps.
         let d = s
             .settings
             .duration
@@ -117,7 +147,6 @@ pub fn run(args: Args) -> Result<ExitCode> {
         memory += pounding::sim::options::run_memory_bytes(n, s.settings.history_stride);
         setups.push(s);
     }
-    // every law's history is kept for the plots: the runs together must fit
     let limit = pounding::sim::options::MAX_RUN_MEMORY_BYTES;
     if memory > limit {
         bail!(
@@ -129,9 +158,13 @@ pub fn run(args: Args) -> Result<ExitCode> {
             limit as Real / (1u64 << 30) as Real
         );
     }
-    pounding::output::check_output_dir_free(&args.out)?;
+    Ok(setups)
+}
+
+/// Runs every law in turn, reporting each on stderr (steps, time, status, time-step warnings).
+fn run_laws(laws: &[String], setups: &[SimSetup]) -> Result<Vec<Run>> {
     let mut runs = Vec::new();
-    for (l, s) in laws.iter().zip(&setups) {
+    for (l, s) in laws.iter().zip(setups) {
         let t = Instant::now();
         let sol = simulate(&s.problem, &s.settings).map_err(|e| anyhow!("law {l:?}: {e}"))?;
         let secs = t.elapsed().as_secs_f64();
@@ -154,8 +187,11 @@ pub fn run(args: Args) -> Result<ExitCode> {
             gap0: s.problem.model.gap,
         });
     }
+    Ok(runs)
+}
 
-    let out = &args.out;
+/// Writes `compare.csv`, the table on stdout, the plots and `timing.json` into the locked `out`.
+fn write_outputs(out: &Path, runs: &[Run], t_start: Instant) -> Result<()> {
     let lock = pounding::output::lock_output_dir(out)?;
     pounding::output::remove_previous_outputs(&lock, COMPARE_OUTPUTS)?;
     let rows: Vec<(&str, &SimSolution)> = runs.iter().map(|r| (r.law.as_str(), &r.sol)).collect();
@@ -165,9 +201,9 @@ pub fn run(args: Args) -> Result<ExitCode> {
     };
     wr("compare.csv", compare_csv(&rows).as_bytes())?;
     print!("{}", compare_table(&rows));
-    plots(out, &runs).map_err(|e| anyhow!("plotting: {e}"))?;
+    plots::plots(out, runs).map_err(|e| anyhow!("plotting: {e}"))?;
     let mut timing = serde_json::Map::new();
-    for r in &runs {
+    for r in runs {
         timing.insert(
             r.law.clone(),
             json!({"simulate_s": r.secs, "steps": r.sol.steps}),
@@ -179,221 +215,5 @@ pub fn run(args: Args) -> Result<ExitCode> {
         (serde_json::to_string_pretty(&timing)? + "\n").as_bytes(),
     )?;
     eprintln!("outputs in {}", out.display());
-    // Like `simulate`: a law whose run did not complete is written, then reported with exit 1.
-    let bad: Vec<String> = runs
-        .iter()
-        .filter(|r| r.sol.status != pounding::sim::SimStatus::Completed)
-        .map(|r| format!("{} ({:?})", r.law, r.sol.status))
-        .collect();
-    if !bad.is_empty() {
-        eprintln!(
-            "error: {} of {} laws ended with a status other than Completed: {}; their results are not \
-             trustworthy (see compare.csv, column status)",
-            bad.len(),
-            runs.len(),
-            bad.join(", ")
-        );
-        return Ok(ExitCode::FAILURE);
-    }
-    Ok(ExitCode::SUCCESS)
-}
-
-// ---------------------------------------------------------------- plots
-
-type R = DrawResult;
-
-const COLORS: [RGBColor; 6] = [DARK, BLUE, GREEN, RED, ORANGE, PURPLE];
-
-fn color_of(law: &str) -> RGBColor {
-    let i = LAW_NAMES.iter().position(|l| *l == law).unwrap_or(0);
-    COLORS[i % COLORS.len()]
-}
-
-/// `(t, smaller end gap)` and `(t, total joint force)` series of one run.
-type Pts = Vec<(Real, Real)>;
-
-fn series(r: &Run) -> (Pts, Pts) {
-    let h = &r.sol.history;
-    let gap =
-        h.t.iter()
-            .zip(&h.end_gaps)
-            .map(|(t, g)| {
-                let m = g
-                    .iter()
-                    .copied()
-                    .filter(|x| x.is_finite())
-                    .fold(Real::INFINITY, Real::min);
-                (*t, if m.is_finite() { m } else { Real::NAN })
-            })
-            .collect();
-    let force =
-        h.t.iter()
-            .zip(&h.contact_force)
-            .map(|(t, f)| (*t, (f[0] + f[1]) / 1e6))
-            .collect();
-    (gap, force)
-}
-
-/// The zoom window: ±0.25 s around the instant of the largest compliance force, or around the
-/// first rigid impact, or the first second.
-fn zoom_window(runs: &[Run]) -> (Real, Real) {
-    let mut best: Option<(Real, Real)> = None;
-    for r in runs {
-        let (_, f) = series(r);
-        for (t, v) in f {
-            if best.is_none_or(|(_, b)| v > b) {
-                best = Some((t, v));
-            }
-        }
-    }
-    let tc = match best {
-        Some((t, v)) if v > 0.0 => t,
-        _ => runs
-            .iter()
-            .filter_map(|r| r.sol.impacts.first().map(|i| i.time))
-            .fold(Real::INFINITY, Real::min),
-    };
-    if tc.is_finite() {
-        ((tc - 0.25).max(0.0), tc + 0.25)
-    } else {
-        (0.0, 1.0)
-    }
-}
-
-fn panel<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    title: &str,
-    ylabel: &str,
-    (t0, t1): (Real, Real),
-    curves: &[(&str, Vec<(Real, Real)>)],
-    hline: Option<(Real, &str)>,
-) -> R {
-    let mut lo = Real::INFINITY;
-    let mut hi = Real::NEG_INFINITY;
-    for (_, pts) in curves {
-        for &(t, y) in pts {
-            if t >= t0 && t <= t1 && y.is_finite() {
-                lo = lo.min(y);
-                hi = hi.max(y);
-            }
-        }
-    }
-    if let Some((y, _)) = hline.filter(|h| h.0.is_finite()) {
-        lo = lo.min(y);
-        hi = hi.max(y);
-    }
-    let (lo, hi) = crate::figures::sane_range(lo, hi, (0.0, 1.0));
-    let pad = ((hi - lo) * 0.08).max(1e-9);
-    let mut chart = ChartBuilder::on(area)
-        .caption(title, (FAMILY, 20))
-        .margin(10)
-        .x_label_area_size(40)
-        .y_label_area_size(80)
-        .build_cartesian_2d(t0..t1, (lo - pad)..(hi + pad))
-        .map_err(e)?;
-    chart
-        .configure_mesh()
-        .x_desc("time t [s]")
-        .y_desc(ylabel)
-        .label_style((FAMILY, 14))
-        .axis_desc_style((FAMILY, 15))
-        .light_line_style(RGBColor(235, 235, 235))
-        .draw()
-        .map_err(e)?;
-    if let Some((y, label)) = hline {
-        chart
-            .draw_series(DashedLineSeries::new(
-                vec![(t0, y), (t1, y)],
-                6,
-                4,
-                RGBColor(120, 120, 120).stroke_width(1),
-            ))
-            .map_err(e)?
-            .label(label)
-            .legend(|(x, y)| {
-                PathElement::new(
-                    vec![(x, y), (x + 20, y)],
-                    RGBColor(120, 120, 120).stroke_width(1),
-                )
-            });
-    }
-    for (law, pts) in curves {
-        let c = color_of(law);
-        chart
-            .draw_series(LineSeries::new(
-                pts.iter()
-                    .copied()
-                    .filter(|&(t, y)| t >= t0 && t <= t1 && y.is_finite()),
-                c.stroke_width(if *law == "rigid" { 2 } else { 1 }),
-            ))
-            .map_err(e)?
-            .label(*law)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2)));
-    }
-    series_legend(&mut chart, SeriesLabelPosition::UpperRight, BLACK, 14)
-}
-
-fn save(out: &Path, name: &str, draw: impl Fn(&DrawingArea<BitMapBackend, Shift>) -> R) -> R {
-    save_white_png(out, name, (1200, 900), draw)
-}
-
-fn plots(out: &Path, runs: &[Run]) -> R {
-    register();
-    let t_end = runs
-        .iter()
-        .filter_map(|r| r.sol.history.t.last().copied())
-        .fold(0.0, Real::max)
-        .max(1e-9);
-    let zoom = zoom_window(runs);
-    let all: Vec<(&str, (Pts, Pts))> = runs.iter().map(|r| (r.law.as_str(), series(r))).collect();
-    let gaps: Vec<(&str, Vec<(Real, Real)>)> =
-        all.iter().map(|(l, (g, _))| (*l, g.clone())).collect();
-    let forces: Vec<(&str, Vec<(Real, Real)>)> = all
-        .iter()
-        .filter(|(_, (_, f))| !f.is_empty())
-        .map(|(l, (_, f))| (*l, f.clone()))
-        .collect();
-    let gap0 = runs.first().map_or(0.0, |r| r.gap0);
-    save(out, "joint_gap.png", |root| {
-        let (a, b) = root.split_vertically(450);
-        panel(
-            &a,
-            "Joint gap (smaller of the two ends) by contact law",
-            "gap [m]",
-            (0.0, t_end),
-            &gaps,
-            Some((0.0, "contact")),
-        )?;
-        panel(
-            &b,
-            &format!(
-                "zoom {:.2}–{:.2} s (reference gap {} m)",
-                zoom.0, zoom.1, gap0
-            ),
-            "gap [m]",
-            zoom,
-            &gaps,
-            Some((0.0, "contact")),
-        )
-    })?;
-    save(out, "contact_force.png", |root| {
-        let (a, b) = root.split_vertically(450);
-        panel(
-            &a,
-            "Total joint contact force (compliance laws; rigid contact has impulses only)",
-            "force [MN]",
-            (0.0, t_end),
-            &forces,
-            None,
-        )?;
-        panel(
-            &b,
-            &format!("zoom {:.2}–{:.2} s", zoom.0, zoom.1),
-            "force [MN]",
-            zoom,
-            &forces,
-            None,
-        )
-    })?;
     Ok(())
 }

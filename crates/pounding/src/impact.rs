@@ -622,174 +622,60 @@ fn is_singular(g: &[Real], k: usize) -> bool {
 }
 
 /// Solves the impact problem (see the module documentation for the model and the LCP).
+///
+/// In order: no approaching contact → [`ImpactStatus::NoImpact`]; else Lemke on the impact LCP
+/// (`lemke_impact`); enumeration of the LCP's solutions when the policy asks for it
+/// (`enumerated_solutions`: how many distinct impulses, whether the post-impact velocity is
+/// unique); then the first of Lemke's solution, the first enumerated one, the closed form of a
+/// single contact (`single_contact_fallback`) that exists; else [`ImpactStatus::Failed`].
 pub fn solve(problem: &ImpactProblem, settings: &ImpactSettings) -> ImpactSolution {
-    let asm = assemble(problem);
-    let n = asm.nc;
-    let laws: Vec<ImpactLaw> = problem.contacts.iter().map(|c| c.law).collect();
-    let gamma_pre = asm.gamma(&asm.u);
-    let e0 = asm.energy(&asm.u);
-    let scale = gamma_pre[..n]
-        .iter()
-        .fold(0.0, |m: Real, &g| m.max((-g).max(0.0)));
-    let finish = |status: ImpactStatus,
-                  lemke_status: LcpStatus,
-                  lambda: Option<Vec<Real>>,
-                  solutions: usize,
-                  enumerated: bool,
-                  unique: bool| {
-        let lambda = lambda.unwrap_or_else(|| vec![Real::NAN; 2 * n]);
-        let u = asm.post_velocity(&lambda);
-        let gamma_post = asm.gamma(&u);
-        let lmax = lambda[..n].iter().fold(0.0, |m: Real, &x| m.max(x));
-        let contacts = (0..n)
-            .map(|i| {
-                let (ln, lt) = (lambda[i], lambda[n + i]);
-                let gtp = gamma_post[n + i];
-                let mode = if ln.is_nan() || ln <= 1e-12 * lmax {
-                    ContactMode::Open
-                } else if gtp.abs() <= settings.stick_tolerance * scale {
-                    ContactMode::Stick
-                } else if gtp > 0.0 {
-                    ContactMode::SlipPositive
-                } else {
-                    ContactMode::SlipNegative
-                };
-                ContactResult {
-                    normal_impulse: ln,
-                    tangential_impulse: lt,
-                    mode,
-                    gamma_n_pre: gamma_pre[i],
-                    gamma_t_pre: gamma_pre[n + i],
-                    gamma_n_post: gamma_post[i],
-                    gamma_t_post: gtp,
-                }
-            })
-            .collect();
-        let bodies = (0..asm.nb)
-            .map(|b| BodyVelocity {
-                velocity: Vector::new(u[3 * b], u[3 * b + 1]),
-                omega: u[3 * b + 2],
-            })
-            .collect();
-        let energy_after = asm.energy(&u);
-        let law_violation = if matches!(
-            status,
-            ImpactStatus::Solved | ImpactStatus::SolvedByFallback
-        ) {
-            asm.check(
-                &laws,
-                &gamma_pre,
-                &lambda,
-                &u,
-                &gamma_post,
-                e0,
-                energy_after,
-            )
-            .err()
-        } else {
-            None
-        };
-        let status = if law_violation.is_some() {
-            ImpactStatus::IllConditioned
-        } else {
-            status
-        };
-        ImpactSolution {
+    let pre = PreImpact::new(problem, settings);
+    let n = pre.asm.nc;
+    let finish = |status, lemke_status, lambda, solutions, enumerated, unique| {
+        pre.finish(Outcome {
             status,
             lemke_status,
-            contacts,
-            bodies,
-            energy_before: e0,
-            energy_after,
+            lambda,
             solutions,
             enumerated,
-            post_velocity_unique: unique,
-            law_violation,
-        }
+            unique,
+        })
     };
-    if gamma_pre[..n].iter().all(|&g| g >= 0.0) {
+    if pre.gamma_pre[..n].iter().all(|&g| g >= 0.0) {
+        let zero = Some(vec![0.0; 2 * n]);
         return finish(
             ImpactStatus::NoImpact,
             LcpStatus::Solved,
-            Some(vec![0.0; 2 * n]),
+            zero,
             1,
             false,
             true,
         );
     }
-    let g = asm.delassus();
-    let (a, b) = impact_lcp(&g, &laws, &gamma_pre);
-    let d = 3 * n;
-    // Lemke (fixed-size kernels for one and two contacts)
-    let (lemke_status, z) = match n {
-        1 => {
-            let s = lcp::solve_fixed::<3>(&to_rows::<3>(&a), &to_arr::<3>(&b), &settings.lemke);
-            (s.status, s.z.to_vec())
-        }
-        2 => {
-            let s = lcp::solve_fixed::<6>(&to_rows::<6>(&a), &to_arr::<6>(&b), &settings.lemke);
-            (s.status, s.z.to_vec())
-        }
-        _ => match LcpProblem::new(a.clone(), b.clone()) {
-            Ok(p) => {
-                let s = lcp::Lemke::new(settings.lemke.clone()).solve(&p);
-                (s.status, s.z)
-            }
-            Err(_) => (LcpStatus::IllConditioned, vec![Real::NAN; d]),
-        },
-    };
+    let g = pre.asm.delassus();
+    let (a, b) = impact_lcp(&g, &pre.laws, &pre.gamma_pre);
+    let (lemke_status, z) = lemke_impact(n, &a, &b, settings);
     let want_enum = match settings.enumerate {
         EnumeratePolicy::OnFailure => !lemke_status.is_solved(),
         EnumeratePolicy::Auto => !lemke_status.is_solved() || is_singular(&g, 2 * n),
         EnumeratePolicy::Always => true,
-    } && d <= lcp::enumerate::MAX_ENUM_DIM;
+    } && 3 * n <= lcp::enumerate::MAX_ENUM_DIM;
     let mut enumerated: Option<Vec<Vec<Real>>> = None;
     if want_enum && let Ok(p) = LcpProblem::new(a, b) {
         enumerated = lcp::enumerate(&p).ok();
     }
-    // distinct physical solutions (Λ_N, Λ_T) and post velocities among the enumerated ones (plus
-    // Lemke's, which enumeration may miss when it is not a vertex of the solution set)
+    let lemke_z = lemke_status.is_solved().then_some(z.as_slice());
     let (count, unique, first) = match &enumerated {
-        Some(list) => {
-            let mut lam: Vec<Vec<Real>> = Vec::with_capacity(list.len() + 1);
-            if lemke_status.is_solved() {
-                lam.push(impulses(&z, &laws));
-            }
-            lam.extend(list.iter().map(|z| impulses(z, &laws)));
-            let lscale = lam
-                .iter()
-                .flatten()
-                .fold(1e-300, |m: Real, &x| m.max(x.abs()));
-            let mut distinct: Vec<&Vec<Real>> = Vec::new();
-            for l in &lam {
-                if !distinct
-                    .iter()
-                    .any(|d| d.iter().zip(l).all(|(x, y)| (x - y).abs() <= 1e-9 * lscale))
-                {
-                    distinct.push(l);
-                }
-            }
-            let us: Vec<Vec<Real>> = lam.iter().map(|l| asm.post_velocity(l)).collect();
-            let uscale = us
-                .iter()
-                .flatten()
-                .chain(asm.u.iter())
-                .fold(1e-300, |m: Real, &x| m.max(x.abs()));
-            let unique = us.iter().all(|v| {
-                v.iter()
-                    .zip(&us[0])
-                    .all(|(x, y)| (x - y).abs() <= 1e-9 * uscale)
-            });
-            (distinct.len(), unique, lam.first().cloned())
-        }
+        Some(list) => enumerated_solutions(&pre.asm, &pre.laws, lemke_z, list),
         None => (1, true, None),
     };
     let ran = enumerated.is_some();
-    if lemke_status.is_solved() {
+    if let Some(z) = lemke_z {
+        let lambda = Some(impulses(z, &pre.laws));
         return finish(
             ImpactStatus::Solved,
             lemke_status,
-            Some(impulses(&z, &laws)),
+            lambda,
             count,
             ran,
             unique,
@@ -805,38 +691,233 @@ pub fn solve(problem: &ImpactProblem, settings: &ImpactSettings) -> ImpactSoluti
             unique,
         );
     }
+    let count = if ran { 0 } else { 1 };
     if n == 1 {
-        let gd = Delassus {
-            nn: g[0],
-            nt: g[1],
-            tt: g[3],
+        return match single_contact_fallback(&g, &pre.laws[0], &pre.gamma_pre) {
+            Some(l) => finish(
+                ImpactStatus::SolvedByFallback,
+                lemke_status,
+                Some(l),
+                count,
+                ran,
+                true,
+            ),
+            None => finish(ImpactStatus::Failed, lemke_status, None, 0, ran, true),
         };
-        let s = analytic::single_impact(&gd, &laws[0], gamma_pre[0], gamma_pre[1]);
-        // The closed form is no solution when it gives `Λ_N < 0` (a Delassus matrix whose
-        // determinant is lost to rounding, e.g. masses of 1e117 kg beside a moment of inertia of 2)
-        if !(s.normal_impulse.is_finite()
-            && s.tangential_impulse.is_finite()
-            && s.normal_impulse >= 0.0)
-        {
-            return finish(ImpactStatus::Failed, lemke_status, None, 0, ran, true);
-        }
-        return finish(
-            ImpactStatus::SolvedByFallback,
-            lemke_status,
-            Some(vec![s.normal_impulse, s.tangential_impulse]),
-            if ran { 0 } else { 1 },
-            ran,
-            true,
-        );
     }
-    finish(
-        ImpactStatus::Failed,
-        lemke_status,
-        None,
-        if ran { 0 } else { 1 },
-        ran,
-        true,
-    )
+    finish(ImpactStatus::Failed, lemke_status, None, count, ran, true)
+}
+
+/// Lemke on the impact LCP `(a, b)` of `n` contacts (dimension `3n`): the fixed-size kernels for
+/// one and two contacts, the general solver beyond. Returns the status and `z` (NaN when the
+/// problem cannot even be stated).
+fn lemke_impact(
+    n: usize,
+    a: &[Real],
+    b: &[Real],
+    settings: &ImpactSettings,
+) -> (LcpStatus, Vec<Real>) {
+    match n {
+        1 => {
+            let s = lcp::solve_fixed::<3>(&to_rows::<3>(a), &to_arr::<3>(b), &settings.lemke);
+            (s.status, s.z.to_vec())
+        }
+        2 => {
+            let s = lcp::solve_fixed::<6>(&to_rows::<6>(a), &to_arr::<6>(b), &settings.lemke);
+            (s.status, s.z.to_vec())
+        }
+        _ => match LcpProblem::new(a.to_vec(), b.to_vec()) {
+            Ok(p) => {
+                let s = lcp::Lemke::new(settings.lemke.clone()).solve(&p);
+                (s.status, s.z)
+            }
+            Err(_) => (LcpStatus::IllConditioned, vec![Real::NAN; 3 * n]),
+        },
+    }
+}
+
+/// The distinct physical solutions `(Λ_N, Λ_T)` among the enumerated LCP solutions `list` (plus
+/// Lemke's `lemke_z`, which enumeration may miss when it is not a vertex of the solution set):
+/// their number (equal within `1e-9` of the largest impulse), whether they all give the same
+/// post-impact velocity (within `1e-9` of the largest velocity), and the first of them.
+fn enumerated_solutions(
+    asm: &Assembled,
+    laws: &[ImpactLaw],
+    lemke_z: Option<&[Real]>,
+    list: &[Vec<Real>],
+) -> (usize, bool, Option<Vec<Real>>) {
+    let mut lam: Vec<Vec<Real>> = Vec::with_capacity(list.len() + 1);
+    if let Some(z) = lemke_z {
+        lam.push(impulses(z, laws));
+    }
+    lam.extend(list.iter().map(|z| impulses(z, laws)));
+    let lscale = lam
+        .iter()
+        .flatten()
+        .fold(1e-300, |m: Real, &x| m.max(x.abs()));
+    let mut distinct: Vec<&Vec<Real>> = Vec::new();
+    for l in &lam {
+        if !distinct
+            .iter()
+            .any(|d| d.iter().zip(l).all(|(x, y)| (x - y).abs() <= 1e-9 * lscale))
+        {
+            distinct.push(l);
+        }
+    }
+    let us: Vec<Vec<Real>> = lam.iter().map(|l| asm.post_velocity(l)).collect();
+    let uscale = us
+        .iter()
+        .flatten()
+        .chain(asm.u.iter())
+        .fold(1e-300, |m: Real, &x| m.max(x.abs()));
+    let unique = us.iter().all(|v| {
+        v.iter()
+            .zip(&us[0])
+            .all(|(x, y)| (x - y).abs() <= 1e-9 * uscale)
+    });
+    (distinct.len(), unique, lam.first().cloned())
+}
+
+/// The closed-form impulses `(Λ_N, Λ_T)` of a single contact ([`analytic::single_impact`]) from
+/// the Delassus matrix `g` (2×2) and the pre-impact velocities, or `None` when they are no
+/// solution: not finite, or `Λ_N < 0` (a Delassus matrix whose determinant is lost to rounding,
+/// e.g. masses of 1e117 kg beside a moment of inertia of 2).
+fn single_contact_fallback(g: &[Real], law: &ImpactLaw, gamma_pre: &[Real]) -> Option<Vec<Real>> {
+    let gd = Delassus {
+        nn: g[0],
+        nt: g[1],
+        tt: g[3],
+    };
+    let s = analytic::single_impact(&gd, law, gamma_pre[0], gamma_pre[1]);
+    (s.normal_impulse.is_finite() && s.tangential_impulse.is_finite() && s.normal_impulse >= 0.0)
+        .then(|| vec![s.normal_impulse, s.tangential_impulse])
+}
+
+/// What the solver decided, before the post-impact state is computed ([`PreImpact::finish`]).
+struct Outcome {
+    status: ImpactStatus,
+    lemke_status: LcpStatus,
+    /// `(Λ_N, Λ_T)`, `None` when there is none (NaN impulses are reported).
+    lambda: Option<Vec<Real>>,
+    solutions: usize,
+    enumerated: bool,
+    unique: bool,
+}
+
+/// The assembled problem and its pre-impact quantities: contact laws, relative velocities
+/// `γ_pre`, kinetic energy, and the velocity scale of the stick test (the largest approach speed).
+struct PreImpact<'a> {
+    asm: Assembled,
+    laws: Vec<ImpactLaw>,
+    gamma_pre: Vec<Real>,
+    e0: Real,
+    scale: Real,
+    settings: &'a ImpactSettings,
+}
+
+impl<'a> PreImpact<'a> {
+    fn new(problem: &ImpactProblem, settings: &'a ImpactSettings) -> Self {
+        let asm = assemble(problem);
+        let n = asm.nc;
+        let laws: Vec<ImpactLaw> = problem.contacts.iter().map(|c| c.law).collect();
+        let gamma_pre = asm.gamma(&asm.u);
+        let e0 = asm.energy(&asm.u);
+        let scale = gamma_pre[..n]
+            .iter()
+            .fold(0.0, |m: Real, &g| m.max((-g).max(0.0)));
+        PreImpact {
+            asm,
+            laws,
+            gamma_pre,
+            e0,
+            scale,
+            settings,
+        }
+    }
+
+    /// The solution from the impulses of `o`: post-impact velocities, each contact's mode, the
+    /// energies, and the check of the impact laws (a violated law makes a solved impact
+    /// [`ImpactStatus::IllConditioned`]).
+    fn finish(&self, o: Outcome) -> ImpactSolution {
+        let (asm, n) = (&self.asm, self.asm.nc);
+        let lambda = o.lambda.unwrap_or_else(|| vec![Real::NAN; 2 * n]);
+        let u = asm.post_velocity(&lambda);
+        let gamma_post = asm.gamma(&u);
+        let contacts = self.contact_results(&lambda, &gamma_post);
+        let bodies = (0..asm.nb)
+            .map(|b| BodyVelocity {
+                velocity: Vector::new(u[3 * b], u[3 * b + 1]),
+                omega: u[3 * b + 2],
+            })
+            .collect();
+        let energy_after = asm.energy(&u);
+        let solved = matches!(
+            o.status,
+            ImpactStatus::Solved | ImpactStatus::SolvedByFallback
+        );
+        let law_violation = if solved {
+            asm.check(
+                &self.laws,
+                &self.gamma_pre,
+                &lambda,
+                &u,
+                &gamma_post,
+                self.e0,
+                energy_after,
+            )
+            .err()
+        } else {
+            None
+        };
+        let status = if law_violation.is_some() {
+            ImpactStatus::IllConditioned
+        } else {
+            o.status
+        };
+        ImpactSolution {
+            status,
+            lemke_status: o.lemke_status,
+            contacts,
+            bodies,
+            energy_before: self.e0,
+            energy_after,
+            solutions: o.solutions,
+            enumerated: o.enumerated,
+            post_velocity_unique: o.unique,
+            law_violation,
+        }
+    }
+
+    /// Each contact's impulses, pre/post velocities and mode: open when `Λ_N ≤ 1e-12 max Λ_N`
+    /// (or NaN), stick when `|γ_T⁺| ≤ stick_tolerance · scale`, else slip in the sign of `γ_T⁺`.
+    fn contact_results(&self, lambda: &[Real], gamma_post: &[Real]) -> Vec<ContactResult> {
+        let n = self.asm.nc;
+        let lmax = lambda[..n].iter().fold(0.0, |m: Real, &x| m.max(x));
+        (0..n)
+            .map(|i| {
+                let (ln, lt) = (lambda[i], lambda[n + i]);
+                let gtp = gamma_post[n + i];
+                let mode = if ln.is_nan() || ln <= 1e-12 * lmax {
+                    ContactMode::Open
+                } else if gtp.abs() <= self.settings.stick_tolerance * self.scale {
+                    ContactMode::Stick
+                } else if gtp > 0.0 {
+                    ContactMode::SlipPositive
+                } else {
+                    ContactMode::SlipNegative
+                };
+                ContactResult {
+                    normal_impulse: ln,
+                    tangential_impulse: lt,
+                    mode,
+                    gamma_n_pre: self.gamma_pre[i],
+                    gamma_t_pre: self.gamma_pre[n + i],
+                    gamma_n_post: gamma_post[i],
+                    gamma_t_post: gtp,
+                }
+            })
+            .collect()
+    }
 }
 
 fn to_rows<const N: usize>(a: &[Real]) -> [[Real; N]; N] {

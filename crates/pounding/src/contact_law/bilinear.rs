@@ -3,6 +3,7 @@
 use super::*;
 use crate::math::Real;
 use crate::output::json_float;
+use registry::{BuildError, DEFAULT_A, DEFAULT_DELTA_M, LawEntry, LawInputs, reads, default_k_h};
 
 /// Bilinear impact law of Muthukumar (2003), exactly as OpenSees' `ImpactMaterial`.
 ///
@@ -186,4 +187,44 @@ impl ContactForceLaw for BilinearImpact {
             "delta_y": json_float(self.delta_y())
         })
     }
+}
+
+/// The law's entry in [`registry::LAWS`] (name, `[contact]` keys and those read, description,
+/// builder).
+pub(crate) const ENTRY: LawEntry = LawEntry {
+    name: "bilinear",
+    keys: &["k1", "k2", "delta_y", "k_h", "restitution", "delta_m", "a"],
+    reads: |given| match given("k1") || given("k2") || given("delta_y") {
+        true => reads(&["k1", "k2", "delta_y"], " with k1, k2, delta_y given"),
+        false => reads(
+            &["k_h", "restitution", "delta_m", "a"],
+            " without k1, k2, delta_y",
+        ),
+    },
+    description: "bilinear impact (OpenSees ImpactMaterial)",
+    build,
+};
+
+/// Builds the law from `[contact] k1`, `k2`, `delta_y` (all three), or none of them and the
+/// law derived from `k_h`, `restitution`, `delta_m`, `a` ([`BilinearImpact::from_hertz`]).
+fn build(p: &LawInputs) -> Result<ContactLaw, BuildError> {
+    Ok(match (p.get("k1"), p.get("k2"), p.get("delta_y")) {
+        (None, None, None) => {
+            BilinearImpact::from_hertz(
+                p.get("k_h").unwrap_or_else(default_k_h),
+                p.restitution,
+                p.get("delta_m").unwrap_or(DEFAULT_DELTA_M),
+                p.get("a").unwrap_or(DEFAULT_A),
+            )?
+            .law
+        }
+        (Some(k1), Some(k2), Some(dy)) => BilinearImpact::new(k1, k2, dy)?,
+        _ => {
+            return Err(BuildError::Incomplete {
+                keys: &["k1", "k2", "delta_y"],
+                hint: "or none, to derive them from k_h, restitution, delta_m, a",
+            });
+        }
+    }
+    .into())
 }

@@ -3,6 +3,7 @@
 use super::*;
 use crate::math::Real;
 use crate::output::json_float;
+use registry::{BuildError, LawEntry, LawInputs, reads, default_k_h};
 
 /// Hertz's elastic contact law (no dissipation):
 /// ```text
@@ -56,4 +57,19 @@ impl ContactForceLaw for Hertz {
     fn describe(&self) -> serde_json::Value {
         serde_json::json!({"law": "hertz", "k_h": json_float(self.k_h())})
     }
+}
+
+/// The law's entry in [`registry::LAWS`] (name, `[contact]` keys and those read, description,
+/// builder).
+pub(crate) const ENTRY: LawEntry = LawEntry {
+    name: "hertz",
+    keys: &["k_h"],
+    reads: |_| reads(&["k_h"], ""),
+    description: "Hertz elastic k_h d^1.5",
+    build,
+};
+
+/// Builds the law from `[contact] k_h` (default [`default_k_h`]).
+fn build(p: &LawInputs) -> Result<ContactLaw, BuildError> {
+    Ok(Hertz::new(p.get("k_h").unwrap_or_else(default_k_h))?.into())
 }

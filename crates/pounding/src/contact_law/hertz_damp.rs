@@ -3,6 +3,8 @@
 use super::*;
 use crate::math::Real;
 use crate::output::json_float;
+use calibration::HertzDampCalibration;
+use registry::{BuildError, DEFAULT_MIN_VELOCITY, LawEntry, LawInputs, reads, default_k_h};
 
 /// How the damping constant `ζ` of [`HertzDamp`] is set.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -132,4 +134,70 @@ impl ContactForceLaw for HertzDamp {
         };
         serde_json::json!({"law": "hertz-damp", "k_h": json_float(self.k_h()), "damping": d})
     }
+}
+
+/// The law's entry in [`registry::LAWS`] (name, `[contact]` keys and those read, description,
+/// builder).
+pub(crate) const ENTRY: LawEntry = LawEntry {
+    name: "hertz-damp",
+    keys: &[
+        "k_h",
+        "zeta",
+        "chi",
+        "restitution",
+        "calibration",
+        "design_velocity",
+        "min_velocity",
+    ],
+    reads: |given| {
+        if given("zeta") {
+            reads(&["k_h", "zeta"], " with zeta given")
+        } else if given("chi") {
+            reads(&["k_h", "chi", "min_velocity"], " with chi given")
+        } else if given("design_velocity") {
+            reads(
+                &["k_h", "restitution", "calibration", "design_velocity"],
+                " with design_velocity given (a constant zeta)",
+            )
+        } else {
+            reads(
+                &["k_h", "restitution", "calibration", "min_velocity"],
+                " without zeta, chi or design_velocity",
+            )
+        }
+    },
+    description: "Hertz with nonlinear damping (Muthukumar & DesRoches)",
+    build,
+};
+
+/// Builds the law from `[contact] k_h` and `zeta` (constant), or `chi` (per impact, floored at
+/// `min_velocity`), or the damping calibrated from `restitution` (and `design_velocity`) by
+/// `calibration` (`numerical`, `muthukumar-desroches`, `ye`).
+fn build(p: &LawInputs) -> Result<ContactLaw, BuildError> {
+    let k_h = p.get("k_h").unwrap_or_else(default_k_h);
+    let vmin = p.get("min_velocity").unwrap_or(DEFAULT_MIN_VELOCITY);
+    Ok(match (p.get("zeta"), p.get("chi")) {
+        (Some(zeta), _) => HertzDamp::new(k_h, HertzDamping::Constant { zeta })?,
+        (None, Some(chi)) => HertzDamp::new(
+            k_h,
+            HertzDamping::PerImpact {
+                chi,
+                min_velocity: vmin,
+            },
+        )?,
+        (None, None) => {
+            let m = match p.calibration {
+                "numerical" => HertzDampCalibration::Numerical,
+                "muthukumar-desroches" => HertzDampCalibration::MuthukumarDesRoches,
+                "ye" => HertzDampCalibration::YeEtAl,
+                _ => {
+                    return Err(BuildError::Calibration {
+                        allowed: "\"numerical\", \"muthukumar-desroches\" or \"ye\"",
+                    });
+                }
+            };
+            HertzDamp::from_restitution(k_h, p.restitution, p.get("design_velocity"), vmin, m)?
+        }
+    }
+    .into())
 }

@@ -3,6 +3,8 @@
 use super::*;
 use crate::math::Real;
 use crate::output::json_float;
+use calibration::JankowskiCalibration;
+use registry::{BuildError, LawEntry, LawInputs, reads, default_k_h};
 
 /// Nonlinear viscoelastic law of Jankowski (2005):
 /// ```text
@@ -93,4 +95,43 @@ impl ContactForceLaw for Jankowski {
             "m_eff": json_float(self.m_eff())
         })
     }
+}
+
+/// The law's entry in [`registry::LAWS`] (name, `[contact]` keys and those read, description,
+/// builder).
+pub(crate) const ENTRY: LawEntry = LawEntry {
+    name: "jankowski",
+    keys: &["beta", "k_h", "xi", "restitution", "calibration"],
+    // beta, when given, is the stiffness (k_h is its fallback)
+    reads: |given| match (given("beta"), given("xi")) {
+        (true, true) => reads(&["beta", "xi"], " with beta and xi given"),
+        (true, false) => reads(&["beta", "restitution", "calibration"], " with beta given"),
+        (false, true) => reads(&["k_h", "xi"], " with xi given"),
+        (false, false) => reads(&["k_h", "restitution", "calibration"], ""),
+    },
+    description: "Jankowski nonlinear viscoelastic",
+    build,
+};
+
+/// Builds the law from `[contact] beta` (or `k_h`) and `xi`, or `xi` calibrated from
+/// `restitution` by `calibration` (`numerical`, `jankowski2005`).
+fn build(p: &LawInputs) -> Result<ContactLaw, BuildError> {
+    let beta = p.get("beta").or(p.get("k_h")).unwrap_or_else(default_k_h);
+    let [m1, m2] = p.masses;
+    Ok(match p.get("xi") {
+        Some(xi) => super::effective_mass(m1, m2).and_then(|m| Jankowski::new(beta, xi, m))?,
+        None => {
+            let m = match p.calibration {
+                "numerical" => JankowskiCalibration::Numerical,
+                "jankowski2005" => JankowskiCalibration::Jankowski2005,
+                _ => {
+                    return Err(BuildError::Calibration {
+                        allowed: "\"numerical\" or \"jankowski2005\"",
+                    });
+                }
+            };
+            Jankowski::from_restitution(beta, p.restitution, m1, m2, m)?
+        }
+    }
+    .into())
 }

@@ -3,6 +3,8 @@
 use super::*;
 use crate::math::Real;
 use crate::output::json_float;
+use calibration::KelvinCalibration;
+use registry::{BuildError, DEFAULT_K, LawEntry, LawInputs, reads};
 
 /// Linear spring and dashpot in parallel (Kelvin–Voigt), without tension:
 /// ```text
@@ -71,4 +73,39 @@ impl ContactForceLaw for KelvinVoigt {
     fn describe(&self) -> serde_json::Value {
         serde_json::json!({"law": "kelvin", "k": json_float(self.k()), "c": json_float(self.c())})
     }
+}
+
+/// The law's entry in [`registry::LAWS`] (name, `[contact]` keys and those read, description,
+/// builder).
+pub(crate) const ENTRY: LawEntry = LawEntry {
+    name: "kelvin",
+    keys: &["k", "c", "restitution", "calibration"],
+    reads: |given| match given("c") {
+        true => reads(&["k", "c"], " with c given"),
+        false => reads(&["k", "restitution", "calibration"], " without c"),
+    },
+    description: "linear spring and dashpot (Kelvin-Voigt)",
+    build,
+};
+
+/// Builds the law from `[contact] k` (default [`DEFAULT_K`]) and `c`, or `c` calibrated from
+/// `restitution` by `calibration` (`numerical`, `anagnostopoulos`).
+fn build(p: &LawInputs) -> Result<ContactLaw, BuildError> {
+    let k = p.get("k").unwrap_or(DEFAULT_K);
+    Ok(match p.get("c") {
+        Some(c) => KelvinVoigt::new(k, c)?.into(),
+        None => {
+            let m = match p.calibration {
+                "numerical" => KelvinCalibration::Numerical,
+                "anagnostopoulos" => KelvinCalibration::Anagnostopoulos,
+                _ => {
+                    return Err(BuildError::Calibration {
+                        allowed: "\"numerical\" or \"anagnostopoulos\"",
+                    });
+                }
+            };
+            let [m1, m2] = p.masses;
+            KelvinVoigt::from_restitution(k, p.restitution, m1, m2, m)?.into()
+        }
+    })
 }

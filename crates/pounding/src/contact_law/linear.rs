@@ -3,6 +3,7 @@
 use super::*;
 use crate::math::Real;
 use crate::output::json_float;
+use registry::{BuildError, DEFAULT_K, LawEntry, LawInputs, reads};
 
 /// Linear elastic contact spring without damping:
 /// ```text
@@ -49,9 +50,17 @@ impl ContactForceLaw for LinearSpring {
     }
 }
 
-/// The registry entry: `[contact] k` (default [`super::registry::DEFAULT_K`]).
-pub(crate) fn build(
-    p: &super::registry::LawInputs,
-) -> Result<ContactLaw, super::registry::BuildError> {
-    Ok(LinearSpring::new(p.get("k").unwrap_or(super::registry::DEFAULT_K))?.into())
+/// The law's entry in [`registry::LAWS`] (name, `[contact]` keys and those read, description,
+/// builder).
+pub(crate) const ENTRY: LawEntry = LawEntry {
+    name: "linear",
+    keys: &["k"],
+    reads: |_| reads(&["k"], ""),
+    description: "linear elastic spring k d, no damping",
+    build,
+};
+
+/// Builds the law from `[contact] k` (default [`DEFAULT_K`]).
+fn build(p: &LawInputs) -> Result<ContactLaw, BuildError> {
+    Ok(LinearSpring::new(p.get("k").unwrap_or(DEFAULT_K))?.into())
 }

@@ -2,15 +2,12 @@
 //! description and the function that builds the validated [`ContactLaw`] from the keys and
 //! their defaults. The scenario reader (`sim::scenario`) and `pounding compare` read it.
 //!
-//! Adding a law: one new file in `contact_law/` (the law, its [`super::ContactForceLaw`] impl and its
-//! `build` function) plus one line in [`LAWS`] (and its variant line in `contact_laws!` of
-//! `contact_law/mod.rs`). `rigid` is not a compliance law and is not listed here.
+//! Adding a law: one new file in `contact_law/` (the law, its [`super::ContactForceLaw`] impl,
+//! its `ENTRY` and `build` function) plus one line in the `contact_laws!` list of
+//! `contact_law/mod.rs`, which generates [`LAWS`]. `rigid` is not a compliance law and is not
+//! listed here.
 
-use super::calibration::{HertzDampCalibration, JankowskiCalibration, KelvinCalibration};
-use super::{
-    BilinearImpact, ContactLaw, ContactLawError, Hertz, HertzDamp, HertzDamping, Jankowski,
-    KelvinVoigt, units,
-};
+use super::{ContactLaw, ContactLawError, units};
 use crate::math::Real;
 use thiserror::Error;
 
@@ -86,8 +83,8 @@ pub struct LawReads {
 /// Whether a `[contact]` key is given (the argument of [`LawEntry::reads`]).
 pub type KeyGiven<'a> = dyn Fn(&str) -> bool + 'a;
 
-/// Shorthand for the `reads` functions of [`LAWS`].
-const fn reads(keys: &'static [&'static str], how: &'static str) -> LawReads {
+/// Shorthand for the `reads` functions of the law files' `ENTRY` ([`LAWS`]).
+pub(crate) const fn reads(keys: &'static [&'static str], how: &'static str) -> LawReads {
     LawReads { keys, how }
 }
 
@@ -110,90 +107,27 @@ pub struct LawEntry {
     pub build: fn(&LawInputs) -> Result<ContactLaw, BuildError>,
 }
 
-/// Every compliance law, one line each.
-pub static LAWS: &[LawEntry] = &[
-    LawEntry {
-        name: "kelvin",
-        keys: &["k", "c", "restitution", "calibration"],
-        reads: |given| match given("c") {
-            true => reads(&["k", "c"], " with c given"),
-            false => reads(&["k", "restitution", "calibration"], " without c"),
-        },
-        description: "linear spring and dashpot (Kelvin-Voigt)",
-        build: kelvin,
-    },
-    LawEntry {
-        name: "hertz",
-        keys: &["k_h"],
-        reads: |_| reads(&["k_h"], ""),
-        description: "Hertz elastic k_h d^1.5",
-        build: hertz,
-    },
-    LawEntry {
-        name: "hertz-damp",
-        keys: &[
-            "k_h",
-            "zeta",
-            "chi",
-            "restitution",
-            "calibration",
-            "design_velocity",
-            "min_velocity",
-        ],
-        reads: |given| {
-            if given("zeta") {
-                reads(&["k_h", "zeta"], " with zeta given")
-            } else if given("chi") {
-                reads(&["k_h", "chi", "min_velocity"], " with chi given")
-            } else if given("design_velocity") {
-                reads(
-                    &["k_h", "restitution", "calibration", "design_velocity"],
-                    " with design_velocity given (a constant zeta)",
-                )
-            } else {
-                reads(
-                    &["k_h", "restitution", "calibration", "min_velocity"],
-                    " without zeta, chi or design_velocity",
-                )
+/// Every compliance law, in the order of the `contact_laws!` list of `contact_law/mod.rs` (each
+/// entry is the `ENTRY` constant of the law's file).
+pub static LAWS: &[LawEntry] = super::ENTRIES;
+
+/// The one law key whose value is text ([`LawInputs::calibration`]); every other key of
+/// [`LawEntry::keys`] is a number ([`LawInputs::get`]).
+pub const CALIBRATION_KEY: &str = "calibration";
+
+/// Every key that some registered law reads ([`LawEntry::keys`]), each once, in registry order.
+pub fn law_keys() -> &'static [&'static str] {
+    static KEYS: std::sync::LazyLock<Vec<&'static str>> = std::sync::LazyLock::new(|| {
+        let mut keys: Vec<&'static str> = Vec::new();
+        for k in LAWS.iter().flat_map(|e| e.keys.iter()) {
+            if !keys.contains(k) {
+                keys.push(k);
             }
-        },
-        description: "Hertz with nonlinear damping (Muthukumar & DesRoches)",
-        build: hertz_damp,
-    },
-    LawEntry {
-        name: "bilinear",
-        keys: &["k1", "k2", "delta_y", "k_h", "restitution", "delta_m", "a"],
-        reads: |given| match given("k1") || given("k2") || given("delta_y") {
-            true => reads(&["k1", "k2", "delta_y"], " with k1, k2, delta_y given"),
-            false => reads(
-                &["k_h", "restitution", "delta_m", "a"],
-                " without k1, k2, delta_y",
-            ),
-        },
-        description: "bilinear impact (OpenSees ImpactMaterial)",
-        build: bilinear,
-    },
-    LawEntry {
-        name: "jankowski",
-        keys: &["beta", "k_h", "xi", "restitution", "calibration"],
-        // beta, when given, is the stiffness (k_h is its fallback)
-        reads: |given| match (given("beta"), given("xi")) {
-            (true, true) => reads(&["beta", "xi"], " with beta and xi given"),
-            (true, false) => reads(&["beta", "restitution", "calibration"], " with beta given"),
-            (false, true) => reads(&["k_h", "xi"], " with xi given"),
-            (false, false) => reads(&["k_h", "restitution", "calibration"], ""),
-        },
-        description: "Jankowski nonlinear viscoelastic",
-        build: jankowski,
-    },
-    LawEntry {
-        name: "linear",
-        keys: &["k"],
-        reads: |_| reads(&["k"], ""),
-        description: "linear elastic spring k d, no damping",
-        build: super::linear::build,
-    },
-];
+        }
+        keys
+    });
+    &KEYS
+}
 
 /// The entry of law `name`, if registered.
 pub fn entry(name: &str) -> Option<&'static LawEntry> {
@@ -205,100 +139,4 @@ pub fn law_names() -> Vec<&'static str> {
     std::iter::once("rigid")
         .chain(LAWS.iter().map(|e| e.name))
         .collect()
-}
-
-fn kelvin(p: &LawInputs) -> Result<ContactLaw, BuildError> {
-    let k = p.get("k").unwrap_or(DEFAULT_K);
-    Ok(match p.get("c") {
-        Some(c) => KelvinVoigt::new(k, c)?.into(),
-        None => {
-            let m = match p.calibration {
-                "numerical" => KelvinCalibration::Numerical,
-                "anagnostopoulos" => KelvinCalibration::Anagnostopoulos,
-                _ => {
-                    return Err(BuildError::Calibration {
-                        allowed: "\"numerical\" or \"anagnostopoulos\"",
-                    });
-                }
-            };
-            let [m1, m2] = p.masses;
-            KelvinVoigt::from_restitution(k, p.restitution, m1, m2, m)?.into()
-        }
-    })
-}
-
-fn hertz(p: &LawInputs) -> Result<ContactLaw, BuildError> {
-    Ok(Hertz::new(p.get("k_h").unwrap_or_else(default_k_h))?.into())
-}
-
-fn hertz_damp(p: &LawInputs) -> Result<ContactLaw, BuildError> {
-    let k_h = p.get("k_h").unwrap_or_else(default_k_h);
-    let vmin = p.get("min_velocity").unwrap_or(DEFAULT_MIN_VELOCITY);
-    Ok(match (p.get("zeta"), p.get("chi")) {
-        (Some(zeta), _) => HertzDamp::new(k_h, HertzDamping::Constant { zeta })?,
-        (None, Some(chi)) => HertzDamp::new(
-            k_h,
-            HertzDamping::PerImpact {
-                chi,
-                min_velocity: vmin,
-            },
-        )?,
-        (None, None) => {
-            let m = match p.calibration {
-                "numerical" => HertzDampCalibration::Numerical,
-                "muthukumar-desroches" => HertzDampCalibration::MuthukumarDesRoches,
-                "ye" => HertzDampCalibration::YeEtAl,
-                _ => {
-                    return Err(BuildError::Calibration {
-                        allowed: "\"numerical\", \"muthukumar-desroches\" or \"ye\"",
-                    });
-                }
-            };
-            HertzDamp::from_restitution(k_h, p.restitution, p.get("design_velocity"), vmin, m)?
-        }
-    }
-    .into())
-}
-
-fn bilinear(p: &LawInputs) -> Result<ContactLaw, BuildError> {
-    Ok(match (p.get("k1"), p.get("k2"), p.get("delta_y")) {
-        (None, None, None) => {
-            BilinearImpact::from_hertz(
-                p.get("k_h").unwrap_or_else(default_k_h),
-                p.restitution,
-                p.get("delta_m").unwrap_or(DEFAULT_DELTA_M),
-                p.get("a").unwrap_or(DEFAULT_A),
-            )?
-            .law
-        }
-        (Some(k1), Some(k2), Some(dy)) => BilinearImpact::new(k1, k2, dy)?,
-        _ => {
-            return Err(BuildError::Incomplete {
-                keys: &["k1", "k2", "delta_y"],
-                hint: "or none, to derive them from k_h, restitution, delta_m, a",
-            });
-        }
-    }
-    .into())
-}
-
-fn jankowski(p: &LawInputs) -> Result<ContactLaw, BuildError> {
-    let beta = p.get("beta").or(p.get("k_h")).unwrap_or_else(default_k_h);
-    let [m1, m2] = p.masses;
-    Ok(match p.get("xi") {
-        Some(xi) => super::effective_mass(m1, m2).and_then(|m| Jankowski::new(beta, xi, m))?,
-        None => {
-            let m = match p.calibration {
-                "numerical" => JankowskiCalibration::Numerical,
-                "jankowski2005" => JankowskiCalibration::Jankowski2005,
-                _ => {
-                    return Err(BuildError::Calibration {
-                        allowed: "\"numerical\" or \"jankowski2005\"",
-                    });
-                }
-            };
-            Jankowski::from_restitution(beta, p.restitution, m1, m2, m)?
-        }
-    }
-    .into())
 }

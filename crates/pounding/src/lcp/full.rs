@@ -7,7 +7,7 @@
 
 use super::LcpStatus;
 use super::LemkeSettings;
-use super::tableau::{KernelOut, fail, initial_row, verdict, verify_small};
+use super::tableau::{KernelOut, cut_to_size, fail, initial_row, verdict, verify_small};
 
 /// Mutable workspace of the kernel (all slices at least as long as stated).
 pub(crate) struct WorkFull<'a> {
@@ -41,10 +41,7 @@ pub(crate) fn kernel_full(
     z: &mut [f64],
     w: &mut [f64],
 ) -> KernelOut {
-    let m = &m[..n * n];
-    let q = &q[..n];
-    let z = &mut z[..n];
-    let w = &mut w[..n];
+    let (m, q, z, w) = cut_to_size(n, m, q, z, w);
     let binv = &mut wk.binv[..n * n];
     let tz = &mut wk.tz[..n * n];
     let b = &mut wk.b[..n];

@@ -369,154 +369,194 @@ fn parse_sbm(t: &mut Tokens<'_>, n: usize, m: &mut [f64]) -> Result<(), LcpIoErr
 
 /// Parses the text of an `LCPSET 1` file (`file` is used in error messages).
 pub fn parse_lcpset(text: &str, file: &str) -> Result<Vec<LcpEntry>, LcpIoError> {
-    let perr = |line: usize, expected: &str, found: &str| LcpIoError::Parse {
-        file: file.to_string(),
-        line,
-        expected: expected.to_string(),
-        found: found.to_string(),
-    };
-    let mut lines = text
-        .lines()
-        .enumerate()
-        .map(|(i, l)| (i + 1, l.trim()))
-        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
-    let end = text.lines().count() + 1;
-    let mut next = |what: &str| -> Result<(usize, Vec<&str>), LcpIoError> {
-        match lines.next() {
-            Some((ln, l)) => Ok((ln, l.split_whitespace().collect())),
-            None => Err(perr(end, what, "end of file")),
-        }
-    };
-    let (ln, h) = next("the header `LCPSET 1`")?;
+    let mut r = LcpSetReader::new(text, file);
+    let (ln, h) = r.next("the header `LCPSET 1`")?;
     if h != ["LCPSET", "1"] {
-        return Err(perr(
-            ln,
-            "the header `LCPSET 1`",
-            &format!("`{}`", h.join(" ")),
-        ));
+        return Err(r.err(ln, "the header `LCPSET 1`", &format!("`{}`", h.join(" "))));
     }
-    let (ln, c) = next("`COUNT <N>`")?;
+    let (ln, c) = r.next("`COUNT <N>`")?;
     let count = match c.as_slice() {
         ["COUNT", k] => k
             .parse::<usize>()
-            .map_err(|_| perr(ln, "`COUNT <N>` with an integer N", &format!("`{k}`")))?,
-        _ => return Err(perr(ln, "`COUNT <N>`", &format!("`{}`", c.join(" ")))),
-    };
-    let nums = |ln: usize, toks: &[&str], what: &str| -> Result<Vec<f64>, LcpIoError> {
-        toks.iter()
-            .enumerate()
-            .map(|(k, s)| match s.parse::<f64>() {
-                Ok(x) if x.is_finite() => Ok(x),
-                _ => Err(perr(
-                    ln,
-                    &format!("{what} value {k} (a finite number)"),
-                    &format!("`{s}`"),
-                )),
-            })
-            .collect()
+            .map_err(|_| r.err(ln, "`COUNT <N>` with an integer N", &format!("`{k}`")))?,
+        _ => return Err(r.err(ln, "`COUNT <N>`", &format!("`{}`", c.join(" ")))),
     };
     let mut out = Vec::with_capacity(count.min(1 << 16));
     for id in 0..count {
-        let exp = format!("`PROBLEM {id} <class> <n>` (COUNT = {count})");
-        let (pl, p) = next(&exp)?;
-        let (class, n) = match p.as_slice() {
-            ["PROBLEM", i, class, n] => {
-                if i.parse::<usize>().ok() != Some(id) {
-                    return Err(perr(pl, &format!("problem id {id}"), &format!("`{i}`")));
-                }
-                let n = n
-                    .parse::<usize>()
-                    .ok()
-                    .filter(|&n| n > 0 && n <= MAX_FILE_DIM)
-                    .ok_or_else(|| {
-                        perr(
-                            pl,
-                            &format!("a problem size 1 <= n <= {MAX_FILE_DIM}"),
-                            &format!("`{n}`"),
-                        )
-                    })?;
-                (class.to_string(), n)
-            }
-            _ => return Err(perr(pl, &exp, &format!("`{}`", p.join(" ")))),
-        };
-        let (ln, pr) = next("`PARAMS <k> <p1> ... <pk>`")?;
-        let params = match pr.split_first() {
-            Some((&"PARAMS", rest)) if !rest.is_empty() => {
-                let k = rest[0].parse::<usize>().map_err(|_| {
-                    perr(
-                        ln,
-                        "`PARAMS <k> ...` with an integer k",
-                        &format!("`{}`", rest[0]),
-                    )
-                })?;
-                if rest.len() - 1 != k {
-                    return Err(perr(
-                        ln,
-                        &format!("{k} PARAMS values"),
-                        &format!("{}", rest.len() - 1),
-                    ));
-                }
-                nums(ln, &rest[1..], "PARAMS")?
-            }
-            _ => {
-                return Err(perr(
-                    ln,
-                    "`PARAMS <k> <p1> ... <pk>`",
-                    &format!("`{}`", pr.join(" ")),
-                ));
-            }
-        };
-        // `TAG v1 ... vN`: a tagged line of exactly `want` finite numbers
-        let tagged = |(ln, t): (usize, Vec<&str>),
-                      tag: &str,
-                      form: &str,
-                      want: usize,
-                      count_what: String|
-         -> Result<Vec<f64>, LcpIoError> {
-            match t.split_first() {
-                Some((&x, rest)) if x == tag => {
-                    if rest.len() != want {
-                        return Err(perr(ln, &count_what, &format!("{}", rest.len())));
-                    }
-                    nums(ln, rest, tag)
-                }
-                _ => Err(perr(ln, form, &format!("`{}`", t.join(" ")))),
-            }
-        };
-        let m = tagged(
-            next("`M <n*n numbers>`")?,
-            "M",
-            "`M <n*n numbers>`",
-            n * n,
-            format!("n*n = {} entries of M (n = {n})", n * n),
-        )?;
-        let q = tagged(
-            next("`q <n numbers>`")?,
-            "q",
-            "`q <n numbers>`",
-            n,
-            format!("n = {n} entries of q"),
-        )?;
-        let problem = LcpProblem::new(m, q).map_err(|cause| LcpIoError::Invalid {
-            file: file.to_string(),
-            line: pl,
-            cause,
-        })?;
-        out.push(LcpEntry {
-            id,
-            class,
-            params,
-            problem,
-        });
+        out.push(r.entry(id, count)?);
     }
-    if let Some((ln, l)) = lines.next() {
-        return Err(perr(
+    if let Some(&(ln, l)) = r.lines.get(r.pos) {
+        return Err(r.err(
             ln,
             &format!("end of file after COUNT = {count} problems"),
             &format!("`{l}`"),
         ));
     }
     Ok(out)
+}
+
+/// The reader of an `LCPSET 1` text: its non-blank, non-comment lines (1-based line number,
+/// trimmed text) and the position of the next one.
+struct LcpSetReader<'a> {
+    file: &'a str,
+    lines: Vec<(usize, &'a str)>,
+    pos: usize,
+    /// The line number reported for a missing line (one past the last).
+    end: usize,
+}
+
+impl<'a> LcpSetReader<'a> {
+    fn new(text: &'a str, file: &'a str) -> Self {
+        let lines = text
+            .lines()
+            .enumerate()
+            .map(|(i, l)| (i + 1, l.trim()))
+            .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'))
+            .collect();
+        LcpSetReader {
+            file,
+            lines,
+            pos: 0,
+            end: text.lines().count() + 1,
+        }
+    }
+
+    /// A parse error at `line`: what was expected there and what was found.
+    fn err(&self, line: usize, expected: &str, found: &str) -> LcpIoError {
+        LcpIoError::Parse {
+            file: self.file.to_string(),
+            line,
+            expected: expected.to_string(),
+            found: found.to_string(),
+        }
+    }
+
+    /// The next line as whitespace-separated tokens, or an error expecting `what` at the end.
+    fn next(&mut self, what: &str) -> Result<(usize, Vec<&'a str>), LcpIoError> {
+        match self.lines.get(self.pos) {
+            Some(&(ln, l)) => {
+                self.pos += 1;
+                Ok((ln, l.split_whitespace().collect()))
+            }
+            None => Err(self.err(self.end, what, "end of file")),
+        }
+    }
+
+    /// The tokens `toks` of line `ln` as finite numbers (`what` names them in errors).
+    fn nums(&self, ln: usize, toks: &[&str], what: &str) -> Result<Vec<f64>, LcpIoError> {
+        toks.iter()
+            .enumerate()
+            .map(|(k, s)| match s.parse::<f64>() {
+                Ok(x) if x.is_finite() => Ok(x),
+                _ => Err(self.err(
+                    ln,
+                    &format!("{what} value {k} (a finite number)"),
+                    &format!("`{s}`"),
+                )),
+            })
+            .collect()
+    }
+
+    /// Problem `id`: `PROBLEM id class n`, `PARAMS k p1..pk`, `M <n*n numbers>`, `q <n numbers>`.
+    fn entry(&mut self, id: usize, count: usize) -> Result<LcpEntry, LcpIoError> {
+        let (pl, class, n) = self.problem_line(id, count)?;
+        let params = self.params()?;
+        let m = self.tagged(
+            "M",
+            "`M <n*n numbers>`",
+            n * n,
+            format!("n*n = {} entries of M (n = {n})", n * n),
+        )?;
+        let q = self.tagged("q", "`q <n numbers>`", n, format!("n = {n} entries of q"))?;
+        let problem = LcpProblem::new(m, q).map_err(|cause| LcpIoError::Invalid {
+            file: self.file.to_string(),
+            line: pl,
+            cause,
+        })?;
+        Ok(LcpEntry {
+            id,
+            class,
+            params,
+            problem,
+        })
+    }
+
+    /// `PROBLEM id class n` with the expected `id` and `1 <= n <= MAX_FILE_DIM`: its line, class
+    /// and size.
+    fn problem_line(
+        &mut self,
+        id: usize,
+        count: usize,
+    ) -> Result<(usize, String, usize), LcpIoError> {
+        let exp = format!("`PROBLEM {id} <class> <n>` (COUNT = {count})");
+        let (pl, p) = self.next(&exp)?;
+        let ["PROBLEM", i, class, n] = p.as_slice() else {
+            return Err(self.err(pl, &exp, &format!("`{}`", p.join(" "))));
+        };
+        if i.parse::<usize>().ok() != Some(id) {
+            return Err(self.err(pl, &format!("problem id {id}"), &format!("`{i}`")));
+        }
+        let n = n
+            .parse::<usize>()
+            .ok()
+            .filter(|&n| n > 0 && n <= MAX_FILE_DIM)
+            .ok_or_else(|| {
+                self.err(
+                    pl,
+                    &format!("a problem size 1 <= n <= {MAX_FILE_DIM}"),
+                    &format!("`{n}`"),
+                )
+            })?;
+        Ok((pl, class.to_string(), n))
+    }
+
+    /// `PARAMS k p1 .. pk`: exactly `k` finite numbers.
+    fn params(&mut self) -> Result<Vec<f64>, LcpIoError> {
+        let (ln, pr) = self.next("`PARAMS <k> <p1> ... <pk>`")?;
+        let Some((&"PARAMS", rest)) = pr.split_first().filter(|(_, rest)| !rest.is_empty()) else {
+            return Err(self.err(
+                ln,
+                "`PARAMS <k> <p1> ... <pk>`",
+                &format!("`{}`", pr.join(" ")),
+            ));
+        };
+        let k = rest[0].parse::<usize>().map_err(|_| {
+            self.err(
+                ln,
+                "`PARAMS <k> ...` with an integer k",
+                &format!("`{}`", rest[0]),
+            )
+        })?;
+        if rest.len() - 1 != k {
+            return Err(self.err(
+                ln,
+                &format!("{k} PARAMS values"),
+                &format!("{}", rest.len() - 1),
+            ));
+        }
+        self.nums(ln, &rest[1..], "PARAMS")
+    }
+
+    /// `TAG v1 ... vN`: the next line, tagged `tag` (`form` when it is not), with exactly `want`
+    /// finite numbers (`count_what` when the count differs).
+    fn tagged(
+        &mut self,
+        tag: &str,
+        form: &str,
+        want: usize,
+        count_what: String,
+    ) -> Result<Vec<f64>, LcpIoError> {
+        let (ln, t) = self.next(form)?;
+        match t.split_first() {
+            Some((&x, rest)) if x == tag => {
+                if rest.len() != want {
+                    return Err(self.err(ln, &count_what, &format!("{}", rest.len())));
+                }
+                self.nums(ln, rest, tag)
+            }
+            _ => Err(self.err(ln, form, &format!("`{}`", t.join(" ")))),
+        }
+    }
 }
 
 /// Writes `LCPSOL 1` text: the header, one comment line, then `SOL id solver status z…` per record

@@ -71,7 +71,9 @@
 
 use super::full::{WorkFull, kernel_full};
 use super::scale::equilibrate;
-use super::tableau::{FULL_MAX, KernelOut, fail, initial_row, verdict, verify, verify_small};
+use super::tableau::{
+    FULL_MAX, KernelOut, cut_to_size, fail, initial_row, verdict, verify, verify_small,
+};
 use super::{FixedSolution, LcpProblem, LcpSolution, LcpStatus, LemkeSettings};
 
 /// Mutable workspace of the kernel (every slice at least as long as stated).
@@ -114,10 +116,7 @@ pub(crate) fn kernel(
     z: &mut [f64],
     w: &mut [f64],
 ) -> KernelOut {
-    let m = &m[..n * n];
-    let q = &q[..n];
-    let z = &mut z[..n];
-    let w = &mut w[..n];
+    let (m, q, z, w) = cut_to_size(n, m, q, z, w);
     let t = &mut wk.t[..n * n];
     let tx = &mut wk.tx[..n];
     let b = &mut wk.b[..n];

@@ -207,6 +207,20 @@ fn componentwise(
     Some(res)
 }
 
+/// The slices of a kernel call cut to the problem size `n`: `M` (`n × n`), `q`, and the results
+/// `z`, `w` (one bounds check here instead of one per access in the pivot loop).
+#[inline(always)]
+#[allow(clippy::type_complexity)]
+pub(crate) fn cut_to_size<'p, 'r>(
+    n: usize,
+    m: &'p [f64],
+    q: &'p [f64],
+    z: &'r mut [f64],
+    w: &'r mut [f64],
+) -> (&'p [f64], &'p [f64], &'r mut [f64], &'r mut [f64]) {
+    (&m[..n * n], &q[..n], &mut z[..n], &mut w[..n])
+}
+
 #[cold]
 #[inline(never)]
 pub(crate) fn fail(status: LcpStatus, pivots: usize, z: &mut [f64], w: &mut [f64]) -> KernelOut {

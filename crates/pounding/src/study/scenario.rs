@@ -463,6 +463,345 @@ impl Ctx<'_> {
     }
 }
 
+/// The TOML `text` read into the raw sections; a syntax error, unknown key or wrong type names
+/// the line, the column and the key written there.
+fn parse_raw(text: &str, origin: &str) -> Result<RawScenario, ScenarioError> {
+    toml::from_str(text).map_err(|e| {
+        let pos = e.span().map_or(0, |s| s.start);
+        let (line, column) = line_col(text, pos);
+        let key = key_on_line(text, pos)
+            .map(|k| format!(" (key `{k}`)"))
+            .unwrap_or_default();
+        ScenarioError::Syntax {
+            origin: origin.to_string(),
+            line,
+            column,
+            key,
+            message: crate::input::shorten_lines(e.message().trim(), 200),
+        }
+    })
+}
+
+/// A too-large scenario ([`Scenario::check_size`]) pointed at the finer θ range the user wrote,
+/// if any (the usual culprit).
+fn locate_size_error(e: ScenarioError, grid: &RawGrid, text: &str) -> ScenarioError {
+    match e {
+        ScenarioError::Invalid {
+            origin,
+            key,
+            value,
+            reason,
+            ..
+        } => {
+            let span = [&grid.theta2_deg, &grid.theta1_deg]
+                .into_iter()
+                .flatten()
+                .map(|r| r.step.span())
+                .next();
+            ScenarioError::Invalid {
+                origin,
+                line: span.map_or(0, |s| line_col(text, s.start).0),
+                key,
+                value,
+                reason,
+            }
+        }
+        e => e,
+    }
+}
+
+/// The geometry axes of a study: `β1, β2, R1, R2` for curved decks (the others empty), `L1, L2,
+/// θ_s` for straight and skewed decks (the curved ones empty).
+#[derive(Default)]
+struct DeckAxes {
+    beta1_deg: Vec<Real>,
+    beta2_deg: Vec<Real>,
+    r1_m: Vec<Real>,
+    r2_m: Vec<Real>,
+    l1_m: Vec<Real>,
+    l2_m: Vec<Real>,
+    skew_deg: Vec<Real>,
+}
+
+impl Ctx<'_> {
+    /// `decks.shape`: `curved` (default), `straight` or `skew`.
+    fn shape(&self, decks: &RawDecks) -> Result<StudyShape, ScenarioError> {
+        let Some(v) = &decks.shape else {
+            return Ok(StudyShape::Curved);
+        };
+        match v.get_ref().as_str() {
+            "curved" => Ok(StudyShape::Curved),
+            "straight" => Ok(StudyShape::Straight),
+            "skew" => Ok(StudyShape::Skew),
+            other => Err(self.invalid(
+                v.span(),
+                "decks.shape",
+                format!("{other:?}"),
+                "expected \"curved\", \"straight\" or \"skew\"",
+            )),
+        }
+    }
+
+    /// Keys of another shape are errors (they would be silently ignored otherwise).
+    fn refuse_foreign_keys(
+        &self,
+        decks: &RawDecks,
+        shape: StudyShape,
+    ) -> Result<(), ScenarioError> {
+        let span = |v: &S<Vec<Real>>| v.as_ref().map(|v| v.span());
+        let mut foreign = if shape == StudyShape::Curved {
+            vec![
+                ("decks.l1_m", span(&decks.l1_m)),
+                ("decks.l2_m", span(&decks.l2_m)),
+                ("decks.skew_deg", span(&decks.skew_deg)),
+            ]
+        } else {
+            vec![
+                ("decks.beta1_deg", span(&decks.beta1_deg)),
+                ("decks.beta2_deg", span(&decks.beta2_deg)),
+                ("decks.r1_m", span(&decks.r1_m)),
+                ("decks.r2_m", span(&decks.r2_m)),
+            ]
+        };
+        if shape == StudyShape::Straight {
+            foreign.push(("decks.skew_deg", span(&decks.skew_deg)));
+        }
+        for (key, span) in foreign {
+            if let Some(span) = span {
+                return Err(self.invalid(
+                    span,
+                    key,
+                    "(set)".into(),
+                    &format!(
+                        "this key does not apply to decks.shape = \"{}\"",
+                        shape.name()
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// `decks.beta1_deg`, `beta2_deg` in `(0, 360)` and `decks.r1_m`, `r2_m` above `width/2`
+    /// (default radii made invalid by a user-set width blame the width).
+    fn curved_axes(
+        &self,
+        decks: &RawDecks,
+        d: &Scenario,
+        width: Real,
+        width_span: Range<usize>,
+    ) -> Result<DeckAxes, ScenarioError> {
+        let beta_ok = |x: Real| x > 0.0 && x < 360.0;
+        let beta = "must lie in (0, 360) deg";
+        let (beta1_deg, _) = self.list(
+            &decks.beta1_deg,
+            &d.beta1_deg,
+            "decks.beta1_deg",
+            beta_ok,
+            beta,
+        )?;
+        let (beta2_deg, _) = self.list(
+            &decks.beta2_deg,
+            &d.beta2_deg,
+            "decks.beta2_deg",
+            beta_ok,
+            beta,
+        )?;
+        let half = width / 2.0;
+        let r_reason = format!("R must exceed width/2 = {} m", fmt_num(half));
+        let mut radii = Vec::new();
+        for (key, v, dv) in [
+            ("decks.r1_m", &decks.r1_m, &d.r1_m),
+            ("decks.r2_m", &decks.r2_m, &d.r2_m),
+        ] {
+            let rs = match self.list(v, dv, key, |x| x > half, &r_reason) {
+                Ok((rs, _)) => rs,
+                Err(_) if v.is_none() => {
+                    return Err(self.invalid(
+                        width_span,
+                        "decks.width_m",
+                        fmt_num(width),
+                        &format!("width/2 must be below every radius of {key} (built-in default)"),
+                    ));
+                }
+                Err(e) => return Err(e),
+            };
+            radii.push(rs);
+        }
+        let r2_m = radii.pop().unwrap_or_default();
+        let r1_m = radii.pop().unwrap_or_default();
+        Ok(DeckAxes {
+            beta1_deg,
+            beta2_deg,
+            r1_m,
+            r2_m,
+            ..DeckAxes::default()
+        })
+    }
+
+    /// `decks.l1_m`, `l2_m` (> 0) and, for skewed decks, `decks.skew_deg` in `[0, 90)`
+    /// (straight decks: one skew angle, 0).
+    fn straight_axes(
+        &self,
+        decks: &RawDecks,
+        shape: StudyShape,
+    ) -> Result<DeckAxes, ScenarioError> {
+        let l_ok = |x: Real| x > 0.0;
+        let l = "the deck length must be finite and > 0";
+        let (l1_m, _) = self.list(&decks.l1_m, &DEFAULT_LENGTHS_M, "decks.l1_m", l_ok, l)?;
+        let (l2_m, _) = self.list(&decks.l2_m, &DEFAULT_LENGTHS_M, "decks.l2_m", l_ok, l)?;
+        let skew_deg = if shape == StudyShape::Skew {
+            self.list(
+                &decks.skew_deg,
+                &DEFAULT_SKEW_DEG,
+                "decks.skew_deg",
+                |x| (0.0..90.0).contains(&x),
+                "the skew angle must lie in [0, 90) deg",
+            )?
+            .0
+        } else {
+            vec![0.0]
+        };
+        Ok(DeckAxes {
+            l1_m,
+            l2_m,
+            skew_deg,
+            ..DeckAxes::default()
+        })
+    }
+
+    /// `impact.sigma_mode`: `exact` or `end`.
+    fn sigma_mode(
+        &self,
+        impact: &RawImpact,
+        default: SigmaMode,
+    ) -> Result<SigmaMode, ScenarioError> {
+        let Some(s) = &impact.sigma_mode else {
+            return Ok(default);
+        };
+        match s.get_ref().as_str() {
+            "exact" => Ok(SigmaMode::Exact),
+            "end" => Ok(SigmaMode::End),
+            other => Err(self.invalid(
+                s.span(),
+                "impact.sigma_mode",
+                format!("{other:?}"),
+                "expected \"exact\" or \"end\"",
+            )),
+        }
+    }
+
+    /// `grid.ratio_min` (finite) and `grid.ratio_max` (above it, by at most
+    /// [`MAX_RATIO_WIDTH`]).
+    fn ratio_bounds(&self, grid: &RawGrid, d: &Scenario) -> Result<(Real, Real), ScenarioError> {
+        let (ratio_min, _) = self.scalar(
+            &grid.ratio_min,
+            d.ratio_min,
+            "grid.ratio_min",
+            |_| true,
+            "must be finite",
+        )?;
+        let (ratio_max, _) = self.scalar(
+            &grid.ratio_max,
+            d.ratio_max,
+            "grid.ratio_max",
+            |x| x > ratio_min && (x - ratio_min).is_finite() && (x - ratio_min) <= MAX_RATIO_WIDTH,
+            &format!(
+                "must be finite and > ratio_min = {}, with ratio_max - ratio_min <= {}",
+                fmt_num(ratio_min),
+                fmt_num(MAX_RATIO_WIDTH)
+            ),
+        )?;
+        Ok((ratio_min, ratio_max))
+    }
+
+    /// `grid.cases`: a non-empty list of distinct case names, returned in [`ContactCase::ALL`]
+    /// order.
+    fn cases(
+        &self,
+        grid: &RawGrid,
+        default: &[ContactCase],
+    ) -> Result<Vec<ContactCase>, ScenarioError> {
+        let Some(s) = &grid.cases else {
+            return Ok(default.to_vec());
+        };
+        let names = s.get_ref();
+        if names.is_empty() {
+            return Err(self.invalid(
+                s.span(),
+                "grid.cases",
+                "[]".into(),
+                "the list must not be empty",
+            ));
+        }
+        let mut set = Vec::new();
+        for (i, n) in names.iter().enumerate() {
+            let Some(c) = ContactCase::from_name(n) else {
+                return Err(self.invalid(
+                    s.span(),
+                    &format!("grid.cases[{i}]"),
+                    format!("{n:?}"),
+                    "expected one of \"deck1-inner\", \"deck1-outer\", \"deck2-inner\", \"deck2-outer\"",
+                ));
+            };
+            if set.contains(&c) {
+                return Err(self.invalid(
+                    s.span(),
+                    &format!("grid.cases[{i}]"),
+                    format!("{n:?}"),
+                    "duplicate case",
+                ));
+            }
+            set.push(c);
+        }
+        Ok(ContactCase::ALL
+            .into_iter()
+            .filter(|c| set.contains(c))
+            .collect())
+    }
+
+    /// `[output]`: `figures`, `svg` (needs figures) and `region_map_samples` in `[2, 100000]`.
+    fn output(
+        &self,
+        output: &RawOutput,
+        d: &OutputOptions,
+    ) -> Result<OutputOptions, ScenarioError> {
+        let figures = output.figures.as_ref().map_or(d.figures, |s| *s.get_ref());
+        let svg = output.svg.as_ref().map_or(d.svg, |s| *s.get_ref());
+        if let Some(s) = &output.svg
+            && svg
+            && !figures
+        {
+            return Err(self.invalid(
+                s.span(),
+                "output.svg",
+                "true".into(),
+                "SVG copies of the figures need figures = true (output.figures is false)",
+            ));
+        }
+        let region_map_samples = match &output.region_map_samples {
+            None => d.region_map_samples,
+            Some(s) => {
+                let n = *s.get_ref();
+                if !(2..=100_000).contains(&n) {
+                    return Err(self.invalid(
+                        s.span(),
+                        "output.region_map_samples",
+                        n.to_string(),
+                        "must lie in [2, 100000]",
+                    ));
+                }
+                n as usize
+            }
+        };
+        Ok(OutputOptions {
+            figures,
+            svg,
+            region_map_samples,
+        })
+    }
+}
+
 /// Checks the derived mass properties (area, mass, polar inertia) of every deck at load time, so
 /// that an overflow or underflow (e.g. `density_kg_m3 = 1e300` on large decks) names the scenario
 /// key and its line instead of failing during the run. Mass and inertia grow with every
@@ -557,26 +896,15 @@ impl Scenario {
     /// or an infinite `ratio_max − ratio_min`
     /// ([`ScenarioError::Invalid`]).
     pub fn from_toml(text: &str, origin: &str) -> Result<Self, ScenarioError> {
-        let raw: RawScenario = toml::from_str(text).map_err(|e| {
-            let pos = e.span().map_or(0, |s| s.start);
-            let (line, column) = line_col(text, pos);
-            let key = key_on_line(text, pos)
-                .map(|k| format!(" (key `{k}`)"))
-                .unwrap_or_default();
-            ScenarioError::Syntax {
-                origin: origin.to_string(),
-                line,
-                column,
-                key,
-                message: crate::input::shorten_lines(e.message().trim(), 200),
-            }
-        })?;
+        let raw = parse_raw(text, origin)?;
         let cx = Ctx { text, origin };
         let d = Scenario::default();
         let decks = raw.decks.map(Table::into_inner).unwrap_or_default();
         let impact = raw.impact.map(Table::into_inner).unwrap_or_default();
         let grid = raw.grid.map(Table::into_inner).unwrap_or_default();
         let output = raw.output.map(Table::into_inner).unwrap_or_default();
+        // The order of the checks is the order of the keys in the file's documentation: the
+        // first bad value found is the one reported.
         let pos = |x: Real| x > 0.0;
         let (width, width_span) =
             cx.scalar(&decks.width_m, d.width, "decks.width_m", pos, "must be > 0")?;
@@ -594,136 +922,13 @@ impl Scenario {
             pos,
             "must be > 0",
         )?;
-        let shape = match &decks.shape {
-            None => StudyShape::Curved,
-            Some(v) => match v.get_ref().as_str() {
-                "curved" => StudyShape::Curved,
-                "straight" => StudyShape::Straight,
-                "skew" => StudyShape::Skew,
-                other => {
-                    return Err(cx.invalid(
-                        v.span(),
-                        "decks.shape",
-                        format!("{other:?}"),
-                        "expected \"curved\", \"straight\" or \"skew\"",
-                    ));
-                }
-            },
-        };
-        // Keys of another shape are errors (they would be silently ignored otherwise).
-        let foreign: Vec<(&str, Option<Range<usize>>)> = match shape {
-            StudyShape::Curved => vec![
-                ("decks.l1_m", decks.l1_m.as_ref().map(|v| v.span())),
-                ("decks.l2_m", decks.l2_m.as_ref().map(|v| v.span())),
-                ("decks.skew_deg", decks.skew_deg.as_ref().map(|v| v.span())),
-            ],
-            _ => {
-                let mut f = vec![
-                    (
-                        "decks.beta1_deg",
-                        decks.beta1_deg.as_ref().map(|v| v.span()),
-                    ),
-                    (
-                        "decks.beta2_deg",
-                        decks.beta2_deg.as_ref().map(|v| v.span()),
-                    ),
-                    ("decks.r1_m", decks.r1_m.as_ref().map(|v| v.span())),
-                    ("decks.r2_m", decks.r2_m.as_ref().map(|v| v.span())),
-                ];
-                if shape == StudyShape::Straight {
-                    f.push(("decks.skew_deg", decks.skew_deg.as_ref().map(|v| v.span())));
-                }
-                f
-            }
-        };
-        for (key, span) in foreign {
-            if let Some(span) = span {
-                return Err(cx.invalid(
-                    span,
-                    key,
-                    "(set)".into(),
-                    &format!(
-                        "this key does not apply to decks.shape = \"{}\"",
-                        shape.name()
-                    ),
-                ));
-            }
-        }
-        let (beta1_deg, beta2_deg, r1_m, r2_m, l1_m, l2_m, skew_deg);
-        if shape == StudyShape::Curved {
-            let beta_ok = |x: Real| x > 0.0 && x < 360.0;
-            let (beta1_deg_, _) = cx.list(
-                &decks.beta1_deg,
-                &d.beta1_deg,
-                "decks.beta1_deg",
-                beta_ok,
-                "must lie in (0, 360) deg",
-            )?;
-            let (beta2_deg_, _) = cx.list(
-                &decks.beta2_deg,
-                &d.beta2_deg,
-                "decks.beta2_deg",
-                beta_ok,
-                "must lie in (0, 360) deg",
-            )?;
-            let half = width / 2.0;
-            let r_reason = format!("R must exceed width/2 = {} m", fmt_num(half));
-            let mut radii = Vec::new();
-            for (key, v, dv) in [
-                ("decks.r1_m", &decks.r1_m, &d.r1_m),
-                ("decks.r2_m", &decks.r2_m, &d.r2_m),
-            ] {
-                let rs = match cx.list(v, dv, key, |x| x > half, &r_reason) {
-                    Ok((rs, _)) => rs,
-                    // Default radii made invalid by a user-set width: blame the width.
-                    Err(_) if v.is_none() => {
-                        return Err(cx.invalid(
-                            width_span,
-                            "decks.width_m",
-                            fmt_num(width),
-                            &format!(
-                                "width/2 must be below every radius of {key} (built-in default)"
-                            ),
-                        ));
-                    }
-                    Err(e) => return Err(e),
-                };
-                radii.push(rs);
-            }
-            let r2_m_ = radii.pop().unwrap_or_default();
-            let r1_m_ = radii.pop().unwrap_or_default();
-            (beta1_deg, beta2_deg, r1_m, r2_m) = (beta1_deg_, beta2_deg_, r1_m_, r2_m_);
-            (l1_m, l2_m, skew_deg) = (Vec::new(), Vec::new(), Vec::new());
+        let shape = cx.shape(&decks)?;
+        cx.refuse_foreign_keys(&decks, shape)?;
+        let axes = if shape == StudyShape::Curved {
+            cx.curved_axes(&decks, &d, width, width_span)?
         } else {
-            let l_ok = |x: Real| x > 0.0;
-            (l1_m, _) = cx.list(
-                &decks.l1_m,
-                &DEFAULT_LENGTHS_M,
-                "decks.l1_m",
-                l_ok,
-                "the deck length must be finite and > 0",
-            )?;
-            (l2_m, _) = cx.list(
-                &decks.l2_m,
-                &DEFAULT_LENGTHS_M,
-                "decks.l2_m",
-                l_ok,
-                "the deck length must be finite and > 0",
-            )?;
-            skew_deg = if shape == StudyShape::Skew {
-                cx.list(
-                    &decks.skew_deg,
-                    &DEFAULT_SKEW_DEG,
-                    "decks.skew_deg",
-                    |x| (0.0..90.0).contains(&x),
-                    "the skew angle must lie in [0, 90) deg",
-                )?
-                .0
-            } else {
-                vec![0.0]
-            };
-            (beta1_deg, beta2_deg, r1_m, r2_m) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-        }
+            cx.straight_axes(&decks, shape)?
+        };
         let (mu, _) = cx.list(
             &impact.mu,
             &d.mu,
@@ -738,119 +943,24 @@ impl Scenario {
             |x| (0.0..=1.0).contains(&x),
             "must lie in [0, 1]",
         )?;
-        let sigma_mode = match &impact.sigma_mode {
-            None => d.sigma_mode,
-            Some(s) => match s.get_ref().as_str() {
-                "exact" => SigmaMode::Exact,
-                "end" => SigmaMode::End,
-                other => {
-                    return Err(cx.invalid(
-                        s.span(),
-                        "impact.sigma_mode",
-                        format!("{other:?}"),
-                        "expected \"exact\" or \"end\"",
-                    ));
-                }
-            },
-        };
+        let sigma_mode = cx.sigma_mode(&impact, d.sigma_mode)?;
         let theta1 = cx.range(&grid.theta1_deg, d.theta1, "grid.theta1_deg")?;
         let theta2 = cx.range(&grid.theta2_deg, d.theta2, "grid.theta2_deg")?;
-        let (ratio_min, _) = cx.scalar(
-            &grid.ratio_min,
-            d.ratio_min,
-            "grid.ratio_min",
-            |_| true,
-            "must be finite",
-        )?;
-        let (ratio_max, _) = cx.scalar(
-            &grid.ratio_max,
-            d.ratio_max,
-            "grid.ratio_max",
-            |x| x > ratio_min && (x - ratio_min).is_finite() && (x - ratio_min) <= MAX_RATIO_WIDTH,
-            &format!(
-                "must be finite and > ratio_min = {}, with ratio_max - ratio_min <= {}",
-                fmt_num(ratio_min),
-                fmt_num(MAX_RATIO_WIDTH)
-            ),
-        )?;
-        let cases = match &grid.cases {
-            None => d.cases.clone(),
-            Some(s) => {
-                let names = s.get_ref();
-                if names.is_empty() {
-                    return Err(cx.invalid(
-                        s.span(),
-                        "grid.cases",
-                        "[]".into(),
-                        "the list must not be empty",
-                    ));
-                }
-                let mut set = Vec::new();
-                for (i, n) in names.iter().enumerate() {
-                    let Some(c) = ContactCase::from_name(n) else {
-                        return Err(cx.invalid(
-                            s.span(),
-                            &format!("grid.cases[{i}]"),
-                            format!("{n:?}"),
-                            "expected one of \"deck1-inner\", \"deck1-outer\", \"deck2-inner\", \"deck2-outer\"",
-                        ));
-                    };
-                    if set.contains(&c) {
-                        return Err(cx.invalid(
-                            s.span(),
-                            &format!("grid.cases[{i}]"),
-                            format!("{n:?}"),
-                            "duplicate case",
-                        ));
-                    }
-                    set.push(c);
-                }
-                ContactCase::ALL
-                    .into_iter()
-                    .filter(|c| set.contains(c))
-                    .collect()
-            }
-        };
-        let figures = output.figures.map_or(d.output.figures, |s| *s.get_ref());
-        let svg = output.svg.as_ref().map_or(d.output.svg, |s| *s.get_ref());
-        if let Some(s) = &output.svg
-            && svg
-            && !figures
-        {
-            return Err(cx.invalid(
-                s.span(),
-                "output.svg",
-                "true".into(),
-                "SVG copies of the figures need figures = true (output.figures is false)",
-            ));
-        }
-        let region_map_samples = match &output.region_map_samples {
-            None => d.output.region_map_samples,
-            Some(s) => {
-                let n = *s.get_ref();
-                if !(2..=100_000).contains(&n) {
-                    return Err(cx.invalid(
-                        s.span(),
-                        "output.region_map_samples",
-                        n.to_string(),
-                        "must lie in [2, 100000]",
-                    ));
-                }
-                n as usize
-            }
-        };
+        let (ratio_min, ratio_max) = cx.ratio_bounds(&grid, &d)?;
+        let cases = cx.cases(&grid, &d.cases)?;
+        let output = cx.output(&output, &d.output)?;
         let scenario = Self {
             shape,
-            l1_m,
-            l2_m,
-            skew_deg,
+            l1_m: axes.l1_m,
+            l2_m: axes.l2_m,
+            skew_deg: axes.skew_deg,
             width,
             thickness,
             density,
-            beta1_deg,
-            beta2_deg,
-            r1_m,
-            r2_m,
+            beta1_deg: axes.beta1_deg,
+            beta2_deg: axes.beta2_deg,
+            r1_m: axes.r1_m,
+            r2_m: axes.r2_m,
             mu,
             eps,
             theta1,
@@ -859,37 +969,12 @@ impl Scenario {
             ratio_max,
             cases,
             sigma_mode,
-            output: OutputOptions {
-                figures,
-                svg,
-                region_map_samples,
-            },
+            output,
         };
         check_deck_mass_properties(&scenario, &cx, &decks)?;
-        scenario.check_size(origin).map_err(|e| match e {
-            // Point at the finer θ range the user wrote, if any (the usual culprit).
-            ScenarioError::Invalid {
-                origin,
-                key,
-                value,
-                reason,
-                ..
-            } => {
-                let span = [&grid.theta2_deg, &grid.theta1_deg]
-                    .into_iter()
-                    .flatten()
-                    .map(|r| r.step.span())
-                    .next();
-                ScenarioError::Invalid {
-                    origin,
-                    line: span.map_or(0, |s| line_col(text, s.start).0),
-                    key,
-                    value,
-                    reason,
-                }
-            }
-            e => e,
-        })?;
+        scenario
+            .check_size(origin)
+            .map_err(|e| locate_size_error(e, &grid, text))?;
         Ok(scenario)
     }
 
@@ -913,56 +998,61 @@ impl Scenario {
         }
     }
 
+    /// The geometry axes of this shape at the indices `g`: `(name in labels, unit, name in file
+    /// names, value)`.
+    fn geometry_axes(
+        &self,
+        g: [usize; 4],
+    ) -> Vec<(&'static str, &'static str, &'static str, Real)> {
+        match self.shape {
+            StudyShape::Curved => vec![
+                ("β1", "°", "b1", self.beta1_deg[g[0]]),
+                ("β2", "°", "b2", self.beta2_deg[g[1]]),
+                ("R1", " m", "r1", self.r1_m[g[2]]),
+                ("R2", " m", "r2", self.r2_m[g[3]]),
+            ],
+            StudyShape::Straight => vec![
+                ("L1", " m", "l1", self.l1_m[g[0]]),
+                ("L2", " m", "l2", self.l2_m[g[1]]),
+            ],
+            StudyShape::Skew => vec![
+                ("L1", " m", "l1", self.l1_m[g[0]]),
+                ("L2", " m", "l2", self.l2_m[g[1]]),
+                ("skew", "°", "skew", self.skew_deg[g[2]]),
+            ],
+        }
+    }
+
     /// Human-readable geometry of the axis indices `g` (figure titles), e.g.
     /// `β1 = 60°, β2 = 90°, R1 = 100 m, R2 = 200 m` or `straight decks, L1 = 30 m, L2 = 60 m`.
     pub fn geometry_label(&self, g: [usize; 4]) -> String {
-        let t = fmt_num;
-        match self.shape {
-            StudyShape::Curved => format!(
-                "β1 = {}°, β2 = {}°, R1 = {} m, R2 = {} m",
-                t(self.beta1_deg[g[0]]),
-                t(self.beta2_deg[g[1]]),
-                t(self.r1_m[g[2]]),
-                t(self.r2_m[g[3]])
-            ),
-            StudyShape::Straight => format!(
-                "straight decks, L1 = {} m, L2 = {} m",
-                t(self.l1_m[g[0]]),
-                t(self.l2_m[g[1]])
-            ),
-            StudyShape::Skew => format!(
-                "skewed decks, L1 = {} m, L2 = {} m, skew = {}°",
-                t(self.l1_m[g[0]]),
-                t(self.l2_m[g[1]]),
-                t(self.skew_deg[g[2]])
-            ),
-        }
+        let prefix = match self.shape {
+            StudyShape::Curved => "",
+            StudyShape::Straight => "straight decks, ",
+            StudyShape::Skew => "skewed decks, ",
+        };
+        let axes: Vec<String> = self
+            .geometry_axes(g)
+            .into_iter()
+            .map(|(name, unit, _, v)| format!("{name} = {}{unit}", fmt_num(v)))
+            .collect();
+        format!("{prefix}{}", axes.join(", "))
     }
 
     /// File-name fragment of the geometry `g`: `b1-60_b2-90_r1-100_r2-200` (curved, as before),
     /// `straight_l1-30_l2-60` or `skew_l1-30_l2-60_skew-15`.
     pub fn geometry_id(&self, g: [usize; 4]) -> String {
-        let t = fmt_num;
-        match self.shape {
-            StudyShape::Curved => format!(
-                "b1-{}_b2-{}_r1-{}_r2-{}",
-                t(self.beta1_deg[g[0]]),
-                t(self.beta2_deg[g[1]]),
-                t(self.r1_m[g[2]]),
-                t(self.r2_m[g[3]])
-            ),
-            StudyShape::Straight => format!(
-                "straight_l1-{}_l2-{}",
-                t(self.l1_m[g[0]]),
-                t(self.l2_m[g[1]])
-            ),
-            StudyShape::Skew => format!(
-                "skew_l1-{}_l2-{}_skew-{}",
-                t(self.l1_m[g[0]]),
-                t(self.l2_m[g[1]]),
-                t(self.skew_deg[g[2]])
-            ),
-        }
+        let prefix = match self.shape {
+            StudyShape::Curved => "",
+            StudyShape::Straight => "straight_",
+            StudyShape::Skew => "skew_",
+        };
+        let axes: Vec<String> = self
+            .geometry_axes(g)
+            .into_iter()
+            .map(|(_, _, id, v)| format!("{id}-{}", fmt_num(v)))
+            .collect();
+        format!("{prefix}{}", axes.join("_"))
     }
 
     /// Number of deck geometries (product of [`geometry_dims`](Self::geometry_dims)).

@@ -98,57 +98,15 @@ pub fn merge(parts: &[ShardFiles]) -> Result<Merged, StudyError> {
     let mut parsed = Vec::with_capacity(parts.len());
     for p in parts {
         let mf = format!("{}/shard.json", p.origin);
-        check_json_duplicate_keys(&p.manifest)
-            .map_err(|e| err(&mf, format!("manifest is not valid JSON: {e}")))?;
-        let v: Value = serde_json::from_str(&p.manifest)
-            .map_err(|e| err(&mf, format!("manifest is not valid JSON: {e}")))?;
-        if v["format"] != SHARD_FORMAT {
-            return Err(err(
-                &p.origin,
-                format!("manifest format is not {SHARD_FORMAT:?}"),
-            ));
-        }
-        let k = v["shard"]
-            .as_u64()
-            .ok_or_else(|| err(&p.origin, "manifest lacks `shard`"))? as usize;
-        let n = v["of"]
-            .as_u64()
-            .ok_or_else(|| err(&p.origin, "manifest lacks `of`"))? as usize;
-        let text = v["scenario"]
-            .as_str()
-            .ok_or_else(|| err(&p.origin, "manifest lacks `scenario`"))?;
-        let shard = Shard::new(k, n).map_err(|e| err(&p.origin, e))?;
-        let declared = |key: &str| {
-            v[key]
-                .as_u64()
-                .ok_or_else(|| err(&mf, format!("manifest lacks `{key}`")))
-        };
-        let rows_total = declared("rows_total")?;
-        let rows_declared = declared("rows")?;
-        let sum = v["rows_fnv1a64"].as_str().ok_or_else(|| {
-            err(
-                &mf,
-                "manifest lacks `rows_fnv1a64` (the checksum of rows.csv; shards written before \
-                 it existed must be computed again)",
-            )
-        })?;
-        let lines = p.rows.lines().count().saturating_sub(1) as u64;
-        if lines != rows_declared {
-            return Err(err(
-                &format!("{}/rows.csv", p.origin),
-                format!("holds {lines} rows but {mf} declares rows = {rows_declared}"),
-            ));
-        }
-        let actual = fnv1a64_hex(p.rows.as_bytes());
-        if actual != sum {
-            return Err(err(
-                &format!("{}/rows.csv", p.origin),
-                format!(
-                    "checksum {actual} differs from rows_fnv1a64 = {sum} in {mf}: the rows were \
-                     edited or corrupted after the shard run; compute the shard again"
-                ),
-            ));
-        }
+        let Manifest {
+            shard,
+            k,
+            n,
+            text,
+            rows_total,
+            rows_declared,
+        } = read_manifest(p, &mf)?;
+        let text = text.as_str();
         match (&scenario_text, count) {
             (None, None) => {
                 scenario_text = Some(text.to_string());
@@ -157,25 +115,7 @@ pub fn merge(parts: &[ShardFiles]) -> Result<Merged, StudyError> {
             }
             (Some(t), Some(c)) => {
                 if t != text {
-                    let (line, a, b) = t
-                        .lines()
-                        .chain(std::iter::repeat(""))
-                        .zip(text.lines().chain(std::iter::repeat("")))
-                        .take(t.lines().count().max(text.lines().count()))
-                        .enumerate()
-                        .find(|(_, (a, b))| a != b)
-                        .map_or((0, "(line endings or final newline)", ""), |(i, (a, b))| {
-                            (i + 1, a, b)
-                        });
-                    return Err(err(
-                        &mf,
-                        format!(
-                            "its scenario text differs from that of {} at line {line}: {b:?} vs \
-                             {a:?} (shards must come from the same scenario file, comments \
-                             included: merge writes it to scenario.toml)",
-                            parts[0].origin
-                        ),
-                    ));
+                    return Err(scenario_mismatch(&mf, &parts[0].origin, t, text));
                 }
                 if c != n {
                     return Err(err(&p.origin, format!("shard count {n} differs from {c}")));
@@ -219,6 +159,106 @@ pub fn merge(parts: &[ShardFiles]) -> Result<Merged, StudyError> {
         scenario,
         rows,
     })
+}
+
+/// What a shard's manifest declares (checked against its `rows.csv`).
+struct Manifest {
+    shard: Shard,
+    /// The shard's number `k` (1-based) and the shard count `n`.
+    k: usize,
+    n: usize,
+    /// The scenario text the shard was computed from.
+    text: String,
+    rows_total: u64,
+    rows_declared: u64,
+}
+
+/// Reads the manifest of `p` (named `mf` in messages): JSON without duplicate keys, format
+/// [`SHARD_FORMAT`], `shard`/`of`, `scenario`, `rows_total`, `rows`, `rows_fnv1a64`; and checks
+/// that `rows.csv` holds the declared number of rows with the declared checksum.
+fn read_manifest(p: &ShardFiles, mf: &str) -> Result<Manifest, StudyError> {
+    check_json_duplicate_keys(&p.manifest)
+        .map_err(|e| err(mf, format!("manifest is not valid JSON: {e}")))?;
+    let v: Value = serde_json::from_str(&p.manifest)
+        .map_err(|e| err(mf, format!("manifest is not valid JSON: {e}")))?;
+    if v["format"] != SHARD_FORMAT {
+        return Err(err(
+            &p.origin,
+            format!("manifest format is not {SHARD_FORMAT:?}"),
+        ));
+    }
+    let k = v["shard"]
+        .as_u64()
+        .ok_or_else(|| err(&p.origin, "manifest lacks `shard`"))? as usize;
+    let n = v["of"]
+        .as_u64()
+        .ok_or_else(|| err(&p.origin, "manifest lacks `of`"))? as usize;
+    let text = v["scenario"]
+        .as_str()
+        .ok_or_else(|| err(&p.origin, "manifest lacks `scenario`"))?;
+    let shard = Shard::new(k, n).map_err(|e| err(&p.origin, e))?;
+    let declared = |key: &str| {
+        v[key]
+            .as_u64()
+            .ok_or_else(|| err(mf, format!("manifest lacks `{key}`")))
+    };
+    let rows_total = declared("rows_total")?;
+    let rows_declared = declared("rows")?;
+    let sum = v["rows_fnv1a64"].as_str().ok_or_else(|| {
+        err(
+            mf,
+            "manifest lacks `rows_fnv1a64` (the checksum of rows.csv; shards written before \
+             it existed must be computed again)",
+        )
+    })?;
+    let lines = p.rows.lines().count().saturating_sub(1) as u64;
+    if lines != rows_declared {
+        return Err(err(
+            &format!("{}/rows.csv", p.origin),
+            format!("holds {lines} rows but {mf} declares rows = {rows_declared}"),
+        ));
+    }
+    let actual = fnv1a64_hex(p.rows.as_bytes());
+    if actual != sum {
+        return Err(err(
+            &format!("{}/rows.csv", p.origin),
+            format!(
+                "checksum {actual} differs from rows_fnv1a64 = {sum} in {mf}: the rows were \
+                 edited or corrupted after the shard run; compute the shard again"
+            ),
+        ));
+    }
+    Ok(Manifest {
+        shard,
+        k,
+        n,
+        text: text.to_string(),
+        rows_total,
+        rows_declared,
+    })
+}
+
+/// The error of a shard (manifest `mf`) whose scenario `text` differs from the first shard's `t`
+/// (from `first`): the first differing line, both versions.
+fn scenario_mismatch(mf: &str, first: &str, t: &str, text: &str) -> StudyError {
+    let (line, a, b) = t
+        .lines()
+        .chain(std::iter::repeat(""))
+        .zip(text.lines().chain(std::iter::repeat("")))
+        .take(t.lines().count().max(text.lines().count()))
+        .enumerate()
+        .find(|(_, (a, b))| a != b)
+        .map_or((0, "(line endings or final newline)", ""), |(i, (a, b))| {
+            (i + 1, a, b)
+        });
+    err(
+        mf,
+        format!(
+            "its scenario text differs from that of {first} at line {line}: {b:?} vs \
+             {a:?} (shards must come from the same scenario file, comments \
+             included: merge writes it to scenario.toml)"
+        ),
+    )
 }
 
 /// Checks one shard's counts against the scenario and places its rows (global index order) into

@@ -7,7 +7,7 @@
 
 use pounding::contact_law::registry::{self, LawInputs};
 use pounding::contact_law::{ContactLaw, registry::BuildError};
-use pounding::sim::scenario::{CONTACT_KEYS, Scenario, ScenarioError};
+use pounding::sim::scenario::{Scenario, ScenarioError, contact_keys};
 use std::collections::BTreeMap;
 
 /// A valid value of every numeric key, and a second valid value.
@@ -84,7 +84,7 @@ fn contact_law_keys_declared_read_are_exactly_those_that_change_the_law() {
                 continue;
             };
             // the law's own keys given, and a foreign key (any other key of `[contact]`)
-            let foreign = CONTACT_KEYS
+            let foreign = contact_keys()
                 .iter()
                 .find(|k| !own.contains(k) && **k != "friction_velocity")
                 .unwrap();

@@ -143,3 +143,60 @@ fn contact_law_linear_bad_k_names_the_key() {
         "{msg}"
     );
 }
+
+/// The registry is the one source of every law: each entry builds (with its defaults) a law of
+/// its own name, and every key it lists is read by the generic `[contact]` section and handed to
+/// that law. Checked per key: a value that is out of range for the law (`-1`) makes the build fail
+/// quoting `= -1` or naming the key (`k1` alone: "give all of k1, k2, delta_y"), which it could
+/// only do if the key reached the law's `build`.
+#[test]
+fn contact_law_registry_entries_build_their_laws_and_receive_their_keys() {
+    for e in registry::LAWS {
+        let s = Scenario::default().with_law(e.name);
+        let JointContact::Compliance(cc) = s.build().unwrap().problem.model.contact else {
+            panic!("{} is a compliance law", e.name)
+        };
+        assert_eq!(cc.law.name(), e.name);
+        assert_eq!(cc.law.describe()["law"], e.name);
+        for key in e.keys.iter().filter(|&&k| k != registry::CALIBRATION_KEY) {
+            let text = format!("[contact]\nlaw = {:?}\n{key} = -1.0\n", e.name);
+            let s = Scenario::from_toml(&text, "r.toml")
+                .unwrap_or_else(|err| panic!("{}: {key} refused by the reader: {err}", e.name));
+            let err = s.build().expect_err(key);
+            assert!(
+                err.to_string().contains("= -1") || err.keys().iter().any(|k| k.key == *key),
+                "{}: {key}: {err}",
+                e.name
+            );
+        }
+    }
+}
+
+/// The `[contact]` section accepts exactly `law`, `friction_velocity` and the registry's keys:
+/// an unknown key and a wrong type are refused while reading, naming the line.
+#[test]
+fn contact_section_keys_come_from_the_registry() {
+    for k in registry::law_keys() {
+        let v = if *k == registry::CALIBRATION_KEY {
+            "\"numerical\""
+        } else {
+            "1.0"
+        };
+        let text = format!("[contact]\nlaw = \"kelvin\"\n{k} = {v}\n");
+        assert!(Scenario::from_toml(&text, "k.toml").is_ok(), "{k}");
+    }
+    let e = Scenario::from_toml("[contact]\nlaw = \"kelvin\"\nfoo = 1.0\n", "u.toml").unwrap_err();
+    let msg = e.to_string();
+    assert!(
+        msg.contains("line 3") && msg.contains("unknown field `foo`"),
+        "{msg}"
+    );
+    let e = Scenario::from_toml("[contact]\nk = \"stiff\"\n", "t.toml").unwrap_err();
+    let msg = e.to_string();
+    assert!(
+        msg.contains("line 2") && msg.contains("invalid type"),
+        "{msg}"
+    );
+    let e = Scenario::from_toml("[contact]\ncalibration = 2.0\n", "c.toml").unwrap_err();
+    assert!(e.to_string().contains("line 2"), "{e}");
+}

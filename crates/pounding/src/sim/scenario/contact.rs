@@ -8,7 +8,10 @@ use crate::contact_law::registry::{self, BuildError, LawInputs};
 use crate::contact_law::{ContactLaw, ContactLawError};
 use crate::output::float_token;
 use crate::sim::{ComplianceContact, DampingModel, JointContact, SimModel};
-use serde::Deserialize;
+use serde::de::{self, Deserialize, Deserializer, MapAccess, Visitor};
+use std::collections::BTreeMap;
+use std::fmt;
+use std::sync::LazyLock;
 
 /// The default list of `pounding compare --laws`, in order: `rigid` and the five laws of the
 /// first release (kept explicit so that `compare`'s output stays as it is when the
@@ -23,45 +26,82 @@ pub const LAW_NAMES: [&str; 6] = [
 ];
 
 /// `[contact]`: the joint's normal contact law. Every key optional.
-#[derive(Deserialize, Default, Clone, Debug)]
-#[serde(deny_unknown_fields, default)]
+///
+/// The section is read generically from the [`registry`], so that a new law with a new key
+/// needs no change here: its keys are `law`, `friction_velocity` (every compliance law) and
+/// every key that some registered law lists ([`registry::law_keys`]); all are numbers but `law`
+/// and `calibration` ([`registry::CALIBRATION_KEY`]), which are text. Any other key, or a value
+/// of the wrong type, is refused while the TOML is read (the message names the line).
+#[derive(Default, Clone, Debug)]
 pub struct ContactSec {
-    /// `rigid` (default), `kelvin`, `hertz`, `hertz-damp`, `bilinear`, `jankowski`, `linear`.
+    /// `rigid` (default) or a [`registry`] name (`kelvin`, `hertz`, …).
     pub law: Option<String>,
-    /// Kelvin and linear stiffness \\[N/m\\].
-    pub k: Option<f64>,
-    /// Kelvin damping \\[N s/m\\] (instead of `restitution`).
-    pub c: Option<f64>,
-    /// Hertz stiffness \\[N/m^1.5\\].
-    pub k_h: Option<f64>,
-    /// Hertz-damp constant damping ratio.
-    pub zeta: Option<f64>,
-    /// Hertz-damp per-impact damping factor.
-    pub chi: Option<f64>,
-    /// Target restitution of the damped laws (default: `\\[joint\\] eps_n`).
-    pub restitution: Option<f64>,
-    /// How the damping follows from `restitution`.
+    /// How the damping follows from `restitution` (the law's [`registry::LawInputs::calibration`]).
     pub calibration: Option<String>,
-    /// Hertz-damp design impact velocity \\[m/s\\].
-    pub design_velocity: Option<f64>,
-    /// Hertz-damp floor of the impact velocity \\[m/s\\].
-    pub min_velocity: Option<f64>,
-    /// Bilinear first stiffness \\[N/m\\].
-    pub k1: Option<f64>,
-    /// Bilinear second stiffness \\[N/m\\].
-    pub k2: Option<f64>,
-    /// Bilinear yield penetration \\[m\\].
-    pub delta_y: Option<f64>,
-    /// Bilinear design maximum penetration \\[m\\].
-    pub delta_m: Option<f64>,
-    /// Bilinear yield ratio.
-    pub a: Option<f64>,
-    /// Jankowski stiffness \\[N/m^1.5\\].
-    pub beta: Option<f64>,
-    /// Jankowski damping ratio.
-    pub xi: Option<f64>,
     /// Regularisation velocity of Coulomb friction \\[m/s\\].
     pub friction_velocity: Option<f64>,
+    /// The numeric law keys given, by name ([`registry::law_keys`]).
+    pub values: BTreeMap<&'static str, f64>,
+}
+
+impl ContactSec {
+    /// The value of the numeric law key `key` (`None`: not given).
+    fn value(&self, key: &str) -> Option<f64> {
+        self.values.get(key).copied()
+    }
+}
+
+/// Every key of `[contact]`: `law`, the registered laws' keys, `friction_velocity`.
+fn section_keys() -> &'static [&'static str] {
+    static KEYS: LazyLock<Vec<&'static str>> = LazyLock::new(|| {
+        let mut keys = vec!["law"];
+        keys.extend_from_slice(registry::law_keys());
+        keys.push("friction_velocity");
+        keys
+    });
+    &KEYS
+}
+
+/// A `[contact]` key, checked against [`section_keys`] as it is read (so that the TOML reader's
+/// message points at it).
+struct Key(&'static str);
+
+impl<'de> Deserialize<'de> for Key {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let name = String::deserialize(d)?;
+        let keys = section_keys();
+        match keys.iter().find(|&&k| k == name) {
+            Some(k) => Ok(Key(k)),
+            None => Err(de::Error::unknown_field(&name, keys)),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for ContactSec {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = ContactSec;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("the [contact] table")
+            }
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<ContactSec, A::Error> {
+                let mut sec = ContactSec::default();
+                while let Some(Key(key)) = map.next_key()? {
+                    match key {
+                        "law" => sec.law = Some(map.next_value()?),
+                        registry::CALIBRATION_KEY => sec.calibration = Some(map.next_value()?),
+                        "friction_velocity" => sec.friction_velocity = Some(map.next_value()?),
+                        _ => {
+                            sec.values.insert(key, map.next_value()?);
+                        }
+                    }
+                }
+                Ok(sec)
+            }
+        }
+        d.deserialize_map(V)
+    }
 }
 
 pub use crate::contact_law::registry::{
@@ -91,55 +131,18 @@ const fn contact(key: &'static str) -> ParamKey {
     ParamKey::new(Section::Contact, key)
 }
 
-/// The value of the numeric `[contact]` key `key` (`None`: not given, or not a numeric key).
-fn numeric_key(sec: &ContactSec, key: &str) -> Option<f64> {
-    match key {
-        "k" => sec.k,
-        "c" => sec.c,
-        "k_h" => sec.k_h,
-        "zeta" => sec.zeta,
-        "chi" => sec.chi,
-        "restitution" => sec.restitution,
-        "design_velocity" => sec.design_velocity,
-        "min_velocity" => sec.min_velocity,
-        "k1" => sec.k1,
-        "k2" => sec.k2,
-        "delta_y" => sec.delta_y,
-        "delta_m" => sec.delta_m,
-        "a" => sec.a,
-        "beta" => sec.beta,
-        "xi" => sec.xi,
-        "friction_velocity" => sec.friction_velocity,
-        _ => None,
-    }
+/// Every parameter key of `[contact]` (all but `law`): the registered laws' keys
+/// ([`registry::law_keys`], in registry order) and `friction_velocity`.
+pub fn contact_keys() -> &'static [&'static str] {
+    &section_keys()[1..]
 }
-
-/// Every parameter key of `[contact]` (all but `law`), in the order of the section.
-pub const CONTACT_KEYS: [&str; 17] = [
-    "k",
-    "c",
-    "k_h",
-    "zeta",
-    "chi",
-    "restitution",
-    "calibration",
-    "design_velocity",
-    "min_velocity",
-    "k1",
-    "k2",
-    "delta_y",
-    "delta_m",
-    "a",
-    "beta",
-    "xi",
-    "friction_velocity",
-];
 
 /// Whether the section gives `key`.
 fn given(sec: &ContactSec, key: &str) -> bool {
     match key {
-        "calibration" => sec.calibration.is_some(),
-        _ => numeric_key(sec, key).is_some(),
+        registry::CALIBRATION_KEY => sec.calibration.is_some(),
+        "friction_velocity" => sec.friction_velocity.is_some(),
+        _ => sec.value(key).is_some(),
     }
 }
 
@@ -170,7 +173,7 @@ pub(super) fn check_contact_keys(
     if read.iter().any(|(l, r)| r.is_none() && *l != "rigid") {
         return Ok(());
     }
-    for key in CONTACT_KEYS {
+    for &key in contact_keys() {
         let is_read = read
             .iter()
             .any(|(_, r)| r.as_ref().is_some_and(|(keys, _)| keys.contains(&key)));
@@ -242,11 +245,11 @@ fn compliance_law(
         ));
     };
     let cal = sec.calibration.as_deref().unwrap_or("numerical");
-    let values = |key: &str| numeric_key(sec, key);
+    let values = |key: &str| sec.value(key);
     let inputs = LawInputs {
         values: &values,
         calibration: cal,
-        restitution: sec.restitution.unwrap_or(eps_n),
+        restitution: sec.value("restitution").unwrap_or(eps_n),
         masses,
     };
     (entry.build)(&inputs).map_err(|e| match e {

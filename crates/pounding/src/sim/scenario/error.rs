@@ -127,26 +127,11 @@ impl ParamKey {
     }
 
     /// The `[contact]` key of a contact-law parameter named `name` by
-    /// [`crate::contact_law::ContactLawError`].
+    /// [`crate::contact_law::ContactLawError`]: any key a registered law reads
+    /// ([`crate::contact_law::registry::law_keys`]).
     pub fn of_contact_parameter(name: &str) -> Option<ParamKey> {
-        const KEYS: [&str; 15] = [
-            "k",
-            "c",
-            "k_h",
-            "zeta",
-            "chi",
-            "restitution",
-            "design_velocity",
-            "min_velocity",
-            "k1",
-            "k2",
-            "delta_y",
-            "delta_m",
-            "a",
-            "beta",
-            "xi",
-        ];
-        KEYS.iter()
+        crate::contact_law::registry::law_keys()
+            .iter()
             .find(|&&k| k == name)
             .map(|&k| ParamKey::new(Section::Contact, k))
     }

@@ -22,7 +22,7 @@ mod sections;
 
 pub use bridge::BridgeSetup;
 pub use contact::{
-    CONTACT_KEYS, DEFAULT_A, DEFAULT_DELTA_M, DEFAULT_K, DEFAULT_MIN_VELOCITY, LAW_NAMES,
+    DEFAULT_A, DEFAULT_DELTA_M, DEFAULT_K, DEFAULT_MIN_VELOCITY, LAW_NAMES, contact_keys,
     default_k_h,
 };
 pub use error::{KeyRef, ParamKey, ScenarioError, Section};
