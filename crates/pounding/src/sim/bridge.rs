@@ -255,6 +255,27 @@ impl BridgeModel {
                 ),
             });
         }
+        self.validate_segments()?;
+        self.validate_joints()?;
+        self.validate_abutments()?;
+        check(
+            "outer_seat_length".into(),
+            self.outer_seat_length,
+            self.outer_seat_length > 0.0,
+            "must be > 0",
+        )?;
+        check(
+            "damping_ratio".into(),
+            self.damping_ratio,
+            (0.0..1.0).contains(&self.damping_ratio),
+            "must lie in [0, 1)",
+        )?;
+        self.contact_kind()?;
+        Ok(())
+    }
+
+    /// Shapes, bearings and yield of every segment.
+    fn validate_segments(&self) -> Result<(), SimError> {
         for (i, s) in self.segments.iter().enumerate() {
             s.shape.validate().map_err(|e| SimError::InvalidParameter {
                 name: seg_key(i, &e.to_string()),
@@ -289,6 +310,11 @@ impl BridgeModel {
                 }
             }
         }
+        Ok(())
+    }
+
+    /// Gap, friction, restitution, seat, restrainer and matching face widths of every joint.
+    fn validate_joints(&self) -> Result<(), SimError> {
         for (k, j) in self.joints.iter().enumerate() {
             if let Some(r) = &j.restrainer {
                 crate::element::restrainer::Restrainer::new(
@@ -344,6 +370,11 @@ impl BridgeModel {
                 ));
             }
         }
+        Ok(())
+    }
+
+    /// Gap, seat, friction and restitution of each abutment.
+    fn validate_abutments(&self) -> Result<(), SimError> {
         for (side, a) in self.abutments.iter().enumerate() {
             if let Some(a) = a {
                 check(abut_key(side, "gap"), a.gap, a.gap >= 0.0, "must be >= 0")?;
@@ -367,19 +398,6 @@ impl BridgeModel {
                 )?;
             }
         }
-        check(
-            "outer_seat_length".into(),
-            self.outer_seat_length,
-            self.outer_seat_length > 0.0,
-            "must be > 0",
-        )?;
-        check(
-            "damping_ratio".into(),
-            self.damping_ratio,
-            (0.0..1.0).contains(&self.damping_ratio),
-            "must lie in [0, 1)",
-        )?;
-        self.contact_kind()?;
         Ok(())
     }
 
@@ -924,18 +942,9 @@ pub fn simulate_bridge(
     Ok(solution(result, &scheme, &bridge, model, compliant))
 }
 
-/// Assembles the [`BridgeSolution`] of a run.
-fn solution(
-    r: driver::RunResult,
-    sc: &driver::Scheme,
-    br: &Bridge,
-    model: &BridgeModel,
-    compliant: bool,
-) -> BridgeSolution {
-    let nj = br.joints.len();
-    let nb = br.bodies.len();
-    let (peaks, log) = (&r.peaks, &r.log);
-    // largest summed normal impulse of one impact at a site
+/// The largest summed normal impulse of one impact, per joint and per abutment side (the
+/// records of one impact at one site are consecutive).
+fn impulse_peaks(records: &[ImpactRecord], nj: usize) -> (Vec<Real>, [Real; 2]) {
     let mut imp_joint = vec![0.0; nj];
     let mut imp_abut = [0.0; 2];
     {
@@ -950,7 +959,7 @@ fn solution(
                 *slot = Real::max(*slot, p);
             }
         };
-        for rec in &log.records {
+        for rec in records {
             let key = (
                 rec.impact,
                 matches!(rec.contact, SimContact::Joint(_)),
@@ -966,8 +975,20 @@ fn solution(
         }
         flush(cur);
     }
+    (imp_joint, imp_abut)
+}
+
+/// The [`JointSummary`]s of a run.
+fn joint_summaries(
+    r: &driver::RunResult,
+    br: &Bridge,
+    imp_joint: &[Real],
+    compliant: bool,
+) -> Vec<JointSummary> {
+    let (peaks, log) = (&r.peaks, &r.log);
+    let nj = br.joints.len();
     let joint_impacts = |k: usize| log.joint_impacts.get(k).copied().unwrap_or(0);
-    let joints = (0..nj)
+    (0..nj)
         .map(|k| JointSummary {
             impacts: joint_impacts(k),
             peak_contact_force: if compliant {
@@ -996,7 +1017,22 @@ fn solution(
                 .map(|c| c.element.peak_force())
                 .reduce(Real::max),
         })
-        .collect();
+        .collect()
+}
+
+/// Assembles the [`BridgeSolution`] of a run.
+fn solution(
+    r: driver::RunResult,
+    sc: &driver::Scheme,
+    br: &Bridge,
+    model: &BridgeModel,
+    compliant: bool,
+) -> BridgeSolution {
+    let nj = br.joints.len();
+    let nb = br.bodies.len();
+    let (peaks, log) = (&r.peaks, &r.log);
+    let (imp_joint, imp_abut) = impulse_peaks(&log.records, nj);
+    let joints = joint_summaries(&r, br, &imp_joint, compliant);
     let mut abutments = [None, None];
     for (side, a) in model.abutments.iter().enumerate() {
         if a.is_some() {

@@ -699,6 +699,7 @@ pub(crate) struct Trace {
 
 impl Trace {
     /// Appends the state at `t`.
+    #[allow(clippy::too_many_arguments)]
     fn record(
         &mut self,
         t: Real,

@@ -151,15 +151,13 @@ fn opt(v: Option<Real>) -> Value {
     v.map_or(Value::Null, json_float)
 }
 
-/// The `summary.json` of a bridge run: `joints`, `abutments` (`[start, end]`, `null` where
-/// absent) and `segments` arrays in bridge order, the whole-bridge figures, status, ground motion
-/// and model.
-pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
+/// The `joints`, `abutments` and `segments` arrays of a bridge's `summary.json`.
+fn bridge_arrays(
+    setup: &BridgeSetup,
+    sol: &BridgeSolution,
+) -> (Vec<Value>, Vec<Value>, Vec<Value>) {
     let s = &sol.summary;
     let m = &setup.problem.model;
-    let e = &s.final_energy;
-    let gm = &setup.problem.ground;
-    let pga = |r: &Option<Record>, sc: f64| r.as_ref().map_or(0.0, |r| r.pga() * sc.abs());
     let joints: Vec<Value> = s
         .joints
         .iter()
@@ -214,6 +212,19 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
             })
         })
         .collect();
+    (joints, abutments, segments)
+}
+
+/// The `summary.json` of a bridge run: `joints`, `abutments` (`[start, end]`, `null` where
+/// absent) and `segments` arrays in bridge order, the whole-bridge figures, status, ground motion
+/// and model.
+pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
+    let s = &sol.summary;
+    let m = &setup.problem.model;
+    let e = &s.final_energy;
+    let gm = &setup.problem.ground;
+    let pga = |r: &Option<Record>, sc: f64| r.as_ref().map_or(0.0, |r| r.pga() * sc.abs());
+    let (joints, abutments, segments) = bridge_arrays(setup, sol);
     let hyst: Real = s.segments.iter().map(|g| g.hysteretic_energy).sum();
     let compliant = m
         .joints

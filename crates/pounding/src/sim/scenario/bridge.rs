@@ -281,31 +281,78 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
         .iter()
         .map(|s: &Segment| s.shape.mass_properties().mass)
         .collect();
+    let defaults = JointDefaults {
+        gap: d_gap,
+        mu: d_mu,
+        eps_n: d_eps,
+        seat_length: d_seat,
+    };
+    let (joints, abutments) = sites(sc, &v, raw, &masses, &defaults)?;
+    let model = BridgeModel {
+        segments,
+        joints,
+        abutments,
+        outer_seat_length,
+        damping_ratio,
+        damping_model,
+    };
+    let (ground, records, units) = build_ground(sc)?;
+    let settings = build_settings(sc, &ground, &records, || {
+        model.validate().map_err(|e| model_error(&v, raw, e))?;
+        Ok(())
+    })?;
+    Ok(BridgeSetup {
+        problem: BridgeProblem::at_rest(model, ground),
+        settings,
+        records,
+        units,
+    })
+}
+
+/// The `[bridge]` defaults of every joint (and abutment).
+struct JointDefaults {
+    gap: f64,
+    mu: f64,
+    eps_n: f64,
+    seat_length: f64,
+}
+
+/// The joints (`[[joint]]` tables or the defaults) and the abutments of a bridge scenario;
+/// `masses` of the segments (for the contact-law calibrations).
+fn sites(
+    sc: &Scenario,
+    v: &Val,
+    raw: &BridgeRaw,
+    masses: &[Real],
+    d: &JointDefaults,
+) -> Result<(Vec<Joint>, [Option<BridgeAbutment>; 2]), ScenarioError> {
+    let n = masses.len();
+    let nj = n - 1;
     let law = sc.law.as_deref();
     let contact_for =
         |eps_n: f64, m: [f64; 2]| build_contact(&sc.src, &sc.raw.contact, law, eps_n, m);
     let mut joints = Vec::with_capacity(nj);
     for k in 0..nj {
-        let d = JointSec::default();
-        let j = raw.joint.get(k).map_or(&d, |j| j.get_ref());
+        let none = JointSec::default();
+        let j = raw.joint.get(k).map_or(&none, |j| j.get_ref());
         let jk = |key: &str| format!("joint[{k}].{key}");
-        let gap = v.num(jk("gap"), &j.gap, Some(d_gap), non_negative, "must be >= 0")?;
-        let friction = v.num(jk("mu"), &j.mu, Some(d_mu), non_negative, "must be >= 0")?;
+        let gap = v.num(jk("gap"), &j.gap, Some(d.gap), non_negative, "must be >= 0")?;
+        let friction = v.num(jk("mu"), &j.mu, Some(d.mu), non_negative, "must be >= 0")?;
         let restitution = v.num(
             jk("eps_n"),
             &j.eps_n,
-            Some(d_eps),
+            Some(d.eps_n),
             unit,
             "must lie in [0, 1]",
         )?;
         let seat_length = v.num(
             jk("seat_length"),
             &j.seat_length,
-            Some(d_seat),
+            Some(d.seat_length),
             positive,
             "must be > 0",
         )?;
-        let restrainer = restrainer(&v, k, j, b)?;
+        let restrainer = restrainer(v, k, j, &raw.bridge)?;
         joints.push(Joint {
             gap,
             friction,
@@ -326,45 +373,27 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
         let restitution = v.num(
             ak("eps_n"),
             &a.eps_n,
-            Some(d_eps),
+            Some(d.eps_n),
             unit,
             "must lie in [0, 1]",
         )?;
         // a rigid wall: the two-body calibrations see the segment's mass (m_eff = 2m·2m/4m = m)
         let m = masses[if side == 0 { 0 } else { n - 1 }];
         abutments[side] = Some(BridgeAbutment {
-            gap: v.num(ak("gap"), &a.gap, Some(d_gap), non_negative, "must be >= 0")?,
+            gap: v.num(ak("gap"), &a.gap, Some(d.gap), non_negative, "must be >= 0")?,
             seat_length: v.num(
                 ak("seat_length"),
                 &a.seat_length,
-                Some(d_seat),
+                Some(d.seat_length),
                 positive,
                 "must be > 0",
             )?,
-            friction: v.num(ak("mu"), &a.mu, Some(d_mu), non_negative, "must be >= 0")?,
+            friction: v.num(ak("mu"), &a.mu, Some(d.mu), non_negative, "must be >= 0")?,
             restitution,
             contact: contact_for(restitution, [2.0 * m, 2.0 * m])?,
         });
     }
-    let model = BridgeModel {
-        segments,
-        joints,
-        abutments,
-        outer_seat_length,
-        damping_ratio,
-        damping_model,
-    };
-    let (ground, records, units) = build_ground(sc)?;
-    let settings = build_settings(sc, &ground, &records, || {
-        model.validate().map_err(|e| model_error(&v, raw, e))?;
-        Ok(())
-    })?;
-    Ok(BridgeSetup {
-        problem: BridgeProblem::at_rest(model, ground),
-        settings,
-        records,
-        units,
-    })
+    Ok((joints, abutments))
 }
 
 /// A model error (named `segment[i].key`, `joint[k].key`, `abutment.side.key`, `bridge.key`) with
@@ -443,24 +472,17 @@ fn restrainer(
     Ok(Some(RestrainerSpec { k: k_, slack, fy }))
 }
 
-/// One `[[segment]]` table.
-fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> {
+/// The shape of `[[segment]]` `i` and whether its body frame is mirrored (a curved segment
+/// curving the other way than its natural direction).
+fn segment_shape(
+    v: &Val,
+    i: usize,
+    s: &SegmentSec,
+    width: f64,
+    thickness: f64,
+    density: f64,
+) -> Result<(DeckShape, bool), ScenarioError> {
     let sk = |key: &str| format!("segment[{i}].{key}");
-    let width = v.num(sk("width"), &s.width, Some(10.0), positive, "must be > 0")?;
-    let thickness = v.num(
-        sk("thickness"),
-        &s.thickness,
-        Some(0.5),
-        positive,
-        "must be > 0",
-    )?;
-    let density = v.num(
-        sk("density"),
-        &s.density,
-        Some(2500.0),
-        positive,
-        "must be > 0",
-    )?;
     let shape_name = s
         .shape
         .as_ref()
@@ -470,7 +492,7 @@ fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> 
     };
     let natural_left = i == 0;
     let mut mirrored = false;
-    let mut shape = match shape_name {
+    let shape = match shape_name {
         "straight" => {
             let l = v.num(sk("L"), &s.L, None, positive, "must be > 0")?;
             DeckShape::Straight(
@@ -507,7 +529,7 @@ fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> 
                 "must lie in (0, 180)",
             )?;
             let left = match s.curve.as_ref().map(|c| (c.get_ref().as_str(), v.line(c))) {
-                None => i % 2 == 0,
+                None => i.is_multiple_of(2),
                 Some(("left", _)) => true,
                 Some(("right", _)) => false,
                 Some((other, line)) => {
@@ -562,41 +584,12 @@ fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> 
             ));
         }
     }
-    if let Some(m) = &s.mass {
-        let m = v.num(sk("mass"), &Some(m.clone()), None, positive, "must be > 0")?;
-        let f = m / shape.mass_properties().mass;
-        shape.scale_density(f);
-    }
-    let mass = shape.mass_properties().mass;
-    let k = match (&s.period_s, &s.bearing_stiffness) {
-        (Some(_), Some(b)) => {
-            return Err(v.err(
-                sk("bearing_stiffness"),
-                Some(v.line(b)),
-                format!(
-                    "give {} or {}, not both",
-                    sk("period_s"),
-                    sk("bearing_stiffness")
-                ),
-            ));
-        }
-        (Some(_), None) => {
-            let t = v.num(sk("period_s"), &s.period_s, None, positive, "must be > 0")?;
-            let w = 2.0 * std::f64::consts::PI / t;
-            mass * w * w / 4.0
-        }
-        (None, Some(_)) => v.num(
-            sk("bearing_stiffness"),
-            &s.bearing_stiffness,
-            None,
-            positive,
-            "must be > 0",
-        )?,
-        (None, None) => {
-            return Err(v.err(sk("period_s"), None, format!("segment {} needs its bearings: give {} (translational period on four corner bearings) or {} (per corner bearing, N/m)", i + 1, sk("period_s"), sk("bearing_stiffness"))));
-        }
-    };
-    let mut seg = Segment::with_corner_bearings(shape, mirrored, k);
+    Ok((shape, mirrored))
+}
+
+/// `bearing = "bilinear"` with `fy`, `b` of `[[segment]]` `i` (`None`: linear bearings).
+fn bearing_yield(v: &Val, i: usize, s: &SegmentSec) -> Result<Option<BearingYield>, ScenarioError> {
+    let sk = |key: &str| format!("segment[{i}].{key}");
     let kind = s
         .bearing
         .as_ref()
@@ -632,7 +625,7 @@ fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> 
                 |x| (0.0..1.0).contains(&x),
                 "must lie in [0, 1)",
             )?;
-            seg.bearing_yield = Some(BearingYield { fy, b });
+            return Ok(Some(BearingYield { fy, b }));
         }
         Some((other, line)) => {
             return Err(v.err(
@@ -645,5 +638,63 @@ fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> 
             ));
         }
     }
+    Ok(None)
+}
+
+/// One `[[segment]]` table.
+fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> {
+    let sk = |key: &str| format!("segment[{i}].{key}");
+    let width = v.num(sk("width"), &s.width, Some(10.0), positive, "must be > 0")?;
+    let thickness = v.num(
+        sk("thickness"),
+        &s.thickness,
+        Some(0.5),
+        positive,
+        "must be > 0",
+    )?;
+    let density = v.num(
+        sk("density"),
+        &s.density,
+        Some(2500.0),
+        positive,
+        "must be > 0",
+    )?;
+    let (mut shape, mirrored) = segment_shape(v, i, s, width, thickness, density)?;
+    if let Some(m) = &s.mass {
+        let m = v.num(sk("mass"), &Some(m.clone()), None, positive, "must be > 0")?;
+        let f = m / shape.mass_properties().mass;
+        shape.scale_density(f);
+    }
+    let mass = shape.mass_properties().mass;
+    let k = match (&s.period_s, &s.bearing_stiffness) {
+        (Some(_), Some(b)) => {
+            return Err(v.err(
+                sk("bearing_stiffness"),
+                Some(v.line(b)),
+                format!(
+                    "give {} or {}, not both",
+                    sk("period_s"),
+                    sk("bearing_stiffness")
+                ),
+            ));
+        }
+        (Some(_), None) => {
+            let t = v.num(sk("period_s"), &s.period_s, None, positive, "must be > 0")?;
+            let w = 2.0 * std::f64::consts::PI / t;
+            mass * w * w / 4.0
+        }
+        (None, Some(_)) => v.num(
+            sk("bearing_stiffness"),
+            &s.bearing_stiffness,
+            None,
+            positive,
+            "must be > 0",
+        )?,
+        (None, None) => {
+            return Err(v.err(sk("period_s"), None, format!("segment {} needs its bearings: give {} (translational period on four corner bearings) or {} (per corner bearing, N/m)", i + 1, sk("period_s"), sk("bearing_stiffness"))));
+        }
+    };
+    let mut seg = Segment::with_corner_bearings(shape, mirrored, k);
+    seg.bearing_yield = bearing_yield(v, i, s)?;
     Ok(seg)
 }
