@@ -130,6 +130,21 @@ impl DeckPair {
         )
     }
 
+    /// [`DeckPair::configuration`] and its [`DeckPair::delassus`] with the decks' body data
+    /// computed once (the study's cell kernel: the same values, half the mass-property work).
+    pub fn configuration_and_delassus(
+        &self,
+        case: ContactCase,
+        theta1: Real,
+        theta2: Real,
+        sigma_mode: SigmaMode,
+    ) -> Result<(ImpactConfiguration, Delassus), Degeneracy> {
+        let (d1, d2) = (self.data(DeckId::One), self.data(DeckId::Two));
+        let c = configuration_with(&d1, &d2, case, theta1, theta2, sigma_mode)?;
+        let g = delassus_with(&d1.props, &d2.props, &force_directions(&c));
+        Ok((c, g))
+    }
+
     /// The Delassus matrix of `config` (spec §7) with each deck's own mass and inertia.
     pub fn delassus(&self, config: &ImpactConfiguration) -> Delassus {
         delassus_with(

@@ -461,13 +461,12 @@ impl<'a> LcpSetReader<'a> {
     fn entry(&mut self, id: usize, count: usize) -> Result<LcpEntry, LcpIoError> {
         let (pl, class, n) = self.problem_line(id, count)?;
         let params = self.params()?;
-        let m = self.tagged(
-            "M",
-            "`M <n*n numbers>`",
-            n * n,
-            format!("n*n = {} entries of M (n = {n})", n * n),
-        )?;
-        let q = self.tagged("q", "`q <n numbers>`", n, format!("n = {n} entries of q"))?;
+        let m = self.tagged("M", "`M <n*n numbers>`", n * n, || {
+            format!("n*n = {} entries of M (n = {n})", n * n)
+        })?;
+        let q = self.tagged("q", "`q <n numbers>`", n, || {
+            format!("n = {n} entries of q")
+        })?;
         let problem = LcpProblem::new(m, q).map_err(|cause| LcpIoError::Invalid {
             file: self.file.to_string(),
             line: pl,
@@ -544,13 +543,14 @@ impl<'a> LcpSetReader<'a> {
         tag: &str,
         form: &str,
         want: usize,
-        count_what: String,
+        count_what: impl FnOnce() -> String,
     ) -> Result<Vec<f64>, LcpIoError> {
         let (ln, t) = self.next(form)?;
         match t.split_first() {
             Some((&x, rest)) if x == tag => {
                 if rest.len() != want {
-                    return Err(self.err(ln, &count_what, &format!("{}", rest.len())));
+                    // the message is built only on error (every problem of a set passes here)
+                    return Err(self.err(ln, &count_what(), &format!("{}", rest.len())));
                 }
                 self.nums(ln, rest, tag)
             }

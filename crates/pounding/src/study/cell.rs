@@ -136,8 +136,8 @@ pub fn compute_cell_in(
     }
     let (t1, t2) = (theta1_deg.to_radians(), theta2_deg.to_radians());
     let pair = geometry.pair();
-    let (config, g) = match pair.configuration(case, t1, t2, sigma_mode) {
-        Ok(c) => (c, pair.delassus(&c)),
+    let (config, g) = match pair.configuration_and_delassus(case, t1, t2, sigma_mode) {
+        Ok(cg) => cg,
         Err(d) => return Cell::degenerate(d),
     };
     let interval = analytic::stick_interval(&g, law);
