@@ -788,8 +788,13 @@ pub(crate) fn run<S: Stepper>(
         }
         let abar = sc.ag[k] * (1.0 - th) + sc.ag[k + 1] * th;
         let mut u_free = sc.u_free(&q, &u, &abar);
-        let r_el = (!el.is_empty()).then(|| el.force(&q, &bridge.bodies));
-        if let Some(r) = &r_el {
+        let r_el = (!el.is_empty()).then(|| {
+            (
+                el.step_force(&q, &u, h, &bridge.bodies),
+                el.step_force_bearings(&q, &u, h),
+            )
+        });
+        if let Some((r, _)) = &r_el {
             u_free += sc.winv_mul(r) * h;
         }
         let input = StepInput {
@@ -804,8 +809,8 @@ pub(crate) fn run<S: Stepper>(
         let out = stepper.step(&input, &mut log);
         peaks.pen = peaks.pen.max(out.penetration);
         let u_th = ledger.advance(sc, k, &u, &out.u);
-        if let Some(r) = &r_el {
-            el.book(h, &((&u + &out.u) * 0.5), r, nb);
+        if let Some((r, rb)) = &r_el {
+            el.book(h, &((&u + &out.u) * 0.5), r, rb, nb);
         }
         q += u_th * h;
         u = out.u;
