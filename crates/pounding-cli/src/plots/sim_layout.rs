@@ -183,7 +183,7 @@ fn abutment_polygons(problem: &SimProblem) -> Vec<Vec<(Real, Real)>> {
 /// Centre and half-extents `(cx, cy, half_x, half_y)` of a view of `points` with 8 % padding and
 /// equal scales: the smaller range is widened to the drawing area's aspect ratio `aspect`
 /// (non-finite points are skipped, so the view is always finite).
-fn view_box<'a>(
+pub(crate) fn view_box<'a>(
     points: impl Iterator<Item = &'a (Real, Real)>,
     aspect: Real,
 ) -> (Real, Real, Real, Real) {
