@@ -12,7 +12,7 @@ use crate::plot_style::{
     series_legend,
 };
 use crate::plots::sim_layout::view_box;
-use crate::plots::sim_lines::{Series, line_panel};
+use crate::plots::sim_lines::{Series, energy_panel, line_panel};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use pounding::math::{Real, Vector};
@@ -81,7 +81,7 @@ pub fn write_all(out: &Path, model: &BridgeModel, sol: &BridgeSolution) -> R {
     let plan_size = plan_size(model);
     save_white_png(out, "plan.png", plan_size, |root| plan(root, model, sol))?;
     save_white_png(out, "energy.png", (1400, 600), |root| {
-        energy(root, sol, t_end, &pts)
+        energy(root, sol, t_end)
     })
 }
 
@@ -300,51 +300,13 @@ fn plan(root: &DrawingArea<BitMapBackend, Shift>, model: &BridgeModel, sol: &Bri
 }
 
 /// `energy.png`.
-fn energy(
-    root: &DrawingArea<BitMapBackend, Shift>,
-    sol: &BridgeSolution,
-    t_end: Real,
-    pts: &dyn Fn(&[Real]) -> Vec<(Real, Real)>,
-) -> R {
-    let en = |f: &dyn Fn(&Energy) -> Real| {
-        pts(&sol.energy.iter().map(|x| f(x) / 1e3).collect::<Vec<_>>())
+fn energy(root: &DrawingArea<BitMapBackend, Shift>, sol: &BridgeSolution, t_end: Real) -> R {
+    let pts = |f: &dyn Fn(&Energy) -> Real| -> Vec<(Real, Real)> {
+        sol.t
+            .iter()
+            .zip(&sol.energy)
+            .map(|(t, x)| (*t, f(x)))
+            .collect()
     };
-    line_panel(
-        root,
-        &format!(
-            "Energy balance (relative error {:.1e}): input = stored + dissipated",
-            sol.summary.energy_balance_error
-        ),
-        "energy [kJ]",
-        t_end,
-        &[
-            Series {
-                label: "seismic input W_in",
-                pts: en(&|x| x.input),
-                color: BLACK,
-            },
-            Series {
-                label: "kinetic + strain",
-                pts: en(&|x| x.kinetic + x.potential),
-                color: GREEN,
-            },
-            Series {
-                label: "viscous dissipation",
-                pts: en(&|x| x.viscous),
-                color: BLUE,
-            },
-            Series {
-                label: "contact dissipation",
-                pts: en(&|x| x.contact),
-                color: RED,
-            },
-            Series {
-                label: "hysteretic + restrainer work",
-                pts: en(&|x| x.elements),
-                color: ORANGE,
-            },
-        ],
-        &[],
-        SeriesLabelPosition::UpperLeft,
-    )
+    energy_panel(root, sol.summary.energy_balance_error, t_end, &pts, true)
 }
