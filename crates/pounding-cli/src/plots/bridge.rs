@@ -94,11 +94,23 @@ fn joint_panels(
     pts: &dyn Fn(&[Real]) -> Vec<(Real, Real)>,
 ) -> R {
     let sides: Vec<usize> = (0..2).filter(|&s| model.abutments[s].is_some()).collect();
-    let areas = if sides.is_empty() {
-        vec![root.clone()]
-    } else {
-        let (a, b) = root.split_vertically(root.dim_in_pixel().1 * 3 / 5);
-        vec![a, b]
+    let nj = sol.n_segments.saturating_sub(1);
+    // joints on top (3/5), abutments below; a single segment has only the abutment panel
+    let (joint_area, abut_area) = match (nj > 0, sides.is_empty()) {
+        (true, false) => {
+            let (a, b) = root.split_vertically(root.dim_in_pixel().1 * 3 / 5);
+            (Some(a), Some(b))
+        }
+        (true, true) => (Some(root.clone()), None),
+        (false, false) => (None, Some(root.clone())),
+        (false, true) => {
+            root.titled(
+                "A single segment without abutments: no joint or abutment gaps",
+                (FAMILY, 22),
+            )
+            .map_err(e)?;
+            return Ok(());
+        }
     };
     let openings = joint_openings(model, sol);
     let labels: Vec<String> = (1..=openings.len()).map(|k| format!("joint {k}")).collect();
@@ -111,14 +123,10 @@ fn joint_panels(
             color: color(k),
         })
         .collect();
-    let title = if series.is_empty() {
-        "No joints (a single segment)".to_string()
-    } else {
-        format!(
-            "Joint opening = smaller end gap − reference gap ({} impacts; < 0 closing, −gap = contact)",
-            sol.summary.joints.iter().map(|j| j.impacts).sum::<usize>()
-        )
-    };
+    let title = format!(
+        "Joint opening = smaller end gap − reference gap ({} impacts; < 0 closing, −gap = contact)",
+        sol.summary.joints.iter().map(|j| j.impacts).sum::<usize>()
+    );
     // the contact line (opening = −gap) when every joint has the same gap
     let mut hlines = vec![(0.0, "reference gap", GREY)];
     if let Some(g) = model.joints.first().map(|j| j.gap)
@@ -126,16 +134,18 @@ fn joint_panels(
     {
         hlines.push((-g, "contact (opening = −gap)", BLACK));
     }
-    line_panel(
-        &areas[0],
-        &title,
-        "opening [m]",
-        t_end,
-        &series,
-        &hlines,
-        SeriesLabelPosition::UpperRight,
-    )?;
-    if let Some(area) = areas.get(1) {
+    if let Some(area) = &joint_area {
+        line_panel(
+            area,
+            &title,
+            "opening [m]",
+            t_end,
+            &series,
+            &hlines,
+            SeriesLabelPosition::UpperRight,
+        )?;
+    }
+    if let Some(area) = &abut_area {
         let labels: Vec<String> = sides
             .iter()
             .map(|&s| format!("{} abutment", ABUTMENT_SIDES[s]))

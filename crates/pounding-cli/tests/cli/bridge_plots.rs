@@ -108,3 +108,33 @@ fn bridge_run_writes_figures_and_reruns_leave_no_stale_files() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// One segment (no joint) with and without an abutment: every figure is still written (the joint
+/// panel is left out, not drawn empty) and `summary.json` has no joints.
+#[test]
+fn single_segment_bridge_writes_every_figure() {
+    let dir = scratch_dir("bplots", "single");
+    let base = "[bridge]\ndamping_ratio = 0.05\n\n[[segment]]\nshape = \"straight\"\nL = 30.0\n\
+                mass = 1.0e6\nperiod_s = 1.2\n\n[ground_motion]\nrecord_y = \"builtin:ELC180\"\n\
+                record_x = \"none\"\n\n[time]\ndt = 1e-3\nduration = 4.0\n";
+    for (name, extra) in [
+        ("free", ""),
+        ("abutment", "\n[abutment.start]\ngap = 0.04\n"),
+    ] {
+        let scenario = dir.join(format!("{name}.toml"));
+        std::fs::write(&scenario, format!("{base}{extra}")).unwrap();
+        let out = dir.join(name);
+        simulate(&[scenario.to_str().unwrap()], &out);
+        let want: BTreeSet<String> = BRIDGE_FILES.iter().map(|s| s.to_string()).collect();
+        assert_eq!(files(&out), want, "{name}");
+        for png_name in BRIDGE_PNGS {
+            let (_, _, len) = png(&out.join(png_name));
+            assert!(len > 5_000, "{name}: {png_name} is only {len} bytes");
+        }
+        let s: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap())
+                .unwrap();
+        assert_eq!(s["joints"].as_array().map(Vec::len), Some(0), "{name}: {s}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
