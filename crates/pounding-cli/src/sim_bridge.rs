@@ -58,7 +58,8 @@ pub fn run(args: &Args, mut sc: Scenario, t_start: Instant) -> Result<ExitCode> 
         "summary.json",
         bridge_summary_json_text(&setup, &sol).as_bytes(),
     )?;
-    crate::plots::bridge::write_all(out, &setup.problem.model, &sol).map_err(|e| anyhow!(e))?;
+    crate::plots::bridge::write_all(out, &setup.problem.model, &sol)
+        .map_err(|e| anyhow!("plotting: {e}"))?;
     let timing = json!({
         "simulate_s": sim_secs,
         "write_s": t_write.elapsed().as_secs_f64(),

@@ -339,7 +339,8 @@ fn energy(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
         root,
         sol.summary.energy_balance_error,
         t_end,
-        &|f| c.col(&|i| f(&h.energy[i])),
+        &h.t,
+        &h.energy,
         false,
     )
 }

@@ -16,7 +16,6 @@ use crate::plots::sim_lines::{Series, energy_panel, line_panel};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use pounding::math::{Real, Vector};
-use pounding::sim::Energy;
 use pounding::sim::bridge::{ABUTMENT_SIDES, BridgeModel, BridgeSolution};
 use pounding::sim::output::{
     bridge_plan, corner_paths, joint_openings, plan_exaggeration, segment_displacements,
@@ -45,15 +44,18 @@ fn color(i: usize) -> RGBColor {
     PALETTE[i % PALETTE.len()]
 }
 
+/// `(t, v)` pairs of a history.
+fn pts(t: &[Real], v: &[Real]) -> Vec<(Real, Real)> {
+    t.iter().copied().zip(v.iter().copied()).collect()
+}
+
 /// Writes the bridge figures into `out`.
 pub fn write_all(out: &Path, model: &BridgeModel, sol: &BridgeSolution) -> R {
     register();
     let t_end = sol.t.last().copied().unwrap_or(1.0).max(1e-9);
-    let pts = |v: &[Real]| -> Vec<(Real, Real)> {
-        sol.t.iter().copied().zip(v.iter().copied()).collect()
-    };
+    let pts = |v: &[Real]| pts(&sol.t, v);
     save_white_png(out, "joint_openings.png", (1400, 900), |root| {
-        joint_panels(root, model, sol, t_end, &pts)
+        joint_panels(root, model, sol, t_end)
     })?;
     save_white_png(out, "displacements.png", (1400, 600), |root| {
         let labels: Vec<String> = (1..=sol.n_segments)
@@ -91,7 +93,6 @@ fn joint_panels(
     model: &BridgeModel,
     sol: &BridgeSolution,
     t_end: Real,
-    pts: &dyn Fn(&[Real]) -> Vec<(Real, Real)>,
 ) -> R {
     let sides: Vec<usize> = (0..2).filter(|&s| model.abutments[s].is_some()).collect();
     let nj = sol.n_segments.saturating_sub(1);
@@ -119,7 +120,7 @@ fn joint_panels(
         .enumerate()
         .map(|(k, o)| Series {
             label: &labels[k],
-            pts: pts(o),
+            pts: pts(&sol.t, o),
             color: color(k),
         })
         .collect();
@@ -155,7 +156,10 @@ fn joint_panels(
             .enumerate()
             .map(|(i, &s)| Series {
                 label: &labels[i],
-                pts: pts(&sol.abutment_gaps.iter().map(|g| g[s]).collect::<Vec<_>>()),
+                pts: pts(
+                    &sol.t,
+                    &sol.abutment_gaps.iter().map(|g| g[s]).collect::<Vec<_>>(),
+                ),
                 color: color(i + 3),
             })
             .collect();
@@ -311,12 +315,6 @@ fn plan(root: &DrawingArea<BitMapBackend, Shift>, model: &BridgeModel, sol: &Bri
 
 /// `energy.png`.
 fn energy(root: &DrawingArea<BitMapBackend, Shift>, sol: &BridgeSolution, t_end: Real) -> R {
-    let pts = |f: &dyn Fn(&Energy) -> Real| -> Vec<(Real, Real)> {
-        sol.t
-            .iter()
-            .zip(&sol.energy)
-            .map(|(t, x)| (*t, f(x)))
-            .collect()
-    };
-    energy_panel(root, sol.summary.energy_balance_error, t_end, &pts, true)
+    let err = sol.summary.energy_balance_error;
+    energy_panel(root, err, t_end, &sol.t, &sol.energy, true)
 }

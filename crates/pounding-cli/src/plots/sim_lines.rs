@@ -110,16 +110,22 @@ pub(crate) fn tick(v: Real, span: Real) -> String {
 
 /// The energy-balance panel of `energy.png` (two-deck and bridge runs): seismic input, viscous
 /// and contact dissipation, kinetic + strain energy and, with `elements`, the work on yielding
-/// bearings and restrainers, in kJ; `pts(f)` is `(t, f(energy))` over the history.
+/// bearings and restrainers, in kJ; `energy[i]` at time `t[i]`.
 pub(crate) fn energy_panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     balance_error: Real,
     t_end: Real,
-    pts: &dyn Fn(&dyn Fn(&Energy) -> Real) -> Vec<(Real, Real)>,
+    t: &[Real],
+    energy: &[Energy],
     elements: bool,
 ) -> DrawResult {
     use crate::plot_style::{BLUE, GREEN, ORANGE, RED};
-    let en = |f: &dyn Fn(&Energy) -> Real| pts(&|x| f(x) / 1e3);
+    let en = |f: &dyn Fn(&Energy) -> Real| -> Vec<(Real, Real)> {
+        t.iter()
+            .zip(energy)
+            .map(|(t, x)| (*t, f(x) / 1e3))
+            .collect()
+    };
     let mut series = vec![
         Series {
             label: "seismic input W_in",

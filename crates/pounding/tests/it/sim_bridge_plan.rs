@@ -77,13 +77,13 @@ fn plan_outlines_enclose_the_segments_and_abutments_sit_at_their_gaps() {
         }
         let bodies = m.layout();
         let faces = [bodies[0].start, bodies[bodies.len() - 1].end];
-        for side in 0..2 {
+        for (side, face) in faces.iter().enumerate() {
             let (Some(ab), Some(f)) = (&m.abutments[side], plan.abutment_faces[side]) else {
                 panic!("{name}: abutment {side} missing");
             };
             for (k, p) in f.iter().enumerate() {
                 // signed distance outward from the segment's face line
-                let d = -(p - faces[side].corners[k]).dot(&faces[side].inward);
+                let d = -(p - face.corners[k]).dot(&face.inward);
                 assert!((d - ab.gap).abs() < 1e-12, "{name}: abutment {side}: {d}");
             }
         }
