@@ -11,7 +11,7 @@ use crate::plot_style::{
     BLUE, DARK, DrawResult, FAMILY, GREEN, ORANGE, PURPLE, RED, e, register, save_white_png,
     series_legend,
 };
-use crate::plots::sim_layout::view_box;
+use crate::plots::sim_layout::plan_chart;
 use crate::plots::sim_lines::{Series, energy_panel, line_panel};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -240,29 +240,15 @@ fn plan(root: &DrawingArea<BitMapBackend, Shift>, model: &BridgeModel, sol: &Bri
             .filter(|v| v.x.is_finite() && v.y.is_finite())
             .map(xy),
     );
-    let (w, h) = root.dim_in_pixel();
-    let (cx, cy, hx, hy) = view_box(all.iter(), (w as Real - 90.0) / (h as Real - 100.0));
-    let mut chart = ChartBuilder::on(root)
-        .caption(
-            format!(
-                "Plan (reference pose) and the path of every corner, displacements ×{f} (peak {peak:.3} m)"
-            ),
-            (FAMILY, 20),
-        )
-        .margin(10)
-        .x_label_area_size(40)
-        .y_label_area_size(70)
-        .build_cartesian_2d((cx - hx)..(cx + hx), (cy - hy)..(cy + hy))
-        .map_err(e)?;
-    chart
-        .configure_mesh()
-        .x_desc("x [m]")
-        .y_desc("y [m]")
-        .label_style((FAMILY, 14))
-        .axis_desc_style((FAMILY, 15))
-        .light_line_style(RGBColor(240, 240, 240))
-        .draw()
-        .map_err(e)?;
+    let (mut chart, _) = plan_chart(
+        root,
+        all.iter(),
+        &format!(
+            "Plan (reference pose) and the path of every corner, displacements ×{f} \
+             (peak {peak:.3} m)"
+        ),
+        ("x [m]", "y [m]"),
+    )?;
     for (i, o) in p.outlines.iter().enumerate() {
         let c = color(i);
         let pts: Vec<_> = o.iter().map(xy).collect();
