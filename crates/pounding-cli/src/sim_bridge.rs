@@ -1,5 +1,7 @@
 //! `pounding simulate` of a bridge of `[[segment]]`s: builds the run with the library, writes
-//! `history.csv`, `impacts.csv`, `summary.json` and `timing.json` (last) and prints a summary.
+//! `history.csv`, `impacts.csv`, `summary.json`, the figures (`joint_openings.png`,
+//! `displacements.png`, `plan.png`, `energy.png`; [`crate::plots::bridge`]) and `timing.json`
+//! (last) and prints a summary.
 
 use crate::cmd_simulate::{Args, lock_and_clear};
 use anyhow::{Context, Result, anyhow, bail};
@@ -56,6 +58,8 @@ pub fn run(args: &Args, mut sc: Scenario, t_start: Instant) -> Result<ExitCode> 
         "summary.json",
         bridge_summary_json_text(&setup, &sol).as_bytes(),
     )?;
+    crate::plots::bridge::write_all(out, &setup.problem.model, &sol)
+        .map_err(|e| anyhow!("plotting: {e}"))?;
     let timing = json!({
         "simulate_s": sim_secs,
         "write_s": t_write.elapsed().as_secs_f64(),

@@ -12,7 +12,7 @@ use crate::plot_style::{
     BLUE, DrawResult, FAMILY, GREEN, ORANGE, PURPLE, RED, e, register, save_white_png,
 };
 use crate::plots::sim_layout::layout;
-use crate::plots::sim_lines::{Series, line_panel};
+use crate::plots::sim_lines::{Series, energy_panel, line_panel};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use pounding::analytic::SlipMode;
@@ -335,39 +335,12 @@ fn impulses(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
 fn energy(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
     let Hist { sol, t_end, .. } = *c;
     let h = &sol.history;
-    let col = |f: &dyn Fn(usize) -> Real| c.col(f);
-    let en = |f: &dyn Fn(&pounding::sim::Energy) -> Real| col(&|i| f(&h.energy[i]) / 1e3);
-    line_panel(
+    energy_panel(
         root,
-        &format!(
-            "Energy balance (relative error {:.1e}): input = stored + dissipated",
-            sol.summary.energy_balance_error
-        ),
-        "energy [kJ]",
+        sol.summary.energy_balance_error,
         t_end,
-        &[
-            Series {
-                label: "seismic input W_in",
-                pts: en(&|e| e.input),
-                color: BLACK,
-            },
-            Series {
-                label: "viscous dissipation",
-                pts: en(&|e| e.viscous),
-                color: BLUE,
-            },
-            Series {
-                label: "contact dissipation",
-                pts: en(&|e| e.contact),
-                color: RED,
-            },
-            Series {
-                label: "kinetic + strain",
-                pts: en(&|e| e.kinetic + e.potential),
-                color: GREEN,
-            },
-        ],
-        &[],
-        SeriesLabelPosition::UpperLeft,
+        &h.t,
+        &h.energy,
+        false,
     )
 }

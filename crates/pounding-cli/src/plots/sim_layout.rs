@@ -2,6 +2,7 @@
 
 use crate::plot_style::{BLUE, DrawResult, FAMILY, GREEN, RED, e, series_legend};
 use plotters::coord::Shift;
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use pounding::math::Real;
 use pounding::sim::SimProblem;
@@ -18,34 +19,19 @@ pub(crate) fn layout<DB: DrawingBackend>(
     let bodies = m.deck_bodies();
     let (o1, o2) = (deck_outline(problem, 1), deck_outline(problem, 2));
     let abut_polys = abutment_polygons(problem);
-    let (w, h) = root.dim_in_pixel();
-    let (cx, cy, half_x, half_y) = view_box(
+    let (mut chart, (cx, cy, half_x, half_y)) = plan_chart(
+        root,
         o1.iter().chain(&o2).chain(abut_polys.iter().flatten()),
-        (w as Real - 80.0) / (h as Real - 100.0),
-    );
-    let mut chart = ChartBuilder::on(root)
-        .caption(
-            format!(
-                "Plan view (reference pose): joint opening g = {g} m at y = 0, {} + {} bearings",
-                m.bearings1.len(),
-                m.bearings2.len()
-            ),
-            (FAMILY, 20),
-        )
-        .margin(10)
-        .x_label_area_size(40)
-        .y_label_area_size(60)
-        .build_cartesian_2d((cx - half_x)..(cx + half_x), (cy - half_y)..(cy + half_y))
-        .map_err(e)?;
-    chart
-        .configure_mesh()
-        .x_desc("x [m] (along the joint)")
-        .y_desc("y [m] (normal to the joint, into deck 1)")
-        .label_style((FAMILY, 14))
-        .axis_desc_style((FAMILY, 15))
-        .light_line_style(RGBColor(240, 240, 240))
-        .draw()
-        .map_err(e)?;
+        &format!(
+            "Plan view (reference pose): joint opening g = {g} m at y = 0, {} + {} bearings",
+            m.bearings1.len(),
+            m.bearings2.len()
+        ),
+        (
+            "x [m] (along the joint)",
+            "y [m] (normal to the joint, into deck 1)",
+        ),
+    )?;
     for (o, c, name) in [(&o1, BLUE, "deck 1"), (&o2, RED, "deck 2")] {
         chart
             .draw_series(std::iter::once(Polygon::new(o.clone(), c.mix(0.15))))
@@ -111,6 +97,43 @@ pub(crate) fn layout<DB: DrawingBackend>(
     };
     series_legend(&mut chart, position, BLACK, 15)
 }
+
+/// A plan-view chart on `root` with equal scales showing `points` ([`view_box`]), the
+/// `caption` and the axis descriptions `(x, y)`, its mesh drawn; and the view
+/// `(cx, cy, half_x, half_y)`.
+pub(crate) fn plan_chart<'a, 'p, DB: DrawingBackend>(
+    root: &'a DrawingArea<DB, Shift>,
+    points: impl Iterator<Item = &'p (Real, Real)>,
+    caption: &str,
+    (x_desc, y_desc): (&str, &str),
+) -> DrawResult<(PlanChart<'a, DB>, View)> {
+    let (w, h) = root.dim_in_pixel();
+    let (cx, cy, half_x, half_y) = view_box(points, (w as Real - 80.0) / (h as Real - 100.0));
+    let mut chart = ChartBuilder::on(root)
+        .caption(caption, (FAMILY, 20))
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(60)
+        .build_cartesian_2d((cx - half_x)..(cx + half_x), (cy - half_y)..(cy + half_y))
+        .map_err(e)?;
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .y_desc(y_desc)
+        .label_style((FAMILY, 14))
+        .axis_desc_style((FAMILY, 15))
+        .light_line_style(RGBColor(240, 240, 240))
+        .draw()
+        .map_err(e)?;
+    Ok((chart, (cx, cy, half_x, half_y)))
+}
+
+/// The view `(cx, cy, half_x, half_y)` of a plan \[m\].
+pub(crate) type View = (Real, Real, Real, Real);
+
+/// A chart in metres on both axes.
+pub(crate) type PlanChart<'a, DB> =
+    ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 /// Outline of deck `j` (1 or 2) in the plan view: the curved deck's arcs, or the four end-face
 /// corners of a straight/skew deck (closed polygon).

@@ -4,6 +4,7 @@ use crate::plot_style::{DrawResult, FAMILY, e, series_legend};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use pounding::math::Real;
+use pounding::sim::Energy;
 
 /// One line of a panel.
 pub(crate) struct Series<'a> {
@@ -105,4 +106,64 @@ pub(crate) fn tick(v: Real, span: Real) -> String {
     } else {
         s
     }
+}
+
+/// The energy-balance panel of `energy.png` (two-deck and bridge runs): seismic input, viscous
+/// and contact dissipation, kinetic + strain energy and, with `elements`, the work on yielding
+/// bearings and restrainers, in kJ; `energy[i]` at time `t[i]`.
+pub(crate) fn energy_panel<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    balance_error: Real,
+    t_end: Real,
+    t: &[Real],
+    energy: &[Energy],
+    elements: bool,
+) -> DrawResult {
+    use crate::plot_style::{BLUE, GREEN, ORANGE, RED};
+    let en = |f: &dyn Fn(&Energy) -> Real| -> Vec<(Real, Real)> {
+        t.iter()
+            .zip(energy)
+            .map(|(t, x)| (*t, f(x) / 1e3))
+            .collect()
+    };
+    let mut series = vec![
+        Series {
+            label: "seismic input W_in",
+            pts: en(&|e| e.input),
+            color: BLACK,
+        },
+        Series {
+            label: "viscous dissipation",
+            pts: en(&|e| e.viscous),
+            color: BLUE,
+        },
+        Series {
+            label: "contact dissipation",
+            pts: en(&|e| e.contact),
+            color: RED,
+        },
+        Series {
+            label: "kinetic + strain",
+            pts: en(&|e| e.kinetic + e.potential),
+            color: GREEN,
+        },
+    ];
+    if elements {
+        series.push(Series {
+            label: "hysteretic + restrainer work",
+            pts: en(&|e| e.elements),
+            color: ORANGE,
+        });
+    }
+    line_panel(
+        area,
+        &format!(
+            "Energy balance (relative error {balance_error:.1e}): input = stored + dissipated"
+        ),
+        "energy [kJ]",
+        t_end,
+        &series,
+        &[],
+        SeriesLabelPosition::UpperLeft,
+    )
 }

@@ -699,7 +699,11 @@ impl BridgeModel {
 
 /// Maps a point of segment `s`'s (mirrored) body frame to its global reference position, given
 /// the placed body `b`.
-fn placement(b: &SegmentBody, s: &Segment, first: bool) -> impl Fn(Vector) -> Vector + use<> {
+pub(crate) fn placement(
+    b: &SegmentBody,
+    s: &Segment,
+    first: bool,
+) -> impl Fn(Vector) -> Vector + use<> {
     // recover the rigid map from the placed shape face: first segment: translation only
     let jf = s.body_face(DeckEnd::Joint);
     let placed = if first { b.end } else { b.start };

@@ -32,6 +32,7 @@ mod sim;
 mod sim_bearings;
 mod sim_bridge;
 mod sim_bridge_examples;
+mod sim_bridge_plan;
 mod sim_bridge_reference;
 mod sim_compliance;
 mod sim_friction;

@@ -14,10 +14,15 @@ use serde_json::json;
 
 mod batch;
 mod bridge;
+mod bridge_plan;
 mod compare;
 pub use batch::{BATCH_HEADER, batch_csv};
 pub use bridge::{
     bridge_history_csv, bridge_impacts_csv, bridge_summary_json, bridge_summary_json_text,
+};
+pub use bridge_plan::{
+    BridgePlan, CornerPaths, bridge_plan, corner_paths, joint_openings, plan_exaggeration,
+    segment_displacements,
 };
 pub use compare::{COMPARE_HEADER, COMPARE_OUTPUTS, compare_csv, compare_table};
 
@@ -42,6 +47,8 @@ pub const SIM_OUTPUTS: &[&str] = &[
     "energy.png",
     "batch.csv",
     "batch.png",
+    "joint_openings.png",
+    "plan.png",
 ];
 
 /// `history.csv`: one row per stored step (every `history_stride`-th) — time, ground
