@@ -56,6 +56,7 @@ fn help_lists_subcommands() {
 }
 
 mod batch;
+mod bridge_batch;
 mod compare;
 mod fuzz;
 mod golden;
