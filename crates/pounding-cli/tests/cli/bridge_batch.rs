@@ -146,35 +146,22 @@ fn bridge_batch_bytes_do_not_depend_on_threads_and_shards_merge_to_them() {
     // default float parsing is not exact): the n-th occurrence of a key in summary.json (keys
     // sorted: the abutments first, then the top-level counts, the joints, the segments)
     let cell = |n: &str| r[pos(n)].parse::<f64>().unwrap();
-    for (c, key, n) in [
-        ("impacts", "impacts", 1),
-        ("impacting_contacts", "impacting_contacts", 0),
-        ("steps", "steps", 0),
-        ("energy_balance_error", "energy_balance_error", 0),
-        ("max_penetration_m", "peak_penetration_m", 0),
-        ("joint1_impacts", "impacts", 2),
-        ("joint2_impacts", "impacts", 3),
-        ("joint3_impacts", "impacts", 4),
-        ("abutment_start_impacts", "impacts", 0),
-        ("joint1_peak_closing_m", "peak_closing_m", 1),
-        ("joint3_peak_opening_m", "peak_opening_m", 2),
-        ("abutment_start_peak_impulse_ns", "peak_impulse_ns", 0),
-        (
-            "joint1_restrainer_peak_force_n",
-            "restrainer_peak_force_n",
-            0,
-        ),
-        ("segment1_peak_displacement_m", "peak_displacement_m", 0),
-        ("segment4_peak_displacement_m", "peak_displacement_m", 3),
-        ("segment2_peak_rotation_deg", "peak_rotation_deg", 1),
-        (
-            "segment3_peak_bearing_deformation_m",
-            "peak_bearing_deformation_m",
-            2,
-        ),
-        ("segment4_final_displacement_m", "final_displacement_m", 3),
-    ] {
-        assert_eq!(cell(c), json_number(&js, key, n), "column {c}");
+    // column, summary.json key, occurrence
+    const PAIRS: &str = "impacts impacts 1; impacting_contacts impacting_contacts 0; steps steps 0; \
+        energy_balance_error energy_balance_error 0; max_penetration_m peak_penetration_m 0; \
+        joint1_impacts impacts 2; joint2_impacts impacts 3; joint3_impacts impacts 4; \
+        abutment_start_impacts impacts 0; joint1_peak_closing_m peak_closing_m 1; \
+        joint3_peak_opening_m peak_opening_m 2; abutment_start_peak_impulse_ns peak_impulse_ns 0; \
+        joint1_restrainer_peak_force_n restrainer_peak_force_n 0; \
+        segment1_peak_displacement_m peak_displacement_m 0; \
+        segment4_peak_displacement_m peak_displacement_m 3; \
+        segment2_peak_rotation_deg peak_rotation_deg 1; \
+        segment3_peak_bearing_deformation_m peak_bearing_deformation_m 2; \
+        segment4_final_displacement_m final_displacement_m 3";
+    for pair in PAIRS.split(';') {
+        let w: Vec<&str> = pair.split_whitespace().collect();
+        let n: usize = w[2].parse().unwrap();
+        assert_eq!(cell(w[0]), json_number(&js, w[1], n), "column {}", w[0]);
     }
 }
 

@@ -150,19 +150,32 @@ pub fn run_batch(
     shard: BatchShard,
     progress: &(dyn Fn(usize) + Sync),
 ) -> Result<Vec<BatchRow>, SimError> {
-    validate_lists(records, scales)?;
-    settings.validate()?;
+    let settings = batch_settings(records, scales, settings)?;
     base.model.linear_system()?;
-    let settings = SimSettings {
-        history_stride: usize::MAX,
-        ..settings.clone()
-    };
     Ok(run_pairs(records, scales, shard, progress, &|r, scale| {
         let p = run_problem(base, r, scale);
         let pga = r.pga() * p.ground.scale_y.abs();
         (pga, simulate(&p, &settings).map(BatchOutcome::from))
     }))
 }
+
+/// Checks the lists and the settings of a batch; the settings of its runs keep no history (the
+/// summary does not depend on it).
+fn batch_settings(
+    records: &[BatchRecord],
+    scales: &[Real],
+    settings: &SimSettings,
+) -> Result<SimSettings, SimError> {
+    validate_lists(records, scales)?;
+    settings.validate()?;
+    Ok(SimSettings {
+        history_stride: usize::MAX,
+        ..settings.clone()
+    })
+}
+
+/// One run of a batch: `(record, scale)` → the PGA of the applied component and the outcome.
+type RunOne<'a, O> = dyn Fn(&Record, Real) -> (Real, Result<O, SimError>) + Sync + 'a;
 
 /// The rows of every `(record, scale)` pair of `shard`, in parallel on the current rayon pool, in
 /// increasing global index; `run(record, scale)` gives the PGA of the applied component and the
@@ -172,7 +185,7 @@ fn run_pairs<O: Send>(
     scales: &[Real],
     shard: BatchShard,
     progress: &(dyn Fn(usize) + Sync),
-    run: &(dyn Fn(&Record, Real) -> (Real, Result<O, SimError>) + Sync),
+    run: &RunOne<'_, O>,
 ) -> Vec<BatchRow<O>> {
     let ns = scales.len();
     let todo: Vec<usize> = (0..records.len() * ns)
@@ -276,19 +289,11 @@ pub fn run_bridge_batch(
     shard: BatchShard,
     progress: &(dyn Fn(usize) + Sync),
 ) -> Result<Vec<BridgeBatchRow>, SimError> {
-    validate_lists(records, scales)?;
-    settings.validate()?;
+    let settings = batch_settings(records, scales, settings)?;
     base.model.validate()?;
-    let settings = SimSettings {
-        history_stride: usize::MAX,
-        ..settings.clone()
-    };
     Ok(run_pairs(records, scales, shard, progress, &|r, scale| {
         let p = run_bridge_problem(base, r, scale);
-        let pga = r.pga() * p.ground.scale_y.abs();
-        (
-            pga,
-            simulate_bridge(&p, &settings).map(BridgeBatchOutcome::from),
-        )
+        let out = simulate_bridge(&p, &settings).map(BridgeBatchOutcome::from);
+        (r.pga() * p.ground.scale_y.abs(), out)
     }))
 }

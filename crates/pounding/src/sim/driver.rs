@@ -708,6 +708,7 @@ pub(crate) struct Trace {
 
 impl Trace {
     /// Appends the state at `t`.
+    #[allow(clippy::too_many_arguments)] // one argument per recorded series
     fn record(
         &mut self,
         t: Real,

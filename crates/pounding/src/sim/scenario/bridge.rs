@@ -469,7 +469,7 @@ fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> 
                 "must lie in (0, 180)",
             )?;
             let left = match s.curve.as_ref().map(|c| (c.get_ref().as_str(), v.line(c))) {
-                None => i % 2 == 0,
+                None => i.is_multiple_of(2),
                 Some(("left", _)) => true,
                 Some(("right", _)) => false,
                 Some((other, line)) => {
