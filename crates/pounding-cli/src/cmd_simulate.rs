@@ -24,7 +24,7 @@ use std::time::Instant;
 pub(crate) mod sim_plots;
 
 #[path = "sim_batch.rs"]
-mod sim_batch;
+pub(crate) mod sim_batch;
 
 /// Arguments of `pounding simulate`.
 #[derive(clap::Args)]

@@ -15,8 +15,11 @@ use pounding::ground_motion::{AccelUnits, G0, Record};
 use pounding::math::Real;
 use pounding::output::write_atomic;
 use pounding::shard::Shard;
-use pounding::sim::batch::{BatchRecord, BatchRow, run_batch};
-use pounding::sim::output::batch_csv;
+use pounding::sim::batch::{
+    BatchOutcome, BatchRecord, BatchRow, BridgeBatchOutcome, run_batch, run_bridge_batch,
+};
+use pounding::sim::output::{batch_csv, bridge_batch_csv};
+use pounding::sim::scenario::BridgeSetup;
 use pounding::sim::{SimProblem, SimSettings, SimStatus};
 use serde_json::json;
 use std::path::{Path, PathBuf};
@@ -57,14 +60,18 @@ fn expand_records(paths: &[PathBuf]) -> Result<Vec<PathBuf>> {
     Ok(out)
 }
 
-/// Runs the batch (after the scenario has been built and validated).
-pub fn run(
-    args: &Args,
-    base: &SimProblem,
-    settings: &SimSettings,
-    units: AccelUnits,
-    t_start: Instant,
-) -> Result<ExitCode> {
+/// What every batch needs before its runs: the records (read), the scales, the shard, the
+/// worker pool and the progress bar (the plan is printed; the output directory is checked).
+struct Plan {
+    records: Vec<BatchRecord>,
+    scales: Vec<Real>,
+    shard: Shard,
+    pool: rayon::ThreadPool,
+    pb: ProgressBar,
+}
+
+/// Parses and checks the batch flags, reads the records and prints the plan.
+fn plan(args: &Args, units: AccelUnits) -> Result<Plan> {
     let paths = expand_records(&args.records)?;
     let scales = if args.scales.is_empty() {
         vec![1.0]
@@ -111,43 +118,157 @@ pub fn run(
         pb.set_style(style);
     }
     pounding::output::check_output_dir_free(&args.out)?;
-    let t_runs = Instant::now();
-    let rows = pool
-        .install(|| {
-            run_batch(base, settings, &records, &scales, shard, &|n| {
-                pb.inc(n as u64)
-            })
-        })
-        .map_err(|e| anyhow!("{e}"))?;
-    pb.finish_and_clear();
-    let runs_secs = t_runs.elapsed().as_secs_f64();
+    Ok(Plan {
+        records,
+        scales,
+        shard,
+        pool,
+        pb,
+    })
+}
 
+/// Writes `batch.csv` (`csv`), `batch.png` (`curves`, the dashed seat length `seat_length`) and
+/// `timing.json` into `--out`.
+fn write_outputs(
+    args: &Args,
+    plan: &Plan,
+    csv: &str,
+    curves: &[BatchCurve],
+    seat_length: Real,
+    (runs, runs_secs, t_start): (usize, f64, Instant),
+) -> Result<()> {
     let out = &args.out;
     let _lock = super::lock_and_clear(out)?;
     let wr = |name: &str, bytes: &[u8]| {
         write_atomic(&out.join(name), bytes)
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
-    wr("batch.csv", batch_csv(&rows).as_bytes())?;
-    let curves = curves(&records, &rows);
-    sim_plots::batch_plot(out, "batch.png", &curves, base.model.seat_length)
+    wr("batch.csv", csv.as_bytes())?;
+    sim_plots::batch_plot(out, "batch.png", curves, seat_length)
         .map_err(|e| anyhow!("plotting: {e}"))?;
     let timing = json!({
         "runs_s": runs_secs,
         "wall_time_s": t_start.elapsed().as_secs_f64(),
-        "runs": rows.len(),
-        "threads": pool.current_num_threads(),
+        "runs": runs,
+        "threads": plan.pool.current_num_threads(),
     });
     wr(
         "timing.json",
         (serde_json::to_string_pretty(&timing)? + "\n").as_bytes(),
-    )?;
+    )
+}
 
-    Ok(report(&rows, runs_secs, out))
+/// Runs the batch (after the scenario has been built and validated).
+pub fn run(
+    args: &Args,
+    base: &SimProblem,
+    settings: &SimSettings,
+    units: AccelUnits,
+    t_start: Instant,
+) -> Result<ExitCode> {
+    let plan = plan(args, units)?;
+    let t_runs = Instant::now();
+    let rows = plan
+        .pool
+        .install(|| {
+            run_batch(
+                base,
+                settings,
+                &plan.records,
+                &plan.scales,
+                plan.shard,
+                &|n| plan.pb.inc(n as u64),
+            )
+        })
+        .map_err(|e| anyhow!("{e}"))?;
+    plan.pb.finish_and_clear();
+    let runs_secs = t_runs.elapsed().as_secs_f64();
+    let curves = curves(&plan.records, &rows, |m: &BatchOutcome| {
+        let m = &m.summary;
+        [
+            m.peak_seat_displacement,
+            m.peak_joint_opening,
+            m.peak_rotation[0].max(m.peak_rotation[1]) * DEG,
+            m.impacts as Real,
+        ]
+    });
+    write_outputs(
+        args,
+        &plan,
+        &batch_csv(&rows),
+        &curves,
+        base.model.seat_length,
+        (rows.len(), runs_secs, t_start),
+    )?;
+    Ok(report(&rows, runs_secs, &args.out, |o| {
+        (o.status, o.summary.unseated)
+    }))
+}
+
+/// Runs the batch of a bridge (after the scenario has been built for a batch and validated):
+/// the same runs, flags, files and exit codes as the two-deck batch; `batch.csv` has the
+/// bridge's columns ([`bridge_batch_csv`]) and `batch.png` shows the largest response over the
+/// joints and segments, with the smallest seat length of the bridge dashed.
+pub fn run_bridge(args: &Args, setup: &BridgeSetup, t_start: Instant) -> Result<ExitCode> {
+    let plan = plan(args, setup.units)?;
+    let base = &setup.problem;
+    let t_runs = Instant::now();
+    let rows = plan
+        .pool
+        .install(|| {
+            run_bridge_batch(
+                base,
+                &setup.settings,
+                &plan.records,
+                &plan.scales,
+                plan.shard,
+                &|n| plan.pb.inc(n as u64),
+            )
+        })
+        .map_err(|e| anyhow!("{e}"))?;
+    plan.pb.finish_and_clear();
+    let runs_secs = t_runs.elapsed().as_secs_f64();
+    let curves = curves(&plan.records, &rows, |o: &BridgeBatchOutcome| {
+        let m = &o.summary;
+        let max = |v: &mut dyn Iterator<Item = Real>| v.fold(Real::NAN, Real::max);
+        [
+            m.peak_seat_displacement,
+            max(&mut m.joints.iter().map(|j| j.peak_opening)),
+            max(&mut m.segments.iter().map(|g| g.peak_rotation)) * DEG,
+            m.impacts as Real,
+        ]
+    });
+    let model = &base.model;
+    let seat = model
+        .joints
+        .iter()
+        .map(|j| j.seat_length)
+        .chain(
+            model
+                .abutments
+                .iter()
+                .map(|a| a.map_or(model.outer_seat_length, |a| a.seat_length)),
+        )
+        .fold(Real::INFINITY, Real::min);
+    write_outputs(
+        args,
+        &plan,
+        &bridge_batch_csv(model.segments.len(), &rows),
+        &curves,
+        seat,
+        (rows.len(), runs_secs, t_start),
+    )?;
+    Ok(report(&rows, runs_secs, &args.out, |o| {
+        (o.status, o.summary.unseated)
+    }))
 }
 
 /// The curves of `batch.png`: per record, the peak responses of its completed runs against PGA.
-fn curves(records: &[BatchRecord], rows: &[BatchRow]) -> Vec<BatchCurve> {
+fn curves<O>(
+    records: &[BatchRecord],
+    rows: &[BatchRow<O>],
+    values: impl Fn(&O) -> [Real; 4],
+) -> Vec<BatchCurve> {
     records
         .iter()
         .enumerate()
@@ -157,16 +278,7 @@ fn curves(records: &[BatchRecord], rows: &[BatchRow]) -> Vec<BatchCurve> {
                 .filter(|r| r.record_index == a)
                 .filter_map(|r| {
                     let o = r.outcome.as_ref().ok()?;
-                    let m = &o.summary;
-                    Some((
-                        r.pga / G0,
-                        [
-                            m.peak_seat_displacement,
-                            m.peak_joint_opening,
-                            m.peak_rotation[0].max(m.peak_rotation[1]) * DEG,
-                            m.impacts as Real,
-                        ],
-                    ))
+                    Some((r.pga / G0, values(o)))
                 })
                 .collect();
             pts.sort_by(|p, q| p.0.total_cmp(&q.0));
@@ -180,11 +292,17 @@ fn curves(records: &[BatchRecord], rows: &[BatchRow]) -> Vec<BatchCurve> {
 }
 
 /// Prints the batch's summary and errors; exit code 1 when a run failed or is not trustworthy.
-fn report(rows: &[BatchRow], runs_secs: f64, out: &Path) -> ExitCode {
-    let failed: Vec<&BatchRow> = rows.iter().filter(|r| r.outcome.is_err()).collect();
+/// `status(o)` is a run's status and whether it unseated.
+fn report<O>(
+    rows: &[BatchRow<O>],
+    runs_secs: f64,
+    out: &Path,
+    status: impl Fn(&O) -> (SimStatus, bool),
+) -> ExitCode {
+    let failed: Vec<&BatchRow<O>> = rows.iter().filter(|r| r.outcome.is_err()).collect();
     let unseated = rows
         .iter()
-        .filter(|r| r.outcome.as_ref().is_ok_and(|o| o.summary.unseated))
+        .filter(|r| r.outcome.as_ref().is_ok_and(|o| status(o).1))
         .count();
     eprintln!(
         "batch: {} runs in {:.2} s, {} unseated, {} failed; outputs in {}",
@@ -195,14 +313,15 @@ fn report(rows: &[BatchRow], runs_secs: f64, out: &Path) -> ExitCode {
         out.display()
     );
     // runs that finished but are not trustworthy (diverged, LCP/law-check or Newton failures)
-    let untrusted: Vec<(&BatchRow, SimStatus)> = rows
+    let untrusted: Vec<(&BatchRow<O>, SimStatus)> = rows
         .iter()
-        .filter_map(|r| r.outcome.as_ref().ok().map(|o| (r, o.status)))
+        .filter_map(|r| r.outcome.as_ref().ok().map(|o| (r, status(o).0)))
         .filter(|(_, st)| *st != SimStatus::Completed)
         .collect();
     if let Some((_, st)) = untrusted.first() {
         eprintln!(
-            "error: {} of {} runs ended with a status other than Completed (first: {:?}); their rows in              batch.csv are not trustworthy",
+            "error: {} of {} runs ended with a status other than Completed (first: {:?}); their rows in \
+             batch.csv are not trustworthy",
             untrusted.len(),
             rows.len(),
             st

@@ -1,10 +1,11 @@
 //! `pounding simulate` of a bridge of `[[segment]]`s: builds the run with the library, writes
 //! `history.csv`, `impacts.csv`, `summary.json`, the figures (`joint_openings.png`,
 //! `displacements.png`, `plan.png`, `energy.png`; [`crate::plots::bridge`]) and `timing.json`
-//! (last) and prints a summary.
+//! (last) and prints a summary; with `--records`, the batch of
+//! [`crate::cmd_simulate::sim_batch::run_bridge`].
 
 use crate::cmd_simulate::{Args, lock_and_clear};
-use anyhow::{Context, Result, anyhow, bail};
+use anyhow::{Context, Result, anyhow};
 use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
 use pounding::sim::SimStatus;
@@ -17,10 +18,8 @@ use std::time::Instant;
 /// Runs a bridge scenario (single run).
 pub fn run(args: &Args, mut sc: Scenario, t_start: Instant) -> Result<ExitCode> {
     if !args.records.is_empty() {
-        bail!(
-            "--records (batch mode) is not available for bridges of [[segment]]s yet; run one \
-             record at a time with --record"
-        );
+        let setup = sc.for_batch().build_bridge()?;
+        return crate::cmd_simulate::sim_batch::run_bridge(args, &setup, t_start);
     }
     if let Some(p) = &args.record {
         sc = sc.with_record(p, None);

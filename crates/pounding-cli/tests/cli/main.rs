@@ -57,6 +57,7 @@ fn help_lists_subcommands() {
 }
 
 mod batch;
+mod bridge_batch;
 mod bridge_plots;
 mod compare;
 mod fuzz;

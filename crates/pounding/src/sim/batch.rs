@@ -13,9 +13,13 @@
 //! `i mod N = K − 1`, so the union of the rows of all `N` shards, sorted by `i`, is the unsharded
 //! result.
 //!
+//! Bridges of `N` segments ([`crate::sim::bridge`]) run the same way ([`run_bridge_batch`],
+//! [`run_bridge_problem`]): the same runs, row order and shards.
+//!
 //! A record that could not be read does not stop the batch: its rows carry the error
 //! ([`BatchRow::outcome`]) and every other run is still done.
 
+use super::bridge::{BridgeProblem, BridgeSolution, BridgeSummary, simulate_bridge};
 use super::{SimError, SimProblem, SimSettings, SimSolution, SimStatus, SimSummary, simulate};
 use crate::ground_motion::{GroundMotion, Record};
 use crate::math::Real;
@@ -66,9 +70,10 @@ impl From<SimSolution> for BatchOutcome {
     }
 }
 
-/// One row of a batch (one run).
+/// One row of a batch (one run): `O` is what a run produced ([`BatchOutcome`] for the two-deck
+/// model, [`BridgeBatchOutcome`] for a bridge).
 #[derive(Debug, Clone, PartialEq)]
-pub struct BatchRow {
+pub struct BatchRow<O = BatchOutcome> {
     /// Global run index `i = record_index · (number of scales) + scale_index`.
     pub index: usize,
     /// Index of the record.
@@ -83,7 +88,7 @@ pub struct BatchRow {
     /// \[m/s²\]; NaN when the record could not be read.
     pub pga: Real,
     /// The run's result, or the error (an unreadable record, or a simulation input error).
-    pub outcome: Result<BatchOutcome, String>,
+    pub outcome: Result<O, String>,
 }
 
 /// The problem of one run: `base` with `record` as its only component along `Rot(α) ŷ`, scale
@@ -145,19 +150,48 @@ pub fn run_batch(
     shard: BatchShard,
     progress: &(dyn Fn(usize) + Sync),
 ) -> Result<Vec<BatchRow>, SimError> {
+    let settings = batch_settings(records, scales, settings)?;
+    base.model.linear_system()?;
+    Ok(run_pairs(records, scales, shard, progress, &|r, scale| {
+        let p = run_problem(base, r, scale);
+        let pga = r.pga() * p.ground.scale_y.abs();
+        (pga, simulate(&p, &settings).map(BatchOutcome::from))
+    }))
+}
+
+/// Checks the lists and the settings of a batch; the settings of its runs keep no history (the
+/// summary does not depend on it).
+fn batch_settings(
+    records: &[BatchRecord],
+    scales: &[Real],
+    settings: &SimSettings,
+) -> Result<SimSettings, SimError> {
     validate_lists(records, scales)?;
     settings.validate()?;
-    base.model.linear_system()?;
-    let settings = SimSettings {
+    Ok(SimSettings {
         history_stride: usize::MAX,
         ..settings.clone()
-    };
+    })
+}
+
+/// One run of a batch: `(record, scale)` → the PGA of the applied component and the outcome.
+type RunOne<'a, O> = dyn Fn(&Record, Real) -> (Real, Result<O, SimError>) + Sync + 'a;
+
+/// The rows of every `(record, scale)` pair of `shard`, in parallel on the current rayon pool, in
+/// increasing global index; `run(record, scale)` gives the PGA of the applied component and the
+/// outcome (its error is prefixed with the record's name).
+fn run_pairs<O: Send>(
+    records: &[BatchRecord],
+    scales: &[Real],
+    shard: BatchShard,
+    progress: &(dyn Fn(usize) + Sync),
+    run: &RunOne<'_, O>,
+) -> Vec<BatchRow<O>> {
     let ns = scales.len();
     let todo: Vec<usize> = (0..records.len() * ns)
         .filter(|&i| shard.contains(i))
         .collect();
-    let rows = todo
-        .par_iter()
+    todo.par_iter()
         .map(|&i| {
             let (a, b) = (i / ns, i % ns);
             let rec = &records[a];
@@ -165,12 +199,8 @@ pub fn run_batch(
             let (pga, outcome) = match &rec.record {
                 Err(msg) => (Real::NAN, Err(msg.clone())),
                 Ok(r) => {
-                    let p = run_problem(base, r, scale);
-                    let pga = r.pga() * p.ground.scale_y.abs();
-                    let out = simulate(&p, &settings)
-                        .map(BatchOutcome::from)
-                        .map_err(|e| format!("{}: {e}", rec.name));
-                    (pga, out)
+                    let (pga, out) = run(r, scale);
+                    (pga, out.map_err(|e| format!("{}: {e}", rec.name)))
                 }
             };
             progress(1);
@@ -184,6 +214,86 @@ pub fn run_batch(
                 outcome,
             }
         })
-        .collect();
-    Ok(rows)
+        .collect()
+}
+
+/// What one bridge run produced ([`run_bridge_batch`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BridgeBatchOutcome {
+    /// How the run ended.
+    pub status: SimStatus,
+    /// Peaks per joint, abutment and segment, unseating and energies (as in a single run).
+    pub summary: BridgeSummary,
+    /// Impacting contacts (the rows of a single run's `impacts.csv`).
+    pub impacting_contacts: usize,
+    /// Steps taken.
+    pub steps: usize,
+    /// Step size \[s\].
+    pub dt: Real,
+    /// Steps with an LCP solve (rigid law).
+    pub lcp_solves: usize,
+    /// LCP solves that fell back to enumeration.
+    pub lcp_enumeration_fallbacks: usize,
+    /// LCP solves that failed.
+    pub lcp_failures: usize,
+    /// Newton failures (compliance laws).
+    pub newton_failures: usize,
+}
+
+impl From<BridgeSolution> for BridgeBatchOutcome {
+    fn from(s: BridgeSolution) -> Self {
+        Self {
+            status: s.status,
+            impacting_contacts: s.impacts.len(),
+            summary: s.summary,
+            steps: s.steps,
+            dt: s.dt,
+            lcp_solves: s.lcp_solves,
+            lcp_enumeration_fallbacks: s.lcp_enumeration_fallbacks,
+            lcp_failures: s.lcp_failures,
+            newton_failures: s.newton_failures,
+        }
+    }
+}
+
+/// One row of a bridge batch.
+pub type BridgeBatchRow = BatchRow<BridgeBatchOutcome>;
+
+/// The bridge problem of one run: `base` with `record` as its only component along `Rot(α) ŷ`,
+/// scale factors multiplied by `scale` (the single run `pounding simulate bridge.toml --record R
+/// --scale S`, as [`run_problem`] for two decks).
+pub fn run_bridge_problem(base: &BridgeProblem, record: &Record, scale: Real) -> BridgeProblem {
+    BridgeProblem {
+        model: base.model.clone(),
+        ground: GroundMotion {
+            along_y: Some(record.clone()),
+            scale_y: base.ground.scale_y * scale,
+            along_x: None,
+            scale_x: base.ground.scale_x * scale,
+            incidence: base.ground.incidence,
+        },
+        q0: base.q0.clone(),
+        u0: base.u0.clone(),
+    }
+}
+
+/// [`run_batch`] for a bridge ([`crate::sim::bridge`]): every `(record, scale)` pair of `shard`
+/// in parallel, rows in increasing global index (module docs: the same runs, order and shards as
+/// the two-deck batch). Each row's outcome equals that of [`simulate_bridge`] on
+/// [`run_bridge_problem`] bit for bit (the history is not kept).
+pub fn run_bridge_batch(
+    base: &BridgeProblem,
+    settings: &SimSettings,
+    records: &[BatchRecord],
+    scales: &[Real],
+    shard: BatchShard,
+    progress: &(dyn Fn(usize) + Sync),
+) -> Result<Vec<BridgeBatchRow>, SimError> {
+    let settings = batch_settings(records, scales, settings)?;
+    base.model.validate()?;
+    Ok(run_pairs(records, scales, shard, progress, &|r, scale| {
+        let p = run_bridge_problem(base, r, scale);
+        let out = simulate_bridge(&p, &settings).map(BridgeBatchOutcome::from);
+        (r.pga() * p.ground.scale_y.abs(), out)
+    }))
 }

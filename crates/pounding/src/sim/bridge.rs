@@ -805,6 +805,9 @@ pub struct BridgeSummary {
     pub abutments: [Option<AbutmentSummary>; 2],
     /// Per segment.
     pub segments: Vec<SegmentSummary>,
+    /// Largest seat displacement over all seated ends (joint ends and outer ends, as the
+    /// two-deck [`super::SimSummary::peak_seat_displacement`]) \[m\].
+    pub peak_seat_displacement: Real,
     /// Some end exceeded its seat length.
     pub unseated: bool,
     /// First time an end exceeded its seat length \[s\].
@@ -1080,6 +1083,11 @@ fn solution(
         joints,
         abutments,
         segments,
+        peak_seat_displacement: peaks
+            .seat
+            .iter()
+            .copied()
+            .fold(Real::NEG_INFINITY, Real::max),
         unseated: peaks.unseat.is_some(),
         unseating_time: peaks.unseat.map(|u| u.0),
         unseated_end,

@@ -186,8 +186,14 @@ impl Scheme {
 
     /// Applies a block-diagonal matrix (one `3 × 3` block per segment) to `v`.
     fn apply(blocks: &[Matrix3<Real>], v: &State) -> State {
+        Self::apply_blocks(blocks.iter(), v)
+    }
+
+    /// [`Self::apply`] with the blocks from an iterator (no list of blocks is collected: the
+    /// energy terms of every step use the blocks of [`Self::bodies`] in place).
+    fn apply_blocks<'a>(blocks: impl Iterator<Item = &'a Matrix3<Real>>, v: &State) -> State {
         let mut out = State::zeros(v.len());
-        for (j, b) in blocks.iter().enumerate() {
+        for (j, b) in blocks.enumerate() {
             let x: Vector3<Real> = v.fixed_rows::<3>(3 * j).into_owned();
             out.fixed_rows_mut::<3>(3 * j).copy_from(&(b * x));
         }
@@ -211,14 +217,20 @@ impl Scheme {
 
     /// The contact-free velocity `u_free = u + A_u u + A_q q + B_g ā`.
     fn u_free(&self, q: &State, u: &State, abar: &Vector) -> State {
+        // block by block, in place: per entry the same products and the same sums in the same
+        // order, ((u + A_u u) + A_q q) + B_g ā, as the whole-vector expression (bit-identical)
         let a = Vector2::new(abar.x, abar.y);
-        let au = Self::apply(&self.a_u, u);
-        let aq = Self::apply(&self.a_q, q);
-        let mut bg = State::zeros(u.len());
-        for (j, b) in self.b_g.iter().enumerate() {
-            bg.fixed_rows_mut::<3>(3 * j).copy_from(&(b * a));
+        let mut out = State::zeros(u.len());
+        for j in 0..self.a_u.len() {
+            let uj: Vector3<Real> = u.fixed_rows::<3>(3 * j).into_owned();
+            let qj: Vector3<Real> = q.fixed_rows::<3>(3 * j).into_owned();
+            let au = self.a_u[j] * uj;
+            let aq = self.a_q[j] * qj;
+            let bg = self.b_g[j] * a;
+            out.fixed_rows_mut::<3>(3 * j)
+                .copy_from(&(((uj + au) + aq) + bg));
         }
-        u + au + aq + bg
+        out
     }
 
     /// The effective seismic load `F = −M r a_g`.
@@ -231,22 +243,19 @@ impl Scheme {
         -f
     }
 
-    fn mass_of(&self) -> Vec<Matrix3<Real>> {
-        self.bodies.iter().map(|b| b.mass).collect()
-    }
-
     /// `(T, V) = (½ uᵀ M u, ½ qᵀ K q)`.
     fn energies(&self, q: &State, u: &State) -> (Real, Real) {
-        let mu = Self::apply(&self.mass_of(), u);
-        let k: Vec<Matrix3<Real>> = self.bodies.iter().map(|b| b.stiffness).collect();
-        let kq = Self::apply(&k, q);
+        let mu = Self::apply_blocks(self.bodies.iter().map(|b| &b.mass), u);
+        let kq = Self::apply_blocks(self.bodies.iter().map(|b| &b.stiffness), q);
         (0.5 * u.dot(&mu), 0.5 * q.dot(&kq))
     }
 
     /// `vᵀ C v`.
     fn damping_power(&self, v: &State) -> Real {
-        let c: Vec<Matrix3<Real>> = self.bodies.iter().map(|b| b.damping).collect();
-        v.dot(&Self::apply(&c, v))
+        v.dot(&Self::apply_blocks(
+            self.bodies.iter().map(|b| &b.damping),
+            v,
+        ))
     }
 }
 
@@ -699,7 +708,7 @@ pub(crate) struct Trace {
 
 impl Trace {
     /// Appends the state at `t`.
-    #[allow(clippy::too_many_arguments)]
+    #[allow(clippy::too_many_arguments)] // one argument per recorded series
     fn record(
         &mut self,
         t: Real,

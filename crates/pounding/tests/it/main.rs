@@ -31,6 +31,7 @@ mod shapes;
 mod sim;
 mod sim_bearings;
 mod sim_bridge;
+mod sim_bridge_batch;
 mod sim_bridge_examples;
 mod sim_bridge_plan;
 mod sim_bridge_reference;

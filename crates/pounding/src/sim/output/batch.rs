@@ -1,11 +1,13 @@
-//! `batch.csv` of `pounding simulate --records` (one row per `(record, scale)` run).
+//! `batch.csv` of `pounding simulate --records` (one row per `(record, scale)` run), for the
+//! two-deck model ([`batch_csv`]) and for bridges ([`bridge_batch_csv`]).
 
 use super::DEG;
 use crate::ground_motion::G0;
 use crate::math::Real;
 use crate::output::float_token;
 use crate::sim::SEAT_ENDS;
-use crate::sim::batch::BatchRow;
+use crate::sim::batch::{BatchRow, BridgeBatchOutcome, BridgeBatchRow};
+use crate::sim::bridge::ABUTMENT_SIDES;
 
 /// CSV field: quoted when it contains a comma, a quote or a line break.
 fn field(s: &str) -> String {
@@ -26,9 +28,52 @@ lcp_solves,lcp_failures,error";
 /// `batch.csv`: [`BATCH_HEADER`], then one row per run (a run that failed has `status = error`
 /// and its message in `error`).
 pub fn batch_csv(rows: &[BatchRow]) -> String {
-    let mut s = String::from(BATCH_HEADER);
+    rows_csv(BATCH_HEADER.to_string(), rows, |o, c| {
+        let m = &o.summary;
+        c.push(format!("{:?}", o.status));
+        c.push(m.impacts.to_string());
+        c.push(m.impacting_contacts.to_string());
+        for v in [
+            m.peak_joint_closing,
+            m.peak_joint_opening,
+            m.peak_rotation[0] * DEG,
+            m.peak_rotation[1] * DEG,
+            m.peak_slip,
+            m.peak_seat_displacement,
+        ] {
+            c.push(float_token(v));
+        }
+        c.push(m.unseated.to_string());
+        c.push(m.unseating_time.map_or(String::new(), float_token));
+        c.push(m.unseated_end.map_or("", |i| SEAT_ENDS[i]).to_string());
+        let e = &m.final_energy;
+        for v in [
+            m.max_penetration,
+            m.energy_balance_error,
+            e.input,
+            e.viscous,
+            e.contact,
+            o.steps as Real * o.dt,
+        ] {
+            c.push(float_token(v));
+        }
+        c.push(o.steps.to_string());
+        c.push(o.lcp_solves.to_string());
+        c.push(o.lcp_failures.to_string());
+    })
+}
+
+/// `header`, then one row per run: `index, record, scale`, then for a run that failed
+/// `, , error`, empty cells and the message in the last column (`error`); else the PGA in g and
+/// m/s², the cells of `cells` and an empty `error`.
+fn rows_csv<O>(
+    header: String,
+    rows: &[BatchRow<O>],
+    cells: impl Fn(&O, &mut Vec<String>),
+) -> String {
+    let ncols = header.split(',').count();
+    let mut s = header;
     s.push('\n');
-    let ncols = BATCH_HEADER.split(',').count();
     for r in rows {
         let mut c: Vec<String> = vec![r.index.to_string(), field(&r.record), float_token(r.scale)];
         match &r.outcome {
@@ -38,39 +83,9 @@ pub fn batch_csv(rows: &[BatchRow]) -> String {
                 c.push(field(msg));
             }
             Ok(o) => {
-                let m = &o.summary;
                 c.push(float_token(r.pga / G0));
                 c.push(float_token(r.pga));
-                c.push(format!("{:?}", o.status));
-                c.push(m.impacts.to_string());
-                c.push(m.impacting_contacts.to_string());
-                for v in [
-                    m.peak_joint_closing,
-                    m.peak_joint_opening,
-                    m.peak_rotation[0] * DEG,
-                    m.peak_rotation[1] * DEG,
-                    m.peak_slip,
-                    m.peak_seat_displacement,
-                ] {
-                    c.push(float_token(v));
-                }
-                c.push(m.unseated.to_string());
-                c.push(m.unseating_time.map_or(String::new(), float_token));
-                c.push(m.unseated_end.map_or("", |i| SEAT_ENDS[i]).to_string());
-                let e = &m.final_energy;
-                for v in [
-                    m.max_penetration,
-                    m.energy_balance_error,
-                    e.input,
-                    e.viscous,
-                    e.contact,
-                    o.steps as Real * o.dt,
-                ] {
-                    c.push(float_token(v));
-                }
-                c.push(o.steps.to_string());
-                c.push(o.lcp_solves.to_string());
-                c.push(o.lcp_failures.to_string());
+                cells(o, &mut c);
                 c.push(String::new());
             }
         }
@@ -79,4 +94,151 @@ pub fn batch_csv(rows: &[BatchRow]) -> String {
         s.push('\n');
     }
     s
+}
+
+/// The leading columns of a bridge's `batch.csv`: those of [`BATCH_HEADER`] that keep their
+/// meaning for a bridge (joint closing and opening: the largest over the joints; seat
+/// displacement: over all seated ends), with the dissipation of yielding bearings and the work
+/// on restrainers added after the contact dissipation.
+const BRIDGE_BATCH_LEAD: &str = "index,record,scale,pga_g,pga_mps2,status,impacts,\
+impacting_contacts,peak_joint_closing_m,peak_joint_opening_m,peak_seat_displacement_m,unseated,\
+unseating_time_s,unseated_end,max_penetration_m,energy_balance_error,input_energy_J,\
+viscous_dissipation_J,contact_dissipation_J,hysteretic_dissipation_J,restrainer_work_J,\
+duration_s,steps,lcp_solves,lcp_failures";
+
+/// Per-joint columns of a bridge's `batch.csv` (after `joint<k>_`, `k` 1-based).
+const BRIDGE_JOINT_COLS: [&str; 8] = [
+    "impacts",
+    "peak_closing_m",
+    "peak_opening_m",
+    "peak_contact_force_n",
+    "peak_impulse_ns",
+    "restrainer_engagements",
+    "restrainer_peak_force_n",
+    "unseated",
+];
+/// Per-abutment columns (after `abutment_start_` / `abutment_end_`).
+const BRIDGE_ABUTMENT_COLS: [&str; 4] = [
+    "impacts",
+    "peak_closing_m",
+    "peak_contact_force_n",
+    "peak_impulse_ns",
+];
+/// Per-segment columns (after `segment<i>_`, `i` 1-based).
+const BRIDGE_SEGMENT_COLS: [&str; 5] = [
+    "peak_displacement_m",
+    "final_displacement_m",
+    "peak_rotation_deg",
+    "peak_bearing_deformation_m",
+    "hysteretic_energy_j",
+];
+
+/// Header of a bridge's `batch.csv` for a bridge of `n_segments` segments: the leading columns
+/// (as [`BATCH_HEADER`] where the meaning is the same), then per joint `joint<k>_…`, per
+/// abutment `abutment_start_…` and `abutment_end_…` (both always, empty where absent), per
+/// segment `segment<i>_…` in bridge order (the keys of `summary.json`), and `error` last.
+pub fn bridge_batch_header(n_segments: usize) -> String {
+    let mut h: Vec<String> = BRIDGE_BATCH_LEAD.split(',').map(String::from).collect();
+    for k in 1..n_segments {
+        h.extend(BRIDGE_JOINT_COLS.iter().map(|c| format!("joint{k}_{c}")));
+    }
+    for side in ABUTMENT_SIDES {
+        h.extend(
+            BRIDGE_ABUTMENT_COLS
+                .iter()
+                .map(|c| format!("abutment_{side}_{c}")),
+        );
+    }
+    for i in 1..=n_segments {
+        h.extend(
+            BRIDGE_SEGMENT_COLS
+                .iter()
+                .map(|c| format!("segment{i}_{c}")),
+        );
+    }
+    h.push("error".into());
+    h.join(",")
+}
+
+/// `Some(x)` as its token, `None` (not applicable: a rigid law's contact force, no restrainer,
+/// no unseating) as an empty field.
+fn opt(x: Option<Real>) -> String {
+    x.map_or(String::new(), float_token)
+}
+
+/// The cells of one completed bridge run after `pga_mps2`.
+fn bridge_cells(o: &BridgeBatchOutcome, c: &mut Vec<String>) {
+    let m = &o.summary;
+    let e = &m.final_energy;
+    let hyst: Real = m.segments.iter().map(|g| g.hysteretic_energy).sum();
+    let max_of = |v: Vec<Real>| v.into_iter().reduce(Real::max);
+    c.push(format!("{:?}", o.status));
+    c.push(m.impacts.to_string());
+    c.push(o.impacting_contacts.to_string());
+    c.push(opt(max_of(
+        m.joints.iter().map(|j| j.peak_closing).collect(),
+    )));
+    c.push(opt(max_of(
+        m.joints.iter().map(|j| j.peak_opening).collect(),
+    )));
+    c.push(float_token(m.peak_seat_displacement));
+    c.push(m.unseated.to_string());
+    c.push(opt(m.unseating_time));
+    c.push(m.unseated_end.clone().unwrap_or_default());
+    for v in [
+        m.peak_penetration,
+        m.energy_balance_error,
+        e.input,
+        e.viscous,
+        e.contact,
+        hyst,
+        m.restrainer_work,
+        o.steps as Real * o.dt,
+    ] {
+        c.push(float_token(v));
+    }
+    c.push(o.steps.to_string());
+    c.push(o.lcp_solves.to_string());
+    c.push(o.lcp_failures.to_string());
+    for j in &m.joints {
+        c.push(j.impacts.to_string());
+        c.push(float_token(j.peak_closing));
+        c.push(float_token(j.peak_opening));
+        c.push(opt(j.peak_contact_force));
+        c.push(float_token(j.peak_impulse));
+        c.push(j.restrainer_engagements.to_string());
+        c.push(opt(j.restrainer_peak_force));
+        c.push(j.unseated.to_string());
+    }
+    for a in &m.abutments {
+        match a {
+            Some(a) => {
+                c.push(a.impacts.to_string());
+                c.push(float_token(a.peak_closing));
+                c.push(opt(a.peak_contact_force));
+                c.push(float_token(a.peak_impulse));
+            }
+            None => c.extend(BRIDGE_ABUTMENT_COLS.iter().map(|_| String::new())),
+        }
+    }
+    for g in &m.segments {
+        for v in [
+            g.peak_displacement,
+            g.final_displacement,
+            g.peak_rotation * DEG,
+            g.peak_bearing_deformation,
+            g.hysteretic_energy,
+        ] {
+            c.push(float_token(v));
+        }
+    }
+}
+
+/// A bridge's `batch.csv` ([`bridge_batch_header`], then one row per run; a run that failed has
+/// `status = error`, empty cells and its message in `error`). Absent or not-applicable items
+/// (an abutment the bridge does not have, the contact force of the rigid law, a joint without a
+/// restrainer, no unseating, no joint at all for one segment) are empty fields; a value that is
+/// not a number is `nan` (the project's CSV tokens, [`float_token`]).
+pub fn bridge_batch_csv(n_segments: usize, rows: &[BridgeBatchRow]) -> String {
+    rows_csv(bridge_batch_header(n_segments), rows, bridge_cells)
 }

@@ -16,7 +16,7 @@ mod batch;
 mod bridge;
 mod bridge_plan;
 mod compare;
-pub use batch::{BATCH_HEADER, batch_csv};
+pub use batch::{BATCH_HEADER, batch_csv, bridge_batch_csv, bridge_batch_header};
 pub use bridge::{
     bridge_history_csv, bridge_impacts_csv, bridge_summary_json, bridge_summary_json_text,
 };
