@@ -28,7 +28,8 @@ use std::time::Instant;
 pub struct Args {
     /// Scenario file (TOML, as for `pounding simulate`); without it the built-in default runs.
     pub scenario: Option<PathBuf>,
-    /// Contact laws to run, comma separated: rigid, kelvin, hertz, hertz-damp, bilinear, jankowski, linear.
+    /// Contact laws to run, comma separated: `rigid` or any law of `[contact] law` (the registry;
+    /// an unknown name is an error listing them). Default: the six of the first release.
     #[arg(
         long,
         value_delimiter = ',',

@@ -26,6 +26,9 @@ pub(crate) mod sim_plots;
 #[path = "sim_batch.rs"]
 pub(crate) mod sim_batch;
 
+#[path = "sim_bridge.rs"]
+mod sim_bridge;
+
 /// Arguments of `pounding simulate`.
 #[derive(clap::Args)]
 pub struct Args {
@@ -100,7 +103,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
     if let Some(p) = args.scenario.as_deref() {
         let sc = Scenario::load(p)?;
         if sc.is_bridge() {
-            return crate::sim_bridge::run(&args, sc, t_start);
+            return sim_bridge::run(&args, sc, t_start);
         }
     }
     let setup = build(&args)?;

@@ -14,7 +14,6 @@ mod figures;
 mod plot_style;
 mod plots;
 mod report;
-mod sim_bridge;
 
 /// Nonsmooth rigid-impact analysis of pounding between bridge deck segments.
 #[derive(Parser)]

@@ -2,9 +2,9 @@
 //! `history.csv`, `impacts.csv`, `summary.json`, the figures (`joint_openings.png`,
 //! `displacements.png`, `plan.png`, `energy.png`; [`crate::plots::bridge`]) and `timing.json`
 //! (last) and prints a summary; with `--records`, the batch of
-//! [`crate::cmd_simulate::sim_batch::run_bridge`].
+//! [`super::sim_batch::run_bridge`].
 
-use crate::cmd_simulate::{Args, lock_and_clear};
+use super::{Args, lock_and_clear};
 use anyhow::{Context, Result, anyhow};
 use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
@@ -19,7 +19,7 @@ use std::time::Instant;
 pub fn run(args: &Args, mut sc: Scenario, t_start: Instant) -> Result<ExitCode> {
     if !args.records.is_empty() {
         let setup = sc.for_batch().build_bridge()?;
-        return crate::cmd_simulate::sim_batch::run_bridge(args, &setup, t_start);
+        return super::sim_batch::run_bridge(args, &setup, t_start);
     }
     if let Some(p) = &args.record {
         sc = sc.with_record(p, None);

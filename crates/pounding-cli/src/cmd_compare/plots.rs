@@ -15,10 +15,34 @@ use std::path::Path;
 
 type R = DrawResult;
 
-const COLORS: [RGBColor; 6] = [DARK, BLUE, GREEN, RED, ORANGE, PURPLE];
+/// The six laws of `LAW_NAMES` keep their colours; further registered laws (in registry order)
+/// get the next ones, so no two laws share a colour in one figure.
+const COLORS: [RGBColor; 12] = [
+    DARK,
+    BLUE,
+    GREEN,
+    RED,
+    ORANGE,
+    PURPLE,
+    RGBColor(0, 139, 139),
+    RGBColor(139, 69, 19),
+    RGBColor(199, 21, 133),
+    RGBColor(128, 128, 0),
+    RGBColor(70, 70, 160),
+    RGBColor(120, 120, 120),
+];
 
 fn color_of(law: &str) -> RGBColor {
-    let i = LAW_NAMES.iter().position(|l| *l == law).unwrap_or(0);
+    let extra = pounding::contact_law::registry::law_names()
+        .into_iter()
+        .filter(|l| !LAW_NAMES.contains(l))
+        .position(|l| l == law)
+        .map(|i| LAW_NAMES.len() + i);
+    let i = LAW_NAMES
+        .iter()
+        .position(|l| *l == law)
+        .or(extra)
+        .unwrap_or(0);
     COLORS[i % COLORS.len()]
 }
 

@@ -141,12 +141,12 @@ fn deck_outline(problem: &SimProblem, j: usize) -> Vec<(Real, Real)> {
     let m = &problem.model;
     let g = m.gap;
     let bodies = m.deck_bodies();
-    use pounding::shape::DeckShape;
-    let d = match m.shapes.map(|s| s[j - 1]) {
-        None if j == 1 => m.arrangement.deck1,
-        None => m.arrangement.deck2,
-        Some(DeckShape::Curved(d)) => d,
-        Some(_) => {
+    let shape = m.shapes.map(|s| s[j - 1]);
+    let d = match (shape, shape.as_ref().and_then(|s| s.curved())) {
+        (None, _) if j == 1 => m.arrangement.deck1,
+        (None, _) => m.arrangement.deck2,
+        (Some(_), Some(d)) => *d,
+        (Some(_), None) => {
             // straight / skewed: the four end-face corners (joint c0, c1, far c0, c1)
             let b = &bodies[j - 1];
             return [

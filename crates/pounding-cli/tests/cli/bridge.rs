@@ -115,7 +115,7 @@ fn bad_bridges_name_the_key_and_line_and_write_nothing() {
         (
             "gap = 0.02\nmu",
             "gap = -0.02\nmu",
-            &["bridge.gap", "bridge.toml:4", "must be >= 0"],
+            &["bridge.gap", "bridge.toml:4", "must lie in [0, 1e3] m"],
         ),
         (
             "period_s = 0.5",
@@ -187,4 +187,37 @@ fn bad_bridges_name_the_key_and_line_and_write_nothing() {
             "case {i} wrote files"
         );
     }
+}
+
+/// A run whose discrete energy balance (exact to rounding for θ = ½) is off — here a contact law
+/// far too stiff for the step — ends `CompletedWithEnergyError`, exit 1, outputs written.
+#[test]
+fn a_run_whose_energy_balance_does_not_close_is_not_a_success() {
+    let text = r#"
+[bridge]
+eps_n = 1.0
+mu = 0.0
+[[segment]]
+L = 30.0
+mass = 1e-12
+period_s = 1e6
+[abutment.start]
+gap = 0.04
+[contact]
+law = "jankowski"
+[ground_motion]
+record_y = "builtin:ELC180"
+record_x = "builtin:ELC270"
+scale_y = 3.0
+[time]
+dt = 0.02
+duration = 2.0
+"#;
+    let (code, err, out) = simulate("ebe", text);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(err.contains("CompletedWithEnergyError"), "{err}");
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(s["status"], "CompletedWithEnergyError");
+    assert!(s["energy_balance_error"].as_f64().unwrap() > 1e-6);
 }

@@ -8,7 +8,7 @@ use crate::analytic::ImpactLaw;
 use crate::geometry::GeometryError;
 use crate::impact::{self, ImpactSettings, ImpactSolution};
 use crate::math::Vector;
-use crate::shape::{DeckEnd, DeckShape, SkewedDeck, StraightDeck, joint_problem};
+use crate::shape::{DeckEnd, joint_problem};
 use serde::Serialize;
 
 /// Input of the joint form: two straight or skew decks face to face at the joint (reference pose,
@@ -126,21 +126,9 @@ pub fn joint_report(a: &JointInput) -> Result<JointReport, ReportError> {
         }
     };
     let length2 = a.length2.unwrap_or(length);
-    let deck2 = match &deck1 {
-        DeckShape::Skewed(d) => DeckShape::Skewed(
-            SkewedDeck::new(length2, d.width, d.skew, d.thickness, d.density)
-                .map_err(|e| rename(e, "length", "length2"))?,
-        ),
-        _ => DeckShape::Straight(
-            StraightDeck::new(
-                length2,
-                a.section.width,
-                a.section.thickness,
-                a.section.density,
-            )
-            .map_err(|e| rename(e, "length", "length2"))?,
-        ),
-    };
+    let deck2 = deck1
+        .with_length(length2)
+        .map_err(|e| rename(e, "length", "length2"))?;
     let law = ImpactLaw::new(a.mu, a.eps)?;
     check_speed(a.speed)?;
     let v1 = a.speed * deck1.axis_direction(DeckEnd::Joint);

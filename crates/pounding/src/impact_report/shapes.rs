@@ -92,11 +92,7 @@ impl ShapeSpec {
 
 /// Names of the far-face corners `\[c0, c1\]` for a shape.
 pub(super) fn corner_names(shape: &DeckShape) -> [&'static str; 2] {
-    match shape {
-        DeckShape::Curved(_) => ["outer", "inner"],
-        DeckShape::Straight(_) => ["c0", "c1"],
-        DeckShape::Skewed(_) => ["acute", "obtuse"],
-    }
+    shape.corner_names(crate::shape::DeckEnd::Far)
 }
 
 /// Input of the abutment form.

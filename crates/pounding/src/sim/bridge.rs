@@ -295,6 +295,19 @@ impl BridgeModel {
         for (i, s) in self.segments.iter().enumerate() {
             if let Some(y) = &s.bearing_yield {
                 check(seg_key(i, "fy"), y.fy, y.fy > 0.0, "must be finite and > 0")?;
+                // each bearing yields at fy k_b / Σk: finite and > 0 too (fy = 1e305 or 5e-324
+                // would overflow or underflow there)
+                let total: Real = s.bearings.iter().map(|b| b.stiffness).sum();
+                for b in s.bearings.iter().filter(|b| b.stiffness > 0.0) {
+                    let fb = y.fy * (b.stiffness / total);
+                    check(
+                        seg_key(i, "fy"),
+                        y.fy,
+                        fb.is_normal() && fb > 0.0,
+                        "gives a per-bearing yield force that is not a normal number; use a \
+                         physical magnitude",
+                    )?;
+                }
                 check(
                     seg_key(i, "b"),
                     y.b,
@@ -670,7 +683,7 @@ impl BridgeModel {
                 if b.stiffness == 0.0 {
                     continue;
                 }
-                let law = BilinearBearing::new(b.stiffness, y.fy * b.stiffness / total, y.b)
+                let law = BilinearBearing::new(b.stiffness, y.fy * (b.stiffness / total), y.b)
                     .expect("validated");
                 el.bearings.push(super::elements::YieldingBearing {
                     body: i,
@@ -694,6 +707,41 @@ impl BridgeModel {
             });
         }
         el
+    }
+}
+
+impl BridgeModel {
+    /// The step must resolve every restrainer: they act over a step as a predictor–corrector
+    /// (explicit) force, stable for `ω h` well below 2 with `ω = √(k (1/m_a + 1/m_b))` the
+    /// frequency of the cable between its two segments; `h ≤ 1/ω` is required (errors name `dt`
+    /// and the joint's `restrainer_k`).
+    pub fn check_time_step(&self, dt: Real) -> Result<(), SimError> {
+        let masses: Vec<Real> = self
+            .segments
+            .iter()
+            .map(|s| s.shape.mass_properties().mass)
+            .collect();
+        for (k, j) in self.joints.iter().enumerate() {
+            let Some(r) = j.restrainer else { continue };
+            let w = (r.k * (1.0 / masses[k] + 1.0 / masses[k + 1])).sqrt();
+            if dt * w > 1.0 {
+                return Err(SimError::invalid(
+                    "dt",
+                    dt,
+                    &format!(
+                        "the restrainer of {} (k = {} N/m between segments of {} and {} kg, \
+                         frequency {} rad/s) needs dt <= {} s",
+                        joint_key(k, "restrainer_k"),
+                        crate::output::float_token(r.k),
+                        crate::output::float_token(masses[k]),
+                        crate::output::float_token(masses[k + 1]),
+                        crate::output::float_token(w),
+                        crate::output::float_token(1.0 / w)
+                    ),
+                ));
+            }
+        }
+        Ok(())
     }
 }
 
@@ -898,6 +946,7 @@ pub fn simulate_bridge(
         }
     }
     let compliant = model.contact_kind()?;
+    model.check_time_step(settings.dt)?;
     let systems = model.body_systems()?;
     let scheme = driver::Scheme::new(&problem.ground, settings, systems)?;
     let bridge = model.bridge();

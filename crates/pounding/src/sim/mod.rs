@@ -772,6 +772,10 @@ pub enum SimStatus {
     /// All steps done with a compliance law, but the Newton iteration on the contact forces
     /// did not converge in some steps (see [`SimSolution::newton_failures`]).
     CompletedWithNewtonFailures,
+    /// All steps done, but the discrete energy balance (exact to rounding for θ = ½) is off by
+    /// more than 1e-6 of the input energy: some force was not resolved consistently (e.g. an
+    /// element or contact too stiff for the step); see [`SimSummary::energy_balance_error`].
+    CompletedWithEnergyError,
 }
 
 /// Result of [`simulate`].

@@ -285,7 +285,8 @@ proptest! {
         match sol.status {
             SimStatus::Completed
             | SimStatus::CompletedWithLcpFailures
-            | SimStatus::CompletedWithNewtonFailures => check_sim(&sol),
+            | SimStatus::CompletedWithNewtonFailures
+            | SimStatus::CompletedWithEnergyError => check_sim(&sol),
             SimStatus::Diverged => prop_assert!(false, "a valid model diverged: {c:?}"),
         }
     }

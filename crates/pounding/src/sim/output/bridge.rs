@@ -124,17 +124,7 @@ pub fn bridge_impacts_csv(sol: &BridgeSolution) -> String {
          gamma_t_post_mps,impulse_n_Ns,impulse_t_Ns,energy_dissipated_J\n",
     );
     for r in &sol.impacts {
-        let f = [
-            r.gamma_n_pre,
-            r.gamma_t_pre,
-            r.gamma_n_post,
-            r.gamma_t_post,
-            r.impulse_n,
-            r.impulse_t,
-            r.energy_dissipated,
-        ]
-        .map(float_token)
-        .join(",");
+        let f = super::impact_numbers(r);
         s.push_str(&format!(
             "{},{},{},{},{},{f}\n",
             r.impact,

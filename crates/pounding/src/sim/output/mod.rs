@@ -114,6 +114,22 @@ pub fn history_csv(problem: &SimProblem, sol: &SimSolution) -> String {
     s
 }
 
+/// The numbers of an `impacts.csv` row: velocities before and after, impulses, dissipated
+/// energy (shared by the two-deck and the bridge files).
+pub(crate) fn impact_numbers(r: &super::ImpactRecord) -> String {
+    [
+        r.gamma_n_pre,
+        r.gamma_t_pre,
+        r.gamma_n_post,
+        r.gamma_t_post,
+        r.impulse_n,
+        r.impulse_t,
+        r.energy_dissipated,
+    ]
+    .map(float_token)
+    .join(",")
+}
+
 /// `impacts.csv`: one row per impact of the rigid contact (time, contact, mode, relative
 /// velocities before and after, impulses, dissipated energy).
 pub fn impacts_csv(sol: &SimSolution) -> String {
@@ -122,17 +138,7 @@ pub fn impacts_csv(sol: &SimSolution) -> String {
          impulse_n_Ns,impulse_t_Ns,energy_dissipated_J\n",
     );
     for r in &sol.impacts {
-        let f = [
-            r.gamma_n_pre,
-            r.gamma_t_pre,
-            r.gamma_n_post,
-            r.gamma_t_post,
-            r.impulse_n,
-            r.impulse_t,
-            r.energy_dissipated,
-        ]
-        .map(float_token)
-        .join(",");
+        let f = impact_numbers(r);
         s.push_str(&format!(
             "{},{},{},{},{}\n",
             r.impact,
@@ -213,15 +219,8 @@ pub fn summary_json(setup: &SimSetup, sol: &SimSolution) -> serde_json::Value {
     // Keys for straight / skewed decks and abutments only when used (the curved default's
     // summary stays as it was).
     if let Some(sh) = &m.shapes {
-        let len = |d: &DeckShape| match d {
-            DeckShape::Straight(d) => json_float(d.length),
-            DeckShape::Skewed(d) => json_float(d.length),
-            DeckShape::Curved(_) => serde_json::Value::Null,
-        };
-        let skew = |d: &DeckShape| match d {
-            DeckShape::Skewed(d) => json_float(d.skew * DEG),
-            _ => json_float(0.0),
-        };
+        let len = |d: &DeckShape| d.length().map_or(serde_json::Value::Null, json_float);
+        let skew = |d: &DeckShape| json_float(d.skew() * DEG);
         out["model"]["shape"] = json!([sh[0].name(), sh[1].name()]);
         out["model"]["length_m"] = json!([len(&sh[0]), len(&sh[1])]);
         out["model"]["skew_deg"] = json!([skew(&sh[0]), skew(&sh[1])]);

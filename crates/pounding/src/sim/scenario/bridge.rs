@@ -198,6 +198,15 @@ impl Val<'_> {
 fn positive(x: f64) -> bool {
     x > 0.0
 }
+/// A deck dimension between 1 mm and 100 km (beyond, the layout's absolute coordinates lose the
+/// millimetres that gaps are made of).
+fn dimension(x: f64) -> bool {
+    (1e-3..=1e5).contains(&x)
+}
+/// A gap or seat length below 1 km.
+fn short(x: f64) -> bool {
+    (0.0..=1e3).contains(&x)
+}
 fn non_negative(x: f64) -> bool {
     x >= 0.0
 }
@@ -242,7 +251,13 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
         positive,
         "must be > 0",
     )?;
-    let d_gap = v.num(bk("gap"), &b.gap, Some(0.05), non_negative, "must be >= 0")?;
+    let d_gap = v.num(
+        bk("gap"),
+        &b.gap,
+        Some(0.05),
+        short,
+        "must lie in [0, 1e3] m",
+    )?;
     let d_mu = v.num(bk("mu"), &b.mu, Some(0.5), non_negative, "must be >= 0")?;
     let d_eps = v.num(bk("eps_n"), &b.eps_n, Some(0.5), unit, "must lie in [0, 1]")?;
     let d_seat = v.num(
@@ -287,6 +302,7 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
         eps_n: d_eps,
         seat_length: d_seat,
     };
+    sc.check_contact_keys()?;
     let (joints, abutments) = sites(sc, &v, raw, &masses, &defaults)?;
     let model = BridgeModel {
         segments,
@@ -301,6 +317,13 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
         model.validate().map_err(|e| model_error(&v, raw, e))?;
         Ok(())
     })?;
+    model
+        .check_time_step(settings.dt)
+        .map_err(|e| ScenarioError::Invalid {
+            message: e.to_string(),
+            at: vec![sc.src.at(super::ParamKey::new(super::Section::Time, "dt"))],
+            note: String::new(),
+        })?;
     Ok(BridgeSetup {
         problem: BridgeProblem::at_rest(model, ground),
         settings,
@@ -336,7 +359,13 @@ fn sites(
         let none = JointSec::default();
         let j = raw.joint.get(k).map_or(&none, |j| j.get_ref());
         let jk = |key: &str| format!("joint[{k}].{key}");
-        let gap = v.num(jk("gap"), &j.gap, Some(d.gap), non_negative, "must be >= 0")?;
+        let gap = v.num(
+            jk("gap"),
+            &j.gap,
+            Some(d.gap),
+            short,
+            "must lie in [0, 1e3] m",
+        )?;
         let friction = v.num(jk("mu"), &j.mu, Some(d.mu), non_negative, "must be >= 0")?;
         let restitution = v.num(
             jk("eps_n"),
@@ -380,7 +409,13 @@ fn sites(
         // a rigid wall: the two-body calibrations see the segment's mass (m_eff = 2m·2m/4m = m)
         let m = masses[if side == 0 { 0 } else { n - 1 }];
         abutments[side] = Some(BridgeAbutment {
-            gap: v.num(ak("gap"), &a.gap, Some(d.gap), non_negative, "must be >= 0")?,
+            gap: v.num(
+                ak("gap"),
+                &a.gap,
+                Some(d.gap),
+                short,
+                "must lie in [0, 1e3] m",
+            )?,
             seat_length: v.num(
                 ak("seat_length"),
                 &a.seat_length,
@@ -494,13 +529,13 @@ fn segment_shape(
     let mut mirrored = false;
     let shape = match shape_name {
         "straight" => {
-            let l = v.num(sk("L"), &s.L, None, positive, "must be > 0")?;
+            let l = v.num(sk("L"), &s.L, None, dimension, "must lie in [1e-3, 1e5] m")?;
             DeckShape::Straight(
                 StraightDeck::new(l, width, thickness, density).map_err(|e| geo("L", e))?,
             )
         }
         "skew" => {
-            let l = v.num(sk("L"), &s.L, None, positive, "must be > 0")?;
+            let l = v.num(sk("L"), &s.L, None, dimension, "must lie in [1e-3, 1e5] m")?;
             let sk_deg = v.num(
                 sk("skew_deg"),
                 &s.skew_deg,
@@ -518,8 +553,8 @@ fn segment_shape(
                 sk("R"),
                 &s.R,
                 None,
-                |x| x > width / 2.0,
-                "must exceed width / 2",
+                |x| x > width / 2.0 && x <= 1e5,
+                "must exceed width / 2 and be at most 1e5 m",
             )?;
             let beta = v.num(
                 sk("beta_deg"),
@@ -644,13 +679,19 @@ fn bearing_yield(v: &Val, i: usize, s: &SegmentSec) -> Result<Option<BearingYiel
 /// One `[[segment]]` table.
 fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> {
     let sk = |key: &str| format!("segment[{i}].{key}");
-    let width = v.num(sk("width"), &s.width, Some(10.0), positive, "must be > 0")?;
+    let width = v.num(
+        sk("width"),
+        &s.width,
+        Some(10.0),
+        dimension,
+        "must lie in [1e-3, 1e5] m",
+    )?;
     let thickness = v.num(
         sk("thickness"),
         &s.thickness,
         Some(0.5),
-        positive,
-        "must be > 0",
+        dimension,
+        "must lie in [1e-3, 1e5] m",
     )?;
     let density = v.num(
         sk("density"),
@@ -691,7 +732,7 @@ fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> 
             "must be > 0",
         )?,
         (None, None) => {
-            return Err(v.err(sk("period_s"), None, format!("segment {} needs its bearings: give {} (translational period on four corner bearings) or {} (per corner bearing, N/m)", i + 1, sk("period_s"), sk("bearing_stiffness"))));
+            return Err(v.err(sk("period_s"), None, format!("segment[{i}] needs its bearings: give {} (translational period on four corner bearings) or {} (per corner bearing, N/m)", sk("period_s"), sk("bearing_stiffness"))));
         }
     };
     let mut seg = Segment::with_corner_bearings(shape, mirrored, k);

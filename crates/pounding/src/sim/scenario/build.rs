@@ -1,7 +1,7 @@
 //! [`Scenario::build`]: the model, the ground motion and the settings from the sections, every
 //! value validated with errors located at its key.
 
-use super::contact::{apply_shape_and_damping, build_contact};
+use super::contact::build_contact;
 use super::error::{ParamKey, ScenarioError, Section};
 use super::sections::{DecksSec, Raw};
 use super::{Scenario, SimSetup, Src};
@@ -14,7 +14,9 @@ use crate::output::float_token;
 use crate::pair::SArrangement;
 use crate::shape::Deck;
 use crate::shape::{DeckShape, SkewedDeck, StraightDeck};
-use crate::sim::{Bearing, JointContact, SimAbutment, SimError, SimModel, SimProblem, SimSettings};
+use crate::sim::{
+    Bearing, DampingModel, JointContact, SimAbutment, SimError, SimModel, SimProblem, SimSettings,
+};
 
 const fn decks(key: &'static str) -> ParamKey {
     ParamKey::new(Section::Decks, key)
@@ -570,4 +572,50 @@ pub(super) fn build_settings(
         }
     }
     Ok(settings)
+}
+
+/// `[decks] mass1`, `mass2` (the deck's mass given directly: its density becomes
+/// `ρ m / m(ρ)`, any shape) and `[bearings] damping = "rayleigh" | "dashpots"`.
+fn apply_shape_and_damping(
+    src: &Src,
+    d: &DecksSec,
+    damping: &str,
+    model: &mut SimModel,
+) -> Result<(), ScenarioError> {
+    let current = model.masses();
+    for (j, m, key) in [(0, d.mass1, "mass1"), (1, d.mass2, "mass2")] {
+        let Some(m) = m else { continue };
+        if !(m.is_finite() && m > 0.0) {
+            return Err(src.invalid(
+                format!("invalid {key} = {}: must be finite and > 0", float_token(m)),
+                ParamKey::of_deck(Section::Decks, key, j as u8 + 1),
+            ));
+        }
+        let f = m / current[j];
+        match &mut model.shapes {
+            Some(sh) => sh[j].scale_density(f),
+            None => {
+                if j == 0 {
+                    model.arrangement.deck1.density *= f;
+                } else {
+                    model.arrangement.deck2.density *= f;
+                }
+            }
+        }
+    }
+    model.damping_model = match damping {
+        "rayleigh" => DampingModel::Rayleigh,
+        "dashpots" => DampingModel::TranslationalDashpots,
+        other => {
+            let key = ParamKey::new(Section::Bearings, "damping");
+            return Err(src.key_error(
+                format!(
+                    "unknown damping {other:?} at {}: use \"rayleigh\" or \"dashpots\"",
+                    src.at(key)
+                ),
+                &[key],
+            ));
+        }
+    };
+    Ok(())
 }

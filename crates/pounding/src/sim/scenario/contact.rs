@@ -3,11 +3,10 @@
 
 use super::Src;
 use super::error::{ParamKey, ScenarioError, Section};
-use super::sections::DecksSec;
 use crate::contact_law::registry::{self, BuildError, LawInputs};
 use crate::contact_law::{ContactLaw, ContactLawError};
 use crate::output::float_token;
-use crate::sim::{ComplianceContact, DampingModel, JointContact, SimModel};
+use crate::sim::{ComplianceContact, JointContact};
 use serde::de::{self, Deserialize, Deserializer, MapAccess, Visitor};
 use std::collections::BTreeMap;
 use std::fmt;
@@ -304,50 +303,4 @@ pub(super) fn build_contact(
         cc.friction_velocity = v;
     }
     Ok(JointContact::Compliance(cc))
-}
-
-/// `[decks] mass1`, `mass2` (the deck's mass given directly: its density becomes
-/// `ρ m / m(ρ)`, any shape) and `[bearings] damping = "rayleigh" | "dashpots"`.
-pub(super) fn apply_shape_and_damping(
-    src: &Src,
-    d: &DecksSec,
-    damping: &str,
-    model: &mut SimModel,
-) -> Result<(), ScenarioError> {
-    let current = model.masses();
-    for (j, m, key) in [(0, d.mass1, "mass1"), (1, d.mass2, "mass2")] {
-        let Some(m) = m else { continue };
-        if !(m.is_finite() && m > 0.0) {
-            return Err(src.invalid(
-                format!("invalid {key} = {}: must be finite and > 0", float_token(m)),
-                ParamKey::of_deck(Section::Decks, key, j as u8 + 1),
-            ));
-        }
-        let f = m / current[j];
-        match &mut model.shapes {
-            Some(sh) => sh[j].scale_density(f),
-            None => {
-                if j == 0 {
-                    model.arrangement.deck1.density *= f;
-                } else {
-                    model.arrangement.deck2.density *= f;
-                }
-            }
-        }
-    }
-    model.damping_model = match damping {
-        "rayleigh" => DampingModel::Rayleigh,
-        "dashpots" => DampingModel::TranslationalDashpots,
-        other => {
-            let key = ParamKey::new(Section::Bearings, "damping");
-            return Err(src.key_error(
-                format!(
-                    "unknown damping {other:?} at {}: use \"rayleigh\" or \"dashpots\"",
-                    src.at(key)
-                ),
-                &[key],
-            ));
-        }
-    };
-    Ok(())
 }

@@ -177,7 +177,8 @@ impl Scenario {
         self
     }
 
-    /// Replaces `[contact] law` by `law` (one of [`LAW_NAMES`]; others are refused by
+    /// Replaces `[contact] law` by `law` (`rigid` or a law of the registry,
+    /// [`crate::contact_law::registry::law_names`]; an unknown name is refused by
     /// [`Scenario::build`]); the other `[contact]` keys and their defaults still apply.
     pub fn with_law(mut self, law: &str) -> Self {
         self.law = Some(law.to_string());

@@ -63,7 +63,8 @@ history_every = 10   # write every n-th step to history.csv (peaks use every ste
 
 # [contact]          # the joint's normal contact law (see the README, "Compliance contact laws in the simulator")
 # law = "rigid"      # rigid (Newton + Coulomb LCP, default) | kelvin | hertz | hertz-damp |
-#                    # bilinear | jankowski: compliance laws (trapezoid + Newton on the forces)
+#                    # bilinear | jankowski | linear: compliance laws (trapezoid + Newton on the
+#                    # forces); an unknown name is an error listing every registered law
 # restitution = 0.5  # target e of the damped laws (default: [joint] eps_n)
 # k = 1e10           # kelvin [N/m]; c = ... [N s/m] instead of restitution
 # k_h = 2.747e10     # hertz, hertz-damp, bilinear derivation [N/m^1.5] (25 000 kip/in^1.5)
