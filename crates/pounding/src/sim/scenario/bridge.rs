@@ -167,6 +167,27 @@ impl Val<'_> {
             line,
         }
     }
+    /// [`Val::num`] of a value that must be `> 0`.
+    fn pos(&self, key: String, x: &Sp<f64>, d: Option<f64>) -> Result<f64, ScenarioError> {
+        self.num(key, x, d, positive, "must be > 0")
+    }
+    /// [`Val::num`] of a deck dimension (1 mm … 100 km).
+    fn dim(&self, key: String, x: &Sp<f64>, d: Option<f64>) -> Result<f64, ScenarioError> {
+        self.num(key, x, d, dimension, "must lie in [1e-3, 1e5] m")
+    }
+    /// [`Val::num`] of a gap (0 … 1 km).
+    fn gap(&self, key: String, x: &Sp<f64>, d: Option<f64>) -> Result<f64, ScenarioError> {
+        self.num(key, x, d, short, "must lie in [0, 1e3] m")
+    }
+    /// [`Val::num`] of a value that must be `>= 0`.
+    fn nonneg(&self, key: String, x: &Sp<f64>, d: Option<f64>) -> Result<f64, ScenarioError> {
+        self.num(key, x, d, non_negative, "must be >= 0")
+    }
+    /// [`Val::num`] of a value in `[0, 1]`.
+    fn unit(&self, key: String, x: &Sp<f64>, d: Option<f64>) -> Result<f64, ScenarioError> {
+        self.num(key, x, d, unit, "must lie in [0, 1]")
+    }
+
     /// `v` (or `default`), which must satisfy `ok`.
     fn num(
         &self,
@@ -244,29 +265,11 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
             ));
         }
     };
-    let outer_seat_length = v.num(
-        bk("outer_seat_length"),
-        &b.outer_seat_length,
-        Some(0.4),
-        positive,
-        "must be > 0",
-    )?;
-    let d_gap = v.num(
-        bk("gap"),
-        &b.gap,
-        Some(0.05),
-        short,
-        "must lie in [0, 1e3] m",
-    )?;
-    let d_mu = v.num(bk("mu"), &b.mu, Some(0.5), non_negative, "must be >= 0")?;
-    let d_eps = v.num(bk("eps_n"), &b.eps_n, Some(0.5), unit, "must lie in [0, 1]")?;
-    let d_seat = v.num(
-        bk("seat_length"),
-        &b.seat_length,
-        Some(0.4),
-        positive,
-        "must be > 0",
-    )?;
+    let outer_seat_length = v.pos(bk("outer_seat_length"), &b.outer_seat_length, Some(0.4))?;
+    let d_gap = v.gap(bk("gap"), &b.gap, Some(0.05))?;
+    let d_mu = v.nonneg(bk("mu"), &b.mu, Some(0.5))?;
+    let d_eps = v.unit(bk("eps_n"), &b.eps_n, Some(0.5))?;
+    let d_seat = v.pos(bk("seat_length"), &b.seat_length, Some(0.4))?;
     if raw.segment.is_empty() {
         return Err(v.err(
             "segment".into(),
@@ -359,28 +362,10 @@ fn sites(
         let none = JointSec::default();
         let j = raw.joint.get(k).map_or(&none, |j| j.get_ref());
         let jk = |key: &str| format!("joint[{k}].{key}");
-        let gap = v.num(
-            jk("gap"),
-            &j.gap,
-            Some(d.gap),
-            short,
-            "must lie in [0, 1e3] m",
-        )?;
-        let friction = v.num(jk("mu"), &j.mu, Some(d.mu), non_negative, "must be >= 0")?;
-        let restitution = v.num(
-            jk("eps_n"),
-            &j.eps_n,
-            Some(d.eps_n),
-            unit,
-            "must lie in [0, 1]",
-        )?;
-        let seat_length = v.num(
-            jk("seat_length"),
-            &j.seat_length,
-            Some(d.seat_length),
-            positive,
-            "must be > 0",
-        )?;
+        let gap = v.gap(jk("gap"), &j.gap, Some(d.gap))?;
+        let friction = v.nonneg(jk("mu"), &j.mu, Some(d.mu))?;
+        let restitution = v.unit(jk("eps_n"), &j.eps_n, Some(d.eps_n))?;
+        let seat_length = v.pos(jk("seat_length"), &j.seat_length, Some(d.seat_length))?;
         let restrainer = restrainer(v, k, j, &raw.bridge)?;
         joints.push(Joint {
             gap,
@@ -399,31 +384,13 @@ fn sites(
         let Some(a) = a else { continue };
         let a = a.get_ref();
         let ak = |key: &str| format!("abutment.{name}.{key}");
-        let restitution = v.num(
-            ak("eps_n"),
-            &a.eps_n,
-            Some(d.eps_n),
-            unit,
-            "must lie in [0, 1]",
-        )?;
+        let restitution = v.unit(ak("eps_n"), &a.eps_n, Some(d.eps_n))?;
         // a rigid wall: the two-body calibrations see the segment's mass (m_eff = 2m·2m/4m = m)
         let m = masses[if side == 0 { 0 } else { n - 1 }];
         abutments[side] = Some(BridgeAbutment {
-            gap: v.num(
-                ak("gap"),
-                &a.gap,
-                Some(d.gap),
-                short,
-                "must lie in [0, 1e3] m",
-            )?,
-            seat_length: v.num(
-                ak("seat_length"),
-                &a.seat_length,
-                Some(d.seat_length),
-                positive,
-                "must be > 0",
-            )?,
-            friction: v.num(ak("mu"), &a.mu, Some(d.mu), non_negative, "must be >= 0")?,
+            gap: v.gap(ak("gap"), &a.gap, Some(d.gap))?,
+            seat_length: v.pos(ak("seat_length"), &a.seat_length, Some(d.seat_length))?,
+            friction: v.nonneg(ak("mu"), &a.mu, Some(d.mu))?,
             restitution,
             contact: contact_for(restitution, [2.0 * m, 2.0 * m])?,
         });
@@ -498,10 +465,10 @@ fn restrainer(
         }
         return Ok(None);
     }
-    let k_ = v.num(kk, &rk, None, positive, "must be > 0")?;
-    let slack = v.num(ks, &rs, Some(0.0), non_negative, "must be >= 0")?;
+    let k_ = v.pos(kk, &rk, None)?;
+    let slack = v.nonneg(ks, &rs, Some(0.0))?;
     let fy = match rf {
-        Some(_) => Some(v.num(kf, &rf, None, positive, "must be > 0")?),
+        Some(_) => Some(v.pos(kf, &rf, None)?),
         None => None,
     };
     Ok(Some(RestrainerSpec { k: k_, slack, fy }))
@@ -529,13 +496,13 @@ fn segment_shape(
     let mut mirrored = false;
     let shape = match shape_name {
         "straight" => {
-            let l = v.num(sk("L"), &s.L, None, dimension, "must lie in [1e-3, 1e5] m")?;
+            let l = v.dim(sk("L"), &s.L, None)?;
             DeckShape::Straight(
                 StraightDeck::new(l, width, thickness, density).map_err(|e| geo("L", e))?,
             )
         }
         "skew" => {
-            let l = v.num(sk("L"), &s.L, None, dimension, "must lie in [1e-3, 1e5] m")?;
+            let l = v.dim(sk("L"), &s.L, None)?;
             let sk_deg = v.num(
                 sk("skew_deg"),
                 &s.skew_deg,
@@ -679,30 +646,12 @@ fn bearing_yield(v: &Val, i: usize, s: &SegmentSec) -> Result<Option<BearingYiel
 /// One `[[segment]]` table.
 fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> {
     let sk = |key: &str| format!("segment[{i}].{key}");
-    let width = v.num(
-        sk("width"),
-        &s.width,
-        Some(10.0),
-        dimension,
-        "must lie in [1e-3, 1e5] m",
-    )?;
-    let thickness = v.num(
-        sk("thickness"),
-        &s.thickness,
-        Some(0.5),
-        dimension,
-        "must lie in [1e-3, 1e5] m",
-    )?;
-    let density = v.num(
-        sk("density"),
-        &s.density,
-        Some(2500.0),
-        positive,
-        "must be > 0",
-    )?;
+    let width = v.dim(sk("width"), &s.width, Some(10.0))?;
+    let thickness = v.dim(sk("thickness"), &s.thickness, Some(0.5))?;
+    let density = v.pos(sk("density"), &s.density, Some(2500.0))?;
     let (mut shape, mirrored) = segment_shape(v, i, s, width, thickness, density)?;
     if let Some(m) = &s.mass {
-        let m = v.num(sk("mass"), &Some(m.clone()), None, positive, "must be > 0")?;
+        let m = v.pos(sk("mass"), &Some(m.clone()), None)?;
         let f = m / shape.mass_properties().mass;
         shape.scale_density(f);
     }
@@ -720,17 +669,11 @@ fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> 
             ));
         }
         (Some(_), None) => {
-            let t = v.num(sk("period_s"), &s.period_s, None, positive, "must be > 0")?;
+            let t = v.pos(sk("period_s"), &s.period_s, None)?;
             let w = 2.0 * std::f64::consts::PI / t;
             mass * w * w / 4.0
         }
-        (None, Some(_)) => v.num(
-            sk("bearing_stiffness"),
-            &s.bearing_stiffness,
-            None,
-            positive,
-            "must be > 0",
-        )?,
+        (None, Some(_)) => v.pos(sk("bearing_stiffness"), &s.bearing_stiffness, None)?,
         (None, None) => {
             return Err(v.err(sk("period_s"), None, format!("segment[{i}] needs its bearings: give {} (translational period on four corner bearings) or {} (per corner bearing, N/m)", sk("period_s"), sk("bearing_stiffness"))));
         }
