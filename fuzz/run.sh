@@ -42,7 +42,9 @@ BIN=$CARGO_TARGET_DIR/$TRIPLE/release
 failed=0
 for t in "${TARGETS[@]}"; do
     mkdir -p "$WORK/corpus/$t" "$WORK/artifacts/$t" "corpus/$t"
-    common=(-rss_limit_mb=2048 -max_len=16384 -timeout=10 -artifact_prefix="$WORK/artifacts/$t/")
+    # -timeout: one sim_model input (200 steps whose contact LCPs each take Lemke to its retries and
+    # the enumeration fallback) needs about 1.3 s optimised and 7-11 s instrumented (found 2026-11-24)
+    common=(-rss_limit_mb=2048 -max_len=16384 -timeout=30 -artifact_prefix="$WORK/artifacts/$t/")
     if [ -d "regressions/$t" ] && [ -n "$(ls -A "regressions/$t")" ]; then
         if ! "$BIN/$t" "${common[@]}" regressions/"$t"/* >"$WORK/$t.replay.log" 2>&1; then
             tail -n 30 "$WORK/$t.replay.log"

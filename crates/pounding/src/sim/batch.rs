@@ -136,28 +136,83 @@ pub fn validate_lists(records: &[BatchRecord], scales: &[Real]) -> Result<(), Si
     Ok(())
 }
 
+/// A base problem a batch can run under each `(record, scale)`: the two-deck [`SimProblem`]
+/// or a bridge's [`BridgeProblem`].
+pub trait BatchProblem: Sync {
+    /// The per-run result kept in a row.
+    type Outcome: Send;
+    /// Checks the model once, before any run.
+    fn check(&self) -> Result<(), SimError>;
+    /// Runs the problem under `record` scaled by `scale`: `(PGA [m/s²], outcome)`.
+    fn run_one(
+        &self,
+        record: &Record,
+        scale: Real,
+        settings: &SimSettings,
+    ) -> (Real, Result<Self::Outcome, SimError>);
+}
+
+impl BatchProblem for SimProblem {
+    type Outcome = BatchOutcome;
+    fn check(&self) -> Result<(), SimError> {
+        self.model.linear_system().map(|_| ())
+    }
+    fn run_one(
+        &self,
+        r: &Record,
+        scale: Real,
+        st: &SimSettings,
+    ) -> (Real, Result<BatchOutcome, SimError>) {
+        let p = run_problem(self, r, scale);
+        let pga = r.pga() * p.ground.scale_y.abs();
+        (pga, simulate(&p, st).map(BatchOutcome::from))
+    }
+}
+
+impl BatchProblem for BridgeProblem {
+    type Outcome = BridgeBatchOutcome;
+    fn check(&self) -> Result<(), SimError> {
+        self.model.validate()
+    }
+    fn run_one(
+        &self,
+        r: &Record,
+        scale: Real,
+        st: &SimSettings,
+    ) -> (Real, Result<BridgeBatchOutcome, SimError>) {
+        let p = run_bridge_problem(self, r, scale);
+        let out = simulate_bridge(&p, st).map(BridgeBatchOutcome::from);
+        (r.pga() * p.ground.scale_y.abs(), out)
+    }
+}
+
 /// Runs every `(record, scale)` pair of `shard` in parallel on the current rayon pool and returns
 /// the rows in increasing global index (module docs). `progress(1)` is called after each run.
+/// The base is a two-deck [`SimProblem`] (rows of [`BatchOutcome`]) or a bridge's
+/// [`BridgeProblem`] (rows of [`BridgeBatchOutcome`], each equal to [`simulate_bridge`] on
+/// [`run_bridge_problem`] bit for bit; also reachable as [`run_bridge_batch`]).
 ///
 /// Errors (bad input for the whole batch: the model, the settings, the lists) are returned before
 /// any run starts; per-run problems are in [`BatchRow::outcome`]. The settings' history stride
 /// is ignored (no history is kept; the summary does not depend on it).
-pub fn run_batch(
-    base: &SimProblem,
+pub fn run_batch<P: BatchProblem>(
+    base: &P,
     settings: &SimSettings,
     records: &[BatchRecord],
     scales: &[Real],
     shard: BatchShard,
     progress: &(dyn Fn(usize) + Sync),
-) -> Result<Vec<BatchRow>, SimError> {
+) -> Result<Vec<BatchRow<P::Outcome>>, SimError> {
     let settings = batch_settings(records, scales, settings)?;
-    base.model.linear_system()?;
+    base.check()?;
     Ok(run_pairs(records, scales, shard, progress, &|r, scale| {
-        let p = run_problem(base, r, scale);
-        let pga = r.pga() * p.ground.scale_y.abs();
-        (pga, simulate(&p, &settings).map(BatchOutcome::from))
+        base.run_one(r, scale, &settings)
     }))
 }
+
+/// [`run_batch`] for a bridge ([`crate::sim::bridge`]): the same runs, order and shards as the
+/// two-deck batch.
+pub use self::run_batch as run_bridge_batch;
 
 /// Checks the lists and the settings of a batch; the settings of its runs keep no history (the
 /// summary does not depend on it).
@@ -275,25 +330,4 @@ pub fn run_bridge_problem(base: &BridgeProblem, record: &Record, scale: Real) ->
         q0: base.q0.clone(),
         u0: base.u0.clone(),
     }
-}
-
-/// [`run_batch`] for a bridge ([`crate::sim::bridge`]): every `(record, scale)` pair of `shard`
-/// in parallel, rows in increasing global index (module docs: the same runs, order and shards as
-/// the two-deck batch). Each row's outcome equals that of [`simulate_bridge`] on
-/// [`run_bridge_problem`] bit for bit (the history is not kept).
-pub fn run_bridge_batch(
-    base: &BridgeProblem,
-    settings: &SimSettings,
-    records: &[BatchRecord],
-    scales: &[Real],
-    shard: BatchShard,
-    progress: &(dyn Fn(usize) + Sync),
-) -> Result<Vec<BridgeBatchRow>, SimError> {
-    let settings = batch_settings(records, scales, settings)?;
-    base.model.validate()?;
-    Ok(run_pairs(records, scales, shard, progress, &|r, scale| {
-        let p = run_bridge_problem(base, r, scale);
-        let out = simulate_bridge(&p, &settings).map(BridgeBatchOutcome::from);
-        (r.pga() * p.ground.scale_y.abs(), out)
-    }))
 }
