@@ -221,3 +221,21 @@ duration = 2.0
     assert_eq!(s["status"], "CompletedWithEnergyError");
     assert!(s["energy_balance_error"].as_f64().unwrap() > 1e-6);
 }
+
+/// A curved bridge that closes on itself (segments overlapping in plan) is refused naming the
+/// two segments (hostile-trial finding: it used to run as if they passed through each other).
+#[test]
+fn a_bridge_that_closes_on_itself_is_refused() {
+    let seg = "[[segment]]\nshape = \"curved\"\nR = 20.0\nbeta_deg = 120.0\ncurve = \"left\"\nperiod_s = 1.0\n";
+    let text = format!(
+        "[bridge]\ngap = 0.02\n{}\n[ground_motion]\nrecord_y = \"none\"\nrecord_x = \"none\"\n[time]\nduration = 1.0\n",
+        seg.repeat(4)
+    );
+    let (code, err, out) = simulate("overlap", &text);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("overlaps segment[") && err.contains("closes on itself"),
+        "{err}"
+    );
+    assert!(!out.exists() || std::fs::read_dir(&out).unwrap().next().is_none());
+}

@@ -271,6 +271,7 @@ impl BridgeModel {
             "must lie in [0, 1)",
         )?;
         self.contact_kind()?;
+        self.check_overlaps()?;
         Ok(())
     }
 
@@ -743,6 +744,109 @@ impl BridgeModel {
         }
         Ok(())
     }
+}
+
+impl BridgeModel {
+    /// Closed plan outline of every segment in the reference pose (first point repeated at the
+    /// end): the four end-face corners of a straight or skewed segment; a curved segment's outer
+    /// and inner arcs as polylines of `arc_chords` chords (at least 1).
+    pub fn outlines(&self, arc_chords: usize) -> Vec<Vec<Vector>> {
+        let bodies = self.layout();
+        let n = arc_chords.max(1);
+        self.segments
+            .iter()
+            .zip(&bodies)
+            .enumerate()
+            .map(|(i, (s, b))| {
+                let place = placement(b, s, i == 0);
+                let body: Vec<Vector> = match s.shape.curved() {
+                    Some(d) => {
+                        // body points (R − r cos φ, r sin φ): inner corner at φ = 0, the outer
+                        // arc φ = 0 → β, the inner arc back β → 0
+                        let (ri, ro) = (d.radius - d.width / 2.0, d.radius + d.width / 2.0);
+                        let at = |r: Real, k: usize| {
+                            let phi = d.angle * k as Real / n as Real;
+                            Vector::new(d.radius - r * phi.cos(), r * phi.sin())
+                        };
+                        let mut v = vec![at(ri, 0)];
+                        v.extend((0..=n).map(|k| at(ro, k)));
+                        v.extend((0..=n).rev().map(|k| at(ri, k)));
+                        v.into_iter().map(|p| s.mirror(p)).collect()
+                    }
+                    None => {
+                        let mut v = s.corner_points().to_vec();
+                        v.push(v[0]);
+                        v
+                    }
+                };
+                body.into_iter().map(place).collect()
+            })
+            .collect()
+    }
+
+    /// Segments that are not neighbours must not overlap in plan (a curve closing on itself):
+    /// an error naming both (outlines with 32 chords per arc).
+    fn check_overlaps(&self) -> Result<(), SimError> {
+        let outlines = self.outlines(32);
+        let bbox = |o: &[Vector]| {
+            o.iter().fold(
+                (
+                    Real::INFINITY,
+                    Real::INFINITY,
+                    Real::NEG_INFINITY,
+                    Real::NEG_INFINITY,
+                ),
+                |(a, b, c, d), p| (a.min(p.x), b.min(p.y), c.max(p.x), d.max(p.y)),
+            )
+        };
+        let boxes: Vec<_> = outlines.iter().map(|o| bbox(o)).collect();
+        for i in 0..outlines.len() {
+            for j in i + 2..outlines.len() {
+                let (a, b) = (boxes[i], boxes[j]);
+                if a.2 < b.0 || b.2 < a.0 || a.3 < b.1 || b.3 < a.1 {
+                    continue;
+                }
+                if polygons_overlap(&outlines[i], &outlines[j]) {
+                    return Err(SimError::InvalidArgument {
+                        name: seg_key(j, "shape"),
+                        reason: format!(
+                            "segment[{j}] overlaps segment[{i}] in plan: the bridge closes on \
+                             itself (check the curve angles, radii and curve directions)"
+                        ),
+                    });
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Two closed polylines cross, or one lies inside the other.
+fn polygons_overlap(a: &[Vector], b: &[Vector]) -> bool {
+    let orient = |p: Vector, q: Vector, r: Vector| cross(&(q - p), &(r - p));
+    let crosses = |p1: Vector, p2: Vector, q1: Vector, q2: Vector| {
+        let (d1, d2) = (orient(q1, q2, p1), orient(q1, q2, p2));
+        let (d3, d4) = (orient(p1, p2, q1), orient(p1, p2, q2));
+        d1 * d2 < 0.0 && d3 * d4 < 0.0
+    };
+    for e in a.windows(2) {
+        for f in b.windows(2) {
+            if crosses(e[0], e[1], f[0], f[1]) {
+                return true;
+            }
+        }
+    }
+    let inside = |p: Vector, poly: &[Vector]| {
+        let mut c = false;
+        for e in poly.windows(2) {
+            let (u, v) = (e[0], e[1]);
+            if (u.y > p.y) != (v.y > p.y) && p.x < u.x + (p.y - u.y) / (v.y - u.y) * (v.x - u.x) {
+                c = !c;
+            }
+        }
+        c
+    };
+    inside(a[0], b) || inside(b[0], a)
 }
 
 /// Maps a point of segment `s`'s (mirrored) body frame to its global reference position, given

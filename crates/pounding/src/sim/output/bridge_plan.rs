@@ -5,8 +5,7 @@
 //! value per kept time of the [`BridgeSolution`] (`sol.t`).
 
 use crate::math::{Real, Vector};
-use crate::shape::DeckShape;
-use crate::sim::bridge::{BridgeModel, BridgeSolution, placement};
+use crate::sim::bridge::{BridgeModel, BridgeSolution};
 
 /// Plan of a bridge in its reference pose.
 #[derive(Debug, Clone, PartialEq)]
@@ -29,47 +28,7 @@ pub struct BridgePlan {
 /// (at least 1).
 pub fn bridge_plan(model: &BridgeModel, arc_chords: usize) -> BridgePlan {
     let bodies = model.layout();
-    let n = arc_chords.max(1);
-    let outlines = model
-        .segments
-        .iter()
-        .zip(&bodies)
-        .enumerate()
-        .map(|(i, (s, b))| {
-            let place = placement(b, s, i == 0);
-            let mirror = |p: Vector| {
-                if s.mirrored {
-                    Vector::new(-p.x, p.y)
-                } else {
-                    p
-                }
-            };
-            let mut body: Vec<Vector> = match s.shape {
-                DeckShape::Curved(d) => {
-                    // body points (R − r cos φ, r sin φ): inner corner at φ = 0, the outer arc
-                    // φ = 0 → β, the inner arc back β → 0
-                    let (ri, ro) = (d.radius - d.width / 2.0, d.radius + d.width / 2.0);
-                    let at = |r: Real, k: usize| {
-                        let phi = d.angle * k as Real / n as Real;
-                        Vector::new(d.radius - r * phi.cos(), r * phi.sin())
-                    };
-                    let mut v = vec![at(ri, 0)];
-                    v.extend((0..=n).map(|k| at(ro, k)));
-                    v.extend((0..=n).rev().map(|k| at(ri, k)));
-                    v.into_iter().map(mirror).collect()
-                }
-                _ => {
-                    let mut v = s.corner_points().to_vec();
-                    v.push(v[0]);
-                    v
-                }
-            };
-            for p in &mut body {
-                *p = place(*p);
-            }
-            body
-        })
-        .collect();
+    let outlines = model.outlines(arc_chords);
     let corners = bodies
         .iter()
         .map(|b| {
