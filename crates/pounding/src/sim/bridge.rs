@@ -278,10 +278,9 @@ impl BridgeModel {
     /// Shapes, bearings and yield of every segment.
     fn validate_segments(&self) -> Result<(), SimError> {
         for (i, s) in self.segments.iter().enumerate() {
-            s.shape.validate().map_err(|e| SimError::InvalidParameter {
-                name: seg_key(i, &e.to_string()),
-                value: Real::NAN,
-                reason: "invalid shape".into(),
+            s.shape.validate().map_err(|e| SimError::InvalidArgument {
+                name: seg_key(i, "shape"),
+                reason: format!("invalid shape: {e}"),
             })?;
             for (b, br) in s.bearings.iter().enumerate() {
                 let kr2 = br.stiffness * br.point.norm_squared();

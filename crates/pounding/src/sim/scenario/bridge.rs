@@ -650,10 +650,23 @@ fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> 
     let thickness = v.dim(sk("thickness"), &s.thickness, Some(0.5))?;
     let density = v.pos(sk("density"), &s.density, Some(2500.0))?;
     let (mut shape, mirrored) = segment_shape(v, i, s, width, thickness, density)?;
-    if let Some(m) = &s.mass {
-        let m = v.pos(sk("mass"), &Some(m.clone()), None)?;
+    if let Some(ms) = &s.mass {
+        let m = v.pos(sk("mass"), &Some(ms.clone()), None)?;
         let f = m / shape.mass_properties().mass;
         shape.scale_density(f);
+        let mp = shape.mass_properties();
+        if shape.validate().is_err() || !(mp.mass.is_normal() && mp.inertia.is_normal()) {
+            return Err(v.err(
+                sk("mass"),
+                Some(v.line(ms)),
+                format!(
+                    "invalid {} = {}: the density or the moment of inertia it gives is not a \
+                     normal number; use a physical mass",
+                    sk("mass"),
+                    crate::output::float_token(m)
+                ),
+            ));
+        }
     }
     let mass = shape.mass_properties().mass;
     let k = match (&s.period_s, &s.bearing_stiffness) {
@@ -671,7 +684,23 @@ fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> 
         (Some(_), None) => {
             let t = v.pos(sk("period_s"), &s.period_s, None)?;
             let w = 2.0 * std::f64::consts::PI / t;
-            mass * w * w / 4.0
+            let k = mass * w * w / 4.0;
+            if !(k.is_normal() && k > 0.0 && (k * 1e100).is_finite()) {
+                // the corner stiffness m (2π/T)²/4 over- or underflows (T = 1e300, 1e-300 s)
+                let line = s.period_s.as_ref().map(|x| v.line(x));
+                return Err(v.err(
+                    sk("period_s"),
+                    line,
+                    format!(
+                        "invalid {} = {}: with this mass it gives a bearing stiffness of {} N/m; \
+                         use a physical period",
+                        sk("period_s"),
+                        crate::output::float_token(t),
+                        crate::output::float_token(k)
+                    ),
+                ));
+            }
+            k
         }
         (None, Some(_)) => v.pos(sk("bearing_stiffness"), &s.bearing_stiffness, None)?,
         (None, None) => {
