@@ -91,18 +91,24 @@ pub struct BatchRow<O = BatchOutcome> {
     pub outcome: Result<O, String>,
 }
 
+/// `ground` with `record` as its only component along `Rot(α) ŷ` and its scale factors
+/// multiplied by `scale`.
+fn run_ground(ground: &GroundMotion, record: &Record, scale: Real) -> GroundMotion {
+    GroundMotion {
+        along_y: Some(record.clone()),
+        scale_y: ground.scale_y * scale,
+        along_x: None,
+        scale_x: ground.scale_x * scale,
+        incidence: ground.incidence,
+    }
+}
+
 /// The problem of one run: `base` with `record` as its only component along `Rot(α) ŷ`, scale
 /// factors multiplied by `scale` (the single run `pounding simulate --record R --scale S`).
 pub fn run_problem(base: &SimProblem, record: &Record, scale: Real) -> SimProblem {
     SimProblem {
         model: base.model.clone(),
-        ground: GroundMotion {
-            along_y: Some(record.clone()),
-            scale_y: base.ground.scale_y * scale,
-            along_x: None,
-            scale_x: base.ground.scale_x * scale,
-            incidence: base.ground.incidence,
-        },
+        ground: run_ground(&base.ground, record, scale),
         q0: base.q0,
         u0: base.u0,
     }
@@ -320,13 +326,7 @@ pub type BridgeBatchRow = BatchRow<BridgeBatchOutcome>;
 pub fn run_bridge_problem(base: &BridgeProblem, record: &Record, scale: Real) -> BridgeProblem {
     BridgeProblem {
         model: base.model.clone(),
-        ground: GroundMotion {
-            along_y: Some(record.clone()),
-            scale_y: base.ground.scale_y * scale,
-            along_x: None,
-            scale_x: base.ground.scale_x * scale,
-            incidence: base.ground.incidence,
-        },
+        ground: run_ground(&base.ground, record, scale),
         q0: base.q0.clone(),
         u0: base.u0.clone(),
     }

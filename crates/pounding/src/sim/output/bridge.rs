@@ -2,7 +2,6 @@
 //! `summary.json` with per-joint, per-abutment and per-segment entries in bridge order.
 
 use super::{DEG, describe_contact};
-use crate::ground_motion::Record;
 use crate::math::Real;
 use crate::output::{float_token, json_float};
 use crate::sim::bridge::{ABUTMENT_SIDES, BridgeSolution};
@@ -212,8 +211,6 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
     let s = &sol.summary;
     let m = &setup.problem.model;
     let e = &s.final_energy;
-    let gm = &setup.problem.ground;
-    let pga = |r: &Option<Record>, sc: f64| r.as_ref().map_or(0.0, |r| r.pga() * sc.abs());
     let (joints, abutments, segments) = bridge_arrays(setup, sol);
     let hyst: Real = s.segments.iter().map(|g| g.hysteretic_energy).sum();
     let compliant = m
@@ -243,22 +240,7 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
             "restrainer_work": json_float(s.restrainer_work),
             "max_input": json_float(s.max_input_energy),
         },
-        "status": format!("{:?}", sol.status),
-        "steps": sol.steps,
-        "dt_s": json_float(sol.dt),
-        "duration_s": json_float(sol.steps as Real * sol.dt),
-        "lcp_solves": sol.lcp_solves,
-        "lcp_enumeration_fallbacks": sol.lcp_enumeration_fallbacks,
-        "lcp_failures": sol.lcp_failures,
-        "ground_motion": {
-            "record_y": setup.records[0],
-            "record_x": setup.records[1],
-            "scale_y": json_float(gm.scale_y),
-            "scale_x": json_float(gm.scale_x),
-            "incidence_deg": json_float(gm.incidence * DEG),
-            "pga_y_mps2": json_float(pga(&gm.along_y, gm.scale_y)),
-            "pga_x_mps2": json_float(pga(&gm.along_x, gm.scale_x)),
-        },
+        "ground_motion": super::ground_json(&setup.records, &setup.problem.ground),
         "model": {
             "segments": m.segments.len(),
             "damping": format!("{:?}", m.damping_model),
@@ -266,6 +248,19 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
             "outer_seat_length_m": json_float(m.outer_seat_length),
         },
     });
+    super::add_run_keys(
+        &mut out,
+        &super::RunKeys {
+            status: sol.status,
+            steps: sol.steps,
+            dt: sol.dt,
+            lcp: [
+                sol.lcp_solves,
+                sol.lcp_enumeration_fallbacks,
+                sol.lcp_failures,
+            ],
+        },
+    );
     if compliant {
         out["newton_failures"] = json!(sol.newton_failures);
         out["closure_steps"] = json!(sol.closure_steps);

@@ -157,8 +157,6 @@ pub fn summary_json(setup: &SimSetup, sol: &SimSolution) -> serde_json::Value {
     let s = &sol.summary;
     let e = &s.final_energy;
     let m = &setup.problem.model;
-    let gm = &setup.problem.ground;
-    let pga = |r: &Option<Record>, sc: f64| r.as_ref().map_or(0.0, |r| r.pga() * sc.abs());
     let seat: serde_json::Map<String, serde_json::Value> = SEAT_ENDS
         .iter()
         .zip(s.peak_seat_by_end)
@@ -189,24 +187,9 @@ pub fn summary_json(setup: &SimSetup, sol: &SimSolution) -> serde_json::Value {
             "contact_dissipation": json_float(e.contact),
             "max_input": json_float(s.max_input_energy),
         },
-        "status": format!("{:?}", sol.status),
-        "steps": sol.steps,
-        "dt_s": json_float(sol.dt),
-        "duration_s": json_float(sol.steps as Real * sol.dt),
-        "lcp_solves": sol.lcp_solves,
-        "lcp_enumeration_fallbacks": sol.lcp_enumeration_fallbacks,
-        "lcp_failures": sol.lcp_failures,
         "natural_periods_s": sol.frequencies.map(|w| w.map(|w| json_float(2.0 * std::f64::consts::PI / w))),
         "rayleigh_a0_a1": sol.rayleigh.map(|(a, b)| [json_float(a), json_float(b)]),
-        "ground_motion": {
-            "record_y": setup.records[0],
-            "record_x": setup.records[1],
-            "scale_y": json_float(gm.scale_y),
-            "scale_x": json_float(gm.scale_x),
-            "incidence_deg": json_float(gm.incidence * DEG),
-            "pga_y_mps2": json_float(pga(&gm.along_y, gm.scale_y)),
-            "pga_x_mps2": json_float(pga(&gm.along_x, gm.scale_x)),
-        },
+        "ground_motion": ground_json(&setup.records, &setup.problem.ground),
         "model": {
             "mass_kg": m.masses().map(json_float),
             "gap_m": json_float(m.gap),
@@ -245,8 +228,62 @@ pub fn summary_json(setup: &SimSetup, sol: &SimSolution) -> serde_json::Value {
         );
         out["abutments"] = serde_json::Value::Object(ab);
     }
+    add_run_keys(&mut out, &RunKeys::of_pair(sol));
     add_compliance_summary(&mut out, m, sol);
     out
+}
+
+/// The `ground_motion` object of a `summary.json`: the records as written, scales, incidence and
+/// the scaled PGA of each component.
+pub(crate) fn ground_json(
+    records: &[String; 2],
+    gm: &crate::ground_motion::GroundMotion,
+) -> serde_json::Value {
+    let pga = |r: &Option<Record>, sc: f64| r.as_ref().map_or(0.0, |r| r.pga() * sc.abs());
+    json!({
+        "record_y": records[0],
+        "record_x": records[1],
+        "scale_y": json_float(gm.scale_y),
+        "scale_x": json_float(gm.scale_x),
+        "incidence_deg": json_float(gm.incidence * DEG),
+        "pga_y_mps2": json_float(pga(&gm.along_y, gm.scale_y)),
+        "pga_x_mps2": json_float(pga(&gm.along_x, gm.scale_x)),
+    })
+}
+
+/// The run's status and counters shared by the two-deck and bridge `summary.json`.
+pub(crate) struct RunKeys {
+    pub status: super::SimStatus,
+    pub steps: usize,
+    pub dt: Real,
+    pub lcp: [usize; 3],
+}
+
+impl RunKeys {
+    fn of_pair(sol: &SimSolution) -> Self {
+        RunKeys {
+            status: sol.status,
+            steps: sol.steps,
+            dt: sol.dt,
+            lcp: [
+                sol.lcp_solves,
+                sol.lcp_enumeration_fallbacks,
+                sol.lcp_failures,
+            ],
+        }
+    }
+}
+
+/// Adds `status`, `steps`, `dt_s`, `duration_s` and the LCP counters (the objects are key-sorted,
+/// so the bytes do not depend on the order of insertion).
+pub(crate) fn add_run_keys(v: &mut serde_json::Value, r: &RunKeys) {
+    v["status"] = json!(format!("{:?}", r.status));
+    v["steps"] = json!(r.steps);
+    v["dt_s"] = json_float(r.dt);
+    v["duration_s"] = json_float(r.steps as Real * r.dt);
+    v["lcp_solves"] = json!(r.lcp[0]);
+    v["lcp_enumeration_fallbacks"] = json!(r.lcp[1]);
+    v["lcp_failures"] = json!(r.lcp[2]);
 }
 
 /// `summary.json` as written: [`summary_json`] pretty-printed, with a final newline.
