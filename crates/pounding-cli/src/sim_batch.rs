@@ -16,7 +16,7 @@ use pounding::math::Real;
 use pounding::output::write_atomic;
 use pounding::shard::Shard;
 use pounding::sim::batch::{
-    BatchOutcome, BatchRecord, BatchRow, BridgeBatchOutcome, run_batch, run_bridge_batch,
+    BatchOutcome, BatchProblem, BatchRecord, BatchRow, BridgeBatchOutcome, run_batch,
 };
 use pounding::sim::output::{batch_csv, bridge_batch_csv};
 use pounding::sim::scenario::BridgeSetup;
@@ -167,22 +167,7 @@ pub fn run(
     t_start: Instant,
 ) -> Result<ExitCode> {
     let plan = plan(args, units)?;
-    let t_runs = Instant::now();
-    let rows = plan
-        .pool
-        .install(|| {
-            run_batch(
-                base,
-                settings,
-                &plan.records,
-                &plan.scales,
-                plan.shard,
-                &|n| plan.pb.inc(n as u64),
-            )
-        })
-        .map_err(|e| anyhow!("{e}"))?;
-    plan.pb.finish_and_clear();
-    let runs_secs = t_runs.elapsed().as_secs_f64();
+    let (rows, runs_secs) = execute(&plan, base, settings)?;
     let curves = curves(&plan.records, &rows, |m: &BatchOutcome| {
         let m = &m.summary;
         [
@@ -205,20 +190,20 @@ pub fn run(
     }))
 }
 
-/// Runs the batch of a bridge (after the scenario has been built for a batch and validated):
-/// the same runs, flags, files and exit codes as the two-deck batch; `batch.csv` has the
-/// bridge's columns ([`bridge_batch_csv`]) and `batch.png` shows the largest response over the
-/// joints and segments, with the smallest seat length of the bridge dashed.
-pub fn run_bridge(args: &Args, setup: &BridgeSetup, t_start: Instant) -> Result<ExitCode> {
-    let plan = plan(args, setup.units)?;
-    let base = &setup.problem;
+/// Runs the plan's batch of `base` on its pool with its progress bar: the rows and the seconds
+/// the runs took.
+fn execute<P: BatchProblem>(
+    plan: &Plan,
+    base: &P,
+    settings: &SimSettings,
+) -> Result<(Vec<BatchRow<P::Outcome>>, f64)> {
     let t_runs = Instant::now();
     let rows = plan
         .pool
         .install(|| {
-            run_bridge_batch(
+            run_batch(
                 base,
-                &setup.settings,
+                settings,
                 &plan.records,
                 &plan.scales,
                 plan.shard,
@@ -227,7 +212,17 @@ pub fn run_bridge(args: &Args, setup: &BridgeSetup, t_start: Instant) -> Result<
         })
         .map_err(|e| anyhow!("{e}"))?;
     plan.pb.finish_and_clear();
-    let runs_secs = t_runs.elapsed().as_secs_f64();
+    Ok((rows, t_runs.elapsed().as_secs_f64()))
+}
+
+/// Runs the batch of a bridge (after the scenario has been built for a batch and validated):
+/// the same runs, flags, files and exit codes as the two-deck batch; `batch.csv` has the
+/// bridge's columns ([`bridge_batch_csv`]) and `batch.png` shows the largest response over the
+/// joints and segments, with the smallest seat length of the bridge dashed.
+pub fn run_bridge(args: &Args, setup: &BridgeSetup, t_start: Instant) -> Result<ExitCode> {
+    let plan = plan(args, setup.units)?;
+    let base = &setup.problem;
+    let (rows, runs_secs) = execute(&plan, base, &setup.settings)?;
     let curves = curves(&plan.records, &rows, |o: &BridgeBatchOutcome| {
         let m = &o.summary;
         let max = |v: &mut dyn Iterator<Item = Real>| v.fold(Real::NAN, Real::max);
