@@ -172,6 +172,58 @@ fn bad_bridges_name_the_key_and_line_and_write_nothing() {
             "[abutment.end]\ngap = 0.04\nseat_length = -1.0",
             &["abutment.end.seat_length", "must be > 0"],
         ),
+        // restrainer cables and bearings at given points
+        (
+            "eps_n = 0.6",
+            "eps_n = 0.6\nrestrainer_k = 5e7\nrestrainer_offsets = [-2.0, 6.0]",
+            &[
+                "joint[0].restrainer_offsets",
+                "beside the joint",
+                "bridge.toml:8",
+            ],
+        ),
+        (
+            "eps_n = 0.6",
+            "eps_n = 0.6\nrestrainer_k = 5e7\nrestrainer_depth = 31.0",
+            &[
+                "joint[0].restrainer_depth",
+                "outside segment",
+                "bridge.toml:8",
+            ],
+        ),
+        (
+            "eps_n = 0.6",
+            "eps_n = 0.6\nrestrainer_offsets = [1.0]",
+            &["bridge.restrainer_offsets", "restrainer_k", "bridge.toml:7"],
+        ),
+        (
+            "eps_n = 0.6",
+            "eps_n = 0.6\nrestrainer_k = 5e7\nrestrainer_offsets = []",
+            &["bridge.restrainer_offsets", "one finite offset per cable"],
+        ),
+        (
+            "period_s = 0.5",
+            "period_s = 0.5\nbearing_points = [[0.0, 0.0], [31.0, 0.0]]",
+            &[
+                "segment[1].bearing_points",
+                "bearing 2 lies outside",
+                "bridge.toml:19",
+            ],
+        ),
+        (
+            "period_s = 0.5",
+            "period_s = 0.5\nbearing_points = []",
+            &[
+                "segment[1].bearing_points",
+                "at least one point",
+                "bridge.toml:19",
+            ],
+        ),
+        (
+            "period_s = 0.5",
+            "period_s = 0.5\nbearing_points = [[1.0]]",
+            &["bearing_points", "line 19", "length 2"],
+        ),
     ];
     for (i, (from, to, want)) in cases.iter().enumerate() {
         assert!(BRIDGE.contains(from), "case {i}: {from}");

@@ -78,8 +78,16 @@ pub struct BearingYield {
     pub b: Real,
 }
 
-/// A restrainer across a joint: a tension-only cable between the midpoints of the two faces
-/// ([`crate::element::restrainer::Restrainer`], the slack growing with yield).
+/// One restrainer cable across a joint: tension-only, between an anchor on each of the two
+/// segments ([`crate::element::restrainer::Restrainer`], the slack growing with yield).
+///
+/// **Anchors \[C\]**: on each segment at the point `M + o t + d ν`, with `M` the midpoint of the
+/// segment's face at the joint, `t` the unit vector along that face pointing to the **left** of a
+/// walk from the start of the bridge to its end, `ν` the face's inward normal (into the segment),
+/// `o` = [`RestrainerSpec::offset`] and `d` = [`RestrainerSpec::depth`]. The default
+/// `o = d = 0` ties the two face midpoints. Both anchors must lie on their segments (`|o|` at most
+/// half the face length, the point inside the plan outline). A joint may carry several cables
+/// (e.g. one on each side of the axis), each with its own parameters.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RestrainerSpec {
     /// Stiffness `k > 0` \[N/m\].
@@ -88,6 +96,24 @@ pub struct RestrainerSpec {
     pub slack: Real,
     /// Yield force \[N\] (`None`: elastic).
     pub fy: Option<Real>,
+    /// Position `o` of the cable across the joint, along the faces from their midpoints,
+    /// positive to the left walking from the start to the end \[m\].
+    pub offset: Real,
+    /// Depth `d ≥ 0` of both anchors inside their segments from the joint faces \[m\].
+    pub depth: Real,
+}
+
+impl RestrainerSpec {
+    /// A cable between the two face midpoints (`offset = depth = 0`).
+    pub fn at_midpoints(k: Real, slack: Real, fy: Option<Real>) -> Self {
+        RestrainerSpec {
+            k,
+            slack,
+            fy,
+            offset: 0.0,
+            depth: 0.0,
+        }
+    }
 }
 
 impl Segment {
@@ -122,6 +148,22 @@ impl Segment {
             m(f.corners[0]),
             m(f.corners[1]),
         ]
+    }
+
+    /// [`BridgeModel::segment_point`] of this segment; `first`: it is segment 1 (whose start
+    /// face is its shape's far face; later segments start with their shape's joint face).
+    pub fn frame_point(&self, first: bool, along: Real, left: Real) -> Vector {
+        let (start, end) = if first {
+            (DeckEnd::Far, DeckEnd::Joint)
+        } else {
+            (DeckEnd::Joint, DeckEnd::Far)
+        };
+        let f = self.body_face(start);
+        let axis = match self.shape.curved() {
+            Some(_) => f.inward,
+            None => (self.body_face(end).mid - f.mid).normalize(),
+        };
+        f.mid + axis * along + left_of(axis) * left
     }
 
     fn mirror(&self, p: Vector) -> Vector {
@@ -162,7 +204,7 @@ fn face(c: [Vector; 2], inward: Vector) -> EndFace {
 }
 
 /// A joint between two segments.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Joint {
     /// Reference opening `g ≥ 0` \[m\].
     pub gap: Real,
@@ -174,8 +216,8 @@ pub struct Joint {
     pub seat_length: Real,
     /// Contact law.
     pub contact: JointContact,
-    /// A restrainer across the joint, if any.
-    pub restrainer: Option<RestrainerSpec>,
+    /// Restrainer cables across the joint (none: no restrainer).
+    pub restrainers: Vec<RestrainerSpec>,
 }
 
 /// An abutment at the start or the end of the bridge: the ground, beyond the outer face of the
@@ -272,6 +314,7 @@ impl BridgeModel {
         )?;
         self.contact_kind()?;
         self.check_overlaps()?;
+        self.check_points()?;
         Ok(())
     }
 
@@ -329,7 +372,19 @@ impl BridgeModel {
     /// Gap, friction, restitution, seat, restrainer and matching face widths of every joint.
     fn validate_joints(&self) -> Result<(), SimError> {
         for (k, j) in self.joints.iter().enumerate() {
-            if let Some(r) = &j.restrainer {
+            for r in &j.restrainers {
+                check(
+                    joint_key(k, "restrainer_offsets"),
+                    r.offset,
+                    true,
+                    "must be finite",
+                )?;
+                check(
+                    joint_key(k, "restrainer_depth"),
+                    r.depth,
+                    r.depth >= 0.0,
+                    "must be finite and >= 0",
+                )?;
                 crate::element::restrainer::Restrainer::new(
                     r.k,
                     r.slack,
@@ -659,7 +714,7 @@ impl BridgeModel {
                 restitution: model.restitution,
                 seat_length: model.seat_length,
                 contact: model.contact,
-                restrainer: None,
+                restrainers: Vec::new(),
             }],
             abutments: [abut(model.abutments[0]), abut(model.abutments[1])],
             outer_seat_length: model.seat_length,
@@ -694,17 +749,18 @@ impl BridgeModel {
             }
         }
         for (k, j) in self.joints.iter().enumerate() {
-            let Some(r) = j.restrainer else { continue };
-            let law =
-                Restrainer::new(r.k, r.slack, r.fy, SlackGrowth::Permanent).expect("validated");
-            let (pa, pb) = (bodies[k].end.mid, bodies[k + 1].start.mid);
-            el.cables.push(super::elements::Cable {
-                joint: k,
-                a: (k, pa),
-                b: (k + 1, pb),
-                length: (pb - pa).norm(),
-                element: RestrainerElement::new(law),
-            });
+            for r in &j.restrainers {
+                let law =
+                    Restrainer::new(r.k, r.slack, r.fy, SlackGrowth::Permanent).expect("validated");
+                let [pa, pb] = restrainer_anchors(bodies, k, r);
+                el.cables.push(super::elements::Cable {
+                    joint: k,
+                    a: (k, pa),
+                    b: (k + 1, pb),
+                    length: (pb - pa).norm(),
+                    element: RestrainerElement::new(law),
+                });
+            }
         }
         el
     }
@@ -712,29 +768,50 @@ impl BridgeModel {
 
 impl BridgeModel {
     /// The step must resolve every restrainer: they act over a step as a predictor–corrector
-    /// (explicit) force, stable for `ω h` well below 2 with `ω = √(k (1/m_a + 1/m_b))` the
-    /// frequency of the cable between its two segments; `h ≤ 1/ω` is required (errors name `dt`
-    /// and the joint's `restrainer_k`).
+    /// (explicit) force, stable for `ω h` well below 2. For the cables of joint `k` the bound
+    /// `ω² ≤ Σ_c k_c w_cᵀ M⁻¹ w_c` is used, `w_c` the generalised direction of cable `c` on its
+    /// two segments (`(n, r_a × n)` and `−(n, r_b × n)`, `n` along the cable, `r` the arms
+    /// from the centroids): for one cable between the face midpoints of straight segments it is
+    /// `k (1/m_a + 1/m_b)`. `h ≤ 1/ω` is required (errors name `dt` and the joint's
+    /// `restrainer_k`).
     pub fn check_time_step(&self, dt: Real) -> Result<(), SimError> {
-        let masses: Vec<Real> = self
-            .segments
-            .iter()
-            .map(|s| s.shape.mass_properties().mass)
-            .collect();
+        let bodies = self.layout();
         for (k, j) in self.joints.iter().enumerate() {
-            let Some(r) = j.restrainer else { continue };
-            let w = (r.k * (1.0 / masses[k] + 1.0 / masses[k + 1])).sqrt();
+            if j.restrainers.is_empty() {
+                continue;
+            }
+            let (ba, bb) = (&bodies[k], &bodies[k + 1]);
+            let w2: Real = j
+                .restrainers
+                .iter()
+                .map(|r| {
+                    let [pa, pb] = restrainer_anchors(&bodies, k, r);
+                    let n = (pb - pa)
+                        .try_normalize(0.0)
+                        .unwrap_or(-bodies[k].end.inward);
+                    let (ta, tb) = (
+                        cross(&(pa - ba.centroid), &n),
+                        cross(&(pb - bb.centroid), &n),
+                    );
+                    r.k * (1.0 / ba.mass.mass
+                        + 1.0 / bb.mass.mass
+                        + ta * ta / ba.mass.inertia
+                        + tb * tb / bb.mass.inertia)
+                })
+                .sum();
+            let w = w2.sqrt();
             if dt * w > 1.0 {
+                let total: Real = j.restrainers.iter().map(|r| r.k).sum();
                 return Err(SimError::invalid(
                     "dt",
                     dt,
                     &format!(
-                        "the restrainer of {} (k = {} N/m between segments of {} and {} kg, \
-                         frequency {} rad/s) needs dt <= {} s",
+                        "the restrainer of {} (k = {} N/m in total between segments of {} and {} \
+                         kg, frequency {} rad/s) needs dt <= {} s",
                         joint_key(k, "restrainer_k"),
-                        crate::output::float_token(r.k),
-                        crate::output::float_token(masses[k]),
-                        crate::output::float_token(masses[k + 1]),
+                        crate::output::float_token(total),
+                        crate::output::float_token(ba.mass.mass),
+                        crate::output::float_token(bb.mass.mass),
                         crate::output::float_token(w),
                         crate::output::float_token(1.0 / w)
                     ),
@@ -743,6 +820,110 @@ impl BridgeModel {
         }
         Ok(())
     }
+
+    /// A body-frame point of segment `i` from its **segment-frame** coordinates \[C\]: origin at
+    /// the midpoint of the segment's start face (the face toward the start of the bridge),
+    /// `along` the segment's axis at that face (straight and skewed segments: the line through
+    /// the two face midpoints, parallel to the sides; curved: the tangent of the centreline, the
+    /// start face's inward normal), `left` perpendicular to it, to the left of a walk from the
+    /// start to the end \[m\]. For a straight segment `(0, ±W/2)` and `(L, ±W/2)` are its
+    /// corners; a skewed one has its sides at `left = ±W/2`. The result goes into
+    /// [`Bearing::point`].
+    pub fn segment_point(&self, i: usize, along: Real, left: Real) -> Vector {
+        self.segments[i].frame_point(i == 0, along, left)
+    }
+
+    /// Every bearing and restrainer anchor must lie on its segment (inside or on its plan
+    /// outline, with 64 chords per arc): errors name `segment[i].bearing_points`,
+    /// `joint[k].restrainer_offsets` or `joint[k].restrainer_depth`.
+    fn check_points(&self) -> Result<(), SimError> {
+        let outlines = self.outlines(64);
+        let bodies = self.layout();
+        let points = self.bearing_points();
+        for (i, pts) in points.iter().enumerate() {
+            if let Some(b) = pts.iter().position(|p| !on_polygon(*p, &outlines[i])) {
+                return Err(SimError::InvalidArgument {
+                    name: seg_key(i, "bearing_points"),
+                    reason: format!("bearing {} lies outside segment[{i}]", b + 1),
+                });
+            }
+        }
+        for (k, j) in self.joints.iter().enumerate() {
+            for (c, r) in j.restrainers.iter().enumerate() {
+                let half = bodies[k].end.half.min(bodies[k + 1].start.half);
+                if r.offset.abs() > half * (1.0 + 1e-12) {
+                    return Err(SimError::invalid(
+                        joint_key(k, "restrainer_offsets"),
+                        r.offset,
+                        &format!(
+                            "cable {} lies beside the joint: |offset| must be at most half the \
+                             face length, {} m",
+                            c + 1,
+                            crate::output::float_token(half)
+                        ),
+                    ));
+                }
+                let [pa, pb] = restrainer_anchors(&bodies, k, r);
+                for (p, seg) in [(pa, k), (pb, k + 1)] {
+                    if !on_polygon(p, &outlines[seg]) {
+                        return Err(SimError::invalid(
+                            joint_key(k, "restrainer_depth"),
+                            r.depth,
+                            &format!(
+                                "the anchor of cable {} lies outside segment[{seg}]: the depth \
+                                 must stay within the segment",
+                                c + 1
+                            ),
+                        ));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The unit vector to the left of the direction `d` (turned by +90°).
+fn left_of(d: Vector) -> Vector {
+    Vector::new(-d.y, d.x)
+}
+
+/// The two anchors (global, reference pose) of cable `r` across joint `k` ([`RestrainerSpec`]).
+fn restrainer_anchors(bodies: &[SegmentBody], k: usize, r: &RestrainerSpec) -> [Vector; 2] {
+    // walking direction at the joint: into segment k + 1 through its start face
+    let left = left_of(bodies[k + 1].start.inward);
+    [bodies[k].end, bodies[k + 1].start].map(|f| {
+        let t = if f.dir.dot(&left) >= 0.0 {
+            f.dir
+        } else {
+            -f.dir
+        };
+        f.mid + t * r.offset + f.inward * r.depth
+    })
+}
+
+/// `p` lies inside the closed polyline `poly` or within round-off of its boundary.
+fn on_polygon(p: Vector, poly: &[Vector]) -> bool {
+    let scale = poly.iter().fold(1.0, |m: Real, q| m.max(q.norm()));
+    let near = poly.windows(2).any(|e| {
+        let (a, b) = (e[0], e[1]);
+        let ab = b - a;
+        let t = ((p - a).dot(&ab) / ab.norm_squared().max(Real::MIN_POSITIVE)).clamp(0.0, 1.0);
+        (a + ab * t - p).norm() <= 1e-9 * scale
+    });
+    near || point_in_polygon(p, poly)
+}
+
+/// Even–odd rule for a closed polyline.
+fn point_in_polygon(p: Vector, poly: &[Vector]) -> bool {
+    let mut c = false;
+    for e in poly.windows(2) {
+        let (u, v) = (e[0], e[1]);
+        if (u.y > p.y) != (v.y > p.y) && p.x < u.x + (p.y - u.y) / (v.y - u.y) * (v.x - u.x) {
+            c = !c;
+        }
+    }
+    c
 }
 
 impl BridgeModel {
@@ -835,17 +1016,7 @@ fn polygons_overlap(a: &[Vector], b: &[Vector]) -> bool {
             }
         }
     }
-    let inside = |p: Vector, poly: &[Vector]| {
-        let mut c = false;
-        for e in poly.windows(2) {
-            let (u, v) = (e[0], e[1]);
-            if (u.y > p.y) != (v.y > p.y) && p.x < u.x + (p.y - u.y) / (v.y - u.y) * (v.x - u.x) {
-                c = !c;
-            }
-        }
-        c
-    };
-    inside(a[0], b) || inside(b[0], a)
+    point_in_polygon(a[0], b) || point_in_polygon(b[0], a)
 }
 
 /// Maps a point of segment `s`'s (mirrored) body frame to its global reference position, given

@@ -34,6 +34,7 @@ mod sim_bridge;
 mod sim_bridge_batch;
 mod sim_bridge_examples;
 mod sim_bridge_plan;
+mod sim_bridge_points;
 mod sim_bridge_reference;
 mod sim_compliance;
 mod sim_friction;

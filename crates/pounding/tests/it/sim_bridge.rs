@@ -23,7 +23,7 @@ fn joint(gap: f64, eps: f64) -> Joint {
         restitution: eps,
         seat_length: 0.4,
         contact: JointContact::Rigid,
-        restrainer: None,
+        restrainers: Vec::new(),
     }
 }
 

@@ -12,11 +12,16 @@
 //! shape = "straight"        # "straight" (L), "skew" (L, skew_deg) or "curved" (R, beta_deg)
 //! L = 30.0
 //! mass = 1.0e6              # optional, else density x volume
-//! period_s = 1.2            # four corner bearings with k = m (2 pi / T)^2 / 4 each, or
-//! # bearing_stiffness = 1e7 # the stiffness of each corner bearing [N/m]
+//! period_s = 1.2            # bearings with k = m (2 pi / T)^2 / n each (n bearings), or
+//! # bearing_stiffness = 1e7 # the stiffness of each bearing [N/m]
+//! # bearing_points = [[0.0, -5.0], [30.0, 5.0]]  # [along, left] from the start-face midpoint
+//! #                         # [m] (BridgeModel::segment_point); default: the four corners
 //!
 //! [[joint]]                 # joint 1, between segments 1 and 2 (none given: all defaults)
 //! gap = 0.02
+//! restrainer_k = 5e7        # restrainer cables (also [bridge] defaults): k [N/m] per cable,
+//! restrainer_offsets = [-3.0, 3.0]  # one cable per offset across the joint [m] (default [0]),
+//! restrainer_depth = 0.5    # anchors inside each segment [m] (RestrainerSpec)
 //!
 //! [abutment.start]          # optional; also [abutment.end]
 //! gap = 0.04
@@ -77,6 +82,8 @@ struct BridgeSec {
     restrainer_k: Sp<f64>,
     restrainer_slack: Sp<f64>,
     restrainer_fy: Sp<f64>,
+    restrainer_offsets: Sp<Vec<f64>>,
+    restrainer_depth: Sp<f64>,
 }
 
 #[derive(Deserialize, Default, Clone, Debug)]
@@ -95,6 +102,7 @@ struct SegmentSec {
     mass: Sp<f64>,
     period_s: Sp<f64>,
     bearing_stiffness: Sp<f64>,
+    bearing_points: Sp<Vec<[f64; 2]>>,
     bearing: Sp<String>,
     fy: Sp<f64>,
     b: Sp<f64>,
@@ -110,6 +118,8 @@ struct JointSec {
     restrainer_k: Sp<f64>,
     restrainer_slack: Sp<f64>,
     restrainer_fy: Sp<f64>,
+    restrainer_offsets: Sp<Vec<f64>>,
+    restrainer_depth: Sp<f64>,
 }
 
 #[derive(Deserialize, Default, Clone, Debug)]
@@ -366,14 +376,14 @@ fn sites(
         let friction = v.nonneg(jk("mu"), &j.mu, Some(d.mu))?;
         let restitution = v.unit(jk("eps_n"), &j.eps_n, Some(d.eps_n))?;
         let seat_length = v.pos(jk("seat_length"), &j.seat_length, Some(d.seat_length))?;
-        let restrainer = restrainer(v, k, j, &raw.bridge)?;
+        let restrainers = restrainer(v, k, j, &raw.bridge)?;
         joints.push(Joint {
             gap,
             friction,
             restitution,
             seat_length,
             contact: contact_for(restitution, [masses[k], masses[k + 1]])?,
-            restrainer,
+            restrainers,
         });
     }
     let mut abutments = [None, None];
@@ -413,7 +423,12 @@ fn model_error(v: &Val, raw: &BridgeRaw, e: crate::sim::SimError) -> ScenarioErr
         rest.split(']').next()?.parse().ok()
     };
     let line = if let Some(i) = index("segment[") {
-        raw.segment.get(i).map(|t| v.line(t))
+        let seg = raw.segment.get(i);
+        let own = seg.and_then(|t| match name.rsplit('.').next() {
+            Some("bearing_points") => t.get_ref().bearing_points.as_ref().map(|x| v.line(x)),
+            _ => None,
+        });
+        own.or(seg.map(|t| v.line(t)))
     } else if let Some(k) = index("joint[") {
         // faces of different widths: the `width` of the segment after the joint (or before it),
         // else that segment's table; other joint keys: the joint's table
@@ -427,9 +442,19 @@ fn model_error(v: &Val, raw: &BridgeRaw, e: crate::sim::SimError) -> ScenarioErr
                 .or_else(|| width(k))
                 .or_else(|| raw.segment.get(k + 1).map(|t| v.line(t)))
         } else {
-            raw.joint
-                .get(k)
-                .map(|t| v.line(t))
+            let own = |j: Option<&JointSec>, b: &BridgeSec| match name.rsplit('.').next() {
+                Some("restrainer_offsets") => j
+                    .and_then(|j| j.restrainer_offsets.as_ref())
+                    .or(b.restrainer_offsets.as_ref())
+                    .map(|x| v.line(x)),
+                Some("restrainer_depth") => j
+                    .and_then(|j| j.restrainer_depth.as_ref())
+                    .or(b.restrainer_depth.as_ref())
+                    .map(|x| v.line(x)),
+                _ => None,
+            };
+            own(raw.joint.get(k).map(|j| j.get_ref()), &raw.bridge)
+                .or(raw.joint.get(k).map(|t| v.line(t)))
                 .or_else(|| raw.segment.get(k + 1).map(|t| v.line(t)))
         }
     } else {
@@ -445,7 +470,7 @@ fn restrainer(
     k: usize,
     j: &JointSec,
     b: &BridgeSec,
-) -> Result<Option<RestrainerSpec>, ScenarioError> {
+) -> Result<Vec<RestrainerSpec>, ScenarioError> {
     let pick = |own: &Sp<f64>, def: &Sp<f64>, key: &str| match (own, def) {
         (Some(x), _) => (Some(x.clone()), format!("joint[{k}].{key}")),
         (None, Some(x)) => (Some(x.clone()), format!("bridge.{key}")),
@@ -454,16 +479,26 @@ fn restrainer(
     let (rk, kk) = pick(&j.restrainer_k, &b.restrainer_k, "restrainer_k");
     let (rs, ks) = pick(&j.restrainer_slack, &b.restrainer_slack, "restrainer_slack");
     let (rf, kf) = pick(&j.restrainer_fy, &b.restrainer_fy, "restrainer_fy");
+    let (rd, kd) = pick(&j.restrainer_depth, &b.restrainer_depth, "restrainer_depth");
+    let (ro, ko) = match (&j.restrainer_offsets, &b.restrainer_offsets) {
+        (Some(x), _) => (Some(x), format!("joint[{k}].restrainer_offsets")),
+        (None, Some(x)) => (Some(x), "bridge.restrainer_offsets".to_string()),
+        (None, None) => (None, String::new()),
+    };
     if rk.is_none() {
-        if let Some(x) = rs.as_ref().or(rf.as_ref()) {
-            let key = if rs.is_some() { ks } else { kf };
+        let others = [(&rs, ks), (&rf, kf), (&rd, kd)];
+        let lone = others
+            .into_iter()
+            .find_map(|(x, key)| x.as_ref().map(|x| (v.line(x), key)))
+            .or(ro.map(|x| (v.line(x), ko.clone())));
+        if let Some((line, key)) = lone {
             return Err(v.err(
                 key.clone(),
-                Some(v.line(x)),
+                Some(line),
                 format!("{key} needs a restrainer: give its stiffness restrainer_k too"),
             ));
         }
-        return Ok(None);
+        return Ok(Vec::new());
     }
     let k_ = v.pos(kk, &rk, None)?;
     let slack = v.nonneg(ks, &rs, Some(0.0))?;
@@ -471,7 +506,34 @@ fn restrainer(
         Some(_) => Some(v.pos(kf, &rf, None)?),
         None => None,
     };
-    Ok(Some(RestrainerSpec { k: k_, slack, fy }))
+    let depth = v.nonneg(kd, &rd, Some(0.0))?;
+    let offsets = match ro {
+        None => vec![0.0],
+        Some(x) => {
+            let o = x.get_ref();
+            if o.is_empty() || o.iter().any(|x| !x.is_finite()) {
+                return Err(v.err(
+                    ko.clone(),
+                    Some(v.line(x)),
+                    format!(
+                        "invalid {ko}: give one finite offset per cable [m] (positive to the \
+                         left walking from the start to the end), e.g. [-3.0, 3.0]"
+                    ),
+                ));
+            }
+            o.clone()
+        }
+    };
+    Ok(offsets
+        .into_iter()
+        .map(|offset| RestrainerSpec {
+            k: k_,
+            slack,
+            fy,
+            offset,
+            depth,
+        })
+        .collect())
 }
 
 /// The shape of `[[segment]]` `i` and whether its body frame is mirrored (a curved segment
@@ -669,6 +731,17 @@ fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> 
         }
     }
     let mass = shape.mass_properties().mass;
+    let n_bearings = match &s.bearing_points {
+        Some(p) if p.get_ref().is_empty() => {
+            return Err(v.err(
+                sk("bearing_points"),
+                Some(v.line(p)),
+                format!("{} needs at least one point", sk("bearing_points")),
+            ));
+        }
+        Some(p) => p.get_ref().len(),
+        None => 4,
+    };
     let k = match (&s.period_s, &s.bearing_stiffness) {
         (Some(_), Some(b)) => {
             return Err(v.err(
@@ -684,9 +757,9 @@ fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> 
         (Some(_), None) => {
             let t = v.pos(sk("period_s"), &s.period_s, None)?;
             let w = 2.0 * std::f64::consts::PI / t;
-            let k = mass * w * w / 4.0;
+            let k = mass * w * w / n_bearings as f64;
             if !(k.is_normal() && k > 0.0 && (k * 1e100).is_finite()) {
-                // the corner stiffness m (2π/T)²/4 over- or underflows (T = 1e300, 1e-300 s)
+                // the bearing stiffness m (2π/T)²/n over- or underflows (T = 1e300, 1e-300 s)
                 let line = s.period_s.as_ref().map(|x| v.line(x));
                 return Err(v.err(
                     sk("period_s"),
@@ -704,10 +777,30 @@ fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> 
         }
         (None, Some(_)) => v.pos(sk("bearing_stiffness"), &s.bearing_stiffness, None)?,
         (None, None) => {
-            return Err(v.err(sk("period_s"), None, format!("segment[{i}] needs its bearings: give {} (translational period on four corner bearings) or {} (per corner bearing, N/m)", sk("period_s"), sk("bearing_stiffness"))));
+            return Err(v.err(sk("period_s"), None, format!("segment[{i}] needs its bearings: give {} (translational period of its bearings) or {} (per bearing, N/m)", sk("period_s"), sk("bearing_stiffness"))));
         }
     };
     let mut seg = Segment::with_corner_bearings(shape, mirrored, k);
+    if let Some(p) = &s.bearing_points {
+        let pts = p.get_ref();
+        if let Some(bad) = pts
+            .iter()
+            .position(|q| !(q[0].is_finite() && q[1].is_finite()))
+        {
+            return Err(v.err(
+                sk("bearing_points"),
+                Some(v.line(p)),
+                format!("{}: point {} is not finite", sk("bearing_points"), bad + 1),
+            ));
+        }
+        seg.bearings = pts
+            .iter()
+            .map(|q| crate::sim::Bearing {
+                point: seg.frame_point(i == 0, q[0], q[1]),
+                stiffness: k,
+            })
+            .collect();
+    }
     seg.bearing_yield = bearing_yield(v, i, s)?;
     Ok(seg)
 }

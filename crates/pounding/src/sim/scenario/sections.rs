@@ -90,6 +90,9 @@ history_every = 10   # write every n-th step to history.csv (peaks use every ste
 # outer_seat_length = 0.4   # seat of an outer end without an abutment [m]
 # restrainer_k = 5.0e7      # optional restrainer at every joint [N/m]; restrainer_slack [m],
 # restrainer_slack = 0.03   #   restrainer_fy [N] (yield; none by default)
+# restrainer_offsets = [0.0] # one cable per entry: its place across the joint from the
+#                           #   face midpoints [m], positive to the left walking start -> end
+# restrainer_depth = 0.0    # anchors this deep inside each segment [m] (per joint: [[joint]])
 #
 # [[segment]]               # one table per segment, from the start
 # shape = "straight"        # "straight" (L), "skew" (L, skew_deg) or "curved" (R, beta_deg,
@@ -97,6 +100,9 @@ history_every = 10   # write every n-th step to history.csv (peaks use every ste
 # mass = 1.0e6              # optional (else width 10, thickness 0.5, density 2500)
 # period_s = 1.2            # four corner bearings of this translational period, or
 #                           # bearing_stiffness = ... per corner bearing [N/m]
+# bearing_points = [[0.0, -5.0], [0.0, 5.0], [30.0, -5.0], [30.0, 5.0]]  # optional bearing
+#                           #   points [along, left] from the start-face midpoint [m] (default:
+#                           #   the four corners; period_s spreads m (2 pi / T)^2 over them)
 # bearing = "bilinear"      # optional yielding bearings: fy [N] (all four together), b in [0, 1)
 # fy = 588399.0
 # b = 0.1
