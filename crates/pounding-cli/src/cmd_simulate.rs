@@ -13,7 +13,7 @@ use pounding::output::{float_token, write_atomic};
 use pounding::sim::output::{
     SIM_OUTPUTS, describe_contact, history_csv, impacts_csv, summary_json_text,
 };
-use pounding::sim::scenario::{DEFAULT_SCENARIO_TOML, Scenario, SimSetup};
+use pounding::sim::scenario::{DEFAULT_SCENARIO_TOML, ParamKey, Scenario, Section, SimSetup};
 use pounding::sim::{SimSolution, simulate};
 use serde_json::json;
 use std::path::{Path, PathBuf};
@@ -41,6 +41,16 @@ pub struct Args {
     /// Multiply both ground-motion scale factors by S.
     #[arg(long, value_name = "S")]
     pub scale: Option<f64>,
+    /// Replace the scenario's time step `[time] dt` (seconds).
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true)]
+    pub dt: Option<f64>,
+    /// Replace the scenario's `[time] duration` (seconds; default: the record's length).
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true)]
+    pub duration: Option<f64>,
+    /// Replace the contact law (`[contact] law`; at every joint and abutment of a bridge):
+    /// `rigid` or a compliance law (`pounding compare --help` lists them).
+    #[arg(long, value_name = "LAW")]
+    pub law: Option<String>,
     /// Output directory.
     #[arg(long, value_name = "DIR", default_value = "out/simulate")]
     pub out: PathBuf,
@@ -78,19 +88,45 @@ pub(crate) fn load_scenario(path: Option<&Path>) -> Result<Scenario> {
     })
 }
 
-/// The run described by the scenario and the flags, validated.
-fn build(args: &Args) -> Result<SimSetup> {
-    let mut sc = load_scenario(args.scenario.as_deref())?;
+/// The scenario with the command line's replacements (`--record`, `--scale`, `--dt`,
+/// `--duration`, `--law`; `--records`: a batch).
+pub(crate) fn with_flags(mut sc: Scenario, args: &Args) -> Scenario {
     if let Some(p) = &args.record {
         sc = sc.with_record(p, None);
     }
     if let Some(s) = args.scale {
         sc = sc.with_scale(s);
     }
+    if let Some(dt) = args.dt {
+        sc = sc.with_dt(dt);
+    }
+    if let Some(d) = args.duration {
+        sc = sc.with_duration(d);
+    }
+    if let Some(l) = &args.law {
+        // the file's [contact] keys of its own law stay accepted (not refused as unused)
+        let file_law = sc.law().to_string();
+        if file_law != *l && pounding::contact_law::registry::law_names().contains(&l.as_str()) {
+            eprintln!(
+                "note: --law {l} replaces the scenario's contact law {file_law:?}; its [contact] \
+                 keys that {l} does not read are not used"
+            );
+        }
+        sc = sc
+            .with_compared_laws(&[file_law, l.clone()])
+            .with_law(l)
+            .with_flag(ParamKey::new(Section::Contact, "law"), "--law");
+    }
     if !args.records.is_empty() {
         sc = sc.for_batch();
     }
-    Ok(sc.build()?)
+    sc
+}
+
+/// The run described by the scenario and the flags, validated.
+fn build(args: &Args) -> Result<SimSetup> {
+    let sc = load_scenario(args.scenario.as_deref())?;
+    Ok(with_flags(sc, args).build()?)
 }
 
 /// Runs `pounding simulate`.

@@ -16,18 +16,11 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 /// Runs a bridge scenario (single run).
-pub fn run(args: &Args, mut sc: Scenario, t_start: Instant) -> Result<ExitCode> {
+pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
+    let setup = super::with_flags(sc, args).build_bridge()?;
     if !args.records.is_empty() {
-        let setup = sc.for_batch().build_bridge()?;
         return super::sim_batch::run_bridge(args, &setup, t_start);
     }
-    if let Some(p) = &args.record {
-        sc = sc.with_record(p, None);
-    }
-    if let Some(s) = args.scale {
-        sc = sc.with_scale(s);
-    }
-    let setup = sc.build_bridge()?;
     pounding::output::check_output_dir_free(&args.out)?;
     let t_sim = Instant::now();
     let sol = setup.run().map_err(|e| anyhow!("{e}"))?;

@@ -70,5 +70,6 @@ mod lcp;
 mod physics_check;
 mod shapes;
 mod simulate;
+mod simulate_flags;
 mod study;
 mod study_shapes;

@@ -21,7 +21,7 @@ use crate::sim::{
 const fn decks(key: &'static str) -> ParamKey {
     ParamKey::new(Section::Decks, key)
 }
-const fn time(key: &'static str) -> ParamKey {
+pub(super) const fn time(key: &'static str) -> ParamKey {
     ParamKey::new(Section::Time, key)
 }
 const fn ground(key: &'static str) -> ParamKey {

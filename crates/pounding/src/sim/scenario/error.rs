@@ -152,6 +152,8 @@ pub struct KeyRef {
     pub origin: String,
     /// 1-based line that sets the key, `None` when the file does not set it (the default applies).
     pub line: Option<usize>,
+    /// The command-line flag that overrides the key (e.g. `--dt`), if any.
+    pub flag: Option<&'static str>,
 }
 
 impl KeyRef {
@@ -161,6 +163,7 @@ impl KeyRef {
             key,
             origin: origin.to_string(),
             line: line_of_key(text, key.section.name(), key.key),
+            flag: None,
         }
     }
 }
@@ -168,6 +171,9 @@ impl KeyRef {
 impl fmt::Display for KeyRef {
     /// "`[section] key` (FILE:LINE)" or "`[section] key` (not set in FILE; default)".
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if let Some(flag) = self.flag {
+            return write!(f, "{flag} (command line, in place of {})", self.key);
+        }
         match self.line {
             Some(l) => write!(f, "{} ({}:{l})", self.key, self.origin),
             None => write!(f, "{} (not set in {}; default)", self.key, self.origin),

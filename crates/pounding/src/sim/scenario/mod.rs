@@ -42,12 +42,16 @@ struct Src {
     dir: PathBuf,
     /// The built-in default scenario (messages name its values as defaults, not by line).
     builtin: bool,
+    /// Keys replaced on the command line, with their flags (`--dt`, `--duration`).
+    flags: Vec<(ParamKey, &'static str)>,
 }
 
 impl Src {
-    /// Where `key` is set (or that it is not).
+    /// Where `key` is set (or that it is not), or the flag that replaces it.
     fn at(&self, key: ParamKey) -> KeyRef {
-        KeyRef::locate(key, &self.origin, &self.text)
+        let mut r = KeyRef::locate(key, &self.origin, &self.text);
+        r.flag = self.flags.iter().find(|(k, _)| *k == key).map(|(_, f)| *f);
+        r
     }
     /// Whether the file sets `key`.
     fn is_set(&self, key: ParamKey) -> bool {
@@ -144,6 +148,7 @@ impl Scenario {
                 text: text.to_string(),
                 dir: PathBuf::from("."),
                 builtin: false,
+                flags: Vec::new(),
             },
             raw,
             law: None,
@@ -221,6 +226,26 @@ impl Scenario {
     /// finite).
     pub fn with_scale(mut self, s: Real) -> Self {
         self.scale = Some(s);
+        self
+    }
+
+    /// Replaces `[time] dt` by `dt` (`pounding simulate --dt`); errors about it then name the
+    /// flag. Checked by [`Scenario::build`] / [`Scenario::build_bridge`] like the key.
+    pub fn with_dt(mut self, dt: Real) -> Self {
+        self.raw.time.0.dt = dt;
+        self.with_flag(build::time("dt"), "--dt")
+    }
+
+    /// Replaces `[time] duration` by `duration` \[s\] (`pounding simulate --duration`).
+    pub fn with_duration(mut self, duration: Real) -> Self {
+        self.raw.time.0.duration = Some(duration);
+        self.with_flag(build::time("duration"), "--duration")
+    }
+
+    /// Errors about `key` name the command-line `flag` that replaced it (e.g. after
+    /// [`Scenario::with_law`] from `--law`).
+    pub fn with_flag(mut self, key: ParamKey, flag: &'static str) -> Self {
+        self.src.flags.push((key, flag));
         self
     }
 
