@@ -53,7 +53,11 @@ fn link_targets(text: &str) -> Vec<String> {
     while let Some(i) = rest.find("](") {
         rest = &rest[i + 2..];
         if let Some(j) = rest.find(')') {
-            let t = rest[..j].split_whitespace().next().unwrap_or("").to_string();
+            let t = rest[..j]
+                .split_whitespace()
+                .next()
+                .unwrap_or("")
+                .to_string();
             out.push(t);
             rest = &rest[j..];
         }
@@ -96,7 +100,10 @@ fn anchors(text: &str) -> BTreeSet<String> {
 fn readme_is_at_most_200_lines() {
     let text = std::fs::read_to_string(repo_root().join("README.md")).unwrap();
     let n = text.lines().count();
-    assert!(n <= 200, "README.md has {n} lines; the limit is 200 (details belong in docs/)");
+    assert!(
+        n <= 200,
+        "README.md has {n} lines; the limit is 200 (details belong in docs/)"
+    );
 }
 
 #[test]
@@ -130,12 +137,22 @@ fn every_relative_link_in_the_docs_resolves() {
                 if dest.extension().is_some_and(|e| e == "md") {
                     let dtext = std::fs::read_to_string(&dest).unwrap();
                     if !anchors(&dtext).contains(a) {
-                        broken.push(format!("{}: {target} (no heading with that anchor)", file.display()));
+                        broken.push(format!(
+                            "{}: {target} (no heading with that anchor)",
+                            file.display()
+                        ));
                     }
                 }
             }
         }
     }
-    assert!(checked > 10, "only {checked} relative links found: is the link parser broken?");
-    assert!(broken.is_empty(), "broken relative links:\n{}", broken.join("\n"));
+    assert!(
+        checked > 10,
+        "only {checked} relative links found: is the link parser broken?"
+    );
+    assert!(
+        broken.is_empty(),
+        "broken relative links:\n{}",
+        broken.join("\n")
+    );
 }
