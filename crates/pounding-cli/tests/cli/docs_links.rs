@@ -133,15 +133,14 @@ fn every_relative_link_in_the_docs_resolves() {
                 broken.push(format!("{}: {target} (no such file)", file.display()));
                 continue;
             }
-            if let Some(a) = anchor {
-                if dest.extension().is_some_and(|e| e == "md") {
-                    let dtext = std::fs::read_to_string(&dest).unwrap();
-                    if !anchors(&dtext).contains(a) {
-                        broken.push(format!(
-                            "{}: {target} (no heading with that anchor)",
-                            file.display()
-                        ));
-                    }
+            let is_md = dest.extension().is_some_and(|e| e == "md");
+            if let (Some(a), true) = (anchor, is_md) {
+                let dtext = std::fs::read_to_string(&dest).unwrap();
+                if !anchors(&dtext).contains(a) {
+                    broken.push(format!(
+                        "{}: {target} (no heading with that anchor)",
+                        file.display()
+                    ));
                 }
             }
         }
