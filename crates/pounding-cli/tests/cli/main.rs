@@ -60,6 +60,7 @@ mod batch;
 mod bridge_batch;
 mod bridge_plots;
 mod compare;
+mod docs_links;
 mod fuzz;
 mod golden;
 mod harden;
