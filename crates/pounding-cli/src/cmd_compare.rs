@@ -174,7 +174,7 @@ fn run_laws(laws: &[String], setups: &[SimSetup]) -> Result<Vec<Run>> {
         {
             eprintln!("law {l}:");
         }
-        cmd_simulate::warn_time_step(&sol);
+        let _ = cmd_simulate::warn_time_step(&sol);
         eprintln!(
             "{l}: {} steps in {:.1} ms ({:?})",
             sol.steps,

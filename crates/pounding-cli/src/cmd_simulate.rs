@@ -13,7 +13,7 @@ use pounding::output::{float_token, write_atomic};
 use pounding::sim::output::{
     SIM_OUTPUTS, describe_contact, history_csv, impacts_csv, summary_json_text,
 };
-use pounding::sim::scenario::{DEFAULT_SCENARIO_TOML, ParamKey, Scenario, Section, SimSetup};
+use pounding::sim::scenario::{DEFAULT_SCENARIO_TOML, ParamKey, Scenario, Section};
 use pounding::sim::{SimSolution, simulate};
 use serde_json::json;
 use std::path::{Path, PathBuf};
@@ -123,10 +123,52 @@ pub(crate) fn with_flags(mut sc: Scenario, args: &Args) -> Scenario {
     sc
 }
 
-/// The run described by the scenario and the flags, validated.
-fn build(args: &Args) -> Result<SimSetup> {
-    let sc = load_scenario(args.scenario.as_deref())?;
-    Ok(with_flags(sc, args).build()?)
+/// The command-line replacements as given, for the report.
+pub(crate) fn flag_list(args: &Args) -> Vec<String> {
+    let mut v = Vec::new();
+    if let Some(p) = &args.record {
+        v.push(format!("--record {}", p.display()));
+    }
+    let mut num = |flag: &str, x: Option<f64>| {
+        if let Some(x) = x {
+            v.push(format!("{flag} {}", float_token(x)));
+        }
+    };
+    num("--scale", args.scale);
+    num("--dt", args.dt);
+    num("--duration", args.duration);
+    if let Some(l) = &args.law {
+        v.push(format!("--law {l}"));
+    }
+    v
+}
+
+/// Writes `report.html` ([`crate::sim_report`]) from the `summary.json` text of the run; the
+/// figures are those of `candidates` that the run drew.
+pub(crate) fn write_report(
+    args: &Args,
+    what: String,
+    scenario: (&str, &str),
+    summary_json: &str,
+    candidates: &[&'static str],
+    files: &[&'static str],
+    warnings: Vec<String>,
+) -> Result<()> {
+    let input = crate::sim_report::ReportInput {
+        what,
+        scenario,
+        flags: flag_list(args),
+        figures: candidates
+            .iter()
+            .copied()
+            .filter(|f| args.out.join(f).is_file())
+            .collect(),
+        files,
+        warnings,
+    };
+    let html = crate::sim_report::report_html(&input, summary_json);
+    let p = args.out.join("report.html");
+    write_atomic(&p, html.as_bytes()).with_context(|| format!("cannot write {}", p.display()))
 }
 
 /// Runs `pounding simulate`.
@@ -136,13 +178,12 @@ pub fn run(args: Args) -> Result<ExitCode> {
         return Ok(ExitCode::SUCCESS);
     }
     let t_start = Instant::now();
-    if let Some(p) = args.scenario.as_deref() {
-        let sc = Scenario::load(p)?;
-        if sc.is_bridge() {
-            return sim_bridge::run(&args, sc, t_start);
-        }
+    let sc = load_scenario(args.scenario.as_deref())?;
+    if sc.is_bridge() {
+        return sim_bridge::run(&args, sc, t_start);
     }
-    let setup = build(&args)?;
+    let (origin, text) = (sc.origin().to_string(), sc.text().to_string());
+    let setup = with_flags(sc, &args).build()?;
     if !args.records.is_empty() {
         return sim_batch::run(&args, &setup.problem, &setup.settings, setup.units, t_start);
     }
@@ -151,7 +192,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let t_sim = Instant::now();
     let sol = simulate(&setup.problem, &setup.settings).map_err(|e| anyhow!("{e}"))?;
     let sim_secs = t_sim.elapsed().as_secs_f64();
-    warn_time_step(&sol);
+    let warnings: Vec<String> = warn_time_step(&sol).into_iter().collect();
 
     let out = &args.out;
     let _lock = lock_and_clear(out)?;
@@ -162,8 +203,18 @@ pub fn run(args: Args) -> Result<ExitCode> {
     };
     wr("history.csv", history_csv(&setup.problem, &sol).as_bytes())?;
     wr("impacts.csv", impacts_csv(&sol).as_bytes())?;
-    wr("summary.json", summary_json_text(&setup, &sol).as_bytes())?;
+    let summary = summary_json_text(&setup, &sol);
+    wr("summary.json", summary.as_bytes())?;
     sim_plots::write_all(out, &setup.problem, &sol).map_err(|e| anyhow!("plotting: {e}"))?;
+    write_report(
+        &args,
+        "two decks".into(),
+        (&origin, &text),
+        &summary,
+        sim_plots::FIGURES,
+        &["summary.json", "history.csv", "impacts.csv"],
+        warnings,
+    )?;
     let write_secs = t_write.elapsed().as_secs_f64();
     let timing = json!({
         "simulate_s": sim_secs,
@@ -227,17 +278,17 @@ pub(crate) fn lock_and_clear(out: &Path) -> Result<pounding::output::OutputLock>
     Ok(lock)
 }
 
-/// Prints a warning to stderr when a compliance law's contact is not resolved by `dt`.
-pub(crate) fn warn_time_step(sol: &SimSolution) {
-    if let Some(a) = &sol.time_step_advice
-        && !a.adequate
-    {
-        eprintln!(
-            "warning: dt = {} s is too coarse for the contact stiffness: the linearised contact \
-             lasts {:.3e} s = {:.1} steps; use dt <= {:.2e} s (20 steps per contact)",
-            sol.dt, a.contact_duration, a.steps_per_contact, a.max_step
-        );
-    }
+/// Prints a warning to stderr when a compliance law's contact is not resolved by `dt`, and
+/// returns it.
+pub(crate) fn warn_time_step(sol: &SimSolution) -> Option<String> {
+    let a = sol.time_step_advice.as_ref().filter(|a| !a.adequate)?;
+    let w = format!(
+        "dt = {} s is too coarse for the contact stiffness: the linearised contact lasts {:.3e} \
+         s = {:.1} steps; use dt <= {:.2e} s (20 steps per contact)",
+        sol.dt, a.contact_duration, a.steps_per_contact, a.max_step
+    );
+    eprintln!("warning: {w}");
+    Some(w)
 }
 
 /// `x` with `decimals` decimals for `|x| < 1e6`, in exponent form (`1.2346e190`) beyond, and

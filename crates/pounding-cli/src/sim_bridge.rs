@@ -17,6 +17,7 @@ use std::time::Instant;
 
 /// Runs a bridge scenario (single run).
 pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
+    let (origin, text) = (sc.origin().to_string(), sc.text().to_string());
     let setup = super::with_flags(sc, args).build_bridge()?;
     if !args.records.is_empty() {
         return super::sim_batch::run_bridge(args, &setup, t_start);
@@ -25,17 +26,20 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
     let t_sim = Instant::now();
     let sol = setup.run().map_err(|e| anyhow!("{e}"))?;
     let sim_secs = t_sim.elapsed().as_secs_f64();
+    let mut warnings = Vec::new();
     if let Some(a) = &sol.time_step_advice
         && !a.adequate
     {
-        eprintln!(
-            "warning: dt = {} s is too coarse for the contact law: about {} steps per contact \
-             (contact duration {} s); use dt <= {} s",
+        let w = format!(
+            "dt = {} s is too coarse for the contact law: about {} steps per contact (contact \
+             duration {} s); use dt <= {} s",
             float_token(sol.dt),
             float_token(a.steps_per_contact.round()),
             float_token(a.contact_duration),
             float_token(a.max_step)
         );
+        eprintln!("warning: {w}");
+        warnings.push(w);
     }
     let out = &args.out;
     let _lock = lock_and_clear(out)?;
@@ -46,12 +50,20 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
     };
     wr("history.csv", bridge_history_csv(&setup, &sol).as_bytes())?;
     wr("impacts.csv", bridge_impacts_csv(&sol).as_bytes())?;
-    wr(
-        "summary.json",
-        bridge_summary_json_text(&setup, &sol).as_bytes(),
-    )?;
+    let summary = bridge_summary_json_text(&setup, &sol);
+    wr("summary.json", summary.as_bytes())?;
     crate::plots::bridge::write_all(out, &setup.problem.model, &sol)
         .map_err(|e| anyhow!("plotting: {e}"))?;
+    let n = sol.n_segments;
+    super::write_report(
+        args,
+        format!("a bridge of {n} segment{}", if n == 1 { "" } else { "s" }),
+        (&origin, &text),
+        &summary,
+        crate::plots::bridge::FIGURES,
+        &["summary.json", "history.csv", "impacts.csv"],
+        warnings,
+    )?;
     let timing = json!({
         "simulate_s": sim_secs,
         "write_s": t_write.elapsed().as_secs_f64(),

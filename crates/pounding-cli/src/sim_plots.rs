@@ -8,6 +8,17 @@
 //! * `abutment_gap.png` — with abutments: the gap of each far end face to its abutment;
 //! * `layout.png` — plan view of the two decks, bearings, joint, abutments and axes (reference pose).
 
+/// The figures [`write_all`] may draw (`abutment_gap.png` only with abutments), in order.
+pub const FIGURES: &[&str] = &[
+    "displacements.png",
+    "layout.png",
+    "rotations.png",
+    "joint_gap.png",
+    "abutment_gap.png",
+    "impulses.png",
+    "energy.png",
+];
+
 use crate::plot_style::{
     BLUE, DrawResult, FAMILY, GREEN, ORANGE, PURPLE, RED, e, register, save_white_png,
 };

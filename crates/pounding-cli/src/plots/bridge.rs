@@ -7,6 +7,14 @@
 //! * `plan.png` — plan view of the reference pose with each corner's path, exaggerated;
 //! * `energy.png` — the energy balance.
 
+/// The figures [`write_all`] draws, in order.
+pub const FIGURES: &[&str] = &[
+    "joint_openings.png",
+    "displacements.png",
+    "plan.png",
+    "energy.png",
+];
+
 use crate::plot_style::{
     BLUE, DARK, DrawResult, FAMILY, GREEN, ORANGE, PURPLE, RED, e, register, save_white_png,
     series_legend,

@@ -7,13 +7,14 @@ use std::path::Path;
 
 const CURVED_5: &str = include_str!("../../../../examples/viaduct-curved-5.toml");
 
-const BRIDGE_FILES: [&str; 8] = [
+const BRIDGE_FILES: [&str; 9] = [
     "displacements.png",
     "energy.png",
     "history.csv",
     "impacts.csv",
     "joint_openings.png",
     "plan.png",
+    "report.html",
     "summary.json",
     "timing.json",
 ];

@@ -70,6 +70,7 @@ mod harden_round2;
 mod lcp;
 mod physics_check;
 mod shapes;
+mod sim_report;
 mod simulate;
 mod simulate_flags;
 mod study;

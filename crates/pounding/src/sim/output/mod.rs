@@ -49,6 +49,7 @@ pub const SIM_OUTPUTS: &[&str] = &[
     "batch.png",
     "joint_openings.png",
     "plan.png",
+    "report.html",
 ];
 
 /// `history.csv`: one row per stored step (every `history_stride`-th) — time, ground

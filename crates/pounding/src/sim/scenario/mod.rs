@@ -261,6 +261,11 @@ impl Scenario {
         &self.src.origin
     }
 
+    /// The scenario's TOML text as read.
+    pub fn text(&self) -> &str {
+        &self.src.text
+    }
+
     /// The contact law that [`Scenario::build`] will use: the override, else `[contact] law`,
     /// else `rigid`.
     pub fn law(&self) -> &str {

@@ -1,0 +1,87 @@
+//! `report.html` of `pounding simulate` (issue 12): written with every run, two decks and
+//! bridges; it shows the status, the warnings, every summary key, the replacements given on the
+//! command line and every figure the run drew, and links only to files that exist.
+
+use crate::{run_capture, scratch_dir};
+
+fn run(name: &str, args: &[&str]) -> (Option<i32>, std::path::PathBuf, String) {
+    let d = scratch_dir("simreport", name);
+    let out = d.join("out");
+    let mut a = vec!["simulate"];
+    a.extend_from_slice(args);
+    a.extend_from_slice(&["--out", out.to_str().unwrap()]);
+    let (code, _, err) = run_capture(&a);
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap_or_default();
+    (code, out, html + &err)
+}
+
+/// Every `src="..."`/`href="..."` target of the page exists beside it.
+fn links_resolve(out: &std::path::Path, html: &str) {
+    for attr in ["src=\"", "href=\""] {
+        for part in html.split(attr).skip(1) {
+            let target = &part[..part.find('"').unwrap()];
+            if target.starts_with('#') {
+                continue;
+            }
+            assert!(out.join(target).is_file(), "{target} does not exist");
+        }
+    }
+}
+
+#[test]
+fn two_deck_report_shows_the_run() {
+    let (code, out, html) = run(
+        "two",
+        &["--duration", "4", "--law", "hertz-damp", "--dt", "1e-4"],
+    );
+    assert_eq!(code, Some(0), "{html}");
+    assert!(html.contains("Status: <strong class=\"v-reproduced\">Completed</strong>"));
+    assert!(
+        html.contains("--dt 0.0001 --duration 4 --law hertz-damp"),
+        "flags missing"
+    );
+    assert!(!html.contains("<script"));
+    let summary: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("summary.json")).unwrap()).unwrap();
+    for (k, v) in summary.as_object().unwrap() {
+        // ground_motion has its own section; its keys are rows there
+        let keys: Vec<&String> = match (k.as_str(), v.as_object()) {
+            ("ground_motion", Some(o)) => o.keys().collect(),
+            _ => vec![k],
+        };
+        for k in keys {
+            assert!(html.contains(&format!(">{k}<")), "summary key {k} missing");
+        }
+    }
+    for f in [
+        "displacements.png",
+        "layout.png",
+        "joint_gap.png",
+        "energy.png",
+    ] {
+        assert!(html.contains(&format!("src=\"{f}\"")), "{f} missing");
+    }
+    links_resolve(&out, &html);
+}
+
+#[test]
+fn bridge_report_shows_the_arrays_and_the_warnings() {
+    let f = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/viaduct-1d.toml"
+    );
+    // a step too coarse for the contact law: a warning on stderr and in the report
+    let (code, out, html) = run("bridge", &[f, "--duration", "3", "--dt", "2e-3"]);
+    assert_eq!(code, Some(0), "{html}");
+    assert!(html.contains("a bridge of 3 segments"));
+    let warn = html.find("id=\"warnings\"").unwrap();
+    let body = &html[warn..html.find("id=\"ground\"").unwrap()];
+    assert!(body.contains("too coarse for the contact law"), "{body}");
+    for t in ["<h3>joints</h3>", "<h3>segments</h3>", "<h3>abutments</h3>"] {
+        assert!(html.contains(t), "{t} missing");
+    }
+    for f in ["joint_openings.png", "plan.png"] {
+        assert!(html.contains(&format!("src=\"{f}\"")), "{f} missing");
+    }
+    links_resolve(&out, &html);
+}
