@@ -121,6 +121,12 @@ fn with_dt(args: &Args, mut s: BridgeSetup) -> Result<BridgeSetup> {
     }
     s.settings.history_stride = ((5e-4 / s.settings.dt).floor() as usize).max(1);
     s.settings.validate().map_err(|e| anyhow!("{e} (--dt)"))?;
+    // the restrainers' explicit force needs a short enough step (checked for the file's dt by
+    // the build; again for --dt)
+    s.problem
+        .model
+        .check_time_step(s.settings.dt)
+        .map_err(|e| anyhow!("{e} (--dt)"))?;
     let d = s
         .settings
         .duration
