@@ -8,7 +8,11 @@
 //! overlay plots: `joint_gap.png` (the smaller joint gap of the two ends) and `contact_force.png`
 //! (total joint force of the compliance laws), each with a full-duration panel and a zoom around
 //! the largest contact event.
+//!
+//! A bridge file (`[[segment]]` tables) is compared by [`bridge`]: each law replaces the law at
+//! every joint and abutment; a law that cannot run on the bridge is skipped with its reason.
 
+mod bridge;
 mod plots;
 
 use crate::cmd_simulate;
@@ -16,7 +20,7 @@ use anyhow::{Context, Result, anyhow, bail};
 use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
 use pounding::sim::output::{COMPARE_OUTPUTS, compare_csv, compare_table};
-use pounding::sim::scenario::SimSetup;
+use pounding::sim::scenario::{Scenario, SimSetup};
 use pounding::sim::{SimSolution, simulate};
 use serde_json::json;
 use std::path::{Path, PathBuf};
@@ -63,7 +67,11 @@ pub fn run(args: Args) -> Result<ExitCode> {
     {
         bail!("invalid --dt {}: must be finite and > 0", float_token(dt));
     }
-    let setups = build_setups(&args, &laws)?;
+    let base = cmd_simulate::load_scenario(args.scenario.as_deref())?;
+    if base.is_bridge() {
+        return bridge::run(&args, &laws, base, t_start);
+    }
+    let setups = build_setups(&args, &laws, base)?;
     pounding::output::check_output_dir_free(&args.out)?;
     let runs = run_laws(&laws, &setups)?;
     write_outputs(&args.out, &runs, t_start)?;
@@ -113,8 +121,8 @@ fn parse_laws(given: &[String]) -> Result<Vec<String>> {
 /// the plots), with the rules of `simulate` (a step no longer than the run, not too many steps)
 /// and the memory of all histories together within the limit. A `[contact]` key that no law of
 /// `laws` reads is refused first (`Scenario::check_contact_keys` after `with_compared_laws`).
-fn build_setups(args: &Args, laws: &[String]) -> Result<Vec<SimSetup>> {
-    let base = cmd_simulate::load_scenario(args.scenario.as_deref())?.with_compared_laws(laws);
+fn build_setups(args: &Args, laws: &[String], base: Scenario) -> Result<Vec<SimSetup>> {
+    let base = base.with_compared_laws(laws);
     base.check_contact_keys()?;
     let mut setups = Vec::new();
     let mut memory = 0u64;

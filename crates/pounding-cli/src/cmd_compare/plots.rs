@@ -13,7 +13,7 @@ use pounding::math::Real;
 use pounding::sim::scenario::LAW_NAMES;
 use std::path::Path;
 
-type R = DrawResult;
+pub(super) type R = DrawResult;
 
 /// The six laws of `LAW_NAMES` keep their colours; further registered laws (in registry order)
 /// get the next ones, so no two laws share a colour in one figure.
@@ -97,7 +97,7 @@ fn zoom_window(runs: &[Run]) -> (Real, Real) {
     }
 }
 
-fn panel<DB: DrawingBackend>(
+pub(super) fn panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
     ylabel: &str,

@@ -1,6 +1,7 @@
 //! End-to-end tests of the `pounding` binary (one test binary; one module per subcommand).
 
 mod bridge;
+mod bridge_compare;
 mod impact;
 
 use std::process::Command;

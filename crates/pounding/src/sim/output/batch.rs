@@ -10,7 +10,7 @@ use crate::sim::batch::{BatchRow, BridgeBatchOutcome, BridgeBatchRow};
 use crate::sim::bridge::ABUTMENT_SIDES;
 
 /// CSV field: quoted when it contains a comma, a quote or a line break.
-fn field(s: &str) -> String {
+pub(super) fn field(s: &str) -> String {
     if s.contains([',', '"', '\n', '\r']) {
         format!("\"{}\"", s.replace('"', "\"\""))
     } else {

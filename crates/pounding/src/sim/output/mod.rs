@@ -16,6 +16,7 @@ mod batch;
 mod bridge;
 mod bridge_plan;
 mod compare;
+mod compare_bridge;
 pub use batch::{BATCH_HEADER, batch_csv, bridge_batch_csv, bridge_batch_header};
 pub use bridge::{
     bridge_history_csv, bridge_impacts_csv, bridge_summary_json, bridge_summary_json_text,
@@ -25,6 +26,10 @@ pub use bridge_plan::{
     segment_displacements,
 };
 pub use compare::{COMPARE_HEADER, COMPARE_OUTPUTS, compare_csv, compare_table};
+pub use compare_bridge::{
+    BRIDGE_COMPARE_HEADER, BRIDGE_COMPARE_OUTPUTS, BRIDGE_COMPARE_SITES_HEADER, BridgeCompareRun,
+    bridge_compare_csv, bridge_compare_sites_csv, bridge_compare_table,
+};
 
 /// Degrees per radian.
 pub(crate) const DEG: Real = 180.0 / std::f64::consts::PI;

@@ -23,17 +23,34 @@
 //! restrainer_offsets = [-3.0, 3.0]  # one cable per offset across the joint [m] (default [0]),
 //! restrainer_depth = 0.5    # anchors inside each segment [m] (RestrainerSpec)
 //!
+//! [joint.contact]           # optional: joint 1's own contact keys (or, inside [[joint]],
+//! k_h = 2.0e10              #   contact = { law = "hertz-damp", k_h = 2e10 })
+//!
 //! [abutment.start]          # optional; also [abutment.end]
 //! gap = 0.04
+//!
+//! [abutment.start.contact]  # optional: the abutment's own contact keys
+//! law = "kelvin"
+//! k = 5.0e9
 //! ```
 //!
-//! `[contact]`, `[ground_motion]` and `[time]` are those of the two-deck file; the `[contact]`
-//! law applies to every joint and abutment (a compliance law at an abutment is built with the
-//! segment's mass as the effective mass).
+//! `[contact]`, `[ground_motion]` and `[time]` are those of the two-deck file. The `[contact]`
+//! section is the default contact of every joint and abutment; a site's own `contact` table
+//! (the keys of `[contact]`) overrides it key by key: a site that sets only `k_h` keeps the
+//! file's law and its other keys; a site that sets another `law` inherits only the `[contact]`
+//! keys that its law reads. A key of a site table that the site's law does not read is an error
+//! naming `joint[k].contact.KEY` (`abutment.end.contact.KEY`) and its line, as is an unknown key;
+//! a `[contact]` key that no site's law reads is refused as for two decks. Rigid contact at some
+//! sites and compliance laws at others is refused, naming the site's `contact.law` and its line.
+//! A law override (`pounding simulate --law`, `pounding compare`) replaces the law at every
+//! site; the site's other keys apply when that law reads them. A compliance law at an abutment
+//! is built with the segment's mass as the effective mass (calibrations), at a joint with the
+//! two segments' masses.
 
 use super::build::{build_ground, build_settings};
-use super::contact::build_contact;
+use super::contact::{FileKeys, build_contact, check_contact_keys};
 use super::sections::{GroundSec, TimeSec};
+use super::site_contact::{SiteContact, SiteTable, resolve};
 use super::{Scenario, ScenarioError};
 use crate::ground_motion::AccelUnits;
 use crate::math::Real;
@@ -43,7 +60,7 @@ use crate::sim::bridge::{
     BearingYield, BridgeAbutment, BridgeModel, BridgeProblem, Joint, RestrainerSpec, Segment,
     simulate_bridge,
 };
-use crate::sim::{DampingModel, SimSettings};
+use crate::sim::{DampingModel, JointContact, SimSettings};
 use crate::toml_schema::{Table, line_col};
 use serde::Deserialize;
 use toml::Spanned;
@@ -120,6 +137,8 @@ struct JointSec {
     restrainer_fy: Sp<f64>,
     restrainer_offsets: Sp<Vec<f64>>,
     restrainer_depth: Sp<f64>,
+    /// The joint's own contact keys (`[joint.contact]`).
+    contact: Option<Spanned<SiteTable>>,
 }
 
 #[derive(Deserialize, Default, Clone, Debug)]
@@ -136,6 +155,8 @@ struct AbutmentSec {
     seat_length: Sp<f64>,
     mu: Sp<f64>,
     eps_n: Sp<f64>,
+    /// The abutment's own contact keys (`[abutment.start.contact]`).
+    contact: Option<Spanned<SiteTable>>,
 }
 
 /// What [`Scenario::build_bridge`] returns: the problem and settings of
@@ -315,7 +336,6 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
         eps_n: d_eps,
         seat_length: d_seat,
     };
-    sc.check_contact_keys()?;
     let (joints, abutments) = sites(sc, &v, raw, &masses, &defaults)?;
     let model = BridgeModel {
         segments,
@@ -364,9 +384,23 @@ fn sites(
 ) -> Result<(Vec<Joint>, [Option<BridgeAbutment>; 2]), ScenarioError> {
     let n = masses.len();
     let nj = n - 1;
-    let law = sc.law.as_deref();
-    let contact_for =
-        |eps_n: f64, m: [f64; 2]| build_contact(&sc.src, &sc.raw.contact, law, eps_n, m);
+    let contacts = site_contacts(sc, raw, nj)?;
+    let mut kinds = Vec::new();
+    let mut contact_for = |c: &SiteContact, eps_n: f64, m: [f64; 2]| {
+        let built = if c.own_keys() {
+            build_contact(c, &c.sec, None, eps_n, m)?
+        } else {
+            build_contact(
+                &FileKeys(&sc.src),
+                &sc.raw.contact,
+                sc.law.as_deref(),
+                eps_n,
+                m,
+            )?
+        };
+        kinds.push(matches!(built, JointContact::Rigid));
+        Ok::<_, ScenarioError>(built)
+    };
     let mut joints = Vec::with_capacity(nj);
     for k in 0..nj {
         let none = JointSec::default();
@@ -382,11 +416,12 @@ fn sites(
             friction,
             restitution,
             seat_length,
-            contact: contact_for(restitution, [masses[k], masses[k + 1]])?,
+            contact: contact_for(&contacts[k], restitution, [masses[k], masses[k + 1]])?,
             restrainers,
         });
     }
     let mut abutments = [None, None];
+    let mut next = nj;
     for (side, (name, a)) in [("start", &raw.abutment.start), ("end", &raw.abutment.end)]
         .into_iter()
         .enumerate()
@@ -402,10 +437,113 @@ fn sites(
             seat_length: v.pos(ak("seat_length"), &a.seat_length, Some(d.seat_length))?,
             friction: v.nonneg(ak("mu"), &a.mu, Some(d.mu))?,
             restitution,
-            contact: contact_for(restitution, [2.0 * m, 2.0 * m])?,
+            contact: contact_for(&contacts[next], restitution, [2.0 * m, 2.0 * m])?,
         });
+        next += 1;
     }
+    check_mixed(sc, &contacts, &kinds)?;
     Ok((joints, abutments))
+}
+
+/// The contact of every site (joints, then the abutments given), with the keys of its own
+/// `contact` table checked: unknown keys and types, then the `[contact]` keys that no site's
+/// law reads, then the site keys that its law (or no compared law) reads.
+fn site_contacts<'a>(
+    sc: &'a Scenario,
+    raw: &BridgeRaw,
+    nj: usize,
+) -> Result<Vec<SiteContact<'a>>, ScenarioError> {
+    let law = sc.law.as_deref();
+    let none = JointSec::default();
+    let mut out = Vec::new();
+    for k in 0..nj {
+        let j = raw.joint.get(k).map_or(&none, |j| j.get_ref());
+        let table = j.contact.as_ref();
+        out.push(resolve(
+            &sc.src,
+            &sc.raw.contact,
+            law,
+            format!("joint[{k}]"),
+            table,
+        )?);
+    }
+    for (name, a) in [("start", &raw.abutment.start), ("end", &raw.abutment.end)] {
+        if let Some(a) = a {
+            let table = a.get_ref().contact.as_ref();
+            let site = format!("abutment.{name}");
+            out.push(resolve(&sc.src, &sc.raw.contact, law, site, table)?);
+        }
+    }
+    let mut in_use: Vec<&str> = Vec::new();
+    for c in &out {
+        if !in_use.contains(&c.law.as_str()) {
+            in_use.push(&c.law);
+        }
+    }
+    match (&sc.compared, in_use.as_slice()) {
+        (None, [_, _, ..]) => check_contact_keys(
+            &sc.src,
+            &sc.raw.contact,
+            &in_use,
+            Some("the laws of this bridge's joints and abutments"),
+        )?,
+        _ => sc.check_contact_keys()?,
+    }
+    let compared: Option<Vec<&str>> = sc
+        .compared
+        .as_ref()
+        .map(|l| l.iter().map(String::as_str).collect());
+    for c in &out {
+        match &compared {
+            Some(list) => c.check_keys(list, true)?,
+            None => c.check_keys(&[c.law.as_str()], false)?,
+        }
+    }
+    Ok(out)
+}
+
+/// Refuses rigid contact at some sites and compliance laws at others (the library's
+/// `BridgeModel::validate` would too), naming the first site whose own `law` key makes the
+/// difference, with its line. `rigid[i]`: whether site `i` got rigid contact.
+fn check_mixed(
+    sc: &Scenario,
+    contacts: &[SiteContact],
+    rigid: &[bool],
+) -> Result<(), ScenarioError> {
+    if rigid.iter().all(|&r| r) || rigid.iter().all(|&r| !r) {
+        return Ok(());
+    }
+    let run_rigid = sc.law() == "rigid";
+    let culprit = contacts
+        .iter()
+        .zip(rigid)
+        .find(|(c, r)| c.law_line.is_some() && **r != run_rigid)
+        .or_else(|| contacts.iter().zip(rigid).find(|(_, r)| **r != rigid[0]));
+    let Some((c, &r)) = culprit else {
+        return Ok(());
+    };
+    let kind = |rigid: bool| {
+        if rigid {
+            "rigid contact"
+        } else {
+            "a compliance law"
+        }
+    };
+    Err(ScenarioError::Bridge {
+        message: format!(
+            "{}.contact.law = \"{}\" mixes rigid and compliance contact ({} uses {}, other sites \
+             {}): every joint and abutment of a bridge must use rigid contact, or every one a \
+             compliance law",
+            c.site,
+            c.law,
+            c.site,
+            kind(r),
+            kind(!r)
+        ),
+        key: format!("{}.contact.law", c.site),
+        origin: sc.src.origin.clone(),
+        line: c.law_line,
+    })
 }
 
 /// A model error (named `segment[i].key`, `joint[k].key`, `abutment.side.key`, `bridge.key`) with

@@ -1,7 +1,7 @@
 //! [`Scenario::build`]: the model, the ground motion and the settings from the sections, every
 //! value validated with errors located at its key.
 
-use super::contact::build_contact;
+use super::contact::{FileKeys, build_contact};
 use super::error::{ParamKey, ScenarioError, Section};
 use super::sections::{DecksSec, Raw};
 use super::{Scenario, SimSetup, Src};
@@ -302,7 +302,7 @@ fn build_model(sc: &Scenario) -> Result<SimModel, ScenarioError> {
     apply_shape_and_damping(src, d, &b.damping, &mut model)?;
     sc.check_contact_keys()?;
     model.contact = build_contact(
-        src,
+        &FileKeys(src),
         &raw.contact,
         sc.law.as_deref(),
         j.eps_n,

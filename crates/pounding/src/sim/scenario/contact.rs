@@ -51,7 +51,7 @@ impl ContactSec {
 }
 
 /// Every key of `[contact]`: `law`, the registered laws' keys, `friction_velocity`.
-fn section_keys() -> &'static [&'static str] {
+pub(super) fn section_keys() -> &'static [&'static str] {
     static KEYS: LazyLock<Vec<&'static str>> = LazyLock::new(|| {
         let mut keys = vec!["law"];
         keys.extend_from_slice(registry::law_keys());
@@ -107,26 +107,53 @@ pub use crate::contact_law::registry::{
     DEFAULT_A, DEFAULT_DELTA_M, DEFAULT_K, DEFAULT_MIN_VELOCITY, default_k_h,
 };
 
-/// A contact-law error located at the `[contact]` key that sets the parameter.
-fn law_err(src: &Src, e: ContactLawError) -> ScenarioError {
+/// Where the keys of one contact section are set, for the messages of [`build_contact`]: the
+/// file's `[contact]` ([`FileKeys`]) or a bridge site's `contact` table (`sim::scenario::bridge`).
+pub(super) trait ContactKeys {
+    /// `key` and where it is set, as named in messages (e.g. "`[contact] k` (FILE:3)").
+    fn at(&self, key: &'static str) -> String;
+    /// An out-of-range value of `key` (`message` says which and why).
+    fn invalid(&self, message: String, key: &'static str) -> ScenarioError;
+    /// A message that names `keys` itself (with [`ContactKeys::at`]).
+    fn key_error(&self, message: String, keys: &[&'static str]) -> ScenarioError;
+}
+
+/// The keys of the file's `[contact]` section.
+pub(super) struct FileKeys<'a>(pub(super) &'a Src);
+
+impl ContactKeys for FileKeys<'_> {
+    fn at(&self, key: &'static str) -> String {
+        self.0.at(contact(key)).to_string()
+    }
+    fn invalid(&self, message: String, key: &'static str) -> ScenarioError {
+        let at = self.0.at(contact(key));
+        let note = if key == "restitution" && at.line.is_none() {
+            " (the default is `[joint] eps_n`)".to_string()
+        } else {
+            String::new()
+        };
+        ScenarioError::Invalid {
+            message,
+            at: vec![at],
+            note,
+        }
+    }
+    fn key_error(&self, message: String, keys: &[&'static str]) -> ScenarioError {
+        let keys: Vec<ParamKey> = keys.iter().map(|k| contact(k)).collect();
+        self.0.key_error(message, &keys)
+    }
+}
+
+/// A contact-law error located at the key that sets the parameter.
+fn law_err(loc: &dyn ContactKeys, e: ContactLawError) -> ScenarioError {
     let ContactLawError::InvalidParameter { name, .. } = &e;
     let Some(key) = ParamKey::of_contact_parameter(name) else {
         return ScenarioError::Law(Box::new(e));
     };
-    let at = src.at(key);
-    let note = if key.key == "restitution" && at.line.is_none() {
-        " (the default is `[joint] eps_n`)".to_string()
-    } else {
-        String::new()
-    };
-    ScenarioError::Invalid {
-        message: e.to_string(),
-        at: vec![at],
-        note,
-    }
+    loc.invalid(e.to_string(), key.key)
 }
 
-const fn contact(key: &'static str) -> ParamKey {
+pub(super) const fn contact(key: &'static str) -> ParamKey {
     ParamKey::new(Section::Contact, key)
 }
 
@@ -137,7 +164,7 @@ pub fn contact_keys() -> &'static [&'static str] {
 }
 
 /// Whether the section gives `key`.
-fn given(sec: &ContactSec, key: &str) -> bool {
+pub(super) fn given(sec: &ContactSec, key: &str) -> bool {
     match key {
         registry::CALIBRATION_KEY => sec.calibration.is_some(),
         "friction_velocity" => sec.friction_velocity.is_some(),
@@ -146,11 +173,11 @@ fn given(sec: &ContactSec, key: &str) -> bool {
 }
 
 /// The keys a law reads and how its way was chosen (`None`: `rigid` or an unknown law).
-type KeysRead = Option<(Vec<&'static str>, &'static str)>;
+pub(super) type KeysRead = Option<(Vec<&'static str>, &'static str)>;
 
 /// The `[contact]` keys law `name` reads with the keys given in `sec`, and how its way was
 /// chosen (for messages); `None` for `rigid` (reads none) and unknown names.
-fn keys_read(sec: &ContactSec, name: &str) -> KeysRead {
+pub(super) fn keys_read(sec: &ContactSec, name: &str) -> KeysRead {
     let entry = registry::entry(name)?;
     let r = (entry.reads)(&|k| given(sec, k));
     let mut keys = r.keys.to_vec();
@@ -159,15 +186,17 @@ fn keys_read(sec: &ContactSec, name: &str) -> KeysRead {
 }
 
 /// Refuses a `[contact]` key that none of `laws` reads with the keys given (it would be
-/// ignored silently). `compared`: the laws are those of a comparison, which builds each of
-/// them from the one section, so a key is refused only when no compared law reads it.
+/// ignored silently). `group`: the laws are several uses of the one section (`Some("the
+/// compared laws")` for a comparison, which builds each of them from it; a bridge whose sites
+/// use different laws), so a key is refused only when no law of the group reads it.
 /// Unknown law names are skipped (reported with the list of laws when built).
 pub(super) fn check_contact_keys(
     src: &Src,
     sec: &ContactSec,
     laws: &[&str],
-    compared: bool,
+    group: Option<&str>,
 ) -> Result<(), ScenarioError> {
+    let compared = group.is_some();
     let read: Vec<(&str, KeysRead)> = laws.iter().map(|&l| (l, keys_read(sec, l))).collect();
     if read.iter().any(|(l, r)| r.is_none() && *l != "rigid") {
         return Ok(());
@@ -211,7 +240,8 @@ pub(super) fn check_contact_keys(
                     false => format!("it is read by {}", readers.join("; ")),
                 };
                 format!(
-                    "{key} is not used by any of the compared laws ({}) — set by {at}; {hint}",
+                    "{key} is not used by any of {} ({}) — set by {at}; {hint}",
+                    group.unwrap_or("the compared laws"),
                     laws.join(", ")
                 )
             }
@@ -227,20 +257,20 @@ pub(super) fn check_contact_keys(
 /// The compliance law `name` (not `rigid`) from the `[contact]` keys and their defaults,
 /// built by its [`registry`] entry.
 fn compliance_law(
-    src: &Src,
+    loc: &dyn ContactKeys,
     sec: &ContactSec,
     name: &str,
     eps_n: f64,
     masses: [f64; 2],
 ) -> Result<ContactLaw, ScenarioError> {
     let Some(entry) = registry::entry(name) else {
-        return Err(src.key_error(
+        return Err(loc.key_error(
             format!(
                 "unknown contact law {name:?} at {}: use one of {}",
-                src.at(contact("law")),
+                loc.at("law"),
                 registry::law_names().join(", ")
             ),
-            &[contact("law")],
+            &["law"],
         ));
     };
     let cal = sec.calibration.as_deref().unwrap_or("numerical");
@@ -252,22 +282,21 @@ fn compliance_law(
         masses,
     };
     (entry.build)(&inputs).map_err(|e| match e {
-        BuildError::Law(e) => law_err(src, e),
-        BuildError::Calibration { allowed } => src.key_error(
+        BuildError::Law(e) => law_err(loc, e),
+        BuildError::Calibration { allowed } => loc.key_error(
             format!(
                 "invalid calibration {cal:?} for law {name:?} at {}: use {allowed}",
-                src.at(contact("calibration"))
+                loc.at("calibration")
             ),
-            &[contact("calibration")],
+            &["calibration"],
         ),
         BuildError::Incomplete { keys, hint } => {
-            let keys: Vec<ParamKey> = keys.iter().map(|k| contact(k)).collect();
-            let at: Vec<String> = keys.iter().map(|k| src.at(*k).to_string()).collect();
+            let at: Vec<String> = keys.iter().map(|k| loc.at(k)).collect();
             let list = match at.split_last() {
                 Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
                 _ => at.join(""),
             };
-            src.key_error(format!("law {name:?}: give all of {list} ({hint})"), &keys)
+            loc.key_error(format!("law {name:?}: give all of {list} ({hint})"), keys)
         }
     })
 }
@@ -275,7 +304,7 @@ fn compliance_law(
 /// Builds the joint contact for `law` (overriding `[contact] law` when given) from the section;
 /// `eps_n` is the default restitution, `masses` the deck masses (Kelvin, Jankowski calibrations).
 pub(super) fn build_contact(
-    src: &Src,
+    loc: &dyn ContactKeys,
     sec: &ContactSec,
     law: Option<&str>,
     eps_n: f64,
@@ -288,16 +317,16 @@ pub(super) fn build_contact(
     if name == "rigid" {
         return Ok(JointContact::Rigid);
     }
-    let law = compliance_law(src, sec, &name, eps_n, masses)?;
+    let law = compliance_law(loc, sec, &name, eps_n, masses)?;
     let mut cc = ComplianceContact::new(law);
     if let Some(v) = sec.friction_velocity {
         if !(v.is_finite() && v > 0.0) {
-            return Err(src.invalid(
+            return Err(loc.invalid(
                 format!(
                     "invalid friction_velocity = {}: must be finite and > 0",
                     float_token(v)
                 ),
-                contact("friction_velocity"),
+                "friction_velocity",
             ));
         }
         cc.friction_velocity = v;

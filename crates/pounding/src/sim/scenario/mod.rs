@@ -19,6 +19,7 @@ mod build;
 mod contact;
 mod error;
 mod sections;
+mod site_contact;
 
 pub use bridge::BridgeSetup;
 pub use contact::{
@@ -211,7 +212,12 @@ impl Scenario {
             Some(list) => (list.iter().map(String::as_str).collect(), true),
             None => (vec![self.law()], false),
         };
-        contact::check_contact_keys(&self.src, &self.raw.contact, &laws, compared)
+        contact::check_contact_keys(
+            &self.src,
+            &self.raw.contact,
+            &laws,
+            compared.then_some("the compared laws"),
+        )
     }
 
     /// Uses the record file `path` (PEER `.AT2`, or `.csv` in `units`, by default the scenario's

@@ -114,9 +114,15 @@ history_every = 10   # write every n-th step to history.csv (peaks use every ste
 #
 # [[joint]]                 # optional: N - 1 tables overriding the [bridge] defaults
 # gap = 0.02
+# [joint.contact]           # optional: this joint's own [contact] keys, overriding the file's
+# k_h = 2.0e10              #   key by key (or contact = { law = "kelvin", k = 1e10 } above);
+#                           #   a site that sets another law inherits only the [contact] keys
+#                           #   its law reads; a key its law does not read is an error
 #
 # [abutment.start]          # optional; also [abutment.end]: gap, seat_length, mu, eps_n
 # gap = 0.04
+# [abutment.start.contact]  # optional: the abutment's own contact keys (as [joint.contact]);
+# law = "hertz"             #   rigid and compliance contact cannot be mixed in one bridge
 "#;
 
 #[derive(Deserialize, Default, Clone, Debug)]

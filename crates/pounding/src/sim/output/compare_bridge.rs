@@ -1,0 +1,209 @@
+//! The files of `pounding compare` on a bridge of `[[segment]]`s (one bridge, several contact
+//! laws, each replacing the law at every joint and abutment): `compare.csv` (one row per law:
+//! the headline figures of the bridge summary, or why the law was skipped),
+//! `compare_sites.csv` (one row per law and site: the figures an engineer compares joint by
+//! joint) and the readable table printed on stdout.
+//!
+//! Empty fields mean "not applicable": the contact force of rigid contact (impulses only), a
+//! joint's opening at an abutment, the figures of a skipped law. Numbers are [`float_token`]s.
+
+use super::batch::field;
+use crate::math::Real;
+use crate::output::float_token;
+use crate::sim::bridge::{ABUTMENT_SIDES, BridgeSolution};
+
+/// Every file `compare` writes for a bridge; removed before a new run writes. `timing.json` is
+/// written last and marks a complete run.
+pub const BRIDGE_COMPARE_OUTPUTS: &[&str] = &[
+    "timing.json",
+    "compare.csv",
+    "compare_sites.csv",
+    "joint_gap.png",
+];
+
+/// Columns of the bridge `compare.csv`: per law its status (`Completed`, … or `skipped`), steps,
+/// impacts of the whole bridge, the largest contact force and impulse over all joints and
+/// abutments, the largest joint closing and opening, the largest penetration, segment
+/// displacement and seat displacement, unseating, the energy-balance error, and the reason a
+/// skipped law could not run.
+pub const BRIDGE_COMPARE_HEADER: &str = "law,status,steps,impacts,peak_contact_force_n,\
+peak_impulse_ns,peak_closing_m,peak_opening_m,peak_penetration_m,peak_displacement_m,\
+peak_seat_displacement_m,unseated,energy_balance_error,skipped_reason";
+
+/// Columns of `compare_sites.csv`: one row per law that ran and site (`joint1`, … in bridge
+/// order, then `abutment.start`, `abutment.end` where present), as the `joints` /
+/// `abutments` arrays of a bridge `summary.json`.
+pub const BRIDGE_COMPARE_SITES_HEADER: &str = "law,site,impacts,peak_contact_force_n,peak_impulse_ns,peak_closing_m,peak_opening_m,\
+restrainer_peak_force_n";
+
+/// One law of a bridge comparison: its run, or why it could not run on this bridge.
+#[derive(Debug, Clone, Copy)]
+pub enum BridgeCompareRun<'a> {
+    /// The law ran (whatever its status).
+    Ran(&'a BridgeSolution),
+    /// The law was skipped: the reason (a build or model error).
+    Skipped(&'a str),
+}
+
+/// `Some(x)` as its token, `None` as an empty field.
+fn opt(x: Option<Real>) -> String {
+    x.map_or(String::new(), float_token)
+}
+
+/// The largest of `xs` (`None` when empty or all `None`).
+fn max_of(xs: impl Iterator<Item = Option<Real>>) -> Option<Real> {
+    xs.flatten().reduce(Real::max)
+}
+
+/// One site's figures: `(site, impacts, force, impulse, closing, opening, restrainer force)`.
+type SiteRow = (
+    String,
+    usize,
+    Option<Real>,
+    Real,
+    Real,
+    Option<Real>,
+    Option<Real>,
+);
+
+/// The sites of a run in bridge order.
+fn sites(sol: &BridgeSolution) -> Vec<SiteRow> {
+    let s = &sol.summary;
+    let mut rows: Vec<SiteRow> = s
+        .joints
+        .iter()
+        .enumerate()
+        .map(|(k, j)| {
+            (
+                format!("joint{}", k + 1),
+                j.impacts,
+                j.peak_contact_force,
+                j.peak_impulse,
+                j.peak_closing,
+                Some(j.peak_opening),
+                j.restrainer_peak_force,
+            )
+        })
+        .collect();
+    for (side, a) in s.abutments.iter().enumerate() {
+        if let Some(a) = a {
+            rows.push((
+                format!("abutment.{}", ABUTMENT_SIDES[side]),
+                a.impacts,
+                a.peak_contact_force,
+                a.peak_impulse,
+                a.peak_closing,
+                None,
+                None,
+            ));
+        }
+    }
+    rows
+}
+
+/// The bridge `compare.csv`: [`BRIDGE_COMPARE_HEADER`], then one row per `(law, run)`.
+pub fn bridge_compare_csv(runs: &[(&str, BridgeCompareRun)]) -> String {
+    let mut out = String::from(BRIDGE_COMPARE_HEADER);
+    out.push('\n');
+    for &(law, run) in runs {
+        let row: Vec<String> = match run {
+            BridgeCompareRun::Skipped(why) => {
+                let mut r = vec![field(law), "skipped".into()];
+                r.extend(std::iter::repeat_n(String::new(), 11));
+                r.push(field(why));
+                r
+            }
+            BridgeCompareRun::Ran(sol) => {
+                let s = &sol.summary;
+                let site = sites(sol);
+                vec![
+                    field(law),
+                    format!("{:?}", sol.status),
+                    sol.steps.to_string(),
+                    s.impacts.to_string(),
+                    opt(max_of(site.iter().map(|r| r.2))),
+                    opt(max_of(site.iter().map(|r| Some(r.3)))),
+                    opt(max_of(s.joints.iter().map(|j| Some(j.peak_closing)))),
+                    opt(max_of(s.joints.iter().map(|j| Some(j.peak_opening)))),
+                    float_token(s.peak_penetration),
+                    opt(max_of(s.segments.iter().map(|g| Some(g.peak_displacement)))),
+                    float_token(s.peak_seat_displacement),
+                    s.unseated.to_string(),
+                    float_token(s.energy_balance_error),
+                    String::new(),
+                ]
+            }
+        };
+        out.push_str(&row.join(","));
+        out.push('\n');
+    }
+    out
+}
+
+/// `compare_sites.csv`: [`BRIDGE_COMPARE_SITES_HEADER`], then one row per site of every law
+/// that ran (skipped laws have no rows; `compare.csv` says why).
+pub fn bridge_compare_sites_csv(runs: &[(&str, BridgeCompareRun)]) -> String {
+    let mut out = String::from(BRIDGE_COMPARE_SITES_HEADER);
+    out.push('\n');
+    for &(law, run) in runs {
+        let BridgeCompareRun::Ran(sol) = run else {
+            continue;
+        };
+        for (site, impacts, force, impulse, closing, opening, restrainer) in sites(sol) {
+            let row = [
+                field(law),
+                site,
+                impacts.to_string(),
+                opt(force),
+                float_token(impulse),
+                float_token(closing),
+                opt(opening),
+                opt(restrainer),
+            ];
+            out.push_str(&row.join(","));
+            out.push('\n');
+        }
+    }
+    out
+}
+
+/// The readable table `pounding compare` prints for a bridge: one line per law and site
+/// (forces in MN, `-` for rigid contact), then the skipped laws with their reasons.
+pub fn bridge_compare_table(runs: &[(&str, BridgeCompareRun)]) -> String {
+    let mut s = format!(
+        "{:<11} {:<15} {:>7} {:>11} {:>13} {:>11} {:>11}\n",
+        "law", "site", "impacts", "force [MN]", "impulse [kNs]", "closing [m]", "opening [m]"
+    );
+    let mut skipped = Vec::new();
+    for &(law, run) in runs {
+        let sol = match run {
+            BridgeCompareRun::Ran(sol) => sol,
+            BridgeCompareRun::Skipped(why) => {
+                skipped.push(format!("{law}: {why}"));
+                continue;
+            }
+        };
+        for (site, impacts, force, impulse, closing, opening, _) in sites(sol) {
+            let f = force.map_or("-".to_string(), |f| format!("{:.3}", f / 1e6));
+            let o = opening.map_or("-".to_string(), |o| format!("{o:.5}"));
+            s.push_str(&format!(
+                "{:<11} {:<15} {:>7} {:>11} {:>13.3} {:>11.5} {:>11}\n",
+                law,
+                site,
+                impacts,
+                f,
+                impulse / 1e3,
+                closing,
+                o
+            ));
+        }
+        if sol.status != crate::sim::SimStatus::Completed {
+            s.push_str(&format!("{law:<11} status {:?}\n", sol.status));
+        }
+    }
+    s.push_str("(rigid contact has impulses, no force: its force column is '-')\n");
+    for k in skipped {
+        s.push_str(&format!("skipped {k}\n"));
+    }
+    s
+}
