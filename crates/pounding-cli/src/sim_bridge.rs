@@ -16,18 +16,21 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 /// Runs a bridge scenario (single run).
-pub fn run(args: &Args, mut sc: Scenario, t_start: Instant) -> Result<ExitCode> {
+pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
+    let mut sc = sc.with_record_dt(args.record_dt);
     if !args.records.is_empty() {
+        let reading = sc.override_reading(args.csv_units)?;
         let setup = sc.for_batch().build_bridge()?;
-        return super::sim_batch::run_bridge(args, &setup, t_start);
+        return super::sim_batch::run_bridge(args, &setup, &reading, t_start);
     }
     if let Some(p) = &args.record {
-        sc = sc.with_record(p, None);
+        sc = sc.with_record(p, args.csv_units);
     }
     if let Some(s) = args.scale {
         sc = sc.with_scale(s);
     }
     let setup = sc.build_bridge()?;
+    super::sim_records::print_components(&setup.problem.ground);
     pounding::output::check_output_dir_free(&args.out)?;
     let t_sim = Instant::now();
     let sol = setup.run().map_err(|e| anyhow!("{e}"))?;
