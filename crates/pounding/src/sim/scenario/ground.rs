@@ -80,7 +80,8 @@ fn csv_units(sc: &Scenario) -> Result<(AccelUnits, &'static str), ScenarioError>
             &[ground("csv_units")],
         )
     })?;
-    let from = match src.is_set(ground("csv_units")) {
+    // the built-in default writes its defaults out
+    let from = match src.is_set(ground("csv_units")) && !src.builtin {
         true => "csv_units",
         false => "csv_units default",
     };
