@@ -9,6 +9,7 @@
 
 use super::Args;
 use super::sim_plots::{self, BatchCurve};
+use super::sim_records::count;
 use anyhow::{Context, Result, anyhow};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use pounding::ground_motion::{ComponentInfo, G0, ReadOptions, Record};
@@ -73,16 +74,21 @@ fn plan(args: &Args, reading: &ReadOptions) -> Result<Plan> {
     let total = records.len() * scales.len();
     let todo = (0..total).filter(|&i| shard.contains(i)).count();
     eprintln!(
-        "batch: {} records x {} scales = {} runs{} on {} threads",
-        records.len(),
-        scales.len(),
-        total,
+        "batch: {} x {} = {}{} on {}",
+        count(records.len(), "record"),
+        count(scales.len(), "scale"),
+        count(total, "run"),
         if shard == Shard::ALL {
             String::new()
         } else {
-            format!(" (shard {}/{}: {todo} runs)", shard.index, shard.count)
+            format!(
+                " (shard {}/{}: {})",
+                shard.index,
+                shard.count,
+                count(todo, "run")
+            )
         },
-        pool.current_num_threads()
+        count(pool.current_num_threads(), "thread")
     );
     // indicatif draws nothing when stderr is not a terminal.
     let pb = ProgressBar::with_draw_target(Some(todo as u64), ProgressDrawTarget::stderr());
@@ -279,8 +285,8 @@ fn report<O>(
         .filter(|r| r.outcome.as_ref().is_ok_and(|o| status(o).1))
         .count();
     eprintln!(
-        "batch: {} runs in {:.2} s, {} unseated, {} failed; outputs in {}",
-        rows.len(),
+        "batch: {} in {:.2} s, {} unseated, {} failed; outputs in {}",
+        count(rows.len(), "run"),
         runs_secs,
         unseated,
         failed.len(),

@@ -107,3 +107,8 @@ pub(crate) fn print_components(g: &GroundMotion) {
         eprintln!("{}", c.line());
     }
 }
+
+/// `n word` with the plural `s` when `n != 1` (`1 thread`, `2 threads`).
+pub(crate) fn count(n: usize, word: &str) -> String {
+    format!("{n} {word}{}", if n == 1 { "" } else { "s" })
+}

@@ -190,7 +190,15 @@ fn records_dir_lists_what_it_skipped_and_refuses_a_dir_without_records() {
     write(&recs, "s.toml", "");
     write(&recs, "v.VT2", "");
     let out = d.join("out");
-    let (code, _, err) = run_capture(&["simulate", "--records", s(&recs), "--out", s(&out)]);
+    let (code, _, err) = run_capture(&[
+        "simulate",
+        "--records",
+        s(&recs),
+        "--threads",
+        "1",
+        "--out",
+        s(&out),
+    ]);
     assert_eq!(code, Some(0), "{err}");
     for (f, why) in [
         (".hidden.csv", "hidden file"),
