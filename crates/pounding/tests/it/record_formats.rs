@@ -193,7 +193,7 @@ fn at2_header_variants_are_read() {
 fn velocity_and_displacement_files_are_refused_by_extension_and_header() {
     let d = dir("vel");
     let at2 =
-        format!("PEER\nev\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS= 2, DT= .01 SEC\n0 1\n");
+        "PEER\nev\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS= 2, DT= .01 SEC\n0 1\n".to_string();
     for ext in ["VT2", "dt2"] {
         let p = write(&d, &format!("r.{ext}"), &at2);
         let e = msg(Record::from_path_with(&p, &ReadOptions::default()).unwrap_err());
