@@ -91,7 +91,7 @@ pub(crate) fn expand_records(paths: &[PathBuf]) -> Result<Vec<PathBuf>> {
         }
         if files.is_empty() {
             bail!(
-                "--records: directory {} contains no record file (.AT2, .csv, .txt, .dat)",
+                "--records: directory {} contains no .AT2 or .csv record (nor .txt, .dat)",
                 p.display()
             );
         }

@@ -227,7 +227,7 @@ fn records_dir_lists_what_it_skipped_and_refuses_a_dir_without_records() {
     let (code, _, err) = run_capture(&["simulate", "--records", s(&empty), "--out", s(&out2)]);
     assert_eq!(code, Some(2), "{err}");
     assert!(
-        err.contains("contains no record file") && err.contains("skipped"),
+        err.contains("contains no .AT2 or .csv record") && err.contains("skipped"),
         "{err}"
     );
     assert!(!out2.exists());
