@@ -8,6 +8,7 @@
 //! With `--records` it runs a batch instead ([`sim_batch`]).
 
 use anyhow::{Context, Result, anyhow};
+use pounding::ground_motion::AccelUnits;
 use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
 use pounding::sim::output::{
@@ -29,17 +30,29 @@ pub(crate) mod sim_batch;
 #[path = "sim_bridge.rs"]
 mod sim_bridge;
 
+#[path = "sim_records.rs"]
+pub(crate) mod sim_records;
+
 /// Arguments of `pounding simulate`.
 #[derive(clap::Args)]
 pub struct Args {
     /// Scenario file (TOML); without it the built-in default runs (see --print-default).
     pub scenario: Option<PathBuf>,
-    /// Use this record (PEER .AT2, or .csv `t, a` in g) as the only ground-motion component,
-    /// along y (normal to the joint); replaces the scenario's records.
+    /// Use this record (PEER .AT2, CSV `t, a`, columns `t a`, or one column with --record-dt)
+    /// as the only ground-motion component, along y (normal to the joint); replaces the
+    /// scenario's records.
     #[arg(long, value_name = "FILE")]
     pub record: Option<PathBuf>,
-    /// Multiply both ground-motion scale factors by S.
-    #[arg(long, value_name = "S")]
+    /// Units of the text records (CSV, columns, one column) of --record / --records: g or m/s2.
+    /// Default: the scenario's csv_units (g). A PEER .AT2 header names its own units.
+    #[arg(long, value_name = "g|m/s2", value_parser = parse_units)]
+    pub csv_units: Option<AccelUnits>,
+    /// Sample interval (s) of one-column records (accelerations only, as OpenSees' timeSeries
+    /// Path -dt) given by --record / --records; refused for files with their own times.
+    #[arg(long, value_name = "SECONDS")]
+    pub record_dt: Option<f64>,
+    /// Multiply both ground-motion scale factors by S (negative: a sign flip).
+    #[arg(long, value_name = "S", allow_negative_numbers = true)]
     pub scale: Option<f64>,
     /// Replace the scenario's time step `[time] dt` (seconds).
     #[arg(long, value_name = "SECONDS", allow_hyphen_values = true)]
@@ -57,8 +70,8 @@ pub struct Args {
     /// Print the built-in default scenario as commented TOML and exit.
     #[arg(long)]
     pub print_default: bool,
-    /// Batch mode: run every record (files, or directories whose `.AT2`/`.csv` files are taken
-    /// in name order) at every `--scales` factor, each as the only component along y (as
+    /// Batch mode: run every record (files, or directories whose `.AT2`/`.csv`/`.txt`/`.dat`
+    /// files are taken in name order; skipped files are listed) at every `--scales` factor, each as the only component along y (as
     /// `--record`); writes `batch.csv` and `batch.png`. Put the scenario file before this flag.
     #[arg(long, num_args = 1.., value_name = "DIR_OR_FILE", conflicts_with_all = ["record", "scale"])]
     pub records: Vec<PathBuf>,
@@ -68,6 +81,7 @@ pub struct Args {
         long,
         value_delimiter = ',',
         value_name = "S1,S2,...",
+        allow_hyphen_values = true,
         requires = "records"
     )]
     pub scales: Vec<f64>,
@@ -88,11 +102,17 @@ pub(crate) fn load_scenario(path: Option<&Path>) -> Result<Scenario> {
     })
 }
 
-/// The scenario with the command line's replacements (`--record`, `--scale`, `--dt`,
-/// `--duration`, `--law`; `--records`: a batch).
-pub(crate) fn with_flags(mut sc: Scenario, args: &Args) -> Scenario {
+/// `--csv-units`: `g` or `m/s2`.
+fn parse_units(s: &str) -> Result<AccelUnits, String> {
+    AccelUnits::from_name(s).ok_or_else(|| format!("invalid units {s:?}: use g or m/s2"))
+}
+
+/// The scenario with the command line's replacements (`--record`, `--csv-units`,
+/// `--record-dt`, `--scale`, `--dt`, `--duration`, `--law`; `--records`: a batch).
+pub(crate) fn with_flags(sc: Scenario, args: &Args) -> Scenario {
+    let mut sc = sc.with_record_dt(args.record_dt);
     if let Some(p) = &args.record {
-        sc = sc.with_record(p, None);
+        sc = sc.with_record(p, args.csv_units);
     }
     if let Some(s) = args.scale {
         sc = sc.with_scale(s);
@@ -178,15 +198,19 @@ pub fn run(args: Args) -> Result<ExitCode> {
         return Ok(ExitCode::SUCCESS);
     }
     let t_start = Instant::now();
+    sim_records::check_flags(&args)?;
     let sc = load_scenario(args.scenario.as_deref())?;
     if sc.is_bridge() {
         return sim_bridge::run(&args, sc, t_start);
     }
     let (origin, text) = (sc.origin().to_string(), sc.text().to_string());
-    let setup = with_flags(sc, &args).build()?;
+    let sc = with_flags(sc, &args);
+    let reading = sc.override_reading(args.csv_units)?;
+    let setup = sc.build()?;
     if !args.records.is_empty() {
-        return sim_batch::run(&args, &setup.problem, &setup.settings, setup.units, t_start);
+        return sim_batch::run(&args, &setup.problem, &setup.settings, &reading, t_start);
     }
+    sim_records::print_components(&setup.problem.ground);
     pounding::output::check_output_dir_free(&args.out)?;
     note_rounded_duration(&setup.settings);
     let t_sim = Instant::now();

@@ -9,9 +9,10 @@
 
 use super::Args;
 use super::sim_plots::{self, BatchCurve};
-use anyhow::{Context, Result, anyhow, bail};
+use super::sim_records::count;
+use anyhow::{Context, Result, anyhow};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use pounding::ground_motion::{AccelUnits, G0, Record};
+use pounding::ground_motion::{ComponentInfo, G0, ReadOptions, Record};
 use pounding::math::Real;
 use pounding::output::write_atomic;
 use pounding::shard::Shard;
@@ -29,37 +30,6 @@ use std::time::Instant;
 /// Degrees per radian (as in `summary.json`).
 const DEG: Real = 180.0 / std::f64::consts::PI;
 
-/// The record files of `--records`: files as given, directories expanded to their `.AT2` / `.csv`
-/// files (any case) sorted by file name.
-fn expand_records(paths: &[PathBuf]) -> Result<Vec<PathBuf>> {
-    let mut out = Vec::new();
-    for p in paths {
-        if p.is_dir() {
-            let mut files: Vec<PathBuf> = std::fs::read_dir(p)
-                .with_context(|| format!("--records: cannot list directory {}", p.display()))?
-                .filter_map(|e| e.ok().map(|e| e.path()))
-                .filter(|f| {
-                    f.is_file()
-                        && f.extension().is_some_and(|x| {
-                            x.eq_ignore_ascii_case("at2") || x.eq_ignore_ascii_case("csv")
-                        })
-                })
-                .collect();
-            if files.is_empty() {
-                bail!(
-                    "--records: directory {} contains no .AT2 or .csv record",
-                    p.display()
-                );
-            }
-            files.sort();
-            out.extend(files);
-        } else {
-            out.push(p.clone());
-        }
-    }
-    Ok(out)
-}
-
 /// What every batch needs before its runs: the records (read), the scales, the shard, the
 /// worker pool and the progress bar (the plan is printed; the output directory is checked).
 struct Plan {
@@ -71,8 +41,8 @@ struct Plan {
 }
 
 /// Parses and checks the batch flags, reads the records and prints the plan.
-fn plan(args: &Args, units: AccelUnits) -> Result<Plan> {
-    let paths = expand_records(&args.records)?;
+fn plan(args: &Args, reading: &ReadOptions) -> Result<Plan> {
+    let paths = super::sim_records::expand_records(&args.records)?;
     let scales = if args.scales.is_empty() {
         vec![1.0]
     } else {
@@ -87,9 +57,14 @@ fn plan(args: &Args, units: AccelUnits) -> Result<Plan> {
         .iter()
         .map(|p| BatchRecord {
             name: p.display().to_string(),
-            record: Record::from_path(p, units).map_err(|e| e.to_string()),
+            record: Record::from_path_with(p, reading).map_err(|e| e.to_string()),
         })
         .collect();
+    for r in &records {
+        if let Ok(rec) = &r.record {
+            eprintln!("{}", ComponentInfo::of("y", rec).line());
+        }
+    }
     pounding::sim::batch::validate_lists(&records, &scales).map_err(|e| anyhow!("{e}"))?;
     let mut pool = rayon::ThreadPoolBuilder::new();
     if let Some(n) = args.threads {
@@ -99,16 +74,21 @@ fn plan(args: &Args, units: AccelUnits) -> Result<Plan> {
     let total = records.len() * scales.len();
     let todo = (0..total).filter(|&i| shard.contains(i)).count();
     eprintln!(
-        "batch: {} records x {} scales = {} runs{} on {} threads",
-        records.len(),
-        scales.len(),
-        total,
+        "batch: {} x {} = {}{} on {}",
+        count(records.len(), "record"),
+        count(scales.len(), "scale"),
+        count(total, "run"),
         if shard == Shard::ALL {
             String::new()
         } else {
-            format!(" (shard {}/{}: {todo} runs)", shard.index, shard.count)
+            format!(
+                " (shard {}/{}: {})",
+                shard.index,
+                shard.count,
+                count(todo, "run")
+            )
         },
-        pool.current_num_threads()
+        count(pool.current_num_threads(), "thread")
     );
     // indicatif draws nothing when stderr is not a terminal.
     let pb = ProgressBar::with_draw_target(Some(todo as u64), ProgressDrawTarget::stderr());
@@ -163,10 +143,10 @@ pub fn run(
     args: &Args,
     base: &SimProblem,
     settings: &SimSettings,
-    units: AccelUnits,
+    reading: &ReadOptions,
     t_start: Instant,
 ) -> Result<ExitCode> {
-    let plan = plan(args, units)?;
+    let plan = plan(args, reading)?;
     let (rows, runs_secs) = execute(&plan, base, settings)?;
     let curves = curves(&plan.records, &rows, |m: &BatchOutcome| {
         let m = &m.summary;
@@ -219,8 +199,13 @@ fn execute<P: BatchProblem>(
 /// the same runs, flags, files and exit codes as the two-deck batch; `batch.csv` has the
 /// bridge's columns ([`bridge_batch_csv`]) and `batch.png` shows the largest response over the
 /// joints and segments, with the smallest seat length of the bridge dashed.
-pub fn run_bridge(args: &Args, setup: &BridgeSetup, t_start: Instant) -> Result<ExitCode> {
-    let plan = plan(args, setup.units)?;
+pub fn run_bridge(
+    args: &Args,
+    setup: &BridgeSetup,
+    reading: &ReadOptions,
+    t_start: Instant,
+) -> Result<ExitCode> {
+    let plan = plan(args, reading)?;
     let base = &setup.problem;
     let (rows, runs_secs) = execute(&plan, base, &setup.settings)?;
     let curves = curves(&plan.records, &rows, |o: &BridgeBatchOutcome| {
@@ -300,8 +285,8 @@ fn report<O>(
         .filter(|r| r.outcome.as_ref().is_ok_and(|o| status(o).1))
         .count();
     eprintln!(
-        "batch: {} runs in {:.2} s, {} unseated, {} failed; outputs in {}",
-        rows.len(),
+        "batch: {} in {:.2} s, {} unseated, {} failed; outputs in {}",
+        count(rows.len(), "run"),
         runs_secs,
         unseated,
         failed.len(),

@@ -18,10 +18,14 @@ use std::time::Instant;
 /// Runs a bridge scenario (single run).
 pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
     let (origin, text) = (sc.origin().to_string(), sc.text().to_string());
-    let setup = super::with_flags(sc, args).build_bridge()?;
+    let sc = super::with_flags(sc, args);
     if !args.records.is_empty() {
-        return super::sim_batch::run_bridge(args, &setup, t_start);
+        let reading = sc.override_reading(args.csv_units)?;
+        let setup = sc.build_bridge()?;
+        return super::sim_batch::run_bridge(args, &setup, &reading, t_start);
     }
+    let setup = sc.build_bridge()?;
+    super::sim_records::print_components(&setup.problem.ground);
     pounding::output::check_output_dir_free(&args.out)?;
     let t_sim = Instant::now();
     let sol = setup.run().map_err(|e| anyhow!("{e}"))?;

@@ -68,6 +68,7 @@ mod harden;
 mod harden_input;
 mod harden_io;
 mod harden_round2;
+mod inputs;
 mod lcp;
 mod physics_check;
 mod shapes;

@@ -27,6 +27,7 @@ mod lcp;
 mod lemke_degenerate;
 mod physics_check;
 mod props;
+mod record_formats;
 mod shapes;
 mod sim;
 mod sim_bearings;

@@ -239,8 +239,10 @@ pub fn summary_json(setup: &SimSetup, sol: &SimSolution) -> serde_json::Value {
     out
 }
 
-/// The `ground_motion` object of a `summary.json`: the records as written, scales, incidence and
-/// the scaled PGA of each component.
+/// The `ground_motion` object of a `summary.json`: the records as written, scales, incidence,
+/// the scaled PGA of each component, and `components` (y then x, the present ones): each
+/// record as read ([`crate::ground_motion::ComponentInfo`]: record, units, dt_s (null if
+/// irregular), npts, duration_s, pga_g before the scale).
 pub(crate) fn ground_json(
     records: &[String; 2],
     gm: &crate::ground_motion::GroundMotion,
@@ -254,6 +256,15 @@ pub(crate) fn ground_json(
         "incidence_deg": json_float(gm.incidence * DEG),
         "pga_y_mps2": json_float(pga(&gm.along_y, gm.scale_y)),
         "pga_x_mps2": json_float(pga(&gm.along_x, gm.scale_x)),
+        "components": gm.components().iter().map(|c| json!({
+            "component": c.component,
+            "record": c.record,
+            "units": c.units,
+            "dt_s": c.dt.map_or(serde_json::Value::Null, json_float),
+            "npts": c.npts,
+            "duration_s": json_float(c.duration),
+            "pga_g": json_float(c.pga_g),
+        })).collect::<Vec<_>>(),
     })
 }
 

@@ -3,12 +3,11 @@
 
 use super::contact::{FileKeys, build_contact};
 use super::error::{ParamKey, ScenarioError, Section};
+pub(super) use super::ground::build_ground;
 use super::sections::{DecksSec, Raw};
 use super::{Scenario, SimSetup, Src};
 use crate::geometry::GeometryError;
-use crate::ground_motion::{
-    AccelUnits, EL_CENTRO_180_AT2, EL_CENTRO_270_AT2, GroundMotion, GroundMotionError, Record,
-};
+use crate::ground_motion::{GroundMotion, GroundMotionError};
 use crate::math::{Real, Vector};
 use crate::output::float_token;
 use crate::pair::SArrangement;
@@ -23,9 +22,6 @@ const fn decks(key: &'static str) -> ParamKey {
 }
 pub(super) const fn time(key: &'static str) -> ParamKey {
     ParamKey::new(Section::Time, key)
-}
-const fn ground(key: &'static str) -> ParamKey {
-    ParamKey::new(Section::GroundMotion, key)
 }
 
 /// A library error located at the scenario key that sets the parameter it names.
@@ -183,49 +179,6 @@ fn deck_shapes(src: &Src, d: &DecksSec) -> Result<Option<[DeckShape; 2]>, Scenar
             &[decks("shape")],
         )),
     }
-}
-
-/// A record named by `[ground_motion] key`: `none`, `builtin:…` or a path relative to the
-/// scenario file.
-fn load_record(
-    src: &Src,
-    spec: &str,
-    key: &'static str,
-    units: AccelUnits,
-) -> Result<Option<Record>, ScenarioError> {
-    let spec_t = spec.trim();
-    if spec_t.eq_ignore_ascii_case("none") {
-        return Ok(None);
-    }
-    let at = || src.at(ground(key));
-    if let Some(b) = spec_t.strip_prefix("builtin:") {
-        let (text, name) = match b {
-            "ELC180" => (EL_CENTRO_180_AT2, "RSN6_IMPVALL.I_I-ELC180-hor1.AT2"),
-            "ELC270" => (EL_CENTRO_270_AT2, "RSN6_IMPVALL.I_I-ELC270-hor2.AT2"),
-            other => {
-                return Err(src.key_error(
-                    format!(
-                        "unknown built-in record {other:?} in {} (use builtin:ELC180 or \
-                         builtin:ELC270)",
-                        at()
-                    ),
-                    &[ground(key)],
-                ));
-            }
-        };
-        return Record::from_at2_str(text, name)
-            .map(Some)
-            .map_err(|error| ScenarioError::Record {
-                at: at(),
-                error: Box::new(error),
-            });
-    }
-    Record::from_path(&src.dir.join(spec_t), units)
-        .map(Some)
-        .map_err(|error| ScenarioError::Record {
-            at: at(),
-            error: Box::new(error),
-        })
 }
 
 /// The model of `[decks]`, `[joint]`, `[abutments]`, `[bearings]` and `[contact]`.
@@ -421,57 +374,6 @@ fn dt_beyond_duration(
         ),
         at: vec![dt_at],
     }
-}
-
-/// The ground motion of `[ground_motion]` and the overrides, with the record names and units.
-pub(super) fn build_ground(
-    sc: &Scenario,
-) -> Result<(GroundMotion, [String; 2], AccelUnits), ScenarioError> {
-    let src = &sc.src;
-    let g = &sc.raw.ground_motion;
-    let units = AccelUnits::from_name(&g.csv_units).ok_or_else(|| {
-        src.key_error(
-            format!(
-                "invalid csv_units {:?} at {}: use \"g\" or \"m/s2\"",
-                g.csv_units,
-                src.at(ground("csv_units"))
-            ),
-            &[ground("csv_units")],
-        )
-    })?;
-    let (along_y, along_x, records) = match &sc.record {
-        None if sc.batch => (None, None, ["batch".into(), "none".into()]),
-        Some((p, u)) => {
-            let r = Record::from_path(p, u.unwrap_or(units)).map_err(|error| {
-                ScenarioError::RecordOverride {
-                    path: p.display().to_string(),
-                    error: Box::new(error),
-                }
-            })?;
-            (Some(r), None, [p.display().to_string(), "none".into()])
-        }
-        None => (
-            load_record(src, &g.record_y, "record_y", units)?,
-            load_record(src, &g.record_x, "record_x", units)?,
-            [g.record_y.clone(), g.record_x.clone()],
-        ),
-    };
-    let mult = match sc.scale {
-        Some(s) if s.is_finite() => s,
-        Some(s) => return Err(ScenarioError::Scale(s)),
-        None => 1.0,
-    };
-    let ground = GroundMotion {
-        along_y,
-        scale_y: g.scale_y * mult,
-        along_x,
-        scale_x: g.scale_x * mult,
-        incidence: g.incidence_deg.to_radians(),
-    };
-    ground
-        .validate()
-        .map_err(|e| sim_error(src, SimError::from(e)))?;
-    Ok((ground, records, units))
 }
 
 /// [`Scenario::build`].

@@ -18,6 +18,7 @@ mod bridge;
 mod build;
 mod contact;
 mod error;
+mod ground;
 mod sections;
 mod site_contact;
 
@@ -84,6 +85,7 @@ pub struct Scenario {
     law: Option<String>,
     compared: Option<Vec<String>>,
     record: Option<(PathBuf, Option<AccelUnits>)>,
+    record_dt: Option<Real>,
     scale: Option<Real>,
     batch: bool,
     /// A bridge of `[[segment]]`s (then `raw` holds only its `[ground_motion]`, `[time]` and
@@ -155,6 +157,7 @@ impl Scenario {
             law: None,
             compared: None,
             record: None,
+            record_dt: None,
             scale: None,
             batch: false,
             bridge,

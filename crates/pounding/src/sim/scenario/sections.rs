@@ -243,6 +243,7 @@ pub(crate) struct GroundSec {
     pub(crate) scale_x: f64,
     pub(crate) incidence_deg: f64,
     pub(crate) csv_units: String,
+    pub(crate) record_dt: Option<f64>,
 }
 impl Default for GroundSec {
     fn default() -> Self {
@@ -253,6 +254,7 @@ impl Default for GroundSec {
             scale_x: 1.0,
             incidence_deg: 0.0,
             csv_units: "g".into(),
+            record_dt: None,
         }
     }
 }

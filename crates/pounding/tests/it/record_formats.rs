@@ -1,0 +1,356 @@
+//! Record formats (issue 12, "inputs that cannot be misread"): the format of a file is decided
+//! from its extension and content in one place (`ground_motion::format::detect`); each format
+//! reads the same motion to the same accelerations; units and sample intervals are never
+//! silently reinterpreted.
+
+use pounding::ground_motion::format::detect;
+use pounding::ground_motion::{
+    ACCEPTED_FORMATS, AccelUnits, EL_CENTRO_180_AT2, G0, GroundMotionError, ReadOptions, Record,
+    RecordFormat,
+};
+use std::path::{Path, PathBuf};
+
+/// The first `n` samples of the embedded El Centro 180 record, in g, and its dt (0.01 s).
+fn elc(n: usize) -> Vec<f64> {
+    EL_CENTRO_180_AT2
+        .lines()
+        .skip(4)
+        .flat_map(|l| l.split_whitespace().map(|t| t.parse::<f64>().unwrap()))
+        .take(n)
+        .collect()
+}
+
+fn dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("pounding-recfmt-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn write(d: &Path, name: &str, text: &str) -> PathBuf {
+    let p = d.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+fn opts(units: AccelUnits, dt: Option<f64>) -> ReadOptions {
+    ReadOptions {
+        units,
+        units_from: "test".into(),
+        dt,
+        dt_from: "--record-dt".into(),
+    }
+}
+
+fn msg(e: GroundMotionError) -> String {
+    e.to_string()
+}
+
+#[test]
+fn every_text_format_of_one_motion_reads_the_same_accelerations_as_the_at2() {
+    let g = elc(500);
+    let d = dir("same");
+    let at2 = format!(
+        "PEER NGA STRONG MOTION DATABASE RECORD\nx\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS=  {}, DT=   .0100 SEC\n{}\n",
+        g.len(),
+        g.iter()
+            .map(|v| format!("{v:e}"))
+            .collect::<Vec<_>>()
+            .join("\n")
+    );
+    let at2_cm = at2.replace("UNITS OF G", "UNITS OF CM/S/S");
+    let cm: Vec<String> = g.iter().map(|v| format!("{}", v * G0 * 100.0)).collect();
+    let at2_cm = format!(
+        "{}\n{}\n",
+        at2_cm.lines().take(4).collect::<Vec<_>>().join("\n"),
+        cm.join("  ")
+    );
+    let t = |i: usize| format!("{}", i as f64 / 100.0);
+    let csv: String = std::iter::once("t_s,a_g\n".to_string())
+        .chain(g.iter().enumerate().map(|(i, v)| format!("{},{v}\n", t(i))))
+        .collect();
+    let cols: String = std::iter::once("# t [s]   a [g]\n".to_string())
+        .chain(
+            g.iter()
+                .enumerate()
+                .map(|(i, v)| format!("{}  {v}\n", t(i))),
+        )
+        .collect();
+    let cols_ms2: String = g
+        .iter()
+        .enumerate()
+        .map(|(i, v)| format!("{}\t{}\n", t(i), v * G0))
+        .collect();
+    // OpenSees Path -dt file: 5 values a line, last line shorter
+    let seq: String = g
+        .chunks(5)
+        .map(|c| {
+            c.iter()
+                .map(|v| format!("{v}"))
+                .collect::<Vec<_>>()
+                .join(" ")
+                + "\n"
+        })
+        .collect();
+    let reads = [
+        (
+            write(&d, "r.AT2", &at2),
+            opts(AccelUnits::G, None),
+            RecordFormat::At2,
+            "G header",
+        ),
+        (
+            write(&d, "cm.at2", &at2_cm),
+            opts(AccelUnits::G, None),
+            RecordFormat::At2,
+            "CM/S/S header",
+        ),
+        (
+            write(&d, "r.csv", &csv),
+            opts(AccelUnits::G, None),
+            RecordFormat::Csv,
+            "g (test)",
+        ),
+        (
+            write(&d, "r.txt", &cols),
+            opts(AccelUnits::G, None),
+            RecordFormat::Columns,
+            "g (test)",
+        ),
+        (
+            write(&d, "ms2.dat", &cols_ms2),
+            opts(AccelUnits::MetresPerSecondSquared, None),
+            RecordFormat::Columns,
+            "m/s2 (test)",
+        ),
+        (
+            write(&d, "seq.txt", &seq),
+            opts(AccelUnits::G, Some(0.01)),
+            RecordFormat::Sequence,
+            "g (test)",
+        ),
+    ];
+    let reference = Record::from_path_with(&reads[0].0, &reads[0].1).unwrap();
+    assert_eq!(reference.times().len(), 500);
+    for (p, o, fmt, units) in &reads {
+        let text = std::fs::read_to_string(p).unwrap();
+        assert_eq!(
+            detect(p, &text, o.dt.is_some()).unwrap(),
+            *fmt,
+            "{}",
+            p.display()
+        );
+        let r = Record::from_path_with(p, o).unwrap();
+        assert_eq!(r.units(), *units, "{}", p.display());
+        assert_eq!(r.dt(), Some(0.01), "{}", p.display());
+        assert_eq!(r.times().len(), 500);
+        for (k, (a, b)) in r.values().iter().zip(reference.values()).enumerate() {
+            assert!(
+                (a - b).abs() <= 1e-12 * (1.0 + b.abs()),
+                "{} [{k}]: {a} vs {b}",
+                p.display()
+            );
+            assert!((r.times()[k] - reference.times()[k]).abs() < 1e-12);
+        }
+        assert!((r.pga() - reference.pga()).abs() <= 1e-12 * reference.pga());
+    }
+}
+
+#[test]
+fn at2_header_variants_are_read() {
+    let head = "PEER\nev\nACCELERATION TIME SERIES IN UNITS OF G\n";
+    for line4 in [
+        "NPTS= 1559, DT= .02 SEC",
+        "NPTS=  4, DT=   .0200 SEC,",
+        "npts = 4 , dt = 0.02 sec",
+        "NPTS  =   4,   DT  =  .02  SEC",
+        "     4    .0200    NPTS, DT",
+        "NPTS=4,DT=.02SEC",
+    ] {
+        let n = if line4.contains("1559") { 1559 } else { 4 };
+        let vals = vec!["1.0D-02"; n].join(" ");
+        let text = format!("{head}{line4}\n{vals}\n");
+        let r = Record::from_at2_str(&text, "v.AT2");
+        let r = match r {
+            Ok(r) => r,
+            Err(e) if line4 == "NPTS=4,DT=.02SEC" => {
+                // a unit glued to the number is refused with the line, not misread
+                assert!(msg(e).contains("v.AT2:4"));
+                continue;
+            }
+            Err(e) => panic!("{line4:?}: {e}"),
+        };
+        assert_eq!(r.times().len(), n, "{line4:?}");
+        assert_eq!(r.dt(), Some(0.02), "{line4:?}");
+        assert!(
+            (r.values()[0] - 0.01 * G0).abs() < 1e-15,
+            "Fortran D exponent: {line4:?}"
+        );
+    }
+}
+
+#[test]
+fn velocity_and_displacement_files_are_refused_by_extension_and_header() {
+    let d = dir("vel");
+    let at2 =
+        "PEER\nev\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS= 2, DT= .01 SEC\n0 1\n".to_string();
+    for ext in ["VT2", "dt2"] {
+        let p = write(&d, &format!("r.{ext}"), &at2);
+        let e = msg(Record::from_path_with(&p, &ReadOptions::default()).unwrap_err());
+        assert!(
+            e.contains(&format!("r.{ext}:1")) && e.contains("velocity or displacement"),
+            "{e}"
+        );
+    }
+    let p = write(&d, "v.AT2", &at2.replace("ACCELERATION", "VELOCITY"));
+    let e = msg(Record::from_path_with(&p, &ReadOptions::default()).unwrap_err());
+    assert!(e.contains("v.AT2:3") && e.contains("VELOCITY"), "{e}");
+}
+
+#[test]
+fn one_column_without_dt_asks_for_record_dt() {
+    let d = dir("onecol");
+    let p = write(&d, "a.txt", "# accelerations\n0.1\n0.2\n-0.1\n");
+    let e = msg(Record::from_path_with(&p, &ReadOptions::default()).unwrap_err());
+    assert!(
+        e.contains("a.txt:2") && e.contains("record_dt") && e.contains("--record-dt"),
+        "{e}"
+    );
+    // also a .csv of one column
+    let p = write(&d, "a.csv", "0.1\n0.2\n");
+    let e = msg(Record::from_path_with(&p, &ReadOptions::default()).unwrap_err());
+    assert!(e.contains("a.csv:1") && e.contains("record_dt"), "{e}");
+    let r = Record::from_path_with(&p, &opts(AccelUnits::G, Some(0.005))).unwrap();
+    assert_eq!(r.times(), &[0.0, 0.005]);
+    assert_eq!(r.dt(), Some(0.005));
+}
+
+#[test]
+fn a_dt_for_a_file_with_its_own_times_is_refused_not_ignored() {
+    let d = dir("dtown");
+    let at2 = "PEER\nev\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS= 2, DT= .01 SEC\n0 1\n";
+    for (name, text) in [
+        ("r.AT2", at2),
+        ("r.csv", "t,a\n0,0.1\n0.01,0.2\n"),
+        ("r.txt", "0 0.1\n0.01 0.2\n0.02 0.3\n"),
+    ] {
+        let p = write(&d, name, text);
+        let e = msg(Record::from_path_with(&p, &opts(AccelUnits::G, Some(0.02))).unwrap_err());
+        assert!(e.contains(&format!("{name}:1")), "{e}");
+        assert!(e.contains("--record-dt") && e.contains("remove it"), "{e}");
+    }
+    // a sequence of two accelerations a line that do not increase is a sequence
+    let p = write(&d, "s.txt", "0.1 -0.2\n-0.3 0.1\n");
+    let r = Record::from_path_with(&p, &opts(AccelUnits::G, Some(0.02))).unwrap();
+    assert_eq!(r.times().len(), 4);
+}
+
+#[test]
+fn an_unrecognised_file_lists_the_accepted_formats() {
+    let d = dir("unrec");
+    for (name, text, line) in [
+        ("s.toml", "[decks]\nshape = \"straight\"\n", 1),
+        ("x.txt", "# comment\ntime accel\n0 0.1\n", 2),
+        ("e.txt", "\n# only comments\n", 1),
+    ] {
+        let p = write(&d, name, text);
+        let e = msg(Record::from_path_with(&p, &ReadOptions::default()).unwrap_err());
+        assert!(e.contains(&format!("{name}:{line}")), "{e}");
+        assert!(e.contains(ACCEPTED_FORMATS), "{e}");
+    }
+    // three columns without a dt: not silently taken as t a
+    let p = write(&d, "three.txt", "0 1 2\n");
+    let e = msg(Record::from_path_with(&p, &ReadOptions::default()).unwrap_err());
+    assert!(
+        e.contains("3 values a line") && e.contains(ACCEPTED_FORMATS),
+        "{e}"
+    );
+    // a later line that breaks the two-column layout names its line
+    let p = write(&d, "bad.txt", "0 1\n0.01 2\n0.02\n");
+    let e = msg(Record::from_path_with(&p, &ReadOptions::default()).unwrap_err());
+    assert!(
+        e.contains("bad.txt:3") && e.contains("two whitespace-separated"),
+        "{e}"
+    );
+}
+
+#[test]
+fn irregular_times_have_no_dt() {
+    let r = Record::new("r", vec![0.0, 0.01, 0.03], vec![0.0, 1.0, 0.0]).unwrap();
+    assert_eq!(r.dt(), None);
+    let r = Record::new("r", vec![0.0, 0.1, 0.2, 0.3], vec![0.0; 4]).unwrap();
+    assert_eq!(r.dt(), Some(0.1));
+}
+
+mod scenario {
+    use super::*;
+    use pounding::sim::scenario::Scenario;
+
+    fn load(d: &Path, toml: &str) -> Result<pounding::sim::scenario::SimSetup, String> {
+        let p = write(d, "s.toml", toml);
+        Scenario::load(&p)
+            .and_then(|s| s.build())
+            .map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn record_dt_reads_a_one_column_scenario_record_in_csv_units() {
+        let d = dir("sc-dt");
+        let g = elc(300);
+        let seq: String = g.iter().map(|v| format!("{}\n", v * G0)).collect();
+        write(&d, "a.txt", &seq);
+        let s = load(
+            &d,
+            "[ground_motion]\nrecord_y = \"a.txt\"\nrecord_x = \"none\"\nrecord_dt = 0.01\ncsv_units = \"m/s2\"\n",
+        )
+        .unwrap();
+        let c = s.problem.ground.components();
+        assert_eq!(c.len(), 1);
+        assert_eq!(c[0].units, "m/s2 (csv_units)");
+        assert_eq!((c[0].npts, c[0].dt), (300, Some(0.01)));
+        let peak = g.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        assert!(
+            (c[0].pga_g - peak).abs() < 1e-12,
+            "{} vs {peak}",
+            c[0].pga_g
+        );
+    }
+
+    #[test]
+    fn record_dt_errors_name_the_key_and_line() {
+        let d = dir("sc-dt-err");
+        write(&d, "a.txt", "0.1\n0.2\n");
+        write(&d, "r.csv", "0,0.1\n0.01,0.2\n");
+        for (toml, want) in [
+            // one column, no dt
+            (
+                "[ground_motion]\nrecord_y = \"a.txt\"\nrecord_x = \"none\"\n",
+                vec!["a.txt:1", "record_dt"],
+            ),
+            // dt for the built-in record
+            (
+                "[ground_motion]\nrecord_dt = 0.01\n",
+                vec!["record_dt", "s.toml:2", "built-in"],
+            ),
+            // dt for a CSV with its own times
+            (
+                "[ground_motion]\nrecord_y = \"r.csv\"\nrecord_x = \"none\"\nrecord_dt = 0.01\n",
+                vec!["r.csv:1", "s.toml:4", "remove it"],
+            ),
+            // not a positive interval
+            (
+                "[ground_motion]\nrecord_y = \"a.txt\"\nrecord_x = \"none\"\nrecord_dt = -0.01\n",
+                vec!["record_dt", "s.toml:4", "> 0"],
+            ),
+            (
+                "[ground_motion]\nrecord_y = \"none\"\nrecord_x = \"none\"\nrecord_dt = 0.01\n[time]\nduration = 1.0\n",
+                vec!["record_dt", "none"],
+            ),
+        ] {
+            let e = load(&d, toml).unwrap_err();
+            for w in want {
+                assert!(e.contains(w), "{toml:?}: want {w:?} in {e}");
+            }
+        }
+    }
+}
