@@ -125,7 +125,10 @@ pub fn run(args: Args) -> Result<ExitCode> {
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
     wr("history.csv", history_csv(&setup.problem, &sol).as_bytes())?;
-    wr("impacts.csv", impacts_csv(&sol).as_bytes())?;
+    wr(
+        "impacts.csv",
+        impacts_csv(&setup.problem.model, &sol).as_bytes(),
+    )?;
     wr("summary.json", summary_json_text(&setup, &sol).as_bytes())?;
     sim_plots::write_all(out, &setup.problem, &sol).map_err(|e| anyhow!("plotting: {e}"))?;
     let write_secs = t_write.elapsed().as_secs_f64();

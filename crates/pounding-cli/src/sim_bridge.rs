@@ -52,7 +52,10 @@ pub fn run(args: &Args, mut sc: Scenario, t_start: Instant) -> Result<ExitCode> 
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
     wr("history.csv", bridge_history_csv(&setup, &sol).as_bytes())?;
-    wr("impacts.csv", bridge_impacts_csv(&sol).as_bytes())?;
+    wr(
+        "impacts.csv",
+        bridge_impacts_csv(&setup.problem.model, &sol).as_bytes(),
+    )?;
     wr(
         "summary.json",
         bridge_summary_json_text(&setup, &sol).as_bytes(),

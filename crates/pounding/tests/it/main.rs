@@ -37,6 +37,7 @@ mod sim_bridge_plan;
 mod sim_bridge_reference;
 mod sim_compliance;
 mod sim_friction;
+mod sim_outputs;
 mod sim_scenario;
 mod sim_shapes;
 mod study;

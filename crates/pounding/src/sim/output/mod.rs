@@ -130,22 +130,95 @@ pub(crate) fn impact_numbers(r: &super::ImpactRecord) -> String {
     .join(",")
 }
 
-/// `impacts.csv`: one row per impact of the rigid contact (time, contact, mode, relative
-/// velocities before and after, impulses, dissipated energy).
-pub fn impacts_csv(sol: &SimSolution) -> String {
-    let mut s = String::from(
+/// Columns appended to `impacts.csv` for a compliance law ([`super::ImpactPulse`]).
+pub const PULSE_COLUMNS: &str = "peak_force_n,duration_s,max_penetration_m";
+/// Columns appended to `impacts.csv` for the rigid law
+/// ([`crate::contact_law::estimate::rigid_peak_force`] with the default `k_h`).
+pub const ESTIMATE_COLUMNS: &str = "peak_force_estimate_n,contact_time_estimate_s";
+
+/// The appended cells of an `impacts.csv` row: the pulse of a compliance law, or (rigid law,
+/// `rigid`) the peak-force estimate from the impulse with restitution `eps`.
+pub(crate) fn pulse_cells(r: &super::ImpactRecord, rigid: bool, eps: Real) -> String {
+    if rigid {
+        let e = rigid_estimate(r, eps);
+        return format!(
+            "{},{}",
+            float_token(e.peak_force),
+            float_token(e.contact_time)
+        );
+    }
+    let p = r.pulse.unwrap_or(super::ImpactPulse {
+        peak_force: Real::NAN,
+        duration: Real::NAN,
+        max_penetration: Real::NAN,
+    });
+    [p.peak_force, p.duration, p.max_penetration]
+        .map(float_token)
+        .join(",")
+}
+
+/// The peak-force estimate of a rigid impact record at one corner contact: the default joint
+/// `k_h` shared by the site's two corner contacts (`k_h / 2` per corner, as the compliance laws
+/// share a joint's law, [`crate::contact_law::sharing`]).
+pub(crate) fn rigid_estimate(
+    r: &super::ImpactRecord,
+    eps: Real,
+) -> crate::contact_law::estimate::PeakForceEstimate {
+    crate::contact_law::estimate::rigid_peak_force(
+        r.impulse_n,
+        r.gamma_n_pre,
+        eps,
+        0.5 * crate::contact_law::registry::default_k_h(),
+    )
+}
+
+/// `summary.json`'s `peak_force_estimate_n` of a rigid run: the largest over the impacts and
+/// sites of the sum of the site's corner estimates in that impact (a rigid impact is one step, so
+/// its corner pulses coincide); `null` without impacts.
+pub(crate) fn peak_estimate_json<'a>(
+    records: impl Iterator<Item = (&'a super::ImpactRecord, Real)>,
+) -> serde_json::Value {
+    let mut sums = std::collections::BTreeMap::<(usize, bool, usize), Real>::new();
+    for (r, eps) in records {
+        let f = rigid_estimate(r, eps).peak_force;
+        if !f.is_nan() {
+            let key = (
+                r.impact,
+                matches!(r.contact, super::SimContact::Joint(_)),
+                r.site,
+            );
+            *sums.entry(key).or_insert(0.0) += f;
+        }
+    }
+    sums.into_values()
+        .reduce(Real::max)
+        .map_or(serde_json::Value::Null, json_float)
+}
+
+/// `impacts.csv`: one row per impacting contact (time, contact, mode, relative velocities before
+/// and after, impulses, dissipated energy), then [`PULSE_COLUMNS`] (compliance law) or
+/// [`ESTIMATE_COLUMNS`] (rigid law).
+pub fn impacts_csv(model: &SimModel, sol: &SimSolution) -> String {
+    let rigid = matches!(model.contact, JointContact::Rigid);
+    let mut s = format!(
         "impact,t_s,contact,mode,gamma_n_pre_mps,gamma_t_pre_mps,gamma_n_post_mps,gamma_t_post_mps,\
-         impulse_n_Ns,impulse_t_Ns,energy_dissipated_J\n",
+         impulse_n_Ns,impulse_t_Ns,energy_dissipated_J,{}\n",
+        if rigid {
+            ESTIMATE_COLUMNS
+        } else {
+            PULSE_COLUMNS
+        }
     );
     for r in &sol.impacts {
         let f = impact_numbers(r);
         s.push_str(&format!(
-            "{},{},{},{},{}\n",
+            "{},{},{},{},{},{}\n",
             r.impact,
             float_token(r.time),
             r.contact.name(),
             r.mode.name(),
-            f
+            f,
+            pulse_cells(r, rigid, model.restitution)
         ));
     }
     s
@@ -230,6 +303,10 @@ pub fn summary_json(setup: &SimSetup, sol: &SimSolution) -> serde_json::Value {
     }
     add_run_keys(&mut out, &RunKeys::of_pair(sol));
     add_compliance_summary(&mut out, m, sol);
+    if matches!(m.contact, JointContact::Rigid) {
+        out["peak_force_estimate_n"] =
+            peak_estimate_json(sol.impacts.iter().map(|r| (r, m.restitution)));
+    }
     out
 }
 
