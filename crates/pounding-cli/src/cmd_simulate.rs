@@ -116,6 +116,11 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let sol = simulate(&setup.problem, &setup.settings).map_err(|e| anyhow!("{e}"))?;
     let sim_secs = t_sim.elapsed().as_secs_f64();
     warn_time_step(&sol);
+    if let Some(w) =
+        pounding::sim::output::warnings_message(&pounding::sim::output::run_warnings(&sol))
+    {
+        eprintln!("{w}");
+    }
 
     let out = &args.out;
     let _lock = lock_and_clear(out)?;

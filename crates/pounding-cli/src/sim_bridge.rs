@@ -32,6 +32,10 @@ pub fn run(args: &Args, mut sc: Scenario, t_start: Instant) -> Result<ExitCode> 
     let t_sim = Instant::now();
     let sol = setup.run().map_err(|e| anyhow!("{e}"))?;
     let sim_secs = t_sim.elapsed().as_secs_f64();
+    let warnings = pounding::sim::output::bridge_run_warnings(&sol);
+    if let Some(w) = pounding::sim::output::warnings_message(&warnings) {
+        eprintln!("{w}");
+    }
     if let Some(a) = &sol.time_step_advice
         && !a.adequate
     {

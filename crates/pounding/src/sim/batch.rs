@@ -54,6 +54,10 @@ pub struct BatchOutcome {
     pub lcp_enumeration_fallbacks: usize,
     /// LCP solves that failed.
     pub lcp_failures: usize,
+    /// Compliance laws: steps whose Newton iteration did not converge.
+    pub newton_failures: usize,
+    /// Compliance laws: the time-step check of the contact (`None` for rigid contact).
+    pub time_step_advice: Option<crate::contact_law::timestep::TimeStepAdvice>,
 }
 
 impl From<SimSolution> for BatchOutcome {
@@ -66,6 +70,8 @@ impl From<SimSolution> for BatchOutcome {
             lcp_solves: s.lcp_solves,
             lcp_enumeration_fallbacks: s.lcp_enumeration_fallbacks,
             lcp_failures: s.lcp_failures,
+            newton_failures: s.newton_failures,
+            time_step_advice: s.time_step_advice,
         }
     }
 }
@@ -299,6 +305,8 @@ pub struct BridgeBatchOutcome {
     pub lcp_failures: usize,
     /// Newton failures (compliance laws).
     pub newton_failures: usize,
+    /// Compliance laws: the time-step check of the contact (`None` for rigid contact).
+    pub time_step_advice: Option<crate::contact_law::timestep::TimeStepAdvice>,
 }
 
 impl From<BridgeSolution> for BridgeBatchOutcome {
@@ -313,6 +321,7 @@ impl From<BridgeSolution> for BridgeBatchOutcome {
             lcp_enumeration_fallbacks: s.lcp_enumeration_fallbacks,
             lcp_failures: s.lcp_failures,
             newton_failures: s.newton_failures,
+            time_step_advice: s.time_step_advice,
         }
     }
 }

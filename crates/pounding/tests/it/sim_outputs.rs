@@ -133,3 +133,51 @@ fn rigid_peak_force_estimate_against_a_hertz_compliance_run() {
         );
     }
 }
+
+/// `batch.csv`'s appended columns (before `error`, which stays last): the compliance run's peak
+/// contact force, steps per contact and Newton failures equal the single run's values; a rigid
+/// run leaves them empty.
+#[test]
+fn batch_csv_appends_force_time_step_and_newton_columns() {
+    use pounding::sim::batch::{BatchOutcome, BatchRow};
+    use pounding::sim::output::{BATCH_HEADER, BATCH_TAIL, batch_csv};
+    let head: Vec<&str> = BATCH_HEADER.split(',').collect();
+    assert_eq!(head.last(), Some(&"error"));
+    assert!(BATCH_HEADER.ends_with(&format!(",lcp_failures,{BATCH_TAIL},error")));
+    let comp = head_on(
+        compliance(LinearSpring::new(1.0e9).unwrap().into()),
+        1.0,
+        1e-4,
+        0.1,
+    );
+    let rigid = head_on(JointContact::Rigid, 1.0, 1e-4, 0.01);
+    let row = |index: usize, sol: &SimSolution| BatchRow {
+        index,
+        record_index: index,
+        record: format!("r{index}"),
+        scale_index: 0,
+        scale: 1.0,
+        pga: 1.0,
+        outcome: Ok(BatchOutcome::from(sol.clone())),
+    };
+    let csv = batch_csv(&[row(0, &comp), row(1, &rigid)]);
+    let col = |line: &str, name: &str| -> String {
+        let i = head.iter().position(|h| *h == name).unwrap();
+        line.split(',').nth(i).unwrap().to_string()
+    };
+    let lines: Vec<&str> = csv.lines().collect();
+    assert!(lines.iter().all(|l| l.split(',').count() == head.len()));
+    let c = lines[1];
+    let peak: f64 = col(c, "peak_contact_force_n").parse().unwrap();
+    assert_eq!(peak, comp.summary.peak_contact_force.unwrap());
+    let spc: f64 = col(c, "steps_per_contact").parse().unwrap();
+    assert_eq!(spc, comp.time_step_advice.unwrap().steps_per_contact);
+    assert!(
+        (spc - 702.48).abs() < 0.01,
+        "T_c / dt = π √(m_eff/k) / dt: {spc}"
+    );
+    assert_eq!(col(c, "newton_failures"), "0");
+    for name in BATCH_TAIL.split(',') {
+        assert_eq!(col(lines[2], name), "", "rigid run: {name}");
+    }
+}

@@ -133,6 +133,18 @@ fn is_rigid(m: &BridgeModel) -> bool {
         .is_none_or(|c| matches!(c, JointContact::Rigid))
 }
 
+/// The bridge run's warnings ([`super::energy_warnings`], contacts named `site/contact` as the
+/// `site` and `contact` columns of `impacts.csv`).
+pub fn bridge_run_warnings(sol: &BridgeSolution) -> Vec<super::RunWarning> {
+    super::energy_warnings(&sol.impacts, |r| {
+        format!(
+            "{}/{}",
+            site_name(&r.contact, r.site),
+            corner_name(&r.contact)
+        )
+    })
+}
+
 /// `impacts.csv` of a bridge: one row per impacting contact (as the two-deck file, with the
 /// site and the corner in separate columns), then [`super::PULSE_COLUMNS`] (compliance laws)
 /// or [`super::ESTIMATE_COLUMNS`] (rigid law, with each site's `ε_N`).
@@ -282,6 +294,10 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
             ],
         },
     );
+    out["warnings"] = bridge_run_warnings(sol)
+        .iter()
+        .map(super::RunWarning::json)
+        .collect();
     if !compliant {
         out["peak_force_estimate_n"] =
             super::peak_estimate_json(sol.impacts.iter().map(|r| (r, site_restitution(m, r))));

@@ -16,9 +16,10 @@ mod batch;
 mod bridge;
 mod bridge_plan;
 mod compare;
-pub use batch::{BATCH_HEADER, batch_csv, bridge_batch_csv, bridge_batch_header};
+pub use batch::{BATCH_HEADER, BATCH_TAIL, batch_csv, bridge_batch_csv, bridge_batch_header};
 pub use bridge::{
-    bridge_history_csv, bridge_impacts_csv, bridge_summary_json, bridge_summary_json_text,
+    bridge_history_csv, bridge_impacts_csv, bridge_run_warnings, bridge_summary_json,
+    bridge_summary_json_text,
 };
 pub use bridge_plan::{
     BridgePlan, CornerPaths, bridge_plan, corner_paths, joint_openings, plan_exaggeration,
@@ -224,6 +225,89 @@ pub fn impacts_csv(model: &SimModel, sol: &SimSolution) -> String {
     s
 }
 
+/// Relative tolerance of [`energy_warnings`]: energy created at a contact counts when it exceeds
+/// `1e-6 (|P_N γ_N⁻| + |P_T γ_T⁻|)` of that contact (the energy scale the impulse exchanges),
+/// far above rounding (≈ 1e-16 of it) and below any physical creation by Newton + Coulomb
+/// (a sizeable fraction of it).
+pub const ENERGY_WARNING_TOLERANCE: Real = 1e-6;
+
+/// A run warning: something a user must know although the run completed (`summary.json`'s
+/// `warnings`, also printed on stderr by the CLI).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunWarning {
+    /// What: `contact_energy_created` (a contact's dissipation over an impact was negative).
+    pub kind: &'static str,
+    /// The impact number (`impacts.csv`'s `impact`).
+    pub impact: usize,
+    /// Where (the contact as `impacts.csv` names it; a bridge: `site/contact`).
+    pub contact: String,
+    /// When \[s\] (`impacts.csv`'s `t_s`).
+    pub time: Real,
+    /// How much energy \[J\] (> 0).
+    pub amount: Real,
+}
+
+impl RunWarning {
+    /// The `summary.json` object: `kind`, `impact`, `contact`, `t_s`, `amount_j`.
+    pub fn json(&self) -> serde_json::Value {
+        json!({
+            "kind": self.kind,
+            "impact": self.impact,
+            "contact": self.contact,
+            "t_s": json_float(self.time),
+            "amount_j": json_float(self.amount),
+        })
+    }
+}
+
+/// One `contact_energy_created` warning per impacting contact whose dissipation
+/// `energy_dissipated` is negative beyond [`ENERGY_WARNING_TOLERANCE`]: energy created at that
+/// contact (possible with Newton's law and Coulomb friction with `ε_T = 0`, spec §11; a
+/// compliance law's discretisation could do it with a coarse step). `name` names a record's
+/// contact.
+pub fn energy_warnings(
+    impacts: &[super::ImpactRecord],
+    name: impl Fn(&super::ImpactRecord) -> String,
+) -> Vec<RunWarning> {
+    impacts
+        .iter()
+        .filter(|r| {
+            let scale = (r.impulse_n * r.gamma_n_pre).abs() + (r.impulse_t * r.gamma_t_pre).abs();
+            r.energy_dissipated < -ENERGY_WARNING_TOLERANCE * scale
+        })
+        .map(|r| RunWarning {
+            kind: "contact_energy_created",
+            impact: r.impact,
+            contact: name(r),
+            time: r.time,
+            amount: -r.energy_dissipated,
+        })
+        .collect()
+}
+
+/// The stderr line of a run's warnings (`None` without any): their number, total and the largest.
+pub fn warnings_message(w: &[RunWarning]) -> Option<String> {
+    let largest = w.iter().max_by(|a, b| a.amount.total_cmp(&b.amount))?;
+    let total: Real = w.iter().map(|x| x.amount).sum();
+    Some(format!(
+        "warning: energy was created at a contact in {} impacting contact{} (total {} J; largest {} J \
+         at {} in impact {}, t = {} s): Newton's law with Coulomb friction (tangential restitution \
+         0) can create energy; see summary.json \"warnings\"",
+        w.len(),
+        if w.len() == 1 { "" } else { "s" },
+        float_token(total),
+        float_token(largest.amount),
+        largest.contact,
+        largest.impact,
+        float_token(largest.time)
+    ))
+}
+
+/// The two-deck run's warnings ([`energy_warnings`], contacts named as in `impacts.csv`).
+pub fn run_warnings(sol: &SimSolution) -> Vec<RunWarning> {
+    energy_warnings(&sol.impacts, |r| r.contact.name().to_string())
+}
+
 /// The `summary.json` value: peaks, unseating, energies, status and counters, the ground motion
 /// and the model (keys for straight/skewed decks, abutments and compliance laws only when used).
 pub fn summary_json(setup: &SimSetup, sol: &SimSolution) -> serde_json::Value {
@@ -303,6 +387,7 @@ pub fn summary_json(setup: &SimSetup, sol: &SimSolution) -> serde_json::Value {
     }
     add_run_keys(&mut out, &RunKeys::of_pair(sol));
     add_compliance_summary(&mut out, m, sol);
+    out["warnings"] = run_warnings(sol).iter().map(RunWarning::json).collect();
     if matches!(m.contact, JointContact::Rigid) {
         out["peak_force_estimate_n"] =
             peak_estimate_json(sol.impacts.iter().map(|r| (r, m.restitution)));
