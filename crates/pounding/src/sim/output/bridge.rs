@@ -136,7 +136,8 @@ fn is_rigid(m: &BridgeModel) -> bool {
 /// The bridge run's warnings ([`super::energy_warnings`], contacts named `site/contact` as the
 /// `site` and `contact` columns of `impacts.csv`).
 pub fn bridge_run_warnings(sol: &BridgeSolution) -> Vec<super::RunWarning> {
-    super::energy_warnings(&sol.impacts, |r| {
+    let rigid = sol.time_step_advice.is_none() && sol.impacts.iter().all(|r| r.pulse.is_none());
+    super::energy_warnings(&sol.impacts, rigid, |r| {
         format!(
             "{}/{}",
             site_name(&r.contact, r.site),
