@@ -181,3 +181,44 @@ fn batch_csv_appends_force_time_step_and_newton_columns() {
         assert_eq!(col(lines[2], name), "", "rigid run: {name}");
     }
 }
+
+/// Models that cannot stand (issue 12): two bearings at one point leave deck 1 free to spin
+/// (singular bearing stiffness, a zero natural frequency); the scenario is refused naming the
+/// deck, the key and its line, unless `[bearings] allow_mechanism = true` (then it runs, with an
+/// infinite natural period).
+#[test]
+fn a_bearing_layout_that_is_a_mechanism_is_refused_unless_allowed() {
+    use pounding::sim::scenario::{Scenario, ScenarioError};
+    let text = "[bearings]\ndamping_ratio = 0\npoints1 = [[0.0, 0.0], [0.0, 0.0]]\n[time]\nduration = 0.1\n";
+    let e = Scenario::from_toml(text, "m.toml")
+        .and_then(|s| s.build())
+        .unwrap_err();
+    assert!(matches!(e, ScenarioError::Key { .. }), "{e:?}");
+    let msg = e.to_string();
+    assert!(
+        msg.contains("deck1") && msg.contains("`[bearings] points1` (m.toml:3)"),
+        "{msg}"
+    );
+    assert!(msg.contains("`[bearings] allow_mechanism`"), "{msg}");
+    // deck 2 with no stiffness at all (and no damping to need it)
+    let e = Scenario::from_toml(
+        "[bearings]\ndamping_ratio = 0\nstiffness2 = 0\n[time]\nduration = 0.1\n",
+        "m.toml",
+    )
+    .and_then(|s| s.build())
+    .unwrap_err();
+    assert!(
+        e.to_string().contains("deck2") && e.to_string().contains("stiffness2"),
+        "{e}"
+    );
+    // allowed explicitly: it builds and runs
+    let allowed = text.replace("[bearings]\n", "[bearings]\nallow_mechanism = true\n");
+    let setup = Scenario::from_toml(&allowed, "m.toml")
+        .unwrap()
+        .build()
+        .unwrap();
+    let sol = simulate(&setup.problem, &setup.settings).unwrap();
+    assert!(sol.frequencies[0][0] <= 1e-6 * sol.frequencies[0][2]);
+    // the default layout (4 corners) is not a mechanism
+    assert!(Scenario::from_toml("", "d").unwrap().build().is_ok());
+}
