@@ -483,7 +483,7 @@ fn check_mechanism(sc: &Scenario, frequencies: &[[f64; 3]; 2]) -> Result<(), Sce
         return Ok(());
     }
     for (j, w) in frequencies.iter().enumerate() {
-        if !(w[0] <= 1e-6 * w[2]) {
+        if w[0] > 1e-6 * w[2] {
             continue;
         }
         let deck = j as u8 + 1;
