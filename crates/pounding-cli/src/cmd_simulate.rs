@@ -217,6 +217,11 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let sol = simulate(&setup.problem, &setup.settings).map_err(|e| anyhow!("{e}"))?;
     let sim_secs = t_sim.elapsed().as_secs_f64();
     let warnings: Vec<String> = warn_time_step(&sol).into_iter().collect();
+    if let Some(w) =
+        pounding::sim::output::warnings_message(&pounding::sim::output::run_warnings(&sol))
+    {
+        eprintln!("{w}");
+    }
 
     let out = &args.out;
     let _lock = lock_and_clear(out)?;
@@ -226,7 +231,10 @@ pub fn run(args: Args) -> Result<ExitCode> {
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
     wr("history.csv", history_csv(&setup.problem, &sol).as_bytes())?;
-    wr("impacts.csv", impacts_csv(&sol).as_bytes())?;
+    wr(
+        "impacts.csv",
+        impacts_csv(&setup.problem.model, &sol).as_bytes(),
+    )?;
     let summary = summary_json_text(&setup, &sol);
     wr("summary.json", summary.as_bytes())?;
     sim_plots::write_all(out, &setup.problem, &sol).map_err(|e| anyhow!("plotting: {e}"))?;

@@ -30,6 +30,11 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
     let t_sim = Instant::now();
     let sol = setup.run().map_err(|e| anyhow!("{e}"))?;
     let sim_secs = t_sim.elapsed().as_secs_f64();
+    if let Some(w) = pounding::sim::output::warnings_message(
+        &pounding::sim::output::bridge_run_warnings(&sol),
+    ) {
+        eprintln!("{w}");
+    }
     let mut warnings = Vec::new();
     if let Some(a) = &sol.time_step_advice
         && !a.adequate
@@ -53,7 +58,10 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
     wr("history.csv", bridge_history_csv(&setup, &sol).as_bytes())?;
-    wr("impacts.csv", bridge_impacts_csv(&sol).as_bytes())?;
+    wr(
+        "impacts.csv",
+        bridge_impacts_csv(&setup.problem.model, &sol).as_bytes(),
+    )?;
     let summary = bridge_summary_json_text(&setup, &sol);
     wr("summary.json", summary.as_bytes())?;
     crate::plots::bridge::write_all(out, &setup.problem.model, &sol)

@@ -103,12 +103,24 @@ fn bridge_batch_bytes_do_not_depend_on_threads_and_shards_merge_to_them() {
     };
     assert!(pos("joint3_unseated") < pos("abutment_start_impacts"));
     assert!(pos("abutment_end_peak_impulse_ns") < pos("segment1_peak_displacement_m"));
-    assert_eq!(pos("segment4_hysteretic_energy_j") + 2, head.len());
+    // the appended columns (issue 12) come after the segments, `error` stays last
+    assert_eq!(
+        pos("segment4_hysteretic_energy_j") + 1,
+        pos("peak_contact_force_n")
+    );
+    assert_eq!(pos("newton_failures") + 2, head.len());
     assert_eq!(head.last().unwrap(), "error");
     for r in &all {
         assert_eq!(r[pos("status")], "Completed");
         assert_eq!(r[pos("abutment_end_impacts")], "", "no end abutment");
         assert_eq!(r[pos("joint1_peak_contact_force_n")], "", "rigid law");
+        for c in [
+            "peak_contact_force_n",
+            "steps_per_contact",
+            "newton_failures",
+        ] {
+            assert_eq!(r[pos(c)], "", "rigid law: {c}");
+        }
         assert_ne!(r[pos("joint1_restrainer_peak_force_n")], "");
         assert_eq!(
             r[pos("joint2_restrainer_peak_force_n")],

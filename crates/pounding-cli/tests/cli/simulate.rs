@@ -53,7 +53,9 @@ fn default_run_writes_every_output_deterministically() {
     assert!(n > 0);
     assert_eq!(rows.last().unwrap()[0].parse::<usize>().unwrap(), n);
     for r in &rows {
-        assert_eq!(r.len(), 11);
+        // 11 columns, then the rigid law's peak_force_estimate_n, contact_time_estimate_s
+        assert_eq!(r.len(), 13);
+        assert!(r[11].parse::<f64>().unwrap() > 0.0 && r[12].parse::<f64>().unwrap() > 0.0);
         assert!(
             ["stick", "slip-outward", "slip-inward"].contains(&r[3]),
             "{r:?}"

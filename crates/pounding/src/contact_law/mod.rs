@@ -81,6 +81,7 @@
 
 pub mod calibration;
 pub mod collision;
+pub mod estimate;
 pub mod registry;
 pub mod sharing;
 pub mod timestep;

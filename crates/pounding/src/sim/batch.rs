@@ -37,35 +37,45 @@ pub struct BatchRecord {
     pub record: Result<Record, String>,
 }
 
-/// What one run produced.
+/// What one run produced: `S` is the run's summary ([`SimSummary`] for the two-deck model,
+/// [`BridgeSummary`] for a bridge, [`BridgeBatchOutcome`]).
 #[derive(Debug, Clone, PartialEq)]
-pub struct BatchOutcome {
+pub struct BatchOutcome<S = SimSummary> {
     /// How the run ended.
     pub status: SimStatus,
     /// Peaks, unseating and energies (as in a single run).
-    pub summary: SimSummary,
+    pub summary: S,
+    /// Impacting contacts (the rows of a single run's `impacts.csv`).
+    pub impacting_contacts: usize,
     /// Steps taken.
     pub steps: usize,
     /// Step size \[s\].
     pub dt: Real,
-    /// Steps with an LCP solve.
+    /// Steps with an LCP solve (rigid law).
     pub lcp_solves: usize,
     /// LCP solves that fell back to enumeration.
     pub lcp_enumeration_fallbacks: usize,
     /// LCP solves that failed.
     pub lcp_failures: usize,
+    /// Compliance laws: steps whose Newton iteration did not converge.
+    pub newton_failures: usize,
+    /// Compliance laws: the time-step check of the contact (`None` for rigid contact).
+    pub time_step_advice: Option<crate::contact_law::timestep::TimeStepAdvice>,
 }
 
 impl From<SimSolution> for BatchOutcome {
     fn from(s: SimSolution) -> Self {
         Self {
             status: s.status,
+            impacting_contacts: s.impacts.len(),
             summary: s.summary,
             steps: s.steps,
             dt: s.dt,
             lcp_solves: s.lcp_solves,
             lcp_enumeration_fallbacks: s.lcp_enumeration_fallbacks,
             lcp_failures: s.lcp_failures,
+            newton_failures: s.newton_failures,
+            time_step_advice: s.time_step_advice,
         }
     }
 }
@@ -279,27 +289,7 @@ fn run_pairs<O: Send>(
 }
 
 /// What one bridge run produced ([`run_bridge_batch`]).
-#[derive(Debug, Clone, PartialEq)]
-pub struct BridgeBatchOutcome {
-    /// How the run ended.
-    pub status: SimStatus,
-    /// Peaks per joint, abutment and segment, unseating and energies (as in a single run).
-    pub summary: BridgeSummary,
-    /// Impacting contacts (the rows of a single run's `impacts.csv`).
-    pub impacting_contacts: usize,
-    /// Steps taken.
-    pub steps: usize,
-    /// Step size \[s\].
-    pub dt: Real,
-    /// Steps with an LCP solve (rigid law).
-    pub lcp_solves: usize,
-    /// LCP solves that fell back to enumeration.
-    pub lcp_enumeration_fallbacks: usize,
-    /// LCP solves that failed.
-    pub lcp_failures: usize,
-    /// Newton failures (compliance laws).
-    pub newton_failures: usize,
-}
+pub type BridgeBatchOutcome = BatchOutcome<BridgeSummary>;
 
 impl From<BridgeSolution> for BridgeBatchOutcome {
     fn from(s: BridgeSolution) -> Self {
@@ -313,6 +303,7 @@ impl From<BridgeSolution> for BridgeBatchOutcome {
             lcp_enumeration_fallbacks: s.lcp_enumeration_fallbacks,
             lcp_failures: s.lcp_failures,
             newton_failures: s.newton_failures,
+            time_step_advice: s.time_step_advice,
         }
     }
 }

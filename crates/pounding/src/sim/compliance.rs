@@ -44,7 +44,9 @@
 //! An *impact* is a maximal interval of positive total joint force. Per end and impact, one
 //! [`super::ImpactRecord`]: onset time, pre-contact velocities `w_Nᵀ u_k`, `w_Tᵀ u_k` of the step
 //! the force appears in, post-contact velocities when the force returns to zero, the impulses
-//! `∫ f dt` (trapezoidal, as the scheme) and the contact work `−∫ γ·f dt` as energy dissipated.
+//! `∫ f dt` (trapezoidal, as the scheme) and the contact work `−∫ γ·f dt` as energy dissipated,
+//! and the force pulse ([`super::ImpactPulse`]: the end's peak force, duration of positive force
+//! and largest penetration).
 //! [`super::SimSummary::peak_contact_force`] is the largest total joint force,
 //! [`super::SimSummary::peak_penetration`] the largest `δ` of an end. The contact term of the
 //! energy balance is `D_contact = −Σ h ū·R̄` (`ū` the mean velocity, `R̄ = (1−θ)R_k + θR_{k+1}`):
@@ -137,6 +139,31 @@ struct OpenImpact {
     impulse_n: Real,
     impulse_t: Real,
     work: Real,
+    /// Interpolated onset time (zero crossing of `δ`).
+    start: Real,
+    peak_force: Real,
+    max_penetration: Real,
+}
+
+impl OpenImpact {
+    /// The pulse so far, with `duration`.
+    fn pulse(&self, duration: Real) -> super::ImpactPulse {
+        super::ImpactPulse {
+            peak_force: self.peak_force,
+            duration,
+            max_penetration: self.max_penetration,
+        }
+    }
+}
+
+/// The time in `[t − h, t]` where `δ` crosses zero linearly from `d0` (at `t − h`) to `d1` (at
+/// `t`); `t` when it does not cross there.
+fn crossing(t: Real, h: Real, d0: Real, d1: Real) -> Real {
+    if (d0 <= 0.0) != (d1 <= 0.0) && d0 != d1 {
+        t - h + h * d0 / (d0 - d1)
+    } else {
+        t
+    }
 }
 
 /// The fixed data of one step's iteration: `q_k`, `u_k`, the scheme (for `Ŵ⁻¹`) and
@@ -559,12 +586,21 @@ impl ComplianceStepper {
                     impulse_n: 0.0,
                     impulse_t: 0.0,
                     energy_dissipated: 0.0,
+                    pulse: None,
                 });
+                let d0 = if self.ends[e].present {
+                    self.ends[e].delta
+                } else {
+                    ev[e].delta
+                };
                 self.open_imp[e] = Some(OpenImpact {
                     record: log.records.len() - 1,
                     impulse_n: 0.0,
                     impulse_t: 0.0,
                     work: 0.0,
+                    start: crossing(time, h, d0, ev[e].delta),
+                    peak_force: 0.0,
+                    max_penetration: 0.0,
                 });
             }
             if let Some(oi) = self.open_imp[e].as_mut() {
@@ -575,7 +611,13 @@ impl ComplianceStepper {
                 let src = if ev[e].present { &ev[e] } else { &self.ends[e] };
                 let (wn, wt) = (&src.wn, &src.wt);
                 oi.work -= u_mid.dot(wn) * pn + u_mid.dot(wt) * pt;
+                oi.peak_force = oi.peak_force.max(fn1);
+                if ev[e].present {
+                    oi.max_penetration = oi.max_penetration.max(ev[e].delta);
+                }
                 if fn1 <= 0.0 {
+                    let d1 = if ev[e].present { ev[e].delta } else { 0.0 };
+                    let end = crossing(time, h, self.ends[e].delta, d1);
                     let rec = &mut log.records[oi.record];
                     rec.gamma_n_post = wn.dot(un);
                     rec.gamma_t_post = wt.dot(un);
@@ -583,6 +625,7 @@ impl ComplianceStepper {
                     rec.impulse_t = oi.impulse_t;
                     rec.energy_dissipated = oi.work;
                     rec.mode = SlipMode::classify(rec.gamma_t_post, rec.gamma_n_pre);
+                    rec.pulse = Some(oi.pulse(end - oi.start));
                     self.open_imp[e] = None;
                 }
             }
@@ -645,6 +688,7 @@ impl Stepper for ComplianceStepper {
             rec.impulse_n = oi.impulse_n;
             rec.impulse_t = oi.impulse_t;
             rec.energy_dissipated = oi.work;
+            rec.pulse = Some(oi.pulse(Real::NAN));
         }
         std::mem::take(&mut self.stats)
     }

@@ -657,6 +657,25 @@ pub struct ImpactRecord {
     pub impulse_t: Real,
     /// Energy dissipated at this contact, `−½ (γ_k + γ_{k+1})·P` \[J\] (negative = gained, spec §11).
     pub energy_dissipated: Real,
+    /// Compliance laws: the force pulse of this contact during the impact; `None` for the rigid
+    /// law (impulses, no force: see [`crate::contact_law::estimate`] for its estimate).
+    pub pulse: Option<ImpactPulse>,
+}
+
+/// The normal-force pulse of one contact during one compliance-law impact (an interval of
+/// positive force at that contact, [`compliance`] module doc).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ImpactPulse {
+    /// Largest normal force of this contact over the steps of the impact \[N\].
+    pub peak_force: Real,
+    /// Duration of positive force \[s\]: from the zero crossing of the penetration `δ` at onset
+    /// to the zero crossing of `δ` at separation, both linearly interpolated within their step
+    /// (`O(h²)` for a law whose force vanishes with `δ`); where the force ends with `δ > 0` (a
+    /// dashpot pulling the decks apart) the end is the end of the step in which it vanished
+    /// (within one step). NaN for an impact still in progress at the end of the run.
+    pub duration: Real,
+    /// Largest penetration `δ` of this contact over the steps of the impact \[m\].
+    pub max_penetration: Real,
 }
 
 /// Energies at one instant \[J\].

@@ -357,6 +357,7 @@ impl RigidStepper {
                     impulse_n: p[i],
                     impulse_t: p[n + i],
                     energy_dissipated: dn + dt_,
+                    pulse: None,
                 });
             }
         }

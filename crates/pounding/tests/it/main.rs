@@ -40,6 +40,7 @@ mod sim_bridge_reference;
 mod sim_bridge_site_contact;
 mod sim_compliance;
 mod sim_friction;
+mod sim_outputs;
 mod sim_scenario;
 mod sim_shapes;
 mod study;

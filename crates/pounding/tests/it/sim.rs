@@ -331,11 +331,21 @@ fn joint_anchored_q(arr: &SArrangement, th1: f64, th2: f64) -> [f64; 6] {
 /// the `impact` work item (geometry::configuration, contact::force_directions, analytic::single_impact)
 /// at the exact contact configuration. Returns (relative error of u⁺, sim mode, reference mode).
 fn isolated_impact(vx: f64, dt: f64) -> (f64, String, String, f64) {
+    isolated_impact_law(vx, dt, 0.5, 0.5).0
+}
+
+/// [`isolated_impact`] with friction `mu` and restitution `eps`; also the solution and the
+/// reference's kinetic-energy change `ΔT`.
+fn isolated_impact_law(
+    vx: f64,
+    dt: f64,
+    mu: f64,
+    eps: f64,
+) -> ((f64, String, String, f64), pounding::sim::SimSolution, f64) {
     use pounding::analytic::{ImpactLaw, single_impact};
     use pounding::contact::{delassus_with, force_directions};
     use pounding::geometry::{ContactCase, SigmaMode};
     let (th1, th2) = ((-5f64).to_radians(), 2f64.to_radians());
-    let (mu, eps) = (0.5, 0.5);
     let arr = SArrangement {
         deck1: unit_deck(100.0, 60.0),
         deck2: unit_deck(100.0, 60.0),
@@ -428,11 +438,60 @@ fn isolated_impact(vx: f64, dt: f64) -> (f64, String, String, f64) {
         sol.summary.energy_balance_error
     );
     (
-        err.max(ln_err),
-        imp.mode.name().to_string(),
-        refi.mode.name().to_string(),
-        refi.normal_impulse,
+        (
+            err.max(ln_err),
+            imp.mode.name().to_string(),
+            refi.mode.name().to_string(),
+            refi.normal_impulse,
+        ),
+        sol,
+        dt_ref,
     )
+}
+
+/// Energy created at a contact (issue 12): the spec's §11 example (θ = (−5°, 2°), deck1-inner,
+/// μ = 1, ε_N = 1, `γ_T⁻/γ_N⁻ = 0.726`: the Newton–Coulomb impact gains energy, by `ΔT` of the
+/// closed-form single impact) through `simulate` gives exactly one `contact_energy_created`
+/// warning of that amount; the same impact with ε_N = 0.5 (a loss, spec: −68 %) gives none.
+#[test]
+fn energy_created_at_a_contact_is_a_warning() {
+    use pounding::contact::force_directions;
+    use pounding::geometry::{ContactCase, SigmaMode};
+    use pounding::sim::output::run_warnings;
+    let arr = SArrangement {
+        deck1: unit_deck(100.0, 60.0),
+        deck2: unit_deck(100.0, 60.0),
+    };
+    let cfg = arr
+        .configuration(
+            ContactCase::Deck1Inner,
+            (-5f64).to_radians(),
+            2f64.to_radians(),
+            SigmaMode::Exact,
+        )
+        .unwrap();
+    let w = force_directions(&cfg);
+    // u⁻ = (vx, −1, 0, 0, 0, 0): γ_T = 0.726 γ_N
+    let r = 0.726;
+    let vx = (w.w_t[1] - r * w.w_n[1]) / (w.w_t[0] - r * w.w_n[0]);
+    let (_, sol, dt_ref) = isolated_impact_law(vx, 1e-4, 1.0, 1.0);
+    assert!(dt_ref > 0.0, "the closed form gains energy: {dt_ref}");
+    let warn = run_warnings(&sol);
+    assert_eq!(warn.len(), 1, "{warn:?}");
+    assert_eq!(warn[0].kind, "contact_energy_created");
+    assert_eq!(warn[0].contact, "deck1-inner");
+    assert!(
+        (warn[0].amount / dt_ref - 1.0).abs() < 0.01,
+        "{warn:?} vs {dt_ref}"
+    );
+    let text = pounding::sim::output::warnings_message(&warn).unwrap();
+    assert!(
+        text.contains("1 impacting contact ") && text.contains("deck1-inner"),
+        "{text}"
+    );
+    let (_, lossy, dt_loss) = isolated_impact_law(vx, 1e-4, 1.0, 0.5);
+    assert!(dt_loss < 0.0);
+    assert!(run_warnings(&lossy).is_empty());
 }
 
 #[test]

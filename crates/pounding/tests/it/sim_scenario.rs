@@ -249,7 +249,7 @@ fn writers_rows_match_their_headers() {
     assert!(h.lines().next().unwrap().ends_with(",abutment_gap1_m"));
     assert_eq!(h.lines().count(), sol.history.t.len() + 1);
     assert!(lines.all(|l| l.split(',').count() == n));
-    let i = impacts_csv(&sol);
+    let i = impacts_csv(&setup.problem.model, &sol);
     assert_eq!(i.lines().count(), sol.impacts.len() + 1);
     let j = summary_json_text(&setup, &sol);
     assert!(j.ends_with("}\n"));

@@ -18,17 +18,42 @@ pub(super) fn field(s: &str) -> String {
     }
 }
 
-/// Header of `batch.csv`.
+/// Header of `batch.csv` (the [`BATCH_TAIL`] columns were appended before `error`, which stays
+/// last).
 pub const BATCH_HEADER: &str = "index,record,scale,pga_g,pga_mps2,status,impacts,impacting_contacts,\
 peak_joint_closing_m,peak_joint_opening_m,peak_rotation1_deg,peak_rotation2_deg,peak_slip_m,\
 peak_seat_displacement_m,unseated,unseating_time_s,unseated_end,max_penetration_m,\
 energy_balance_error,input_energy_J,viscous_dissipation_J,contact_dissipation_J,duration_s,steps,\
-lcp_solves,lcp_failures,error";
+lcp_solves,lcp_failures,peak_contact_force_n,steps_per_contact,newton_failures,error";
+
+/// Columns appended (before `error`, which stays last) to both `batch.csv` files (two-deck and bridge; empty for the
+/// rigid law and for a run that failed): the peak total contact force of a joint or abutment
+/// (`summary.json`'s `peak_contact_force_n`; for a bridge the largest over its joints and
+/// abutments), the time-step adequacy figure `time_step.steps_per_contact` of `summary.json`
+/// (`T_c / Δt`, adequate when ≥ 20) and the steps whose Newton iteration did not converge.
+pub const BATCH_TAIL: &str = "peak_contact_force_n,steps_per_contact,newton_failures";
+
+/// The [`BATCH_TAIL`] cells of a run: empty for rigid contact (`compliance = false`).
+fn tail_cells(
+    compliance: bool,
+    peak: Option<Real>,
+    advice: Option<crate::contact_law::timestep::TimeStepAdvice>,
+    newton_failures: usize,
+) -> Vec<String> {
+    if !compliance {
+        return vec![String::new(); 3];
+    }
+    vec![
+        opt(peak),
+        opt(advice.map(|a| a.steps_per_contact)),
+        newton_failures.to_string(),
+    ]
+}
 
 /// `batch.csv`: [`BATCH_HEADER`], then one row per run (a run that failed has `status = error`
-/// and its message in `error`).
+/// and its message in `error`), with the [`BATCH_TAIL`] columns appended after `error`.
 pub fn batch_csv(rows: &[BatchRow]) -> String {
-    rows_csv(BATCH_HEADER.to_string(), rows, |o, c| {
+    rows_csv(BATCH_HEADER, rows, |o, c| {
         let m = &o.summary;
         c.push(format!("{:?}", o.status));
         c.push(m.impacts.to_string());
@@ -60,20 +85,22 @@ pub fn batch_csv(rows: &[BatchRow]) -> String {
         c.push(o.steps.to_string());
         c.push(o.lcp_solves.to_string());
         c.push(o.lcp_failures.to_string());
+        let peak = m.peak_contact_force;
+        c.extend(tail_cells(
+            peak.is_some(),
+            peak,
+            o.time_step_advice,
+            o.newton_failures,
+        ));
     })
 }
 
 /// `header`, then one row per run: `index, record, scale`, then for a run that failed
 /// `, , error`, empty cells and the message in the last column (`error`); else the PGA in g and
 /// m/s², the cells of `cells` and an empty `error`.
-fn rows_csv<O>(
-    header: String,
-    rows: &[BatchRow<O>],
-    cells: impl Fn(&O, &mut Vec<String>),
-) -> String {
+fn rows_csv<O>(header: &str, rows: &[BatchRow<O>], cells: impl Fn(&O, &mut Vec<String>)) -> String {
     let ncols = header.split(',').count();
-    let mut s = header;
-    s.push('\n');
+    let mut s = format!("{header}\n");
     for r in rows {
         let mut c: Vec<String> = vec![r.index.to_string(), field(&r.record), float_token(r.scale)];
         match &r.outcome {
@@ -136,7 +163,8 @@ const BRIDGE_SEGMENT_COLS: [&str; 5] = [
 /// Header of a bridge's `batch.csv` for a bridge of `n_segments` segments: the leading columns
 /// (as [`BATCH_HEADER`] where the meaning is the same), then per joint `joint<k>_…`, per
 /// abutment `abutment_start_…` and `abutment_end_…` (both always, empty where absent), per
-/// segment `segment<i>_…` in bridge order (the keys of `summary.json`), and `error` last.
+/// segment `segment<i>_…` in bridge order (the keys of `summary.json`), the appended
+/// [`BATCH_TAIL`] columns, and `error` last.
 pub fn bridge_batch_header(n_segments: usize) -> String {
     let mut h: Vec<String> = BRIDGE_BATCH_LEAD.split(',').map(String::from).collect();
     for k in 1..n_segments {
@@ -156,6 +184,7 @@ pub fn bridge_batch_header(n_segments: usize) -> String {
                 .map(|c| format!("segment{i}_{c}")),
         );
     }
+    h.extend(BATCH_TAIL.split(',').map(String::from));
     h.push("error".into());
     h.join(",")
 }
@@ -232,6 +261,17 @@ fn bridge_cells(o: &BridgeBatchOutcome, c: &mut Vec<String>) {
             c.push(float_token(v));
         }
     }
+    let peaks: Vec<Option<Real>> = (m.joints.iter().map(|j| j.peak_contact_force))
+        .chain(m.abutments.iter().flatten().map(|a| a.peak_contact_force))
+        .collect();
+    let compliance = peaks.iter().any(Option::is_some);
+    let peak = peaks.into_iter().flatten().reduce(Real::max);
+    c.extend(tail_cells(
+        compliance,
+        peak,
+        o.time_step_advice,
+        o.newton_failures,
+    ));
 }
 
 /// A bridge's `batch.csv` ([`bridge_batch_header`], then one row per run; a run that failed has
@@ -240,5 +280,5 @@ fn bridge_cells(o: &BridgeBatchOutcome, c: &mut Vec<String>) {
 /// restrainer, no unseating, no joint at all for one segment) are empty fields; a value that is
 /// not a number is `nan` (the project's CSV tokens, [`float_token`]).
 pub fn bridge_batch_csv(n_segments: usize, rows: &[BridgeBatchRow]) -> String {
-    rows_csv(bridge_batch_header(n_segments), rows, bridge_cells)
+    rows_csv(&bridge_batch_header(n_segments), rows, bridge_cells)
 }

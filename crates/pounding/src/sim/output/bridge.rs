@@ -4,9 +4,10 @@
 use super::{DEG, describe_contact};
 use crate::math::Real;
 use crate::output::{float_token, json_float};
+use crate::sim::bridge::BridgeModel;
 use crate::sim::bridge::{ABUTMENT_SIDES, BridgeSolution};
 use crate::sim::scenario::BridgeSetup;
-use crate::sim::{JointContact, SimContact};
+use crate::sim::{ImpactRecord, JointContact, SimContact};
 use serde_json::{Value, json};
 
 /// `history.csv` of a bridge: per kept step the time, the ground acceleration, `x_i, y_i, θ_i`
@@ -115,17 +116,55 @@ fn corner_name(c: &SimContact) -> &'static str {
     }
 }
 
+/// The restitution coefficient `ε_N` of the site of an impact record.
+fn site_restitution(m: &BridgeModel, r: &ImpactRecord) -> Real {
+    match r.contact {
+        SimContact::Joint(_) => m.joints.get(r.site).map_or(Real::NAN, |j| j.restitution),
+        SimContact::Abutment { .. } => m.abutments[r.site].map_or(Real::NAN, |a| a.restitution),
+    }
+}
+
+/// Every joint and abutment of the bridge uses rigid contact (a bridge never mixes them).
+fn is_rigid(m: &BridgeModel) -> bool {
+    m.joints
+        .first()
+        .map(|j| j.contact)
+        .or(m.abutments.iter().flatten().next().map(|a| a.contact))
+        .is_none_or(|c| matches!(c, JointContact::Rigid))
+}
+
+/// The bridge run's warnings ([`super::energy_warnings`], contacts named `site/contact` as the
+/// `site` and `contact` columns of `impacts.csv`).
+pub fn bridge_run_warnings(sol: &BridgeSolution) -> Vec<super::RunWarning> {
+    let rigid = sol.time_step_advice.is_none() && sol.impacts.iter().all(|r| r.pulse.is_none());
+    super::energy_warnings(&sol.impacts, rigid, |r| {
+        format!(
+            "{}/{}",
+            site_name(&r.contact, r.site),
+            corner_name(&r.contact)
+        )
+    })
+}
+
 /// `impacts.csv` of a bridge: one row per impacting contact (as the two-deck file, with the
-/// site and the corner in separate columns).
-pub fn bridge_impacts_csv(sol: &BridgeSolution) -> String {
-    let mut s = String::from(
+/// site and the corner in separate columns), then [`super::PULSE_COLUMNS`] (compliance laws)
+/// or [`super::ESTIMATE_COLUMNS`] (rigid law, with each site's `ε_N`).
+pub fn bridge_impacts_csv(model: &BridgeModel, sol: &BridgeSolution) -> String {
+    let rigid = is_rigid(model);
+    let mut s = format!(
         "impact,t_s,site,contact,mode,gamma_n_pre_mps,gamma_t_pre_mps,gamma_n_post_mps,\
-         gamma_t_post_mps,impulse_n_Ns,impulse_t_Ns,energy_dissipated_J\n",
+         gamma_t_post_mps,impulse_n_Ns,impulse_t_Ns,energy_dissipated_J,{}\n",
+        if rigid {
+            super::ESTIMATE_COLUMNS
+        } else {
+            super::PULSE_COLUMNS
+        }
     );
     for r in &sol.impacts {
         let f = super::impact_numbers(r);
+        let p = super::pulse_cells(r, rigid, site_restitution(model, r));
         s.push_str(&format!(
-            "{},{},{},{},{},{f}\n",
+            "{},{},{},{},{},{f},{p}\n",
             r.impact,
             float_token(r.time),
             site_name(&r.contact, r.site),
@@ -213,12 +252,7 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
     let e = &s.final_energy;
     let (joints, abutments, segments) = bridge_arrays(setup, sol);
     let hyst: Real = s.segments.iter().map(|g| g.hysteretic_energy).sum();
-    let compliant = m
-        .joints
-        .first()
-        .map(|j| j.contact)
-        .or(m.abutments.iter().flatten().next().map(|a| a.contact))
-        .is_some_and(|c| !matches!(c, JointContact::Rigid));
+    let compliant = !is_rigid(m);
     let mut out = json!({
         "impacts": s.impacts,
         "impacting_contacts": sol.impacts.len(),
@@ -261,6 +295,14 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
             ],
         },
     );
+    out["warnings"] = bridge_run_warnings(sol)
+        .iter()
+        .map(super::RunWarning::json)
+        .collect();
+    if !compliant {
+        out["peak_force_estimate_n"] =
+            super::peak_estimate_json(sol.impacts.iter().map(|r| (r, site_restitution(m, r))));
+    }
     if compliant {
         out["newton_failures"] = json!(sol.newton_failures);
         out["closure_steps"] = json!(sol.closure_steps);

@@ -17,9 +17,10 @@ mod bridge;
 mod bridge_plan;
 mod compare;
 mod compare_bridge;
-pub use batch::{BATCH_HEADER, batch_csv, bridge_batch_csv, bridge_batch_header};
+pub use batch::{BATCH_HEADER, BATCH_TAIL, batch_csv, bridge_batch_csv, bridge_batch_header};
 pub use bridge::{
-    bridge_history_csv, bridge_impacts_csv, bridge_summary_json, bridge_summary_json_text,
+    bridge_history_csv, bridge_impacts_csv, bridge_run_warnings, bridge_summary_json,
+    bridge_summary_json_text,
 };
 pub use bridge_plan::{
     BridgePlan, CornerPaths, bridge_plan, corner_paths, joint_openings, plan_exaggeration,
@@ -136,25 +137,203 @@ pub(crate) fn impact_numbers(r: &super::ImpactRecord) -> String {
     .join(",")
 }
 
-/// `impacts.csv`: one row per impact of the rigid contact (time, contact, mode, relative
-/// velocities before and after, impulses, dissipated energy).
-pub fn impacts_csv(sol: &SimSolution) -> String {
-    let mut s = String::from(
+/// Columns appended to `impacts.csv` for a compliance law ([`super::ImpactPulse`]).
+pub const PULSE_COLUMNS: &str = "peak_force_n,duration_s,max_penetration_m";
+/// Columns appended to `impacts.csv` for the rigid law
+/// ([`crate::contact_law::estimate::rigid_peak_force`] with the default `k_h`).
+pub const ESTIMATE_COLUMNS: &str = "peak_force_estimate_n,contact_time_estimate_s";
+
+/// The appended cells of an `impacts.csv` row: the pulse of a compliance law, or (rigid law,
+/// `rigid`) the peak-force estimate from the impulse with restitution `eps`.
+pub(crate) fn pulse_cells(r: &super::ImpactRecord, rigid: bool, eps: Real) -> String {
+    if rigid {
+        let e = rigid_estimate(r, eps);
+        return format!(
+            "{},{}",
+            float_token(e.peak_force),
+            float_token(e.contact_time)
+        );
+    }
+    let p = r.pulse.unwrap_or(super::ImpactPulse {
+        peak_force: Real::NAN,
+        duration: Real::NAN,
+        max_penetration: Real::NAN,
+    });
+    [p.peak_force, p.duration, p.max_penetration]
+        .map(float_token)
+        .join(",")
+}
+
+/// The peak-force estimate of a rigid impact record at one corner contact: the default joint
+/// `k_h` shared by the site's two corner contacts (`k_h / 2` per corner, as the compliance laws
+/// share a joint's law, [`crate::contact_law::sharing`]).
+pub(crate) fn rigid_estimate(
+    r: &super::ImpactRecord,
+    eps: Real,
+) -> crate::contact_law::estimate::PeakForceEstimate {
+    crate::contact_law::estimate::rigid_peak_force(
+        r.impulse_n,
+        r.gamma_n_pre,
+        eps,
+        0.5 * crate::contact_law::registry::default_k_h(),
+    )
+}
+
+/// `summary.json`'s `peak_force_estimate_n` of a rigid run: the largest over the impacts and
+/// sites of the sum of the site's corner estimates in that impact (a rigid impact is one step, so
+/// its corner pulses coincide); `null` without impacts.
+pub(crate) fn peak_estimate_json<'a>(
+    records: impl Iterator<Item = (&'a super::ImpactRecord, Real)>,
+) -> serde_json::Value {
+    let mut sums = std::collections::BTreeMap::<(usize, bool, usize), Real>::new();
+    for (r, eps) in records {
+        let f = rigid_estimate(r, eps).peak_force;
+        if !f.is_nan() {
+            let key = (
+                r.impact,
+                matches!(r.contact, super::SimContact::Joint(_)),
+                r.site,
+            );
+            *sums.entry(key).or_insert(0.0) += f;
+        }
+    }
+    sums.into_values()
+        .reduce(Real::max)
+        .map_or(serde_json::Value::Null, json_float)
+}
+
+/// `impacts.csv`: one row per impacting contact (time, contact, mode, relative velocities before
+/// and after, impulses, dissipated energy), then [`PULSE_COLUMNS`] (compliance law) or
+/// [`ESTIMATE_COLUMNS`] (rigid law).
+pub fn impacts_csv(model: &SimModel, sol: &SimSolution) -> String {
+    let rigid = matches!(model.contact, JointContact::Rigid);
+    let mut s = format!(
         "impact,t_s,contact,mode,gamma_n_pre_mps,gamma_t_pre_mps,gamma_n_post_mps,gamma_t_post_mps,\
-         impulse_n_Ns,impulse_t_Ns,energy_dissipated_J\n",
+         impulse_n_Ns,impulse_t_Ns,energy_dissipated_J,{}\n",
+        if rigid {
+            ESTIMATE_COLUMNS
+        } else {
+            PULSE_COLUMNS
+        }
     );
     for r in &sol.impacts {
         let f = impact_numbers(r);
         s.push_str(&format!(
-            "{},{},{},{},{}\n",
+            "{},{},{},{},{},{}\n",
             r.impact,
             float_token(r.time),
             r.contact.name(),
             r.mode.name(),
-            f
+            f,
+            pulse_cells(r, rigid, model.restitution)
         ));
     }
     s
+}
+
+/// Relative tolerance of [`energy_warnings`] for the rigid law: energy created at a contact
+/// counts when it exceeds `1e-6 (|P_N γ_N⁻| + |P_T γ_T⁻|)` of that contact (the energy scale the
+/// impulse exchanges), far above rounding (≈ 1e-16 of it) and below any physical creation by
+/// Newton + Coulomb (a sizeable fraction of it, spec §11: up to 14 % and more).
+pub const ENERGY_WARNING_TOLERANCE: Real = 1e-6;
+/// Relative tolerance of [`energy_warnings`] for compliance laws: their contact work is
+/// integrated by the trapezoidal rule, whose error is `O((h/T_c)²)` of the exchanged energy
+/// (≈ 1e-5 at the project's OpenSees benchmark); a gain beyond `1e-3` of the scale is reported.
+pub const COMPLIANCE_ENERGY_WARNING_TOLERANCE: Real = 1e-3;
+
+/// A run warning: something a user must know although the run completed (`summary.json`'s
+/// `warnings`, also printed on stderr by the CLI).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunWarning {
+    /// What: `contact_energy_created` (rigid law: a contact's dissipation in an impact was
+    /// negative, Newton's law with Coulomb friction) or `contact_energy_created_numerically`
+    /// (compliance law: a contact's work over an impact returned more energy than it absorbed, a
+    /// discretisation error: time step or the switching of the contact corner at a joint end).
+    pub kind: &'static str,
+    /// The impact number (`impacts.csv`'s `impact`).
+    pub impact: usize,
+    /// Where (the contact as `impacts.csv` names it; a bridge: `site/contact`).
+    pub contact: String,
+    /// When \[s\] (`impacts.csv`'s `t_s`).
+    pub time: Real,
+    /// How much energy \[J\] (> 0).
+    pub amount: Real,
+}
+
+impl RunWarning {
+    /// The `summary.json` object: `kind`, `impact`, `contact`, `t_s`, `amount_j`.
+    pub fn json(&self) -> serde_json::Value {
+        json!({
+            "kind": self.kind,
+            "impact": self.impact,
+            "contact": self.contact,
+            "t_s": json_float(self.time),
+            "amount_j": json_float(self.amount),
+        })
+    }
+}
+
+/// One warning per impacting contact whose dissipation `energy_dissipated` is negative beyond
+/// the tolerance: `contact_energy_created` for the rigid law (Newton's law with Coulomb friction
+/// and `ε_T = 0` can create energy, spec §11; [`ENERGY_WARNING_TOLERANCE`]),
+/// `contact_energy_created_numerically` for a compliance law (`rigid = false`;
+/// [`COMPLIANCE_ENERGY_WARNING_TOLERANCE`]). `name` names a record's contact.
+pub fn energy_warnings(
+    impacts: &[super::ImpactRecord],
+    rigid: bool,
+    name: impl Fn(&super::ImpactRecord) -> String,
+) -> Vec<RunWarning> {
+    let (tol, kind) = if rigid {
+        (ENERGY_WARNING_TOLERANCE, "contact_energy_created")
+    } else {
+        (
+            COMPLIANCE_ENERGY_WARNING_TOLERANCE,
+            "contact_energy_created_numerically",
+        )
+    };
+    impacts
+        .iter()
+        .filter(|r| {
+            let scale = (r.impulse_n * r.gamma_n_pre).abs() + (r.impulse_t * r.gamma_t_pre).abs();
+            r.energy_dissipated < -tol * scale
+        })
+        .map(|r| RunWarning {
+            kind,
+            impact: r.impact,
+            contact: name(r),
+            time: r.time,
+            amount: -r.energy_dissipated,
+        })
+        .collect()
+}
+
+/// The stderr line of a run's warnings (`None` without any): their number, total and the largest.
+pub fn warnings_message(w: &[RunWarning]) -> Option<String> {
+    let largest = w.iter().max_by(|a, b| a.amount.total_cmp(&b.amount))?;
+    let total: Real = w.iter().map(|x| x.amount).sum();
+    let why = if largest.kind == "contact_energy_created" {
+        "Newton's law with Coulomb friction (tangential restitution 0) can create energy"
+    } else {
+        "the compliance contact returned more energy than it absorbed (a discretisation error: \
+         check with a smaller dt)"
+    };
+    Some(format!(
+        "warning: energy was created at a contact in {} impacting contact{} (total {} J; largest {} J \
+         at {} in impact {}, t = {} s): {why}; see summary.json \"warnings\"",
+        w.len(),
+        if w.len() == 1 { "" } else { "s" },
+        float_token(total),
+        float_token(largest.amount),
+        largest.contact,
+        largest.impact,
+        float_token(largest.time)
+    ))
+}
+
+/// The two-deck run's warnings ([`energy_warnings`], contacts named as in `impacts.csv`).
+pub fn run_warnings(sol: &SimSolution) -> Vec<RunWarning> {
+    let rigid = sol.time_step_advice.is_none() && sol.impacts.iter().all(|r| r.pulse.is_none());
+    energy_warnings(&sol.impacts, rigid, |r| r.contact.name().to_string())
 }
 
 /// The `summary.json` value: peaks, unseating, energies, status and counters, the ground motion
@@ -236,6 +415,11 @@ pub fn summary_json(setup: &SimSetup, sol: &SimSolution) -> serde_json::Value {
     }
     add_run_keys(&mut out, &RunKeys::of_pair(sol));
     add_compliance_summary(&mut out, m, sol);
+    out["warnings"] = run_warnings(sol).iter().map(RunWarning::json).collect();
+    if matches!(m.contact, JointContact::Rigid) {
+        out["peak_force_estimate_n"] =
+            peak_estimate_json(sol.impacts.iter().map(|r| (r, m.restitution)));
+    }
     out
 }
 

@@ -220,6 +220,9 @@ pub(crate) struct BearingsSec {
     pub(crate) points1: Option<Vec<Exact<2>>>,
     pub(crate) points2: Option<Vec<Exact<2>>>,
     pub(crate) damping: String,
+    /// Accept a bearing layout that leaves a deck free to slide or spin (a zero natural
+    /// frequency: a mechanism); refused by default.
+    pub(crate) allow_mechanism: bool,
 }
 impl Default for BearingsSec {
     fn default() -> Self {
@@ -230,6 +233,7 @@ impl Default for BearingsSec {
             points1: None,
             points2: None,
             damping: "rayleigh".into(),
+            allow_mechanism: false,
         }
     }
 }
