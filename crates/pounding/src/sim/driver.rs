@@ -771,9 +771,11 @@ pub(crate) fn run<S: Stepper>(
     let abut_sides: Vec<usize> = bridge.abutments.iter().map(|a| a.side).collect();
     let mut el = bridge.elements.clone();
     let nb = bridge.bodies.len();
+    // the geometry at q_k: computed once per state, after q_{k+1} is known, so that the
+    // elements' commit at q_{k+1} and the next step share its sin θ_j, cos θ_j
+    let mut frame = bridge.frame(&q);
     for k in 0..=sc.n_steps {
         let t = k as Real * h;
-        let frame = bridge.frame(&q);
         let obs = peaks.observe(t, &q, &frame, bridge);
         peaks.observe_segments(&q, bridge);
         let forces = stepper.contact_forces();
@@ -797,12 +799,7 @@ pub(crate) fn run<S: Stepper>(
         }
         let abar = sc.ag[k] * (1.0 - th) + sc.ag[k + 1] * th;
         let mut u_free = sc.u_free(&q, &u, &abar);
-        let r_el = (!el.is_empty()).then(|| {
-            (
-                el.step_force(&q, &u, h, &bridge.bodies),
-                el.step_force_bearings(&q, &u, h),
-            )
-        });
+        let r_el = (!el.is_empty()).then(|| el.step_force(&q, &u, h, &bridge.bodies, &frame.pose));
         if let Some((r, _)) = &r_el {
             u_free += sc.winv_mul(r) * h;
         }
@@ -823,8 +820,9 @@ pub(crate) fn run<S: Stepper>(
         }
         q += u_th * h;
         u = out.u;
+        frame = bridge.frame(&q);
         if r_el.is_some() {
-            el.commit(&q, &bridge.bodies);
+            el.commit(&q, &frame.pose, &bridge.bodies);
         }
         steps_done = k + 1;
         if !(q.iter().all(|x| x.is_finite()) && u.iter().all(|x| x.is_finite())) {

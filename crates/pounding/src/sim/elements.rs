@@ -24,7 +24,7 @@
 //! |u − u_p|²`, which tends to the plastic work `Σ f_p·Δu_p` as `h → 0`), and the work done on the
 //! restrainers (their stored energy plus, with yield, their plastic work).
 
-use super::contact::State;
+use super::contact::{Pose, State};
 use super::model::SegmentBody;
 use crate::element::bearing::{BearingState, BilinearBearing};
 use crate::element::restrainer::{RestrainerElement, RestrainerResponse};
@@ -78,25 +78,35 @@ impl Elements {
     /// The force held over the step from `q_k` with velocity `u_k`: the trapezoidal mean
     /// `R̄ = ½ (R(q_k) + R̃(q_k + h u_k))` of the committed force and the trial force at the
     /// predicted end of the step (return mappings evaluated, not committed), second order where
-    /// the element laws are smooth.
-    pub fn step_force(&self, q: &State, u: &State, h: Real, bodies: &[SegmentBody]) -> State {
+    /// the element laws are smooth. Returns `(R̄, R̄_b)`, `R̄_b` the bearings' part (the rest is
+    /// the cables'). `pose` is the pose at `q` (its `sin θ_j, cos θ_j` are shared with the
+    /// contact geometry of the step); the pose at the predicted state is computed here only
+    /// when there are cables (bearings use the linearised deformation).
+    pub fn step_force(
+        &self,
+        q: &State,
+        u: &State,
+        h: Real,
+        bodies: &[SegmentBody],
+        pose: &Pose,
+    ) -> (State, State) {
         let pred = q + u * h;
-        (self.force_at(q, bodies, false) + self.force_at(&pred, bodies, true)) * 0.5
+        let rb0 = self.bearing_force(q, false);
+        let rb1 = self.bearing_force(&pred, true);
+        // the cables' terms are added after the bearings', entry by entry, as one sum
+        let mut r0 = rb0.clone();
+        let mut r1 = rb1.clone();
+        if !self.cables.is_empty() {
+            self.add_cable_forces(&mut r0, pose, bodies);
+            let pose_pred = Pose::new(bodies, pred.as_slice());
+            self.add_cable_forces(&mut r1, &pose_pred, bodies);
+        }
+        ((r0 + r1) * 0.5, (rb0 + rb1) * 0.5)
     }
 
-    /// The bearings' part of [`Elements::step_force`].
-    pub fn step_force_bearings(&self, q: &State, u: &State, h: Real) -> State {
-        let only = Elements {
-            bearings: self.bearings.clone(),
-            ..Default::default()
-        };
-        let pred = q + u * h;
-        (only.force_at(q, &[], false) + only.force_at(&pred, &[], true)) * 0.5
-    }
-
-    /// `R(q)`; `trial`: the bearings' plastic displacement of their return mapping to `q`
+    /// The bearings' `R(q)`; `trial`: their plastic displacement of the return mapping to `q`
     /// (else the committed one).
-    fn force_at(&self, q: &State, bodies: &[SegmentBody], trial: bool) -> State {
+    fn bearing_force(&self, q: &State, trial: bool) -> State {
         let mut r = State::zeros(q.len());
         for b in &self.bearings {
             let u_p = if trial {
@@ -111,8 +121,13 @@ impl Elements {
             r[o + 1] += fp.y;
             r[o + 2] += -b.arm.y * fp.x + b.arm.x * fp.y;
         }
+        r
+    }
+
+    /// Adds the cables' `R(q)` to `r`, `pose` the pose at `q`.
+    fn add_cable_forces(&self, r: &mut State, pose: &Pose, bodies: &[SegmentBody]) {
         for c in &self.cables {
-            let (pa, pb, ga, gb) = cable_points(c, q, bodies);
+            let (pa, pb, ga, gb) = cable_points(c, pose, bodies);
             let d = pb - pa;
             let len = d.norm();
             let f = c.element.trial(len - c.length).force;
@@ -127,7 +142,6 @@ impl Elements {
                 r[3 * j + 2] += cross(&(p - g), &fv);
             }
         }
-        r
     }
 
     /// Books the work `−h ū·R̄` of the step done on the elements; `rb` is the bearings' part
@@ -144,14 +158,14 @@ impl Elements {
         self.w_cables -= h * u_mid.dot(&rc);
     }
 
-    /// Commits the return mappings at the new state `q`.
-    pub fn commit(&mut self, q: &State, bodies: &[SegmentBody]) {
+    /// Commits the return mappings at the new state `q` (`pose`: the pose at `q`).
+    pub fn commit(&mut self, q: &State, pose: &Pose, bodies: &[SegmentBody]) {
         for b in &mut self.bearings {
             let u = deformation(q, b.body, &b.arm);
             b.state = b.law.response(&u, &b.state).trial;
         }
         for i in 0..self.cables.len() {
-            let (pa, pb, _, _) = cable_points(&self.cables[i], q, bodies);
+            let (pa, pb, _, _) = cable_points(&self.cables[i], pose, bodies);
             let c = &mut self.cables[i];
             let resp: RestrainerResponse = c.element.trial((pb - pa).norm() - c.length);
             c.element.commit(&resp);
@@ -176,14 +190,15 @@ fn deformation(q: &State, body: usize, r: &Vector) -> Vector {
     Vector::new(x - th * r.y, y + th * r.x)
 }
 
-/// The cable's anchors and the two current centroids at `q`.
-fn cable_points(c: &Cable, q: &State, bodies: &[SegmentBody]) -> (Vector, Vector, Vector, Vector) {
-    let place = |(j, p0): (usize, Vector)| {
-        let d = Vector::new(q[3 * j], q[3 * j + 1]);
-        let sc = q[3 * j + 2].sin_cos();
-        (bodies[j].place(&p0, &d, sc), bodies[j].centroid + d)
-    };
-    let (pa, ga) = place(c.a);
-    let (pb, gb) = place(c.b);
-    (pa, pb, ga, gb)
+/// The cable's anchors and the two current centroids in `pose`.
+fn cable_points(
+    c: &Cable,
+    pose: &Pose,
+    bodies: &[SegmentBody],
+) -> (Vector, Vector, Vector, Vector) {
+    let (pa, pb) = (
+        pose.place(bodies, c.a.0, &c.a.1),
+        pose.place(bodies, c.b.0, &c.b.1),
+    );
+    (pa, pb, pose.g[c.a.0], pose.g[c.b.0])
 }
