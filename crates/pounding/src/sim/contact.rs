@@ -80,6 +80,7 @@ pub(crate) struct Pose {
 }
 
 impl Pose {
+    /// The pose at `q`.
     pub fn new(bodies: &[SegmentBody], q: &[Real]) -> Self {
         let n = bodies.len();
         let mut pose = Pose {
@@ -87,13 +88,21 @@ impl Pose {
             sc: Vec::with_capacity(n),
             g: Vec::with_capacity(n),
         };
+        pose.set(bodies, q);
+        pose
+    }
+
+    /// Overwrites this pose with the pose at `q` (reusing its storage).
+    pub fn set(&mut self, bodies: &[SegmentBody], q: &[Real]) {
+        self.d.clear();
+        self.sc.clear();
+        self.g.clear();
         for (j, b) in bodies.iter().enumerate() {
             let d = Vector::new(q[3 * j], q[3 * j + 1]);
-            pose.d.push(d);
-            pose.sc.push(q[3 * j + 2].sin_cos());
-            pose.g.push(b.centroid + d);
+            self.d.push(d);
+            self.sc.push(q[3 * j + 2].sin_cos());
+            self.g.push(b.centroid + d);
         }
-        pose
     }
     /// Current position of segment `j`'s (0-based) body point with reference position `p0`.
     #[inline]
