@@ -829,6 +829,8 @@ pub(crate) fn run<S: Stepper>(
     let abut_sides: Vec<usize> = bridge.abutments.iter().map(|a| a.side).collect();
     let mut el = bridge.elements.clone();
     let nb = bridge.bodies.len();
+    let has_elements = !el.is_empty();
+    let mut el_force = super::elements::StepForce::new(nb);
     // the geometry at q_k: computed once per state, after q_{k+1} is known, so that the
     // elements' commit at q_{k+1} and the next step share its sin θ_j, cos θ_j
     let mut frame = bridge.frame(&q);
@@ -858,9 +860,9 @@ pub(crate) fn run<S: Stepper>(
         }
         let abar = sc.ag[k] * (1.0 - th) + sc.ag[k + 1] * th;
         sc.u_free(&q, &u, &abar, &mut work.u_free);
-        let r_el = (!el.is_empty()).then(|| el.step_force(&q, &u, h, &bridge.bodies, &frame.pose));
-        if let Some((r, _)) = &r_el {
-            Scheme::apply_blocks_into(sc.winv.iter(), r, &mut work.wr);
+        if has_elements {
+            el.step_force(&q, &u, h, &bridge.bodies, &frame.pose, &mut el_force);
+            Scheme::apply_blocks_into(sc.winv.iter(), &el_force.r, &mut work.wr);
             for (uf, wr) in work.u_free.iter_mut().zip(work.wr.iter()) {
                 *uf += wr * h;
             }
@@ -877,15 +879,15 @@ pub(crate) fn run<S: Stepper>(
         let out = stepper.step(&input, &mut log);
         peaks.pen = peaks.pen.max(out.penetration);
         ledger.advance(sc, k, &u, &out.u, &mut work);
-        if let Some((r, rb)) = &r_el {
-            el.book(h, &work.u_mid, r, rb, nb);
+        if has_elements {
+            el.book(h, &work.u_mid, &mut el_force, nb);
         }
         for (qi, vi) in q.iter_mut().zip(work.u_th.iter()) {
             *qi += vi * h;
         }
         u = out.u;
         bridge.update_frame(&q, &mut frame);
-        if r_el.is_some() {
+        if has_elements {
             el.commit(&q, &frame.pose, &bridge.bodies);
         }
         steps_done = k + 1;
