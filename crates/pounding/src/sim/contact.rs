@@ -21,7 +21,7 @@
 //! simulator uses, per end, the candidate whose corner lies over the other face (spec §5.4; the
 //! smaller gap if both do, i.e. corner on corner), so at most two contacts per joint.
 
-use super::model::SegmentBody;
+use super::model::{EndFace, SegmentBody};
 use crate::geometry::ContactCase;
 use crate::math::{Real, Vector, cross};
 use nalgebra::DVector;
@@ -80,6 +80,7 @@ pub(crate) struct Pose {
 }
 
 impl Pose {
+    /// The pose at `q`.
     pub fn new(bodies: &[SegmentBody], q: &[Real]) -> Self {
         let n = bodies.len();
         let mut pose = Pose {
@@ -87,13 +88,21 @@ impl Pose {
             sc: Vec::with_capacity(n),
             g: Vec::with_capacity(n),
         };
+        pose.set(bodies, q);
+        pose
+    }
+
+    /// Overwrites this pose with the pose at `q` (reusing its storage).
+    pub fn set(&mut self, bodies: &[SegmentBody], q: &[Real]) {
+        self.d.clear();
+        self.sc.clear();
+        self.g.clear();
         for (j, b) in bodies.iter().enumerate() {
             let d = Vector::new(q[3 * j], q[3 * j + 1]);
-            pose.d.push(d);
-            pose.sc.push(q[3 * j + 2].sin_cos());
-            pose.g.push(b.centroid + d);
+            self.d.push(d);
+            self.sc.push(q[3 * j + 2].sin_cos());
+            self.g.push(b.centroid + d);
         }
-        pose
     }
     /// Current position of segment `j`'s (0-based) body point with reference position `p0`.
     #[inline]
@@ -149,42 +158,49 @@ pub(crate) struct Candidate {
     pub tangent: Vector,
 }
 
+/// What the two candidates struck on one face share: the face's current midpoint `M` and
+/// `ν = Rot(θ_struck) ν⁰`, `τ = Rot(θ_struck) τ⁰`, `Rot(θ_struck) e` (computed once per face).
+struct StruckFace {
+    mid: Vector,
+    normal: Vector,
+    tangent: Vector,
+    dir: Vector,
+}
+
+impl StruckFace {
+    fn new(
+        bodies: &[SegmentBody],
+        pose: &Pose,
+        joint: &JointGeom,
+        j: usize,
+        face: &EndFace,
+    ) -> Self {
+        let sc = pose.sc[j];
+        StruckFace {
+            mid: pose.place(bodies, j, &face.mid),
+            normal: rotate(sc, joint.nu0),
+            tangent: rotate(sc, joint.tau0),
+            dir: rotate(sc, face.dir),
+        }
+    }
+}
+
 impl Candidate {
-    pub fn new(bodies: &[SegmentBody], pose: &Pose, joint: &JointGeom, case: ContactCase) -> Self {
-        let (r, k) = case_parts(case);
-        let (striker, struck, corner, face) = if r == 0 {
-            (
-                joint.a,
-                joint.b,
-                bodies[joint.a].end.corners[k],
-                bodies[joint.b].start,
-            )
-        } else {
-            (
-                joint.b,
-                joint.a,
-                bodies[joint.b].start.corners[k],
-                bodies[joint.a].end,
-            )
-        };
-        let p = pose.place(bodies, striker, &corner);
-        let mb = pose.place(bodies, struck, &face.mid);
-        let sc = pose.sc[struck];
-        let normal = rotate(sc, joint.nu0);
-        let tangent = rotate(sc, joint.tau0);
+    /// The candidate `case` of the striking corner at `p` against the struck face `f`.
+    fn new(case: ContactCase, p: Vector, f: &StruckFace) -> Self {
+        let (r, _) = case_parts(case);
         let gap = if r == 0 {
-            (p - mb).dot(&normal)
+            (p - f.mid).dot(&f.normal)
         } else {
-            (mb - p).dot(&normal)
+            (f.mid - p).dot(&f.normal)
         };
-        let e_rot = rotate(sc, face.dir);
         Candidate {
             case,
             gap,
-            sigma: (p - mb).dot(&e_rot),
+            sigma: (p - f.mid).dot(&f.dir),
             point: p,
-            normal,
-            tangent,
+            normal: f.normal,
+            tangent: f.tangent,
         }
     }
 
@@ -210,7 +226,22 @@ pub(crate) struct JointFrame {
 
 /// The candidates of `joint` in `pose` ([`JointFrame`]).
 pub(crate) fn candidates(bodies: &[SegmentBody], pose: &Pose, joint: &JointGeom) -> JointFrame {
-    let all = ContactCase::ALL.map(|c| Candidate::new(bodies, pose, joint, c));
+    let (sa, sb) = (&bodies[joint.a], &bodies[joint.b]);
+    // per striking role r (0: segment a's end corners strike b's start face; 1: b's start
+    // corners strike a's end face): the placed corners and the struck face, shared by the
+    // candidates of that role
+    let struck = [
+        StruckFace::new(bodies, pose, joint, joint.b, &sb.start),
+        StruckFace::new(bodies, pose, joint, joint.a, &sa.end),
+    ];
+    let corners = [
+        sa.end.corners.map(|c| pose.place(bodies, joint.a, &c)),
+        sb.start.corners.map(|c| pose.place(bodies, joint.b, &c)),
+    ];
+    let all = ContactCase::ALL.map(|c| {
+        let (r, k) = case_parts(c);
+        Candidate::new(c, corners[r][k], &struck[r])
+    });
     let half_width = joint.half_w;
     let tol = 1e-9 * half_width;
     let mut sel = [None, None];

@@ -193,11 +193,20 @@ impl Scheme {
     /// energy terms of every step use the blocks of [`Self::bodies`] in place).
     fn apply_blocks<'a>(blocks: impl Iterator<Item = &'a Matrix3<Real>>, v: &State) -> State {
         let mut out = State::zeros(v.len());
+        Self::apply_blocks_into(blocks, v, &mut out);
+        out
+    }
+
+    /// [`Self::apply_blocks`] into `out` (same length as `v`), allocating nothing.
+    fn apply_blocks_into<'a>(
+        blocks: impl Iterator<Item = &'a Matrix3<Real>>,
+        v: &State,
+        out: &mut State,
+    ) {
         for (j, b) in blocks.enumerate() {
             let x: Vector3<Real> = v.fixed_rows::<3>(3 * j).into_owned();
             out.fixed_rows_mut::<3>(3 * j).copy_from(&(b * x));
         }
-        out
     }
 
     /// `Ŵ⁻¹ v`.
@@ -215,12 +224,11 @@ impl Scheme {
         out
     }
 
-    /// The contact-free velocity `u_free = u + A_u u + A_q q + B_g ā`.
-    fn u_free(&self, q: &State, u: &State, abar: &Vector) -> State {
+    /// The contact-free velocity `u_free = u + A_u u + A_q q + B_g ā`, into `out`.
+    fn u_free(&self, q: &State, u: &State, abar: &Vector, out: &mut State) {
         // block by block, in place: per entry the same products and the same sums in the same
         // order, ((u + A_u u) + A_q q) + B_g ā, as the whole-vector expression (bit-identical)
         let a = Vector2::new(abar.x, abar.y);
-        let mut out = State::zeros(u.len());
         for j in 0..self.a_u.len() {
             let uj: Vector3<Real> = u.fixed_rows::<3>(3 * j).into_owned();
             let qj: Vector3<Real> = q.fixed_rows::<3>(3 * j).into_owned();
@@ -230,32 +238,71 @@ impl Scheme {
             out.fixed_rows_mut::<3>(3 * j)
                 .copy_from(&(((uj + au) + aq) + bg));
         }
-        out
     }
 
-    /// The effective seismic load `F = −M r a_g`.
-    fn load(&self, a: &Vector) -> State {
+    /// The effective seismic load `F = −M r a_g`, into `f`.
+    fn load(&self, a: &Vector, f: &mut State) {
         let a = Vector2::new(a.x, a.y);
-        let mut f = State::zeros(3 * self.mr.len());
         for (j, m) in self.mr.iter().enumerate() {
-            f.fixed_rows_mut::<3>(3 * j).copy_from(&(m * a));
+            f.fixed_rows_mut::<3>(3 * j).copy_from(&(-(m * a)));
         }
-        -f
     }
 
-    /// `(T, V) = (½ uᵀ M u, ½ qᵀ K q)`.
-    fn energies(&self, q: &State, u: &State) -> (Real, Real) {
-        let mu = Self::apply_blocks(self.bodies.iter().map(|b| &b.mass), u);
-        let kq = Self::apply_blocks(self.bodies.iter().map(|b| &b.stiffness), q);
-        (0.5 * u.dot(&mu), 0.5 * q.dot(&kq))
+    /// `(T, V) = (½ uᵀ M u, ½ qᵀ K q)`; `w` holds `M u` and `K q`.
+    fn energies(&self, q: &State, u: &State, w: &mut Work) -> (Real, Real) {
+        Self::apply_blocks_into(self.bodies.iter().map(|b| &b.mass), u, &mut w.mu);
+        Self::apply_blocks_into(self.bodies.iter().map(|b| &b.stiffness), q, &mut w.kq);
+        (0.5 * u.dot(&w.mu), 0.5 * q.dot(&w.kq))
     }
 
-    /// `vᵀ C v`.
-    fn damping_power(&self, v: &State) -> Real {
-        v.dot(&Self::apply_blocks(
-            self.bodies.iter().map(|b| &b.damping),
-            v,
-        ))
+    /// `vᵀ C v`; `cv` holds `C v`.
+    fn damping_power(&self, v: &State, cv: &mut State) -> Real {
+        Self::apply_blocks_into(self.bodies.iter().map(|b| &b.damping), v, cv);
+        v.dot(cv)
+    }
+}
+
+/// Scratch vectors of the time loop, `3 n_bodies` entries each, allocated once per run so that
+/// the driver allocates nothing per step. Each is overwritten entry by entry with the same
+/// operations, in the same order, as the whole-vector expressions they replace (the results
+/// keep their bits).
+struct Work {
+    /// `M u` (kinetic energy).
+    mu: State,
+    /// `K q` (potential energy).
+    kq: State,
+    /// `C ū_θ` (viscous dissipation).
+    cv: State,
+    /// `F(a_g,k)` and `F(a_g,k+1)`.
+    f0: State,
+    f1: State,
+    /// `ū_θ = (1−θ) u_k + θ u_{k+1}`.
+    u_th: State,
+    /// `ū = (u_k + u_{k+1})/2`.
+    u_mid: State,
+    /// `F̄ = (1−θ) F_k + θ F_{k+1}`.
+    fbar: State,
+    /// The contact-free velocity of the step.
+    u_free: State,
+    /// `Ŵ⁻¹ R̄` of the elements.
+    wr: State,
+}
+
+impl Work {
+    fn new(n: usize) -> Self {
+        let z = || State::zeros(n);
+        Work {
+            mu: z(),
+            kq: z(),
+            cv: z(),
+            f0: z(),
+            f1: z(),
+            u_th: z(),
+            u_mid: z(),
+            fbar: z(),
+            u_free: z(),
+            wr: z(),
+        }
     }
 }
 
@@ -381,6 +428,14 @@ impl Bridge {
             .collect();
         Frame { pose, joints }
     }
+
+    /// [`Self::frame`] at `q` into `frame` (a frame of this bridge), reusing its storage.
+    pub fn update_frame(&self, q: &State, frame: &mut Frame) {
+        frame.pose.set(&self.bodies, q.as_slice());
+        for (jf, j) in frame.joints.iter_mut().zip(&self.joints) {
+            *jf = candidates(&self.bodies, &frame.pose, j);
+        }
+    }
 }
 
 /// The geometry of one state: pose and the candidates of every joint.
@@ -498,7 +553,8 @@ pub(crate) struct Peaks {
     pub bearing: Vec<Real>,
 }
 
-/// What [`Peaks::observe`] measured for the history.
+/// What [`Peaks::observe`] measured for the history (reused from step to step).
+#[derive(Default)]
 struct Observed {
     end_gaps: Vec<[Real; 2]>,
     slip: Vec<Real>,
@@ -557,11 +613,12 @@ impl Peaks {
         }
     }
 
-    /// Monitors the state at `t`.
-    fn observe(&mut self, t: Real, q: &State, fr: &Frame, br: &Bridge) -> Observed {
+    /// Monitors the state at `t`; `obs` receives what the history records.
+    fn observe(&mut self, t: Real, q: &State, fr: &Frame, br: &Bridge, obs: &mut Observed) {
         let (bodies, pose) = (&br.bodies, &fr.pose);
-        let mut end_gaps = Vec::with_capacity(br.joints.len());
-        let mut slips = Vec::with_capacity(br.joints.len());
+        let (end_gaps, slips) = (&mut obs.end_gaps, &mut obs.slip);
+        end_gaps.clear();
+        slips.clear();
         for (k, (jg, jf)) in br.joints.iter().zip(&fr.joints).enumerate() {
             let eg = jf.sel.map(|s| s.map_or(Real::NAN, |i| jf.cands[i].gap));
             let mut gmin = Real::INFINITY;
@@ -597,7 +654,8 @@ impl Peaks {
                 self.unseat = Some((t, e));
             }
         }
-        let mut abut_gaps = [Real::NAN; 2];
+        let abut_gaps = &mut obs.abut_gaps;
+        *abut_gaps = [Real::NAN; 2];
         for a in &br.abutments {
             let gm = a
                 .corners
@@ -607,11 +665,6 @@ impl Peaks {
             abut_gaps[a.side] = gm;
             let pk = self.abut[a.side].get_or_insert(Real::NEG_INFINITY);
             *pk = pk.max(a.gap - gm);
-        }
-        Observed {
-            end_gaps,
-            slip: slips,
-            abut_gaps,
         }
     }
 }
@@ -671,15 +724,19 @@ impl Ledger {
         ])
     }
 
-    /// Input work and viscous dissipation of step `k`; returns `ū_θ`.
-    fn advance(&mut self, sc: &Scheme, k: usize, u: &State, u_new: &State) -> State {
+    /// Input work and viscous dissipation of step `k`; leaves `ū_θ` in `w.u_th` and `ū` in
+    /// `w.u_mid`.
+    fn advance(&mut self, sc: &Scheme, k: usize, u: &State, u_new: &State, w: &mut Work) {
         let th = sc.th;
-        let u_th = u * (1.0 - th) + u_new * th;
-        let u_mid = (u + u_new) * 0.5;
-        let fbar = sc.load(&sc.ag[k]) * (1.0 - th) + sc.load(&sc.ag[k + 1]) * th;
-        self.w_in += sc.h * u_mid.dot(&fbar);
-        self.d_visc += sc.h * sc.damping_power(&u_th);
-        u_th
+        sc.load(&sc.ag[k], &mut w.f0);
+        sc.load(&sc.ag[k + 1], &mut w.f1);
+        for i in 0..u.len() {
+            w.u_th[i] = u[i] * (1.0 - th) + u_new[i] * th;
+            w.u_mid[i] = (u[i] + u_new[i]) * 0.5;
+            w.fbar[i] = w.f0[i] * (1.0 - th) + w.f1[i] * th;
+        }
+        self.w_in += sc.h * w.u_mid.dot(&w.fbar);
+        self.d_visc += sc.h * sc.damping_power(&w.u_th, &mut w.cv);
     }
 }
 
@@ -761,7 +818,8 @@ pub(crate) fn run<S: Stepper>(
 ) -> RunResult {
     let (h, th) = (sc.h, sc.th);
     let (mut q, mut u) = (q0, u0);
-    let (t0, v0) = sc.energies(&q, &u);
+    let mut work = Work::new(q.len());
+    let (t0, v0) = sc.energies(&q, &u, &mut work);
     let mut ledger = Ledger::new(t0 + v0);
     let mut peaks = Peaks::new(bridge);
     let mut trace = Trace::default();
@@ -771,16 +829,21 @@ pub(crate) fn run<S: Stepper>(
     let abut_sides: Vec<usize> = bridge.abutments.iter().map(|a| a.side).collect();
     let mut el = bridge.elements.clone();
     let nb = bridge.bodies.len();
+    let has_elements = !el.is_empty();
+    let mut el_force = super::elements::StepForce::new(nb);
+    // the geometry at q_k: computed once per state, after q_{k+1} is known, so that the
+    // elements' commit at q_{k+1} and the next step share its sin θ_j, cos θ_j
+    let mut frame = bridge.frame(&q);
+    let mut obs = Observed::default();
     for k in 0..=sc.n_steps {
         let t = k as Real * h;
-        let frame = bridge.frame(&q);
-        let obs = peaks.observe(t, &q, &frame, bridge);
+        peaks.observe(t, &q, &frame, bridge, &mut obs);
         peaks.observe_segments(&q, bridge);
         let forces = stepper.contact_forces();
         if let Some(f) = forces {
             peaks.observe_forces(f, &abut_sides);
         }
-        let (tk, vk) = sc.energies(&q, &u);
+        let (tk, vk) = sc.energies(&q, &u, &mut work);
         let w_el = (!el.is_empty()).then(|| el.w_bearings.iter().sum::<Real>() + el.w_cables);
         let mut energy = ledger.check(tk, vk, stepper.contact_energy(), w_el);
         energy.elements = w_el.unwrap_or(0.0);
@@ -796,35 +859,36 @@ pub(crate) fn run<S: Stepper>(
             break;
         }
         let abar = sc.ag[k] * (1.0 - th) + sc.ag[k + 1] * th;
-        let mut u_free = sc.u_free(&q, &u, &abar);
-        let r_el = (!el.is_empty()).then(|| {
-            (
-                el.step_force(&q, &u, h, &bridge.bodies),
-                el.step_force_bearings(&q, &u, h),
-            )
-        });
-        if let Some((r, _)) = &r_el {
-            u_free += sc.winv_mul(r) * h;
+        sc.u_free(&q, &u, &abar, &mut work.u_free);
+        if has_elements {
+            el.step_force(&q, &u, h, &bridge.bodies, &frame.pose, &mut el_force);
+            Scheme::apply_blocks_into(sc.winv.iter(), &el_force.r, &mut work.wr);
+            for (uf, wr) in work.u_free.iter_mut().zip(work.wr.iter()) {
+                *uf += wr * h;
+            }
         }
         let input = StepInput {
             t,
             q: &q,
             u: &u,
-            u_free: &u_free,
+            u_free: &work.u_free,
             frame: &frame,
             bridge,
             scheme: sc,
         };
         let out = stepper.step(&input, &mut log);
         peaks.pen = peaks.pen.max(out.penetration);
-        let u_th = ledger.advance(sc, k, &u, &out.u);
-        if let Some((r, rb)) = &r_el {
-            el.book(h, &((&u + &out.u) * 0.5), r, rb, nb);
+        ledger.advance(sc, k, &u, &out.u, &mut work);
+        if has_elements {
+            el.book(h, &work.u_mid, &mut el_force, nb);
         }
-        q += u_th * h;
+        for (qi, vi) in q.iter_mut().zip(work.u_th.iter()) {
+            *qi += vi * h;
+        }
         u = out.u;
-        if r_el.is_some() {
-            el.commit(&q, &bridge.bodies);
+        bridge.update_frame(&q, &mut frame);
+        if has_elements {
+            el.commit(&q, &frame.pose, &bridge.bodies);
         }
         steps_done = k + 1;
         if !(q.iter().all(|x| x.is_finite()) && u.iter().all(|x| x.is_finite())) {
@@ -843,7 +907,7 @@ pub(crate) fn run<S: Stepper>(
     if status == SimStatus::Completed && th == 0.5 && energy_balance_error > 1e-6 {
         status = SimStatus::CompletedWithEnergyError;
     }
-    let (tf, vf) = sc.energies(&q, &u);
+    let (tf, vf) = sc.energies(&q, &u, &mut work);
     let mut final_energy = ledger.energy(tf, vf, stepper.contact_energy());
     final_energy.elements = el.w_bearings.iter().sum::<Real>() + el.w_cables;
     RunResult {

@@ -24,11 +24,55 @@
 //! |u − u_p|²`, which tends to the plastic work `Σ f_p·Δu_p` as `h → 0`), and the work done on the
 //! restrainers (their stored energy plus, with yield, their plastic work).
 
-use super::contact::State;
+use super::contact::{Pose, State};
 use super::model::SegmentBody;
 use crate::element::bearing::{BearingState, BilinearBearing};
 use crate::element::restrainer::{RestrainerElement, RestrainerResponse};
 use crate::math::{Real, Vector, cross};
+
+/// The elements' force over one step ([`Elements::step_force`]) and the vectors it is computed
+/// with (`3 n_bodies` entries each), allocated once per run: a step allocates nothing.
+#[derive(Debug, Clone)]
+pub(crate) struct StepForce {
+    /// `R̄`.
+    pub r: State,
+    /// `R̄_b`, the bearings' part of `R̄`.
+    pub rb: State,
+    /// The predicted state `q_k + h u_k`.
+    pred: State,
+    /// The pose at `pred` (with cables only).
+    pose_pred: Pose,
+    /// `R(q_k)` and its bearings' part.
+    r0: State,
+    rb0: State,
+    /// `R̃(q_k + h u_k)` and its bearings' part.
+    r1: State,
+    rb1: State,
+    /// The cables' part `R̄ − R̄_b` (work booking).
+    rc: State,
+}
+
+impl StepForce {
+    /// Zeroed vectors for a bridge of `n_bodies` segments.
+    pub fn new(n_bodies: usize) -> Self {
+        let z = || State::zeros(3 * n_bodies);
+        StepForce {
+            r: z(),
+            rb: z(),
+            pred: z(),
+            pose_pred: Pose {
+                d: Vec::with_capacity(n_bodies),
+                sc: Vec::with_capacity(n_bodies),
+                g: Vec::with_capacity(n_bodies),
+            },
+            r0: z(),
+            rb0: z(),
+            r1: z(),
+            rb1: z(),
+            rc: z(),
+        }
+    }
+}
 
 /// One yielding bearing of a segment.
 #[derive(Debug, Clone)]
@@ -78,26 +122,42 @@ impl Elements {
     /// The force held over the step from `q_k` with velocity `u_k`: the trapezoidal mean
     /// `R̄ = ½ (R(q_k) + R̃(q_k + h u_k))` of the committed force and the trial force at the
     /// predicted end of the step (return mappings evaluated, not committed), second order where
-    /// the element laws are smooth.
-    pub fn step_force(&self, q: &State, u: &State, h: Real, bodies: &[SegmentBody]) -> State {
-        let pred = q + u * h;
-        (self.force_at(q, bodies, false) + self.force_at(&pred, bodies, true)) * 0.5
+    /// the element laws are smooth. Leaves `R̄` in `f.r` and its bearings' part in `f.rb` (the
+    /// rest is the cables'). `pose` is the pose at `q` (its `sin θ_j, cos θ_j` are shared with
+    /// the contact geometry of the step); the pose at the predicted state is computed here only
+    /// when there are cables (bearings use the linearised deformation).
+    pub fn step_force(
+        &self,
+        q: &State,
+        u: &State,
+        h: Real,
+        bodies: &[SegmentBody],
+        pose: &Pose,
+        f: &mut StepForce,
+    ) {
+        for i in 0..q.len() {
+            f.pred[i] = q[i] + u[i] * h;
+        }
+        self.bearing_force(q, false, &mut f.rb0);
+        self.bearing_force(&f.pred, true, &mut f.rb1);
+        // the cables' terms are added after the bearings', entry by entry, as one sum
+        f.r0.copy_from(&f.rb0);
+        f.r1.copy_from(&f.rb1);
+        if !self.cables.is_empty() {
+            self.add_cable_forces(&mut f.r0, pose, bodies);
+            f.pose_pred.set(bodies, f.pred.as_slice());
+            self.add_cable_forces(&mut f.r1, &f.pose_pred, bodies);
+        }
+        for i in 0..q.len() {
+            f.r[i] = (f.r0[i] + f.r1[i]) * 0.5;
+            f.rb[i] = (f.rb0[i] + f.rb1[i]) * 0.5;
+        }
     }
 
-    /// The bearings' part of [`Elements::step_force`].
-    pub fn step_force_bearings(&self, q: &State, u: &State, h: Real) -> State {
-        let only = Elements {
-            bearings: self.bearings.clone(),
-            ..Default::default()
-        };
-        let pred = q + u * h;
-        (only.force_at(q, &[], false) + only.force_at(&pred, &[], true)) * 0.5
-    }
-
-    /// `R(q)`; `trial`: the bearings' plastic displacement of their return mapping to `q`
-    /// (else the committed one).
-    fn force_at(&self, q: &State, bodies: &[SegmentBody], trial: bool) -> State {
-        let mut r = State::zeros(q.len());
+    /// The bearings' `R(q)` into `r`; `trial`: their plastic displacement of the return mapping
+    /// to `q` (else the committed one).
+    fn bearing_force(&self, q: &State, trial: bool, r: &mut State) {
+        r.fill(0.0);
         for b in &self.bearings {
             let u_p = if trial {
                 let u = deformation(q, b.body, &b.arm);
@@ -111,8 +171,12 @@ impl Elements {
             r[o + 1] += fp.y;
             r[o + 2] += -b.arm.y * fp.x + b.arm.x * fp.y;
         }
+    }
+
+    /// Adds the cables' `R(q)` to `r`, `pose` the pose at `q`.
+    fn add_cable_forces(&self, r: &mut State, pose: &Pose, bodies: &[SegmentBody]) {
         for c in &self.cables {
-            let (pa, pb, ga, gb) = cable_points(c, q, bodies);
+            let (pa, pb, ga, gb) = cable_points(c, pose, bodies);
             let d = pb - pa;
             let len = d.norm();
             let f = c.element.trial(len - c.length).force;
@@ -127,12 +191,12 @@ impl Elements {
                 r[3 * j + 2] += cross(&(p - g), &fv);
             }
         }
-        r
     }
 
-    /// Books the work `−h ū·R̄` of the step done on the elements; `rb` is the bearings' part
-    /// of `r` (the rest is the cables').
-    pub fn book(&mut self, h: Real, u_mid: &State, r: &State, rb: &State, bodies: usize) {
+    /// Books the work `−h ū·R̄` of the step done on the elements (`f` from
+    /// [`Elements::step_force`]).
+    pub fn book(&mut self, h: Real, u_mid: &State, f: &mut StepForce, bodies: usize) {
+        let (r, rb) = (&f.r, &f.rb);
         if self.w_bearings.len() < bodies {
             self.w_bearings.resize(bodies, 0.0);
         }
@@ -140,18 +204,20 @@ impl Elements {
             let s: Real = (0..3).map(|i| u_mid[3 * j + i] * rb[3 * j + i]).sum();
             *w -= h * s;
         }
-        let rc = r - rb;
-        self.w_cables -= h * u_mid.dot(&rc);
+        for i in 0..r.len() {
+            f.rc[i] = r[i] - rb[i];
+        }
+        self.w_cables -= h * u_mid.dot(&f.rc);
     }
 
-    /// Commits the return mappings at the new state `q`.
-    pub fn commit(&mut self, q: &State, bodies: &[SegmentBody]) {
+    /// Commits the return mappings at the new state `q` (`pose`: the pose at `q`).
+    pub fn commit(&mut self, q: &State, pose: &Pose, bodies: &[SegmentBody]) {
         for b in &mut self.bearings {
             let u = deformation(q, b.body, &b.arm);
             b.state = b.law.response(&u, &b.state).trial;
         }
         for i in 0..self.cables.len() {
-            let (pa, pb, _, _) = cable_points(&self.cables[i], q, bodies);
+            let (pa, pb, _, _) = cable_points(&self.cables[i], pose, bodies);
             let c = &mut self.cables[i];
             let resp: RestrainerResponse = c.element.trial((pb - pa).norm() - c.length);
             c.element.commit(&resp);
@@ -176,14 +242,15 @@ fn deformation(q: &State, body: usize, r: &Vector) -> Vector {
     Vector::new(x - th * r.y, y + th * r.x)
 }
 
-/// The cable's anchors and the two current centroids at `q`.
-fn cable_points(c: &Cable, q: &State, bodies: &[SegmentBody]) -> (Vector, Vector, Vector, Vector) {
-    let place = |(j, p0): (usize, Vector)| {
-        let d = Vector::new(q[3 * j], q[3 * j + 1]);
-        let sc = q[3 * j + 2].sin_cos();
-        (bodies[j].place(&p0, &d, sc), bodies[j].centroid + d)
-    };
-    let (pa, ga) = place(c.a);
-    let (pb, gb) = place(c.b);
-    (pa, pb, ga, gb)
+/// The cable's anchors and the two current centroids in `pose`.
+fn cable_points(
+    c: &Cable,
+    pose: &Pose,
+    bodies: &[SegmentBody],
+) -> (Vector, Vector, Vector, Vector) {
+    let (pa, pb) = (
+        pose.place(bodies, c.a.0, &c.a.1),
+        pose.place(bodies, c.b.0, &c.b.1),
+    );
+    (pa, pb, pose.g[c.a.0], pose.g[c.b.0])
 }
