@@ -30,9 +30,9 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
     let t_sim = Instant::now();
     let sol = setup.run().map_err(|e| anyhow!("{e}"))?;
     let sim_secs = t_sim.elapsed().as_secs_f64();
-    if let Some(w) = pounding::sim::output::warnings_message(
-        &pounding::sim::output::bridge_run_warnings(&sol),
-    ) {
+    if let Some(w) =
+        pounding::sim::output::warnings_message(&pounding::sim::output::bridge_run_warnings(&sol))
+    {
         eprintln!("{w}");
     }
     let mut warnings = Vec::new();

@@ -212,6 +212,16 @@ fn bad_bridges_name_the_key_and_line_and_write_nothing() {
         ),
         (
             "period_s = 0.5",
+            "period_s = 0.5\nbearing_points = [[15.0, 0.0]]",
+            &[
+                "segment[1].bearing_points",
+                "free to slide or spin",
+                "allow_mechanism",
+                "bridge.toml:19",
+            ],
+        ),
+        (
+            "period_s = 0.5",
             "period_s = 0.5\nbearing_points = []",
             &[
                 "segment[1].bearing_points",
@@ -290,4 +300,26 @@ fn a_bridge_that_closes_on_itself_is_refused() {
         "{err}"
     );
     assert!(!out.exists() || std::fs::read_dir(&out).unwrap().next().is_none());
+}
+
+/// A segment on a single bearing point spins freely: refused above; with
+/// `bridge.allow_mechanism = true` it runs.
+#[test]
+fn a_mechanism_runs_when_allowed() {
+    let text = BRIDGE
+        .replacen(
+            "period_s = 0.5",
+            "period_s = 0.5\nbearing_points = [[15.0, 0.0]]",
+            1,
+        )
+        .replacen("eps_n = 0.6", "eps_n = 0.6\nallow_mechanism = true", 1);
+    let (code, err, out) = simulate("mechanism", &text);
+    assert_eq!(code, Some(0), "{err}");
+    let s: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("summary.json")).unwrap()).unwrap();
+    assert!(
+        s["segments"][1]["natural_periods_s"][0].is_null(),
+        "{}",
+        s["segments"][1]
+    );
 }

@@ -572,6 +572,12 @@ impl BridgeModel {
             .collect()
     }
 
+    /// Natural frequencies `ω_1 ≤ ω_2 ≤ ω_3` of every segment on its bearings \[rad/s\] (a
+    /// mechanism, free to slide or spin, has `ω_1 = 0`).
+    pub fn segment_frequencies(&self) -> Result<Vec<[Real; 3]>, SimError> {
+        Ok(self.body_systems()?.iter().map(|b| b.frequencies).collect())
+    }
+
     /// `M`, `K`, `C`, frequencies per segment (errors name the segment).
     pub(crate) fn body_systems(&self) -> Result<Vec<BodySystem>, SimError> {
         let bodies = self.layout();

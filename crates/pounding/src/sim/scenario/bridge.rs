@@ -101,6 +101,7 @@ struct BridgeSec {
     restrainer_fy: Sp<f64>,
     restrainer_offsets: Sp<Vec<f64>>,
     restrainer_depth: Sp<f64>,
+    allow_mechanism: Sp<bool>,
 }
 
 #[derive(Deserialize, Default, Clone, Debug)]
@@ -348,7 +349,7 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
     let (ground, records, units) = build_ground(sc)?;
     let settings = build_settings(sc, &ground, &records, || {
         model.validate().map_err(|e| model_error(&v, raw, e))?;
-        Ok(())
+        check_mechanism(&v, raw, &model)
     })?;
     model
         .check_time_step(settings.dt)
@@ -544,6 +545,47 @@ fn check_mixed(
         origin: sc.src.origin.clone(),
         line: c.law_line,
     })
+}
+
+/// A segment whose bearings leave it free to slide or spin (lowest natural frequency zero, or
+/// below `1e-6` of its highest: a singular bearing stiffness, e.g. a single bearing point) is an
+/// error naming the segment's bearing key, unless
+/// `[bridge] allow_mechanism = true`.
+fn check_mechanism(v: &Val, raw: &BridgeRaw, model: &BridgeModel) -> Result<(), ScenarioError> {
+    if raw
+        .bridge
+        .allow_mechanism
+        .as_ref()
+        .is_some_and(|a| *a.get_ref())
+    {
+        return Ok(());
+    }
+    let freqs = model
+        .segment_frequencies()
+        .map_err(|e| model_error(v, raw, e))?;
+    for (i, w) in freqs.iter().enumerate() {
+        if w[0] > 1e-6 * w[2] {
+            continue;
+        }
+        let t = raw.segment[i].get_ref();
+        let (key, line) = match (&t.bearing_points, &t.period_s, &t.bearing_stiffness) {
+            (Some(p), _, _) => ("bearing_points", v.line(p)),
+            (None, Some(p), _) => ("period_s", v.line(p)),
+            (None, None, Some(p)) => ("bearing_stiffness", v.line(p)),
+            _ => ("bearing_points", v.line(&raw.segment[i])),
+        };
+        return Err(v.err(
+            format!("segment[{i}].{key}"),
+            Some(line),
+            format!(
+                "segment[{i}]: its bearings leave it free to slide or spin (a mechanism: a natural \
+                 frequency of zero); give bearing points that hold it in x, y and rotation (at \
+                 least two distinct points), or set bridge.allow_mechanism = true to simulate it \
+                 anyway"
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// A model error (named `segment[i].key`, `joint[k].key`, `abutment.side.key`, `bridge.key`) with

@@ -93,6 +93,7 @@ history_every = 10   # write every n-th step to history.csv (peaks use every ste
 # restrainer_offsets = [0.0] # one cable per entry: its place across the joint from the
 #                           #   face midpoints [m], positive to the left walking start -> end
 # restrainer_depth = 0.0    # anchors this deep inside each segment [m] (per joint: [[joint]])
+# allow_mechanism = false   # true: run segments whose bearings leave them free to slide or spin
 #
 # [[segment]]               # one table per segment, from the start
 # shape = "straight"        # "straight" (L), "skew" (L, skew_deg) or "curved" (R, beta_deg,
