@@ -52,6 +52,7 @@ pub mod output;
 pub mod pair;
 pub mod shape;
 pub mod shard;
+pub mod spectrum;
 pub mod sim;
 pub mod study;
 pub mod toml_schema;

@@ -29,6 +29,7 @@ mod physics_check;
 mod props;
 mod record_formats;
 mod shapes;
+mod spectrum;
 mod sim;
 mod sim_bearings;
 mod sim_bridge;

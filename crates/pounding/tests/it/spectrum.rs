@@ -1,0 +1,144 @@
+//! Response spectra (`pounding::spectrum`, issue 13) against independent evidence: the closed
+//! forms of a step load, a brute-force fine RK4 integration of the same piecewise-linear load,
+//! the RotD identities of a pair whose components are equal or one of them zero, and bad input.
+
+use pounding::ground_motion::{G0, Record};
+use pounding::spectrum::{check, default_periods, peak_displacement, rotd, spectrum};
+use std::f64::consts::PI;
+
+/// A deterministic irregular motion: a sum of sines with a decaying envelope, `n` samples at `dt`.
+fn motion(n: usize, dt: f64) -> Record {
+    let t: Vec<f64> = (0..n).map(|i| i as f64 * dt).collect();
+    let a = t
+        .iter()
+        .map(|&s| {
+            let env = (s / 2.0).min(1.0) * (-(s - 2.0).max(0.0) / 4.0).exp();
+            env * (3.1 * (7.3 * s).sin() + 2.0 * (17.9 * s + 0.4).sin() + 1.3 * (2.1 * s).cos())
+        })
+        .collect();
+    Record::new("test", t, a).unwrap()
+}
+
+/// `max |u|` by RK4 with `sub` steps per sample interval on the piecewise-linear load, continued
+/// for `3T` of free vibration after the last sample (the load zero there).
+fn brute_force(r: &Record, period: f64, zeta: f64, sub: usize) -> f64 {
+    let w = 2.0 * PI / period;
+    let f = |a: f64, u: f64, v: f64| (v, -a - 2.0 * zeta * w * v - w * w * u);
+    let (t, a) = (r.times(), r.values());
+    let (mut u, mut v, mut peak) = (0.0f64, 0.0f64, 0.0f64);
+    let step = |a0: f64, a1: f64, h: f64, u: &mut f64, v: &mut f64, peak: &mut f64| {
+        let dh = h / sub as f64;
+        for j in 0..sub {
+            let s0 = j as f64 / sub as f64;
+            let load = |s: f64| a0 + (a1 - a0) * s;
+            let (am, ae) = (load(s0 + 0.5 / sub as f64), load(s0 + 1.0 / sub as f64));
+            let k1 = f(load(s0), *u, *v);
+            let k2 = f(am, *u + 0.5 * dh * k1.0, *v + 0.5 * dh * k1.1);
+            let k3 = f(am, *u + 0.5 * dh * k2.0, *v + 0.5 * dh * k2.1);
+            let k4 = f(ae, *u + dh * k3.0, *v + dh * k3.1);
+            *u += dh / 6.0 * (k1.0 + 2.0 * k2.0 + 2.0 * k3.0 + k4.0);
+            *v += dh / 6.0 * (k1.1 + 2.0 * k2.1 + 2.0 * k3.1 + k4.1);
+            *peak = peak.max(u.abs());
+        }
+    };
+    for i in 0..t.len() - 1 {
+        step(a[i], a[i + 1], t[i + 1] - t[i], &mut u, &mut v, &mut peak);
+    }
+    for _ in 0..24 {
+        step(0.0, 0.0, period / 8.0, &mut u, &mut v, &mut peak);
+    }
+    peak
+}
+
+/// A constant load `a₀` from rest: `S_d = a₀/ω² (1 + e^{−ζπ/√(1−ζ²)})` (the first overshoot,
+/// between samples), `2a₀/ω²` undamped.
+#[test]
+fn a_step_load_peaks_as_the_closed_form_between_samples() {
+    let (a0, dt) = (1.7, 0.013);
+    let n = 1500;
+    let r = Record::new("step", (0..n).map(|i| i as f64 * dt).collect(), vec![a0; n]).unwrap();
+    for (period, zeta) in [(1.0, 0.0), (1.0, 0.05), (0.37, 0.2), (2.5, 0.0)] {
+        let w: f64 = 2.0 * PI / period;
+        let want = a0 / (w * w) * (1.0 + (-zeta * PI / (1.0f64 - zeta * zeta).sqrt()).exp());
+        let got = peak_displacement(r.times(), r.values(), period, zeta);
+        assert!((got - want).abs() < 1e-10 * want, "T {period} ζ {zeta}: {got} vs {want}");
+    }
+}
+
+/// The exact recurrence with the continuous-time peak equals a fine RK4 integration of the same
+/// load (to its O(h⁴) error and the grid's sampling of the peak), for short and long periods; the
+/// peak at the samples alone can be lower.
+#[test]
+fn the_recurrence_matches_a_fine_integration_and_beats_the_sampled_peak() {
+    let r = motion(400, 0.02);
+    for (period, zeta) in [(0.05, 0.05), (0.1, 0.05), (0.3, 0.02), (1.0, 0.05), (3.0, 0.1)] {
+        let got = peak_displacement(r.times(), r.values(), period, zeta);
+        let want = brute_force(&r, period, zeta, 400);
+        assert!((got - want).abs() < 2e-6 * want, "T {period}: {got} vs {want}");
+        // at the samples only (the fine integration read at the sample times)
+        let sampled = brute_force(&r, period, zeta, 1);
+        assert!(got >= sampled * (1.0 - 1e-3), "T {period}: {got} < sampled {sampled}");
+    }
+    // T = 0.1 s at dt = 0.01 s: the continuous peak is above the largest sampled |u|
+    let r = motion(800, 0.01);
+    let got = peak_displacement(r.times(), r.values(), 0.1, 0.05);
+    let fine = brute_force(&r, 0.1, 0.05, 200);
+    assert!((got - fine).abs() < 1e-6 * fine);
+}
+
+/// The ordinates: `psv = ω S_d`, `psa = ω² S_d / g`; the period and damping as given.
+#[test]
+fn ordinates_are_the_pseudo_values_of_the_peak() {
+    let r = motion(300, 0.02);
+    let s = spectrum(&r, 0.05, &[0.2, 1.0]).unwrap();
+    for o in &s {
+        let w = 2.0 * PI / o.period;
+        assert_eq!(o.damping, 0.05);
+        assert_eq!(o.sd, peak_displacement(r.times(), r.values(), o.period, 0.05));
+        assert!((o.psv - w * o.sd).abs() <= 1e-15 * o.psv);
+        assert!((o.psa_g - w * w * o.sd / G0).abs() <= 1e-15 * o.psa_g);
+    }
+}
+
+/// RotD of `(x, x)`: `u_α = u_x (cos α + sin α)`, so RotD100 = √2 S_d (α = 45°) and RotD50 the
+/// median of `|cos α + sin α|` S_d; of `(x, 0)`: RotD100 = S_d (α = 0), RotD50 the median of
+/// `|cos α|` S_d — also when the zero record is shorter and sampled differently (padding and
+/// the union grid change nothing).
+#[test]
+fn rotd_of_equal_and_single_components_follows_the_rotation() {
+    let x = motion(500, 0.02);
+    let zero = Record::new("zero", (0..300).map(|i| i as f64 * 0.015).collect(), vec![0.0; 300])
+        .unwrap();
+    let periods = [0.15, 0.6, 2.0];
+    let median = |f: &dyn Fn(f64) -> f64| {
+        let mut v: Vec<f64> = (0..180).map(|d| f((d as f64).to_radians())).collect();
+        v.sort_by(f64::total_cmp);
+        0.5 * (v[89] + v[90])
+    };
+    let same = rotd(&x, &x, 0.05, &periods).unwrap();
+    let single = rotd(&x, &zero, 0.05, &periods).unwrap();
+    for (k, &t) in periods.iter().enumerate() {
+        let sd = peak_displacement(x.times(), x.values(), t, 0.05);
+        let close = |a: f64, b: f64| (a - b).abs() < 1e-9 * b;
+        assert!(close(same.rotd100[k].sd, 2f64.sqrt() * sd), "T {t}");
+        assert!(close(same.rotd50[k].sd, median(&|a: f64| (a.cos() + a.sin()).abs()) * sd));
+        assert!(close(single.rotd100[k].sd, sd), "T {t}: {} vs {sd}", single.rotd100[k].sd);
+        assert!(close(single.rotd50[k].sd, median(&|a: f64| a.cos().abs()) * sd));
+        assert!(same.rotd50[k].sd <= same.rotd100[k].sd);
+    }
+}
+
+#[test]
+fn bad_damping_and_periods_are_errors_naming_them() {
+    for z in [1.0, -0.01, f64::NAN, 2.0] {
+        let e = check(z, &[1.0]).unwrap_err().to_string();
+        assert!(e.contains("damping"), "{e}");
+    }
+    for t in [0.0, -1.0, f64::INFINITY, f64::NAN] {
+        let e = check(0.05, &[1.0, t]).unwrap_err().to_string();
+        assert!(e.contains("period"), "{e}");
+    }
+    let p = default_periods();
+    assert_eq!((p.len(), p[0], p[99]), (100, 0.01, 10.0));
+    assert!(p.windows(2).all(|w| w[0] < w[1]));
+}
