@@ -9,6 +9,7 @@ mod cmd_compare;
 mod cmd_impact;
 mod cmd_lcp;
 mod cmd_simulate;
+mod cmd_spectrum;
 mod cmd_study;
 mod figures;
 mod plot_style;
@@ -36,6 +37,8 @@ enum Command {
     Simulate(cmd_simulate::Args),
     /// Run one scenario with several joint contact laws (rigid and compliance) side by side.
     Compare(cmd_compare::Args),
+    /// Elastic response spectra (PSA, PSV, SD) of records, and RotD50/RotD100 of horizontal pairs.
+    Spectrum(cmd_spectrum::Args),
 }
 
 /// The message of a panic raised by `print!`/`eprint!` when standard output or error cannot be
@@ -56,6 +59,7 @@ fn run(cli: Cli) -> ExitCode {
         Command::Study(a) => cmd_study::run(a),
         Command::Simulate(a) => cmd_simulate::run(a),
         Command::Compare(a) => cmd_compare::run(a),
+        Command::Spectrum(a) => cmd_spectrum::run(a),
     };
     match result {
         Ok(code) => code,

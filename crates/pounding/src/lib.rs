@@ -52,7 +52,7 @@ pub mod output;
 pub mod pair;
 pub mod shape;
 pub mod shard;
-pub mod spectrum;
 pub mod sim;
+pub mod spectrum;
 pub mod study;
 pub mod toml_schema;

@@ -11,6 +11,15 @@ use std::path::{Path, PathBuf};
 ///
 /// Finite values use Rust's shortest round-trip digits, in positional notation for
 /// `1e-5 ≤ |x| < 1e16` (and zero), in exponent notation (`1.5e-7`, `2e20`) otherwise, so that
+/// A CSV field: quoted (`"` doubled) when it contains a comma, a quote or a line break.
+pub fn csv_field(s: &str) -> String {
+    if s.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}
+
 /// tiny or huge values stay short. Non-finite values are `inf`, `-inf` and `nan`.
 pub fn float_token(x: f64) -> String {
     if x.is_nan() {

@@ -223,7 +223,13 @@ fn pieces(osc: &Oscillator, times: &[Real], accel: &[Real], period: Real) -> Vec
         out.push((p, h));
     };
     for i in 0..n.saturating_sub(1) {
-        push(accel[i], accel[i + 1], times[i + 1] - times[i], &mut u, &mut v);
+        push(
+            accel[i],
+            accel[i + 1],
+            times[i + 1] - times[i],
+            &mut u,
+            &mut v,
+        );
     }
     for _ in 0..17 {
         push(0.0, 0.0, tail_h, &mut u, &mut v);
@@ -277,7 +283,9 @@ fn common_grid(x: &Record, y: &Record) -> (Vec<Real>, Vec<Real>, Vec<Real>) {
     (t, ax, ay)
 }
 
-/// The 180 peaks `max_t |u_x cos α + u_y sin α|`, `α = 0°, 1°, …, 179°`, for one oscillator.
+/// The 180 peaks `max_t |u_x cos α + u_y sin α|`, `α = 0°, 1°, …, 179°`, for one oscillator
+/// (the pieces are visited in decreasing order of a rigorous bound of `|(u_x, u_y)|`, and the
+/// rest skipped once the bound falls below every angle's peak: the result is the same).
 fn rotated_peaks(osc: &Oscillator, px: &[(Piece, Real)], py: &[(Piece, Real)]) -> Vec<Real> {
     let angles: Vec<(Real, Real)> = (0..180)
         .map(|d| (d as Real).to_radians().sin_cos())
@@ -286,7 +294,21 @@ fn rotated_peaks(osc: &Oscillator, px: &[(Piece, Real)], py: &[(Piece, Real)]) -
     let mut peaks: Vec<Real> = vec![0.0; 180];
     let mut ux = Vec::new();
     let mut uy = Vec::new();
-    for ((pxi, h), (pyi, _)) in px.iter().zip(py) {
+    // |u_α| ≤ |(u_x, u_y)| ≤ the bound of each piece (|e^{−ζωτ}(c₁ cos + c₂ sin)| ≤ √(c₁² + c₂²));
+    // pieces in decreasing bound, stopping once a bound is below every angle's peak so far
+    let bound = |p: &Piece, h: Real| p.c1.hypot(p.c2) + p.p0.abs() + p.p1.abs() * h;
+    let mut order: Vec<(Real, usize)> = px
+        .iter()
+        .zip(py)
+        .enumerate()
+        .map(|(i, ((a, h), (b, _)))| (bound(a, *h).hypot(bound(b, *h)), i))
+        .collect();
+    order.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+    for (b, i) in order {
+        if b < peaks.iter().copied().fold(Real::INFINITY, Real::min) {
+            break;
+        }
+        let ((pxi, h), (pyi, _)) = (&px[i], &py[i]);
         let m = osc.subdivisions(*h);
         ux.clear();
         uy.clear();
@@ -317,7 +339,12 @@ fn rotated_peaks(osc: &Oscillator, px: &[(Piece, Real)], py: &[(Piece, Real)]) -
 }
 
 /// RotD50 and RotD100 of the pair `(x, y)` at `periods` with damping ratio `damping`.
-pub fn rotd(x: &Record, y: &Record, damping: Real, periods: &[Real]) -> Result<RotD, SpectrumError> {
+pub fn rotd(
+    x: &Record,
+    y: &Record,
+    damping: Real,
+    periods: &[Real],
+) -> Result<RotD, SpectrumError> {
     check(damping, periods)?;
     let (t, ax, ay) = common_grid(x, y);
     let mut out = RotD {
@@ -330,8 +357,11 @@ pub fn rotd(x: &Record, y: &Record, damping: Real, periods: &[Real]) -> Result<R
         let py = pieces(&osc, &t, &ay, period);
         let mut peaks = rotated_peaks(&osc, &px, &py);
         peaks.sort_by(Real::total_cmp);
-        out.rotd50
-            .push(Ordinate::new(period, damping, 0.5 * (peaks[89] + peaks[90])));
+        out.rotd50.push(Ordinate::new(
+            period,
+            damping,
+            0.5 * (peaks[89] + peaks[90]),
+        ));
         out.rotd100.push(Ordinate::new(period, damping, peaks[179]));
     }
     Ok(out)
@@ -348,4 +378,38 @@ pub fn default_periods() -> Vec<Real> {
             (t * f).round() / f
         })
         .collect()
+}
+
+/// One curve of `spectrum.csv`: a record (or pair) and a component (`x`, `y`, `rotd50`,
+/// `rotd100`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Curve {
+    /// The record (a file name, `builtin:ELC180`, or `X+Y` for a pair).
+    pub record: String,
+    /// `x` (a single record or a pair's first file), `y`, `rotd50` or `rotd100`.
+    pub component: String,
+    /// The ordinates, one per period.
+    pub ordinates: Vec<Ordinate>,
+}
+
+/// `spectrum.csv`: `record, component, period_s, damping, psa_g, psv_m_s, sd_m`, one row per
+/// curve and period; numbers as shortest round-trip tokens (so `period_s` and `damping` read
+/// back exactly as given); CSV quoting of names as needed.
+pub fn spectrum_csv(curves: &[Curve]) -> String {
+    use crate::output::{csv_field, float_token as f};
+    let mut s = String::from("record,component,period_s,damping,psa_g,psv_m_s,sd_m\n");
+    for c in curves {
+        let (r, k) = (csv_field(&c.record), csv_field(&c.component));
+        for o in &c.ordinates {
+            s.push_str(&format!(
+                "{r},{k},{},{},{},{},{}\n",
+                f(o.period),
+                f(o.damping),
+                f(o.psa_g),
+                f(o.psv),
+                f(o.sd)
+            ));
+        }
+    }
+    s
 }

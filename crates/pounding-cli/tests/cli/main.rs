@@ -75,5 +75,6 @@ mod shapes;
 mod sim_report;
 mod simulate;
 mod simulate_flags;
+mod spectrum;
 mod study;
 mod study_shapes;

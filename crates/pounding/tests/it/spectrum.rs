@@ -61,7 +61,10 @@ fn a_step_load_peaks_as_the_closed_form_between_samples() {
         let w: f64 = 2.0 * PI / period;
         let want = a0 / (w * w) * (1.0 + (-zeta * PI / (1.0f64 - zeta * zeta).sqrt()).exp());
         let got = peak_displacement(r.times(), r.values(), period, zeta);
-        assert!((got - want).abs() < 1e-10 * want, "T {period} ζ {zeta}: {got} vs {want}");
+        assert!(
+            (got - want).abs() < 1e-10 * want,
+            "T {period} ζ {zeta}: {got} vs {want}"
+        );
     }
 }
 
@@ -71,13 +74,25 @@ fn a_step_load_peaks_as_the_closed_form_between_samples() {
 #[test]
 fn the_recurrence_matches_a_fine_integration_and_beats_the_sampled_peak() {
     let r = motion(400, 0.02);
-    for (period, zeta) in [(0.05, 0.05), (0.1, 0.05), (0.3, 0.02), (1.0, 0.05), (3.0, 0.1)] {
+    for (period, zeta) in [
+        (0.05, 0.05),
+        (0.1, 0.05),
+        (0.3, 0.02),
+        (1.0, 0.05),
+        (3.0, 0.1),
+    ] {
         let got = peak_displacement(r.times(), r.values(), period, zeta);
         let want = brute_force(&r, period, zeta, 400);
-        assert!((got - want).abs() < 2e-6 * want, "T {period}: {got} vs {want}");
+        assert!(
+            (got - want).abs() < 2e-6 * want,
+            "T {period}: {got} vs {want}"
+        );
         // at the samples only (the fine integration read at the sample times)
         let sampled = brute_force(&r, period, zeta, 1);
-        assert!(got >= sampled * (1.0 - 1e-3), "T {period}: {got} < sampled {sampled}");
+        assert!(
+            got >= sampled * (1.0 - 1e-3),
+            "T {period}: {got} < sampled {sampled}"
+        );
     }
     // T = 0.1 s at dt = 0.01 s: the continuous peak is above the largest sampled |u|
     let r = motion(800, 0.01);
@@ -94,7 +109,10 @@ fn ordinates_are_the_pseudo_values_of_the_peak() {
     for o in &s {
         let w = 2.0 * PI / o.period;
         assert_eq!(o.damping, 0.05);
-        assert_eq!(o.sd, peak_displacement(r.times(), r.values(), o.period, 0.05));
+        assert_eq!(
+            o.sd,
+            peak_displacement(r.times(), r.values(), o.period, 0.05)
+        );
         assert!((o.psv - w * o.sd).abs() <= 1e-15 * o.psv);
         assert!((o.psa_g - w * w * o.sd / G0).abs() <= 1e-15 * o.psa_g);
     }
@@ -107,8 +125,12 @@ fn ordinates_are_the_pseudo_values_of_the_peak() {
 #[test]
 fn rotd_of_equal_and_single_components_follows_the_rotation() {
     let x = motion(500, 0.02);
-    let zero = Record::new("zero", (0..300).map(|i| i as f64 * 0.015).collect(), vec![0.0; 300])
-        .unwrap();
+    let zero = Record::new(
+        "zero",
+        (0..300).map(|i| i as f64 * 0.015).collect(),
+        vec![0.0; 300],
+    )
+    .unwrap();
     let periods = [0.15, 0.6, 2.0];
     let median = |f: &dyn Fn(f64) -> f64| {
         let mut v: Vec<f64> = (0..180).map(|d| f((d as f64).to_radians())).collect();
@@ -121,9 +143,19 @@ fn rotd_of_equal_and_single_components_follows_the_rotation() {
         let sd = peak_displacement(x.times(), x.values(), t, 0.05);
         let close = |a: f64, b: f64| (a - b).abs() < 1e-9 * b;
         assert!(close(same.rotd100[k].sd, 2f64.sqrt() * sd), "T {t}");
-        assert!(close(same.rotd50[k].sd, median(&|a: f64| (a.cos() + a.sin()).abs()) * sd));
-        assert!(close(single.rotd100[k].sd, sd), "T {t}: {} vs {sd}", single.rotd100[k].sd);
-        assert!(close(single.rotd50[k].sd, median(&|a: f64| a.cos().abs()) * sd));
+        assert!(close(
+            same.rotd50[k].sd,
+            median(&|a: f64| (a.cos() + a.sin()).abs()) * sd
+        ));
+        assert!(
+            close(single.rotd100[k].sd, sd),
+            "T {t}: {} vs {sd}",
+            single.rotd100[k].sd
+        );
+        assert!(close(
+            single.rotd50[k].sd,
+            median(&|a: f64| a.cos().abs()) * sd
+        ));
         assert!(same.rotd50[k].sd <= same.rotd100[k].sd);
     }
 }

@@ -11,11 +11,7 @@ use crate::sim::bridge::ABUTMENT_SIDES;
 
 /// CSV field: quoted when it contains a comma, a quote or a line break.
 pub(super) fn field(s: &str) -> String {
-    if s.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
-    }
+    crate::output::csv_field(s)
 }
 
 /// Header of `batch.csv` (the [`BATCH_TAIL`] columns were appended before `error`, which stays
