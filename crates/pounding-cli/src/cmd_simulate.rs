@@ -128,13 +128,12 @@ pub(crate) fn with_flags(sc: Scenario, args: &Args) -> Scenario {
         let file_law = sc.law().to_string();
         if file_law != *l && pounding::contact_law::registry::law_names().contains(&l.as_str()) {
             eprintln!(
-                "note: --law {l} replaces the scenario's contact law {file_law:?}; its [contact] \
-                 keys that {l} does not read are not used"
+                "note: --law {l} replaces the scenario's contact law {file_law:?} (at every site of \
+                 a bridge); the contact keys that {l} does not read are not used"
             );
         }
         sc = sc
-            .with_compared_laws(&[file_law, l.clone()])
-            .with_law(l)
+            .with_law_replacing(l)
             .with_flag(ParamKey::new(Section::Contact, "law"), "--law");
     }
     if !args.records.is_empty() {

@@ -140,7 +140,7 @@ fn bad_bridges_name_the_key_and_line_and_write_nothing() {
         (
             "mass = 0.8e6",
             "mass = 0.8e6\nwidth = 12.0",
-            &["joint[1].width", "same length", "bridge.toml:24"],
+            &["segment[2].width", "same length", "bridge.toml:24"],
         ),
         (
             "mass = 0.8e6",
@@ -171,6 +171,26 @@ fn bad_bridges_name_the_key_and_line_and_write_nothing() {
             "[abutment.end]\ngap = 0.04",
             "[abutment.end]\ngap = 0.04\nseat_length = -1.0",
             &["abutment.end.seat_length", "must be > 0"],
+        ),
+        // hostile-trial findings
+        (
+            "period_s = 0.5",
+            "period_s = 0.5\nbearing_points = [[0.0, -5.0, 1.0], [0.0, 5.0], [30.0, 0.0]]",
+            &[
+                "segment[1].bearing_points",
+                "point 1 has 3 coordinates",
+                "bridge.toml:19",
+            ],
+        ),
+        (
+            "mass = 1.2e6",
+            "mass = 1.2e6\ndensity = 2400.0",
+            &["segment[1].density", "not both"],
+        ),
+        (
+            "eps_n = 0.6",
+            "eps_n = 0.6\nrestrainer_k = 5e7\nrestrainer_offsets = [1.0, 1.0]",
+            &["bridge.restrainer_offsets", "same offset"],
         ),
         // restrainer cables and bearings at given points
         (
@@ -225,14 +245,14 @@ fn bad_bridges_name_the_key_and_line_and_write_nothing() {
             "period_s = 0.5\nbearing_points = []",
             &[
                 "segment[1].bearing_points",
-                "at least one point",
+                "between 1 and 1000 points",
                 "bridge.toml:19",
             ],
         ),
         (
             "period_s = 0.5",
             "period_s = 0.5\nbearing_points = [[1.0]]",
-            &["bearing_points", "line 19", "length 2"],
+            &["segment[1].bearing_points", "point 1 has 1 coordinates", "bridge.toml:19"],
         ),
     ];
     for (i, (from, to, want)) in cases.iter().enumerate() {
@@ -322,4 +342,67 @@ fn a_mechanism_runs_when_allowed() {
         "{}",
         s["segments"][1]
     );
+}
+
+/// A one-segment bridge has no joint: restrainer keys are refused, not ignored; a `[contact]` key
+/// of a bridge without joints and abutments is refused; `[bridge]` without `[[segment]]` says so.
+#[test]
+fn keys_a_bridge_cannot_use_are_refused() {
+    let one = "[bridge]\nrestrainer_k = 5e7\n\n[[segment]]\nshape = \"straight\"\nL = 30.0\n\
+               period_s = 1.0\n\n[time]\nduration = 1.0\n";
+    let (code, err, _) = simulate("one-restrainer", one);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("bridge.restrainer_k") && err.contains("no joint"),
+        "{err}"
+    );
+    let contact = "[[segment]]\nshape = \"straight\"\nL = 30.0\nperiod_s = 1.0\n\n[contact]\n\
+                   law = \"hertz\"\nk_h = 1e10\n\n[time]\nduration = 1.0\n";
+    let (code, err, _) = simulate("one-contact", contact);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("k_h") && err.contains("no joints and no abutments"),
+        "{err}"
+    );
+    let no_segments = "[bridge]\ngap = 0.02\n";
+    let (code, err, _) = simulate("no-segments", no_segments);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("[[segment]]"), "{err}");
+    // every site has its own law: a [contact] key that none of them reads is refused
+    let sites = BRIDGE
+        .replacen(
+            "[abutment.start]\ngap = 0.04",
+            "[[joint]]\n[joint.contact]\nlaw = \"kelvin\"\nk = 1e10\n[[joint]]\n[joint.contact]\n\
+         law = \"kelvin\"\nk = 1e10\n\n[abutment.start]\ngap = 0.04\n[abutment.start.contact]\n\
+         law = \"kelvin\"\nk = 1e10",
+            1,
+        )
+        .replacen(
+            "[abutment.end]\ngap = 0.04",
+            "[abutment.end]\ngap = 0.04\n[abutment.end.contact]\nlaw = \"kelvin\"\nk = 1e10\n\n\
+         [contact]\nlaw = \"hertz\"\nk_h = 1e10",
+            1,
+        );
+    assert!(sites.contains("k_h = 1e10"));
+    let (code, err, _) = simulate("unread-contact", &sites);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("k_h"), "{err}");
+    // ... and --law replaces every site's law, the keys it does not read are not used
+    let d = crate::scratch_dir("bridge", "law-over-sites");
+    let f = d.join("b.toml");
+    std::fs::write(
+        &f,
+        sites.replace("\n[contact]\nlaw = \"hertz\"\nk_h = 1e10", ""),
+    )
+    .unwrap();
+    let (code, _, err) = crate::run_capture(&[
+        "simulate",
+        f.to_str().unwrap(),
+        "--law",
+        "hertz",
+        "--out",
+        d.join("out").to_str().unwrap(),
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(err.contains("--law hertz replaces"), "{err}");
 }

@@ -426,16 +426,18 @@ impl BridgeModel {
                 a.shape.end_face(DeckEnd::Far).length()
             };
             if (wa - wb).abs() > 1e-9 * wa.max(wb) {
-                return Err(SimError::invalid(
-                    joint_key(k, "width"),
-                    wb,
-                    &format!(
-                        "the faces at this joint must have the same length to meet face to face \
-                         (segment {} ends with a face of {} m)",
+                return Err(SimError::InvalidArgument {
+                    name: seg_key(k + 1, "width"),
+                    reason: format!(
+                        "segment[{}] meets segment[{k}] at joint[{k}] with a face {} m long, but \
+                         segment[{k}]'s face there is {} m long: the two faces of a joint must have \
+                         the same length (a skewed segment's end faces are width / cos(skew) long; \
+                         adjust the widths so the faces match)",
                         k + 1,
+                        crate::output::float_token(wb),
                         crate::output::float_token(wa)
                     ),
-                ));
+                });
             }
         }
         Ok(())

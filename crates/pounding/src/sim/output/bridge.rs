@@ -259,6 +259,7 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
         "joints": joints,
         "abutments": abutments,
         "segments": segments,
+        "peak_seat_displacement_m": json_float(s.peak_seat_displacement),
         "unseated": s.unseated,
         "unseating_time_s": opt(s.unseating_time),
         "unseated_end": s.unseated_end,

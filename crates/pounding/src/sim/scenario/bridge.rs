@@ -120,7 +120,7 @@ struct SegmentSec {
     mass: Sp<f64>,
     period_s: Sp<f64>,
     bearing_stiffness: Sp<f64>,
-    bearing_points: Sp<Vec<[f64; 2]>>,
+    bearing_points: Sp<Vec<Vec<f64>>>,
     bearing: Sp<String>,
     fy: Sp<f64>,
     b: Sp<f64>,
@@ -315,6 +315,31 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
         segments.push(segment(&v, i, s.get_ref())?);
     }
     let nj = n - 1;
+    if nj == 0 {
+        let rb = &raw.bridge;
+        let lone = [
+            (&rb.restrainer_k, "restrainer_k"),
+            (&rb.restrainer_slack, "restrainer_slack"),
+            (&rb.restrainer_fy, "restrainer_fy"),
+            (&rb.restrainer_depth, "restrainer_depth"),
+        ]
+        .into_iter()
+        .find_map(|(x, k)| x.as_ref().map(|x| (v.line(x), k)))
+        .or(rb
+            .restrainer_offsets
+            .as_ref()
+            .map(|x| (v.line(x), "restrainer_offsets")));
+        if let Some((line, key)) = lone {
+            return Err(v.err(
+                bk(key),
+                Some(line),
+                format!(
+                    "{} is not used: a bridge of one segment has no joint to restrain",
+                    bk(key)
+                ),
+            ));
+        }
+    }
     if !raw.joint.is_empty() && raw.joint.len() != nj {
         let line = raw.joint.get(nj).map(|j| v.line(j));
         return Err(v.err(
@@ -481,8 +506,29 @@ fn site_contacts<'a>(
             in_use.push(&c.law);
         }
     }
+    if sc.law_replaced {
+        // `--law`: keys its law does not read are not used (unknown keys were refused above)
+        return Ok(out);
+    }
     match (&sc.compared, in_use.as_slice()) {
-        (None, [_, _, ..]) => check_contact_keys(
+        (None, [l]) if *l == sc.law() => sc.check_contact_keys()?,
+        (None, []) => {
+            let contact_key = super::contact::section_keys()
+                .iter()
+                .copied()
+                .filter(|&k| k != "law")
+                .find(|k| super::contact::given(&sc.raw.contact, k));
+            if let Some(key) = contact_key {
+                return Err(sc.src.key_error(
+                    format!(
+                        "[contact] {key} is not used: this bridge has no joints and no abutments \
+                         (no contact)"
+                    ),
+                    &[super::ParamKey::new(super::Section::Contact, key)],
+                ));
+            }
+        }
+        (None, _) => check_contact_keys(
             &sc.src,
             &sc.raw.contact,
             &in_use,
@@ -606,6 +652,7 @@ fn model_error(v: &Val, raw: &BridgeRaw, e: crate::sim::SimError) -> ScenarioErr
         let seg = raw.segment.get(i);
         let own = seg.and_then(|t| match name.rsplit('.').next() {
             Some("bearing_points") => t.get_ref().bearing_points.as_ref().map(|x| v.line(x)),
+            Some("width") => t.get_ref().width.as_ref().map(|x| v.line(x)),
             _ => None,
         });
         own.or(seg.map(|t| v.line(t)))
@@ -691,13 +738,26 @@ fn restrainer(
         None => vec![0.0],
         Some(x) => {
             let o = x.get_ref();
-            if o.is_empty() || o.iter().any(|x| !x.is_finite()) {
+            let mut sorted = o.clone();
+            sorted.sort_by(f64::total_cmp);
+            if sorted.windows(2).any(|w| w[0] == w[1]) {
                 return Err(v.err(
                     ko.clone(),
                     Some(v.line(x)),
                     format!(
-                        "invalid {ko}: give one finite offset per cable [m] (positive to the \
-                         left walking from the start to the end), e.g. [-3.0, 3.0]"
+                        "invalid {ko}: two cables at the same offset (give one cable with the \
+                         summed stiffness instead)"
+                    ),
+                ));
+            }
+            if o.is_empty() || o.len() > MAX_CABLES || o.iter().any(|x| !x.is_finite()) {
+                return Err(v.err(
+                    ko.clone(),
+                    Some(v.line(x)),
+                    format!(
+                        "invalid {ko}: give one finite offset per cable [m] (1 to {MAX_CABLES} \
+                         cables; positive to the left walking from the start to the end), e.g. \
+                         [-3.0, 3.0]"
                     ),
                 ));
             }
@@ -885,6 +945,11 @@ fn bearing_yield(v: &Val, i: usize, s: &SegmentSec) -> Result<Option<BearingYiel
     Ok(None)
 }
 
+/// Most bearing points of one segment (beyond, a run would be slow for nothing physical).
+const MAX_BEARING_POINTS: usize = 1000;
+/// Most restrainer cables across one joint.
+const MAX_CABLES: usize = 100;
+
 /// One `[[segment]]` table.
 fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> {
     let sk = |key: &str| format!("segment[{i}].{key}");
@@ -892,6 +957,17 @@ fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> 
     let thickness = v.dim(sk("thickness"), &s.thickness, Some(0.5))?;
     let density = v.pos(sk("density"), &s.density, Some(2500.0))?;
     let (mut shape, mirrored) = segment_shape(v, i, s, width, thickness, density)?;
+    if let (Some(ms), Some(_)) = (&s.mass, &s.density) {
+        return Err(v.err(
+            sk("density"),
+            Some(v.line(ms)),
+            format!(
+                "give {} or {}, not both (the mass sets the density)",
+                sk("mass"),
+                sk("density")
+            ),
+        ));
+    }
     if let Some(ms) = &s.mass {
         let m = v.pos(sk("mass"), &Some(ms.clone()), None)?;
         let f = m / shape.mass_properties().mass;
@@ -912,11 +988,28 @@ fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> 
     }
     let mass = shape.mass_properties().mass;
     let n_bearings = match &s.bearing_points {
-        Some(p) if p.get_ref().is_empty() => {
+        Some(p) if p.get_ref().is_empty() || p.get_ref().len() > MAX_BEARING_POINTS => {
             return Err(v.err(
                 sk("bearing_points"),
                 Some(v.line(p)),
-                format!("{} needs at least one point", sk("bearing_points")),
+                format!(
+                    "{} needs between 1 and {MAX_BEARING_POINTS} points",
+                    sk("bearing_points")
+                ),
+            ));
+        }
+        Some(p) if p.get_ref().iter().any(|q| q.len() != 2) => {
+            let bad = p.get_ref().iter().position(|q| q.len() != 2).unwrap_or(0);
+            return Err(v.err(
+                sk("bearing_points"),
+                Some(v.line(p)),
+                format!(
+                    "{}: point {} has {} coordinates; give each point as [along, left] (two \
+                     numbers, m)",
+                    sk("bearing_points"),
+                    bad + 1,
+                    p.get_ref()[bad].len()
+                ),
             ));
         }
         Some(p) => p.get_ref().len(),
