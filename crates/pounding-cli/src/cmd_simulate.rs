@@ -336,7 +336,7 @@ fn bounded(x: Real, decimals: usize) -> String {
 
 /// A one-line note on stderr when the given `[time] duration` is not a whole number of steps:
 /// the run takes `⌈duration/dt⌉` steps, so it ends after the duration.
-fn note_rounded_duration(settings: &pounding::sim::SimSettings) {
+pub(crate) fn note_rounded_duration(settings: &pounding::sim::SimSettings) {
     let Some(d) = settings.duration else { return };
     let Ok(n) = settings.step_count(d) else {
         return;

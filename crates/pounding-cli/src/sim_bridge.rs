@@ -27,6 +27,7 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
     let setup = sc.build_bridge()?;
     super::sim_records::print_components(&setup.problem.ground);
     pounding::output::check_output_dir_free(&args.out)?;
+    super::note_rounded_duration(&setup.settings);
     let t_sim = Instant::now();
     let sol = setup.run().map_err(|e| anyhow!("{e}"))?;
     let sim_secs = t_sim.elapsed().as_secs_f64();

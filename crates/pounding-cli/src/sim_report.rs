@@ -159,6 +159,10 @@ fn cell(v: &Value) -> String {
         Value::Null => "–".into(),
         Value::String(s) => esc(s),
         Value::Number(n) => sig6(n),
+        Value::Array(a) if a.iter().all(|x| x.is_number() || x.is_null()) => {
+            let v: Vec<String> = a.iter().map(cell).collect();
+            format!("[{}]", v.join(", "))
+        }
         Value::Bool(b) => b.to_string(),
         other => esc(&other.to_string()),
     }
@@ -192,7 +196,13 @@ fn object_tables(h: &mut String, v: &Value) {
     for (k, x) in m {
         if let Some(rows) = x.as_array().filter(|a| a.iter().any(Value::is_object)) {
             let _ = writeln!(h, "<h3>{}</h3>", esc(k));
-            array_table(h, rows);
+            // the abutments are [start, end]
+            let names: &[&str] = if k == "abutments" {
+                &["start", "end"]
+            } else {
+                &[]
+            };
+            array_table(h, rows, names);
         } else if x.is_object() {
             let _ = writeln!(h, "<h3>{}</h3>", esc(k));
             object_tables(h, x);
@@ -200,8 +210,9 @@ fn object_tables(h: &mut String, v: &Value) {
     }
 }
 
-/// Rows of objects (`null` rows shown as absent) as one table; the first column is the index.
-fn array_table(h: &mut String, rows: &[Value]) {
+/// Rows of objects (`null` rows shown as absent) as one table; the first column is the row's
+/// name from `names`, else its 1-based index.
+fn array_table(h: &mut String, rows: &[Value], names: &[&str]) {
     let mut keys: Vec<&String> = Vec::new();
     for r in rows.iter().filter_map(Value::as_object) {
         for k in r.keys() {
@@ -216,7 +227,10 @@ fn array_table(h: &mut String, rows: &[Value]) {
     }
     h.push_str("</tr>\n");
     for (i, r) in rows.iter().enumerate() {
-        let _ = write!(h, "<tr><td>{}</td>", i + 1);
+        let _ = match names.get(i) {
+            Some(n) => write!(h, "<tr><td>{n}</td>"),
+            None => write!(h, "<tr><td>{}</td>", i + 1),
+        };
         match r.as_object() {
             Some(o) => {
                 for k in &keys {

@@ -252,7 +252,11 @@ fn bad_bridges_name_the_key_and_line_and_write_nothing() {
         (
             "period_s = 0.5",
             "period_s = 0.5\nbearing_points = [[1.0]]",
-            &["segment[1].bearing_points", "point 1 has 1 coordinates", "bridge.toml:19"],
+            &[
+                "segment[1].bearing_points",
+                "point 1 has 1 coordinates",
+                "bridge.toml:19",
+            ],
         ),
     ];
     for (i, (from, to, want)) in cases.iter().enumerate() {

@@ -79,7 +79,8 @@ history_every = 10   # write every n-th step to history.csv (peaks use every ste
 # A file with [[segment]] tables describes N >= 1 segments in a row (segment 1 at the start,
 # joint k between segments k and k + 1); [decks], [joint], [abutments] and [bearings] are then
 # not allowed, while [contact], [ground_motion] and [time] are as above. The chain is laid out
-# along -y from the start (see the README, "Whole bridges"; examples/viaduct-*.toml).
+# along -y from the start (docs/guide/simulate.md, "Whole bridges of N segments";
+# examples/viaduct-*.toml). To try it: keep only this part and uncomment it.
 # [bridge]
 # damping = "dashpots"      # or "rayleigh"
 # damping_ratio = 0.05
@@ -99,12 +100,12 @@ history_every = 10   # write every n-th step to history.csv (peaks use every ste
 # shape = "straight"        # "straight" (L), "skew" (L, skew_deg) or "curved" (R, beta_deg,
 # L = 30.0                  #   curve = "left" / "right"; default: alternating, left first)
 # mass = 1.0e6              # optional (else width 10, thickness 0.5, density 2500)
-# period_s = 1.2            # four corner bearings of this translational period, or
-#                           # bearing_stiffness = ... per corner bearing [N/m]
+# period_s = 1.2            # translational period on its bearings, or
+#                           # bearing_stiffness = ... per bearing [N/m]
 # bearing_points = [[0.0, -5.0], [0.0, 5.0], [30.0, -5.0], [30.0, 5.0]]  # optional bearing
 #                           #   points [along, left] from the start-face midpoint [m] (default:
 #                           #   the four corners; period_s spreads m (2 pi / T)^2 over them)
-# bearing = "bilinear"      # optional yielding bearings: fy [N] (all four together), b in [0, 1)
+# bearing = "bilinear"      # optional yielding bearings: fy [N] (all together), b in [0, 1)
 # fy = 588399.0
 # b = 0.1
 #
@@ -116,7 +117,8 @@ history_every = 10   # write every n-th step to history.csv (peaks use every ste
 # [[joint]]                 # optional: N - 1 tables overriding the [bridge] defaults
 # gap = 0.02
 # [joint.contact]           # optional: this joint's own [contact] keys, overriding the file's
-# k_h = 2.0e10              #   key by key (or contact = { law = "kelvin", k = 1e10 } above);
+# law = "hertz"             #   key by key (or contact = { law = "kelvin", k = 1e10 } above);
+# k_h = 2.0e10
 #                           #   a site that sets another law inherits only the [contact] keys
 #                           #   its law reads; a key its law does not read is an error
 #
