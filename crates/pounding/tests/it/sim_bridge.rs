@@ -238,7 +238,10 @@ fn bad_bridges_are_errors_naming_the_key() {
     let mut m = chain(3, 1e7, 0.02, 0.5);
     m.segments[2].shape = DeckShape::Straight(StraightDeck::new(30.0, 12.0, 0.5, 2500.0).unwrap());
     let e = err(m);
-    assert!(e.contains("segment[2].width") && e.contains("same length"), "{e}");
+    assert!(
+        e.contains("segment[2].width") && e.contains("same length"),
+        "{e}"
+    );
     let mut m = chain(3, 1e7, 0.02, 0.5);
     m.joints[1].gap = -0.01;
     assert!(err(m).contains("joint[1].gap"));
