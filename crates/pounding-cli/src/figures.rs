@@ -209,7 +209,7 @@ fn draw_job(study: &Study, out: &Path, svg: bool, job: &Job) -> Result<Figure, S
                         .replace("R1/R2", "the length ratio L1/L2")
                 )
             };
-            (n.to_string(), c, (1200u32, 560u32))
+            (n.to_string(), c, (1400u32, 560u32))
         }
     };
     let png_rel = format!("figures/{name}.png");
