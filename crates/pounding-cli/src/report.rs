@@ -44,8 +44,10 @@ th{background:#f3f3f3;position:sticky;top:0}td.l,th.l{text-align:left}\
 .v-partly{color:#9a6700;font-weight:bold}.v-not{color:#666}\
 figure{margin:1em 0}figure img{max-width:100%;border:1px solid #ddd}figcaption{font-size:.9em;color:#444}\
 pre{background:#f7f7f7;padding:1em;overflow-x:auto;font-size:.85em}\
-.scroll{max-height:32em;overflow:auto;border:1px solid #ddd}nav a{margin-right:.8em}\
-nav.pages{display:flex;justify-content:space-between;background:#f3f3f3;padding:.4em .8em;margin:1em 0}\
+.scroll{max-height:32em;overflow:auto;border:1px solid #ddd}nav a{margin-right:.8em}";
+
+/// CSS of the study pages only (navigation bar, surfaces beside the region map), after [`CSS`].
+const PAGES_CSS: &str = "nav.pages{display:flex;justify-content:space-between;background:#f3f3f3;padding:.4em .8em;margin:1em 0}\
 nav.pages span{color:#888}body.geometry{max-width:1500px}\
 .pair{display:grid;grid-template-columns:1fr 1fr;gap:1em;align-items:start}\
 .pair .map{position:sticky;top:0}";
@@ -60,7 +62,7 @@ pub(crate) fn page_head(h: &mut String, title: &str, body_class: &str) {
     };
     let _ = write!(
         h,
-        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>{}</title>\n<style>{CSS}</style>\n</head>\n<body{class}>\n",
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>{}</title>\n<style>{CSS}{PAGES_CSS}</style>\n</head>\n<body{class}>\n",
         esc(title)
     );
 }
