@@ -3,7 +3,9 @@
 use crate::pounding;
 use std::path::{Path, PathBuf};
 
-const SMALL: &str = r#"
+/// A small study without figures (2 geometries, 2 μ, 5 × 9 cells); also used by
+/// `reports_browser.rs`.
+pub(crate) const SMALL: &str = r#"
 [decks]
 beta1_deg = [60.0]
 beta2_deg = [90.0, 60.0]
