@@ -264,4 +264,6 @@ fn both_reports_load_in_headless_chromium() {
     );
     assert_eq!(pages, 1);
     assert!(images >= 3, "viaduct report shows {images} images");
+    // Keep the screenshots (screenshot-*.png) to look at; drop Chromium's profile.
+    let _ = std::fs::remove_dir_all(work.join("profile"));
 }
