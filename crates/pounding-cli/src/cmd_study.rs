@@ -260,8 +260,9 @@ fn exit_for(disagreements: usize) -> ExitCode {
 }
 
 /// Removes what an earlier run may have left in `out` (every file a study writes: `report.html`
-/// and `timing.json`, which are written last and so mark a complete run, the tables and the
-/// figures), so that an interrupted run never leaves an earlier run's results beside its own.
+/// and `timing.json`, which are written last and so mark a complete run, the tables, the
+/// figures and the geometry pages `report/*.html`), so that an interrupted run never leaves an
+/// earlier run's results beside its own.
 fn remove_previous_outputs(lock: &OutputLock) -> Result<()> {
     pounding::output::remove_previous_outputs(
         lock,
@@ -281,12 +282,15 @@ fn remove_previous_outputs(lock: &OutputLock) -> Result<()> {
         }
         _ => Ok(()),
     };
-    let figs = out.join("figures");
-    if let Ok(entries) = std::fs::read_dir(&figs) {
+    for (dir, exts) in [("figures", &["png", "svg"][..]), ("report", &["html"][..])] {
+        let Ok(entries) = std::fs::read_dir(out.join(dir)) else {
+            continue;
+        };
         for e in entries.flatten() {
             let p = e.path();
             let temporary = pounding::output::is_temporary_name(&e.file_name().to_string_lossy());
-            if temporary || matches!(p.extension().and_then(|x| x.to_str()), Some("png" | "svg")) {
+            let ext = p.extension().and_then(|x| x.to_str()).unwrap_or("");
+            if temporary || exts.contains(&ext) {
                 remove(&p)?;
             }
         }
@@ -341,6 +345,16 @@ fn finish(
     } else {
         Vec::new()
     };
+    // The geometry pages first: report.html, the entry point, is written last but timing.json.
+    let pages = crate::report_pages::geometry_pages(&study, &figures);
+    if !pages.is_empty() {
+        let dir = out.join("report");
+        std::fs::create_dir_all(&dir)
+            .with_context(|| format!("cannot create {}", dir.display()))?;
+    }
+    for (rel, html) in &pages {
+        write(out, rel, html)?;
+    }
     let html = crate::report::report_html(&study, &figures, draw);
     write(out, "report.html", &html)?;
     let total = t0.elapsed().as_secs_f64();
@@ -356,7 +370,9 @@ fn finish(
     });
     write(out, "timing.json", &format!("{timing:#}\n"))?;
     eprintln!(
-        "wrote report.html; total {:.2} s; open {}",
+        "wrote report.html and {} geometry page{}; total {:.2} s; open {}",
+        pages.len(),
+        if pages.len() == 1 { "" } else { "s" },
         total,
         out.join("report.html").display()
     );

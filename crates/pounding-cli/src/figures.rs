@@ -29,6 +29,8 @@ pub struct Figure {
     pub svg: Option<String>,
     /// Caption (plain text).
     pub caption: String,
+    /// Whether this is a region map (shown beside the surfaces of its ε on a geometry page).
+    pub map: bool,
 }
 
 /// Figures shown together in the report.
@@ -40,6 +42,17 @@ pub struct FigureGroup {
     pub title: String,
     /// The figures.
     pub figures: Vec<Figure>,
+    /// The geometry (list indices) of a geometry group; `None` for the overview.
+    pub geom: Option<[usize; 4]>,
+}
+
+impl FigureGroup {
+    /// The report page of a geometry group, relative to the output directory
+    /// (`report/b1-60_b2-90_r1-100_r2-200.html`); `None` for the overview (shown on the index).
+    pub fn page(&self, study: &Study) -> Option<String> {
+        self.geom
+            .map(|g| format!("report/{}.html", study.scenario.geometry_id(g)))
+    }
 }
 
 enum Job {
@@ -79,6 +92,7 @@ pub fn draw_all(
             )
         },
         figures: Vec::new(),
+        geom: None,
     }];
     let mut jobs: Vec<(usize, Job)> = (0..3).map(|k| (0, Job::Overview(k))).collect();
     let [nb1, nb2, nr1, nr2] = s.geometry_dims();
@@ -92,6 +106,7 @@ pub fn draw_all(
                         id: format!("g-{}", s.geometry_id([b1, b2, r1, r2]).replace('_', "-")),
                         title: s.geometry_label([b1, b2, r1, r2]),
                         figures: Vec::new(),
+                        geom: Some([b1, b2, r1, r2]),
                     });
                     for eps in 0..s.eps.len() {
                         for mu in 0..s.mu.len() {
@@ -194,7 +209,7 @@ fn draw_job(study: &Study, out: &Path, svg: bool, job: &Job) -> Result<Figure, S
                         .replace("R1/R2", "the length ratio L1/L2")
                 )
             };
-            (n.to_string(), c, (1200u32, 560u32))
+            (n.to_string(), c, (1400u32, 560u32))
         }
     };
     let png_rel = format!("figures/{name}.png");
@@ -218,6 +233,7 @@ fn draw_job(study: &Study, out: &Path, svg: bool, job: &Job) -> Result<Figure, S
         png: png_rel,
         svg: svg_rel,
         caption,
+        map: matches!(job, Job::Regions { .. }),
     })
 }
 

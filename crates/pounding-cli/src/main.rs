@@ -15,6 +15,7 @@ mod figures;
 mod plot_style;
 mod plots;
 mod report;
+mod report_pages;
 mod sim_report;
 
 /// Nonsmooth rigid-impact analysis of pounding between bridge deck segments.

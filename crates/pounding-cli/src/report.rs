@@ -1,6 +1,7 @@
-//! `report.html`: one self-contained page (inline CSS, relative links only, no scripts, no
-//! timestamps) with the claims of the paper next to this run's metrics, the summary table, every
-//! figure, the scenario and the version.
+//! `report.html` of `pounding study`: the index page (inline CSS, relative links only, no
+//! scripts, no timestamps) with the claims of the paper next to this run's metrics, the summary
+//! table, the overview figures, links to one page per geometry ([`crate::report_pages`]), the
+//! scenario and the version.
 
 use crate::figures::FigureGroup;
 use pounding::output::float_token;
@@ -45,14 +46,50 @@ figure{margin:1em 0}figure img{max-width:100%;border:1px solid #ddd}figcaption{f
 pre{background:#f7f7f7;padding:1em;overflow-x:auto;font-size:.85em}\
 .scroll{max-height:32em;overflow:auto;border:1px solid #ddd}nav a{margin-right:.8em}";
 
-/// The report page. `figures_drawn` is false when figures were disabled.
-pub fn report_html(study: &Study, groups: &[FigureGroup], figures_drawn: bool) -> String {
-    let s = &study.scenario;
-    let mut h = String::with_capacity(1 << 20);
+/// CSS of the study pages only (navigation bar, surfaces beside the region map), after [`CSS`].
+const PAGES_CSS: &str = "nav.pages{display:flex;justify-content:space-between;background:#f3f3f3;padding:.4em .8em;margin:1em 0}\
+nav.pages span{color:#888}body.geometry{max-width:1500px}\
+.pair{display:grid;grid-template-columns:1fr 1fr;gap:1em;align-items:start}\
+.pair .map{position:sticky;top:0}";
+
+/// The start of a page: doctype, title, inline CSS.
+/// `body_class` is empty or a CSS class of the body.
+pub(crate) fn page_head(h: &mut String, title: &str, body_class: &str) {
+    let class = if body_class.is_empty() {
+        String::new()
+    } else {
+        format!(" class=\"{body_class}\"")
+    };
     let _ = write!(
         h,
-        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>pounding study report</title>\n<style>{CSS}</style>\n</head>\n<body>\n"
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>{}</title>\n<style>{CSS}{PAGES_CSS}</style>\n</head>\n<body{class}>\n",
+        esc(title)
     );
+}
+
+/// One figure: the image linked to its full-size file, the caption and the SVG link. `up` is
+/// the relative path from the page to the output directory (`""` or `"../"`).
+pub(crate) fn figure_html(h: &mut String, f: &crate::figures::Figure, up: &str) {
+    let svg = f
+        .svg
+        .as_ref()
+        .map(|p| format!(" (<a href=\"{up}{}\">SVG</a>)", esc(p)))
+        .unwrap_or_default();
+    let _ = writeln!(
+        h,
+        "<figure><a href=\"{up}{p}\"><img src=\"{up}{p}\" alt=\"{c}\"></a><figcaption>{c}{svg}</figcaption></figure>",
+        p = esc(&f.png),
+        c = esc(&f.caption)
+    );
+}
+
+/// The index page `report.html`: the claims of the paper against this run, the summary table,
+/// the overview figures and links to one page per geometry ([`crate::report_pages`]).
+/// `figures_drawn` is false when figures were disabled.
+pub fn report_html(study: &Study, groups: &[FigureGroup], figures_drawn: bool) -> String {
+    let s = &study.scenario;
+    let mut h = String::with_capacity(1 << 16);
+    page_head(&mut h, "pounding study report", "");
     let _ = writeln!(
         h,
         "<h1>Stick and slip at a single impact between {} bridge decks — study report</h1>",
@@ -82,7 +119,7 @@ pub fn report_html(study: &Study, groups: &[FigureGroup], figures_drawn: bool) -
             format!("{dis} cells disagree (see lcp_agrees)")
         }
     );
-    h.push_str("<nav><a href=\"#claims\">Claims of the paper</a><a href=\"#summary\">Summary table</a><a href=\"#figures\">Figures</a><a href=\"#scenario\">Scenario</a><a href=\"#conventions\">Conventions</a></nav>\n");
+    h.push_str("<nav><a href=\"#claims\">Claims of the paper</a><a href=\"#summary\">Summary table</a><a href=\"#figures\">Overview figures</a><a href=\"#geometries\">Geometries</a><a href=\"#scenario\">Scenario</a><a href=\"#conventions\">Conventions</a></nav>\n");
 
     claims_section(&mut h, study);
     summary_section(&mut h, study);
@@ -94,14 +131,18 @@ pub fn report_html(study: &Study, groups: &[FigureGroup], figures_drawn: bool) -
         "<h2 id=\"scenario\">Scenario</h2>\n<pre>{}</pre>",
         esc(&study.scenario_text)
     );
-    h.push_str("<h2 id=\"conventions\">Conventions</h2>\n<ul>\n\
+    h.push_str(CONVENTIONS);
+    h.push_str("</body>\n</html>\n");
+    h
+}
+
+/// The conventions section of the index page.
+const CONVENTIONS: &str = "<h2 id=\"conventions\">Conventions</h2>\n<ul>\n\
 <li>R is the centre-line radius; the decks form an S with centres of curvature on the joint line; θ counter-clockwise positive; the contact frame is attached to the struck face, the normal points from deck 2 to deck 1 and the tangent toward deck 1's radially outward side.</li>\n\
 <li>Outward slip (γ_T⁺ &gt; 0, r &lt; L): after impact each deck slides away from its own centre of curvature; inward slip (r &gt; U): toward it.</li>\n\
 <li>Joint-anchored placement: each deck turns about its own face midpoint; the first contact of a cell is decided geometrically (deck 1's inner corner iff θ1 &lt; −|θ2|, outer iff θ1 &gt; |θ2|, likewise for deck 2). Bounds are computed for every cell of every case; the flags mark physically possible ones.</li>\n\
 <li>Degenerate cells (rows with <code>nan</code>): θ1 = θ2 is <em>parallel-faces</em> (line contact, including θ1 = θ2 = 0), θ1 = −θ2 ≠ 0 is <em>corner-corner</em> (normal not unique); the single-impact model does not apply there.</li>\n\
-<li>lcp_agrees: Lemke's method on the single-contact impact LCP reproduces the analytic mode just below L, mid-interval and just above U.</li>\n</ul>\n</body>\n</html>\n");
-    h
-}
+<li>lcp_agrees: Lemke's method on the single-contact impact LCP reproduces the analytic mode just below L, mid-interval and just above U.</li>\n</ul>\n";
 
 /// Where the paper's Figures 3–8 are in this report (when the scenario contains their geometries).
 fn paper_map(study: &Study, groups: &[FigureGroup]) -> String {
@@ -120,7 +161,10 @@ fn paper_map(study: &Study, groups: &[FigureGroup]) -> String {
         let links: Vec<String> = groups
             .iter()
             .filter(|g| g.id.starts_with(&prefix))
-            .map(|g| format!("<a href=\"#{}\">{}</a>", esc(&g.id), esc(&g.title)))
+            .filter_map(|g| {
+                let page = g.page(study)?;
+                Some(format!("<a href=\"{}\">{}</a>", esc(&page), esc(&g.title)))
+            })
             .collect();
         let _ = writeln!(
             rows,
@@ -129,7 +173,7 @@ fn paper_map(study: &Study, groups: &[FigureGroup]) -> String {
         );
     }
     if !rows.is_empty() {
-        rows.push_str("<tr><td class=\"l\">Figures 7 and 8</td><td class=\"l\">the region maps of every geometry: left column = deck 1 strikes (Figure 7), right column = deck 2 strikes (Figure 8)</td></tr>\n");
+        rows.push_str("<tr><td class=\"l\">Figures 7 and 8</td><td class=\"l\">the region maps on every geometry page: left column = deck 1 strikes (Figure 7), right column = deck 2 strikes (Figure 8)</td></tr>\n");
         format!(
             "<table>\n<tr><th class=\"l\">Paper</th><th class=\"l\">Here</th></tr>\n{rows}</table>\n"
         )
@@ -161,7 +205,17 @@ fn claims_section(h: &mut String, study: &Study) {
 
 /// The summary table per configuration and case.
 fn summary_section(h: &mut String, study: &Study) {
-    h.push_str("<h2 id=\"summary\">Summary per configuration and case</h2>\n<p>Over first-contact cells: mean shares of the ratio range with outward slip, stick and inward slip; extremes of L and U; LCP disagreements over all cells.</p>\n<div class=\"scroll\"><table>\n<tr>");
+    h.push_str("<h2 id=\"summary\">Summary per configuration and case</h2>\n<p>Over first-contact cells: mean shares of the ratio range with outward slip, stick and inward slip; extremes of L and U; LCP disagreements over all cells.</p>\n");
+    summary_table(h, study, |_| true);
+}
+
+/// The summary rows accepted by `keep`, as a scrolling table.
+pub(crate) fn summary_table(
+    h: &mut String,
+    study: &Study,
+    keep: impl Fn(&pounding::study::summary::SummaryRow) -> bool,
+) {
+    h.push_str("<div class=\"scroll\"><table>\n<tr>");
     let curved = study.scenario.shape == StudyShape::Curved;
     let geo_heads = if curved {
         ["β1 [°]", "β2 [°]", "R1 [m]", "R2 [m]"]
@@ -185,7 +239,7 @@ fn summary_section(h: &mut String, study: &Study) {
         let _ = write!(h, "<th>{c}</th>");
     }
     h.push_str("</tr>\n");
-    for r in &study.summaries {
+    for r in study.summaries.iter().filter(|r| keep(r)) {
         let geo = if curved {
             [r.beta1_deg, r.beta2_deg, r.r1_m, r.r2_m].map(float_token)
         } else {
@@ -220,33 +274,32 @@ fn summary_section(h: &mut String, study: &Study) {
     h.push_str("</table></div>\n");
 }
 
-/// Every figure group, or a note when figures were not drawn.
+/// The overview figures and the list of geometry pages, or a note when figures were not drawn.
 fn figures_section(h: &mut String, study: &Study, groups: &[FigureGroup], figures_drawn: bool) {
-    h.push_str("<h2 id=\"figures\">Figures</h2>\n");
+    h.push_str("<h2 id=\"figures\">Overview figures</h2>\n");
     if !figures_drawn {
-        h.push_str("<p>Figures were not drawn in this run (<code>figures = false</code> or <code>--no-figures</code>).</p>\n");
-    } else {
-        h.push_str("<p>Surfaces: x = θ1, depth = θ2 (degrees), height = r = γ_T⁻/γ_N⁻; blue = lower bound L, red = upper bound U; saturated triangles are cells where that case is the real first contact, pale ones are kept for comparison. Gaps lie on the degenerate diagonals θ1 = ±θ2. Region maps follow the paper's Figures 7–8. Click a figure for full size.</p>\n<p>");
-        for g in groups {
-            let _ = write!(h, "<a href=\"#{}\">{}</a> · ", esc(&g.id), esc(&g.title));
-        }
-        h.push_str("</p>\n");
-        h.push_str(&paper_map(study, groups));
-        for g in groups {
-            let _ = writeln!(h, "<h3 id=\"{}\">{}</h3>", esc(&g.id), esc(&g.title));
-            for f in &g.figures {
-                let svg = f
-                    .svg
-                    .as_ref()
-                    .map(|p| format!(" (<a href=\"{}\">SVG</a>)", esc(p)))
-                    .unwrap_or_default();
-                let _ = writeln!(
-                    h,
-                    "<figure><a href=\"{p}\"><img src=\"{p}\" alt=\"{c}\" loading=\"lazy\"></a><figcaption>{c}{svg}</figcaption></figure>",
-                    p = esc(&f.png),
-                    c = esc(&f.caption)
-                );
-            }
+        h.push_str("<p>Figures were not drawn in this run (<code>figures = false</code> or <code>--no-figures</code>), so there are no geometry pages.</p>\n<h2 id=\"geometries\">Geometries</h2>\n<p>No figures: see the summary table.</p>\n");
+        return;
+    }
+    for g in groups.iter().filter(|g| g.geom.is_none()) {
+        let _ = writeln!(h, "<p>{}. Click a figure for full size.</p>", esc(&g.title));
+        for f in &g.figures {
+            figure_html(h, f, "");
         }
     }
+    h.push_str("<h2 id=\"geometries\">Geometries</h2>\n<p>One page per geometry: the stick surfaces L and U over θ1 × θ2 (one figure per μ) beside the region map of the same ε_N, and that geometry's rows of the summary table.</p>\n");
+    h.push_str(&paper_map(study, groups));
+    h.push_str("<ol>\n");
+    for g in groups {
+        if let Some(page) = g.page(study) {
+            let _ = writeln!(
+                h,
+                "<li><a href=\"{}\">{}</a> ({} figures)</li>",
+                esc(&page),
+                esc(&g.title),
+                g.figures.len()
+            );
+        }
+    }
+    h.push_str("</ol>\n");
 }

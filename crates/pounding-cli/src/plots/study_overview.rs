@@ -10,6 +10,13 @@ use pounding::study::Study;
 use pounding::study::StudyShape;
 use pounding::study::summary::shares;
 
+/// Smallest y-axis width of a share panel, percentage points (a spread of a few hundredths of
+/// a percent is drawn flat, not as a steep trend).
+const SHARE_MIN_SPAN: Real = 2.0;
+
+/// Smallest y-axis width of a stick-bound panel (ratio r).
+const R_MIN_SPAN: Real = 0.5;
+
 /// Cell-weighted mean of a per-row quantity over the first-contact rows accepted by `keep`.
 pub(crate) fn mean_rows(
     study: &Study,
@@ -99,7 +106,7 @@ fn overview_mu<DB: DrawingBackend>(o: &Overview, panels: &[DrawingArea<DB, Shift
         "friction coefficient μ [-]",
         &format!("r = γ_T⁻/γ_N⁻ (clamped to {range_txt})"),
         &series,
-        SeriesLabelPosition::LowerLeft,
+        R_MIN_SPAN,
     )?;
     let mut series = Vec::new();
     for (name, idx) in [("outward slip", 0usize), ("stick", 1), ("inward slip", 2)] {
@@ -130,7 +137,7 @@ fn overview_mu<DB: DrawingBackend>(o: &Overview, panels: &[DrawingArea<DB, Shift
         "friction coefficient μ [-]",
         "share of ratio range [%]",
         &series,
-        SeriesLabelPosition::UpperRight,
+        SHARE_MIN_SPAN,
     )
 }
 
@@ -199,7 +206,7 @@ fn overview_beta<DB: DrawingBackend>(
             },
             &format!("stick share of {range_txt} [%]"),
             &series,
-            SeriesLabelPosition::UpperRight,
+            SHARE_MIN_SPAN,
         )?;
     }
     Ok(())
@@ -267,7 +274,7 @@ fn overview_radius<DB: DrawingBackend>(
         xlabel,
         &format!("stick share of {range_txt} [%]"),
         &stick,
-        SeriesLabelPosition::UpperRight,
+        SHARE_MIN_SPAN,
     )?;
     let mut bounds = Vec::new();
     for (mi, &m) in mus.iter().enumerate() {
@@ -296,6 +303,6 @@ fn overview_radius<DB: DrawingBackend>(
         xlabel,
         &format!("r = γ_T⁻/γ_N⁻ (clamped to {range_txt})"),
         &bounds,
-        SeriesLabelPosition::LowerRight,
+        R_MIN_SPAN,
     )
 }

@@ -71,6 +71,7 @@ mod harden_round2;
 mod inputs;
 mod lcp;
 mod physics_check;
+mod reports_browser;
 mod shapes;
 mod sim_report;
 mod simulate;

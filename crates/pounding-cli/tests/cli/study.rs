@@ -3,7 +3,9 @@
 use crate::pounding;
 use std::path::{Path, PathBuf};
 
-const SMALL: &str = r#"
+/// A small study without figures (2 geometries, 2 μ, 5 × 9 cells); also used by
+/// `reports_browser.rs`.
+pub(crate) const SMALL: &str = r#"
 [decks]
 beta1_deg = [60.0]
 beta2_deg = [90.0, 60.0]
@@ -89,25 +91,50 @@ fn figures_are_drawn_and_every_report_link_resolves() {
     let out = d.join("out");
     let o = run(&["study", s(&sc), "--out", s(&out), "--svg"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    // Every page reachable from report.html (the index and one page per geometry).
     let mut links = 0;
-    for attr in ["src=\"", "href=\""] {
-        for part in html.split(attr).skip(1) {
-            let target = &part[..part.find('"').unwrap()];
-            if target.starts_with('#') {
-                continue;
+    let mut pages = vec![out.join("report.html").canonicalize().unwrap()];
+    let mut seen = std::collections::BTreeSet::new();
+    while let Some(page) = pages.pop() {
+        if !seen.insert(page.clone()) {
+            continue;
+        }
+        let html = std::fs::read_to_string(&page).unwrap();
+        let here = page.parent().unwrap().to_path_buf();
+        for attr in ["src=\"", "href=\""] {
+            for part in html.split(attr).skip(1) {
+                let target = &part[..part.find('"').unwrap()];
+                if target.starts_with('#') {
+                    continue;
+                }
+                assert!(
+                    !target.contains("://") && !target.starts_with('/'),
+                    "non-relative link {target}"
+                );
+                let p = here.join(target);
+                assert!(p.is_file(), "{} links to missing {target}", page.display());
+                if target.ends_with(".html") {
+                    pages.push(p.canonicalize().unwrap());
+                }
+                links += 1;
             }
-            assert!(
-                !target.contains("://") && !target.starts_with('/'),
-                "non-relative link {target}"
-            );
-            assert!(
-                out.join(target).is_file(),
-                "report links to missing {target}"
-            );
-            links += 1;
         }
     }
+    // The index and one page per geometry, each reached (paths normalised by the links).
+    let names: std::collections::BTreeSet<String> = seen
+        .iter()
+        .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "report.html",
+            "b1-60_b2-60_r1-100_r2-200.html",
+            "b1-60_b2-90_r1-100_r2-200.html"
+        ]
+        .map(String::from)
+        .into()
+    );
     // 2 geometries x 2 mu surfaces + 2 region maps + 3 overviews, PNG img+href and SVG href
     let pngs = std::fs::read_dir(out.join("figures"))
         .unwrap()
@@ -316,10 +343,17 @@ fn a_new_run_removes_the_previous_runs_markers_and_figures() {
     std::fs::create_dir_all(out.join("figures")).unwrap();
     let stale = out.join("figures").join("surface_old.png");
     std::fs::write(&stale, b"old").unwrap();
+    std::fs::create_dir_all(out.join("report")).unwrap();
+    let stale_page = out.join("report").join("b1-1_b2-1_r1-1_r2-1.html");
+    std::fs::write(&stale_page, b"old").unwrap();
     std::fs::write(out.join("timing.json"), b"{}").unwrap();
     let o = run(&["study", s(&sc), "--out", s(&out)]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(!stale.exists(), "a stale figure of an earlier run survived");
+    assert!(
+        !stale_page.exists(),
+        "a stale geometry page of an earlier run survived"
+    );
     let timing = std::fs::read_to_string(out.join("timing.json")).unwrap();
     assert!(timing.contains("total_s"), "timing.json is not this run's");
 }
