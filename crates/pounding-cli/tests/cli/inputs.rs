@@ -145,6 +145,10 @@ fn record_flag_errors_exit_2_name_the_file_and_write_nothing() {
             vec!["--record-dt", "> 0"],
         ),
         (
+            vec!["--record", s(&one), "--record-dt", "-1"],
+            vec!["--record-dt", "> 0"],
+        ),
+        (
             vec!["--csv-units", "m/s2"],
             vec!["--csv-units applies to", "csv_units"],
         ),
