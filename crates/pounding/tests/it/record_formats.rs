@@ -354,3 +354,48 @@ mod scenario {
         }
     }
 }
+
+/// An AT2 with `line3` as its 3rd line and 4 samples.
+fn at2_with(line3: &str) -> String {
+    format!("PEER\nev\n{line3}\nNPTS=  4, DT= .01 SEC\n0.1 0.2 0.3 0.4\n")
+}
+
+#[test]
+fn an_at2_header_line_naming_two_units_or_a_scaled_unit_is_refused() {
+    for (l3, want) in [
+        (
+            "ACCELERATION TIME SERIES IN UNITS OF G (CM/S/S)",
+            "names two different units",
+        ),
+        ("IN UNITS OF G, CM/S/S", "names two different units"),
+        ("UNITS: G AND CM/S/S", "names two different units"),
+        (
+            "ACC IN UNITS OF G  COMPONENT: GAL",
+            "names two different units",
+        ),
+        (
+            "ACCELERATION (CM/S/S) IN UNITS OF G",
+            "names two different units",
+        ),
+        ("IN UNITS OF G X 1000", "a scaled unit is not supported"),
+        ("IN UNITS OF G*1000", "a scaled unit is not supported"),
+        (
+            "IN UNITS OF CM/S/S TIMES 10",
+            "a scaled unit is not supported",
+        ),
+        ("ACCELERATION (G x1000)", "a scaled unit is not supported"),
+        ("UNITS OF 1000 X GAL", "a scaled unit is not supported"),
+    ] {
+        let e = msg(Record::from_at2_str(&at2_with(l3), "u.AT2").unwrap_err());
+        assert!(e.contains("u.AT2:3") && e.contains(want), "{l3}: {e}");
+    }
+    // one unit, written twice or with an azimuth before it, is still read
+    for (l3, factor) in [
+        ("ACCELERATION IN UNITS OF GAL (CM/S/S)", 0.01),
+        ("EL CENTRO 180 (CM/S/S)", 0.01),
+        ("ACCELERATION TIME SERIES IN UNITS OF G", G0),
+    ] {
+        let r = Record::from_at2_str(&at2_with(l3), "u.AT2").unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(r.values()[3], 0.4 * factor, "{l3}");
+    }
+}
