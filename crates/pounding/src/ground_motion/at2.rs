@@ -210,7 +210,7 @@ fn is_scaled(toks: &[(bool, &str)], i: usize) -> bool {
 }
 
 /// Whether `tok` looks like a unit of acceleration (`X/S/S`, `X/S^2`, `X/S2`).
-fn looks_like_accel_unit(tok: &str) -> bool {
+pub(super) fn looks_like_accel_unit(tok: &str) -> bool {
     ["/S/S", "/S^2", "/S2", "/S²"]
         .iter()
         .any(|e| tok.ends_with(e))
