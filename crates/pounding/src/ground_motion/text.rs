@@ -372,9 +372,6 @@ fn comment_header_cells(line: &str) -> Option<Vec<String>> {
         }
     }
     let first = cells.first()?.to_ascii_lowercase();
-    let name = first
-        .split(|c: char| matches!(c, '_' | '(' | '[' | ' '))
-        .next()
-        .unwrap_or("");
+    let name = first.split(['_', '(', '[', ' ']).next().unwrap_or("");
     (cells.len() == 2 && matches!(name, "t" | "time")).then_some(cells)
 }
