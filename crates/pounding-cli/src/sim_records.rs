@@ -5,7 +5,7 @@
 
 use super::Args;
 use anyhow::{Result, bail};
-use pounding::ground_motion::GroundMotion;
+use pounding::ground_motion::{ComponentInfo, GroundMotion};
 use std::path::{Path, PathBuf};
 
 /// Extensions (any case) of the files a `--records` directory contributes.
@@ -109,14 +109,19 @@ const PLAUSIBLE_PGA_G: f64 = 2.0;
 /// [`PLAUSIBLE_PGA_G`] (units probably wrong; not an error).
 pub(crate) fn print_components(g: &GroundMotion) {
     for c in g.components() {
-        eprintln!("{}", c.line());
-        if c.pga_g > PLAUSIBLE_PGA_G {
-            eprintln!(
-                "warning: record {} has a PGA of {:.3} g as read in {}; check its units \
-                 (csv_units / --csv-units)",
-                c.record, c.pga_g, c.units
-            );
-        }
+        print_component(&c);
+    }
+}
+
+/// Prints the line of one component ([`ComponentInfo::line`]) and the PGA warning if due.
+pub(crate) fn print_component(c: &ComponentInfo) {
+    eprintln!("{}", c.line());
+    if c.pga_g > PLAUSIBLE_PGA_G {
+        eprintln!(
+            "warning: record {} has a PGA of {:.3} g as read in {}; check its units \
+             (csv_units / --csv-units)",
+            c.record, c.pga_g, c.units
+        );
     }
 }
 

@@ -315,6 +315,11 @@ fn an_m_s2_file_read_as_g_warns_of_its_pga_and_a_bad_header_exits_2() {
             && w.contains("--csv-units"),
         "{w}"
     );
+    // and in a batch, once per record
+    let out = d.join("ob");
+    let (code, _, err) = run_capture(&["simulate", "--out", s(&out), "--records", s(&cols)]);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(err.matches("warning: record").count(), 1, "{err}");
     // headers that would be misread: exit 2, file and line named, nothing written
     let body: String = std::fs::read_to_string(&csv)
         .unwrap()
