@@ -49,7 +49,7 @@ pub struct Args {
     pub csv_units: Option<AccelUnits>,
     /// Sample interval (s) of one-column records (accelerations only, as OpenSees' timeSeries
     /// Path -dt) given by --record / --records; refused for files with their own times.
-    #[arg(long, value_name = "SECONDS")]
+    #[arg(long, value_name = "SECONDS", allow_negative_numbers = true)]
     pub record_dt: Option<f64>,
     /// Multiply both ground-motion scale factors by S (negative: a sign flip).
     #[arg(long, value_name = "S", allow_negative_numbers = true)]

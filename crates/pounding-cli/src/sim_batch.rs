@@ -62,7 +62,7 @@ fn plan(args: &Args, reading: &ReadOptions) -> Result<Plan> {
         .collect();
     for r in &records {
         if let Ok(rec) = &r.record {
-            eprintln!("{}", ComponentInfo::of("y", rec).line());
+            super::sim_records::print_component(&ComponentInfo::of("y", rec));
         }
     }
     pounding::sim::batch::validate_lists(&records, &scales).map_err(|e| anyhow!("{e}"))?;

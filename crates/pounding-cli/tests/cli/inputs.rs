@@ -95,6 +95,7 @@ fn a_cm_s2_at2_a_g_csv_m_s2_columns_and_one_column_give_the_same_run() {
             "{line}"
         );
         assert!(!err.contains("ground motion x:"), "{err}");
+        assert!(!err.contains("warning: record"), "plausible PGA: {err}");
         let v = summary(&out);
         let c = &v["ground_motion"]["components"];
         assert_eq!(c.as_array().unwrap().len(), 1);
@@ -142,6 +143,10 @@ fn record_flag_errors_exit_2_name_the_file_and_write_nothing() {
         ),
         (
             vec!["--record", s(&one), "--record-dt", "0"],
+            vec!["--record-dt", "> 0"],
+        ),
+        (
+            vec!["--record", s(&one), "--record-dt", "-1"],
             vec!["--record-dt", "> 0"],
         ),
         (
@@ -289,4 +294,53 @@ fn a_bridge_run_prints_and_writes_its_components() {
     let c = &summary(&out)["ground_motion"]["components"];
     assert_eq!(c[0]["units"], "m/s2 (--csv-units)");
     assert_eq!(c[0]["npts"], 300);
+}
+
+#[test]
+fn an_m_s2_file_read_as_g_warns_of_its_pga_and_a_bad_header_exits_2() {
+    let d = scratch_dir("inputs", "pga");
+    let [_, (csv, ..), (cols, ..), _] = same_motion(&d);
+    // the m/s2 columns read in g: PGA 0.28 x 9.81 = 2.75 g, a warning (not an error)
+    let out = d.join("o");
+    let (code, _, err) = run_capture(&["simulate", "--record", s(&cols), "--out", s(&out)]);
+    assert_eq!(code, Some(0), "{err}");
+    let w = err
+        .lines()
+        .find(|l| l.starts_with("warning: record"))
+        .unwrap_or_else(|| panic!("no warning in {err}"));
+    assert!(
+        w.contains("m.txt")
+            && w.contains("2.75")
+            && w.contains("as read in g")
+            && w.contains("--csv-units"),
+        "{w}"
+    );
+    // and in a batch, once per record
+    let out = d.join("ob");
+    let (code, _, err) = run_capture(&["simulate", "--out", s(&out), "--records", s(&cols)]);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(err.matches("warning: record").count(), 1, "{err}");
+    // headers that would be misread: exit 2, file and line named, nothing written
+    let body: String = std::fs::read_to_string(&csv)
+        .unwrap()
+        .lines()
+        .skip(1)
+        .map(|l| format!("{l}\n"))
+        .collect();
+    for (header, want) in [
+        ("t,a[gal]", "GAL"),
+        ("time (s),velocity (cm/s)", "velocity"),
+        ("t (min),a (g)", "only seconds"),
+        ("t,a (mg)", "unknown units"),
+    ] {
+        let p = write(&d, "h.csv", &format!("{header}\n{body}"));
+        let out = d.join("oh");
+        let (code, _, err) = run_capture(&["simulate", "--record", s(&p), "--out", s(&out)]);
+        assert_eq!(code, Some(2), "{header}: {err}");
+        assert!(
+            err.contains("h.csv:1") && err.contains(want),
+            "{header}: {err}"
+        );
+        assert!(!out.exists(), "{header} wrote {}", out.display());
+    }
 }

@@ -69,7 +69,7 @@ impl Record {
 
 /// The factor to m/s² of the acceleration units `token` (upper case, `**` written `^`, `SEC`
 /// written `S`), or `None` if it is not a unit of acceleration this reader knows.
-fn accel_unit_factor(token: &str) -> Option<Real> {
+pub(super) fn accel_unit_factor(token: &str) -> Option<Real> {
     Some(match token {
         "G" => G0,
         "CM/S/S" | "CM/S^2" | "CM/S2" | "CM/S²" | "GAL" | "GALS" => 0.01,
@@ -124,32 +124,57 @@ fn at2_units_factor(lines: &[&str]) -> Result<(Real, Option<String>), (usize, St
     })
 }
 
-const ACCEPTED_UNITS: &str =
+pub(super) const ACCEPTED_UNITS: &str =
     "accepted: G, CM/S/S (CM/S^2, CM/SEC**2, GAL), MM/S/S, M/S/S (M/S^2), IN/S/S, FT/S/S";
 
 /// The acceleration unit a header `line` names (factor to m/s² and the unit as written,
 /// normalised), `None` if it names none, or an error for units it mentions but this reader does
-/// not know. `G` counts only after `OF`, `IN`, `UNITS` or in brackets (a bare `G` may be part of a
-/// name).
+/// not know, two different units on the line (`IN UNITS OF G (CM/S/S)`), or a scaled unit
+/// (`G X 1000`, `G*1000`, `1000 TIMES G`). `G` counts only after `OF`, `IN`, `UNITS` or in
+/// brackets (a bare `G` may be part of a name).
 pub(super) fn line_units(line: &str) -> Result<Option<(Real, String)>, String> {
     let norm = line
         .to_ascii_uppercase()
         .replace("**", "^")
-        .replace("SEC", "S");
-    let mut prev = "";
-    let mut mentions_units = false;
-    let mut found = None;
+        .replace("SEC", "S")
+        .replace('*', " * ")
+        .replace('×', " X ");
     let seps = |c: char| c.is_whitespace() || matches!(c, ',' | ':' | '=' | ';' | '_');
-    for raw in norm.split(seps) {
-        if raw.is_empty() {
-            continue;
-        }
-        let bracketed = raw.starts_with(['(', '[']) || raw.ends_with([')', ']']);
-        let tok = raw.trim_matches(|c| matches!(c, '(' | ')' | '[' | ']'));
+    let toks: Vec<(bool, &str)> = norm
+        .split(seps)
+        .filter(|raw| !raw.is_empty())
+        .map(|raw| {
+            let bracketed = raw.starts_with(['(', '[']) || raw.ends_with([')', ']']);
+            (
+                bracketed,
+                raw.trim_matches(|c| matches!(c, '(' | ')' | '[' | ']')),
+            )
+        })
+        .collect();
+    let mut mentions_units = false;
+    let mut found: Option<(Real, String)> = None;
+    for (i, &(bracketed, tok)) in toks.iter().enumerate() {
+        let prev = if i > 0 { toks[i - 1].1 } else { "" };
         mentions_units |= tok.starts_with("UNIT");
         let bare_g = tok == "G" && !(bracketed || matches!(prev, "OF" | "IN" | "UNITS" | "UNIT"));
         match accel_unit_factor(tok).filter(|_| !bare_g) {
-            Some(f) => found = Some((f, tok.to_string())),
+            Some(f) => {
+                if let Some((g, u)) = &found
+                    && *g != f
+                {
+                    return Err(format!(
+                        "the header line {line:?} names two different units, {u} and {tok}: \
+                         give one; {ACCEPTED_UNITS}"
+                    ));
+                }
+                if is_scaled(&toks, i) {
+                    return Err(format!(
+                        "a scaled unit is not supported: header line {line:?} multiplies {tok} \
+                         by a factor; convert the values to plain units ({ACCEPTED_UNITS})"
+                    ));
+                }
+                found = Some((f, tok.to_string()));
+            }
             None if looks_like_accel_unit(tok) => {
                 return Err(format!(
                     "unknown units {tok:?} in header line {line:?}; {ACCEPTED_UNITS}"
@@ -157,7 +182,6 @@ pub(super) fn line_units(line: &str) -> Result<Option<(Real, String)>, String> {
             }
             None => {}
         }
-        prev = tok;
     }
     if mentions_units && found.is_none() {
         return Err(format!(
@@ -167,8 +191,26 @@ pub(super) fn line_units(line: &str) -> Result<Option<(Real, String)>, String> {
     Ok(found)
 }
 
+/// Whether the unit at `toks[i]` carries a multiplier: followed by `X <number>`, `X<number>`,
+/// `*`, `TIMES`, or preceded by `*`, `TIMES` or `<number> X` (a number alone before a unit may
+/// be a component azimuth, `180 (CM/S/S)`).
+fn is_scaled(toks: &[(bool, &str)], i: usize) -> bool {
+    let at = |k: usize| toks.get(k).map_or("", |t| t.1);
+    let number = |t: &str| parse_real(t).is_some();
+    let times_word = |t: &str| matches!(t, "*" | "TIMES" | "×");
+    let next = at(i + 1);
+    let x_number = |t: &str| {
+        t.strip_prefix('X')
+            .is_some_and(|r| !r.is_empty() && number(r))
+    };
+    let after = times_word(next) || (next == "X" && number(at(i + 2))) || x_number(next);
+    let prev = if i > 0 { at(i - 1) } else { "" };
+    let before = times_word(prev) || (prev == "X" && i >= 2 && number(at(i - 2)));
+    after || before
+}
+
 /// Whether `tok` looks like a unit of acceleration (`X/S/S`, `X/S^2`, `X/S2`).
-fn looks_like_accel_unit(tok: &str) -> bool {
+pub(super) fn looks_like_accel_unit(tok: &str) -> bool {
     ["/S/S", "/S^2", "/S2", "/S²"]
         .iter()
         .any(|e| tok.ends_with(e))

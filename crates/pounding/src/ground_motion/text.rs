@@ -1,7 +1,7 @@
 //! Text records: CSV `t, a`, whitespace-separated columns `t a`, and a sequence of accelerations
 //! with a given sample interval (OpenSees `timeSeries Path -dt`).
 
-use super::at2::line_units;
+use super::at2::{ACCEPTED_UNITS, accel_unit_factor, looks_like_accel_unit};
 use super::{
     AccelUnits, GroundMotionError, Record, converted_overflow, parse_err, parse_real, push_values,
 };
@@ -10,7 +10,10 @@ use crate::output::float_token;
 
 impl Record {
     /// Parses a two-column CSV `t, a` (t in s, a in `units`). Blank lines and lines starting
-    /// with `#` are skipped; a first non-numeric line is taken as a header. Times must increase
+    /// with `#` are skipped; a first non-numeric line is taken as a header. The header is read:
+    /// a velocity or displacement column, a time unit other than seconds, and an acceleration
+    /// unit (in brackets anywhere in a cell, `a[gal]`, `acc (cm/s^2)`, or a word, `acc_gal`) that
+    /// is not an acceleration unit or differs from `units` are refused. Times must increase
     /// strictly. Errors carry the 1-based line number.
     pub fn from_csv_str(
         text: &str,
@@ -39,7 +42,7 @@ impl Record {
                         })
                 });
             if is_header {
-                check_csv_header_units(raw, units).map_err(|m| parse_err(source_name, k + 1, m))?;
+                check_header_cells(&cols, units).map_err(|m| parse_err(source_name, k + 1, m))?;
             }
             if cols.len() != 2 {
                 if is_header {
@@ -74,14 +77,26 @@ impl Record {
     }
 
     /// Parses whitespace-separated columns `t a` (t in s, a in `units`), one sample a line.
-    /// Blank lines and lines starting with `#` (a comment header) are skipped. Times must
-    /// increase strictly. Errors carry the 1-based line number.
+    /// Blank lines and lines starting with `#` (a comment header) are skipped; a `#` line before
+    /// the first sample that looks like a header of the columns (`# t (s)  a (gal)`) is checked
+    /// as a CSV header is. Times must increase strictly. Errors carry the 1-based line number.
     pub fn from_columns_str(
         text: &str,
         source_name: &str,
         units: AccelUnits,
     ) -> Result<Self, GroundMotionError> {
         let (mut times, mut values) = (Vec::new(), Vec::new());
+        // `#` lines before the first sample that look like a header (`# t (s)  a (gal)`)
+        for (k, line) in text.lines().enumerate() {
+            let line = line.trim();
+            if !(line.is_empty() || line.starts_with('#')) {
+                break;
+            }
+            if let Some(cells) = comment_header_cells(line) {
+                let cells: Vec<&str> = cells.iter().map(String::as_str).collect();
+                check_header_cells(&cells, units).map_err(|m| parse_err(source_name, k + 1, m))?;
+            }
+        }
         for (k, line) in data_lines(text) {
             let cols: Vec<&str> = line.split_whitespace().collect();
             let pair = match cols[..] {
@@ -182,14 +197,181 @@ fn add_pair(
     Ok(())
 }
 
-/// A CSV header that names acceleration units must agree with the units the file is read in.
-fn check_csv_header_units(line: &str, units: AccelUnits) -> Result<(), String> {
-    match line_units(line)? {
-        Some((f, tok)) if f != units.factor() => Err(format!(
-            "the header names the units {tok} but the record is read in {} (csv_units): set \
-             csv_units to match (\"g\" or \"m/s2\"), or convert the file",
+/// A header (CSV, or a `#` line over columns `t a`) naming `cells`: the first is time, the others
+/// acceleration. Refused: a velocity or displacement column, a time unit other than seconds,
+/// a velocity/length or unknown unit for the acceleration, two units in one cell, and an
+/// acceleration unit that differs from the units the file is read in (`units`).
+fn check_header_cells(cells: &[&str], units: AccelUnits) -> Result<(), String> {
+    for (i, cell) in cells.iter().enumerate() {
+        let (words, bracketed) = split_cell(cell);
+        for w in &words {
+            if let Some(kind) = quantity_word(w) {
+                return Err(format!(
+                    "the header column {cell:?} is a {kind}: the record must be an \
+                     acceleration time series (t, a)"
+                ));
+            }
+        }
+        if i == 0 {
+            check_time_cell(cell, &words, &bracketed)?;
+        } else {
+            check_accel_cell(cell, &words, &bracketed, units)?;
+        }
+    }
+    Ok(())
+}
+
+/// The words of a header `cell` outside brackets (split at whitespace, `_`, `:`), and the
+/// contents of its `(...)` / `[...]` groups, upper case.
+fn split_cell(cell: &str) -> (Vec<String>, Vec<String>) {
+    let upper = cell.to_ascii_uppercase();
+    let (mut outside, mut inside) = (String::new(), Vec::new());
+    let mut group: Option<String> = None;
+    for c in upper.chars() {
+        match (c, group.as_mut()) {
+            ('(' | '[', None) => group = Some(String::new()),
+            (')' | ']', Some(_)) => inside.extend(group.take().map(|g| g.trim().to_string())),
+            (c, Some(g)) => g.push(c),
+            (c, None) => outside.push(c),
+        }
+    }
+    // an unclosed bracket: its content still counts
+    inside.extend(group.map(|g| g.trim().to_string()));
+    let words = outside
+        .split(|c: char| c.is_whitespace() || matches!(c, '_' | ':' | '=' | ';'))
+        .filter(|w| !w.is_empty())
+        .map(str::to_string)
+        .collect();
+    (
+        words,
+        inside.into_iter().filter(|g| !g.is_empty()).collect(),
+    )
+}
+
+/// `velocity` or `displacement` if the header word `w` names one.
+fn quantity_word(w: &str) -> Option<&'static str> {
+    match w {
+        "VEL" | "VELO" | "VELOCITY" | "VELOCITIES" => Some("velocity"),
+        "DISP" | "DISPL" | "DISPLACEMENT" | "DISPLACEMENTS" => Some("displacement"),
+        _ => None,
+    }
+}
+
+const SECONDS: [&str; 5] = ["S", "SEC", "SECS", "SECOND", "SECONDS"];
+const OTHER_TIME_UNITS: [&str; 10] = [
+    "MS",
+    "MSEC",
+    "MILLISECONDS",
+    "US",
+    "MIN",
+    "MINS",
+    "MINUTE",
+    "MINUTES",
+    "HR",
+    "HOURS",
+];
+
+/// The time column of a header is in seconds (bracketed unit `s`/`sec`/`seconds`, or none).
+fn check_time_cell(cell: &str, words: &[String], bracketed: &[String]) -> Result<(), String> {
+    let bad = bracketed
+        .iter()
+        .find(|b| !SECONDS.contains(&b.as_str()))
+        .or_else(|| {
+            words
+                .iter()
+                .find(|w| OTHER_TIME_UNITS.contains(&w.as_str()))
+        });
+    match bad {
+        Some(u) => Err(format!(
+            "the time column {cell:?} is in {u:?}: only seconds (s, sec, seconds) are accepted; \
+             convert the times"
+        )),
+        None => Ok(()),
+    }
+}
+
+/// Normalised unit text: upper case, no spaces, `**` written `^`, `SEC` written `S`.
+fn norm_unit(u: &str) -> String {
+    u.split_whitespace()
+        .collect::<String>()
+        .replace("**", "^")
+        .replace("SEC", "S")
+}
+
+/// Whether the normalised `u` is a unit of velocity or length (not of acceleration).
+fn velocity_or_length(u: &str) -> bool {
+    let len = ["M", "CM", "MM", "IN", "FT", "KM"];
+    len.contains(&u)
+        || len
+            .iter()
+            .any(|l| u.strip_prefix(l).is_some_and(|r| r == "/S"))
+}
+
+/// The acceleration column of a header: its unit (in brackets, or a word such as `acc_gal`)
+/// must be an acceleration unit equal to `units`.
+fn check_accel_cell(
+    cell: &str,
+    words: &[String],
+    bracketed: &[String],
+    units: AccelUnits,
+) -> Result<(), String> {
+    let mut found: Option<(Real, String)> = None;
+    let candidates = bracketed
+        .iter()
+        .map(|b| (true, norm_unit(b)))
+        .chain(words.iter().map(|w| (false, norm_unit(w))));
+    for (in_brackets, u) in candidates {
+        let factor = match accel_unit_factor(&u) {
+            // a bare `g` word (`accel_g`) is not taken for a unit: it may be a name
+            Some(_) if u == "G" && !in_brackets => continue,
+            Some(f) => f,
+            None if velocity_or_length(&u) && (in_brackets || u.contains('/')) => {
+                return Err(format!(
+                    "the acceleration column {cell:?} is in {u}, a unit of velocity or length, \
+                     not of acceleration; give the acceleration record ({ACCEPTED_UNITS})"
+                ));
+            }
+            None if in_brackets || u == "MG" || looks_like_accel_unit(&u) => {
+                return Err(format!(
+                    "unknown units {u} in the acceleration column {cell:?}; {ACCEPTED_UNITS}"
+                ));
+            }
+            None => continue,
+        };
+        if let Some((g, prev)) = &found
+            && *g != factor
+        {
+            return Err(format!(
+                "the acceleration column {cell:?} names two different units, {prev} and {u}"
+            ));
+        }
+        found = Some((factor, u));
+    }
+    match found {
+        Some((f, u)) if f != units.factor() => Err(format!(
+            "the header names the units {u} but the record is read in {} (csv_units / \
+             --csv-units): set csv_units to match (\"g\" or \"m/s2\"), or convert the file",
             units.name()
         )),
         _ => Ok(()),
     }
+}
+
+/// The cells of a `#` comment line over columns `t a` if it looks like a header of them: two
+/// cells (a bracketed unit belongs to the word before it), the first `t` or `time`.
+fn comment_header_cells(line: &str) -> Option<Vec<String>> {
+    let body = line.trim().strip_prefix('#')?.trim();
+    let mut cells: Vec<String> = Vec::new();
+    for tok in body.split_whitespace() {
+        match cells.last_mut() {
+            Some(last) if tok.starts_with(['(', '[']) => {
+                last.push(' ');
+                last.push_str(tok);
+            }
+            _ => cells.push(tok.to_string()),
+        }
+    }
+    let first = cells.first()?.to_ascii_lowercase();
+    let name = first.split(['_', '(', '[', ' ']).next().unwrap_or("");
+    (cells.len() == 2 && matches!(name, "t" | "time")).then_some(cells)
 }

@@ -354,3 +354,141 @@ mod scenario {
         }
     }
 }
+
+/// An AT2 with `line3` as its 3rd line and 4 samples.
+fn at2_with(line3: &str) -> String {
+    format!("PEER\nev\n{line3}\nNPTS=  4, DT= .01 SEC\n0.1 0.2 0.3 0.4\n")
+}
+
+#[test]
+fn an_at2_header_line_naming_two_units_or_a_scaled_unit_is_refused() {
+    for (l3, want) in [
+        (
+            "ACCELERATION TIME SERIES IN UNITS OF G (CM/S/S)",
+            "names two different units",
+        ),
+        ("IN UNITS OF G, CM/S/S", "names two different units"),
+        ("UNITS: G AND CM/S/S", "names two different units"),
+        (
+            "ACC IN UNITS OF G  COMPONENT: GAL",
+            "names two different units",
+        ),
+        (
+            "ACCELERATION (CM/S/S) IN UNITS OF G",
+            "names two different units",
+        ),
+        ("IN UNITS OF G X 1000", "a scaled unit is not supported"),
+        ("IN UNITS OF G*1000", "a scaled unit is not supported"),
+        (
+            "IN UNITS OF CM/S/S TIMES 10",
+            "a scaled unit is not supported",
+        ),
+        ("ACCELERATION (G x1000)", "a scaled unit is not supported"),
+        ("UNITS OF 1000 X GAL", "a scaled unit is not supported"),
+    ] {
+        let e = msg(Record::from_at2_str(&at2_with(l3), "u.AT2").unwrap_err());
+        assert!(e.contains("u.AT2:3") && e.contains(want), "{l3}: {e}");
+    }
+    // one unit, written twice or with an azimuth before it, is still read
+    for (l3, factor) in [
+        ("ACCELERATION IN UNITS OF GAL (CM/S/S)", 0.01),
+        ("EL CENTRO 180 (CM/S/S)", 0.01),
+        ("ACCELERATION TIME SERIES IN UNITS OF G", G0),
+    ] {
+        let r = Record::from_at2_str(&at2_with(l3), "u.AT2").unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(r.values()[3], 0.4 * factor, "{l3}");
+    }
+}
+
+#[test]
+fn csv_header_units_anywhere_in_a_cell_are_read_and_checked() {
+    let body = "0,0.1\n0.01,0.2\n";
+    let mps2 = AccelUnits::MetresPerSecondSquared;
+    // units glued to the column name: read when they agree, refused (line 1, unit quoted) if not
+    for (header, units, ok) in [
+        ("t,a[gal]", AccelUnits::G, false),
+        ("t,a(gal)", AccelUnits::G, false),
+        ("t,a[g]", mps2, false),
+        ("t,a[g]", AccelUnits::G, true),
+        ("t,acc(m/s2)", mps2, true),
+        ("t,acc(m/s2)", AccelUnits::G, false),
+        ("t(sec),a(mm/s/s)", AccelUnits::G, false),
+        ("t (s),a (cm/s^2)", AccelUnits::G, false),
+        ("time_s, accel_g", AccelUnits::G, true),
+        ("time,acc", mps2, true),
+    ] {
+        let r = Record::from_csv_str(&format!("{header}\n{body}"), "h.csv", units);
+        match (r, ok) {
+            (Ok(r), true) => assert_eq!(r.values()[1], 0.2 * units.factor(), "{header}"),
+            (Err(e), false) => {
+                let e = msg(e);
+                assert!(
+                    e.contains("h.csv:1") && e.contains("header names the units"),
+                    "{header}: {e}"
+                );
+                let unit = e.split("units ").nth(1).unwrap().split(' ').next().unwrap();
+                assert!(
+                    ["GAL", "G", "M/S2", "MM/S/S", "CM/S^2"].contains(&unit),
+                    "a unit quoted cleanly: {header}: {e}"
+                );
+            }
+            (r, _) => panic!("{header} in {}: {r:?}", units.name()),
+        }
+    }
+}
+
+#[test]
+fn csv_and_columns_headers_of_other_quantities_or_time_units_are_refused() {
+    let body = "0,0.1\n0.01,0.2\n";
+    for (header, want) in [
+        ("time (s),velocity (cm/s)", "is a velocity"),
+        ("t,displacement", "is a displacement"),
+        ("t,vel", "is a velocity"),
+        ("time (s),acc (cm/s)", "a unit of velocity or length"),
+        ("t,a (cm)", "a unit of velocity or length"),
+        ("t,a (mg)", "unknown units MG"),
+        ("time (ms),acc (g)", "only seconds"),
+        ("t (min),a (g)", "only seconds"),
+        ("time_ms,acc", "only seconds"),
+    ] {
+        let e = msg(
+            Record::from_csv_str(&format!("{header}\n{body}"), "h.csv", AccelUnits::G).unwrap_err(),
+        );
+        assert!(e.contains("h.csv:1") && e.contains(want), "{header}: {e}");
+        if want.starts_with("unknown") || want.contains("velocity or length") {
+            assert!(e.contains("accepted: G, CM/S/S"), "{header}: {e}");
+        }
+    }
+    // columns `t a` under a `#` header line: checked the same way, on its line
+    let cols = "0 0.1\n0.01 0.2\n";
+    for (header, units, want) in [
+        (
+            "# t (s)   a (gal)",
+            AccelUnits::G,
+            Some("header names the units GAL"),
+        ),
+        (
+            "# t (s)   a (g)",
+            AccelUnits::MetresPerSecondSquared,
+            Some("header names the units G"),
+        ),
+        (
+            "# time (s)  velocity (cm/s)",
+            AccelUnits::G,
+            Some("is a velocity"),
+        ),
+        ("# t (ms)  a (g)", AccelUnits::G, Some("only seconds")),
+        ("# t (s)   a (g)", AccelUnits::G, None),
+        ("# El Centro 1940, component 180, in g", AccelUnits::G, None),
+    ] {
+        let text = format!("# a record\n{header}\n{cols}");
+        match (Record::from_columns_str(&text, "c.txt", units), want) {
+            (Err(e), Some(w)) => {
+                let e = msg(e);
+                assert!(e.contains("c.txt:2") && e.contains(w), "{header}: {e}");
+            }
+            (Ok(r), None) => assert_eq!(r.values()[1], 0.2 * units.factor()),
+            (r, _) => panic!("{header}: {r:?}"),
+        }
+    }
+}
