@@ -100,7 +100,10 @@ fn load_scenario(path: Option<&Path>) -> Result<(String, Scenario)> {
         Some(p) => {
             let text = read_text(p, "scenario file", SCENARIO_LIMIT)
                 .with_context(|| format!("cannot read scenario file {}", p.display()))?;
-            let s = Scenario::from_toml(&text, &p.display().to_string())?;
+            let (s, notes) = Scenario::from_toml_with_notes(&text, &p.display().to_string())?;
+            for n in notes {
+                eprintln!("note: {n}");
+            }
             Ok((text, s))
         }
     }

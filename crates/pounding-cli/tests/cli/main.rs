@@ -77,3 +77,4 @@ mod simulate;
 mod simulate_flags;
 mod study;
 mod study_shapes;
+mod vocab;

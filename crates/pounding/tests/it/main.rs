@@ -45,3 +45,4 @@ mod sim_scenario;
 mod sim_shapes;
 mod study;
 mod study_shapes;
+mod study_vocab;
