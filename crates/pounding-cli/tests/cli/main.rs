@@ -75,6 +75,7 @@ mod shapes;
 mod sim_report;
 mod simulate;
 mod simulate_flags;
+mod small_things;
 mod study;
 mod study_shapes;
 mod vocab;

@@ -51,7 +51,9 @@ pub(super) fn invalid(name: &'static str, value: impl ToString, reason: &str) ->
 /// The report as pretty-printed JSON, exactly as `pounding impact --json` prints it: object keys
 /// sorted, numbers in shortest round-trip form, non-finite numbers as `null`.
 pub fn to_json_pretty<T: Serialize>(report: &T) -> Result<String, serde_json::Error> {
-    serde_json::to_string_pretty(&serde_json::to_value(report)?)
+    let mut v = serde_json::to_value(report)?;
+    crate::output::json_without_negative_zero(&mut v);
+    serde_json::to_string_pretty(&v)
 }
 
 pub(super) fn xy(v: &Vector) -> [f64; 2] {

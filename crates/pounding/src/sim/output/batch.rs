@@ -78,7 +78,7 @@ pub fn batch_csv(rows: &[BatchRow]) -> String {
             e.input,
             e.viscous,
             e.contact,
-            o.steps as Real * o.dt,
+            crate::sim::step_time(o.steps, o.dt),
         ] {
             c.push(float_token(v));
         }
@@ -222,7 +222,7 @@ fn bridge_cells(o: &BridgeBatchOutcome, c: &mut Vec<String>) {
         e.contact,
         hyst,
         m.restrainer_work,
-        o.steps as Real * o.dt,
+        crate::sim::step_time(o.steps, o.dt),
     ] {
         c.push(float_token(v));
     }
