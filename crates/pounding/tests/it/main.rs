@@ -23,6 +23,7 @@ mod harden_io;
 mod harden_round2;
 mod impact;
 mod impact_report;
+mod impact_split;
 mod lcp;
 mod lemke_degenerate;
 mod physics_check;
