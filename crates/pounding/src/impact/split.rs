@@ -87,6 +87,14 @@ pub(super) fn min_norm_split(g_ss: &[Real], lt: &mut [Real], b: &[Real]) -> bool
         // keep the velocities exact: the affine projection of the limit
         x = affine(&z);
     }
+    // an impulse below the rounding of the projection (e.g. −1.5e-11 N s beside 5e4 N s for a
+    // zero split) is zero
+    let xscale = x0.iter().fold(0.0, |m: Real, &v| m.max(v.abs()));
+    for xi in &mut x {
+        if xi.abs() <= 64.0 * Real::EPSILON * xscale {
+            *xi = 0.0;
+        }
+    }
     lt.copy_from_slice(&x);
     false
 }

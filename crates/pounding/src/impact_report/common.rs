@@ -56,6 +56,11 @@ pub fn to_json_pretty<T: Serialize>(report: &T) -> Result<String, serde_json::Er
     serde_json::to_string_pretty(&v)
 }
 
+/// The summary line of a report whose friction split is not unique (the split of smallest norm is
+/// reported; see `impact::ImpactSolution::tangential_split_unique`).
+pub(super) const SPLIT_NOT_UNIQUE: &str = "  tangential split: NOT unique (the same velocities allow \
+     other splits); the split of smallest norm is reported";
+
 pub(super) fn xy(v: &Vector) -> [f64; 2] {
     [v.x, v.y]
 }

@@ -10,7 +10,7 @@
 //! Units: kg, kg m², m, m/s, rad/s. `body_b = null` is a fixed obstacle. Unknown and duplicate
 //! keys are errors naming the key.
 
-use super::common::{EnergyReport, ReportError, readable, xy};
+use super::common::{EnergyReport, ReportError, SPLIT_NOT_UNIQUE, readable, xy};
 use crate::impact::{self, ContactSpec, ImpactProblem, ImpactSettings, ImpactSolution, RigidBody};
 use crate::math::Vector;
 use serde::Serialize;
@@ -297,11 +297,7 @@ impl ProblemReport {
             readable(self.energy.after)
         ));
         if self.tangential_split_unique == Some(false) {
-            lines.push(
-                "  tangential split: NOT unique (the same velocities allow other splits); \
-                 the split of smallest norm is reported"
-                    .to_string(),
-            );
+            lines.push(SPLIT_NOT_UNIQUE.to_string());
         }
         if let Some(v) = &self.law_violation {
             lines.push(format!(
