@@ -481,7 +481,8 @@ impl TimeGrid {
     pub(crate) fn new(h: Real) -> Self {
         let decimal = (0..=12).map(|d| 10f64.powi(d)).find_map(|p| {
             let m = (h * p).round();
-            (m >= 1.0 && m < 1e15 && (m / p - h).abs() <= 2.0 * Real::EPSILON * h).then_some((m, p))
+            ((1.0..1e15).contains(&m) && (m / p - h).abs() <= 2.0 * Real::EPSILON * h)
+                .then_some((m, p))
         });
         Self { h, decimal }
     }
