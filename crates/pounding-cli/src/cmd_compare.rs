@@ -41,7 +41,7 @@ pub struct Args {
         default_value = "rigid,kelvin,hertz,hertz-damp,bilinear,jankowski"
     )]
     pub laws: Vec<String>,
-    /// Override the scenario's time step `[time] dt` for every law \[s\].
+    /// Override the scenario's time step `[time] dt` for every law, in seconds.
     #[arg(long, value_name = "DT")]
     pub dt: Option<f64>,
     /// Output directory.

@@ -261,7 +261,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
     eprintln!(
         "simulated {} s in {} steps ({:.1} ms): {} impacts, peak closing {} m, opening {} m, \
          seat displacement {} m{}, energy balance error {:.1e}; outputs in {}",
-        float_token(sol.steps as Real * sol.dt),
+        float_token(pounding::sim::step_time(sol.steps, sol.dt)),
         sol.steps,
         sim_secs * 1e3,
         s.impacts,
@@ -293,7 +293,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
             "error: simulation status {:?} after {} s ({} steps): the results are not trustworthy; \
              see {hint} and history.csv in {}",
             sol.status,
-            float_token(sol.steps as Real * sol.dt),
+            float_token(pounding::sim::step_time(sol.steps, sol.dt)),
             sol.steps,
             out.display()
         );
@@ -328,7 +328,7 @@ fn bounded(x: Real, decimals: usize) -> String {
     if !x.is_finite() {
         float_token(x)
     } else if x.abs() < 1e6 {
-        format!("{x:.decimals$}")
+        pounding::output::fixed(x, decimals)
     } else {
         format!("{x:.4e}")
     }

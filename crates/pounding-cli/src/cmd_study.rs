@@ -2,6 +2,7 @@
 //! and their merge. Numbers come from `pounding::study`; this module handles files, threads, the
 //! progress bar, figures ([`crate::figures`]) and the report ([`crate::report`]).
 
+use crate::cmd_simulate::sim_records::count;
 use anyhow::{Context, Result, bail};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use pounding::input::{
@@ -100,7 +101,10 @@ fn load_scenario(path: Option<&Path>) -> Result<(String, Scenario)> {
         Some(p) => {
             let text = read_text(p, "scenario file", SCENARIO_LIMIT)
                 .with_context(|| format!("cannot read scenario file {}", p.display()))?;
-            let s = Scenario::from_toml(&text, &p.display().to_string())?;
+            let (s, notes) = Scenario::from_toml_with_notes(&text, &p.display().to_string())?;
+            for n in notes {
+                eprintln!("note: {n}");
+            }
             Ok((text, s))
         }
     }
@@ -141,12 +145,12 @@ fn run_study(path: Option<&Path>, shard: Option<&str>, common: &Common) -> Resul
     }
     pounding::output::check_output_dir_free(&common.out)?;
     eprintln!(
-        "study: {} configurations x {} cases x {} cells = {} rows on {} threads",
-        scenario.configuration_count(),
-        scenario.cases.len(),
-        scenario.cell_count(),
-        total,
-        pool.current_num_threads()
+        "study: {} x {} x {} = {} on {}",
+        count(scenario.configuration_count(), "configuration"),
+        count(scenario.cases.len(), "case"),
+        count(scenario.cell_count(), "cell"),
+        count(total, "row"),
+        count(pool.current_num_threads(), "thread")
     );
     let pb = progress_bar(total, "cells");
     let tick = |n: usize| pb.inc(n as u64);

@@ -6,8 +6,7 @@
 
 use super::{Args, lock_and_clear};
 use anyhow::{Context, Result, anyhow};
-use pounding::math::Real;
-use pounding::output::{float_token, write_atomic};
+use pounding::output::{fixed, float_token, write_atomic};
 use pounding::sim::SimStatus;
 use pounding::sim::output::{bridge_history_csv, bridge_impacts_csv, bridge_summary_json_text};
 use pounding::sim::scenario::Scenario;
@@ -91,13 +90,13 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
     let joints: Vec<String> = s
         .joints
         .iter()
-        .map(|j| format!("{} (closing {:.4} m)", j.impacts, j.peak_closing))
+        .map(|j| format!("{} (closing {} m)", j.impacts, fixed(j.peak_closing, 4)))
         .collect();
     eprintln!(
         "simulated a bridge of {} segments for {} s in {} steps ({:.1} ms): {} impacts; per joint: \
          {}; energy balance error {:.1e}{}; outputs in {}",
         sol.n_segments,
-        float_token(sol.steps as Real * sol.dt),
+        float_token(pounding::sim::step_time(sol.steps, sol.dt)),
         sol.steps,
         sim_secs * 1e3,
         s.impacts,
@@ -118,7 +117,7 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
             "error: simulation status {:?} after {} s ({} steps): the results are not trustworthy; \
              see summary.json and history.csv in {}",
             sol.status,
-            float_token(sol.steps as Real * sol.dt),
+            float_token(pounding::sim::step_time(sol.steps, sol.dt)),
             sol.steps,
             out.display()
         );

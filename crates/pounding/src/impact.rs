@@ -55,6 +55,8 @@ use crate::lcp::{self, LcpProblem, LcpStatus, LemkeSettings};
 use crate::math::{Real, Vector, cross, perp};
 use thiserror::Error;
 
+mod split;
+
 /// Bad impact input; the message names the parameter (e.g. `bodies[1].mass`, `contacts[0].normal`).
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum ImpactError {
@@ -419,6 +421,12 @@ pub struct ImpactSolution {
     /// The law the recovered velocities violate when `status` is
     /// [`ImpactStatus::IllConditioned`], else `None`.
     pub law_violation: Option<LawViolation>,
+    /// Whether the tangential impulses of the sticking contacts are the only ones that give these
+    /// normal impulses and post-impact velocities within Coulomb's law. When not (e.g. two
+    /// symmetric contacts sharing one tangential direction), `contacts` reports the split of
+    /// smallest Euclidean norm (the equal split for two symmetric contacts), not the arbitrary
+    /// extreme the LCP solver returns. `true` when there is no solution.
+    pub tangential_split_unique: bool,
 }
 
 /// Internal dense representation: `W` (3B × 2n, column-major by contact column), `M⁻¹` diag, `u⁻`.
@@ -840,7 +848,12 @@ impl<'a> PreImpact<'a> {
     /// [`ImpactStatus::IllConditioned`]).
     fn finish(&self, o: Outcome) -> ImpactSolution {
         let (asm, n) = (&self.asm, self.asm.nc);
-        let lambda = o.lambda.unwrap_or_else(|| vec![Real::NAN; 2 * n]);
+        let mut lambda = o.lambda.unwrap_or_else(|| vec![Real::NAN; 2 * n]);
+        let solved = matches!(
+            o.status,
+            ImpactStatus::Solved | ImpactStatus::SolvedByFallback
+        );
+        let tangential_split_unique = !solved || self.min_norm_split(&mut lambda);
         let u = asm.post_velocity(&lambda);
         let gamma_post = asm.gamma(&u);
         let contacts = self.contact_results(&lambda, &gamma_post);
@@ -851,10 +864,6 @@ impl<'a> PreImpact<'a> {
             })
             .collect();
         let energy_after = asm.energy(&u);
-        let solved = matches!(
-            o.status,
-            ImpactStatus::Solved | ImpactStatus::SolvedByFallback
-        );
         let law_violation = if solved {
             asm.check(
                 &self.laws,
@@ -885,7 +894,51 @@ impl<'a> PreImpact<'a> {
             enumerated: o.enumerated,
             post_velocity_unique: o.unique,
             law_violation,
+            tangential_split_unique,
         }
+    }
+
+    /// The minimum-norm tangential split (`split::min_norm_split`) of the solution `lambda` (replaced in
+    /// place when it is not unique): the sticking contacts are those [`Self::contact_results`]
+    /// calls stick, with `μ Λ_N > 0`. Returns whether the split was unique.
+    fn min_norm_split(&self, lambda: &mut [Real]) -> bool {
+        let (asm, n) = (&self.asm, self.asm.nc);
+        if lambda.iter().any(|x| !x.is_finite()) {
+            return true;
+        }
+        let gamma_post = asm.gamma(&asm.post_velocity(lambda));
+        let lmax = lambda[..n].iter().fold(0.0, |m: Real, &x| m.max(x));
+        let stick: Vec<usize> = (0..n)
+            .filter(|&i| {
+                lambda[i] > 1e-12 * lmax
+                    && self.laws[i].mu() * lambda[i] > 0.0
+                    && gamma_post[n + i].abs() <= self.settings.stick_tolerance * self.scale
+            })
+            .collect();
+        if stick.is_empty() {
+            return true;
+        }
+        let col = |i: usize| &asm.w[n + i];
+        let g_ss: Vec<Real> = stick
+            .iter()
+            .flat_map(|&i| {
+                stick.iter().map(move |&j| {
+                    (0..3 * asm.nb)
+                        .map(|d| col(i)[d] * asm.minv[d] * col(j)[d])
+                        .sum::<Real>()
+                })
+            })
+            .collect();
+        let mut lt: Vec<Real> = stick.iter().map(|&i| lambda[n + i]).collect();
+        let b: Vec<Real> = stick
+            .iter()
+            .map(|&i| self.laws[i].mu() * lambda[i])
+            .collect();
+        let unique = split::min_norm_split(&g_ss, &mut lt, &b);
+        for (&i, &x) in stick.iter().zip(&lt) {
+            lambda[n + i] = x;
+        }
+        unique
     }
 
     /// Each contact's impulses, pre/post velocities and mode: open when `Λ_N ≤ 1e-12 max Λ_N`

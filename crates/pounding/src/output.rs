@@ -1,16 +1,39 @@
 //! Deterministic output tokens and atomic file writes, shared by every writer.
 //!
 //! Tokens (project convention): booleans `true`/`false`; finite floats in the shortest form that
-//! round-trips (`str::parse::<f64>` gives back the same bits); non-finite floats `inf`, `-inf`, `nan`
+//! round-trips (`str::parse::<f64>` gives back the same bits; negative zero is written `0`, equal
+//! to it); non-finite floats `inf`, `-inf`, `nan`
 //! in CSV and `null` in JSON.
 
 use std::io::Write;
+
+/// `x` with `decimals` decimals for readable tables and messages (`{x:.4}`), never `-0.0000`: a
+/// value that rounds to zero is written without a sign.
+pub fn fixed(x: f64, decimals: usize) -> String {
+    let s = format!("{x:.decimals$}");
+    match s.strip_prefix('-') {
+        Some(rest) if rest.bytes().all(|b| b == b'0' || b == b'.') => rest.to_string(),
+        _ => s,
+    }
+}
+
+/// Replaces every negative zero in a JSON tree by `0.0` (a `-0.0` in a report only puzzles a
+/// reader; it equals `0`).
+pub fn json_without_negative_zero(v: &mut serde_json::Value) {
+    use serde_json::Value;
+    match v {
+        Value::Number(n)
+            if n.as_f64() == Some(0.0) && n.as_f64().is_some_and(f64::is_sign_negative) =>
+        {
+            *v = Value::from(0.0);
+        }
+        Value::Array(xs) => xs.iter_mut().for_each(json_without_negative_zero),
+        Value::Object(m) => m.values_mut().for_each(json_without_negative_zero),
+        _ => {}
+    }
+}
 use std::path::{Path, PathBuf};
 
-/// Shortest round-trip text of a float for CSV and plain-text outputs.
-///
-/// Finite values use Rust's shortest round-trip digits, in positional notation for
-/// `1e-5 ≤ |x| < 1e16` (and zero), in exponent notation (`1.5e-7`, `2e20`) otherwise, so that
 /// A CSV field: quoted (`"` doubled) when it contains a comma, a quote or a line break.
 pub fn csv_field(s: &str) -> String {
     if s.contains([',', '"', '\n', '\r']) {
@@ -20,9 +43,16 @@ pub fn csv_field(s: &str) -> String {
     }
 }
 
-/// tiny or huge values stay short. Non-finite values are `inf`, `-inf` and `nan`.
+/// Shortest round-trip text of a float for CSV and plain-text outputs.
+///
+/// Finite values use Rust's shortest round-trip digits, in positional notation for
+/// `1e-5 ≤ |x| < 1e16` (and zero), in exponent notation (`1.5e-7`, `2e20`) otherwise, so that
+/// tiny or huge values stay short. Non-finite values are `inf`, `-inf` and `nan`. Negative zero
+/// is written `0` (it equals `0`; a `-0` only puzzles a reader).
 pub fn float_token(x: f64) -> String {
-    if x.is_nan() {
+    if x == 0.0 {
+        "0".to_string()
+    } else if x.is_nan() {
         "nan".to_string()
     } else if x.is_infinite() {
         if x > 0.0 {
@@ -40,9 +70,10 @@ pub fn float_token(x: f64) -> String {
     }
 }
 
-/// A float as a JSON value: finite numbers as numbers (shortest round-trip), non-finite as `null`.
+/// A float as a JSON value: finite numbers as numbers (shortest round-trip; negative zero as
+/// `0.0`), non-finite as `null`.
 pub fn json_float(x: f64) -> serde_json::Value {
-    serde_json::Number::from_f64(x)
+    serde_json::Number::from_f64(x + 0.0)
         .map(serde_json::Value::Number)
         .unwrap_or(serde_json::Value::Null)
 }
@@ -388,11 +419,28 @@ pub fn path_is_within(path: &Path, dir: &Path) -> std::io::Result<bool> {
 mod tests {
     use super::*;
 
+    /// Negative zero is written as zero everywhere a reader sees it: `0` (CSV/text), `0.0`
+    /// (JSON), `0.0000` (fixed decimals, also for values that round to zero).
+    #[test]
+    fn negative_zero_is_written_without_a_sign() {
+        assert_eq!(float_token(-0.0), "0");
+        assert_eq!(json_float(-0.0).to_string(), "0.0");
+        let mut v = serde_json::json!({"a": [-0.0, 1.5, {"b": -0.0}], "c": -2.0});
+        json_without_negative_zero(&mut v);
+        assert_eq!(v.to_string(), r#"{"a":[0.0,1.5,{"b":0.0}],"c":-2.0}"#);
+        assert_eq!(fixed(-0.0, 4), "0.0000");
+        assert_eq!(fixed(-3e-7, 4), "0.0000");
+        assert_eq!(fixed(-0.00005, 4), "-0.0001");
+        assert_eq!(fixed(-2.5, 1), "-2.5");
+        assert_eq!(fixed(-0.4, 0), "0");
+        assert_eq!(fixed(f64::NAN, 2), "NaN");
+    }
+
     #[test]
     fn tokens_round_trip() {
+        assert_eq!("0".parse::<f64>().unwrap(), -0.0);
         for &x in &[
             0.0,
-            -0.0,
             1.0,
             0.1,
             -2.5,

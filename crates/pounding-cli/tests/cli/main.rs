@@ -76,6 +76,8 @@ mod shapes;
 mod sim_report;
 mod simulate;
 mod simulate_flags;
+mod small_things;
 mod spectrum;
 mod study;
 mod study_shapes;
+mod vocab;

@@ -292,7 +292,7 @@ fn print_default_is_the_built_in_scenario() {
     let edited = text
         .replace("beta1_deg = [60.0, 90.0, 120.0]", "beta1_deg = [90.0]")
         .replace("beta2_deg = [60.0, 90.0, 120.0]", "beta2_deg = [90.0]")
-        .replace("r1_m = [100.0, 200.0]", "r1_m = [100.0]")
+        .replace("R1 = [100.0, 200.0]", "R1 = [100.0]")
         .replace("figures = true", "figures = false");
     std::fs::write(&sc, &edited).unwrap();
     let out = d.join("out");

@@ -51,8 +51,15 @@ pub(super) fn invalid(name: &'static str, value: impl ToString, reason: &str) ->
 /// The report as pretty-printed JSON, exactly as `pounding impact --json` prints it: object keys
 /// sorted, numbers in shortest round-trip form, non-finite numbers as `null`.
 pub fn to_json_pretty<T: Serialize>(report: &T) -> Result<String, serde_json::Error> {
-    serde_json::to_string_pretty(&serde_json::to_value(report)?)
+    let mut v = serde_json::to_value(report)?;
+    crate::output::json_without_negative_zero(&mut v);
+    serde_json::to_string_pretty(&v)
 }
+
+/// The summary line of a report whose friction split is not unique (the split of smallest norm is
+/// reported; see `impact::ImpactSolution::tangential_split_unique`).
+pub(super) const SPLIT_NOT_UNIQUE: &str = "  tangential split: NOT unique (the same velocities allow \
+     other splits); the split of smallest norm is reported";
 
 pub(super) fn xy(v: &Vector) -> [f64; 2] {
     [v.x, v.y]

@@ -92,6 +92,10 @@ pub struct JointReport {
     pub status: &'static str,
     /// Whether the post-impact velocities are unique.
     pub post_velocity_unique: bool,
+    /// Whether the friction split between the corners is unique; when `false` (e.g. a face
+    /// striking square on, where only the sum is determined) the split of smallest norm is
+    /// reported (see `impact::ImpactSolution::tangential_split_unique`).
+    pub tangential_split_unique: bool,
     #[serde(skip)]
     trustworthy: bool,
 }
@@ -171,6 +175,7 @@ pub fn joint_report(a: &JointInput) -> Result<JointReport, ReportError> {
         },
         status: s.status.name(),
         post_velocity_unique: s.post_velocity_unique,
+        tangential_split_unique: s.tangential_split_unique,
         trustworthy: s.status.is_trustworthy(),
     })
 }
@@ -216,6 +221,9 @@ impl JointReport {
                 readable(c.gamma_n_pre),
                 readable(c.gamma_n_post)
             ));
+        }
+        if !self.tangential_split_unique {
+            lines.push(super::common::SPLIT_NOT_UNIQUE.to_string());
         }
         lines.push(format!(
             "  kinetic energy: {} J → {} J",

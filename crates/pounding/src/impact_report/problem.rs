@@ -10,7 +10,7 @@
 //! Units: kg, kg m², m, m/s, rad/s. `body_b = null` is a fixed obstacle. Unknown and duplicate
 //! keys are errors naming the key.
 
-use super::common::{EnergyReport, ReportError, readable, xy};
+use super::common::{EnergyReport, ReportError, SPLIT_NOT_UNIQUE, readable, xy};
 use crate::impact::{self, ContactSpec, ImpactProblem, ImpactSettings, ImpactSolution, RigidBody};
 use crate::math::Vector;
 use serde::Serialize;
@@ -187,6 +187,10 @@ pub struct ProblemReport {
     pub post_velocity_unique: Option<bool>,
     /// Whether the impulses are unique (`None` when not checked).
     pub impulse_unique: Option<bool>,
+    /// Whether the tangential impulses of the sticking contacts are unique given the normal
+    /// impulses and the post-impact velocities; when `false` the contacts report the split of
+    /// smallest norm (e.g. the equal split of two symmetric contacts). `None` without a solution.
+    pub tangential_split_unique: Option<bool>,
     /// Whether the status allows the numbers to be used.
     #[serde(skip)]
     pub trustworthy: bool,
@@ -241,6 +245,11 @@ pub fn problem_report(problem: &ImpactProblem) -> ProblemReport {
         solutions: checked.then_some(s.solutions),
         post_velocity_unique: checked.then_some(s.post_velocity_unique),
         impulse_unique: checked.then_some(s.solutions <= 1),
+        tangential_split_unique: matches!(
+            s.status,
+            impact::ImpactStatus::Solved | impact::ImpactStatus::SolvedByFallback
+        )
+        .then_some(s.tangential_split_unique),
         trustworthy: s.status.is_trustworthy(),
         enumerated: s.enumerated,
         law_violation: s.law_violation.as_ref().map(|v| v.to_string()),
@@ -287,6 +296,9 @@ impl ProblemReport {
             readable(self.energy.before),
             readable(self.energy.after)
         ));
+        if self.tangential_split_unique == Some(false) {
+            lines.push(SPLIT_NOT_UNIQUE.to_string());
+        }
         if let Some(v) = &self.law_violation {
             lines.push(format!(
                 "  post-solve check failed (numbers not trustworthy): {v}"

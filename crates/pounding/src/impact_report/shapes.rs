@@ -302,6 +302,10 @@ pub struct BothCornersReport {
     pub status: &'static str,
     /// Whether the post-impact velocities are unique.
     pub post_velocity_unique: bool,
+    /// Whether the friction split between the corners is unique; when `false` (e.g. a face
+    /// striking square on, where only the sum is determined) the split of smallest norm is
+    /// reported (see `impact::ImpactSolution::tangential_split_unique`).
+    pub tangential_split_unique: bool,
     #[serde(skip)]
     trustworthy: bool,
 }
@@ -535,6 +539,7 @@ fn both_corners(
         rotation,
         status: s.status.name(),
         post_velocity_unique: s.post_velocity_unique,
+        tangential_split_unique: s.tangential_split_unique,
         trustworthy: s.status.is_trustworthy(),
     })
 }
@@ -649,6 +654,9 @@ impl BothCornersReport {
                 readable(c.gamma_n_pre),
                 readable(c.gamma_n_post)
             ));
+        }
+        if !self.tangential_split_unique {
+            lines.push(super::common::SPLIT_NOT_UNIQUE.to_string());
         }
         lines.push(format!(
             "  v⁺ = ({}, {}) m/s, ω⁺ = {} rad/s; kinetic energy {} J → {} J",

@@ -670,7 +670,7 @@ impl Stepper for ComplianceStepper {
         let rbar = &self.r_k * (1.0 - th) + &r_new * th;
         let u_mid = (inp.u + &un) * 0.5;
         self.d_cont -= h * u_mid.dot(&rbar);
-        self.track_impacts(log, inp.t + h, inp.u, &un, &u_mid, &ev);
+        self.track_impacts(log, inp.t_next, inp.u, &un, &u_mid, &ev);
         self.r_k = r_new;
         let penetration = ev
             .iter()

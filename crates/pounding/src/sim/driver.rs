@@ -448,8 +448,8 @@ pub(crate) struct Frame {
 
 /// What a stepper gets for one step `k → k+1`.
 pub(crate) struct StepInput<'a> {
-    /// `t_k`.
-    pub t: Real,
+    /// `t_{k+1}` (the time impacts of this step are reported at), from [`TimeGrid::time`].
+    pub t_next: Real,
     /// `q_k`.
     pub q: &'a State,
     /// `u_k`.
@@ -462,6 +462,39 @@ pub(crate) struct StepInput<'a> {
     pub bridge: &'a Bridge,
     /// Time grid and matrices.
     pub scheme: &'a Scheme,
+}
+
+/// The times `t_k = k·h` of the step grid, as the decimals the user expects: with `h` a short
+/// decimal (`1e-3`, `2.5e-4`, a record's `0.005`), `k·h` in floating point is often off by an ulp
+/// (`13003 × 0.001 = 13.003000000000002`); it is rounded to the decimal places of `h`, which is
+/// `t_k` itself (the nearest double to the exact decimal `k·h`). For an `h` with no short decimal
+/// form (more than 12 places) or a product beyond 2⁵³ in those units, `k·h` is kept as computed.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct TimeGrid {
+    h: Real,
+    /// `(m, 10^d)` with `h` the double nearest `m / 10^d` (`m` an integer, `d ≤ 12`), if any.
+    decimal: Option<(Real, Real)>,
+}
+
+impl TimeGrid {
+    /// The grid of step `h`.
+    pub(crate) fn new(h: Real) -> Self {
+        let decimal = (0..=12).map(|d| 10f64.powi(d)).find_map(|p| {
+            let m = (h * p).round();
+            ((1.0..1e15).contains(&m) && (m / p - h).abs() <= 2.0 * Real::EPSILON * h)
+                .then_some((m, p))
+        });
+        Self { h, decimal }
+    }
+
+    /// `t_k`: `k·m / 10^d` in exact integer arithmetic then one rounding (the double nearest
+    /// the decimal `k·h`), else `k·h`.
+    pub(crate) fn time(&self, k: usize) -> Real {
+        match self.decimal {
+            Some((m, p)) if (k as Real) * m < 9.0e15 => (k as Real * m) / p,
+            _ => k as Real * self.h,
+        }
+    }
 }
 
 /// What a stepper returns for one step.
@@ -835,8 +868,9 @@ pub(crate) fn run<S: Stepper>(
     // elements' commit at q_{k+1} and the next step share its sin θ_j, cos θ_j
     let mut frame = bridge.frame(&q);
     let mut obs = Observed::default();
+    let clock = TimeGrid::new(h);
     for k in 0..=sc.n_steps {
-        let t = k as Real * h;
+        let t = clock.time(k);
         peaks.observe(t, &q, &frame, bridge, &mut obs);
         peaks.observe_segments(&q, bridge);
         let forces = stepper.contact_forces();
@@ -868,7 +902,7 @@ pub(crate) fn run<S: Stepper>(
             }
         }
         let input = StepInput {
-            t,
+            t_next: clock.time(k + 1),
             q: &q,
             u: &u,
             u_free: &work.u_free,
@@ -1015,6 +1049,39 @@ mod tests {
     };
     use crate::contact_law::{ContactLaw, Hertz};
     use crate::ground_motion::el_centro_1940;
+
+    /// Step times read back as the decimal `k·h` (no `13.003000000000002`), for short decimal
+    /// steps; other steps keep `k·h`.
+    #[test]
+    fn step_times_are_the_decimals_of_k_h() {
+        use super::TimeGrid;
+        use crate::output::float_token;
+        assert_eq!(float_token(9.0 * 1e-3), "0.009000000000000001");
+        assert_eq!(float_token(TimeGrid::new(1e-3).time(9)), "0.009");
+        for (h, d) in [
+            (1e-3, 3),
+            (2.5e-4, 5),
+            (0.005, 3),
+            (0.02, 2),
+            (1e-5, 5),
+            (0.1, 1),
+        ] {
+            let grid = TimeGrid::new(h);
+            for k in (0..200_000usize).step_by(7) {
+                let exact = format!("{:.*}", d, k as f64 * h);
+                let t = grid.time(k);
+                assert_eq!(t, exact.parse::<f64>().unwrap(), "h = {h}, k = {k}");
+                assert!(
+                    (t - k as f64 * h).abs() <= 4.0 * f64::EPSILON * t,
+                    "h = {h}, k = {k}"
+                );
+                assert!(float_token(t).len() <= exact.len(), "{}", float_token(t));
+            }
+        }
+        let third = 1.0 / 3.0 * 1e-3;
+        let grid = TimeGrid::new(third);
+        assert_eq!(grid.time(12_345), 12_345.0 * third);
+    }
 
     /// The default bridge under El Centro (6 s) with a joint so wide that it never closes.
     fn open_run(law: JointContact, seat_length: f64) -> SimSolution {

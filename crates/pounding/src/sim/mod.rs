@@ -900,3 +900,18 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
     };
     Ok(driver::pair_solution(result, &scheme))
 }
+
+/// The time `t_k = k·dt` of step `k` as the decimal the user expects: for a step with a short
+/// decimal form (`1e-3`, `2.5e-4`, `0.005`) the double nearest the exact decimal `k·dt`
+/// (`0.009`, not `9 × 0.001 = 0.009000000000000001`), else `k·dt` as computed. Every time a run
+/// reports (history `t_s`, impact times, the simulated duration) is on this grid.
+pub fn step_time(k: usize, dt: Real) -> Real {
+    driver::TimeGrid::new(dt).time(k)
+}
+
+/// The time `k·dt` as the solver computed it (the ground motion it used at step `k` was sampled
+/// there), for a reported step time `t` ([`step_time`]): `history.csv`'s `ag_*` columns are the
+/// accelerations the run used, not a re-interpolation at the rounded time.
+pub(crate) fn solver_time(t: Real, dt: Real) -> Real {
+    (t / dt).round() * dt
+}

@@ -393,7 +393,7 @@ impl Stepper for RigidStepper {
             if ok || any {
                 self.check(&asm, &active, inp.u_free, &p, &gam_post);
             }
-            self.account(&asm, &active, &p, &gam_post, inp.t + inp.scheme.h, log);
+            self.account(&asm, &active, &p, &gam_post, inp.t_next, log);
         }
         StepOutput {
             u: u_new,

@@ -47,7 +47,9 @@ fn push_f(s: &mut String, x: f64) {
 /// Appends exactly the text of [`float_token`]`(x)`.
 pub fn push_token(s: &mut String, x: f64) {
     let a = x.abs();
-    if x.is_finite() && (a == 0.0 || (1e-5..1e16).contains(&a)) {
+    if a == 0.0 {
+        s.push('0');
+    } else if x.is_finite() && (1e-5..1e16).contains(&a) {
         let _ = write!(s, "{x}");
     } else if x.is_finite() {
         let _ = write!(s, "{x:e}");

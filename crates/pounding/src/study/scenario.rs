@@ -11,10 +11,14 @@
 use crate::geometry::{ContactCase, SigmaMode};
 use crate::math::Real;
 use crate::toml_schema::{Table, key_on_line, line_col};
+use keys::DeckKeys;
 use serde::Deserialize;
 use std::ops::Range;
 use thiserror::Error;
 use toml::Spanned;
+
+mod keys;
+pub use keys::{DECK_RENAMES, DeprecatedKey};
 
 /// A scenario file that cannot be used. The message names the key and the line.
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -217,20 +221,22 @@ pub const DEFAULT_SCENARIO_TOML: &str = r#"# pounding study scenario — the bui
 # then case, then theta1, then theta2.
 
 [decks]
-# Deck shape: "curved" (this default: beta/r lists below), "straight" (lists l1_m, l2_m [m]) or
-# "skew" (l1_m, l2_m and skew_deg, the common skew angle in [0, 90) deg). Keys of another shape are
-# errors. Defaults for straight/skew: l1_m = l2_m = [30.0, 60.0], skew_deg = [0.0, 15.0, 30.0].
+# Deck shape: "curved" (this default: beta/R lists below), "straight" (lists L1, L2 [m]) or
+# "skew" (L1, L2 and skew_deg, the common skew angle in [0, 90) deg). Keys of another shape are
+# errors. Defaults for straight/skew: L1 = L2 = [30.0, 60.0], skew_deg = [0.0, 15.0, 30.0].
+# The keys are those of `pounding simulate`; the older names width_m, thickness_m, density_kg_m3,
+# r1_m, r2_m, l1_m, l2_m still work (with a deprecation note).
 shape = "curved"
 # Common width W [m], thickness t [m] and density rho [kg/m^3] of both decks (S arrangement).
-width_m = 10.0
-thickness_m = 0.5
-density_kg_m3 = 2500.0
+width = 10.0
+thickness = 0.5
+density = 2500.0
 # Subtended (curve) angles of deck 1 and deck 2 [deg], each in (0, 360).
 beta1_deg = [60.0, 90.0, 120.0]
 beta2_deg = [60.0, 90.0, 120.0]
-# Centre-line radii of deck 1 and deck 2 [m]; each must exceed width_m / 2.
-r1_m = [100.0, 200.0]
-r2_m = [100.0, 200.0]
+# Centre-line radii of deck 1 and deck 2 [m]; each must exceed width / 2.
+R1 = [100.0, 200.0]
+R2 = [100.0, 200.0]
 
 [impact]
 # Coulomb friction coefficients (>= 0) and Newton restitution coefficients (in [0, 1]).
@@ -290,14 +296,26 @@ struct RawScenario {
 #[serde(deny_unknown_fields)]
 struct RawDecks {
     shape: S<String>,
+    #[serde(rename = "L1")]
+    l1: S<Vec<Real>>,
+    #[serde(rename = "L2")]
+    l2: S<Vec<Real>>,
+    skew_deg: S<Vec<Real>>,
+    width: S<Real>,
+    thickness: S<Real>,
+    density: S<Real>,
+    beta1_deg: S<Vec<Real>>,
+    beta2_deg: S<Vec<Real>>,
+    #[serde(rename = "R1")]
+    r1: S<Vec<Real>>,
+    #[serde(rename = "R2")]
+    r2: S<Vec<Real>>,
+    // Deprecated names (folded into the ones above by `keys::fold_deprecated`).
     l1_m: S<Vec<Real>>,
     l2_m: S<Vec<Real>>,
-    skew_deg: S<Vec<Real>>,
     width_m: S<Real>,
     thickness_m: S<Real>,
     density_kg_m3: S<Real>,
-    beta1_deg: S<Vec<Real>>,
-    beta2_deg: S<Vec<Real>>,
     r1_m: S<Vec<Real>>,
     r2_m: S<Vec<Real>>,
 }
@@ -546,21 +564,22 @@ impl Ctx<'_> {
     fn refuse_foreign_keys(
         &self,
         decks: &RawDecks,
+        keys: &DeckKeys,
         shape: StudyShape,
     ) -> Result<(), ScenarioError> {
         let span = |v: &S<Vec<Real>>| v.as_ref().map(|v| v.span());
         let mut foreign = if shape == StudyShape::Curved {
             vec![
-                ("decks.l1_m", span(&decks.l1_m)),
-                ("decks.l2_m", span(&decks.l2_m)),
+                (keys.l1.as_str(), span(&decks.l1)),
+                (keys.l2.as_str(), span(&decks.l2)),
                 ("decks.skew_deg", span(&decks.skew_deg)),
             ]
         } else {
             vec![
                 ("decks.beta1_deg", span(&decks.beta1_deg)),
                 ("decks.beta2_deg", span(&decks.beta2_deg)),
-                ("decks.r1_m", span(&decks.r1_m)),
-                ("decks.r2_m", span(&decks.r2_m)),
+                (keys.r1.as_str(), span(&decks.r1)),
+                (keys.r2.as_str(), span(&decks.r2)),
             ]
         };
         if shape == StudyShape::Straight {
@@ -582,11 +601,12 @@ impl Ctx<'_> {
         Ok(())
     }
 
-    /// `decks.beta1_deg`, `beta2_deg` in `(0, 360)` and `decks.r1_m`, `r2_m` above `width/2`
+    /// `decks.beta1_deg`, `beta2_deg` in `(0, 360)` and `decks.R1`, `R2` above `width/2`
     /// (default radii made invalid by a user-set width blame the width).
     fn curved_axes(
         &self,
         decks: &RawDecks,
+        keys: &DeckKeys,
         d: &Scenario,
         width: Real,
         width_span: Range<usize>,
@@ -611,15 +631,15 @@ impl Ctx<'_> {
         let r_reason = format!("R must exceed width/2 = {} m", fmt_num(half));
         let mut radii = Vec::new();
         for (key, v, dv) in [
-            ("decks.r1_m", &decks.r1_m, &d.r1_m),
-            ("decks.r2_m", &decks.r2_m, &d.r2_m),
+            (keys.r1.as_str(), &decks.r1, &d.r1_m),
+            (keys.r2.as_str(), &decks.r2, &d.r2_m),
         ] {
             let rs = match self.list(v, dv, key, |x| x > half, &r_reason) {
                 Ok((rs, _)) => rs,
                 Err(_) if v.is_none() => {
                     return Err(self.invalid(
                         width_span,
-                        "decks.width_m",
+                        &keys.width,
                         fmt_num(width),
                         &format!("width/2 must be below every radius of {key} (built-in default)"),
                     ));
@@ -639,17 +659,18 @@ impl Ctx<'_> {
         })
     }
 
-    /// `decks.l1_m`, `l2_m` (> 0) and, for skewed decks, `decks.skew_deg` in `[0, 90)`
+    /// `decks.L1`, `L2` (> 0) and, for skewed decks, `decks.skew_deg` in `[0, 90)`
     /// (straight decks: one skew angle, 0).
     fn straight_axes(
         &self,
         decks: &RawDecks,
+        keys: &DeckKeys,
         shape: StudyShape,
     ) -> Result<DeckAxes, ScenarioError> {
         let l_ok = |x: Real| x > 0.0;
         let l = "the deck length must be finite and > 0";
-        let (l1_m, _) = self.list(&decks.l1_m, &DEFAULT_LENGTHS_M, "decks.l1_m", l_ok, l)?;
-        let (l2_m, _) = self.list(&decks.l2_m, &DEFAULT_LENGTHS_M, "decks.l2_m", l_ok, l)?;
+        let (l1_m, _) = self.list(&decks.l1, &DEFAULT_LENGTHS_M, &keys.l1, l_ok, l)?;
+        let (l2_m, _) = self.list(&decks.l2, &DEFAULT_LENGTHS_M, &keys.l2, l_ok, l)?;
         let skew_deg = if shape == StudyShape::Skew {
             self.list(
                 &decks.skew_deg,
@@ -803,13 +824,14 @@ impl Ctx<'_> {
 }
 
 /// Checks the derived mass properties (area, mass, polar inertia) of every deck at load time, so
-/// that an overflow or underflow (e.g. `density_kg_m3 = 1e300` on large decks) names the scenario
+/// that an overflow or underflow (e.g. `density = 1e300` on large decks) names the scenario
 /// key and its line instead of failing during the run. Mass and inertia grow with every
 /// dimension, so the extremes of each list suffice; the run validates every configuration again.
 fn check_deck_mass_properties(
     s: &Scenario,
     cx: &Ctx,
     decks: &RawDecks,
+    keys: &DeckKeys,
 ) -> Result<(), ScenarioError> {
     use crate::geometry::GeometryError;
     use crate::shape::Deck;
@@ -818,18 +840,18 @@ fn check_deck_mass_properties(
     let scalar = |v: &S<Real>| span(v.as_ref().map(|v| v.span()));
     let list = |v: &S<Vec<Real>>| span(v.as_ref().map(|v| v.span()));
     // (scenario key, span) of a deck's parameter named by the geometry error
-    let key_of = |name: &str, j: usize| -> (&'static str, Range<usize>) {
+    let key_of = |name: &str, j: usize| -> (&str, Range<usize>) {
         match (name, j) {
-            ("density", _) => ("decks.density_kg_m3", scalar(&decks.density_kg_m3)),
-            ("thickness", _) => ("decks.thickness_m", scalar(&decks.thickness_m)),
-            ("width", _) => ("decks.width_m", scalar(&decks.width_m)),
+            ("density", _) => (&keys.density, scalar(&decks.density)),
+            ("thickness", _) => (&keys.thickness, scalar(&decks.thickness)),
+            ("width", _) => (&keys.width, scalar(&decks.width)),
             ("skew", _) => ("decks.skew_deg", list(&decks.skew_deg)),
-            ("R", 1) => ("decks.r1_m", list(&decks.r1_m)),
-            ("R", _) => ("decks.r2_m", list(&decks.r2_m)),
+            ("R", 1) => (&keys.r1, list(&decks.r1)),
+            ("R", _) => (&keys.r2, list(&decks.r2)),
             ("beta", 1) => ("decks.beta1_deg", list(&decks.beta1_deg)),
             ("beta", _) => ("decks.beta2_deg", list(&decks.beta2_deg)),
-            (_, 1) => ("decks.l1_m", list(&decks.l1_m)),
-            _ => ("decks.l2_m", list(&decks.l2_m)),
+            (_, 1) => (&keys.l1, list(&decks.l1)),
+            _ => (&keys.l2, list(&decks.l2)),
         }
     };
     let (w, t, rho) = (s.width, s.thickness, s.density);
@@ -895,11 +917,26 @@ impl Scenario {
     /// `ε ∉ [0, 1]`, `β ∉ (0, 360)`, non-positive width/thickness/density, `ratio_max ≤ ratio_min`
     /// or an infinite `ratio_max − ratio_min`
     /// ([`ScenarioError::Invalid`]).
+    ///
+    /// The deprecated `[decks]` names ([`DECK_RENAMES`]) are accepted; use
+    /// [`Scenario::from_toml_with_notes`] to learn which ones a file used.
     pub fn from_toml(text: &str, origin: &str) -> Result<Self, ScenarioError> {
+        Self::from_toml_with_notes(text, origin).map(|(s, _)| s)
+    }
+
+    /// [`Scenario::from_toml`], also returning a note for each deprecated key the file used
+    /// (`width_m` for `width`, …, see [`DECK_RENAMES`]). A quantity given under both its
+    /// current and its deprecated name is an error naming both keys and their lines.
+    pub fn from_toml_with_notes(
+        text: &str,
+        origin: &str,
+    ) -> Result<(Self, Vec<DeprecatedKey>), ScenarioError> {
         let raw = parse_raw(text, origin)?;
         let cx = Ctx { text, origin };
         let d = Scenario::default();
-        let decks = raw.decks.map(Table::into_inner).unwrap_or_default();
+        let mut decks = raw.decks.map(Table::into_inner).unwrap_or_default();
+        let mut notes = Vec::new();
+        let keys = keys::fold_deprecated(&cx, &mut decks, &mut notes)?;
         let impact = raw.impact.map(Table::into_inner).unwrap_or_default();
         let grid = raw.grid.map(Table::into_inner).unwrap_or_default();
         let output = raw.output.map(Table::into_inner).unwrap_or_default();
@@ -907,27 +944,22 @@ impl Scenario {
         // first bad value found is the one reported.
         let pos = |x: Real| x > 0.0;
         let (width, width_span) =
-            cx.scalar(&decks.width_m, d.width, "decks.width_m", pos, "must be > 0")?;
+            cx.scalar(&decks.width, d.width, &keys.width, pos, "must be > 0")?;
         let (thickness, _) = cx.scalar(
-            &decks.thickness_m,
+            &decks.thickness,
             d.thickness,
-            "decks.thickness_m",
+            &keys.thickness,
             pos,
             "must be > 0",
         )?;
-        let (density, _) = cx.scalar(
-            &decks.density_kg_m3,
-            d.density,
-            "decks.density_kg_m3",
-            pos,
-            "must be > 0",
-        )?;
+        let (density, _) =
+            cx.scalar(&decks.density, d.density, &keys.density, pos, "must be > 0")?;
         let shape = cx.shape(&decks)?;
-        cx.refuse_foreign_keys(&decks, shape)?;
+        cx.refuse_foreign_keys(&decks, &keys, shape)?;
         let axes = if shape == StudyShape::Curved {
-            cx.curved_axes(&decks, &d, width, width_span)?
+            cx.curved_axes(&decks, &keys, &d, width, width_span)?
         } else {
-            cx.straight_axes(&decks, shape)?
+            cx.straight_axes(&decks, &keys, shape)?
         };
         let (mu, _) = cx.list(
             &impact.mu,
@@ -971,11 +1003,11 @@ impl Scenario {
             sigma_mode,
             output,
         };
-        check_deck_mass_properties(&scenario, &cx, &decks)?;
+        check_deck_mass_properties(&scenario, &cx, &decks, &keys)?;
         scenario
             .check_size(origin)
             .map_err(|e| locate_size_error(e, &grid, text))?;
-        Ok(scenario)
+        Ok((scenario, notes))
     }
 
     /// `ρ t` \[kg/m²\], the factor by which the Delassus entries of the spec's §15 table (per unit ρt)

@@ -74,7 +74,7 @@ pub fn batch_csv(rows: &[BatchRow]) -> String {
             e.input,
             e.viscous,
             e.contact,
-            o.steps as Real * o.dt,
+            crate::sim::step_time(o.steps, o.dt),
         ] {
             c.push(float_token(v));
         }
@@ -218,7 +218,7 @@ fn bridge_cells(o: &BridgeBatchOutcome, c: &mut Vec<String>) {
         e.contact,
         hyst,
         m.restrainer_work,
-        o.steps as Real * o.dt,
+        crate::sim::step_time(o.steps, o.dt),
     ] {
         c.push(float_token(v));
     }

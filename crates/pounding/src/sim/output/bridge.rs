@@ -62,7 +62,10 @@ pub fn bridge_history_csv(setup: &BridgeSetup, sol: &BridgeSolution) -> String {
     s.push('\n');
     let deg = |k: usize, v: Real| if k % 3 == 2 { v * DEG } else { v };
     for (r, &t) in sol.t.iter().enumerate() {
-        let a = setup.problem.ground.accel(t);
+        let a = setup
+            .problem
+            .ground
+            .accel(crate::sim::solver_time(t, sol.dt));
         let mut row = vec![float_token(t), float_token(a.x), float_token(a.y)];
         let q = &sol.q[3 * n * r..3 * n * (r + 1)];
         let u = &sol.u[3 * n * r..3 * n * (r + 1)];
@@ -321,7 +324,9 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
 
 /// `summary.json` as written: pretty-printed with a final newline.
 pub fn bridge_summary_json_text(setup: &BridgeSetup, sol: &BridgeSolution) -> String {
-    let mut s = serde_json::to_string_pretty(&bridge_summary_json(setup, sol)).unwrap_or_default();
+    let mut v = bridge_summary_json(setup, sol);
+    crate::output::json_without_negative_zero(&mut v);
+    let mut s = serde_json::to_string_pretty(&v).unwrap_or_default();
     s.push('\n');
     s
 }

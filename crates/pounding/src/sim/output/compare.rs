@@ -3,7 +3,7 @@
 
 use super::DEG;
 use crate::math::Real;
-use crate::output::float_token;
+use crate::output::{fixed, float_token};
 use crate::sim::SimSolution;
 
 /// Every file `compare` writes; removed before a new run writes. `timing.json` is written last
@@ -72,15 +72,15 @@ pub fn compare_table(runs: &[(&str, &SimSolution)]) -> String {
             .peak_contact_force
             .map_or("-".to_string(), |f| format!("{:.3}", f / 1e6));
         s.push_str(&format!(
-            "{:<11} {:>7} {:>11} {:>10.3} {:>11.5} {:>8.4}/{:<8.4} {:>9.4} {:>9}\n",
+            "{:<11} {:>7} {:>11} {:>10} {:>11} {:>8}/{:<8} {:>9} {:>9}\n",
             law,
             m.impacts,
             f,
-            m.peak_penetration * 1e3,
-            m.peak_joint_closing,
-            m.peak_rotation[0] * DEG,
-            m.peak_rotation[1] * DEG,
-            m.peak_seat_displacement,
+            fixed(m.peak_penetration * 1e3, 3),
+            fixed(m.peak_joint_closing, 5),
+            fixed(m.peak_rotation[0] * DEG, 4),
+            fixed(m.peak_rotation[1] * DEG, 4),
+            fixed(m.peak_seat_displacement, 4),
             if m.unseated { "YES" } else { "no" }
         ));
     }

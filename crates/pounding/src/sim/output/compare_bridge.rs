@@ -9,7 +9,7 @@
 
 use super::batch::field;
 use crate::math::Real;
-use crate::output::float_token;
+use crate::output::{fixed, float_token};
 use crate::sim::bridge::{ABUTMENT_SIDES, BridgeSolution};
 
 /// Every file `compare` writes for a bridge; removed before a new run writes. `timing.json` is
@@ -185,15 +185,15 @@ pub fn bridge_compare_table(runs: &[(&str, BridgeCompareRun)]) -> String {
         };
         for (site, impacts, force, impulse, closing, opening, _) in sites(sol) {
             let f = force.map_or("-".to_string(), |f| format!("{:.3}", f / 1e6));
-            let o = opening.map_or("-".to_string(), |o| format!("{o:.5}"));
+            let o = opening.map_or("-".to_string(), |o| fixed(o, 5));
             s.push_str(&format!(
-                "{:<11} {:<15} {:>7} {:>11} {:>13.3} {:>11.5} {:>11}\n",
+                "{:<11} {:<15} {:>7} {:>11} {:>13} {:>11} {:>11}\n",
                 law,
                 site,
                 impacts,
                 f,
-                impulse / 1e3,
-                closing,
+                fixed(impulse / 1e3, 3),
+                fixed(closing, 5),
                 o
             ));
         }

@@ -92,7 +92,7 @@ pub fn history_csv(problem: &SimProblem, sol: &SimSolution) -> String {
     for i in 0..h.t.len() {
         row.clear();
         let t = h.t[i];
-        let a = problem.ground.accel(t);
+        let a = problem.ground.accel(crate::sim::solver_time(t, sol.dt));
         row.push(float_token(t));
         row.push(float_token(a.x));
         row.push(float_token(a.y));
@@ -481,7 +481,7 @@ pub(crate) fn add_run_keys(v: &mut serde_json::Value, r: &RunKeys) {
     v["status"] = json!(format!("{:?}", r.status));
     v["steps"] = json!(r.steps);
     v["dt_s"] = json_float(r.dt);
-    v["duration_s"] = json_float(r.steps as Real * r.dt);
+    v["duration_s"] = json_float(crate::sim::step_time(r.steps, r.dt));
     v["lcp_solves"] = json!(r.lcp[0]);
     v["lcp_enumeration_fallbacks"] = json!(r.lcp[1]);
     v["lcp_failures"] = json!(r.lcp[2]);
@@ -489,7 +489,9 @@ pub(crate) fn add_run_keys(v: &mut serde_json::Value, r: &RunKeys) {
 
 /// `summary.json` as written: [`summary_json`] pretty-printed, with a final newline.
 pub fn summary_json_text(setup: &SimSetup, sol: &SimSolution) -> String {
-    let mut s = serde_json::to_string_pretty(&summary_json(setup, sol)).unwrap_or_default();
+    let mut v = summary_json(setup, sol);
+    crate::output::json_without_negative_zero(&mut v);
+    let mut s = serde_json::to_string_pretty(&v).unwrap_or_default();
     s.push('\n');
     s
 }
