@@ -30,7 +30,7 @@ pub struct Args {
 /// The options of `pounding impact` (boxed inside [`Args`] to keep the command enum small).
 #[derive(clap::Args)]
 pub struct ImpactArgs {
-    /// Generic form: a JSON file with "bodies" and "contacts" (see the README).
+    /// Generic form: a JSON file with "bodies" and "contacts" (docs/guide/impact.md).
     #[arg(long, value_name = "FILE.json", conflicts_with_all = ["r1", "r2", "beta1", "beta2", "theta1", "theta2", "case", "mu", "eps", "ratio", "shape", "length", "length2", "skew", "abutment", "gap", "corner", "speed"])]
     problem: Option<PathBuf>,
     /// Centre-line radius of deck 1 [m] (> W/2).
@@ -108,7 +108,7 @@ pub struct ImpactArgs {
     #[arg(long, allow_negative_numbers = true)]
     ratio: Option<f64>,
     /// Joint opening g [m] (M_1 = (0, g)): also report which corner touches first and after what
-    /// closing distance, or the overlap if the pose already interpenetrates (spec §5.5).
+    /// closing distance, or the overlap if the pose already interpenetrates (docs/guide/model.md).
     #[arg(long, allow_negative_numbers = true)]
     opening: Option<f64>,
     /// Deck shape: curved (the default: two S-curved decks, or with --abutment deck 1 against an

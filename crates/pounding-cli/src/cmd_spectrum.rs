@@ -47,6 +47,11 @@ pub struct Args {
 /// A record named on the command line.
 fn load(name: &str, opts: &ReadOptions) -> Result<Record> {
     if let Some(b) = name.strip_prefix("builtin:") {
+        if opts.dt.is_some() {
+            bail!(
+                "--record-dt does not apply to the built-in record {name} (it carries its own times)"
+            );
+        }
         let g = el_centro_1940();
         let r = match b {
             "ELC180" => g.along_y,

@@ -101,7 +101,7 @@ pub fn report_html(study: &Study, groups: &[FigureGroup], figures_drawn: bool) -
     );
     let _ = writeln!(
         h,
-        "<p>Produced by <code>pounding study</code>, pounding version {}. Physics per the project's binding specification (rigid decks, Newton restitution, Coulomb friction, ε_T = 0); the stick interval [L, U] bounds the pre-impact ratio r = γ_T⁻/γ_N⁻ for which the decks stick after impact: outward slip for r &lt; L, inward slip for r &gt; U.</p>",
+        "<p>Produced by <code>pounding study</code>, pounding version {}. Physics as written out in the user guide, docs/guide/model.md (rigid decks, Newton restitution, Coulomb friction, ε_T = 0); the stick interval [L, U] bounds the pre-impact ratio r = γ_T⁻/γ_N⁻ for which the decks stick after impact: outward slip for r &lt; L, inward slip for r &gt; U.</p>",
         env!("CARGO_PKG_VERSION")
     );
     let dis = study.lcp_disagreements();

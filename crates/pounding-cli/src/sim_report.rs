@@ -159,7 +159,10 @@ fn cell(v: &Value) -> String {
         Value::Null => "–".into(),
         Value::String(s) => esc(s),
         Value::Number(n) => sig6(n),
-        Value::Array(a) if a.iter().all(|x| x.is_number() || x.is_null()) => {
+        Value::Array(a)
+            if a.iter()
+                .all(|x| x.is_number() || x.is_null() || x.is_array()) =>
+        {
             let v: Vec<String> = a.iter().map(cell).collect();
             format!("[{}]", v.join(", "))
         }

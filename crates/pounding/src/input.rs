@@ -64,7 +64,7 @@ pub fn read_text(path: &Path, what: &str, limit: u64) -> std::io::Result<String>
         Error::new(
             ErrorKind::InvalidData,
             format!(
-                "larger than {}, the limit for {what}s (see the README, \"Limits\")",
+                "larger than {}, the limit for {what}s (docs/guide/robustness.md lists the limits)",
                 limit_text(limit)
             ),
         )

@@ -344,3 +344,47 @@ fn an_m_s2_file_read_as_g_warns_of_its_pga_and_a_bad_header_exits_2() {
         assert!(!out.exists(), "{header} wrote {}", out.display());
     }
 }
+
+/// Trial findings: `--record builtin:ELC180` is the embedded record (as in a scenario's
+/// `record_y`); unit words ending a header name (`acc_g`, `acc_mps2`) are checked like bracketed
+/// units; `--record-dt` with a built-in record is refused.
+#[test]
+fn builtin_records_on_the_command_line_and_unit_words_in_headers() {
+    let d = crate::scratch_dir("inputs", "builtin-words");
+    let run = |name: &str, args: &[&str]| {
+        let out = d.join(name);
+        let mut a = vec!["simulate", "--duration", "1"];
+        a.extend_from_slice(args);
+        a.extend_from_slice(&["--out", out.to_str().unwrap()]);
+        let (code, _, err) = crate::run_capture(&a);
+        (code, err, out)
+    };
+    let (code, err, out) = run("builtin", &["--record", "builtin:ELC180"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(err.contains("pga_g 0.2808"), "{err}");
+    assert!(out.join("summary.json").is_file());
+    let (code, err, _) = run(
+        "builtin-dt",
+        &["--record", "builtin:ELC180", "--record-dt", "0.01"],
+    );
+    assert_eq!(code, Some(2), "{err}");
+    let g = d.join("acc_g.csv");
+    std::fs::write(&g, "time_s,acc_g\n0,0.1\n0.01,0.2\n0.02,0.1\n").unwrap();
+    let (code, err, _) = run(
+        "word-g",
+        &["--record", g.to_str().unwrap(), "--csv-units", "m/s2"],
+    );
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("acc_g.csv:1"), "{err}");
+    let (code, err, _) = run("word-g-ok", &["--record", g.to_str().unwrap()]);
+    assert_eq!(code, Some(0), "{err}");
+    let m = d.join("acc_mps2.csv");
+    std::fs::write(&m, "t,acc_mps2\n0,1\n0.01,2\n0.02,1\n").unwrap();
+    let (code, err, _) = run("word-mps2", &["--record", m.to_str().unwrap()]);
+    assert_eq!(code, Some(2), "{err}");
+    let (code, err, _) = run(
+        "word-mps2-ok",
+        &["--record", m.to_str().unwrap(), "--csv-units", "m/s2"],
+    );
+    assert_eq!(code, Some(0), "{err}");
+}

@@ -316,14 +316,23 @@ fn check_accel_cell(
     units: AccelUnits,
 ) -> Result<(), String> {
     let mut found: Option<(Real, String)> = None;
+    // `mps2` / `ms2` words are m/s²
+    let unit_word = |w: &str| match norm_unit(w).as_str() {
+        "MPS2" | "MS2" | "MPSS" => "M/S2".to_string(),
+        other => other.to_string(),
+    };
+    // a `g` word is a unit when it ends a name of several words (`acc_g`, `a_g`); alone it may
+    // be a name
+    let last = (words.len() > 1)
+        .then(|| words.last().map(|w| unit_word(w)))
+        .flatten();
     let candidates = bracketed
         .iter()
         .map(|b| (true, norm_unit(b)))
-        .chain(words.iter().map(|w| (false, norm_unit(w))));
+        .chain(words.iter().map(|w| (false, unit_word(w))));
     for (in_brackets, u) in candidates {
         let factor = match accel_unit_factor(&u) {
-            // a bare `g` word (`accel_g`) is not taken for a unit: it may be a name
-            Some(_) if u == "G" && !in_brackets => continue,
+            Some(_) if u == "G" && !in_brackets && last.as_deref() != Some("G") => continue,
             Some(f) => f,
             None if velocity_or_length(&u) && (in_brackets || u.contains('/')) => {
                 return Err(format!(

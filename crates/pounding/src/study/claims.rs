@@ -205,7 +205,7 @@ const CLAIMS: &[Claim] = &[
     },
     Claim {
         id: "inward-negligible-mu-gt-0.25",
-        claim: "\"The validity of inward slip is negligible when the coefficient of friction is greater than 0.25.\" (conclusions; spec erratum 13)",
+        claim: "\"The validity of inward slip is negligible when the coefficient of friction is greater than 0.25.\" (conclusions; see docs/guide/model.md, where this differs from the paper)",
         measure: inward_negligible,
     },
     Claim {

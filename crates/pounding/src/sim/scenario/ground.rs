@@ -158,12 +158,37 @@ pub(in crate::sim::scenario) fn build_ground(
     let (along_y, along_x, records) = match &sc.record {
         None if sc.batch => (None, None, ["batch".into(), "none".into()]),
         Some((p, u)) => {
-            let r = Record::from_path_with(p, &sc.override_reading(*u)?).map_err(|error| {
-                ScenarioError::RecordOverride {
-                    path: p.display().to_string(),
-                    error: Box::new(error),
+            let reading = sc.override_reading(*u)?;
+            let fail = |error| ScenarioError::RecordOverride {
+                path: p.display().to_string(),
+                error: Box::new(error),
+            };
+            let r = match p.to_str().and_then(|s| s.strip_prefix("builtin:")) {
+                // the embedded El Centro components, as in [ground_motion] record_y
+                Some(b) => {
+                    let g = crate::ground_motion::el_centro_1940();
+                    let io = |message: &str| crate::ground_motion::GroundMotionError::Io {
+                        path: p.display().to_string(),
+                        message: message.into(),
+                    };
+                    if reading.dt.is_some() {
+                        return Err(fail(io(
+                            "--record-dt does not apply to a built-in record (it has its own DT)",
+                        )));
+                    }
+                    match b {
+                        "ELC180" => g.along_y,
+                        "ELC270" => g.along_x,
+                        _ => None,
+                    }
+                    .ok_or_else(|| {
+                        fail(io(
+                            "unknown built-in record: use builtin:ELC180 or builtin:ELC270",
+                        ))
+                    })?
                 }
-            })?;
+                None => Record::from_path_with(p, &reading).map_err(fail)?,
+            };
             (Some(r), None, [p.display().to_string(), "none".into()])
         }
         None => {

@@ -9,7 +9,8 @@ use serde::Deserialize;
 /// prints, byte for byte); [`super::Scenario::default`] is this text parsed.
 pub const DEFAULT_SCENARIO_TOML: &str = r#"# pounding simulate — scenario file (TOML). Every key is optional; the values below are the
 # built-in defaults. Unknown keys are errors. Paths are relative to this file.
-# Frame (spec §4): x along the joint line, y normal to it pointing into deck 1; angles in degrees.
+# Frame (docs/guide/model.md): x along the joint line, y normal to it pointing into deck 1;
+# angles in degrees.
 
 [decks]
 # shape = "curved"  # "curved" (the S arrangement, below), "straight" (rectangles L x width) or
@@ -61,7 +62,7 @@ dt = 1e-3            # time step [s]
 # duration = 53.71   # [s]; default: until the last record sample
 history_every = 10   # write every n-th step to history.csv (peaks use every step)
 
-# [contact]          # the joint's normal contact law (see the README, "Compliance contact laws in the simulator")
+# [contact]          # the joint's normal contact law (docs/guide/compare.md, docs/guide/contact-laws.md)
 # law = "rigid"      # rigid (Newton + Coulomb LCP, default) | kelvin | hertz | hertz-damp |
 #                    # bilinear | jankowski | linear: compliance laws (trapezoid + Newton on the
 #                    # forces); an unknown name is an error listing every registered law
