@@ -75,8 +75,13 @@ pub fn run(args: Args) -> Result<ExitCode> {
     } else {
         args.periods.clone()
     };
-    pounding::spectrum::check(args.damping, &periods)
-        .map_err(|e| anyhow!("{e} (--damping / --periods)"))?;
+    pounding::spectrum::check(args.damping, &[]).map_err(|e| anyhow!("{e} (--damping)"))?;
+    pounding::spectrum::check(args.damping, &periods).map_err(|e| anyhow!("{e} (--periods)"))?;
+    let mut sorted = periods.clone();
+    sorted.sort_by(f64::total_cmp);
+    if let Some(w) = sorted.windows(2).find(|w| w[0] == w[1]) {
+        bail!("invalid --periods: {} s is given twice", float_token(w[0]));
+    }
     let units = AccelUnits::from_name(&args.csv_units)
         .ok_or_else(|| anyhow!("invalid --csv-units {:?}: use g or m/s2", args.csv_units))?;
     if let Some(dt) = args.record_dt

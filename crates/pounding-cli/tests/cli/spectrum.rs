@@ -69,6 +69,7 @@ fn bad_spectrum_input_exits_2_and_writes_nothing() {
         &["builtin:ELC180", "--damping", "-0.1"],
         &["builtin:ELC180", "--periods", "0.1,0"],
         &["builtin:ELC180", "--periods", "0.1,nan"],
+        &["builtin:ELC180", "--periods", "1,0.5,1"],
         &["builtin:NOPE"],
         &["/no/such/file.AT2"],
         &["--pair", "builtin:ELC180"],

@@ -264,10 +264,12 @@ impl ProblemReport {
 
     /// The readable summary (one line per entry) that `pounding impact --problem` prints.
     pub fn summary(&self) -> Vec<String> {
+        let count =
+            |n: usize, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
         let mut lines = vec![format!(
-            "Impact of {} bodies at {} contacts: {}",
-            self.bodies.len(),
-            self.contacts.len(),
+            "Impact of {} at {}: {}",
+            count(self.bodies.len(), "body", "bodies"),
+            count(self.contacts.len(), "contact", "contacts"),
             self.status
         )];
         for b in &self.bodies {

@@ -108,3 +108,13 @@ fn both_names_refused_and_errors_name_the_key_as_written() {
     let (_, notes) = Scenario::from_toml_with_notes(DEFAULT_SCENARIO_TOML, "default").unwrap();
     assert!(notes.is_empty());
 }
+
+/// The notes come in the order of their lines in the file (the reading order), whatever the
+/// order of the keys' documentation.
+#[test]
+fn deprecation_notes_follow_the_lines_of_the_file() {
+    let text = "[decks]\nr1_m = [100.0]\nr2_m = [100.0]\nwidth_m = 10.0\nthickness_m = 0.5\n";
+    let (_, notes) = Scenario::from_toml_with_notes(text, "order.toml").unwrap();
+    let lines: Vec<usize> = notes.iter().map(|n| n.line).collect();
+    assert_eq!(lines, vec![2, 3, 4, 5], "{notes:?}");
+}

@@ -108,8 +108,9 @@ pub(super) fn fold_deprecated(
 ) -> Result<DeckKeys, ScenarioError> {
     let [w, t, rho, r1, r2, l1, l2] = DECK_RENAMES;
     // In the order of the file's documentation, so that a file with several conflicts reports
-    // the first.
-    Ok(DeckKeys {
+    // the first; the notes are then sorted by line (the order the user reads the file in).
+    let first = notes.len();
+    let keys = DeckKeys {
         width: cx.fold(&mut d.width, d.width_m.take(), w, notes)?,
         thickness: cx.fold(&mut d.thickness, d.thickness_m.take(), t, notes)?,
         density: cx.fold(&mut d.density, d.density_kg_m3.take(), rho, notes)?,
@@ -117,5 +118,7 @@ pub(super) fn fold_deprecated(
         l2: cx.fold(&mut d.l2, d.l2_m.take(), l2, notes)?,
         r1: cx.fold(&mut d.r1, d.r1_m.take(), r1, notes)?,
         r2: cx.fold(&mut d.r2, d.r2_m.take(), r2, notes)?,
-    })
+    };
+    notes[first..].sort_by_key(|n| n.line);
+    Ok(keys)
 }
