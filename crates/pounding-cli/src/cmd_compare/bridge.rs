@@ -46,7 +46,7 @@ pub(super) fn run(
     let mut setups: Vec<Result<BridgeSetup, String>> = Vec::new();
     for l in laws {
         setups.push(match base.clone().with_law(l).build_bridge() {
-            Ok(s) => Ok(with_dt(args, s)?),
+            Ok(s) => Ok(with_plot_stride(s)),
             Err(e) => Err(e.to_string()),
         });
     }
@@ -114,35 +114,11 @@ pub(super) fn run(
     Ok(ExitCode::SUCCESS)
 }
 
-/// `--dt` and a history sample per 0.5 ms (the plots), checked as `simulate` checks them.
-fn with_dt(args: &Args, mut s: BridgeSetup) -> Result<BridgeSetup> {
-    if let Some(dt) = args.dt {
-        s.settings.dt = dt;
-    }
-    s.settings.history_stride = ((5e-4 / s.settings.dt).floor() as usize).max(1);
-    s.settings.validate().map_err(|e| anyhow!("{e} (--dt)"))?;
-    // the restrainers' explicit force needs a short enough step (checked for the file's dt by
-    // the build; again for --dt)
-    s.problem
-        .model
-        .check_time_step(s.settings.dt)
-        .map_err(|e| anyhow!("{e} (--dt)"))?;
-    let d = s
-        .settings
-        .duration
-        .unwrap_or_else(|| s.problem.ground.end_time());
-    if s.settings.dt > d {
-        bail!(
-            "invalid dt = {}: must not exceed the duration {} s{}",
-            float_token(s.settings.dt),
-            float_token(d),
-            if args.dt.is_some() { " (--dt)" } else { "" }
-        );
-    }
-    s.settings
-        .step_count(d)
-        .map_err(|e| anyhow!("{e} (--dt)"))?;
-    Ok(s)
+/// A history sample per 0.5 ms (the plots); `--dt` was applied to the scenario, whose build
+/// checks it as `simulate` does.
+fn with_plot_stride(mut s: BridgeSetup) -> BridgeSetup {
+    s.settings.history_stride = super::plot_stride(s.settings.dt);
+    s
 }
 
 /// Writes the CSV files, the table, the plot and `timing.json` into the locked `out`.
