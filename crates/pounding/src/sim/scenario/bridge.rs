@@ -316,29 +316,7 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
     }
     let nj = n - 1;
     if nj == 0 {
-        let rb = &raw.bridge;
-        let lone = [
-            (&rb.restrainer_k, "restrainer_k"),
-            (&rb.restrainer_slack, "restrainer_slack"),
-            (&rb.restrainer_fy, "restrainer_fy"),
-            (&rb.restrainer_depth, "restrainer_depth"),
-        ]
-        .into_iter()
-        .find_map(|(x, k)| x.as_ref().map(|x| (v.line(x), k)))
-        .or(rb
-            .restrainer_offsets
-            .as_ref()
-            .map(|x| (v.line(x), "restrainer_offsets")));
-        if let Some((line, key)) = lone {
-            return Err(v.err(
-                bk(key),
-                Some(line),
-                format!(
-                    "{} is not used: a bridge of one segment has no joint to restrain",
-                    bk(key)
-                ),
-            ));
-        }
+        no_joint_keys(&v, &raw.bridge)?;
     }
     if !raw.joint.is_empty() && raw.joint.len() != nj {
         let line = raw.joint.get(nj).map(|j| v.line(j));
@@ -389,6 +367,31 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
         records,
         units,
     })
+}
+
+/// A bridge of one segment has no joint: the `[bridge]` restrainer keys would be ignored, so
+/// they are refused.
+fn no_joint_keys(v: &Val, rb: &BridgeSec) -> Result<(), ScenarioError> {
+    let lone = [
+        (&rb.restrainer_k, "restrainer_k"),
+        (&rb.restrainer_slack, "restrainer_slack"),
+        (&rb.restrainer_fy, "restrainer_fy"),
+        (&rb.restrainer_depth, "restrainer_depth"),
+    ]
+    .into_iter()
+    .find_map(|(x, k)| x.as_ref().map(|x| (v.line(x), k)))
+    .or(rb
+        .restrainer_offsets
+        .as_ref()
+        .map(|x| (v.line(x), "restrainer_offsets")));
+    if let Some((line, key)) = lone {
+        return Err(v.err(
+            format!("bridge.{key}"),
+            Some(line),
+            format!("bridge.{key} is not used: a bridge of one segment has no joint to restrain"),
+        ));
+    }
+    Ok(())
 }
 
 /// The `[bridge]` defaults of every joint (and abutment).
@@ -950,6 +953,40 @@ const MAX_BEARING_POINTS: usize = 1000;
 /// Most restrainer cables across one joint.
 const MAX_CABLES: usize = 100;
 
+/// The number of bearings of `[[segment]]` `i`: its `bearing_points` (1 to
+/// [`MAX_BEARING_POINTS`], two coordinates each) or the four corners.
+fn bearing_count(v: &Val, i: usize, s: &SegmentSec) -> Result<usize, ScenarioError> {
+    let sk = |key: &str| format!("segment[{i}].{key}");
+    Ok(match &s.bearing_points {
+        Some(p) if p.get_ref().is_empty() || p.get_ref().len() > MAX_BEARING_POINTS => {
+            return Err(v.err(
+                sk("bearing_points"),
+                Some(v.line(p)),
+                format!(
+                    "{} needs between 1 and {MAX_BEARING_POINTS} points",
+                    sk("bearing_points")
+                ),
+            ));
+        }
+        Some(p) if p.get_ref().iter().any(|q| q.len() != 2) => {
+            let bad = p.get_ref().iter().position(|q| q.len() != 2).unwrap_or(0);
+            return Err(v.err(
+                sk("bearing_points"),
+                Some(v.line(p)),
+                format!(
+                    "{}: point {} has {} coordinates; give each point as [along, left] (two \
+                     numbers, m)",
+                    sk("bearing_points"),
+                    bad + 1,
+                    p.get_ref()[bad].len()
+                ),
+            ));
+        }
+        Some(p) => p.get_ref().len(),
+        None => 4,
+    })
+}
+
 /// One `[[segment]]` table.
 fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> {
     let sk = |key: &str| format!("segment[{i}].{key}");
@@ -987,34 +1024,7 @@ fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> 
         }
     }
     let mass = shape.mass_properties().mass;
-    let n_bearings = match &s.bearing_points {
-        Some(p) if p.get_ref().is_empty() || p.get_ref().len() > MAX_BEARING_POINTS => {
-            return Err(v.err(
-                sk("bearing_points"),
-                Some(v.line(p)),
-                format!(
-                    "{} needs between 1 and {MAX_BEARING_POINTS} points",
-                    sk("bearing_points")
-                ),
-            ));
-        }
-        Some(p) if p.get_ref().iter().any(|q| q.len() != 2) => {
-            let bad = p.get_ref().iter().position(|q| q.len() != 2).unwrap_or(0);
-            return Err(v.err(
-                sk("bearing_points"),
-                Some(v.line(p)),
-                format!(
-                    "{}: point {} has {} coordinates; give each point as [along, left] (two \
-                     numbers, m)",
-                    sk("bearing_points"),
-                    bad + 1,
-                    p.get_ref()[bad].len()
-                ),
-            ));
-        }
-        Some(p) => p.get_ref().len(),
-        None => 4,
-    };
+    let n_bearings = bearing_count(v, i, s)?;
     let k = match (&s.period_s, &s.bearing_stiffness) {
         (Some(_), Some(b)) => {
             return Err(v.err(
