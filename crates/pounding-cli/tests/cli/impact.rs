@@ -317,3 +317,35 @@ fn bridge_contact_detection_at_an_opening() {
     let out = bridge(&[("--opening", "nan")], &[]);
     assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("opening"));
 }
+
+/// `normal` is a direction: a non-unit normal gives the same impulses as the unit one, and the
+/// output echoes the unit normal and tangent the impulses are measured along (nothing silent).
+#[test]
+fn generic_form_normal_is_a_direction_and_is_echoed() {
+    let run = |normal: &str, name: &str| {
+        let text = format!(
+            r#"{{"bodies": [{{"name": "disc", "mass": 2, "inertia": 0.09, "position": [0, 0.3],
+                 "velocity": [1, -2], "omega": 40}}],
+               "contacts": [{{"body_a": "disc", "body_b": null, "point": [0, 0], "normal": {normal},
+                 "mu": 0.2, "restitution": 0.5}}]}}"#
+        );
+        let p = write_tmp(name, &text);
+        json_of(
+            &pounding()
+                .args(["impact", "--json", "--problem"])
+                .arg(&p)
+                .output()
+                .unwrap(),
+        )
+    };
+    let unit = run("[0, 1]", "unit.json");
+    let long = run("[0, 3]", "long.json");
+    assert_eq!(unit, long);
+    let c = &long["contacts"][0];
+    assert_eq!(c["normal"], serde_json::json!([0.0, 1.0]));
+    assert_eq!(c["tangent"], serde_json::json!([-1.0, 0.0]));
+    // an oblique direction: echoed at unit length
+    let oblique = run("[3, 4]", "oblique.json");
+    let n = &oblique["contacts"][0]["normal"];
+    assert!((f(&n[0]) - 0.6).abs() < 1e-15 && (f(&n[1]) - 0.8).abs() < 1e-15);
+}

@@ -153,6 +153,11 @@ pub struct BodyStateReport {
 /// One contact of the generic form.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ContactReport {
+    /// The unit normal `n` the impulses are measured along: the input `normal` scaled to unit
+    /// length (the input is a direction), pointing into `body_a`.
+    pub normal: [f64; 2],
+    /// The unit tangent `t = (−n_y, n_x)` of `Λ_T`, `γ_T⁻` and `γ_T⁺`.
+    pub tangent: [f64; 2],
     /// `Λ_N` \[N s\].
     pub normal_impulse: f64,
     /// `Λ_T` \[N s\].
@@ -227,7 +232,10 @@ pub fn problem_report(problem: &ImpactProblem) -> ProblemReport {
         contacts: s
             .contacts
             .iter()
-            .map(|c| ContactReport {
+            .zip(problem.contacts())
+            .map(|(c, k)| ContactReport {
+                normal: xy(&k.normal),
+                tangent: xy(&k.tangent),
                 normal_impulse: c.normal_impulse,
                 tangential_impulse: c.tangential_impulse,
                 mode: c.mode.name(),
