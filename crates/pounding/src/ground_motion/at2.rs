@@ -1,7 +1,7 @@
 //! PEER NGA `.AT2` records: the header (kind, units, `NPTS`/`DT` in every style met) and the
 //! values.
 
-use super::{G0, GroundMotionError, Record, parse_err, parse_real, push_values};
+use super::{AccelUnits, G0, GroundMotionError, Record, parse_err, parse_real, push_values};
 use crate::math::Real;
 
 impl Record {
@@ -19,6 +19,17 @@ impl Record {
     /// `CM/S2`, `CM/SEC/SEC`, `GAL`) and `M/S/S` (also `M/S^2`, `M/S2`, `M/SEC/SEC`); other units
     /// are refused. A header that names no units is read in g, as PEER's files are.
     pub fn from_at2_str(text: &str, source_name: &str) -> Result<Self, GroundMotionError> {
+        Self::from_at2_str_with(text, source_name, None)
+    }
+
+    /// [`Record::from_at2_str`], with units the user gave explicitly (`csv_units` or
+    /// `--csv-units`, and where they came from) for a header that names none. A header that names
+    /// its units keeps them (the stderr line and `summary.json` show the units as read).
+    pub fn from_at2_str_with(
+        text: &str,
+        source_name: &str,
+        given: Option<(AccelUnits, &str)>,
+    ) -> Result<Self, GroundMotionError> {
         let lines: Vec<&str> = text.lines().collect();
         if lines.len() < 4 {
             return Err(parse_err(
@@ -29,6 +40,10 @@ impl Record {
         }
         let (factor, unit) =
             at2_units_factor(&lines[..4]).map_err(|(k, m)| parse_err(source_name, k, m))?;
+        let factor = match (&unit, given) {
+            (None, Some((units, _))) => units.factor(),
+            _ => factor,
+        };
         let header = lines[3];
         let (npts, dt) = parse_at2_npts_dt(header)
             .map_err(|m| parse_err(source_name, 4, format!("{m} in AT2 header line {header:?}")))?;
@@ -59,9 +74,12 @@ impl Record {
                 ),
             ));
         }
-        let label = match unit {
-            Some(u) => format!("{u} header"),
-            None => "g (AT2 header names no units: PEER default)".to_string(),
+        let label = match (unit, given) {
+            (Some(u), _) => format!("{u} header"),
+            (None, Some((units, from))) => {
+                format!("{} ({from}; the AT2 header names no units)", units.name())
+            }
+            (None, None) => "g (AT2 header names no units: PEER default)".to_string(),
         };
         Ok(Self::uniform(source_name, dt, values)?.with_units_label(label))
     }

@@ -158,7 +158,11 @@ impl Record {
         }
         let u = opts.units;
         let r = match (format, opts.dt) {
-            (RecordFormat::At2, _) => return Self::from_at2_str(&text, &name),
+            (RecordFormat::At2, _) => {
+                let given = (opts.units_from != ReadOptions::default().units_from)
+                    .then_some((u, opts.units_from.as_str()));
+                return Self::from_at2_str_with(&text, &name, given);
+            }
             (RecordFormat::Csv, _) => Self::from_csv_str(&text, &name, u)?,
             (RecordFormat::Sequence, Some(dt)) => Self::from_sequence_str(&text, &name, u, dt)?,
             _ => Self::from_columns_str(&text, &name, u)?,

@@ -492,3 +492,31 @@ fn csv_and_columns_headers_of_other_quantities_or_time_units_are_refused() {
         }
     }
 }
+
+/// An AT2 whose header names no units takes the units the user gave (`csv_units` /
+/// `--csv-units`); one that names its units keeps them, whatever was given; without either the
+/// PEER default g applies. The units label says which.
+#[test]
+fn an_at2_without_header_units_takes_the_given_units() {
+    let d = dir("at2-given-units");
+    let bare = write(&d, "bare.AT2", &at2_with("ACCELERATION TIME SERIES"));
+    let named = write(
+        &d,
+        "named.AT2",
+        &at2_with("ACCELERATION IN UNITS OF CM/S/S"),
+    );
+    let ms2 = opts(AccelUnits::MetresPerSecondSquared, None);
+    let r = Record::from_path_with(&bare, &ms2).unwrap();
+    assert_eq!(r.values(), &[0.1, 0.2, 0.3, 0.4]);
+    assert!(
+        r.units().contains("m/s2") && r.units().contains("names no units"),
+        "{}",
+        r.units()
+    );
+    let r = Record::from_path_with(&bare, &ReadOptions::default()).unwrap();
+    assert_eq!(r.values()[3], 0.4 * 9.80665);
+    assert!(r.units().contains("PEER default"), "{}", r.units());
+    let r = Record::from_path_with(&named, &ms2).unwrap();
+    assert_eq!(r.values()[3], 0.4 * 0.01);
+    assert!(r.units().contains("CM/S/S header"), "{}", r.units());
+}
