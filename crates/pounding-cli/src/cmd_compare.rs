@@ -76,6 +76,9 @@ pub fn run(args: Args) -> Result<ExitCode> {
         return bridge::run(&args, &laws, base, t_start);
     }
     let setups = build_setups(&laws, base)?;
+    if let Some(s) = setups.first() {
+        crate::cmd_simulate::sim_records::print_components(&s.problem.ground);
+    }
     pounding::output::check_output_dir_free(&args.out)?;
     let runs = run_laws(&laws, &setups)?;
     write_outputs(&args.out, &runs, t_start)?;
@@ -171,12 +174,16 @@ fn run_laws(laws: &[String], setups: &[SimSetup]) -> Result<Vec<Run>> {
         let t = Instant::now();
         let sol = simulate(&s.problem, &s.settings).map_err(|e| anyhow!("law {l:?}: {e}"))?;
         let secs = t.elapsed().as_secs_f64();
-        if let Some(a) = &sol.time_step_advice
-            && !a.adequate
-        {
+        let energy = pounding::sim::output::run_warnings(&sol);
+        if !energy.is_empty() || sol.time_step_advice.as_ref().is_some_and(|a| !a.adequate) {
             eprintln!("law {l}:");
         }
-        let _ = cmd_simulate::warn_time_step(&sol);
+        cmd_simulate::print_run_warnings(
+            &s.problem.ground,
+            sol.dt,
+            sol.time_step_advice.as_ref(),
+            &energy,
+        );
         eprintln!(
             "{l}: {} steps in {:.1} ms ({:?})",
             sol.steps,

@@ -15,7 +15,7 @@ use pounding::sim::output::{
     SIM_OUTPUTS, describe_contact, history_csv, impacts_csv, summary_json_text,
 };
 use pounding::sim::scenario::{DEFAULT_SCENARIO_TOML, ParamKey, Scenario, Section};
-use pounding::sim::{SimSolution, simulate};
+use pounding::sim::simulate;
 use serde_json::json;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -171,7 +171,6 @@ pub(crate) fn write_report(
     summary_json: &str,
     candidates: &[&'static str],
     files: &[&'static str],
-    warnings: Vec<String>,
 ) -> Result<()> {
     let input = crate::sim_report::ReportInput {
         what,
@@ -183,7 +182,6 @@ pub(crate) fn write_report(
             .filter(|f| args.out.join(f).is_file())
             .collect(),
         files,
-        warnings,
     };
     let html = crate::sim_report::report_html(&input, summary_json);
     let p = args.out.join("report.html");
@@ -215,12 +213,12 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let t_sim = Instant::now();
     let sol = simulate(&setup.problem, &setup.settings).map_err(|e| anyhow!("{e}"))?;
     let sim_secs = t_sim.elapsed().as_secs_f64();
-    let warnings: Vec<String> = warn_time_step(&sol).into_iter().collect();
-    if let Some(w) =
-        pounding::sim::output::warnings_message(&pounding::sim::output::run_warnings(&sol))
-    {
-        eprintln!("{w}");
-    }
+    print_run_warnings(
+        &setup.problem.ground,
+        sol.dt,
+        sol.time_step_advice.as_ref(),
+        &pounding::sim::output::run_warnings(&sol),
+    );
 
     let out = &args.out;
     let _lock = lock_and_clear(out)?;
@@ -244,7 +242,6 @@ pub fn run(args: Args) -> Result<ExitCode> {
         &summary,
         sim_plots::FIGURES,
         &["summary.json", "history.csv", "impacts.csv"],
-        warnings,
     )?;
     let write_secs = t_write.elapsed().as_secs_f64();
     let timing = json!({
@@ -309,17 +306,22 @@ pub(crate) fn lock_and_clear(out: &Path) -> Result<pounding::output::OutputLock>
     Ok(lock)
 }
 
-/// Prints a warning to stderr when a compliance law's contact is not resolved by `dt`, and
-/// returns it.
-pub(crate) fn warn_time_step(sol: &SimSolution) -> Option<String> {
-    let a = sol.time_step_advice.as_ref().filter(|a| !a.adequate)?;
-    let w = format!(
-        "dt = {} s is too coarse for the contact stiffness: the linearised contact lasts {:.3e} \
-         s = {:.1} steps; use dt <= {:.2e} s (20 steps per contact)",
-        sol.dt, a.contact_duration, a.steps_per_contact, a.max_step
-    );
-    eprintln!("warning: {w}");
-    Some(w)
+/// Prints the run's warnings that stderr has not shown yet: the time step (the record lines
+/// came before the run) and the per-impact summary. `summary.json` lists them all (and
+/// `report.html` from it).
+pub(crate) fn print_run_warnings(
+    ground: &pounding::ground_motion::GroundMotion,
+    dt: Real,
+    advice: Option<&pounding::contact_law::timestep::TimeStepAdvice>,
+    impacts: &[pounding::sim::output::RunWarning],
+) {
+    let input = pounding::sim::output::input_warnings(ground, dt, advice);
+    for w in input.iter().filter(|w| w.kind == "time_step_coarse") {
+        eprintln!("warning: {}", w.message);
+    }
+    if let Some(w) = pounding::sim::output::warnings_message(impacts) {
+        eprintln!("{w}");
+    }
 }
 
 /// `x` with `decimals` decimals for `|x| < 1e6`, in exponent form (`1.2346e190`) beyond, and

@@ -166,7 +166,7 @@ pub fn run(
         (rows.len(), runs_secs, t_start),
     )?;
     Ok(report(&rows, runs_secs, &args.out, |o| {
-        (o.status, o.summary.unseated)
+        (o.status, o.summary.unseated, o.warnings)
     }))
 }
 
@@ -239,7 +239,7 @@ pub fn run_bridge(
         (rows.len(), runs_secs, t_start),
     )?;
     Ok(report(&rows, runs_secs, &args.out, |o| {
-        (o.status, o.summary.unseated)
+        (o.status, o.summary.unseated, o.warnings)
     }))
 }
 
@@ -272,12 +272,12 @@ fn curves<O>(
 }
 
 /// Prints the batch's summary and errors; exit code 1 when a run failed or is not trustworthy.
-/// `status(o)` is a run's status and whether it unseated.
+/// `status(o)` is a run's status, whether it unseated and its number of warnings.
 fn report<O>(
     rows: &[BatchRow<O>],
     runs_secs: f64,
     out: &Path,
-    status: impl Fn(&O) -> (SimStatus, bool),
+    status: impl Fn(&O) -> (SimStatus, bool, usize),
 ) -> ExitCode {
     let failed: Vec<&BatchRow<O>> = rows.iter().filter(|r| r.outcome.is_err()).collect();
     let unseated = rows
@@ -292,6 +292,19 @@ fn report<O>(
         failed.len(),
         out.display()
     );
+    let warned = rows
+        .iter()
+        .filter(|r| r.outcome.as_ref().is_ok_and(|o| status(o).2 > 0))
+        .count();
+    if warned > 0 {
+        eprintln!(
+            "warning: {} of {} runs have warnings (energy created at a contact, a coarse time step \
+             or an implausible record PGA): see batch.csv, column warnings, and run one alone with \
+             --record for its summary.json",
+            warned,
+            rows.len()
+        );
+    }
     // runs that finished but are not trustworthy (diverged, LCP/law-check or Newton failures)
     let untrusted: Vec<(&BatchRow<O>, SimStatus)> = rows
         .iter()

@@ -30,26 +30,12 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
     let t_sim = Instant::now();
     let sol = setup.run().map_err(|e| anyhow!("{e}"))?;
     let sim_secs = t_sim.elapsed().as_secs_f64();
-    if let Some(w) =
-        pounding::sim::output::warnings_message(&pounding::sim::output::bridge_run_warnings(&sol))
-    {
-        eprintln!("{w}");
-    }
-    let mut warnings = Vec::new();
-    if let Some(a) = &sol.time_step_advice
-        && !a.adequate
-    {
-        let w = format!(
-            "dt = {} s is too coarse for the contact law: about {} steps per contact (contact \
-             duration {} s); use dt <= {} s",
-            float_token(sol.dt),
-            float_token(a.steps_per_contact.round()),
-            float_token(a.contact_duration),
-            float_token(a.max_step)
-        );
-        eprintln!("warning: {w}");
-        warnings.push(w);
-    }
+    super::print_run_warnings(
+        &setup.problem.ground,
+        sol.dt,
+        sol.time_step_advice.as_ref(),
+        &pounding::sim::output::bridge_run_warnings(&sol),
+    );
     let out = &args.out;
     let _lock = lock_and_clear(out)?;
     let t_write = Instant::now();
@@ -74,7 +60,6 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
         &summary,
         crate::plots::bridge::FIGURES,
         &["summary.json", "history.csv", "impacts.csv"],
-        warnings,
     )?;
     let timing = json!({
         "simulate_s": sim_secs,

@@ -100,28 +100,20 @@ pub(crate) fn expand_records(paths: &[PathBuf]) -> Result<Vec<PathBuf>> {
     Ok(out)
 }
 
-/// PGA as read (g) above which a record's units are doubted on stderr: no recorded ground
-/// motion comes near it, a file in m/s² read as g does.
-const PLAUSIBLE_PGA_G: f64 = 2.0;
-
 /// Prints one line per ground-motion component: the record, its units as read, dt, samples,
-/// duration and PGA (before the scale factor), and a warning for a PGA over
-/// [`PLAUSIBLE_PGA_G`] (units probably wrong; not an error).
+/// duration and PGA (before the scale factor), and the library's warning for an implausible PGA
+/// ([`ComponentInfo::units_warning`]; units probably wrong, not an error).
 pub(crate) fn print_components(g: &GroundMotion) {
     for c in g.components() {
         print_component(&c);
     }
 }
 
-/// Prints the line of one component ([`ComponentInfo::line`]) and the PGA warning if due.
+/// Prints the line of one component ([`ComponentInfo::line`]) and its PGA warning if due.
 pub(crate) fn print_component(c: &ComponentInfo) {
     eprintln!("{}", c.line());
-    if c.pga_g > PLAUSIBLE_PGA_G {
-        eprintln!(
-            "warning: record {} has a PGA of {:.3} g as read in {}; check its units \
-             (csv_units / --csv-units)",
-            c.record, c.pga_g, c.units
-        );
+    if let Some(w) = c.units_warning() {
+        eprintln!("warning: {w}");
     }
 }
 

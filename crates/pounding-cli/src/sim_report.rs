@@ -23,8 +23,6 @@ pub struct ReportInput<'a> {
     pub figures: Vec<&'a str>,
     /// Data files written beside the page.
     pub files: &'a [&'a str],
-    /// Warnings printed on stderr during the run.
-    pub warnings: Vec<String>,
 }
 
 /// The page, from the run's `summary.json` text.
@@ -71,7 +69,7 @@ pub fn report_html(input: &ReportInput, summary_json: &str) -> String {
          href=\"#summary\">Summary</a><a href=\"#figures\">Figures</a><a \
          href=\"#model\">Model</a></nav>\n",
     );
-    warnings(&mut h, input, &summary);
+    warnings(&mut h, &summary);
     let _ = writeln!(h, "<h2 id=\"ground\">Ground motion</h2>");
     object_tables(&mut h, &summary["ground_motion"]);
     let _ = writeln!(h, "<h2 id=\"summary\">Summary</h2>");
@@ -111,14 +109,14 @@ pub fn report_html(input: &ReportInput, summary_json: &str) -> String {
     h
 }
 
-/// The run's warnings (stderr) and `summary.json`'s `warnings` list.
-fn warnings(h: &mut String, input: &ReportInput, summary: &Value) {
+/// `summary.json`'s `warnings` list, one sentence each.
+fn warnings(h: &mut String, summary: &Value) {
     let _ = writeln!(h, "<h2 id=\"warnings\">Warnings</h2>");
-    let mut items: Vec<String> = input.warnings.iter().map(|w| esc(w)).collect();
+    let mut items: Vec<String> = Vec::new();
     if let Some(list) = summary["warnings"].as_array() {
         items.extend(list.iter().map(|w| match w {
             Value::String(s) => esc(s),
-            other => esc(&other.to_string()),
+            other => esc(&pounding::sim::output::warning_sentence(other)),
         }));
     }
     if items.is_empty() {

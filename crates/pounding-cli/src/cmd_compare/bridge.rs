@@ -15,7 +15,7 @@ use super::Args;
 use super::plots::{R, panel};
 use anyhow::{Context, Result, anyhow, bail};
 use pounding::math::Real;
-use pounding::output::{float_token, write_atomic};
+use pounding::output::write_atomic;
 use pounding::sim::SimStatus;
 use pounding::sim::bridge::BridgeSolution;
 use pounding::sim::output::{
@@ -55,6 +55,9 @@ pub(super) fn run(
     {
         bail!("no law of --laws can run on this bridge: {first}");
     }
+    if let Some(Ok(s)) = setups.iter().find(|s| s.is_ok()) {
+        crate::cmd_simulate::sim_records::print_components(&s.problem.ground);
+    }
     pounding::output::check_output_dir_free(&args.out)?;
     let mut runs = Vec::new();
     for (l, s) in laws.iter().zip(&setups) {
@@ -67,15 +70,16 @@ pub(super) fn run(
                     .map_err(|e| e.to_string())
             }
         };
-        if let Ok((sol, _)) = &outcome
-            && let Some(a) = sol.time_step_advice.filter(|a| !a.adequate)
-        {
-            eprintln!(
-                "warning: law {l}: dt = {} s is too coarse for the contact law: about {} steps per \
-                 contact; use dt <= {} s",
-                float_token(sol.dt),
-                float_token(a.steps_per_contact.round()),
-                float_token(a.max_step)
+        if let (Ok((sol, _)), Ok(s)) = (&outcome, s) {
+            let energy = pounding::sim::output::bridge_run_warnings(sol);
+            if !energy.is_empty() || sol.time_step_advice.is_some_and(|a| !a.adequate) {
+                eprintln!("law {l}:");
+            }
+            crate::cmd_simulate::print_run_warnings(
+                &s.problem.ground,
+                sol.dt,
+                sol.time_step_advice.as_ref(),
+                &energy,
             );
         }
         match &outcome {

@@ -108,7 +108,8 @@ fn bridge_batch_bytes_do_not_depend_on_threads_and_shards_merge_to_them() {
         pos("segment4_hysteretic_energy_j") + 1,
         pos("peak_contact_force_n")
     );
-    assert_eq!(pos("newton_failures") + 2, head.len());
+    assert_eq!(pos("newton_failures") + 3, head.len());
+    assert_eq!(pos("warnings") + 2, head.len());
     assert_eq!(head.last().unwrap(), "error");
     for r in &all {
         assert_eq!(r[pos("status")], "Completed");

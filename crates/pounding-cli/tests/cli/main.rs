@@ -81,3 +81,4 @@ mod spectrum;
 mod study;
 mod study_shapes;
 mod vocab;
+mod warnings;

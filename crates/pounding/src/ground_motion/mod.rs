@@ -325,7 +325,24 @@ pub struct ComponentInfo {
     pub pga_g: Real,
 }
 
+/// PGA as read \[g\] above which a record's units are doubted (a warning, not an error): no
+/// recorded ground motion comes near it, a file in m/s² or cm/s² read as g does.
+pub const PLAUSIBLE_PGA_G: Real = 2.0;
+
 impl ComponentInfo {
+    /// The warning due when the PGA as read exceeds [`PLAUSIBLE_PGA_G`] (units probably wrong),
+    /// with where units come from for each kind of file.
+    pub fn units_warning(&self) -> Option<String> {
+        (self.pga_g > PLAUSIBLE_PGA_G).then(|| {
+            format!(
+                "record {} has a PGA of {:.3} g as read in {}; check its units (a text record: \
+                 csv_units / --csv-units; an AT2 record: the units of its header, or csv_units / \
+                 --csv-units when the header names none)",
+                self.record, self.pga_g, self.units
+            )
+        })
+    }
+
     /// The info of `record` as component `component`.
     pub fn of(component: &'static str, record: &Record) -> Self {
         Self {

@@ -61,6 +61,9 @@ pub struct BatchOutcome<S = SimSummary> {
     pub newton_failures: usize,
     /// Compliance laws: the time-step check of the contact (`None` for rigid contact).
     pub time_step_advice: Option<crate::contact_law::timestep::TimeStepAdvice>,
+    /// The number of the run's warnings (the length of the same single run's `summary.json`
+    /// `warnings` list; 0 until set by the batch, which knows the run's ground motion).
+    pub warnings: usize,
 }
 
 impl From<SimSolution> for BatchOutcome {
@@ -76,6 +79,7 @@ impl From<SimSolution> for BatchOutcome {
             lcp_failures: s.lcp_failures,
             newton_failures: s.newton_failures,
             time_step_advice: s.time_step_advice,
+            warnings: 0,
         }
     }
 }
@@ -181,7 +185,11 @@ impl BatchProblem for SimProblem {
     ) -> (Real, Result<BatchOutcome, SimError>) {
         let p = run_problem(self, r, scale);
         let pga = r.pga() * p.ground.scale_y.abs();
-        (pga, simulate(&p, st).map(BatchOutcome::from))
+        let out = simulate(&p, st).map(|sol| {
+            let w = crate::sim::output::run_warnings(&sol).len();
+            counted(BatchOutcome::from(sol), &p.ground, w)
+        });
+        (pga, out)
     }
 }
 
@@ -197,9 +205,24 @@ impl BatchProblem for BridgeProblem {
         st: &SimSettings,
     ) -> (Real, Result<BridgeBatchOutcome, SimError>) {
         let p = run_bridge_problem(self, r, scale);
-        let out = simulate_bridge(&p, st).map(BridgeBatchOutcome::from);
+        let out = simulate_bridge(&p, st).map(|sol| {
+            let w = crate::sim::output::bridge_run_warnings(&sol).len();
+            counted(BridgeBatchOutcome::from(sol), &p.ground, w)
+        });
         (r.pga() * p.ground.scale_y.abs(), out)
     }
+}
+
+/// `o` with its [`BatchOutcome::warnings`]: the input warnings of a run on `ground`
+/// ([`crate::sim::output::input_warnings`]) and `impact_warnings` per-impact ones.
+fn counted<S>(
+    mut o: BatchOutcome<S>,
+    ground: &GroundMotion,
+    impact_warnings: usize,
+) -> BatchOutcome<S> {
+    let input = crate::sim::output::input_warnings(ground, o.dt, o.time_step_advice.as_ref());
+    o.warnings = input.len() + impact_warnings;
+    o
 }
 
 /// Runs every `(record, scale)` pair of `shard` in parallel on the current rayon pool and returns
@@ -304,6 +327,7 @@ impl From<BridgeSolution> for BridgeBatchOutcome {
             lcp_failures: s.lcp_failures,
             newton_failures: s.newton_failures,
             time_step_advice: s.time_step_advice,
+            warnings: 0,
         }
     }
 }

@@ -20,14 +20,17 @@ pub const BATCH_HEADER: &str = "index,record,scale,pga_g,pga_mps2,status,impacts
 peak_joint_closing_m,peak_joint_opening_m,peak_rotation1_deg,peak_rotation2_deg,peak_slip_m,\
 peak_seat_displacement_m,unseated,unseating_time_s,unseated_end,max_penetration_m,\
 energy_balance_error,input_energy_J,viscous_dissipation_J,contact_dissipation_J,duration_s,steps,\
-lcp_solves,lcp_failures,peak_contact_force_n,steps_per_contact,newton_failures,error";
+lcp_solves,lcp_failures,peak_contact_force_n,steps_per_contact,newton_failures,warnings,error";
 
 /// Columns appended (before `error`, which stays last) to both `batch.csv` files (two-deck and bridge; empty for the
 /// rigid law and for a run that failed): the peak total contact force of a joint or abutment
 /// (`summary.json`'s `peak_contact_force_n`; for a bridge the largest over its joints and
 /// abutments), the time-step adequacy figure `time_step.steps_per_contact` of `summary.json`
-/// (`T_c / Δt`, adequate when ≥ 20) and the steps whose Newton iteration did not converge.
-pub const BATCH_TAIL: &str = "peak_contact_force_n,steps_per_contact,newton_failures";
+/// (`T_c / Δt`, adequate when ≥ 20) and the steps whose Newton iteration did not converge;
+/// then, for every law, `warnings`: the number of warnings of the run (the length of the same
+/// single run's `summary.json` `warnings` list: an implausible record PGA, a coarse time step,
+/// energy created at a contact).
+pub const BATCH_TAIL: &str = "peak_contact_force_n,steps_per_contact,newton_failures,warnings";
 
 /// The [`BATCH_TAIL`] cells of a run: empty for rigid contact (`compliance = false`).
 fn tail_cells(
@@ -35,15 +38,19 @@ fn tail_cells(
     peak: Option<Real>,
     advice: Option<crate::contact_law::timestep::TimeStepAdvice>,
     newton_failures: usize,
+    warnings: usize,
 ) -> Vec<String> {
-    if !compliance {
-        return vec![String::new(); 3];
-    }
-    vec![
-        opt(peak),
-        opt(advice.map(|a| a.steps_per_contact)),
-        newton_failures.to_string(),
-    ]
+    let mut c = if compliance {
+        vec![
+            opt(peak),
+            opt(advice.map(|a| a.steps_per_contact)),
+            newton_failures.to_string(),
+        ]
+    } else {
+        vec![String::new(); 3]
+    };
+    c.push(warnings.to_string());
+    c
 }
 
 /// `batch.csv`: [`BATCH_HEADER`], then one row per run (a run that failed has `status = error`
@@ -87,6 +94,7 @@ pub fn batch_csv(rows: &[BatchRow]) -> String {
             peak,
             o.time_step_advice,
             o.newton_failures,
+            o.warnings,
         ));
     })
 }
@@ -267,6 +275,7 @@ fn bridge_cells(o: &BridgeBatchOutcome, c: &mut Vec<String>) {
         peak,
         o.time_step_advice,
         o.newton_failures,
+        o.warnings,
     ));
 }
 

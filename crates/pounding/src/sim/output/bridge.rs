@@ -299,10 +299,12 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
             ],
         },
     );
-    out["warnings"] = bridge_run_warnings(sol)
-        .iter()
-        .map(super::RunWarning::json)
-        .collect();
+    out["warnings"] =
+        super::input_warnings(&setup.problem.ground, sol.dt, sol.time_step_advice.as_ref())
+            .into_iter()
+            .map(|w| w.json)
+            .chain(bridge_run_warnings(sol).iter().map(super::RunWarning::json))
+            .collect();
     if !compliant {
         out["peak_force_estimate_n"] =
             super::peak_estimate_json(sol.impacts.iter().map(|r| (r, site_restitution(m, r))));

@@ -17,6 +17,7 @@ mod bridge;
 mod bridge_plan;
 mod compare;
 mod compare_bridge;
+mod input_warnings;
 pub use batch::{BATCH_HEADER, BATCH_TAIL, batch_csv, bridge_batch_csv, bridge_batch_header};
 pub use bridge::{
     bridge_history_csv, bridge_impacts_csv, bridge_run_warnings, bridge_summary_json,
@@ -31,6 +32,7 @@ pub use compare_bridge::{
     BRIDGE_COMPARE_HEADER, BRIDGE_COMPARE_OUTPUTS, BRIDGE_COMPARE_SITES_HEADER, BridgeCompareRun,
     bridge_compare_csv, bridge_compare_sites_csv, bridge_compare_table,
 };
+pub use input_warnings::{InputWarning, input_warnings, warning_sentence};
 
 /// Degrees per radian.
 pub(crate) const DEG: Real = 180.0 / std::f64::consts::PI;
@@ -415,7 +417,11 @@ pub fn summary_json(setup: &SimSetup, sol: &SimSolution) -> serde_json::Value {
     }
     add_run_keys(&mut out, &RunKeys::of_pair(sol));
     add_compliance_summary(&mut out, m, sol);
-    out["warnings"] = run_warnings(sol).iter().map(RunWarning::json).collect();
+    out["warnings"] = input_warnings(&setup.problem.ground, sol.dt, sol.time_step_advice.as_ref())
+        .into_iter()
+        .map(|w| w.json)
+        .chain(run_warnings(sol).iter().map(RunWarning::json))
+        .collect();
     if matches!(m.contact, JointContact::Rigid) {
         out["peak_force_estimate_n"] =
             peak_estimate_json(sol.impacts.iter().map(|r| (r, m.restitution)));

@@ -325,8 +325,9 @@ fn abutments_need_rigid_contact(sc: &Scenario) -> ScenarioError {
     at.extend(abut);
     ScenarioError::Key {
         message: format!(
-            "abutments are only supported with rigid contact: {by} is a compliance law, but {} \
-             set abutments (remove [abutments] or use law = \"rigid\")",
+            "two-deck scenarios support abutments with rigid contact only: {by} is a compliance \
+             law, but {} set abutments (remove [abutments], use law = \"rigid\" (compare: \
+             --laws rigid), or write the bridge as [[segment]]s, whose abutments take every law)",
             list.join(", ")
         ),
         at,

@@ -1,0 +1,134 @@
+//! Run warnings reach every output: `summary.json`'s `warnings` (input warnings — an implausible
+//! record PGA, a coarse compliance time step — then the per-impact energy warnings),
+//! `report.html` (one sentence each) and the `warnings` count of `batch.csv`, equal to the single
+//! run's list.
+
+use super::{pounding, scratch_dir};
+use serde_json::Value;
+use std::path::Path;
+
+fn summary(dir: &Path) -> Value {
+    serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap()
+}
+
+fn kinds(v: &Value) -> Vec<String> {
+    v["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|w| w["kind"].as_str().unwrap().to_string())
+        .collect()
+}
+
+/// A record of 3 g as read: stderr, summary.json and report.html all carry the warning.
+#[test]
+fn an_implausible_pga_is_in_the_summary_and_the_report() {
+    let d = scratch_dir("warn", "pga");
+    std::fs::write(d.join("big.csv"), "t,a\n0,0\n0.01,3\n0.02,-3\n0.03,0\n").unwrap();
+    let out = pounding()
+        .current_dir(&d)
+        .args(["simulate", "--record", "big.csv", "--out", "o"])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("PGA of 3.000 g"), "{err}");
+    let s = summary(&d.join("o"));
+    assert_eq!(kinds(&s), ["record_pga_implausible"]);
+    assert_eq!(s["warnings"][0]["pga_g"], 3.0);
+    let html = std::fs::read_to_string(d.join("o/report.html")).unwrap();
+    assert!(
+        html.contains("has a PGA of 3.000 g"),
+        "report lacks the warning"
+    );
+    assert!(!html.contains("<p>None.</p>"));
+}
+
+/// A compliance law at a coarse step: the time-step warning is in summary.json and the report.
+#[test]
+fn a_coarse_time_step_is_in_the_summary_and_the_report() {
+    let d = scratch_dir("warn", "dt");
+    let out = pounding()
+        .current_dir(&d)
+        .args([
+            "simulate",
+            "--law",
+            "kelvin",
+            "--dt",
+            "0.01",
+            "--duration",
+            "6",
+            "--out",
+            "o",
+        ])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let s = summary(&d.join("o"));
+    let w = &s["warnings"][0];
+    assert_eq!(w["kind"], "time_step_coarse");
+    assert_eq!(w["dt_s"], 0.01);
+    assert_eq!(w["steps_per_contact"], s["time_step"]["steps_per_contact"]);
+    let html = std::fs::read_to_string(d.join("o/report.html")).unwrap();
+    assert!(html.contains("too coarse for the contact law"));
+}
+
+/// Energy created at contacts (μ = 1, ε = 1, a strong motion): the batch's `warnings` column
+/// equals the length of the same single run's list, and stderr says how many runs have warnings.
+#[test]
+fn the_batch_counts_the_warnings_of_each_run_as_the_single_run_lists_them() {
+    let d = scratch_dir("warn", "batch");
+    std::fs::write(
+        d.join("ec.toml"),
+        "[joint]\nmu = 1.0\neps_n = 1.0\n[ground_motion]\nscale_y = 3\nscale_x = 3\n",
+    )
+    .unwrap();
+    std::fs::write(
+        d.join("elc.AT2"),
+        pounding::ground_motion::EL_CENTRO_180_AT2,
+    )
+    .unwrap();
+    let out = pounding()
+        .current_dir(&d)
+        .args([
+            "simulate",
+            "ec.toml",
+            "--records",
+            "elc.AT2",
+            "--scales",
+            "1,3",
+            "--out",
+            "b",
+        ])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("2 of 2 runs have warnings"), "{err}");
+    let csv = std::fs::read_to_string(d.join("b/batch.csv")).unwrap();
+    let mut lines = csv.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = head.iter().position(|h| *h == "warnings").unwrap();
+    assert_eq!(head.last(), Some(&"error"));
+    for (line, scale) in lines.zip(["1", "3"]) {
+        let cells: Vec<&str> = line.split(',').collect();
+        let o = format!("s{scale}");
+        let single = pounding()
+            .current_dir(&d)
+            .args([
+                "simulate", "ec.toml", "--record", "elc.AT2", "--scale", scale, "--out", &o,
+            ])
+            .output()
+            .unwrap();
+        assert!(single.status.success());
+        let s = summary(&d.join(&o));
+        let n = s["warnings"].as_array().unwrap().len();
+        assert!(n > 0);
+        assert!(kinds(&s).iter().all(|k| k == "contact_energy_created"));
+        assert_eq!(cells[col], n.to_string(), "scale {scale}");
+    }
+}

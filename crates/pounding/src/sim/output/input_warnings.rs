@@ -1,0 +1,95 @@
+//! Warnings about what a run was given, as opposed to what happened in it: an implausible record
+//! PGA (units probably wrong) and a time step too coarse for a compliance law. They head
+//! `summary.json`'s `warnings` (before the per-impact [`super::RunWarning`]s), are printed on
+//! stderr and listed in `report.html`.
+
+use crate::contact_law::timestep::TimeStepAdvice;
+use crate::ground_motion::GroundMotion;
+use crate::math::Real;
+use crate::output::json_float;
+use serde_json::{Value, json};
+
+/// A warning about a run's input or resolution.
+#[derive(Debug, Clone, PartialEq)]
+pub struct InputWarning {
+    /// `record_pga_implausible` or `time_step_coarse`.
+    pub kind: &'static str,
+    /// The sentence printed on stderr and in `report.html`.
+    pub message: String,
+    /// The `summary.json` entry: `kind`, the figures and `message`.
+    pub json: Value,
+}
+
+/// The warnings of a run on `ground` with step `dt` and the compliance law's time-step advice
+/// (`None` for the rigid law): one per record component whose PGA as read exceeds
+/// [`crate::ground_motion::PLAUSIBLE_PGA_G`], and one when `dt` exceeds the advice's largest
+/// adequate step (`T_c/20`).
+pub fn input_warnings(
+    ground: &GroundMotion,
+    dt: Real,
+    advice: Option<&TimeStepAdvice>,
+) -> Vec<InputWarning> {
+    let mut out: Vec<InputWarning> = ground
+        .components()
+        .iter()
+        .filter_map(|c| {
+            let message = c.units_warning()?;
+            Some(InputWarning {
+                kind: "record_pga_implausible",
+                json: json!({
+                    "kind": "record_pga_implausible",
+                    "component": c.component,
+                    "record": c.record,
+                    "pga_g": json_float(c.pga_g),
+                    "message": message,
+                }),
+                message,
+            })
+        })
+        .collect();
+    if let Some(a) = advice.filter(|a| !a.adequate) {
+        let f = crate::output::float_token;
+        let message = format!(
+            "dt = {} s is too coarse for the contact law: about {} steps per contact (contact \
+             duration {} s); use dt <= {} s (20 steps per contact)",
+            f(dt),
+            f(a.steps_per_contact.round()),
+            f(a.contact_duration),
+            f(a.max_step)
+        );
+        out.push(InputWarning {
+            kind: "time_step_coarse",
+            json: json!({
+                "kind": "time_step_coarse",
+                "dt_s": json_float(dt),
+                "steps_per_contact": json_float(a.steps_per_contact),
+                "max_step_s": json_float(a.max_step),
+                "message": message,
+            }),
+            message,
+        });
+    }
+    out
+}
+
+/// One readable sentence for an entry of `summary.json`'s `warnings`: its `message` (input
+/// warnings), or for a per-impact energy warning (`kind`, `impact`, `contact`, `t_s`,
+/// `amount_j`) `energy created at contact C in impact N (t = T s): A J (kind)`.
+pub fn warning_sentence(w: &Value) -> String {
+    if let Some(m) = w["message"].as_str() {
+        return m.to_string();
+    }
+    let num = |k: &str| {
+        w[k].as_f64()
+            .map_or("null".to_string(), crate::output::float_token)
+    };
+    match (w["kind"].as_str(), w["contact"].as_str()) {
+        (Some(kind), Some(contact)) => format!(
+            "energy created at contact {contact} in impact {} (t = {} s): {} J ({kind})",
+            w["impact"],
+            num("t_s"),
+            num("amount_j")
+        ),
+        _ => w.to_string(),
+    }
+}
