@@ -1,6 +1,6 @@
 //! Response spectra (`pounding::spectrum`, issue 13) against independent evidence: the closed
-//! forms of a step load and of a harmonic load (transient + steady state), a brute-force fine RK4 integration of the same piecewise-linear load,
-//! the RotD identities of a pair whose components are equal or one of them zero, and bad input.
+//! forms of a step load and of a harmonic load (transient + steady state), a brute-force fine
+//! RK4 integration of the same piecewise-linear load, the RotD identities of a pair whose components are equal or one of them zero, and bad input.
 
 use pounding::ground_motion::{G0, Record};
 use pounding::spectrum::{check, default_periods, peak_displacement, rotd, spectrum};
