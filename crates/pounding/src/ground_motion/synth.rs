@@ -131,6 +131,11 @@ fn bad(name: &str, value: impl ToString, reason: &str) -> SynthError {
     }
 }
 
+/// [`bad`] for a number, written as the project writes numbers (`nan`, `inf`, shortest).
+fn bad_real(name: &str, value: Real, reason: &str) -> SynthError {
+    bad(name, crate::output::float_token(value), reason)
+}
+
 impl SynthParams {
     /// Checks every parameter (finite, in range; `dt ≤ duration`; at most [`MAX_SAMPLES`]).
     pub fn check(&self) -> Result<(), SynthError> {
@@ -138,7 +143,7 @@ impl SynthParams {
             if v.is_finite() && v > 0.0 {
                 Ok(())
             } else {
-                Err(bad(name, v, "must be finite and > 0"))
+                Err(bad_real(name, v, "must be finite and > 0"))
             }
         };
         pos("--dt", self.dt)?;
@@ -157,18 +162,21 @@ impl SynthParams {
             ("eta", self.eta),
         ] {
             if !(v.is_finite() && v > 0.0 && v < 1.0) {
-                return Err(bad(n, v, "must lie in (0, 1)"));
+                return Err(bad_real(n, v, "must lie in (0, 1)"));
             }
         }
         if self.dt > self.duration {
-            return Err(bad(
+            return Err(bad_real(
                 "--dt",
                 self.dt,
-                &format!("must not exceed --duration = {}", self.duration),
+                &format!(
+                    "must not exceed --duration = {}",
+                    crate::output::float_token(self.duration)
+                ),
             ));
         }
         if self.duration / self.dt >= MAX_SAMPLES as Real {
-            return Err(bad(
+            return Err(bad_real(
                 "--duration",
                 self.duration,
                 &format!("--duration / --dt must stay below {MAX_SAMPLES} samples"),
@@ -376,6 +384,18 @@ pub struct SynthRecord {
     pub y: Option<Vec<Real>>,
 }
 
+/// Checks `1 ≤ count ≤` [`MAX_COUNT`].
+pub fn check_count(count: usize) -> Result<(), SynthError> {
+    if count == 0 || count > MAX_COUNT {
+        return Err(bad(
+            "--count",
+            count,
+            &format!("must lie in 1..={MAX_COUNT}"),
+        ));
+    }
+    Ok(())
+}
+
 /// The suite of `count` records (in parallel; the result is independent of the thread count).
 pub fn suite(
     p: &SynthParams,
@@ -384,13 +404,7 @@ pub fn suite(
     pairs: bool,
 ) -> Result<Vec<SynthRecord>, SynthError> {
     use rayon::prelude::*;
-    if count == 0 || count > MAX_COUNT {
-        return Err(bad(
-            "--count",
-            count,
-            &format!("must lie in 1..={MAX_COUNT}"),
-        ));
-    }
+    check_count(count)?;
     p.check()?;
     let width = count.to_string().len().max(3);
     Ok((0..count)
