@@ -8,6 +8,7 @@ use std::process::ExitCode;
 mod cmd_compare;
 mod cmd_impact;
 mod cmd_lcp;
+mod cmd_motion;
 mod cmd_simulate;
 mod cmd_spectrum;
 mod cmd_study;
@@ -40,6 +41,8 @@ enum Command {
     Compare(cmd_compare::Args),
     /// Elastic response spectra (PSA, PSV, SD) of records, and RotD50/RotD100 of horizontal pairs.
     Spectrum(cmd_spectrum::Args),
+    /// Ground-motion tools: `motion synth` writes synthetic accelerogram suites (for trying the workflow).
+    Motion(cmd_motion::Args),
 }
 
 /// The message of a panic raised by `print!`/`eprint!` when standard output or error cannot be
@@ -61,6 +64,7 @@ fn run(cli: Cli) -> ExitCode {
         Command::Simulate(a) => cmd_simulate::run(a),
         Command::Compare(a) => cmd_compare::run(a),
         Command::Spectrum(a) => cmd_spectrum::run(a),
+        Command::Motion(a) => cmd_motion::run(a),
     };
     match result {
         Ok(code) => code,

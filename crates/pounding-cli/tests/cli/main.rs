@@ -70,6 +70,7 @@ mod harden_io;
 mod harden_round2;
 mod inputs;
 mod lcp;
+mod motion;
 mod physics_check;
 mod reports_browser;
 mod shapes;

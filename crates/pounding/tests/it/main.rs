@@ -48,3 +48,4 @@ mod spectrum;
 mod study;
 mod study_shapes;
 mod study_vocab;
+mod synth;
