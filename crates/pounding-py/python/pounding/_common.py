@@ -1,0 +1,136 @@
+"""Shared helpers: scenario arguments and CSV tables (no public API)."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+from typing import Any, Dict, List, Optional, Tuple
+
+import numpy as np
+
+from . import _core
+
+try:  # pandas is optional
+    import pandas as _pd  # type: ignore
+except ImportError:  # pragma: no cover - exercised where pandas is absent
+    _pd = None
+
+
+def scenario_args(scenario: Any, what: str) -> Dict[str, Any]:
+    """The ``path``/``text``/``origin`` arguments of the core for a scenario given as ``None``
+    (built-in default), a path (``str`` naming an existing file or ending in ``.toml``, or an
+    ``os.PathLike``), a TOML string, or a dict with the file's keys."""
+    if scenario is None:
+        return {}
+    if isinstance(scenario, os.PathLike):
+        return {"path": os.fspath(scenario)}
+    if isinstance(scenario, dict):
+        text = _core.toml_from_json(json.dumps(scenario, allow_nan=True))
+        return {"text": text, "origin": f"{what} scenario dict"}
+    if isinstance(scenario, str):
+        one_line = "\n" not in scenario
+        if one_line and (os.path.isfile(scenario) or scenario.endswith(".toml")):
+            return {"path": scenario}
+        return {"text": scenario, "origin": f"{what} scenario string"}
+    raise TypeError(
+        f"scenario must be None, a path, a TOML string or a dict, not {type(scenario).__name__}"
+    )
+
+
+#: Columns the library writes as integers (counts and indices); every other number is a float.
+_INT_SUFFIXES = ("index", "impact", "impacts", "_contacts", "_failures", "_fallbacks", "_solves",
+                 "steps", "_cells", "_disagreements", "_count")
+
+
+def _column(name: str, tokens: List[str]):
+    """A CSV column as bool (``true``/``false``), int64 (count and index columns without empty
+    cells), float64 (numbers; empty cells NaN) or str values."""
+    if tokens and all(t in ("true", "false") for t in tokens):
+        return np.array([t == "true" for t in tokens], dtype=bool)
+    integral = name.endswith(_INT_SUFFIXES)
+    try:
+        if integral and tokens and all(t.lstrip("-").isdigit() for t in tokens):
+            return np.array([int(t) for t in tokens], dtype=np.int64)
+        if any(t == "" for t in tokens) and not all(_is_float(t) for t in tokens if t):
+            raise ValueError
+        return np.array([float(t) if t else float("nan") for t in tokens], dtype=np.float64)
+    except ValueError:
+        return np.array(tokens, dtype=object)
+
+
+def _is_float(t: str) -> bool:
+    try:
+        float(t)
+        return True
+    except ValueError:
+        return False
+
+
+def parse_csv(text: str) -> Tuple[List[str], Dict[str, np.ndarray]]:
+    """Column names and typed columns of CSV ``text`` written by the library (floats in
+    shortest round-trip form parse back to the same bits; empty numeric fields are NaN)."""
+    rows = list(csv.reader(io.StringIO(text)))
+    header, body = rows[0], rows[1:]
+    cols = {name: _column(name, [r[i] for r in body]) for i, name in enumerate(header)}
+    return header, cols
+
+
+def table(names: List[str], cols: Dict[str, Any]):
+    """A ``pandas.DataFrame`` of ``cols`` in the order ``names``, or a numpy structured array
+    when pandas is not installed."""
+    if _pd is not None:
+        return _pd.DataFrame({n: cols[n] for n in names}, columns=names)
+    arrays = [np.asarray(cols[n]) for n in names]
+    n = len(arrays[0]) if arrays else 0
+    dtype = []
+    for name, a in zip(names, arrays):
+        if a.dtype == object or a.dtype.kind == "U":
+            width = max((len(str(x)) for x in a), default=1)
+            dtype.append((name, f"U{max(width, 1)}"))
+        else:
+            dtype.append((name, a.dtype))
+    out = np.empty(n, dtype=dtype)
+    for name, a in zip(names, arrays):
+        out[name] = a
+    return out
+
+
+def csv_table(text: str):
+    """:func:`table` of CSV ``text``."""
+    names, cols = parse_csv(text)
+    return table(names, cols)
+
+
+def record_arg(record: Any, index: int = 0):
+    """``(path, array)`` arguments of the core for a record given as a path or as
+    ``(accelerations, dt)`` / ``(accelerations, dt, name)``."""
+    if record is None:
+        return None, None
+    if isinstance(record, (str, os.PathLike)):
+        return os.fspath(record), None
+    if isinstance(record, tuple) and len(record) in (2, 3):
+        values = np.asarray(record[0], dtype=np.float64)
+        if values.ndim != 1:
+            raise ValueError(
+                f"invalid record: the accelerations must be a 1-D array, got shape {values.shape}"
+            )
+        if values.size == 0:
+            raise ValueError("invalid record: the accelerations array is empty")
+        dt = float(record[1])
+        name = str(record[2]) if len(record) == 3 else f"array{index}"
+        return None, (name, values.tolist(), dt)
+    raise TypeError(
+        "a record must be a path or a tuple (accelerations, dt) or (accelerations, dt, name)"
+    )
+
+
+def optional_float(name: str, x: Optional[float]) -> Optional[float]:
+    """``x`` as a float (``None`` stays ``None``)."""
+    if x is None:
+        return None
+    try:
+        return float(x)
+    except (TypeError, ValueError):
+        raise ValueError(f"invalid {name} = {x!r}: expected a number") from None
