@@ -121,20 +121,8 @@ fn study<'py>(
     Ok(d)
 }
 
-/// The TOML text of a JSON object (a Python dict given as a scenario, serialised with `json`):
-/// tables, arrays, strings, booleans, integers and floats; `null` is refused.
-#[pyfunction]
-fn toml_from_json(json: &str) -> PyResult<String> {
-    let v: serde_json::Value = serde_json::from_str(json).map_err(value_error)?;
-    let t: toml::Value = serde_json::from_value(v)
-        .map_err(|e| value_error(format!("the scenario dict cannot be written as TOML: {e}")))?;
-    toml::to_string(&t)
-        .map_err(|e| value_error(format!("the scenario dict cannot be written as TOML: {e}")))
-}
-
 /// Registers the study functions.
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(study, m)?)?;
-    m.add_function(wrap_pyfunction!(toml_from_json, m)?)?;
     Ok(())
 }

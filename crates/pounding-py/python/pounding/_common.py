@@ -27,7 +27,7 @@ def scenario_args(scenario: Any, what: str) -> Dict[str, Any]:
     if isinstance(scenario, os.PathLike):
         return {"path": os.fspath(scenario)}
     if isinstance(scenario, dict):
-        text = _core.toml_from_json(json.dumps(scenario, allow_nan=True))
+        text = toml_text(scenario)
         return {"text": text, "origin": f"{what} scenario dict"}
     if isinstance(scenario, str):
         one_line = "\n" not in scenario
@@ -42,6 +42,58 @@ def scenario_args(scenario: Any, what: str) -> Dict[str, Any]:
 #: Columns the library writes as integers (counts and indices); every other number is a float.
 _INT_SUFFIXES = ("index", "impact", "impacts", "_contacts", "_failures", "_fallbacks", "_solves",
                  "steps", "_cells", "_disagreements", "_count")
+
+
+def _key(k: Any) -> str:
+    k = str(k)
+    return k if k and all(c.isalnum() and c.isascii() or c in "_-" for c in k) else json.dumps(k)
+
+
+def _toml_value(v: Any, where: str) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, (int, np.integer)):
+        return str(int(v))
+    if isinstance(v, (float, np.floating)):
+        x = float(v)
+        if x != x:
+            return "nan"
+        if x in (float("inf"), float("-inf")):
+            return "inf" if x > 0 else "-inf"
+        return repr(x)  # shortest round-trip: the TOML reader gets the same bits
+    if isinstance(v, str):
+        return json.dumps(v)
+    if isinstance(v, (list, tuple, np.ndarray)):
+        return "[" + ", ".join(_toml_value(x, where) for x in v) + "]"
+    if isinstance(v, dict):
+        return "{" + ", ".join(f"{_key(k)} = {_toml_value(x, where)}"
+                               for k, x in v.items()) + "}"
+    raise ValueError(f"invalid scenario dict: {where} holds a {type(v).__name__}, "
+                     "not a TOML value (bool, int, float, str, list, dict)")
+
+
+def toml_text(d: Dict[str, Any], prefix: str = "") -> str:
+    """The TOML text of a scenario dict (tables, arrays of tables, scalars and lists), so that
+    the library reads it exactly as the same file (floats written in shortest round-trip form)."""
+    if not isinstance(d, dict):
+        raise ValueError("invalid scenario dict: the scenario must be a dict of sections")
+    plain, tables, arrays = [], [], []
+    for k, v in d.items():
+        key = _key(k)
+        name = f"{prefix}.{key}" if prefix else key
+        if isinstance(v, dict):
+            tables.append((name, v))
+        elif isinstance(v, list) and v and all(isinstance(x, dict) for x in v):
+            arrays.append((name, v))
+        else:
+            plain.append(f"{key} = {_toml_value(v, name)}")
+    out = "\n".join(plain) + ("\n" if plain else "")
+    for name, v in tables:
+        out += f"\n[{name}]\n" + toml_text(v, name)
+    for name, items in arrays:
+        for item in items:
+            out += f"\n[[{name}]]\n" + toml_text(item, name)
+    return out
 
 
 def _column(name: str, tokens: List[str]):

@@ -35,7 +35,6 @@ def study(
     path: Optional[str] = None, text: Optional[str] = None, origin: str = "scenario",
     threads: Optional[int] = None,
 ) -> Dict[str, Any]: ...
-def toml_from_json(json: str) -> str: ...
 
 class SimRun:
     @property
