@@ -96,28 +96,28 @@ def toml_text(d: Dict[str, Any], prefix: str = "") -> str:
     return out
 
 
+#: Text columns of the library's tables (kept as str, empty cells as ""), whatever they hold.
+_TEXT_COLUMNS = frozenset({"record", "status", "error", "unseated_end", "contact", "mode", "case",
+                           "shape", "site"})
+
+
 def _column(name: str, tokens: List[str]):
-    """A CSV column as bool (``true``/``false``), int64 (count and index columns without empty
-    cells), float64 (numbers; empty cells NaN) or str values."""
+    """A CSV column as str (the text columns), bool (``true``/``false``), int64 (count and
+    index columns without empty cells), float64 (numbers; empty cells NaN), or str values.
+
+    The type depends on the column's name and the tokens, so the same column of two tables
+    (e.g. one batch run and the whole batch) has the same dtype."""
+    if name in _TEXT_COLUMNS:
+        return np.array(tokens, dtype=object)
     if tokens and all(t in ("true", "false") for t in tokens):
         return np.array([t == "true" for t in tokens], dtype=bool)
     integral = name.endswith(_INT_SUFFIXES)
     try:
         if integral and tokens and all(t.lstrip("-").isdigit() for t in tokens):
             return np.array([int(t) for t in tokens], dtype=np.int64)
-        if any(t == "" for t in tokens) and not all(_is_float(t) for t in tokens if t):
-            raise ValueError
         return np.array([float(t) if t else float("nan") for t in tokens], dtype=np.float64)
     except ValueError:
         return np.array(tokens, dtype=object)
-
-
-def _is_float(t: str) -> bool:
-    try:
-        float(t)
-        return True
-    except ValueError:
-        return False
 
 
 def parse_csv(text: str) -> Tuple[List[str], Dict[str, np.ndarray]]:
