@@ -28,6 +28,15 @@ fn problem(
     LcpProblem::new(mv, qv).map_err(value_error)
 }
 
+/// `(z, w, status name, pivots, residual)`.
+type Solved<'py> = (
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<f64>>,
+    &'static str,
+    usize,
+    f64,
+);
+
 /// Solves `w = M z + q, z >= 0, w >= 0, z'w = 0` with the lexicographic Lemke solver of
 /// `pounding lcp solve` (default settings). Returns `(z, w, status, pivots, residual)`; a
 /// failed solve is a status, not an exception.
@@ -36,13 +45,7 @@ fn lcp_solve<'py>(
     py: Python<'py>,
     m: PyReadonlyArrayDyn<'py, f64>,
     q: PyReadonlyArrayDyn<'py, f64>,
-) -> PyResult<(
-    Bound<'py, PyArray1<f64>>,
-    Bound<'py, PyArray1<f64>>,
-    &'static str,
-    usize,
-    f64,
-)> {
+) -> PyResult<Solved<'py>> {
     let p = problem(&m, &q)?;
     let s = if p.dim() <= 16 {
         Lemke::new(LemkeSettings::default()).solve(&p)
