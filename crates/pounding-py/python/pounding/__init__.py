@@ -1,0 +1,36 @@
+"""pounding — nonsmooth rigid-impact and compliance analysis of pounding between bridge decks.
+
+The Python front end of the Rust library behind the ``pounding`` CLI: the same functions, the
+same numbers (bit for bit), numpy arrays and pandas tables instead of files.
+
+* :mod:`pounding.lcp` — ``solve(M, q)`` (Lemke) and ``enumerate(M, q)``;
+* :func:`impact` — one oblique frictional impact (bridge, joint, abutment or generic form);
+* :func:`study` — the parametric stick/slip study (``bounds.csv`` rows as a DataFrame);
+* :func:`simulate` — a seismic time history (``summary.json`` dict, numpy histories);
+* :func:`batch` — records × scales in parallel (``batch.csv`` rows).
+
+Bad input raises ``ValueError`` with the CLI's message; :class:`SolverError` is raised where the
+CLI fails without a result. Numerical trouble is a *status* in the result, never an exception.
+Heavy calls release the GIL.
+"""
+
+from . import lcp
+from ._core import SolverError, __version__
+from ._impact import ImpactResult, impact
+from ._sim import SimulationResult, batch, default_simulate_scenario, simulate
+from ._study import StudyResult, default_study_scenario, study
+
+__all__ = [
+    "lcp",
+    "SolverError",
+    "ImpactResult",
+    "impact",
+    "StudyResult",
+    "study",
+    "SimulationResult",
+    "simulate",
+    "batch",
+    "default_simulate_scenario",
+    "default_study_scenario",
+    "__version__",
+]

@@ -1,0 +1,188 @@
+"""Shared helpers: scenario arguments and CSV tables (no public API)."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+from typing import Any, Dict, List, Optional, Tuple
+
+import numpy as np
+
+from . import _core
+
+try:  # pandas is optional
+    import pandas as _pd  # type: ignore
+except ImportError:  # pragma: no cover - exercised where pandas is absent
+    _pd = None
+
+
+def scenario_args(scenario: Any, what: str) -> Dict[str, Any]:
+    """The ``path``/``text``/``origin`` arguments of the core for a scenario given as ``None``
+    (built-in default), a path (``str`` naming an existing file or ending in ``.toml``, or an
+    ``os.PathLike``), a TOML string, or a dict with the file's keys."""
+    if scenario is None:
+        return {}
+    if isinstance(scenario, os.PathLike):
+        return {"path": os.fspath(scenario)}
+    if isinstance(scenario, dict):
+        text = toml_text(scenario)
+        return {"text": text, "origin": f"{what} scenario dict"}
+    if isinstance(scenario, str):
+        one_line = "\n" not in scenario
+        if one_line and (os.path.isfile(scenario) or scenario.endswith(".toml")):
+            return {"path": scenario}
+        return {"text": scenario, "origin": f"{what} scenario string"}
+    raise TypeError(
+        f"scenario must be None, a path, a TOML string or a dict, not {type(scenario).__name__}"
+    )
+
+
+#: Columns the library writes as integers (counts and indices); every other number is a float.
+_INT_SUFFIXES = ("index", "impact", "impacts", "_contacts", "_failures", "_fallbacks", "_solves",
+                 "steps", "_cells", "_disagreements", "_count")
+
+
+def _key(k: Any) -> str:
+    k = str(k)
+    return k if k and all(c.isalnum() and c.isascii() or c in "_-" for c in k) else json.dumps(k)
+
+
+def _toml_value(v: Any, where: str) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, (int, np.integer)):
+        return str(int(v))
+    if isinstance(v, (float, np.floating)):
+        x = float(v)
+        if x != x:
+            return "nan"
+        if x in (float("inf"), float("-inf")):
+            return "inf" if x > 0 else "-inf"
+        return repr(x)  # shortest round-trip: the TOML reader gets the same bits
+    if isinstance(v, str):
+        return json.dumps(v)
+    if isinstance(v, (list, tuple, np.ndarray)):
+        return "[" + ", ".join(_toml_value(x, where) for x in v) + "]"
+    if isinstance(v, dict):
+        return "{" + ", ".join(f"{_key(k)} = {_toml_value(x, where)}"
+                               for k, x in v.items()) + "}"
+    raise ValueError(f"invalid scenario dict: {where} holds a {type(v).__name__}, "
+                     "not a TOML value (bool, int, float, str, list, dict)")
+
+
+def toml_text(d: Dict[str, Any], prefix: str = "") -> str:
+    """The TOML text of a scenario dict (tables, arrays of tables, scalars and lists), so that
+    the library reads it exactly as the same file (floats written in shortest round-trip form)."""
+    if not isinstance(d, dict):
+        raise ValueError("invalid scenario dict: the scenario must be a dict of sections")
+    plain, tables, arrays = [], [], []
+    for k, v in d.items():
+        key = _key(k)
+        name = f"{prefix}.{key}" if prefix else key
+        if isinstance(v, dict):
+            tables.append((name, v))
+        elif isinstance(v, list) and v and all(isinstance(x, dict) for x in v):
+            arrays.append((name, v))
+        else:
+            plain.append(f"{key} = {_toml_value(v, name)}")
+    out = "\n".join(plain) + ("\n" if plain else "")
+    for name, v in tables:
+        out += f"\n[{name}]\n" + toml_text(v, name)
+    for name, items in arrays:
+        for item in items:
+            out += f"\n[[{name}]]\n" + toml_text(item, name)
+    return out
+
+
+#: Text columns of the library's tables (kept as str, empty cells as ""), whatever they hold.
+_TEXT_COLUMNS = frozenset({"record", "status", "error", "unseated_end", "contact", "mode", "case",
+                           "shape", "site"})
+
+
+def _column(name: str, tokens: List[str]):
+    """A CSV column as str (the text columns), bool (``true``/``false``), int64 (count and
+    index columns without empty cells), float64 (numbers; empty cells NaN), or str values.
+
+    The type depends on the column's name and the tokens, so the same column of two tables
+    (e.g. one batch run and the whole batch) has the same dtype."""
+    if name in _TEXT_COLUMNS:
+        return np.array(tokens, dtype=object)
+    if tokens and all(t in ("true", "false") for t in tokens):
+        return np.array([t == "true" for t in tokens], dtype=bool)
+    integral = name.endswith(_INT_SUFFIXES)
+    try:
+        if integral and tokens and all(t.lstrip("-").isdigit() for t in tokens):
+            return np.array([int(t) for t in tokens], dtype=np.int64)
+        return np.array([float(t) if t else float("nan") for t in tokens], dtype=np.float64)
+    except ValueError:
+        return np.array(tokens, dtype=object)
+
+
+def parse_csv(text: str) -> Tuple[List[str], Dict[str, np.ndarray]]:
+    """Column names and typed columns of CSV ``text`` written by the library (floats in
+    shortest round-trip form parse back to the same bits; empty numeric fields are NaN)."""
+    rows = list(csv.reader(io.StringIO(text)))
+    header, body = rows[0], rows[1:]
+    cols = {name: _column(name, [r[i] for r in body]) for i, name in enumerate(header)}
+    return header, cols
+
+
+def table(names: List[str], cols: Dict[str, Any]):
+    """A ``pandas.DataFrame`` of ``cols`` in the order ``names``, or a numpy structured array
+    when pandas is not installed."""
+    if _pd is not None:
+        return _pd.DataFrame({n: cols[n] for n in names}, columns=names)
+    arrays = [np.asarray(cols[n]) for n in names]
+    n = len(arrays[0]) if arrays else 0
+    dtype = []
+    for name, a in zip(names, arrays):
+        if a.dtype == object or a.dtype.kind == "U":
+            width = max((len(str(x)) for x in a), default=1)
+            dtype.append((name, f"U{max(width, 1)}"))
+        else:
+            dtype.append((name, a.dtype))
+    out = np.empty(n, dtype=dtype)
+    for name, a in zip(names, arrays):
+        out[name] = a
+    return out
+
+
+def csv_table(text: str):
+    """:func:`table` of CSV ``text``."""
+    names, cols = parse_csv(text)
+    return table(names, cols)
+
+
+def record_arg(record: Any, index: int = 0):
+    """``(path, array)`` arguments of the core for a record given as a path or as
+    ``(accelerations, dt)`` / ``(accelerations, dt, name)``."""
+    if record is None:
+        return None, None
+    if isinstance(record, (str, os.PathLike)):
+        return os.fspath(record), None
+    if isinstance(record, tuple) and len(record) in (2, 3):
+        values = np.asarray(record[0], dtype=np.float64)
+        if values.ndim != 1:
+            raise ValueError(
+                f"invalid record: the accelerations must be a 1-D array, got shape {values.shape}"
+            )
+        if values.size == 0:
+            raise ValueError("invalid record: the accelerations array is empty")
+        dt = float(record[1])
+        name = str(record[2]) if len(record) == 3 else f"array{index}"
+        return None, (name, values.tolist(), dt)
+    raise TypeError(
+        "a record must be a path or a tuple (accelerations, dt) or (accelerations, dt, name)"
+    )
+
+
+def optional_float(name: str, x: Optional[float]) -> Optional[float]:
+    """``x`` as a float (``None`` stays ``None``)."""
+    if x is None:
+        return None
+    try:
+        return float(x)
+    except (TypeError, ValueError):
+        raise ValueError(f"invalid {name} = {x!r}: expected a number") from None

@@ -1,0 +1,64 @@
+//! Python bindings of `pounding` (the extension module `pounding._core`).
+//!
+//! Every function here calls the library functions the CLI calls (`pounding::lcp`,
+//! `pounding::impact_report`, `pounding::study`, `pounding::sim`), so that the numbers are the
+//! CLI's, bit for bit. Bad input raises `ValueError` with the library's message; a panic inside
+//! a computation raises `pounding.SolverError` (never an interpreter crash). Heavy calls release
+//! the GIL. The Python package `pounding` (python/pounding) wraps these in documented classes.
+#![warn(missing_docs)]
+
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+
+mod impact;
+mod lcp;
+mod sim;
+mod study;
+
+pyo3::create_exception!(
+    _core,
+    SolverError,
+    PyRuntimeError,
+    "A computation failed without a result (the CLI would exit without writing outputs)."
+);
+
+/// `ValueError(message)`: bad input, with the library's message.
+pub(crate) fn value_error(e: impl std::fmt::Display) -> PyErr {
+    PyValueError::new_err(e.to_string())
+}
+
+/// Runs `f` without the GIL, turning a panic into [`SolverError`].
+pub(crate) fn heavy<T: Send>(py: Python<'_>, f: impl FnOnce() -> T + Send) -> PyResult<T> {
+    py.detach(|| std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)))
+        .map_err(|p| {
+            let msg = p
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| p.downcast_ref::<&str>().map(|s| s.to_string()))
+                .unwrap_or_else(|| "unknown panic".into());
+            SolverError::new_err(format!("internal error in pounding: {msg}"))
+        })
+}
+
+/// A rayon pool of `threads` workers (all cores when `None`), checked as the CLI's `--threads`.
+pub(crate) fn pool(threads: Option<usize>) -> PyResult<rayon::ThreadPool> {
+    pounding::input::check_threads(threads).map_err(value_error)?;
+    let mut b = rayon::ThreadPoolBuilder::new();
+    if let Some(n) = threads {
+        b = b.num_threads(n);
+    }
+    b.build()
+        .map_err(|e| SolverError::new_err(format!("cannot start the worker threads: {e}")))
+}
+
+/// The compiled core of the `pounding` Python package.
+#[pymodule]
+fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("SolverError", m.py().get_type::<SolverError>())?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    lcp::register(m)?;
+    impact::register(m)?;
+    study::register(m)?;
+    sim::register(m)?;
+    Ok(())
+}

@@ -1,0 +1,364 @@
+//! `pounding.simulate` and `pounding.batch`: seismic time histories of two decks or of a bridge
+//! of N segments (as `pounding simulate`), and batches of (record, scale) runs (as
+//! `pounding simulate --records ... --scales ...`).
+
+use crate::value_error;
+use numpy::PyArray2;
+use pounding::ground_motion::{AccelUnits, ReadOptions, Record};
+use pounding::output::float_token;
+use pounding::shard::Shard;
+use pounding::sim::batch::{BatchRecord, run_batch, run_bridge_problem, run_problem};
+use pounding::sim::bridge::BridgeSolution;
+use pounding::sim::output as so;
+use pounding::sim::scenario::{
+    BridgeSetup, DEFAULT_SCENARIO_TOML, ParamKey, Scenario, Section, SimSetup,
+};
+use pounding::sim::{SimSolution, SimStatus, simulate};
+use pyo3::prelude::*;
+use std::path::{Path, PathBuf};
+
+/// A ground motion given as samples: `(name, accelerations, dt)` in the units of the call.
+type ArrayRecord = (String, Vec<f64>, f64);
+
+/// The scenario as `pounding simulate` reads it: the file `path` (record paths relative to its
+/// directory), the TOML `text` (records relative to the current directory) or the default.
+fn load(path: Option<&str>, text: Option<String>, origin: &str) -> PyResult<Scenario> {
+    match (path, text) {
+        (Some(p), _) => Scenario::load(Path::new(p)).map_err(value_error),
+        (None, Some(t)) => Scenario::from_toml(&t, origin).map_err(value_error),
+        (None, None) => Ok(Scenario::default()),
+    }
+}
+
+/// `g` or `m/s2`.
+fn units(name: Option<&str>) -> PyResult<Option<AccelUnits>> {
+    name.map(|s| {
+        AccelUnits::from_name(s)
+            .ok_or_else(|| value_error(format!("invalid csv_units {s:?}: use g or m/s2")))
+    })
+    .transpose()
+}
+
+/// A record from samples in `units` (converted to m/s² as the text readers convert).
+fn array_record(r: ArrayRecord, units: AccelUnits) -> PyResult<Record> {
+    let (name, values, dt) = r;
+    let f = units.factor();
+    Record::uniform(name, dt, values.into_iter().map(|v| v * f).collect())
+        .map(|r| r.with_units_label(units.name()))
+        .map_err(value_error)
+}
+
+/// The command-line replacements of `pounding simulate` (`with_flags` of the CLI).
+struct Flags {
+    record: Option<PathBuf>,
+    csv_units: Option<AccelUnits>,
+    record_dt: Option<f64>,
+    scale: Option<f64>,
+    dt: Option<f64>,
+    duration: Option<f64>,
+    law: Option<String>,
+    batch: bool,
+}
+
+impl Flags {
+    fn apply(&self, sc: Scenario) -> Scenario {
+        let mut sc = sc.with_record_dt(self.record_dt);
+        if let Some(p) = &self.record {
+            sc = sc.with_record(p, self.csv_units);
+        }
+        if let Some(s) = self.scale {
+            sc = sc.with_scale(s);
+        }
+        if let Some(dt) = self.dt {
+            sc = sc.with_dt(dt);
+        }
+        if let Some(d) = self.duration {
+            sc = sc.with_duration(d);
+        }
+        if let Some(l) = &self.law {
+            sc = sc
+                .with_law_replacing(l)
+                .with_flag(ParamKey::new(Section::Contact, "law"), "--law");
+        }
+        if self.batch {
+            sc = sc.for_batch();
+        }
+        sc
+    }
+}
+
+enum Run {
+    TwoDecks(Box<SimSetup>, Box<SimSolution>),
+    Bridge(Box<BridgeSetup>, Box<BridgeSolution>),
+}
+
+/// The result of one simulation, kept in Rust: the summary, tables and histories are made on
+/// demand (`summary_json`, `history`, `impacts_csv`).
+#[pyclass(module = "pounding._core", frozen)]
+pub struct SimRun {
+    run: Run,
+}
+
+/// Parses CSV text of numbers (`nan`, `inf`, empty = NaN) into the header's names and a
+/// `(rows, columns)` float64 array; `None` if a field is not a number.
+fn numeric_table(text: &str) -> Option<(Vec<String>, usize, Vec<f64>)> {
+    let mut lines = text.lines();
+    let names: Vec<String> = lines.next()?.split(',').map(str::to_string).collect();
+    let mut data = Vec::with_capacity(text.len() / 12);
+    let mut rows = 0;
+    for l in lines {
+        let mut n = 0;
+        for tok in l.split(',') {
+            data.push(if tok.is_empty() {
+                f64::NAN
+            } else {
+                tok.parse().ok()?
+            });
+            n += 1;
+        }
+        if n != names.len() {
+            return None;
+        }
+        rows += 1;
+    }
+    Some((names, rows, data))
+}
+
+#[pymethods]
+impl SimRun {
+    /// The text of `summary.json`, as the CLI writes it.
+    fn summary_json(&self) -> String {
+        match &self.run {
+            Run::TwoDecks(s, r) => so::summary_json_text(s, r),
+            Run::Bridge(s, r) => so::bridge_summary_json_text(s, r),
+        }
+    }
+    /// The text of `impacts.csv`.
+    fn impacts_csv(&self) -> String {
+        match &self.run {
+            Run::TwoDecks(s, r) => so::impacts_csv(&s.problem.model, r),
+            Run::Bridge(s, r) => so::bridge_impacts_csv(&s.problem.model, r),
+        }
+    }
+    /// The text of `history.csv`.
+    fn history_csv(&self) -> String {
+        match &self.run {
+            Run::TwoDecks(s, r) => so::history_csv(&s.problem, r),
+            Run::Bridge(s, r) => so::bridge_history_csv(s, r),
+        }
+    }
+    /// `history.csv` as `(column names, float64 array of shape (rows, columns))`: the same
+    /// numbers (shortest round-trip text parses back to the same bits).
+    fn history<'py>(&self, py: Python<'py>) -> PyResult<(Vec<String>, Bound<'py, PyArray2<f64>>)> {
+        let text = self.history_csv();
+        let (names, rows, data) = crate::heavy(py, || numeric_table(&text))?
+            .ok_or_else(|| crate::SolverError::new_err("history.csv holds a non-numeric field"))?;
+        let a = numpy::ndarray::Array2::from_shape_vec((rows, names.len()), data)
+            .map_err(|e| crate::SolverError::new_err(e.to_string()))?;
+        Ok((names, PyArray2::from_owned_array(py, a)))
+    }
+    /// How the run ended (`Completed`, `Diverged`, ... as in summary.json).
+    #[getter]
+    fn status(&self) -> String {
+        let s: SimStatus = match &self.run {
+            Run::TwoDecks(_, r) => r.status,
+            Run::Bridge(_, r) => r.status,
+        };
+        format!("{s:?}")
+    }
+    /// The CLI's warnings of the run (energy created at a contact, a time step too coarse).
+    fn warnings(&self) -> Vec<String> {
+        let (w, advice, dt) = match &self.run {
+            Run::TwoDecks(_, r) => (so::run_warnings(r), r.time_step_advice.as_ref(), r.dt),
+            Run::Bridge(_, r) => (
+                so::bridge_run_warnings(r),
+                r.time_step_advice.as_ref(),
+                r.dt,
+            ),
+        };
+        let mut out: Vec<String> = so::warnings_message(&w).into_iter().collect();
+        if let Some(a) = advice.filter(|a| !a.adequate) {
+            out.push(format!(
+                "dt = {} s is too coarse for the contact law: about {} steps per contact \
+                 (contact duration {} s); use dt <= {} s",
+                float_token(dt),
+                float_token(a.steps_per_contact.round()),
+                float_token(a.contact_duration),
+                float_token(a.max_step)
+            ));
+        }
+        out
+    }
+}
+
+/// Runs one simulation. The scenario is `path`, else `text`, else the default; `record` is a
+/// file (as `--record`) and `array` samples `(name, values, dt)` (in `csv_units`, default g) as
+/// the only component along y. `scale`, `dt`, `duration`, `law`, `csv_units`, `record_dt` are
+/// the CLI's flags.
+#[pyfunction]
+#[pyo3(signature = (path=None, text=None, origin="scenario", record=None, array=None, csv_units=None, record_dt=None, scale=None, dt=None, duration=None, law=None))]
+#[allow(clippy::too_many_arguments)]
+fn simulate_run(
+    py: Python<'_>,
+    path: Option<&str>,
+    text: Option<String>,
+    origin: &str,
+    record: Option<PathBuf>,
+    array: Option<ArrayRecord>,
+    csv_units: Option<&str>,
+    record_dt: Option<f64>,
+    scale: Option<f64>,
+    dt: Option<f64>,
+    duration: Option<f64>,
+    law: Option<String>,
+) -> PyResult<SimRun> {
+    let csv_units = units(csv_units)?;
+    let sc = load(path, text, origin)?;
+    let batch = array.is_some();
+    let flags = Flags {
+        record,
+        csv_units,
+        record_dt,
+        scale: if batch { None } else { scale },
+        dt,
+        duration,
+        law,
+        batch,
+    };
+    let sc = flags.apply(sc);
+    let rec = match array {
+        Some(a) => {
+            let reading = sc.override_reading(csv_units).map_err(value_error)?;
+            Some(array_record(a, reading.units)?)
+        }
+        None => None,
+    };
+    let s = scale.unwrap_or(1.0);
+    let run = if sc.is_bridge() {
+        let mut setup = sc.build_bridge().map_err(value_error)?;
+        if let Some(r) = &rec {
+            setup.problem = run_bridge_problem(&setup.problem, r, s);
+            setup.records = [r.name.clone(), "none".into()];
+        }
+        let sol = crate::heavy(py, || setup.run())?.map_err(value_error)?;
+        Run::Bridge(Box::new(setup), Box::new(sol))
+    } else {
+        sc.override_reading(csv_units).map_err(value_error)?;
+        let mut setup = sc.build().map_err(value_error)?;
+        if let Some(r) = &rec {
+            setup.problem = run_problem(&setup.problem, r, s);
+            setup.records = [r.name.clone(), "none".into()];
+        }
+        let sol =
+            crate::heavy(py, || simulate(&setup.problem, &setup.settings))?.map_err(value_error)?;
+        Run::TwoDecks(Box::new(setup), Box::new(sol))
+    };
+    Ok(SimRun { run })
+}
+
+/// Runs a batch: every record (a path, or samples `(name, values, dt)`) at every scale, in
+/// parallel on `threads` workers; returns the text of `batch.csv`.
+#[pyfunction]
+#[pyo3(signature = (path=None, text=None, origin="scenario", records=Vec::new(), arrays=Vec::new(), scales=Vec::new(), csv_units=None, record_dt=None, dt=None, duration=None, law=None, threads=None))]
+#[allow(clippy::too_many_arguments)]
+fn batch_run(
+    py: Python<'_>,
+    path: Option<&str>,
+    text: Option<String>,
+    origin: &str,
+    records: Vec<Option<PathBuf>>,
+    arrays: Vec<Option<ArrayRecord>>,
+    scales: Vec<f64>,
+    csv_units: Option<&str>,
+    record_dt: Option<f64>,
+    dt: Option<f64>,
+    duration: Option<f64>,
+    law: Option<String>,
+    threads: Option<usize>,
+) -> PyResult<String> {
+    let csv_units = units(csv_units)?;
+    let flags = Flags {
+        record: None,
+        csv_units,
+        record_dt,
+        scale: None,
+        dt,
+        duration,
+        law,
+        batch: true,
+    };
+    let sc = flags.apply(load(path, text, origin)?);
+    let reading: ReadOptions = sc.override_reading(csv_units).map_err(value_error)?;
+    let mut list = Vec::with_capacity(records.len().max(arrays.len()));
+    for (p, a) in records.into_iter().zip(arrays) {
+        list.push(match (p, a) {
+            (Some(p), _) => BatchRecord {
+                name: p.display().to_string(),
+                record: Record::from_path_with(&p, &reading).map_err(|e| e.to_string()),
+            },
+            (None, Some(a)) => BatchRecord {
+                name: a.0.clone(),
+                record: Ok(array_record(a, reading.units)?),
+            },
+            (None, None) => return Err(value_error("a record is neither a path nor an array")),
+        });
+    }
+    let scales = if scales.is_empty() { vec![1.0] } else { scales };
+    let pool = crate::pool(threads)?;
+    if sc.is_bridge() {
+        let setup = sc.build_bridge().map_err(value_error)?;
+        let n = setup.problem.model.segments.len();
+        let rows = crate::heavy(py, || {
+            pool.install(|| {
+                run_batch(
+                    &setup.problem,
+                    &setup.settings,
+                    &list,
+                    &scales,
+                    Shard::ALL,
+                    &|_| {},
+                )
+            })
+        })?
+        .map_err(value_error)?;
+        Ok(so::bridge_batch_csv(n, &rows))
+    } else {
+        let setup = sc.build().map_err(value_error)?;
+        let rows = crate::heavy(py, || {
+            pool.install(|| {
+                run_batch(
+                    &setup.problem,
+                    &setup.settings,
+                    &list,
+                    &scales,
+                    Shard::ALL,
+                    &|_| {},
+                )
+            })
+        })?
+        .map_err(value_error)?;
+        Ok(so::batch_csv(&rows))
+    }
+}
+
+/// The built-in default `simulate` scenario (commented TOML, `pounding simulate --print-default`).
+#[pyfunction]
+fn default_simulate_scenario() -> &'static str {
+    DEFAULT_SCENARIO_TOML
+}
+
+/// The built-in default `study` scenario (`pounding study --print-default`).
+#[pyfunction]
+fn default_study_scenario() -> &'static str {
+    pounding::study::DEFAULT_SCENARIO_TOML
+}
+
+/// Registers the simulation functions.
+pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<SimRun>()?;
+    m.add_function(wrap_pyfunction!(simulate_run, m)?)?;
+    m.add_function(wrap_pyfunction!(batch_run, m)?)?;
+    m.add_function(wrap_pyfunction!(default_simulate_scenario, m)?)?;
+    m.add_function(wrap_pyfunction!(default_study_scenario, m)?)?;
+    Ok(())
+}
