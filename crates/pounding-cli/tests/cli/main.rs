@@ -71,6 +71,7 @@ mod harden_round2;
 mod inputs;
 mod lcp;
 mod physics_check;
+mod record_misreads;
 mod reports_browser;
 mod shapes;
 mod sim_report;
