@@ -16,6 +16,14 @@ fn s(p: &Path) -> &str {
     p.to_str().unwrap()
 }
 
+/// Runs `pounding` with the whitespace-separated words of `cmd` (scratch paths have no
+/// spaces): (exit code, stderr).
+fn run(cmd: &str) -> (Option<i32>, String) {
+    let words: Vec<&str> = cmd.split_whitespace().collect();
+    let (code, _, err) = run_capture(&words);
+    (code, err)
+}
+
 /// `n` samples of a small decaying sine (in g), one a line.
 fn one_column(n: usize) -> String {
     (0..n)
@@ -35,15 +43,11 @@ fn a_one_column_record_whose_comment_names_other_units_exits_2_and_writes_nothin
         &format!("# acceleration (m/s^2)\n{}", one_column(50)),
     );
     let out = d.join("o");
-    let (code, _, err) = run_capture(&[
-        "simulate",
-        "--record",
+    let (code, err) = run(&format!(
+        "simulate --record {} --record-dt 0.01 --out {}",
         s(&p),
-        "--record-dt",
-        "0.01",
-        "--out",
-        s(&out),
-    ]);
+        s(&out)
+    ));
     assert_eq!(code, Some(2), "{err}");
     assert!(
         err.contains("a.txt:1") && err.contains("--csv-units m/s2"),
@@ -51,17 +55,11 @@ fn a_one_column_record_whose_comment_names_other_units_exits_2_and_writes_nothin
     );
     assert!(!out.exists(), "an error wrote {}", out.display());
     // the units the comment names, given: read and run
-    let (code, _, err) = run_capture(&[
-        "simulate",
-        "--record",
+    let (code, err) = run(&format!(
+        "simulate --record {} --record-dt 0.01 --csv-units m/s2 --out {}",
         s(&p),
-        "--record-dt",
-        "0.01",
-        "--csv-units",
-        "m/s2",
-        "--out",
-        s(&out),
-    ]);
+        s(&out)
+    ));
     assert_eq!(code, Some(0), "{err}");
     assert!(
         err.contains("units m/s2 (--csv-units), dt_s 0.01, npts 50"),
@@ -74,15 +72,11 @@ fn two_values_a_line_with_record_dt_exits_2() {
     let d = scratch_dir("misreads", "twoval");
     let p = write(&d, "ta.txt", "0 0.1\n0.01 0.2\n0.02 -0.1\n");
     let out = d.join("o");
-    let (code, _, err) = run_capture(&[
-        "simulate",
-        "--record",
+    let (code, err) = run(&format!(
+        "simulate --record {} --record-dt 0.01 --out {}",
         s(&p),
-        "--record-dt",
-        "0.01",
-        "--out",
-        s(&out),
-    ]);
+        s(&out)
+    ));
     assert_eq!(code, Some(2), "{err}");
     assert!(
         err.contains("ta.txt:1")
@@ -98,17 +92,10 @@ fn two_values_a_line_with_record_dt_exits_2() {
 fn builtin_records_run_in_a_batch_and_repeats_get_a_note() {
     let d = scratch_dir("misreads", "builtin");
     let out = d.join("o");
-    let (code, _, err) = run_capture(&[
-        "simulate",
-        "--records",
-        "builtin:ELC180",
-        "builtin:ELC270",
-        "builtin:ELC180",
-        "--duration",
-        "0.3",
-        "--out",
-        s(&out),
-    ]);
+    let (code, err) = run(&format!(
+        "simulate --records builtin:ELC180 builtin:ELC270 builtin:ELC180 --duration 0.3 --out {}",
+        s(&out)
+    ));
     assert_eq!(code, Some(0), "{err}");
     assert!(
         err.contains("note: --records: builtin:ELC180 is given 2 times"),
@@ -126,16 +113,12 @@ fn builtin_records_run_in_a_batch_and_repeats_get_a_note() {
     let recs = d.join("recs");
     std::fs::create_dir_all(&recs).unwrap();
     write(&recs, "r.csv", "t,a\n0,0\n0.01,0.1\n0.02,0\n");
-    let (code, _, err) = run_capture(&[
-        "simulate",
-        "--records",
+    let (code, err) = run(&format!(
+        "simulate --records {} {} --duration 0.05 --out {}",
         s(&recs),
         s(&recs),
-        "--duration",
-        "0.05",
-        "--out",
-        s(&d.join("o2")),
-    ]);
+        s(&d.join("o2"))
+    ));
     assert_eq!(code, Some(0), "{err}");
     assert!(err.contains("r.csv is given 2 times"), "{err}");
 }
@@ -151,21 +134,21 @@ fn the_scenarios_record_dt_reads_the_record_flag_file() {
         "[ground_motion]\nrecord_y = \"own.txt\"\nrecord_x = \"none\"\nrecord_dt = 0.02\n",
     );
     let out = d.join("o");
-    let (code, _, err) =
-        run_capture(&["simulate", s(&sc), "--record", s(&other), "--out", s(&out)]);
+    let (code, err) = run(&format!(
+        "simulate {} --record {} --out {}",
+        s(&sc),
+        s(&other),
+        s(&out)
+    ));
     assert_eq!(code, Some(0), "{err}");
     assert!(err.contains("dt_s 0.02, npts 40"), "{err}");
     // --record-dt replaces it
-    let (code, _, err) = run_capture(&[
-        "simulate",
+    let (code, err) = run(&format!(
+        "simulate {} --record {} --record-dt 0.01 --out {}",
         s(&sc),
-        "--record",
         s(&other),
-        "--record-dt",
-        "0.01",
-        "--out",
-        s(&out),
-    ]);
+        s(&out)
+    ));
     assert_eq!(code, Some(0), "{err}");
     assert!(err.contains("dt_s 0.01, npts 40"), "{err}");
 }
@@ -174,7 +157,11 @@ fn the_scenarios_record_dt_reads_the_record_flag_file() {
 fn a_scenario_given_as_the_record_is_named() {
     let d = scratch_dir("misreads", "toml");
     let sc = write(&d, "my.toml", "[ground_motion]\nscale_y = 1\n");
-    let (code, _, err) = run_capture(&["simulate", "--record", s(&sc), "--out", s(&d.join("o"))]);
+    let (code, err) = run(&format!(
+        "simulate --record {} --out {}",
+        s(&sc),
+        s(&d.join("o"))
+    ));
     assert_eq!(code, Some(2), "{err}");
     assert!(
         err.contains("my.toml is a scenario file (.toml)") && err.contains("first"),
@@ -199,15 +186,11 @@ fn the_shared_el_centro_csv_with_a_byte_order_mark_reads_the_same() {
     let bom = write(&d, "bom.csv", &format!("\u{feff}{text}"));
     let mut lines = Vec::new();
     for p in [&plain, &bom] {
-        let (code, _, err) = run_capture(&[
-            "simulate",
-            "--record",
+        let (code, err) = run(&format!(
+            "simulate --record {} --duration 0.2 --out {}",
             s(p),
-            "--duration",
-            "0.2",
-            "--out",
-            s(&d.join("o")),
-        ]);
+            s(&d.join("o"))
+        ));
         assert_eq!(code, Some(0), "{err}");
         let line = err
             .lines()

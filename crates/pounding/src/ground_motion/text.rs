@@ -448,14 +448,14 @@ fn check_comment(line: &str, units: AccelUnits) -> Result<(), String> {
         .split(|c: char| !c.is_ascii_alphanumeric())
         .filter(|w| !w.is_empty())
         .collect();
-    if !words.iter().any(|w| w.starts_with("ACC")) {
-        if let Some(kind) = words.iter().find_map(|w| quantity_word(w)) {
-            return Err(format!(
-                "the comment line {} says {kind}: the record must be an acceleration time \
-                 series; give the acceleration record",
-                quote(line)
-            ));
-        }
+    if !words.iter().any(|w| w.starts_with("ACC"))
+        && let Some(kind) = words.iter().find_map(|w| quantity_word(w))
+    {
+        return Err(format!(
+            "the comment line {} says {kind}: the record must be an acceleration time series; \
+             give the acceleration record",
+            quote(line)
+        ));
     }
     let (_, bracketed) = split_cell(body);
     if let Some(u) = bracketed

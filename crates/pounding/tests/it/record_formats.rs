@@ -20,20 +20,20 @@ fn elc(n: usize) -> Vec<f64> {
         .collect()
 }
 
-fn dir(name: &str) -> PathBuf {
+pub(crate) fn dir(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("pounding-recfmt-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
 }
 
-fn write(d: &Path, name: &str, text: &str) -> PathBuf {
+pub(crate) fn write(d: &Path, name: &str, text: &str) -> PathBuf {
     let p = d.join(name);
     std::fs::write(&p, text).unwrap();
     p
 }
 
-fn opts(units: AccelUnits, dt: Option<f64>) -> ReadOptions {
+pub(crate) fn opts(units: AccelUnits, dt: Option<f64>) -> ReadOptions {
     ReadOptions {
         units,
         units_from: "test".into(),

@@ -4,31 +4,10 @@
 //! `builtin:` records open anywhere, the scenario's `record_dt` applies to `--record`, and the
 //! cosmetics of messages (capped quotes, byte-order marks, a missing NPTS, an empty key).
 
+use crate::record_formats::{dir, opts, write};
 use pounding::ground_motion::{AccelUnits, G0, GroundMotionError, ReadOptions, Record};
 use pounding::sim::scenario::Scenario;
-use std::path::{Path, PathBuf};
-
-fn dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("pounding-misreads-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn write(d: &Path, name: &str, text: &str) -> PathBuf {
-    let p = d.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
-fn opts(units: AccelUnits, dt: Option<f64>) -> ReadOptions {
-    ReadOptions {
-        units,
-        units_from: "test".into(),
-        dt,
-        ..ReadOptions::default()
-    }
-}
+use std::path::Path;
 
 fn err(p: &Path, o: &ReadOptions) -> String {
     match Record::from_path_with(p, o) {
@@ -154,7 +133,7 @@ fn two_values_a_line_with_a_sample_interval_is_ambiguous() {
         assert!(
             e.contains(name)
                 && e.contains("ambiguous")
-                && e.contains("remove the interval (record_dt)")
+                && e.contains("remove the interval (--record-dt)")
                 && e.contains("split the file"),
             "{e}"
         );
@@ -322,7 +301,7 @@ fn an_at2_without_npts_says_npts_is_missing() {
 
 #[test]
 fn an_empty_record_key_is_named() {
-    let d = dir("empty");
+    let d = dir("empty-key");
     let sc = write(
         &d,
         "s.toml",
