@@ -97,6 +97,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
         units_from: "--csv-units".into(),
         dt: args.record_dt,
         dt_from: "--record-dt".into(),
+        dt_default: false,
     };
     // read everything first: bad input writes nothing
     let singles: Vec<(String, Record)> = args

@@ -57,7 +57,7 @@ fn plan(args: &Args, reading: &ReadOptions) -> Result<Plan> {
         .iter()
         .map(|p| BatchRecord {
             name: p.display().to_string(),
-            record: Record::from_path_with(p, reading).map_err(|e| e.to_string()),
+            record: Record::open_with(p, reading).map_err(|e| e.to_string()),
         })
         .collect();
     for r in &records {

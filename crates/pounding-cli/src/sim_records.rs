@@ -14,6 +14,14 @@ const RECORD_EXTENSIONS: &[&str] = &["at2", "csv", "txt", "dat"];
 /// Refuses flags that would be misread: a `.toml` among `--records` (the scenario written after
 /// the list), `--csv-units` / `--record-dt` without `--record` or `--records`.
 pub(crate) fn check_flags(args: &Args) -> Result<()> {
+    if let Some(t) = args.record.as_ref().filter(|p| has_ext(p, "toml")) {
+        bail!(
+            "--record: {} is a scenario file (.toml), not a record: give the scenario first \
+             (pounding simulate {} --record RECORD)",
+            t.display(),
+            t.display()
+        );
+    }
     if let Some(t) = args.records.iter().find(|p| has_ext(p, "toml")) {
         bail!(
             "--records: {} is a scenario file (.toml), not a record: put the scenario before \
@@ -69,8 +77,32 @@ fn skip_reason(f: &Path) -> Option<String> {
 
 /// The record files of `--records`: files as given, directories expanded to their `.AT2` /
 /// `.csv` / `.txt` / `.dat` files (any case) sorted by file name; every other entry is listed on
-/// stderr with the reason it is skipped, and a directory without a record is an error.
+/// stderr with the reason it is skipped, and a directory without a record is an error. A file
+/// given twice (or a directory listed twice) is run twice, with a note on stderr.
 pub(crate) fn expand_records(paths: &[PathBuf]) -> Result<Vec<PathBuf>> {
+    let out = expand_paths(paths)?;
+    note_repeats(&out);
+    Ok(out)
+}
+
+/// A note on stderr for every record that `paths` name more than once (compared after
+/// resolving `.`/`..` and links when the file exists, else as written).
+fn note_repeats(paths: &[PathBuf]) {
+    let key = |p: &PathBuf| std::fs::canonicalize(p).unwrap_or_else(|_| p.clone());
+    let keys: Vec<PathBuf> = paths.iter().map(key).collect();
+    for (i, k) in keys.iter().enumerate() {
+        let n = keys.iter().filter(|o| *o == k).count();
+        if n > 1 && !keys[..i].contains(k) {
+            eprintln!(
+                "note: --records: {} is given {n} times; it is run {n} times (its rows repeat)",
+                paths[i].display()
+            );
+        }
+    }
+}
+
+/// `paths` with directories expanded ([`expand_records`]).
+fn expand_paths(paths: &[PathBuf]) -> Result<Vec<PathBuf>> {
     let mut out = Vec::new();
     for p in paths {
         if !p.is_dir() {

@@ -57,7 +57,8 @@ pub fn limit_text(limit: u64) -> String {
 /// `what` names the kind of file in the error, singular ("scenario file": "the limit for scenario files"). At most `limit + 1` bytes are
 /// read ([`Read::take`]), so an endless input (a character device, a FIFO) is refused quickly; a
 /// regular file larger than the limit is refused before reading. Directories are refused. The
-/// error (an [`std::io::Error`]) does not contain the path: callers add it.
+/// error (an [`std::io::Error`]) does not contain the path: callers add it. A leading
+/// byte-order mark (U+FEFF) is removed.
 pub fn read_text(path: &Path, what: &str, limit: u64) -> std::io::Result<String> {
     use std::io::{Error, ErrorKind};
     let too_large = || {
@@ -89,7 +90,7 @@ pub fn read_text(path: &Path, what: &str, limit: u64) -> std::io::Result<String>
     if buf.len() as u64 > limit {
         return Err(too_large());
     }
-    String::from_utf8(buf).map_err(|e| {
+    let mut text = String::from_utf8(buf).map_err(|e| {
         Error::new(
             ErrorKind::InvalidData,
             format!(
@@ -97,7 +98,12 @@ pub fn read_text(path: &Path, what: &str, limit: u64) -> std::io::Result<String>
                 e.utf8_error().valid_up_to()
             ),
         )
-    })
+    })?;
+    // a leading byte-order mark (some editors write one) is not part of the text
+    if text.starts_with('\u{feff}') {
+        text.drain(..'\u{feff}'.len_utf8());
+    }
+    Ok(text)
 }
 
 /// Checks a `--threads` value against `1 ..= MAX_THREADS` (`None`: all cores, accepted).

@@ -72,6 +72,7 @@ mod inputs;
 mod lcp;
 mod motion;
 mod physics_check;
+mod record_misreads;
 mod reports_browser;
 mod shapes;
 mod sim_report;

@@ -1,7 +1,9 @@
 //! PEER NGA `.AT2` records: the header (kind, units, `NPTS`/`DT` in every style met) and the
 //! values.
 
-use super::{AccelUnits, G0, GroundMotionError, Record, parse_err, parse_real, push_values};
+use super::{
+    AccelUnits, G0, GroundMotionError, Record, parse_err, parse_real, push_values, quote, strip_bom,
+};
 use crate::math::Real;
 
 impl Record {
@@ -30,6 +32,7 @@ impl Record {
         source_name: &str,
         given: Option<(AccelUnits, &str)>,
     ) -> Result<Self, GroundMotionError> {
+        let text = strip_bom(text);
         let lines: Vec<&str> = text.lines().collect();
         if lines.len() < 4 {
             return Err(parse_err(
@@ -45,8 +48,9 @@ impl Record {
             _ => factor,
         };
         let header = lines[3];
+        let header_q = quote(header);
         let (npts, dt) = parse_at2_npts_dt(header)
-            .map_err(|m| parse_err(source_name, 4, format!("{m} in AT2 header line {header:?}")))?;
+            .map_err(|m| parse_err(source_name, 4, format!("{m} in AT2 header line {header_q}")))?;
         // Each value needs at least one byte, so a larger NPTS cannot be honoured; refuse it
         // before allocating (an absurd NPTS would otherwise abort on allocation).
         if npts > text.len() {
@@ -54,7 +58,7 @@ impl Record {
                 source_name,
                 4,
                 format!(
-                    "NPTS = {npts} exceeds what the file can hold ({} bytes) in AT2 header line {header:?}",
+                    "NPTS = {npts} exceeds what the file can hold ({} bytes) in AT2 header line {header_q}",
                     text.len()
                 ),
             ));
@@ -151,6 +155,7 @@ pub(super) const ACCEPTED_UNITS: &str =
 /// (`G X 1000`, `G*1000`, `1000 TIMES G`). `G` counts only after `OF`, `IN`, `UNITS` or in
 /// brackets (a bare `G` may be part of a name).
 pub(super) fn line_units(line: &str) -> Result<Option<(Real, String)>, String> {
+    let line_q = quote(line);
     let norm = line
         .to_ascii_uppercase()
         .replace("**", "^")
@@ -181,13 +186,13 @@ pub(super) fn line_units(line: &str) -> Result<Option<(Real, String)>, String> {
                     && *g != f
                 {
                     return Err(format!(
-                        "the header line {line:?} names two different units, {u} and {tok}: \
+                        "the header line {line_q} names two different units, {u} and {tok}: \
                          give one; {ACCEPTED_UNITS}"
                     ));
                 }
                 if is_scaled(&toks, i) {
                     return Err(format!(
-                        "a scaled unit is not supported: header line {line:?} multiplies {tok} \
+                        "a scaled unit is not supported: header line {line_q} multiplies {tok} \
                          by a factor; convert the values to plain units ({ACCEPTED_UNITS})"
                     ));
                 }
@@ -195,7 +200,8 @@ pub(super) fn line_units(line: &str) -> Result<Option<(Real, String)>, String> {
             }
             None if looks_like_accel_unit(tok) => {
                 return Err(format!(
-                    "unknown units {tok:?} in header line {line:?}; {ACCEPTED_UNITS}"
+                    "unknown units {} in header line {line_q}; {ACCEPTED_UNITS}",
+                    quote(tok)
                 ));
             }
             None => {}
@@ -203,7 +209,7 @@ pub(super) fn line_units(line: &str) -> Result<Option<(Real, String)>, String> {
     }
     if mentions_units && found.is_none() {
         return Err(format!(
-            "cannot read the units in header line {line:?}; {ACCEPTED_UNITS}"
+            "cannot read the units in header line {line_q}; {ACCEPTED_UNITS}"
         ));
     }
     Ok(found)
@@ -245,6 +251,18 @@ fn parse_at2_npts_dt(line: &str) -> Result<(usize, Real), String> {
             return Err(format!("{key} is given {n} times"));
         }
     }
+    let has_word = |key: &str| {
+        upper
+            .split(|c: char| !c.is_ascii_alphanumeric())
+            .any(|w| w == key)
+    };
+    if !has_word("NPTS") && has_word("DT") {
+        return Err(
+            "NPTS is missing (the 4th header line gives the number of values and the \
+             sample interval: NPTS= N, DT= SECONDS SEC)"
+                .into(),
+        );
+    }
     let new_style = upper
         .find("NPTS")
         .is_some_and(|p| upper[p + 4..].trim_start().starts_with('='));
@@ -270,7 +288,8 @@ fn parse_at2_npts_dt(line: &str) -> Result<(usize, Real), String> {
                 && !unit.starts_with("NPTS")
             {
                 return Err(format!(
-                    "DT is given in {unit:?}: only seconds (SEC) are accepted"
+                    "DT is given in {}: only seconds (SEC) are accepted",
+                    quote(unit)
                 ));
             }
         }
@@ -290,11 +309,11 @@ fn parse_at2_npts_dt(line: &str) -> Result<(usize, Real), String> {
     };
     let npts: usize = npts_s
         .parse()
-        .map_err(|_| format!("NPTS {npts_s:?} is not a positive integer"))?;
+        .map_err(|_| format!("NPTS {} is not a positive integer", quote(&npts_s)))?;
     if npts == 0 {
         return Err("NPTS = 0".into());
     }
-    let dt = parse_real(&dt_s).ok_or_else(|| format!("DT {dt_s:?} is not a number"))?;
+    let dt = parse_real(&dt_s).ok_or_else(|| format!("DT {} is not a number", quote(&dt_s)))?;
     if dt <= 0.0 {
         return Err(format!(
             "DT = {} must be > 0",

@@ -10,10 +10,16 @@
 //! | two numbers on the first data line | columns `t a` ([`Record::from_columns_str`]) |
 //! | anything else | refused, listing [`ACCEPTED_FORMATS`] |
 //!
-//! Data lines are those neither blank nor starting with `#`. A sample interval given for a file
-//! that carries its own times (`.AT2`, CSV, columns `t a`) is refused, not ignored.
+//! Data lines are those neither blank nor starting with `#`; `#` lines of the text formats are
+//! read as headers (kind and units checked). A sample interval given for a file that carries its
+//! own times (`.AT2`, CSV, columns `t a`) is refused, not ignored, unless it is only a default
+//! ([`ReadOptions::dt_default`]: the scenario's `record_dt` for a command-line file). A leading
+//! byte-order mark is ignored.
 
-use super::{AccelUnits, GroundMotionError, Record, parse_err, parse_real, text::data_lines};
+use super::{
+    AccelUnits, BUILTIN_RECORDS, GroundMotionError, Record, builtin_record, data_lines, parse_err,
+    parse_real, quote, strip_bom,
+};
 use crate::math::Real;
 use std::path::Path;
 
@@ -50,6 +56,10 @@ pub struct ReadOptions {
     pub dt: Option<Real>,
     /// Where `dt` came from, for messages: `record_dt` or `--record-dt`.
     pub dt_from: String,
+    /// `dt` is a default (the scenario's `record_dt` applied to a `--record` / `--records` file):
+    /// it reads one-column files and does not apply to files with their own times (`.AT2`, CSV,
+    /// built-in records), which are then read without it instead of refused.
+    pub dt_default: bool,
 }
 
 impl Default for ReadOptions {
@@ -60,6 +70,7 @@ impl Default for ReadOptions {
             units_from: "csv_units default".into(),
             dt: None,
             dt_from: "record_dt".into(),
+            dt_default: false,
         }
     }
 }
@@ -67,6 +78,7 @@ impl Default for ReadOptions {
 /// The format of the record file `path` with content `text` (see the module table).
 /// `dt_given`: a sample interval was given. Errors name the file and line.
 pub fn detect(path: &Path, text: &str, dt_given: bool) -> Result<RecordFormat, GroundMotionError> {
+    let text = strip_bom(text);
     let name = path.display().to_string();
     let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
     let is = |e: &str| ext.eq_ignore_ascii_case(e);
@@ -106,7 +118,10 @@ pub fn detect(path: &Path, text: &str, dt_given: bool) -> Result<RecordFormat, G
         return Err(parse_err(
             &name,
             line,
-            format!("cannot recognise the format of the record from {first:?}; {ACCEPTED_FORMATS}"),
+            format!(
+                "cannot recognise the format of the record from {}; {ACCEPTED_FORMATS}",
+                quote(first)
+            ),
         ));
     }
     match toks.len() {
@@ -136,8 +151,21 @@ impl Record {
                     path: path.display().to_string(),
                     message: e.to_string(),
                 })?;
+        let text = strip_bom(&text);
         let name = path.display().to_string();
-        let format = detect(path, &text, opts.dt.is_some())?;
+        let format = detect(path, text, opts.dt.is_some())?;
+        let own;
+        let opts = if opts.dt_default && format != RecordFormat::Sequence {
+            // the scenario's record_dt does not apply to a file with its own times
+            own = ReadOptions {
+                dt: None,
+                dt_default: false,
+                ..opts.clone()
+            };
+            &own
+        } else {
+            opts
+        };
         if let Some(dt) = opts.dt
             && format != RecordFormat::Sequence
         {
@@ -161,14 +189,37 @@ impl Record {
             (RecordFormat::At2, _) => {
                 let given = (opts.units_from != ReadOptions::default().units_from)
                     .then_some((u, opts.units_from.as_str()));
-                return Self::from_at2_str_with(&text, &name, given);
+                return Self::from_at2_str_with(text, &name, given);
             }
-            (RecordFormat::Csv, _) => Self::from_csv_str(&text, &name, u)?,
-            (RecordFormat::Sequence, Some(dt)) => Self::from_sequence_str(&text, &name, u, dt)?,
-            _ => Self::from_columns_str(&text, &name, u)?,
+            (RecordFormat::Csv, _) => Self::from_csv_str(text, &name, u)?,
+            (RecordFormat::Sequence, Some(dt)) => {
+                Self::sequence_from(text, &name, u, (dt, &opts.dt_from))?
+            }
+            _ => Self::from_columns_str(text, &name, u)?,
         };
         let label = format!("{} ({})", u.name(), opts.units_from);
         Ok(r.with_units_label(label))
+    }
+
+    /// A record named on the command line or in a batch: `builtin:ELC180` / `builtin:ELC270`
+    /// ([`builtin_record`]), else the file `path` ([`Record::from_path_with`]). A sample interval
+    /// given explicitly (not [`ReadOptions::dt_default`]) for a built-in record is an error.
+    pub fn open_with(path: &Path, opts: &ReadOptions) -> Result<Self, GroundMotionError> {
+        let Some(b) = path.to_str().and_then(|s| s.strip_prefix("builtin:")) else {
+            return Self::from_path_with(path, opts);
+        };
+        let io = |message: String| GroundMotionError::Io {
+            path: path.display().to_string(),
+            message,
+        };
+        if opts.dt.is_some() && !opts.dt_default {
+            return Err(io(format!(
+                "{} does not apply to a built-in record (it has its own DT)",
+                opts.dt_from
+            )));
+        }
+        builtin_record(b)
+            .ok_or_else(|| io(format!("unknown built-in record: use {BUILTIN_RECORDS}")))
     }
 
     /// Reads a record file ([`Record::from_path_with`]) with text formats in `csv_units` and no

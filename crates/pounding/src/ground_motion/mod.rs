@@ -134,6 +134,38 @@ pub(super) fn converted_overflow(tok: &str, factor: Real) -> String {
     )
 }
 
+/// The longest text (in characters) an error message quotes from a record file.
+const QUOTE_MAX: usize = 80;
+
+/// `text` quoted as `{:?}` for a message, cut after [`QUOTE_MAX`] characters with `…` (a line of a
+/// megabyte, or of NUL bytes, is not echoed whole).
+pub(crate) fn quote(text: &str) -> String {
+    match text.char_indices().nth(QUOTE_MAX) {
+        Some((i, _)) => format!("{:?}…", &text[..i]),
+        None => format!("{text:?}"),
+    }
+}
+
+/// `text` without a leading byte-order mark (U+FEFF), which some editors write at the start of
+/// UTF-8 files.
+pub(crate) fn strip_bom(text: &str) -> &str {
+    text.strip_prefix('\u{feff}').unwrap_or(text)
+}
+
+/// The names of the built-in records, as given after `builtin:`.
+pub const BUILTIN_RECORDS: &str = "builtin:ELC180 or builtin:ELC270";
+
+/// The built-in record `name` (after `builtin:`): `ELC180` (El Centro 1940, component 180) or
+/// `ELC270` (component 270), read from the embedded `.AT2` text; `None` for another name.
+pub fn builtin_record(name: &str) -> Option<Record> {
+    let (text, file) = match name {
+        "ELC180" => (EL_CENTRO_180_AT2, "RSN6_IMPVALL.I_I-ELC180-hor1.AT2"),
+        "ELC270" => (EL_CENTRO_270_AT2, "RSN6_IMPVALL.I_I-ELC270-hor2.AT2"),
+        _ => return None,
+    };
+    Some(Record::from_at2_str(text, file).expect("embedded record parses"))
+}
+
 /// Parses a Fortran-style real (`.998E-03`, `1.5D-03`, `-.17e+01`).
 pub(super) fn parse_real(tok: &str) -> Option<Real> {
     let v: Real = if tok.contains(['D', 'd']) {
@@ -486,17 +518,21 @@ pub const EL_CENTRO_270_AT2: &str =
 /// 1940 El Centro (Imperial Valley-02, El Centro Array #9, PEER NGA-West2 RSN 6), unscaled:
 /// component 180 (NS, PGA 0.281 g) along y, component 270 (EW, PGA 0.211 g) along x, `α = 0`.
 pub fn el_centro_1940() -> GroundMotion {
-    let y = Record::from_at2_str(EL_CENTRO_180_AT2, "RSN6_IMPVALL.I_I-ELC180-hor1.AT2")
-        .expect("embedded record parses");
-    let x = Record::from_at2_str(EL_CENTRO_270_AT2, "RSN6_IMPVALL.I_I-ELC270-hor2.AT2")
-        .expect("embedded record parses");
     GroundMotion {
-        along_y: Some(y),
+        along_y: builtin_record("ELC180"),
         scale_y: 1.0,
-        along_x: Some(x),
+        along_x: builtin_record("ELC270"),
         scale_x: 1.0,
         incidence: 0.0,
     }
+}
+
+/// The lines holding data (1-based number, trimmed text): not blank, not a `#` comment.
+pub(super) fn data_lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
+    text.lines()
+        .enumerate()
+        .map(|(k, l)| (k + 1, l.trim()))
+        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'))
 }
 
 /// Appends the whitespace-separated values of `line` (Fortran `E`/`D` format) times `factor` to
@@ -508,7 +544,7 @@ pub(super) fn push_values(
     limit: Option<usize>,
 ) -> Result<(), String> {
     for tok in line.split_whitespace() {
-        let v = parse_real(tok).ok_or_else(|| format!("not a finite number: {tok:?}"))?;
+        let v = parse_real(tok).ok_or_else(|| format!("not a finite number: {}", quote(tok)))?;
         if let Some(n) = limit
             && values.len() == n
         {

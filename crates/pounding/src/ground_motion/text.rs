@@ -1,9 +1,11 @@
 //! Text records: CSV `t, a`, whitespace-separated columns `t a`, and a sequence of accelerations
 //! with a given sample interval (OpenSees `timeSeries Path -dt`).
 
-use super::at2::{ACCEPTED_UNITS, accel_unit_factor, looks_like_accel_unit};
+use super::at2::{ACCEPTED_UNITS, accel_unit_factor, line_units, looks_like_accel_unit};
+use super::format::ACCEPTED_FORMATS;
 use super::{
-    AccelUnits, GroundMotionError, Record, converted_overflow, parse_err, parse_real, push_values,
+    AccelUnits, GroundMotionError, Record, converted_overflow, data_lines, parse_err, parse_real,
+    push_values, quote, strip_bom,
 };
 use crate::math::Real;
 use crate::output::float_token;
@@ -14,12 +16,15 @@ impl Record {
     /// a velocity or displacement column, a time unit other than seconds, and an acceleration
     /// unit (in brackets anywhere in a cell, `a[gal]`, `acc (cm/s^2)`, or a word, `acc_gal`) that
     /// is not an acceleration unit or differs from `units` are refused. Times must increase
-    /// strictly. Errors carry the 1-based line number.
+    /// strictly. `#` lines are checked as [comment lines](check_comments) are. Errors carry the
+    /// 1-based line number.
     pub fn from_csv_str(
         text: &str,
         source_name: &str,
         units: AccelUnits,
     ) -> Result<Self, GroundMotionError> {
+        let text = strip_bom(text);
+        check_comments(text, source_name, units)?;
         let mut times = Vec::new();
         let mut values = Vec::new();
         let mut seen_content = false;
@@ -48,11 +53,17 @@ impl Record {
                 if is_header {
                     continue;
                 }
+                let semicolons = if line.contains(';') {
+                    " (semicolons do not separate columns: use commas)"
+                } else {
+                    ""
+                };
                 return Err(parse_err(
                     source_name,
                     k + 1,
                     format!(
-                        "expected 2 comma-separated columns (t, a), found {}",
+                        "expected 2 comma-separated columns (t, a), found {}{semicolons}; \
+                         {ACCEPTED_FORMATS}",
                         cols.len()
                     ),
                 ));
@@ -65,7 +76,7 @@ impl Record {
                     return Err(parse_err(
                         source_name,
                         k + 1,
-                        format!("not a pair of finite numbers: {line:?}"),
+                        format!("not a pair of finite numbers: {}", quote(line)),
                     ));
                 }
             }
@@ -79,12 +90,14 @@ impl Record {
     /// Parses whitespace-separated columns `t a` (t in s, a in `units`), one sample a line.
     /// Blank lines and lines starting with `#` (a comment header) are skipped; a `#` line before
     /// the first sample that looks like a header of the columns (`# t (s)  a (gal)`) is checked
-    /// as a CSV header is. Times must increase strictly. Errors carry the 1-based line number.
+    /// as a CSV header is; every `#` line is checked as [comment lines](check_comments) are.
+    /// Times must increase strictly. Errors carry the 1-based line number.
     pub fn from_columns_str(
         text: &str,
         source_name: &str,
         units: AccelUnits,
     ) -> Result<Self, GroundMotionError> {
+        let text = strip_bom(text);
         let (mut times, mut values) = (Vec::new(), Vec::new());
         // `#` lines before the first sample that look like a header (`# t (s)  a (gal)`)
         for (k, line) in text.lines().enumerate() {
@@ -97,6 +110,7 @@ impl Record {
                 check_header_cells(&cells, units).map_err(|m| parse_err(source_name, k + 1, m))?;
             }
         }
+        check_comments(text, source_name, units)?;
         for (k, line) in data_lines(text) {
             let cols: Vec<&str> = line.split_whitespace().collect();
             let pair = match cols[..] {
@@ -109,7 +123,8 @@ impl Record {
                     k,
                     format!(
                         "expected two whitespace-separated numbers `t a` (as on the first data \
-                         line), found {line:?}"
+                         line), found {}",
+                        quote(line)
                     ),
                 ));
             };
@@ -124,52 +139,56 @@ impl Record {
 
     /// Parses a sequence of accelerations (in `units`) sampled every `dt` seconds from `t = 0`,
     /// any number of whitespace-separated values a line, read in order as OpenSees'
-    /// `timeSeries Path -dt` does. Blank lines and `#` lines are skipped.
+    /// `timeSeries Path -dt` does. Blank lines are skipped; `#` lines are checked as
+    /// [comment lines](check_comments) are.
     ///
-    /// A file in which every line holds two values whose first column increases strictly from
-    /// `t >= 0` carries its own times (`t a`): it is refused rather than read as accelerations.
+    /// A file in which every line holds exactly two values is refused as ambiguous: the two
+    /// columns may be `t a` (then no sample interval applies) or two components (one file each).
     pub fn from_sequence_str(
         text: &str,
         source_name: &str,
         units: AccelUnits,
         dt: Real,
     ) -> Result<Self, GroundMotionError> {
+        Self::sequence_from(text, source_name, units, (dt, "record_dt / --record-dt"))
+    }
+
+    /// [`Record::from_sequence_str`] with the interval's origin (`dt_from`) named in messages.
+    pub(super) fn sequence_from(
+        text: &str,
+        source_name: &str,
+        units: AccelUnits,
+        (dt, dt_from): (Real, &str),
+    ) -> Result<Self, GroundMotionError> {
+        let text = strip_bom(text);
+        check_comments(text, source_name, units)?;
         let mut values = Vec::new();
-        let mut firsts: Vec<Option<Real>> = Vec::new();
+        let mut all_two = true;
         for (k, line) in data_lines(text) {
-            let mut toks = line.split_whitespace();
-            let two = line.split_whitespace().count() == 2;
-            firsts.push(toks.next().and_then(parse_real).filter(|_| two));
+            all_two &= line.split_whitespace().count() == 2;
             push_values(&mut values, line, units.factor(), None)
                 .map_err(|m| parse_err(source_name, k, m))?;
         }
         if values.is_empty() {
             return Err(parse_err(source_name, 1, "no samples found"));
         }
-        let times: Option<Vec<Real>> = firsts.iter().copied().collect();
-        if let Some(t) = times
-            && t.len() > 1
-            && t[0] >= 0.0
-            && t.windows(2).all(|w| w[1] > w[0])
-        {
+        if all_two {
+            let line = data_lines(text).next().map_or(1, |(k, _)| k);
             return Err(parse_err(
                 source_name,
-                1,
-                "every line holds two values and the first column increases: the file carries \
-                 its own times (`t a`), so a sample interval (record_dt / --record-dt) does not \
-                 apply; remove it",
+                line,
+                format!(
+                    "every line holds two values and a sample interval of {} s is given by \
+                     {dt_from}: ambiguous. If the two columns are `t a` (time, acceleration), \
+                     the file has its own times: remove the interval ({dt_from}) and they are \
+                     read; if they are two components, split the file into one file per \
+                     component",
+                    float_token(dt)
+                ),
             ));
         }
         Ok(Self::uniform(source_name, dt, values)?.with_units_label(units.name()))
     }
-}
-
-/// The lines holding data (1-based number, trimmed text): not blank, not a `#` comment.
-pub(super) fn data_lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
-    text.lines()
-        .enumerate()
-        .map(|(k, l)| (k + 1, l.trim()))
-        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'))
 }
 
 /// Appends the sample `(t, a × units)` (`a_tok` as written, for messages): times must increase
@@ -184,7 +203,8 @@ fn add_pair(
         && t <= prev
     {
         return Err(format!(
-            "time {} does not increase (previous {})",
+            "time {} does not increase (previous {}): the first column must be the time, \
+             increasing; {ACCEPTED_FORMATS}",
             float_token(t),
             float_token(prev)
         ));
@@ -202,13 +222,25 @@ fn add_pair(
 /// a velocity/length or unknown unit for the acceleration, two units in one cell, and an
 /// acceleration unit that differs from the units the file is read in (`units`).
 fn check_header_cells(cells: &[&str], units: AccelUnits) -> Result<(), String> {
+    if let [a, t] = cells
+        && is_accel_name(a)
+        && is_time_name(t)
+    {
+        return Err(format!(
+            "the header names {} first and {} second: the columns look swapped; the record \
+             must be time first, then acceleration (t, a): swap the columns",
+            quote(a),
+            quote(t)
+        ));
+    }
     for (i, cell) in cells.iter().enumerate() {
         let (words, bracketed) = split_cell(cell);
         for w in &words {
             if let Some(kind) = quantity_word(w) {
                 return Err(format!(
-                    "the header column {cell:?} is a {kind}: the record must be an \
-                     acceleration time series (t, a)"
+                    "the header column {} is a {kind}: the record must be an acceleration \
+                     time series (t, a)",
+                    quote(cell)
                 ));
             }
         }
@@ -283,8 +315,10 @@ fn check_time_cell(cell: &str, words: &[String], bracketed: &[String]) -> Result
         });
     match bad {
         Some(u) => Err(format!(
-            "the time column {cell:?} is in {u:?}: only seconds (s, sec, seconds) are accepted; \
-             convert the times"
+            "the time column {} is in {}: only seconds (s, sec, seconds) are accepted; \
+             convert the times",
+            quote(cell),
+            quote(u)
         )),
         None => Ok(()),
     }
@@ -315,6 +349,7 @@ fn check_accel_cell(
     bracketed: &[String],
     units: AccelUnits,
 ) -> Result<(), String> {
+    let cell_q = quote(cell);
     let mut found: Option<(Real, String)> = None;
     // `mps2` / `ms2` words are m/s²
     let unit_word = |w: &str| match norm_unit(w).as_str() {
@@ -336,13 +371,13 @@ fn check_accel_cell(
             Some(f) => f,
             None if velocity_or_length(&u) && (in_brackets || u.contains('/')) => {
                 return Err(format!(
-                    "the acceleration column {cell:?} is in {u}, a unit of velocity or length, \
+                    "the acceleration column {cell_q} is in {u}, a unit of velocity or length, \
                      not of acceleration; give the acceleration record ({ACCEPTED_UNITS})"
                 ));
             }
             None if in_brackets || u == "MG" || looks_like_accel_unit(&u) => {
                 return Err(format!(
-                    "unknown units {u} in the acceleration column {cell:?}; {ACCEPTED_UNITS}"
+                    "unknown units {u} in the acceleration column {cell_q}; {ACCEPTED_UNITS}"
                 ));
             }
             None => continue,
@@ -351,23 +386,122 @@ fn check_accel_cell(
             && *g != factor
         {
             return Err(format!(
-                "the acceleration column {cell:?} names two different units, {prev} and {u}"
+                "the acceleration column {cell_q} names two different units, {prev} and {u}"
             ));
         }
         found = Some((factor, u));
     }
     match found {
-        Some((f, u)) if f != units.factor() => Err(format!(
-            "the header names the units {u} but the record is read in {} (csv_units / \
-             --csv-units): set csv_units to match (\"g\" or \"m/s2\"), or convert the file",
-            units.name()
+        Some((f, u)) if f != units.factor() => Err(units_disagree("the header", &u, f, units)),
+        _ => Ok(()),
+    }
+}
+
+/// The message for a header or comment (`what`) naming the units `named` (factor `factor` to
+/// m/s²) while the file is read in `units`: what to set, or that the file must be converted
+/// (the text formats are read in g or m/s² only).
+pub(super) fn units_disagree(what: &str, named: &str, factor: Real, units: AccelUnits) -> String {
+    let fix = match [AccelUnits::G, AccelUnits::MetresPerSecondSquared]
+        .into_iter()
+        .find(|u| u.factor() == factor)
+    {
+        Some(u) => format!(
+            "set csv_units = \"{0}\" in [ground_motion] (or --csv-units {0}) to read it in {0}",
+            u.name()
+        ),
+        None => "the text formats (CSV, columns, one column) are read in g or m/s2 only: convert \
+                 the values of the file to g or m/s2 and set csv_units / --csv-units to match"
+            .to_string(),
+    };
+    format!(
+        "{what} names the units {named} but the record is read in {} (csv_units / \
+         --csv-units): {fix}",
+        units.name()
+    )
+}
+
+/// Checks every `#` comment line of a text record ([`check_comment`]), naming the file and line.
+fn check_comments(
+    text: &str,
+    source_name: &str,
+    units: AccelUnits,
+) -> Result<(), GroundMotionError> {
+    for (k, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.starts_with('#') {
+            check_comment(line, units).map_err(|m| parse_err(source_name, k + 1, m))?;
+        }
+    }
+    Ok(())
+}
+
+/// A `#` comment line of a text record (CSV, columns, one column) is read as a header is: it is
+/// refused if it names a velocity or displacement (and no acceleration), a unit of velocity in
+/// brackets (`(cm/s)`), units this reader does not know (`cm/s/s` and the like, or `units`
+/// followed by none it knows), or acceleration units other than the `units` the values are
+/// read in (`# a (gal)` over values read in g). Units are found as in an `.AT2` header: a `g`
+/// counts after `of`, `in`, `units` or in brackets only.
+fn check_comment(line: &str, units: AccelUnits) -> Result<(), String> {
+    let body = line.trim_start_matches('#');
+    let upper = body.to_ascii_uppercase();
+    let words: Vec<&str> = upper
+        .split(|c: char| !c.is_ascii_alphanumeric())
+        .filter(|w| !w.is_empty())
+        .collect();
+    if !words.iter().any(|w| w.starts_with("ACC"))
+        && let Some(kind) = words.iter().find_map(|w| quantity_word(w))
+    {
+        return Err(format!(
+            "the comment line {} says {kind}: the record must be an acceleration time series; \
+             give the acceleration record",
+            quote(line)
+        ));
+    }
+    let (_, bracketed) = split_cell(body);
+    if let Some(u) = bracketed
+        .iter()
+        .map(|b| norm_unit(b))
+        .find(|u| u.contains('/') && velocity_or_length(u))
+    {
+        return Err(format!(
+            "the comment line {} names {u}, a unit of velocity, not of acceleration; give the \
+             acceleration record ({ACCEPTED_UNITS})",
+            quote(line)
+        ));
+    }
+    match line_units(body)? {
+        Some((f, u)) if f != units.factor() => Err(units_disagree(
+            &format!("the comment line {}", quote(line)),
+            &u,
+            f,
+            units,
         )),
         _ => Ok(()),
     }
 }
 
+/// Whether a header cell names the time (`t`, `time`, `t_s`, `time (s)`).
+fn is_time_name(cell: &str) -> bool {
+    let (words, _) = split_cell(cell);
+    words
+        .first()
+        .is_some_and(|w| matches!(w.as_str(), "T" | "TIME" | "TIMES"))
+}
+
+/// Whether a header cell names an acceleration (`a`, `acc`, `accel`, `acceleration`, `ag`).
+fn is_accel_name(cell: &str) -> bool {
+    let (words, _) = split_cell(cell);
+    words.first().is_some_and(|w| {
+        matches!(
+            w.as_str(),
+            "A" | "AG" | "ACC" | "ACCEL" | "ACCELERATION" | "ACCELERATIONS"
+        )
+    })
+}
+
 /// The cells of a `#` comment line over columns `t a` if it looks like a header of them: two
-/// cells (a bracketed unit belongs to the word before it), the first `t` or `time`.
+/// cells (a bracketed unit belongs to the word before it), the first `t` or `time` (or the
+/// second, after an acceleration: a swapped header, refused).
 fn comment_header_cells(line: &str) -> Option<Vec<String>> {
     let body = line.trim().strip_prefix('#')?.trim();
     let mut cells: Vec<String> = Vec::new();
@@ -380,7 +514,9 @@ fn comment_header_cells(line: &str) -> Option<Vec<String>> {
             _ => cells.push(tok.to_string()),
         }
     }
-    let first = cells.first()?.to_ascii_lowercase();
-    let name = first.split(['_', '(', '[', ' ']).next().unwrap_or("");
-    (cells.len() == 2 && matches!(name, "t" | "time")).then_some(cells)
+    let looks = match &cells[..] {
+        [t, a] => is_time_name(t) || (is_accel_name(t) && is_time_name(a)),
+        _ => false,
+    };
+    looks.then_some(cells)
 }

@@ -29,6 +29,7 @@ mod lemke_degenerate;
 mod physics_check;
 mod props;
 mod record_formats;
+mod record_misreads;
 mod shapes;
 mod sim;
 mod sim_bearings;

@@ -28,6 +28,16 @@ fn load_record(
         return Ok(None);
     }
     let at = || src.at(ground(key));
+    if spec_t.is_empty() {
+        return Err(src.key_error(
+            format!(
+                "{key} is empty at {}: give a record file (relative to the scenario), \
+                 builtin:ELC180 / builtin:ELC270, or \"none\"",
+                at()
+            ),
+            &[ground(key)],
+        ));
+    }
     let wrap = |error| ScenarioError::Record {
         at: at(),
         error: Box::new(error),
@@ -110,8 +120,10 @@ impl Scenario {
 
     /// How the files given on the command line (`--record`, `--records`) are read: text formats
     /// in `units` (`--csv-units`) if given, else the scenario's `csv_units`; one-column files with
-    /// the interval of [`Scenario::with_record_dt`]. Errors: an invalid `csv_units` (key and
-    /// line) or `--record-dt`.
+    /// the interval of [`Scenario::with_record_dt`] if given, else the scenario's `record_dt`
+    /// (a default: files with their own times are read without it,
+    /// [`ReadOptions::dt_default`]). Errors: an invalid `csv_units` (key and line), `record_dt`
+    /// or `--record-dt`.
     pub fn override_reading(
         &self,
         units: Option<AccelUnits>,
@@ -121,14 +133,21 @@ impl Scenario {
             message,
             at: Vec::new(),
         })?;
+        let scenario = self.scenario_reading()?;
+        let (dt, dt_from, dt_default) = match (self.record_dt, scenario.dt) {
+            (Some(dt), _) => (Some(dt), "--record-dt".to_string(), false),
+            (None, Some(dt)) => (Some(dt), scenario.dt_from, true),
+            (None, None) => (None, "--record-dt".to_string(), false),
+        };
         Ok(ReadOptions {
             units: units.unwrap_or(own),
             units_from: match units {
                 Some(_) => "--csv-units".into(),
                 None => from.into(),
             },
-            dt: self.record_dt,
-            dt_from: "--record-dt".into(),
+            dt,
+            dt_from,
+            dt_default,
         })
     }
 
@@ -143,6 +162,7 @@ impl Scenario {
             units_from: from.into(),
             dt,
             dt_from: format!("record_dt ({})", src.at(ground("record_dt"))),
+            dt_default: false,
         })
     }
 }
@@ -163,32 +183,7 @@ pub(in crate::sim::scenario) fn build_ground(
                 path: p.display().to_string(),
                 error: Box::new(error),
             };
-            let r = match p.to_str().and_then(|s| s.strip_prefix("builtin:")) {
-                // the embedded El Centro components, as in [ground_motion] record_y
-                Some(b) => {
-                    let g = crate::ground_motion::el_centro_1940();
-                    let io = |message: &str| crate::ground_motion::GroundMotionError::Io {
-                        path: p.display().to_string(),
-                        message: message.into(),
-                    };
-                    if reading.dt.is_some() {
-                        return Err(fail(io(
-                            "--record-dt does not apply to a built-in record (it has its own DT)",
-                        )));
-                    }
-                    match b {
-                        "ELC180" => g.along_y,
-                        "ELC270" => g.along_x,
-                        _ => None,
-                    }
-                    .ok_or_else(|| {
-                        fail(io(
-                            "unknown built-in record: use builtin:ELC180 or builtin:ELC270",
-                        ))
-                    })?
-                }
-                None => Record::from_path_with(p, &reading).map_err(fail)?,
-            };
+            let r = Record::open_with(p, &reading).map_err(fail)?;
             (Some(r), None, [p.display().to_string(), "none".into()])
         }
         None => {
