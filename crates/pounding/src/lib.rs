@@ -3,6 +3,7 @@
 //! The library follows the binding physics specification (`spec/physics.md` of the project's
 //! shared data, cited below as "spec §N"). It is organised like a paper:
 //!
+//! * [`assessment`] — fragility studies: record sets at IM stripes, limit states per run.
 //! * [`math`] — type aliases over `nalgebra` and small planar helpers (scalar cross product, rotations).
 //! * [`lcp`] — the linear complementarity problem `w = M z + q, z ≥ 0, w ≥ 0, zᵀw = 0`, a
 //!   lexicographic Lemke solver (with fixed-size kernels for the tiny impact LCPs) and exhaustive
@@ -37,6 +38,7 @@
 #![warn(missing_docs)]
 
 pub mod analytic;
+pub mod assessment;
 pub mod contact;
 pub mod contact_law;
 pub mod element;
