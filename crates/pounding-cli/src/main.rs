@@ -6,6 +6,7 @@ use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
 mod cmd_compare;
+mod cmd_fragility;
 mod cmd_impact;
 mod cmd_lcp;
 mod cmd_simulate;
@@ -40,6 +41,8 @@ enum Command {
     Compare(cmd_compare::Args),
     /// Elastic response spectra (PSA, PSV, SD) of records, and RotD50/RotD100 of horizontal pairs.
     Spectrum(cmd_spectrum::Args),
+    /// Fragility study of a bridge: a record set at IM stripes, limit states, fitted lognormal curves.
+    Fragility(cmd_fragility::Args),
 }
 
 /// The message of a panic raised by `print!`/`eprint!` when standard output or error cannot be
@@ -61,6 +64,7 @@ fn run(cli: Cli) -> ExitCode {
         Command::Simulate(a) => cmd_simulate::run(a),
         Command::Compare(a) => cmd_compare::run(a),
         Command::Spectrum(a) => cmd_spectrum::run(a),
+        Command::Fragility(a) => cmd_fragility::run(a),
     };
     match result {
         Ok(code) => code,
