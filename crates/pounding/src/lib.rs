@@ -30,6 +30,8 @@
 //!   Moreau–Jean time stepping with the impact LCP at every step, abutments, batch runs.
 //! * [`shard`] — `--shard K/N`: which rows of a study or runs of a batch one process computes.
 //! * [`toml_schema`] — strict table and fixed-length array shapes for scenario files.
+//! * [`fragility`] — lognormal fragility functions fitted to stripe counts (maximum likelihood) and
+//!   IDA data (method of moments), record bootstrap, `fragility.csv`/`.json` writers (issue 13).
 //! * [`output`] — deterministic number formatting and atomic file output shared by every writer.
 //! * [`input`] — input files read within documented size limits, strict JSON, the thread limit.
 //!
@@ -42,6 +44,7 @@ pub mod assessment;
 pub mod contact;
 pub mod contact_law;
 pub mod element;
+pub mod fragility;
 pub mod geometry;
 pub mod ground_motion;
 pub mod impact;

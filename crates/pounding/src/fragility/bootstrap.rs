@@ -1,0 +1,209 @@
+//! Bootstrap confidence intervals over records.
+//!
+//! The records are the independent units of a fragility study (one record's outcomes at different
+//! stripes are correlated: the same record drives every run). Each bootstrap replicate draws
+//! `n_records` records **with replacement** (a record drawn twice counts twice), refits the same
+//! way as the data ([`super::fit_stripes`] or [`super::fit_ida`]) and keeps `(θ_b, β_b)`. The
+//! intervals are percentile intervals (Efron & Tibshirani 1993, §13.3) of the replicates with a
+//! finite fit, at the quantiles `(1 − level)/2` and `(1 + level)/2` (linear interpolation between
+//! order statistics, Hyndman & Fan type 7); the band is the same, pointwise, of
+//! `Φ((ln x − ln θ_b)/β_b)` at each requested IM `x`.
+//!
+//! Replicates without a finite fit (e.g. a resample that happens to be perfectly separated) are
+//! excluded and **counted** ([`Bootstrap::failed`]); the intervals describe the others. No intervals
+//! are given when the data themselves have no fit, or when fewer than two replicates have one.
+//!
+//! Determinism: replicate `b` draws from `ChaCha8Rng::seed_from_u64(seed)` switched to stream `b`
+//! (`set_stream`), so each replicate's draws depend only on `(seed, b)`, and the replicates are
+//! collected in order: the result is identical for any number of threads.
+
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use rayon::prelude::*;
+
+use super::mle::fit_counts;
+use super::moments::fit_values;
+use super::normal::cdf;
+use super::{Fit, FragilityError, IdaData, StripeData, check_positive};
+use crate::math::Real;
+
+/// How to bootstrap.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BootstrapSettings {
+    /// Number of replicates (≥ 1; 1,000 is usual).
+    pub samples: usize,
+    /// Seed of the random draws.
+    pub seed: u64,
+    /// Confidence level of the intervals, in (0, 1) (0.95 for 95 %).
+    pub level: Real,
+}
+
+impl Default for BootstrapSettings {
+    fn default() -> Self {
+        BootstrapSettings {
+            samples: 1000,
+            seed: 1,
+            level: 0.95,
+        }
+    }
+}
+
+impl BootstrapSettings {
+    /// Refuses `samples = 0` and a level outside (0, 1).
+    pub fn validate(&self) -> Result<(), FragilityError> {
+        if self.samples == 0 {
+            return Err(FragilityError::BadSetting {
+                field: "samples",
+                value: "0".into(),
+                reason: "must be at least 1",
+            });
+        }
+        if !(self.level > 0.0 && self.level < 1.0) {
+            return Err(FragilityError::BadSetting {
+                field: "level",
+                value: crate::output::float_token(self.level),
+                reason: "must be strictly between 0 and 1 (0.95 for 95 %)",
+            });
+        }
+        Ok(())
+    }
+}
+
+/// One IM of the pointwise band.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BandPoint {
+    /// The IM.
+    pub im: Real,
+    /// `P(exceed | im)` of the fit to the data (`None` without a fit).
+    pub p: Option<Real>,
+    /// Lower and upper percentile of the replicates' `P(exceed | im)` (`None` without intervals).
+    pub interval: Option<(Real, Real)>,
+}
+
+/// The result of a bootstrap.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Bootstrap {
+    /// The fit to the data themselves.
+    pub fit: Fit,
+    /// Number of replicates drawn.
+    pub samples: usize,
+    /// Replicates without a finite fit (excluded from the intervals).
+    pub failed: usize,
+    /// The confidence level.
+    pub level: Real,
+    /// Percentile interval of `θ` (`None` when the data have no fit or fewer than two replicates do).
+    pub theta: Option<(Real, Real)>,
+    /// Percentile interval of `β` (same condition).
+    pub beta: Option<(Real, Real)>,
+    /// Pointwise band of `P(exceed | IM)` at the requested IMs, in the order given.
+    pub band: Vec<BandPoint>,
+}
+
+/// Bootstraps a multiple-stripe fit over records (rows of `exceeded`); `band_im` are the IMs of
+/// the pointwise band (finite, > 0; may be empty).
+pub fn bootstrap_stripes(
+    d: &StripeData,
+    settings: &BootstrapSettings,
+    band_im: &[Real],
+) -> Result<Bootstrap, FragilityError> {
+    d.validate()?;
+    settings.validate()?;
+    check_positive("band_im", band_im)?;
+    let fit = fit_counts(&d.counts());
+    let rows = d.exceeded.len();
+    let fits = replicates(settings, rows, |pick| {
+        let mut counts: Vec<(Real, usize, usize)> = d.im.iter().map(|&x| (x, 0, 0)).collect();
+        for &r in pick {
+            for (c, o) in counts.iter_mut().zip(&d.exceeded[r]) {
+                if let Some(e) = o {
+                    c.1 += 1;
+                    c.2 += usize::from(*e);
+                }
+            }
+        }
+        fit_counts(&counts)
+    });
+    Ok(summarise(fit, settings, band_im, &fits))
+}
+
+/// Bootstraps an IDA (method-of-moments) fit over records; `band_im` as in [`bootstrap_stripes`].
+pub fn bootstrap_ida(
+    d: &IdaData,
+    settings: &BootstrapSettings,
+    band_im: &[Real],
+) -> Result<Bootstrap, FragilityError> {
+    d.validate()?;
+    settings.validate()?;
+    check_positive("band_im", band_im)?;
+    let fit = fit_values(&d.im_at_exceedance);
+    let fits = replicates(settings, d.im_at_exceedance.len(), |pick| {
+        let sample: Vec<Option<Real>> = pick.iter().map(|&r| d.im_at_exceedance[r]).collect();
+        fit_values(&sample)
+    });
+    Ok(summarise(fit, settings, band_im, &fits))
+}
+
+/// Fits of `settings.samples` resamples of `rows` records, in replicate order.
+fn replicates<F>(settings: &BootstrapSettings, rows: usize, refit: F) -> Vec<Fit>
+where
+    F: Fn(&[usize]) -> Fit + Sync,
+{
+    (0..settings.samples)
+        .into_par_iter()
+        .map_init(Vec::new, |pick: &mut Vec<usize>, b| {
+            let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
+            rng.set_stream(b as u64);
+            pick.clear();
+            pick.extend((0..rows).map(|_| rng.random_range(0..rows)));
+            refit(pick)
+        })
+        .collect()
+}
+
+fn summarise(fit: Fit, settings: &BootstrapSettings, band_im: &[Real], fits: &[Fit]) -> Bootstrap {
+    let ok: Vec<(Real, Real)> = fits.iter().filter_map(Fit::params).collect();
+    let failed = fits.len() - ok.len();
+    let lo_q = 0.5 * (1.0 - settings.level);
+    let hi_q = 0.5 * (1.0 + settings.level);
+    let have = fit.params().is_some() && ok.len() >= 2;
+    let interval = |mut v: Vec<Real>| -> Option<(Real, Real)> {
+        have.then(|| {
+            v.sort_by(Real::total_cmp);
+            (percentile(&v, lo_q), percentile(&v, hi_q))
+        })
+    };
+    let theta = interval(ok.iter().map(|p| p.0).collect());
+    let beta = interval(ok.iter().map(|p| p.1).collect());
+    let band = band_im
+        .iter()
+        .map(|&x| BandPoint {
+            im: x,
+            p: fit.probability(x),
+            interval: interval(
+                ok.iter()
+                    .map(|&(t, b)| cdf((x.ln() - t.ln()) / b))
+                    .collect(),
+            ),
+        })
+        .collect();
+    Bootstrap {
+        fit,
+        samples: settings.samples,
+        failed,
+        level: settings.level,
+        theta,
+        beta,
+        band,
+    }
+}
+
+/// The `q`-quantile of sorted values, linear interpolation between order statistics (type 7).
+pub fn percentile(sorted: &[Real], q: Real) -> Real {
+    let h = (sorted.len() - 1) as Real * q;
+    let i = h.floor() as usize;
+    let f = h - i as Real;
+    match sorted.get(i + 1) {
+        Some(&next) if f > 0.0 => sorted[i] + f * (next - sorted[i]),
+        _ => sorted[i],
+    }
+}
