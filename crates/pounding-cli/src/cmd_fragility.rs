@@ -8,7 +8,9 @@ use clap::Parser;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use pounding::assessment::im::{ImSpec, PeriodInfo, fundamental_period};
 use pounding::assessment::limit::{BoundLimit, bind};
-use pounding::assessment::run::{Plan, RunRow, run_all, runs_csv};
+use pounding::assessment::run::{Plan, RunRow, fit_limit_state, run_all, runs_csv};
+use pounding::fragility::{BootstrapSettings, FragilityRow, fragility_csv, fragility_json};
+use pounding::math::Real;
 use pounding::assessment::{FragilitySettings, PeriodChoice};
 use pounding::ground_motion::set::RecordSet;
 use pounding::output::write_atomic;
@@ -46,7 +48,7 @@ pub struct Args {
 
 /// Everything read and checked before any run.
 pub(crate) struct Study {
-    pub scenario: Scenario,
+    pub origin: String,
     pub setup: pounding::sim::scenario::BridgeSetup,
     pub settings: FragilitySettings,
     pub set: RecordSet,
@@ -54,6 +56,13 @@ pub(crate) struct Study {
     pub limits: Vec<BoundLimit>,
     pub spec: ImSpec,
     pub period: Option<PeriodInfo>,
+}
+
+impl Study {
+    /// The scenario's name.
+    pub fn scenario_origin(&self) -> &str {
+        &self.origin
+    }
 }
 
 /// Reads the scenario, its `[fragility]` settings, the record set and binds the limit states.
@@ -96,7 +105,7 @@ fn read(args: &Args) -> Result<Study> {
     };
     let period = (settings.im == pounding::assessment::ImKind::Sa).then_some(info).flatten();
     Ok(Study {
-        scenario,
+        origin: scenario.origin().to_string(),
         setup,
         settings,
         set,
@@ -153,8 +162,9 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let runs_s = t_runs.elapsed().as_secs_f64();
     let csv = runs_csv(&st.set, &plan, &st.limits, &rows);
     let excluded = rows.iter().filter(|r| !r.trusted()).count();
-    write_outputs(&args.out, &st, &plan, &rows, &csv, (runs_s, t0, total, &pool))?;
-    print_table(&st, &rows);
+    let fits = pool.install(|| fit_all(&st, &plan, &rows))?;
+    write_outputs(&args.out, &st, &plan, &rows, &fits, &csv, (runs_s, t0, total, &pool))?;
+    print_table(&fits);
     if excluded > 0 {
         eprintln!(
             "{excluded} of {total} runs failed or are not trustworthy (status in runs.csv): \
@@ -169,8 +179,9 @@ pub fn run(args: Args) -> Result<ExitCode> {
 fn write_outputs(
     out: &Path,
     st: &Study,
-    _plan: &Plan,
-    _rows: &[RunRow],
+    plan: &Plan,
+    rows: &[RunRow],
+    fits: &Fits,
     csv: &str,
     (runs_s, t0, runs, pool): (f64, Instant, usize, &rayon::ThreadPool),
 ) -> Result<()> {
@@ -181,7 +192,20 @@ fn write_outputs(
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
     wr("runs.csv", csv.as_bytes())?;
-    let _ = st;
+    wr("fragility.csv", fragility_csv(&fits.rows).as_bytes())?;
+    let mut j = fragility_json(&fits.rows);
+    if let Some(o) = j.as_object_mut() {
+        o.insert("im".into(), json!(st.spec.label()));
+        o.insert("period".into(), json!(st.period.as_ref().map(PeriodInfo::describe)));
+        o.insert("records".into(), json!(st.set.records.len()));
+        o.insert("runs".into(), json!(rows.len()));
+        o.insert("runs_excluded".into(), json!(rows.iter().filter(|r| !r.trusted()).count()));
+    }
+    pounding::output::json_without_negative_zero(&mut j);
+    wr("fragility.json", (serde_json::to_string_pretty(&j)? + "\n").as_bytes())?;
+    crate::fragility_plot::plot(&out.join("fragility.png"), st, plan, rows, fits)
+        .map_err(|e| anyhow!("plotting: {e}"))?;
+    wr("report.html", crate::fragility_plot::report(st, plan, rows, fits).as_bytes())?;
     let timing = json!({
         "runs_s": runs_s,
         "wall_time_s": t0.elapsed().as_secs_f64(),
@@ -195,12 +219,60 @@ fn write_outputs(
     .map_err(|e| anyhow!("{e:#}"))
 }
 
-/// Stdout: per limit state the exceedance counts (the fit's table once wired).
-fn print_table(st: &Study, rows: &[RunRow]) {
-    println!("{:<24} {:>9} {:>9}", "limit state", "exceeded", "counted");
-    for (l, lim) in st.limits.iter().enumerate() {
-        let counted = rows.iter().filter(|r| r.limits[l].0.is_some()).count();
-        let ex = rows.iter().filter(|r| r.limits[l].0 == Some(true)).count();
-        println!("{:<24} {ex:>9} {counted:>9}", lim.state.name);
+/// The fits of every limit state and the IMs of the bootstrap band.
+pub(crate) struct Fits {
+    pub rows: Vec<FragilityRow>,
+    pub band_im: Vec<Real>,
+}
+
+/// Fits every limit state ([`fit_limit_state`]); the band spans the IMs run, 60 points evenly
+/// spaced in log IM.
+fn fit_all(st: &Study, plan: &Plan, rows: &[RunRow]) -> Result<Fits> {
+    let (lo, hi) = rows
+        .iter()
+        .fold((Real::INFINITY, 0.0 as Real), |(a, b), r| (a.min(r.im_g), b.max(r.im_g)));
+    let band_im: Vec<Real> = (0..60)
+        .map(|k| (lo.ln() + (hi / lo).ln() * k as Real / 59.0).exp())
+        .filter(|x| x.is_finite() && *x > 0.0)
+        .collect();
+    let b = BootstrapSettings {
+        samples: st.settings.bootstrap,
+        seed: st.settings.seed,
+        level: st.settings.level,
+    };
+    let fits = st
+        .limits
+        .iter()
+        .enumerate()
+        .map(|(l, lim)| fit_limit_state(&lim.state.name, plan, rows, l, &b, &band_im))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| anyhow!("fitting: {e}"))?;
+    Ok(Fits { rows: fits, band_im })
+}
+
+/// `lo–hi` of an interval, or `-`.
+fn interval(i: Option<(Real, Real)>) -> String {
+    i.map_or("-".into(), |(a, b)| format!("{a:.4}-{b:.4}"))
+}
+
+/// Stdout: per limit state θ, β, their intervals and the counts.
+fn print_table(fits: &Fits) {
+    println!(
+        "{:<20} {:<14} {:>9} {:>7} {:>17} {:>15} {:>5}",
+        "limit state", "status", "theta_g", "beta", "theta interval", "beta interval", "runs"
+    );
+    for r in &fits.rows {
+        let (t, b) = r.fit.params().map_or(("-".into(), "-".into()), |(t, b)| {
+            (format!("{t:.4}"), format!("{b:.3}"))
+        });
+        let bs = r.bootstrap.as_ref();
+        println!(
+            "{:<20} {:<14} {t:>9} {b:>7} {:>17} {:>15} {:>5}",
+            r.limit_state,
+            r.fit.status(),
+            interval(bs.and_then(|b| b.theta)),
+            interval(bs.and_then(|b| b.beta)),
+            r.n_runs
+        );
     }
 }

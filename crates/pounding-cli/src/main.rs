@@ -13,6 +13,7 @@ mod cmd_simulate;
 mod cmd_spectrum;
 mod cmd_study;
 mod figures;
+mod fragility_plot;
 mod plot_style;
 mod plots;
 mod report;

@@ -214,36 +214,105 @@ pub fn exceedances(rows: &[RunRow], entries: usize, stripes: usize, l: usize) ->
     out
 }
 
-/// IDA: the IM \[g\] at first exceedance of limit state `l` for each entry, from its runs in
-/// increasing scale. Between the last run not exceeding (ratio `r₀ < 1` at `IM₀`) and the first
-/// exceeding (`r₁` at `IM₁`) the ratio is interpolated linearly in IM to where it reaches 1,
+/// IDA: what the runs of one entry say about its first exceedance of a limit state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum FirstExceedance {
+    /// Exceeded first at this IM \[g\] (interpolated, [`first_exceedance`]).
+    At(Real),
+    /// Never exceeded within the scales run (a censored record).
+    NotWithin,
+    /// An excluded run comes before the first exceedance: the crossing is unknown and the entry
+    /// is left out of the fit.
+    Unknown,
+}
+
+/// IDA: the first exceedance of limit state `l` for each entry, from its runs in increasing
+/// scale. Between the last run not exceeding (ratio `r₀` at `IM₀`) and the first exceeding
+/// (`r₁` at `IM₁`) the ratio is interpolated linearly in IM to where it reaches 1,
 /// `IM₀ + (1 − r₀)/(r₁ − r₀) (IM₁ − IM₀)`, clamped to `[IM₀, IM₁]` (unseating, whose flag is
-/// checked per end, may cross outside); exceeded at the smallest scale: that run's IM (an upper
-/// bound). `None`: never exceeded within the scales, or an excluded run before the first
-/// exceedance (the crossing is unknown).
-pub fn first_exceedance(rows: &[RunRow], entries: usize, stripes: usize, l: usize) -> Vec<Option<Real>> {
-    let mut out = vec![None; entries];
-    for (a, o) in out.iter_mut().enumerate() {
-        let runs: Vec<&RunRow> = (0..stripes).map(|b| &rows[a * stripes + b]).collect();
-        let mut prev: Option<(Real, Real)> = None;
-        for r in runs {
-            match r.limits[l].0 {
-                None => break,
-                Some(false) => prev = Some((r.im_g, r.limits[l].1)),
-                Some(true) => {
-                    let (im1, r1) = (r.im_g, r.limits[l].1);
-                    *o = Some(match prev {
-                        None => im1,
-                        Some((im0, r0)) => {
-                            let f = (1.0 - r0) / (r1 - r0);
-                            let x = im0 + f * (im1 - im0);
-                            if x.is_finite() { x.clamp(im0, im1) } else { im1 }
-                        }
-                    });
-                    break;
+/// checked per end, may cross outside); exceeded already at the smallest scale: that run's IM
+/// (an upper bound of the crossing).
+pub fn first_exceedance(
+    rows: &[RunRow],
+    entries: usize,
+    stripes: usize,
+    l: usize,
+) -> Vec<FirstExceedance> {
+    (0..entries)
+        .map(|a| {
+            let mut prev: Option<(Real, Real)> = None;
+            for r in &rows[a * stripes..(a + 1) * stripes] {
+                let (ex, r1) = r.limits[l];
+                match ex {
+                    None => return FirstExceedance::Unknown,
+                    Some(false) => prev = Some((r.im_g, r1)),
+                    Some(true) => {
+                        let im1 = r.im_g;
+                        return FirstExceedance::At(match prev {
+                            None => im1,
+                            Some((im0, r0)) => {
+                                let x = im0 + (1.0 - r0) / (r1 - r0) * (im1 - im0);
+                                if x.is_finite() { x.clamp(im0, im1) } else { im1 }
+                            }
+                        });
+                    }
                 }
             }
+            FirstExceedance::NotWithin
+        })
+        .collect()
+}
+
+/// The fit of one limit state: multiple stripes by maximum likelihood
+/// ([`crate::fragility::bootstrap_stripes`]), IDA by the method of moments on the IMs at first
+/// exceedance ([`crate::fragility::bootstrap_ida`]; entries with an unknown crossing are left
+/// out). With `bootstrap.samples = 0` no intervals. `band_im`: the IMs of the bootstrap band.
+pub fn fit_limit_state(
+    name: &str,
+    plan: &Plan,
+    rows: &[RunRow],
+    l: usize,
+    bootstrap: &crate::fragility::BootstrapSettings,
+    band_im: &[Real],
+) -> Result<crate::fragility::FragilityRow, crate::fragility::FragilityError> {
+    use crate::fragility::{FragilityRow, IdaData, StripeData, bootstrap_ida, bootstrap_stripes};
+    let (entries, ns) = (plan.entry_im.len(), plan.values().len());
+    match &plan.stripes {
+        Stripes::Levels(levels) => {
+            let d = StripeData {
+                im: levels.clone(),
+                exceeded: exceedances(rows, entries, ns, l),
+            };
+            let b = (bootstrap.samples > 0)
+                .then(|| bootstrap_stripes(&d, bootstrap, band_im))
+                .transpose()?;
+            FragilityRow::from_stripes(name, &d, b)
+        }
+        Stripes::Scales(_) => {
+            let d = IdaData {
+                im_at_exceedance: first_exceedance(rows, entries, ns, l)
+                    .into_iter()
+                    .filter_map(|f| match f {
+                        FirstExceedance::At(x) => Some(Some(x)),
+                        FirstExceedance::NotWithin => Some(None),
+                        FirstExceedance::Unknown => None,
+                    })
+                    .collect(),
+            };
+            if d.im_at_exceedance.is_empty() {
+                return Ok(FragilityRow {
+                    limit_state: name.to_string(),
+                    method: crate::fragility::Method::MomentsIda,
+                    fit: crate::fragility::Fit::NoFiniteMle(crate::fragility::NoMle::TooFewPoints),
+                    bootstrap: None,
+                    n_records: 0,
+                    n_runs: 0,
+                });
+            }
+            let b = (bootstrap.samples > 0)
+                .then(|| bootstrap_ida(&d, bootstrap, band_im))
+                .transpose()?;
+            FragilityRow::from_ida(name, &d, b)
         }
     }
-    out
 }
