@@ -9,10 +9,10 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use pounding::assessment::im::{ImSpec, PeriodInfo, fundamental_period};
 use pounding::assessment::limit::{BoundLimit, bind};
 use pounding::assessment::run::{Plan, RunRow, fit_limit_state, run_all, runs_csv};
-use pounding::fragility::{BootstrapSettings, FragilityRow, fragility_csv, fragility_json};
-use pounding::math::Real;
 use pounding::assessment::{FragilitySettings, PeriodChoice};
+use pounding::fragility::{BootstrapSettings, FragilityRow, fragility_csv, fragility_json};
 use pounding::ground_motion::set::RecordSet;
+use pounding::math::Real;
 use pounding::output::write_atomic;
 use pounding::sim::scenario::Scenario;
 use serde_json::json;
@@ -89,7 +89,11 @@ fn read(args: &Args) -> Result<Study> {
         ),
     };
     let set = RecordSet::load(&set_path)?;
-    let limits = bind(&settings.limit_states, &setup.problem.model, scenario.origin())?;
+    let limits = bind(
+        &settings.limit_states,
+        &setup.problem.model,
+        scenario.origin(),
+    )?;
     let (period, info) = match settings.period {
         PeriodChoice::Given(t) => (t, None),
         PeriodChoice::Model => {
@@ -103,7 +107,9 @@ fn read(args: &Args) -> Result<Study> {
         damping: settings.damping,
         pair: settings.pair_im,
     };
-    let period = (settings.im == pounding::assessment::ImKind::Sa).then_some(info).flatten();
+    let period = (settings.im == pounding::assessment::ImKind::Sa)
+        .then_some(info)
+        .flatten();
     Ok(Study {
         origin: scenario.origin().to_string(),
         setup,
@@ -163,7 +169,15 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let csv = runs_csv(&st.set, &plan, &st.limits, &rows);
     let excluded = rows.iter().filter(|r| !r.trusted()).count();
     let fits = pool.install(|| fit_all(&st, &plan, &rows))?;
-    write_outputs(&args.out, &st, &plan, &rows, &fits, &csv, (runs_s, t0, total, &pool))?;
+    write_outputs(
+        &args.out,
+        &st,
+        &plan,
+        &rows,
+        &fits,
+        &csv,
+        (runs_s, t0, total, &pool),
+    )?;
     print_table(&fits);
     if excluded > 0 {
         eprintln!(
@@ -196,16 +210,41 @@ fn write_outputs(
     let mut j = fragility_json(&fits.rows);
     if let Some(o) = j.as_object_mut() {
         o.insert("im".into(), json!(st.spec.label()));
-        o.insert("period".into(), json!(st.period.as_ref().map(PeriodInfo::describe)));
+        o.insert(
+            "period".into(),
+            json!(st.period.as_ref().map(PeriodInfo::describe)),
+        );
         o.insert("records".into(), json!(st.set.records.len()));
         o.insert("runs".into(), json!(rows.len()));
-        o.insert("runs_excluded".into(), json!(rows.iter().filter(|r| !r.trusted()).count()));
+        o.insert(
+            "runs_excluded".into(),
+            json!(rows.iter().filter(|r| !r.trusted()).count()),
+        );
+        let emp: serde_json::Map<String, serde_json::Value> = st
+            .limits
+            .iter()
+            .enumerate()
+            .map(|(l, lim)| {
+                let pts: Vec<serde_json::Value> = crate::fragility_plot::empirical(plan, rows, l)
+                    .into_iter()
+                    .map(|(im, p, n)| json!({"im_g": im, "runs": n, "fraction": p}))
+                    .collect();
+                (lim.state.name.clone(), json!(pts))
+            })
+            .collect();
+        o.insert("empirical".into(), serde_json::Value::Object(emp));
     }
     pounding::output::json_without_negative_zero(&mut j);
-    wr("fragility.json", (serde_json::to_string_pretty(&j)? + "\n").as_bytes())?;
+    wr(
+        "fragility.json",
+        (serde_json::to_string_pretty(&j)? + "\n").as_bytes(),
+    )?;
     crate::fragility_plot::plot(&out.join("fragility.png"), st, plan, rows, fits)
         .map_err(|e| anyhow!("plotting: {e}"))?;
-    wr("report.html", crate::fragility_plot::report(st, plan, rows, fits).as_bytes())?;
+    wr(
+        "report.html",
+        crate::fragility_plot::report(st, plan, rows, fits).as_bytes(),
+    )?;
     let timing = json!({
         "runs_s": runs_s,
         "wall_time_s": t0.elapsed().as_secs_f64(),
@@ -230,7 +269,9 @@ pub(crate) struct Fits {
 fn fit_all(st: &Study, plan: &Plan, rows: &[RunRow]) -> Result<Fits> {
     let (lo, hi) = rows
         .iter()
-        .fold((Real::INFINITY, 0.0 as Real), |(a, b), r| (a.min(r.im_g), b.max(r.im_g)));
+        .fold((Real::INFINITY, 0.0 as Real), |(a, b), r| {
+            (a.min(r.im_g), b.max(r.im_g))
+        });
     let band_im: Vec<Real> = (0..60)
         .map(|k| (lo.ln() + (hi / lo).ln() * k as Real / 59.0).exp())
         .filter(|x| x.is_finite() && *x > 0.0)
@@ -247,7 +288,10 @@ fn fit_all(st: &Study, plan: &Plan, rows: &[RunRow]) -> Result<Fits> {
         .map(|(l, lim)| fit_limit_state(&lim.state.name, plan, rows, l, &b, &band_im))
         .collect::<Result<Vec<_>, _>>()
         .map_err(|e| anyhow!("fitting: {e}"))?;
-    Ok(Fits { rows: fits, band_im })
+    Ok(Fits {
+        rows: fits,
+        band_im,
+    })
 }
 
 /// `lo–hi` of an interval, or `-`.

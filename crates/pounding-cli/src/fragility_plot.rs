@@ -5,7 +5,9 @@
 //! and the figure.
 
 use crate::cmd_fragility::{Fits, Study};
-use crate::plot_style::{BLUE, DrawResult, FAMILY, GREEN, ORANGE, PURPLE, RED, e, register, save_png, series_legend};
+use crate::plot_style::{
+    BLUE, DrawResult, FAMILY, GREEN, ORANGE, PURPLE, RED, e, register, save_png, series_legend,
+};
 use crate::report::{CSS, esc};
 use plotters::prelude::*;
 use pounding::assessment::run::{Plan, RunRow};
@@ -31,23 +33,42 @@ pub(crate) fn empirical(plan: &Plan, rows: &[RunRow], l: usize) -> Vec<(Real, Re
             };
             let counted: Vec<bool> = runs.iter().filter_map(|r| r.limits[l].0).collect();
             let n = counted.len();
-            (n > 0).then(|| (im, counted.iter().filter(|&&x| x).count() as Real / n as Real, n))
+            (n > 0).then(|| {
+                (
+                    im,
+                    counted.iter().filter(|&&x| x).count() as Real / n as Real,
+                    n,
+                )
+            })
         })
         .collect()
 }
 
 /// Draws `fragility.png`: P(exceed) against the IM (log axis) for every limit state.
-pub(crate) fn plot(path: &Path, st: &Study, plan: &Plan, rows: &[RunRow], fits: &Fits) -> DrawResult {
+pub(crate) fn plot(
+    path: &Path,
+    st: &Study,
+    plan: &Plan,
+    rows: &[RunRow],
+    fits: &Fits,
+) -> DrawResult {
     register();
     let (lo, hi) = (
         fits.band_im.first().copied().unwrap_or(0.01),
         fits.band_im.last().copied().unwrap_or(1.0),
     );
-    let (lo, hi) = if hi > lo { (lo / 1.3, hi * 1.3) } else { (lo / 2.0, lo * 2.0) };
+    let (lo, hi) = if hi > lo {
+        (lo / 1.3, hi * 1.3)
+    } else {
+        (lo / 2.0, lo * 2.0)
+    };
     save_png(path, (1100, 720), |root| {
         root.fill(&WHITE).map_err(e)?;
         let mut chart = ChartBuilder::on(root)
-            .caption("Fragility curves: P(limit state exceeded | IM)", (FAMILY, 24))
+            .caption(
+                "Fragility curves: P(limit state exceeded | IM)",
+                (FAMILY, 24),
+            )
             .margin(14)
             .x_label_area_size(48)
             .y_label_area_size(64)
@@ -57,6 +78,11 @@ pub(crate) fn plot(path: &Path, st: &Study, plan: &Plan, rows: &[RunRow], fits: 
             .configure_mesh()
             .x_desc(format!("{} [g]", st.spec.label()))
             .y_desc("probability of exceedance")
+            .x_label_formatter(&|v| {
+                let t = format!("{v:.3}");
+                t.trim_end_matches('0').trim_end_matches('.').to_string()
+            })
+            .y_label_formatter(&|v| format!("{v:.1}"))
             .label_style((FAMILY, 15))
             .axis_desc_style((FAMILY, 17))
             .light_line_style(RGBColor(235, 235, 235))
@@ -73,7 +99,9 @@ pub(crate) fn plot(path: &Path, st: &Study, plan: &Plan, rows: &[RunRow], fits: 
                 if band.len() > 1 {
                     let mut poly: Vec<(Real, Real)> = band.iter().map(|p| (p.0, p.2)).collect();
                     poly.extend(band.iter().rev().map(|p| (p.0, p.1)));
-                    chart.draw_series(std::iter::once(Polygon::new(poly, c.mix(0.15)))).map_err(e)?;
+                    chart
+                        .draw_series(std::iter::once(Polygon::new(poly, c.mix(0.15))))
+                        .map_err(e)?;
                 }
             }
             let label = format!("{} ({})", f.limit_state, f.fit.status());
@@ -88,7 +116,9 @@ pub(crate) fn plot(path: &Path, st: &Study, plan: &Plan, rows: &[RunRow], fits: 
                         .draw_series(LineSeries::new(pts, c.stroke_width(3)))
                         .map_err(e)?
                         .label(label)
-                        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(3)));
+                        .legend(move |(x, y)| {
+                            PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(3))
+                        });
                 }
                 None => {
                     chart
@@ -106,7 +136,12 @@ pub(crate) fn plot(path: &Path, st: &Study, plan: &Plan, rows: &[RunRow], fits: 
                 )
                 .map_err(e)?;
         }
-        series_legend(&mut chart, SeriesLabelPosition::UpperLeft, BLACK.mix(0.4), 16)
+        series_legend(
+            &mut chart,
+            SeriesLabelPosition::UpperLeft,
+            BLACK.mix(0.4),
+            16,
+        )
     })
 }
 
@@ -133,7 +168,15 @@ pub(crate) fn report(st: &Study, plan: &Plan, rows: &[RunRow], fits: &Fits) -> S
     let mut row = |k: &str, v: String| {
         let _ = writeln!(h, "<tr><th>{}</th><td>{}</td></tr>", esc(k), esc(&v));
     };
-    row("record set", format!("{} ({} entries) {}", st.set_path.display(), st.set.records.len(), st.set.name));
+    row(
+        "record set",
+        format!(
+            "{} ({} entries) {}",
+            st.set_path.display(),
+            st.set.records.len(),
+            st.set.name
+        ),
+    );
     row("intensity measure", st.spec.label());
     if let Some(p) = &st.period {
         row("period", p.describe());
@@ -143,18 +186,32 @@ pub(crate) fn report(st: &Study, plan: &Plan, rows: &[RunRow], fits: &Fits) -> S
             pounding::assessment::Stripes::Levels(_) => "IM levels [g] (multiple stripes)",
             pounding::assessment::Stripes::Scales(_) => "scale factors (IDA)",
         },
-        plan.values().iter().map(|v| pounding::output::float_token(*v)).collect::<Vec<_>>().join(", "),
+        plan.values()
+            .iter()
+            .map(|v| pounding::output::float_token(*v))
+            .collect::<Vec<_>>()
+            .join(", "),
     );
-    row("runs", format!("{} ({excluded} excluded: failed or not trustworthy)", rows.len()));
+    row(
+        "runs",
+        format!(
+            "{} ({excluded} excluded: failed or not trustworthy)",
+            rows.len()
+        ),
+    );
     row(
         "bootstrap",
-        format!("{} resamples over records, seed {}, level {}", st.settings.bootstrap, st.settings.seed, st.settings.level),
+        format!(
+            "{} resamples over records, seed {}, level {}",
+            st.settings.bootstrap, st.settings.seed, st.settings.level
+        ),
     );
     h.push_str("</table>\n<h2>Fits</h2>\n<table>\n<tr><th>limit state</th><th>method</th><th>status</th><th>θ [g]</th><th>β</th><th>θ interval</th><th>β interval</th><th>records</th><th>runs</th></tr>\n");
     for f in &fits.rows {
         let (t, b) = f.fit.params().unzip();
         let bs = f.bootstrap.as_ref();
-        let iv = |i: Option<(Real, Real)>| i.map_or("-".into(), |(a, z)| format!("{a:.4} – {z:.4}"));
+        let iv =
+            |i: Option<(Real, Real)>| i.map_or("-".into(), |(a, z)| format!("{a:.4} – {z:.4}"));
         let _ = writeln!(
             h,
             "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",

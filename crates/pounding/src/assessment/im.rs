@@ -14,8 +14,8 @@
 
 use super::AssessmentError;
 use super::settings::{ImKind, PairIm};
-use crate::ground_motion::{G0, Record};
 use crate::ground_motion::set::SetRecord;
+use crate::ground_motion::{G0, Record};
 use crate::math::Real;
 use crate::sim::bridge::BridgeModel;
 
@@ -61,8 +61,12 @@ fn single(spec: &ImSpec, r: &Record) -> Real {
     match spec.kind {
         ImKind::Pga => r.pga() / G0,
         ImKind::Sa => {
-            let sd =
-                crate::spectrum::peak_displacement(r.times(), r.values(), spec.period, spec.damping);
+            let sd = crate::spectrum::peak_displacement(
+                r.times(),
+                r.values(),
+                spec.period,
+                spec.damping,
+            );
             let w = 2.0 * std::f64::consts::PI / spec.period;
             w * w * sd / G0
         }

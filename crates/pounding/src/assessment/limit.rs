@@ -74,34 +74,37 @@ pub fn bind(
                     .into(),
             ));
         }
-        let capacity = match s.kind {
-            LimitKind::Unseating => shortest_seat(model),
-            LimitKind::JointForce {
-                capacity_n,
-                capacity_ns,
-            } => match (rigid, capacity_n, capacity_ns) {
-                (true, None, Some(c)) | (false, Some(c), None) => c,
-                (true, ..) => {
-                    return Err(err(
+        let capacity =
+            match s.kind {
+                LimitKind::Unseating => shortest_seat(model),
+                LimitKind::JointForce {
+                    capacity_n,
+                    capacity_ns,
+                } => {
+                    match (rigid, capacity_n, capacity_ns) {
+                        (true, None, Some(c)) | (false, Some(c), None) => c,
+                        (true, ..) => {
+                            return Err(err(
                         if capacity_n.is_some() { "capacity_n" } else { "kind" },
                         "the bridge's contact law is rigid (impacts, no contact force): give \
                          capacity_ns, the capacity in peak impulse [N s], and no capacity_n"
                             .into(),
                     ));
-                }
-                (false, ..) => {
-                    return Err(err(
+                        }
+                        (false, ..) => {
+                            return Err(err(
                         if capacity_ns.is_some() { "capacity_ns" } else { "kind" },
                         "the bridge's contact law is a compliance law: give capacity_n, the \
                          capacity in peak contact force [N], and no capacity_ns"
                             .into(),
                     ));
+                        }
+                    }
                 }
-            },
-            LimitKind::BearingDeformation(c)
-            | LimitKind::Rotation(c)
-            | LimitKind::JointOpening(c) => c,
-        };
+                LimitKind::BearingDeformation(c)
+                | LimitKind::Rotation(c)
+                | LimitKind::JointOpening(c) => c,
+            };
         out.push(BoundLimit {
             state: s.clone(),
             capacity,

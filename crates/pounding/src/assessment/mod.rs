@@ -37,7 +37,9 @@ pub mod limit;
 pub mod run;
 pub mod settings;
 
-pub use settings::{FragilitySettings, ImKind, LimitKind, LimitState, PairIm, PeriodChoice, Stripes};
+pub use settings::{
+    FragilitySettings, ImKind, LimitKind, LimitState, PairIm, PeriodChoice, Stripes,
+};
 
 /// Why a fragility study cannot start (bad input). Nothing has been run or written.
 #[derive(Debug, thiserror::Error)]
@@ -73,7 +75,9 @@ pub enum AssessmentError {
     #[error("{0}")]
     Model(String),
     /// An entry whose IM is zero cannot be scaled to a level.
-    #[error("record {id}: its {im} is 0, so it cannot be scaled to an IM level; remove it from the set")]
+    #[error(
+        "record {id}: its {im} is 0, so it cannot be scaled to an IM level; remove it from the set"
+    )]
     ZeroIm {
         /// The entry's id.
         id: String,

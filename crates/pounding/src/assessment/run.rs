@@ -206,7 +206,12 @@ pub fn runs_csv(set: &RecordSet, plan: &Plan, limits: &[BoundLimit], rows: &[Run
 }
 
 /// `exceeded[entry][stripe]` of limit state `l` (`None` for excluded runs).
-pub fn exceedances(rows: &[RunRow], entries: usize, stripes: usize, l: usize) -> Vec<Vec<Option<bool>>> {
+pub fn exceedances(
+    rows: &[RunRow],
+    entries: usize,
+    stripes: usize,
+    l: usize,
+) -> Vec<Vec<Option<bool>>> {
     let mut out = vec![vec![None; stripes]; entries];
     for r in rows {
         out[r.record][r.stripe] = r.limits[l].0;
@@ -252,7 +257,11 @@ pub fn first_exceedance(
                             None => im1,
                             Some((im0, r0)) => {
                                 let x = im0 + (1.0 - r0) / (r1 - r0) * (im1 - im0);
-                                if x.is_finite() { x.clamp(im0, im1) } else { im1 }
+                                if x.is_finite() {
+                                    x.clamp(im0, im1)
+                                } else {
+                                    im1
+                                }
                             }
                         });
                     }

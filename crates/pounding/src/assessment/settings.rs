@@ -208,7 +208,13 @@ impl FragilitySettings {
             Some(v) => match v.get_ref().as_str() {
                 "pga" => ImKind::Pga,
                 "sa" => ImKind::Sa,
-                o => return Err(cx.err(key("im"), v, format!("unknown IM {o:?}: use \"pga\" or \"sa\""))),
+                o => {
+                    return Err(cx.err(
+                        key("im"),
+                        v,
+                        format!("unknown IM {o:?}: use \"pga\" or \"sa\""),
+                    ));
+                }
             },
         };
         let period = match &s.period_s {
@@ -216,27 +222,59 @@ impl FragilitySettings {
             Some(v) => match v.get_ref() {
                 toml::Value::String(m) if m == "model" => PeriodChoice::Model,
                 toml::Value::Float(_) | toml::Value::Integer(_) => {
-                    let t = v.get_ref().as_float().or(v.get_ref().as_integer().map(|i| i as Real)).unwrap_or(Real::NAN);
+                    let t = v
+                        .get_ref()
+                        .as_float()
+                        .or(v.get_ref().as_integer().map(|i| i as Real))
+                        .unwrap_or(Real::NAN);
                     if !(t.is_finite() && t > 0.0) {
-                        return Err(cx.err(key("period_s"), v, format!("invalid period_s = {}: must be finite and > 0", crate::output::float_token(t))));
+                        return Err(cx.err(
+                            key("period_s"),
+                            v,
+                            format!(
+                                "invalid period_s = {}: must be finite and > 0",
+                                crate::output::float_token(t)
+                            ),
+                        ));
                     }
                     PeriodChoice::Given(t)
                 }
-                _ => return Err(cx.err(key("period_s"), v, "must be a period in seconds or \"model\"".into())),
+                _ => {
+                    return Err(cx.err(
+                        key("period_s"),
+                        v,
+                        "must be a period in seconds or \"model\"".into(),
+                    ));
+                }
             },
         };
         if let (ImKind::Pga, Some(v)) = (im, &s.period_s) {
-            return Err(cx.err(key("period_s"), v, "applies to im = \"sa\" only; remove it for im = \"pga\"".into()));
+            return Err(cx.err(
+                key("period_s"),
+                v,
+                "applies to im = \"sa\" only; remove it for im = \"pga\"".into(),
+            ));
         }
         let damping = match &s.damping {
             None => 0.05,
             Some(v) => {
                 let d = *v.get_ref();
                 if !(d.is_finite() && (0.0..1.0).contains(&d)) {
-                    return Err(cx.err(key("damping"), v, format!("invalid damping = {}: must be in [0, 1) (a fraction of critical)", crate::output::float_token(d))));
+                    return Err(cx.err(
+                        key("damping"),
+                        v,
+                        format!(
+                            "invalid damping = {}: must be in [0, 1) (a fraction of critical)",
+                            crate::output::float_token(d)
+                        ),
+                    ));
                 }
                 if im == ImKind::Pga {
-                    return Err(cx.err(key("damping"), v, "applies to im = \"sa\" only; remove it for im = \"pga\"".into()));
+                    return Err(cx.err(
+                        key("damping"),
+                        v,
+                        "applies to im = \"sa\" only; remove it for im = \"pga\"".into(),
+                    ));
                 }
                 d
             }
@@ -246,7 +284,13 @@ impl FragilitySettings {
             Some(v) => match v.get_ref().as_str() {
                 "geomean" => PairIm::GeoMean,
                 "rotd50" => PairIm::RotD50,
-                o => return Err(cx.err(key("pair_im"), v, format!("unknown pair IM {o:?}: use \"geomean\" or \"rotd50\""))),
+                o => {
+                    return Err(cx.err(
+                        key("pair_im"),
+                        v,
+                        format!("unknown pair IM {o:?}: use \"geomean\" or \"rotd50\""),
+                    ));
+                }
             },
         };
         let stripes = match (&s.levels_g, &s.scales) {
@@ -257,43 +301,101 @@ impl FragilitySettings {
         };
         let bootstrap = match &s.bootstrap {
             None => 500,
-            Some(v) => usize::try_from(*v.get_ref()).ok().filter(|&b| b <= 100_000).ok_or_else(|| cx.err(key("bootstrap"), v, format!("invalid bootstrap = {}: must be an integer in [0, 100000]", v.get_ref())))?,
+            Some(v) => usize::try_from(*v.get_ref())
+                .ok()
+                .filter(|&b| b <= 100_000)
+                .ok_or_else(|| {
+                    cx.err(
+                        key("bootstrap"),
+                        v,
+                        format!(
+                            "invalid bootstrap = {}: must be an integer in [0, 100000]",
+                            v.get_ref()
+                        ),
+                    )
+                })?,
         };
         let seed = match &s.seed {
             None => 1,
-            Some(v) => u64::try_from(*v.get_ref()).map_err(|_| cx.err(key("seed"), v, format!("invalid seed = {}: must be >= 0", v.get_ref())))?,
+            Some(v) => u64::try_from(*v.get_ref()).map_err(|_| {
+                cx.err(
+                    key("seed"),
+                    v,
+                    format!("invalid seed = {}: must be >= 0", v.get_ref()),
+                )
+            })?,
         };
         let level = match &s.level {
             None => 0.95,
             Some(v) => {
                 let l = *v.get_ref();
                 if !(l > 0.0 && l < 1.0) {
-                    return Err(cx.err(key("level"), v, format!("invalid level = {}: must be in (0, 1), e.g. 0.95", crate::output::float_token(l))));
+                    return Err(cx.err(
+                        key("level"),
+                        v,
+                        format!(
+                            "invalid level = {}: must be in (0, 1), e.g. 0.95",
+                            crate::output::float_token(l)
+                        ),
+                    ));
                 }
                 l
             }
         };
         let records = match &s.records {
             None => None,
-            Some(v) if v.get_ref().trim().is_empty() => return Err(cx.err(key("records"), v, "empty path".into())),
+            Some(v) if v.get_ref().trim().is_empty() => {
+                return Err(cx.err(key("records"), v, "empty path".into()));
+            }
             Some(v) => Some(PathBuf::from(v.get_ref().trim())),
         };
-        Ok(Self { records, im, period, damping, pair_im, stripes, bootstrap, seed, level, limit_states: Vec::new() })
+        Ok(Self {
+            records,
+            im,
+            period,
+            damping,
+            pair_im,
+            stripes,
+            bootstrap,
+            seed,
+            level,
+            limit_states: Vec::new(),
+        })
     }
 }
 
 /// A list of values that must be finite, > 0 and strictly increasing.
-fn positive_increasing(cx: &Cx, key: &str, v: &Spanned<Vec<Real>>) -> Result<Vec<Real>, AssessmentError> {
+fn positive_increasing(
+    cx: &Cx,
+    key: &str,
+    v: &Spanned<Vec<Real>>,
+) -> Result<Vec<Real>, AssessmentError> {
     let xs = v.get_ref();
     if xs.is_empty() {
         return Err(cx.err(key, v, "must list at least one value".into()));
     }
     for (i, &x) in xs.iter().enumerate() {
         if !(x.is_finite() && x > 0.0) {
-            return Err(cx.err(key, v, format!("invalid value {} (item {}): must be finite and > 0", crate::output::float_token(x), i + 1)));
+            return Err(cx.err(
+                key,
+                v,
+                format!(
+                    "invalid value {} (item {}): must be finite and > 0",
+                    crate::output::float_token(x),
+                    i + 1
+                ),
+            ));
         }
         if i > 0 && x <= xs[i - 1] {
-            return Err(cx.err(key, v, format!("values must be strictly increasing: {} after {}", crate::output::float_token(x), crate::output::float_token(xs[i - 1]))));
+            return Err(cx.err(
+                key,
+                v,
+                format!(
+                    "values must be strictly increasing: {} after {}",
+                    crate::output::float_token(x),
+                    crate::output::float_token(xs[i - 1])
+                ),
+            ));
         }
     }
     Ok(xs.clone())
@@ -305,12 +407,22 @@ fn limit_state(cx: &Cx, i: usize, l: &Spanned<LimitSec>) -> Result<LimitState, A
     let key = |k: &str| format!("limit_state[{i}].{k}");
     let name = s.name.get_ref().trim().to_string();
     if name.is_empty() || name.contains([',', '"', '\n', '\r']) {
-        return Err(cx.err(key("name"), &s.name, "a limit-state name becomes a column: non-empty, no commas, quotes or line breaks".into()));
+        return Err(cx.err(
+            key("name"),
+            &s.name,
+            "a limit-state name becomes a column: non-empty, no commas, quotes or line breaks"
+                .into(),
+        ));
     }
-    let given: Vec<(&str, &Spanned<Real>)> = [("capacity_n", &s.capacity_n), ("capacity_ns", &s.capacity_ns), ("limit_m", &s.limit_m), ("limit_deg", &s.limit_deg)]
-        .into_iter()
-        .filter_map(|(k, v)| v.as_ref().map(|v| (k, v)))
-        .collect();
+    let given: Vec<(&str, &Spanned<Real>)> = [
+        ("capacity_n", &s.capacity_n),
+        ("capacity_ns", &s.capacity_ns),
+        ("limit_m", &s.limit_m),
+        ("limit_deg", &s.limit_deg),
+    ]
+    .into_iter()
+    .filter_map(|(k, v)| v.as_ref().map(|v| (k, v)))
+    .collect();
     let kind_name = s.kind.get_ref().as_str();
     let allowed: &[&str] = match kind_name {
         "unseating" => &[],
@@ -321,26 +433,64 @@ fn limit_state(cx: &Cx, i: usize, l: &Spanned<LimitSec>) -> Result<LimitState, A
     };
     for (k, v) in &given {
         if !allowed.contains(k) {
-            return Err(cx.err(key(k), v, format!("kind = {kind_name:?} does not read {k} (it reads {})", if allowed.is_empty() { "no value".to_string() } else { allowed.join(", ") })));
+            return Err(cx.err(
+                key(k),
+                v,
+                format!(
+                    "kind = {kind_name:?} does not read {k} (it reads {})",
+                    if allowed.is_empty() {
+                        "no value".to_string()
+                    } else {
+                        allowed.join(", ")
+                    }
+                ),
+            ));
         }
         let x = *v.get_ref();
         if !(x.is_finite() && x > 0.0) {
-            return Err(cx.err(key(k), v, format!("invalid {k} = {}: must be finite and > 0", crate::output::float_token(x))));
+            return Err(cx.err(
+                key(k),
+                v,
+                format!(
+                    "invalid {k} = {}: must be finite and > 0",
+                    crate::output::float_token(x)
+                ),
+            ));
         }
     }
-    let get = |k: &str| given.iter().find(|(g, _)| *g == k).map(|(_, v)| *v.get_ref());
-    let need = |k: &str| get(k).ok_or_else(|| cx.err(key("kind"), &s.kind, format!("kind = {kind_name:?} needs {k}")));
+    let get = |k: &str| {
+        given
+            .iter()
+            .find(|(g, _)| *g == k)
+            .map(|(_, v)| *v.get_ref())
+    };
+    let need = |k: &str| {
+        get(k).ok_or_else(|| {
+            cx.err(
+                key("kind"),
+                &s.kind,
+                format!("kind = {kind_name:?} needs {k}"),
+            )
+        })
+    };
     let kind = match kind_name {
         "unseating" => LimitKind::Unseating,
         "joint_force" => {
             if given.is_empty() {
                 return Err(cx.err(key("kind"), &s.kind, "kind = \"joint_force\" needs capacity_n (compliance laws, peak force [N]) or capacity_ns (rigid law, peak impulse [N s])".into()));
             }
-            LimitKind::JointForce { capacity_n: get("capacity_n"), capacity_ns: get("capacity_ns") }
+            LimitKind::JointForce {
+                capacity_n: get("capacity_n"),
+                capacity_ns: get("capacity_ns"),
+            }
         }
         "bearing_deformation" => LimitKind::BearingDeformation(need("limit_m")?),
         "joint_opening" => LimitKind::JointOpening(need("limit_m")?),
         _ => LimitKind::Rotation(need("limit_deg")?),
     };
-    Ok(LimitState { name, kind, at: (format!("limit_state[{i}]"), cx.line(l)) })
+    Ok(LimitState {
+        name,
+        kind,
+        at: (format!("limit_state[{i}]"), cx.line(l)),
+    })
 }

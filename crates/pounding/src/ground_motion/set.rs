@@ -216,8 +216,11 @@ impl RecordSet {
 
     /// The metadata names of all records, sorted (the metadata columns of outputs).
     pub fn meta_keys(&self) -> Vec<String> {
-        let keys: std::collections::BTreeSet<&String> =
-            self.records.iter().flat_map(|r| r.meta.iter().map(|(k, _)| k)).collect();
+        let keys: std::collections::BTreeSet<&String> = self
+            .records
+            .iter()
+            .flat_map(|r| r.meta.iter().map(|(k, _)| k))
+            .collect();
         keys.into_iter().cloned().collect()
     }
 }
@@ -264,7 +267,11 @@ fn entry(cx: &Ctx, i: usize, r: &RecordSec, cache: &mut Cache) -> Result<SetReco
         return Err(problems);
     }
     let mut read = |key: &str, s: &Spanned<String>| -> Option<Record> {
-        let k = (s.get_ref().clone(), opts.dt.map(|d| d.to_string()), opts.units_from.clone());
+        let k = (
+            s.get_ref().clone(),
+            opts.dt.map(|d| d.to_string()),
+            opts.units_from.clone(),
+        );
         let got = cache
             .entry(k)
             .or_insert_with(|| read_component(cx.dir, s.get_ref(), &opts))
