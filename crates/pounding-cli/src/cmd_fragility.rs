@@ -181,7 +181,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
     print_table(&fits);
     if excluded > 0 {
         eprintln!(
-            "{excluded} of {total} runs failed or are not trustworthy (status in runs.csv): \
+            "error: {excluded} of {total} runs failed or are not trustworthy (status in runs.csv): \
              excluded from the fit"
         );
         return Ok(ExitCode::from(1));
