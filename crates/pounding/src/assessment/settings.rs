@@ -293,6 +293,28 @@ impl FragilitySettings {
                 }
             },
         };
+        let (stripes, bootstrap, seed, level, records) = Self::run_keys(cx, s)?;
+        Ok(Self {
+            records,
+            im,
+            period,
+            damping,
+            pair_im,
+            stripes,
+            bootstrap,
+            seed,
+            level,
+            limit_states: Vec::new(),
+        })
+    }
+
+    /// The stripes, the bootstrap settings and the manifest path.
+    #[allow(clippy::type_complexity)]
+    fn run_keys(
+        cx: &Cx,
+        s: &FragSec,
+    ) -> Result<(Stripes, usize, u64, Real, Option<PathBuf>), AssessmentError> {
+        let key = |k: &str| format!("fragility.{k}");
         let stripes = match (&s.levels_g, &s.scales) {
             (Some(l), None) => Stripes::Levels(positive_increasing(cx, &key("levels_g"), l)?),
             (None, Some(sc)) => Stripes::Scales(positive_increasing(cx, &key("scales"), sc)?),
@@ -349,18 +371,7 @@ impl FragilitySettings {
             }
             Some(v) => Some(PathBuf::from(v.get_ref().trim())),
         };
-        Ok(Self {
-            records,
-            im,
-            period,
-            damping,
-            pair_im,
-            stripes,
-            bootstrap,
-            seed,
-            level,
-            limit_states: Vec::new(),
-        })
+        Ok((stripes, bootstrap, seed, level, records))
     }
 }
 
