@@ -302,7 +302,7 @@ fn interval(i: Option<(Real, Real)>) -> String {
 /// Stdout: per limit state θ, β, their intervals and the counts.
 fn print_table(fits: &Fits) {
     println!(
-        "{:<20} {:<14} {:>9} {:>7} {:>17} {:>15} {:>5}",
+        "{:<20} {:<20} {:>9} {:>7} {:>17} {:>15} {:>5}",
         "limit state", "status", "theta_g", "beta", "theta interval", "beta interval", "runs"
     );
     for r in &fits.rows {
@@ -311,7 +311,7 @@ fn print_table(fits: &Fits) {
         });
         let bs = r.bootstrap.as_ref();
         println!(
-            "{:<20} {:<14} {t:>9} {b:>7} {:>17} {:>15} {:>5}",
+            "{:<20} {:<20} {t:>9} {b:>7} {:>17} {:>15} {:>5}",
             r.limit_state,
             r.fit.status(),
             interval(bs.and_then(|b| b.theta)),

@@ -132,7 +132,8 @@ pub(crate) fn plot(
                 .draw_series(
                     empirical(plan, rows, l)
                         .into_iter()
-                        .map(|(x, p, _)| Circle::new((x, p), 5, c.filled())),
+                        // decreasing sizes: coinciding points of several limit states stay visible
+                        .map(|(x, p, _)| Circle::new((x, p), 8 - 2 * (l as i32 % 3), c.filled())),
                 )
                 .map_err(e)?;
         }
