@@ -1,7 +1,7 @@
 //! Fragility fitting (issue 13): Φ accuracy, the stripe MLE against closed form and brute force,
 //! the no-MLE statuses, bootstrap coverage and determinism, bad input, the writers.
 
-use pounding::fragility::normal::{cdf, ln_cdf, pdf, quantile};
+use pounding::fragility::normal::{cdf, ln_cdf, ln_pdf, pdf, quantile};
 use pounding::fragility::{
     Bootstrap, BootstrapSettings, Fit, FragilityError, FragilityRow, IdaData, NoMle, StripeData,
     bootstrap_ida, bootstrap_stripes, fit_ida, fit_stripes, fragility_csv, fragility_json,
@@ -502,4 +502,101 @@ fn writers_give_one_row_per_limit_state_with_nan_and_null_for_missing_numbers() 
     assert!(j["fits"][1]["theta"].is_null() && j["fits"][1]["theta_lo"].is_null());
     assert_eq!(j["fits"][1]["status"], "censored");
     assert_eq!(j["fits"][1]["censored"], 1);
+}
+
+#[test]
+fn random_stripe_data_always_get_a_stationary_fit_or_a_verified_status() {
+    // 3,000 small random data sets over IMs spanning 1e-6 to 1e6 (extreme tails of Φ): never
+    // `NotConverged`; a fit is a local maximum of ℓ with a vanishing gradient; a status other than
+    // `NotIncreasing` is checked against the counts independently.
+    let mut rng = ChaCha8Rng::seed_from_u64(2024);
+    use rand::Rng;
+    let mut out_of_range = 0;
+    for case in 0..3000 {
+        let k = rng.random_range(2..7);
+        let spread: f64 = [0.2, 1.0, 5.0, 27.0][case % 4];
+        let mut im: Vec<f64> = (0..k)
+            .map(|_| (spread * (rng.random::<f64>() - 0.5)).exp())
+            .collect();
+        im.sort_by(f64::total_cmp);
+        im.dedup();
+        let n: Vec<usize> = im.iter().map(|_| rng.random_range(1..6)).collect();
+        let z: Vec<usize> = n.iter().map(|&n| rng.random_range(0..=n)).collect();
+        let d = stripes(&im, &n, &z);
+        let fit = fit_stripes(&d).unwrap();
+        let frac: Vec<f64> = n
+            .iter()
+            .zip(&z)
+            .map(|(&n, &z)| z as f64 / n as f64)
+            .collect();
+        match fit {
+            Fit::Lognormal { theta, beta } => {
+                let counts = d.counts();
+                let ll = |lt: f64, lb: f64| stripe_log_likelihood(&counts, lt.exp(), lb.exp());
+                let (lt, lb) = (theta.ln(), beta.ln());
+                let top = ll(lt, lb);
+                for (dt, db) in [(1e-4, 0.0), (-1e-4, 0.0), (0.0, 1e-4), (0.0, -1e-4)] {
+                    assert!(
+                        ll(lt + dt * beta, lb + db) <= top + 1e-12 * top.abs(),
+                        "case {case}: {d:?}"
+                    );
+                }
+            }
+            Fit::NoFiniteMle(NoMle::NoExceedance) => assert!(z.iter().all(|&z| z == 0)),
+            Fit::NoFiniteMle(NoMle::AllExceeded) => assert!(z == n),
+            Fit::NoFiniteMle(NoMle::PerfectlySeparated) => {
+                // Some stripe s: all below 0 %, all above 100 %.
+                assert!(
+                    (0..im.len()).any(|s| frac[..s].iter().all(|&f| f == 0.0)
+                        && frac[s + 1..].iter().all(|&f| f == 1.0)),
+                    "case {case}: {frac:?}"
+                );
+            }
+            Fit::NoFiniteMle(NoMle::NotIncreasing) => {}
+            Fit::NoFiniteMle(NoMle::OutOfRange) => out_of_range += 1,
+            other => panic!("case {case}: {other:?} for {frac:?} at {im:?}"),
+        }
+    }
+    assert!(out_of_range < 10, "{out_of_range} fits out of range");
+    // The one found: a finite maximum with 1/β ≈ 3.6e-4, θ ≈ e^{1600}: a status, not a number.
+    let im = [
+        0.12873120679856964,
+        0.3512179546131127,
+        1.9022359548907328,
+        2.3646646790419674,
+        5.628512914864313,
+    ];
+    let d = stripes(&im, &[4, 4, 4, 1, 5], &[1, 1, 2, 0, 1]);
+    assert_eq!(
+        fit_stripes(&d).unwrap(),
+        Fit::NoFiniteMle(NoMle::OutOfRange)
+    );
+    assert_eq!(fit_stripes(&d).unwrap().status(), "out_of_range");
+}
+
+#[test]
+fn ln_cdf_is_smooth_across_its_branch_points() {
+    // Branches of ln Φ at z = −1.25√2, −1, 1 and of erfc at x = 0.25, 0.84375, 1.25, 1/0.35, 28:
+    // on either side of each the slope agrees with the inverse Mills ratio φ/Φ (no jump).
+    let s2 = std::f64::consts::SQRT_2;
+    for z0 in [
+        -1.25 * s2,
+        -1.0,
+        1.0,
+        -0.25 * s2,
+        -0.84375 * s2,
+        -s2 / 0.35,
+        -28.0 * s2,
+        0.84375 * s2,
+    ] {
+        for z in [z0 - 1e-9, z0, z0 + 1e-9] {
+            let h = 1e-6;
+            let slope = (ln_cdf(z + h) - ln_cdf(z - h)) / (2.0 * h);
+            let mills = (ln_pdf(z) - ln_cdf(z)).exp();
+            assert!(
+                rel(slope, mills) < 1e-6,
+                "z = {z}: slope {slope}, φ/Φ = {mills}"
+            );
+        }
+    }
 }
