@@ -153,7 +153,7 @@ pub fn bootstrap_ida(
 }
 
 /// Fits of `settings.samples` resamples of `rows` records, in replicate order.
-fn replicates<F>(settings: &BootstrapSettings, rows: usize, refit: F) -> Vec<Fit>
+fn replicates<F>(settings: &BootstrapSettings, rows: usize, refit: &F) -> Vec<Fit>
 where
     F: Fn(&[usize]) -> Fit + Sync,
 {
@@ -170,7 +170,7 @@ where
 }
 
 /// Fits of the data with each record left out in turn (the jackknife of the BCa acceleration).
-fn jackknife<F>(rows: usize, refit: F) -> Vec<Fit>
+fn jackknife<F>(rows: usize, refit: &F) -> Vec<Fit>
 where
     F: Fn(&[usize]) -> Fit + Sync,
 {

@@ -123,15 +123,15 @@ impl IdaData {
                 field: "im_at_exceedance",
             });
         }
-        for (i, x) in self.im_at_exceedance.iter().enumerate() {
-            if let Some(x) = x {
-                if !(x.is_finite() && *x > 0.0) {
-                    return Err(FragilityError::BadIm {
-                        field: "im_at_exceedance",
-                        index: i,
-                        value: *x,
-                    });
-                }
+        for (index, x) in self.im_at_exceedance.iter().enumerate() {
+            if let Some(x) = x
+                && !(x.is_finite() && *x > 0.0)
+            {
+                return Err(FragilityError::BadIm {
+                    field: "im_at_exceedance",
+                    index,
+                    value: *x,
+                });
             }
         }
         Ok(())

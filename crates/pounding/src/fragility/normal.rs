@@ -23,6 +23,9 @@
 //! (the notice of the erfc coefficients below, taken from FreeBSD `/usr/src/lib/msun/src/s_erf.c`
 //! through the `libm` crate).
 
+// The published coefficients keep their published digits (each rounds to the intended double).
+#![allow(clippy::excessive_precision)]
+
 use crate::math::Real;
 
 const ERX: f64 = 8.45062911510467529297e-01;

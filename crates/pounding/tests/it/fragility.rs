@@ -1,6 +1,8 @@
 //! Fragility fitting (issue 13): Φ accuracy, the stripe MLE against closed form and brute force,
 //! the no-MLE statuses, bootstrap coverage and determinism, bad input, the writers.
 
+#![allow(clippy::excessive_precision)] // reference values keep the digits mpmath printed
+
 use pounding::fragility::normal::{cdf, ln_cdf, ln_pdf, pdf, quantile};
 use pounding::fragility::{
     Bootstrap, BootstrapSettings, Fit, FragilityError, FragilityRow, IdaData, NoMle, StripeData,
