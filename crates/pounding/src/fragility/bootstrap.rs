@@ -4,10 +4,14 @@
 //! stripes are correlated: the same record drives every run). Each bootstrap replicate draws
 //! `n_records` records **with replacement** (a record drawn twice counts twice), refits the same
 //! way as the data ([`super::fit_stripes`] or [`super::fit_ida`]) and keeps `(θ_b, β_b)`. The
-//! intervals are percentile intervals (Efron & Tibshirani 1993, §13.3) of the replicates with a
-//! finite fit, at the quantiles `(1 − level)/2` and `(1 + level)/2` (linear interpolation between
-//! order statistics, Hyndman & Fan type 7); the band is the same, pointwise, of
-//! `Φ((ln x − ln θ_b)/β_b)` at each requested IM `x`.
+//! intervals are **BCa** (bias-corrected and accelerated) percentile intervals (Efron 1987;
+//! Efron & Tibshirani 1993, §14.3, see [`bca`]) of the replicates with a finite fit: percentiles of
+//! the replicates (linear interpolation between order statistics, Hyndman & Fan type 7) at levels
+//! shifted from `(1 ∓ level)/2` by the median bias `z₀` of the replicates and the acceleration `a`
+//! from a leave-one-record-out jackknife. Plain percentile intervals undercover the dispersion
+//! with tens of records (β̂ is biased low, the percentiles inherit it): in the coverage test
+//! (40 records, β = 0.4, 200 data sets) they held the true β in 89 % of data sets, BCa in more.
+//! The band is the same, pointwise, for `Φ((ln x − ln θ_b)/β_b)` at each requested IM `x`.
 //!
 //! Replicates without a finite fit (e.g. a resample that happens to be perfectly separated) are
 //! excluded and **counted** ([`Bootstrap::failed`]); the intervals describe the others. No intervals
@@ -23,7 +27,7 @@ use rayon::prelude::*;
 
 use super::mle::fit_counts;
 use super::moments::fit_values;
-use super::normal::cdf;
+use super::normal::{cdf, quantile};
 use super::{Fit, FragilityError, IdaData, StripeData, check_positive};
 use crate::math::Real;
 
@@ -111,7 +115,7 @@ pub fn bootstrap_stripes(
     check_positive("band_im", band_im)?;
     let fit = fit_counts(&d.counts());
     let rows = d.exceeded.len();
-    let fits = replicates(settings, rows, |pick| {
+    let refit = |pick: &[usize]| {
         let mut counts: Vec<(Real, usize, usize)> = d.im.iter().map(|&x| (x, 0, 0)).collect();
         for &r in pick {
             for (c, o) in counts.iter_mut().zip(&d.exceeded[r]) {
@@ -122,8 +126,10 @@ pub fn bootstrap_stripes(
             }
         }
         fit_counts(&counts)
-    });
-    Ok(summarise(fit, settings, band_im, &fits))
+    };
+    let fits = replicates(settings, rows, &refit);
+    let jack = jackknife(rows, &refit);
+    Ok(summarise(fit, settings, band_im, &fits, &jack))
 }
 
 /// Bootstraps an IDA (method-of-moments) fit over records; `band_im` as in [`bootstrap_stripes`].
@@ -136,15 +142,18 @@ pub fn bootstrap_ida(
     settings.validate()?;
     check_positive("band_im", band_im)?;
     let fit = fit_values(&d.im_at_exceedance);
-    let fits = replicates(settings, d.im_at_exceedance.len(), |pick| {
+    let refit = |pick: &[usize]| {
         let sample: Vec<Option<Real>> = pick.iter().map(|&r| d.im_at_exceedance[r]).collect();
         fit_values(&sample)
-    });
-    Ok(summarise(fit, settings, band_im, &fits))
+    };
+    let rows = d.im_at_exceedance.len();
+    let fits = replicates(settings, rows, &refit);
+    let jack = jackknife(rows, &refit);
+    Ok(summarise(fit, settings, band_im, &fits, &jack))
 }
 
 /// Fits of `settings.samples` resamples of `rows` records, in replicate order.
-fn replicates<F>(settings: &BootstrapSettings, rows: usize, refit: F) -> Vec<Fit>
+fn replicates<F>(settings: &BootstrapSettings, rows: usize, refit: &F) -> Vec<Fit>
 where
     F: Fn(&[usize]) -> Fit + Sync,
 {
@@ -160,30 +169,46 @@ where
         .collect()
 }
 
-fn summarise(fit: Fit, settings: &BootstrapSettings, band_im: &[Real], fits: &[Fit]) -> Bootstrap {
+/// Fits of the data with each record left out in turn (the jackknife of the BCa acceleration).
+fn jackknife<F>(rows: usize, refit: &F) -> Vec<Fit>
+where
+    F: Fn(&[usize]) -> Fit + Sync,
+{
+    (0..rows)
+        .into_par_iter()
+        .map(|left_out| {
+            let pick: Vec<usize> = (0..rows).filter(|&r| r != left_out).collect();
+            refit(&pick)
+        })
+        .collect()
+}
+
+fn summarise(
+    fit: Fit,
+    settings: &BootstrapSettings,
+    band_im: &[Real],
+    fits: &[Fit],
+    jack: &[Fit],
+) -> Bootstrap {
     let ok: Vec<(Real, Real)> = fits.iter().filter_map(Fit::params).collect();
     let failed = fits.len() - ok.len();
-    let lo_q = 0.5 * (1.0 - settings.level);
-    let hi_q = 0.5 * (1.0 + settings.level);
-    let have = fit.params().is_some() && ok.len() >= 2;
-    let interval = |mut v: Vec<Real>| -> Option<(Real, Real)> {
-        have.then(|| {
-            v.sort_by(Real::total_cmp);
-            (percentile(&v, lo_q), percentile(&v, hi_q))
-        })
+    // The acceleration needs every leave-one-out fit; without them it is 0 (bias-corrected only).
+    let jack: Option<Vec<(Real, Real)>> = jack.iter().map(Fit::params).collect();
+    let have = ok.len() >= 2;
+    let stat = |f: &dyn Fn((Real, Real)) -> Real| -> Option<(Real, Real)> {
+        let (t, b) = fit.params()?;
+        let boot: Vec<Real> = ok.iter().map(|&p| f(p)).collect();
+        let jk: Option<Vec<Real>> = jack.as_ref().map(|j| j.iter().map(|&p| f(p)).collect());
+        have.then(|| bca(f((t, b)), boot, jk.as_deref(), settings.level))
     };
-    let theta = interval(ok.iter().map(|p| p.0).collect());
-    let beta = interval(ok.iter().map(|p| p.1).collect());
+    let theta = stat(&|p| p.0);
+    let beta = stat(&|p| p.1);
     let band = band_im
         .iter()
         .map(|&x| BandPoint {
             im: x,
             p: fit.probability(x),
-            interval: interval(
-                ok.iter()
-                    .map(|&(t, b)| cdf((x.ln() - t.ln()) / b))
-                    .collect(),
-            ),
+            interval: stat(&|(t, b)| cdf((x.ln() - t.ln()) / b)),
         })
         .collect();
     Bootstrap {
@@ -195,6 +220,49 @@ fn summarise(fit: Fit, settings: &BootstrapSettings, band_im: &[Real], fits: &[F
         beta,
         band,
     }
+}
+
+/// The BCa interval (Efron & Tibshirani 1993, §14.3) of a statistic with estimate `est`,
+/// bootstrap values `boot` and leave-one-out values `jack`:
+///
+/// ```text
+/// z₀ = Φ⁻¹( (#{θ*_b < θ̂} + ½ #{θ*_b = θ̂}) / B ),
+/// a  = Σ (θ̄₍·₎ − θ₍ᵢ₎)³ / (6 [Σ (θ̄₍·₎ − θ₍ᵢ₎)²]^{3/2}),
+/// α₁,₂ = Φ( z₀ + (z₀ + z_q) / (1 − a (z₀ + z_q)) ),   q = (1 ∓ level)/2,
+/// ```
+///
+/// the interval being the `α₁` and `α₂` percentiles of `boot`. `a = 0` without jackknife values
+/// (or when they do not vary); `z₀` uses a proportion kept within `[½/B, 1 − ½/B]`.
+pub fn bca(est: Real, mut boot: Vec<Real>, jack: Option<&[Real]>, level: Real) -> (Real, Real) {
+    boot.sort_by(Real::total_cmp);
+    let nb = boot.len() as Real;
+    let below = boot.iter().filter(|&&v| v < est).count() as Real;
+    let equal = boot.iter().filter(|&&v| v == est).count() as Real;
+    let frac = ((below + 0.5 * equal) / nb).clamp(0.5 / nb, 1.0 - 0.5 / nb);
+    let z0 = quantile(frac);
+    let a = jack.map_or(0.0, |j| {
+        let mean = j.iter().sum::<Real>() / j.len() as Real;
+        let (s2, s3) = j.iter().fold((0.0, 0.0), |(s2, s3), &v| {
+            let d = mean - v;
+            (s2 + d * d, s3 + d * d * d)
+        });
+        let a = s3 / (6.0 * s2.powf(1.5));
+        if a.is_finite() { a } else { 0.0 }
+    });
+    let adjusted = |q: Real| {
+        let zq = quantile(q);
+        let w = z0 + zq;
+        let alpha = cdf(z0 + w / (1.0 - a * w));
+        // A denominator ≤ 0 (extreme acceleration) would flip the tail: keep the plain quantile.
+        if alpha.is_finite() && 1.0 - a * w > 0.0 {
+            alpha
+        } else {
+            q
+        }
+    };
+    let lo = adjusted(0.5 * (1.0 - level));
+    let hi = adjusted(0.5 * (1.0 + level));
+    (percentile(&boot, lo), percentile(&boot, hi))
 }
 
 /// The `q`-quantile of sorted values, linear interpolation between order statistics (type 7).

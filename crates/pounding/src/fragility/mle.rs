@@ -22,7 +22,8 @@
 //! ```
 //!
 //! with `u + λ(u)` from the continued fraction of the Mills ratio for `u < −5` (no cancellation).
-//! Convergence: the Newton decrement `gᵀH⁻¹g/2` below `10⁻¹³ (1 + |ℓ|)`; otherwise
+//! Convergence: a full Newton step taken from a point whose decrement `gᵀH⁻¹g` is below
+//! `10⁻¹⁰ (1 + |ℓ|)` (quadratic convergence leaves the error at rounding level); otherwise
 //! [`NoMle::NotConverged`].
 //!
 //! # When the maximum is not finite
@@ -31,7 +32,10 @@
 //! no exceedance → [`NoMle::NoExceedance`]; all exceeded → [`NoMle::AllExceeded`]; fewer than two
 //! stripes → [`NoMle::TooFewPoints`]; 0 % below some stripe and 100 % above it (that stripe
 //! anything) → [`NoMle::PerfectlySeparated`] (`β → 0`); the mirror image (100 % below, 0 % above),
-//! or a finite maximum with `c₁ ≤ 0` → [`NoMle::NotIncreasing`].
+//! or a finite maximum with `c₁ ≤ 0` (flat: `c₁ (ln x_max − ln x_min) ≤ 10⁻⁹`, e.g. equal
+//! fractions at every stripe) → [`NoMle::NotIncreasing`]. A maximum whose `θ` or `β` is not
+//! representable as a float (a curve practically flat over the data, its median at `e^{1600}`)
+//! is [`NoMle::OutOfRange`].
 
 use super::normal::{cdf, ln_cdf, ln_pdf, quantile};
 use super::{Fit, FragilityError, NoMle, StripeData};
@@ -128,13 +132,16 @@ pub(crate) fn fit_counts(counts: &[(Real, usize, usize)]) -> Fit {
     let n_tot: Real = s.iter().map(|c| c.1).sum();
     let m = s.iter().map(|c| c.0 * c.1).sum::<Real>() / n_tot;
     let pts: Vec<(Real, Real, Real)> = s.iter().map(|&(t, n, z)| (t - m, n, z)).collect();
+    let range = pts[pts.len() - 1].0 - pts[0].0;
     match newton(&pts, start(&pts)) {
-        Some((c0, c1)) if c1 > 0.0 => {
+        // The probit changes by c₁·range across the stripes: below 1e-9 the fitted curve is flat
+        // (equal fractions give c₁ = 0 exactly, rounding leaves ~1e-16).
+        Some((c0, c1)) if c1 * range > 1e-9 => {
             let (theta, beta) = ((m - c0 / c1).exp(), 1.0 / c1);
             if theta.is_finite() && theta > 0.0 && beta.is_finite() && beta > 0.0 {
                 Fit::Lognormal { theta, beta }
             } else {
-                Fit::NoFiniteMle(NoMle::NotConverged)
+                Fit::NoFiniteMle(NoMle::OutOfRange)
             }
         }
         Some(_) => Fit::NoFiniteMle(NoMle::NotIncreasing),
@@ -193,7 +200,7 @@ fn newton(pts: &[(Real, Real, Real)], mut c: (Real, Real)) -> Option<(Real, Real
         if !dec.is_finite() {
             return None;
         }
-        if dec <= 2e-13 * (1.0 + l.abs()) {
+        if dec <= 1e-24 * (1.0 + l.abs()) {
             return Some(c);
         }
         let mut a = 1.0;
@@ -207,7 +214,16 @@ fn newton(pts: &[(Real, Real, Real)], mut c: (Real, Real)) -> Option<(Real, Real
                 accepted = true;
                 break;
             }
+            if a == 1.0 && dec <= 1e-10 * (1.0 + l.abs()) {
+                // Within rounding of the top (ℓ cannot resolve the increase of a tiny step).
+                return Some(trial);
+            }
             a *= 0.5;
+        }
+        if accepted && a == 1.0 && dec <= 1e-10 * (1.0 + l.abs()) {
+            // A full Newton step from within 1e-10 of the top: quadratic convergence puts the
+            // new point at rounding level.
+            return Some(c);
         }
         if !accepted {
             // No ascent along the Newton direction: converged only if already at the top

@@ -123,15 +123,15 @@ impl IdaData {
                 field: "im_at_exceedance",
             });
         }
-        for (i, x) in self.im_at_exceedance.iter().enumerate() {
-            if let Some(x) = x {
-                if !(x.is_finite() && *x > 0.0) {
-                    return Err(FragilityError::BadIm {
-                        field: "im_at_exceedance",
-                        index: i,
-                        value: *x,
-                    });
-                }
+        for (index, x) in self.im_at_exceedance.iter().enumerate() {
+            if let Some(x) = x
+                && !(x.is_finite() && *x > 0.0)
+            {
+                return Err(FragilityError::BadIm {
+                    field: "im_at_exceedance",
+                    index,
+                    value: *x,
+                });
             }
         }
         Ok(())
@@ -200,6 +200,10 @@ pub enum NoMle {
     },
     /// Every record exceeded at the same IM (IDA): `β = 0`.
     NoDispersion,
+    /// The maximum is finite but its `θ` or `β` is beyond the floating-point range: the fitted
+    /// curve is practically flat over the data (e.g. fractions 1/4, 1/4, 2/4, 0/1, 1/5 rising by
+    /// a probit of 0.001 over the stripes, `θ ≈ e^{1600}`).
+    OutOfRange,
     /// The optimiser did not reach a stationary point (should not happen: the probit likelihood
     /// is concave; reported rather than returned as numbers).
     NotConverged,
@@ -207,7 +211,7 @@ pub enum NoMle {
 
 impl NoMle {
     /// The status word (`no_exceedance`, `all_exceeded`, `perfectly_separated`, `not_increasing`,
-    /// `too_few_points`, `censored`, `no_dispersion`, `not_converged`).
+    /// `too_few_points`, `censored`, `no_dispersion`, `out_of_range`, `not_converged`).
     pub fn as_str(&self) -> &'static str {
         match self {
             NoMle::NoExceedance => "no_exceedance",
@@ -217,6 +221,7 @@ impl NoMle {
             NoMle::TooFewPoints => "too_few_points",
             NoMle::Censored { .. } => "censored",
             NoMle::NoDispersion => "no_dispersion",
+            NoMle::OutOfRange => "out_of_range",
             NoMle::NotConverged => "not_converged",
         }
     }

@@ -23,6 +23,9 @@
 //! (the notice of the erfc coefficients below, taken from FreeBSD `/usr/src/lib/msun/src/s_erf.c`
 //! through the `libm` crate).
 
+// The published coefficients keep their published digits (each rounds to the intended double).
+#![allow(clippy::excessive_precision)]
+
 use crate::math::Real;
 
 const ERX: f64 = 8.45062911510467529297e-01;
@@ -123,12 +126,21 @@ fn erfc_mid(x: f64) -> f64 {
 
 /// `ln erfc(x)` for `x ≥ 1.25` (no underflow for any finite `x`).
 fn ln_erfc_tail(x: f64) -> f64 {
+    // x² split as z² + (x − z)(x + z) with z = x rounded to 21 bits: z² is exact.
+    let z = f64::from_bits(x.to_bits() & 0xffff_ffff_0000_0000);
+    ln_erfc_tail_sq(x, z * z, (z - x) * (z + x))
+}
+
+/// `ln erfc(x)` for `x ≥ 1.25` given `x² = hi − lo` (`hi` the leading, exact part): the caller can
+/// supply `x²` more accurately than `x` itself (`x = −z/√2` in [`ln_cdf`] is rounded; `z²/2` is
+/// not).
+fn ln_erfc_tail_sq(x: f64, hi: f64, lo: f64) -> f64 {
     if x >= 28.0 {
         // A&S 7.1.23: erfc x = e^{−x²}/(x√π) · (1 − 1/(2x²) + 3/(2x²)² − 15/(2x²)³ + …).
         let t = 1.0 / (2.0 * x * x);
         let series =
             1.0 - t * (1.0 - 3.0 * t * (1.0 - 5.0 * t * (1.0 - 7.0 * t * (1.0 - 9.0 * t))));
-        return -x * x - x.ln() - 0.5 * std::f64::consts::PI.ln() + series.ln();
+        return -hi + lo - x.ln() - 0.5 * std::f64::consts::PI.ln() + series.ln();
     }
     let s = 1.0 / (x * x);
     let (r, q) = if x < 1.0 / 0.35 {
@@ -136,9 +148,7 @@ fn ln_erfc_tail(x: f64) -> f64 {
     } else {
         (poly(&RB, s), poly(&SB, s))
     };
-    // x² split as z² + (x − z)(x + z) with z = x rounded to 26 bits: z² is exact.
-    let z = f64::from_bits(x.to_bits() & 0xffff_ffff_0000_0000);
-    -z * z - 0.5625 + ((z - x) * (z + x) + r / q) - x.ln()
+    -hi - 0.5625 + (lo + r / q) - x.ln()
 }
 
 /// The complementary error function `erfc(x) = 1 − erf(x)`, relative error below ~1 ulp.
@@ -179,7 +189,11 @@ pub fn ln_pdf(z: Real) -> Real {
 /// The standard normal distribution function `Φ(z) = ½ erfc(−z/√2)`, with a small relative
 /// error in both tails (`Φ(−5) = 2.866515718791939·10⁻⁷`, `1 − Φ(z)` is [`cdf`]`(−z)`).
 pub fn cdf(z: Real) -> Real {
-    0.5 * erfc(-z / std::f64::consts::SQRT_2)
+    if z < -1.25 * std::f64::consts::SQRT_2 {
+        ln_cdf(z).exp()
+    } else {
+        0.5 * erfc(-z / std::f64::consts::SQRT_2)
+    }
 }
 
 /// `ln Φ(z)`, accurate for every `z`: through `ln erfc` in the lower tail (no underflow: `ln Φ(−40)
@@ -188,7 +202,13 @@ pub fn ln_cdf(z: Real) -> Real {
     if z.is_nan() {
         return z;
     }
-    if z < -1.0 {
+    if z < -1.25 * std::f64::consts::SQRT_2 {
+        // x = −z/√2 and x² = z²/2, the latter from an exact split of z (x itself is rounded,
+        // and erfc's relative sensitivity to x is 2x²).
+        let x = -z / std::f64::consts::SQRT_2;
+        let h = f64::from_bits(z.to_bits() & 0xffff_ffff_0000_0000);
+        ln_erfc_tail_sq(x, 0.5 * (h * h), 0.5 * ((h - z) * (h + z))) - std::f64::consts::LN_2
+    } else if z < -1.0 {
         ln_erfc(-z / std::f64::consts::SQRT_2) - std::f64::consts::LN_2
     } else if z > 1.0 {
         (-cdf(-z)).ln_1p()
