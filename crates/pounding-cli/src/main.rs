@@ -6,6 +6,7 @@ use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
 mod cmd_compare;
+mod cmd_fragility;
 mod cmd_impact;
 mod cmd_lcp;
 mod cmd_motion;
@@ -13,6 +14,7 @@ mod cmd_simulate;
 mod cmd_spectrum;
 mod cmd_study;
 mod figures;
+mod fragility_plot;
 mod plot_style;
 mod plots;
 mod report;
@@ -43,6 +45,8 @@ enum Command {
     Spectrum(cmd_spectrum::Args),
     /// Ground-motion tools: `motion synth` writes synthetic accelerogram suites (for trying the workflow).
     Motion(cmd_motion::Args),
+    /// Fragility study of a bridge: a record set at IM stripes, limit states, fitted lognormal curves.
+    Fragility(cmd_fragility::Args),
 }
 
 /// The message of a panic raised by `print!`/`eprint!` when standard output or error cannot be
@@ -65,6 +69,7 @@ fn run(cli: Cli) -> ExitCode {
         Command::Compare(a) => cmd_compare::run(a),
         Command::Spectrum(a) => cmd_spectrum::run(a),
         Command::Motion(a) => cmd_motion::run(a),
+        Command::Fragility(a) => cmd_fragility::run(a),
     };
     match result {
         Ok(code) => code,

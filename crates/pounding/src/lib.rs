@@ -3,6 +3,7 @@
 //! The library follows the binding physics specification (`spec/physics.md` of the project's
 //! shared data, cited below as "spec §N"). It is organised like a paper:
 //!
+//! * [`assessment`] — fragility studies: record sets at IM stripes, limit states per run.
 //! * [`math`] — type aliases over `nalgebra` and small planar helpers (scalar cross product, rotations).
 //! * [`lcp`] — the linear complementarity problem `w = M z + q, z ≥ 0, w ≥ 0, zᵀw = 0`, a
 //!   lexicographic Lemke solver (with fixed-size kernels for the tiny impact LCPs) and exhaustive
@@ -29,6 +30,8 @@
 //!   Moreau–Jean time stepping with the impact LCP at every step, abutments, batch runs.
 //! * [`shard`] — `--shard K/N`: which rows of a study or runs of a batch one process computes.
 //! * [`toml_schema`] — strict table and fixed-length array shapes for scenario files.
+//! * [`fragility`] — lognormal fragility functions fitted to stripe counts (maximum likelihood) and
+//!   IDA data (method of moments), record bootstrap, `fragility.csv`/`.json` writers (issue 13).
 //! * [`output`] — deterministic number formatting and atomic file output shared by every writer.
 //! * [`input`] — input files read within documented size limits, strict JSON, the thread limit.
 //!
@@ -37,9 +40,11 @@
 #![warn(missing_docs)]
 
 pub mod analytic;
+pub mod assessment;
 pub mod contact;
 pub mod contact_law;
 pub mod element;
+pub mod fragility;
 pub mod geometry;
 pub mod ground_motion;
 pub mod impact;

@@ -62,6 +62,7 @@ mod bridge_batch;
 mod bridge_plots;
 mod compare;
 mod docs_links;
+mod fragility;
 mod fuzz;
 mod golden;
 mod harden;

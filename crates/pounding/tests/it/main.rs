@@ -13,6 +13,8 @@ mod event_chain;
 mod event_chain_checks;
 mod event_chain_sim;
 mod event_exact;
+mod fragility;
+mod fragility_workflow;
 mod fuzz;
 mod geometry;
 mod geometry_path;

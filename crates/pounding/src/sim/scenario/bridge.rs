@@ -84,6 +84,12 @@ pub(crate) struct BridgeRaw {
     pub(crate) time: Table<TimeSec>,
     #[serde(default)]
     pub(crate) contact: Table<super::contact::ContactSec>,
+    /// `[fragility]` and `[[limit_state]]`: read by `pounding fragility`
+    /// ([`crate::assessment::settings`]), accepted and not used here.
+    #[serde(default, rename = "fragility")]
+    pub(crate) _fragility: serde::de::IgnoredAny,
+    #[serde(default, rename = "limit_state")]
+    pub(crate) _limit_state: serde::de::IgnoredAny,
 }
 
 #[derive(Deserialize, Default, Clone, Debug)]

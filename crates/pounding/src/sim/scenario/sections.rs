@@ -147,6 +147,12 @@ pub(crate) struct Raw {
     pub(crate) contact: Table<super::contact::ContactSec>,
     #[serde(default)]
     pub(crate) abutments: Table<AbutmentsSec>,
+    /// `[fragility]` and `[[limit_state]]`: read by `pounding fragility`
+    /// ([`crate::assessment::settings`]), accepted and not used here.
+    #[serde(default, rename = "fragility")]
+    pub(crate) _fragility: serde::de::IgnoredAny,
+    #[serde(default, rename = "limit_state")]
+    pub(crate) _limit_state: serde::de::IgnoredAny,
 }
 
 #[derive(Deserialize, Default, Clone, Debug)]

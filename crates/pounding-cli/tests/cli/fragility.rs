@@ -1,0 +1,221 @@
+//! `pounding fragility` (issue 13) end to end on a tiny study (2 records x 3 levels, 2 s):
+//! files written, one runs.csv row per run, fractions and counts in fragility.json/csv equal to
+//! runs.csv, the same bytes for 1 and 2 threads, bad input exits 2 and writes nothing.
+
+use crate::{run_capture, scratch_dir};
+use std::path::Path;
+
+const SCENARIO: &str = r#"[bridge]
+damping = "dashpots"
+gap = 0.02
+seat_length = 0.1
+outer_seat_length = 0.1
+[[segment]]
+shape = "straight"
+L = 30.0
+mass = 1.0e6
+period_s = 1.2
+[[segment]]
+shape = "straight"
+L = 30.0
+mass = 1.2e6
+period_s = 0.5
+[ground_motion]
+scale_y = -1.0
+[time]
+dt = 2e-3
+duration = 2.0
+
+[fragility]
+records = "set.toml"
+im = "sa"
+period_s = "model"
+levels_g = [0.2, 1.0, 3.0]
+bootstrap = 50
+seed = 3
+
+[[limit_state]]
+name = "seat"
+kind = "unseating"
+
+[[limit_state]]
+name = "impulse"
+kind = "joint_force"
+capacity_ns = 2.0e5
+"#;
+
+const SET: &str = r#"[[record]]
+id = "NS"
+x = "builtin:ELC180"
+[record.meta]
+azimuth = 180
+
+[[record]]
+id = "EW"
+x = "builtin:ELC270"
+[record.meta]
+azimuth = 270
+"#;
+
+fn study(name: &str, scenario: &str) -> std::path::PathBuf {
+    let d = scratch_dir("fragility", name);
+    std::fs::write(d.join("bridge.toml"), scenario).unwrap();
+    std::fs::write(d.join("set.toml"), SET).unwrap();
+    d
+}
+
+fn run(d: &Path, out: &str, threads: &str) -> (Option<i32>, String, String) {
+    run_capture(&[
+        "fragility",
+        d.join("bridge.toml").to_str().unwrap(),
+        "--out",
+        d.join(out).to_str().unwrap(),
+        "--threads",
+        threads,
+    ])
+}
+
+#[test]
+fn fragility_end_to_end_counts_agree_and_bytes_do_not_depend_on_threads() {
+    let d = study("e2e", SCENARIO);
+    let (code, stdout, err) = run(&d, "one", "1");
+    assert_eq!(code, Some(0), "{err}");
+    assert!(
+        stdout.contains("period: T1 = 1.2 s") && stdout.contains("segment 1"),
+        "{stdout}"
+    );
+    for f in [
+        "runs.csv",
+        "fragility.csv",
+        "fragility.json",
+        "fragility.png",
+        "report.html",
+        "timing.json",
+    ] {
+        assert!(d.join("one").join(f).is_file(), "{f} missing");
+    }
+    let runs = std::fs::read_to_string(d.join("one/runs.csv")).unwrap();
+    let mut lines = runs.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(
+        head,
+        [
+            "record",
+            "azimuth",
+            "level_g",
+            "im_g",
+            "scale_factor",
+            "status",
+            "seat_exceeded",
+            "seat_ratio",
+            "impulse_exceeded",
+            "impulse_ratio",
+            "error"
+        ]
+    );
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 2 * 3);
+    assert_eq!(rows[0][0], "NS");
+    assert_eq!(rows[3][1], "270");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("one/fragility.json")).unwrap())
+            .unwrap();
+    let csv = std::fs::read_to_string(d.join("one/fragility.csv")).unwrap();
+    for (name, col) in [("seat", 6), ("impulse", 8)] {
+        let emp = json["empirical"][name].as_array().unwrap();
+        assert_eq!(emp.len(), 3);
+        let mut counted = 0;
+        for (b, level) in ["0.2", "1", "3"].iter().enumerate() {
+            let at: Vec<&Vec<&str>> = rows.iter().filter(|r| r[2] == *level).collect();
+            let n = at.iter().filter(|r| !r[col].is_empty()).count();
+            let k = at.iter().filter(|r| r[col] == "true").count();
+            counted += n;
+            assert_eq!(emp[b]["runs"].as_u64().unwrap() as usize, n);
+            assert_eq!(emp[b]["fraction"].as_f64().unwrap(), k as f64 / n as f64);
+            // the ratio column says the same as the flag for the joint
+            if name == "impulse" {
+                for r in &at {
+                    let ratio: f64 = r[col + 1].parse().unwrap();
+                    assert_eq!(r[col] == "true", ratio > 1.0);
+                }
+            }
+        }
+        let line = csv
+            .lines()
+            .find(|l| l.starts_with(&format!("{name},")))
+            .unwrap();
+        let n_runs = line.split(',').nth(11).unwrap();
+        assert_eq!(n_runs, counted.to_string(), "{line}");
+    }
+    let (code, _, err) = run(&d, "two", "2");
+    assert_eq!(code, Some(0), "{err}");
+    for f in [
+        "runs.csv",
+        "fragility.csv",
+        "fragility.json",
+        "fragility.png",
+        "report.html",
+    ] {
+        let a = std::fs::read(d.join("one").join(f)).unwrap();
+        let b = std::fs::read(d.join("two").join(f)).unwrap();
+        assert!(a == b, "{f} differs between 1 and 2 threads");
+    }
+}
+
+fn refused(name: &str, scenario: &str, needle: &str) {
+    let d = study(name, scenario);
+    let (code, _, err) = run(&d, "out", "1");
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains(needle), "{needle:?} not in {err}");
+    assert!(!d.join("out").exists(), "something was written");
+}
+
+#[test]
+fn fragility_bad_input_exits_2_and_writes_nothing() {
+    refused(
+        "level",
+        &SCENARIO.replace("[0.2, 1.0, 3.0]", "[0.2, -1.0]"),
+        "fragility.levels_g",
+    );
+    refused(
+        "damping",
+        &SCENARIO.replace("seed = 3", "seed = 3\ndamping = 1.0"),
+        "fragility.damping",
+    );
+    refused(
+        "period",
+        &SCENARIO.replace("\"model\"", "0.0"),
+        "fragility.period_s",
+    );
+    refused(
+        "kind",
+        &SCENARIO.replace("\"unseating\"", "\"collapse\""),
+        "limit_state[0].kind",
+    );
+    refused(
+        "missing",
+        &SCENARIO.replace("set.toml", "none.toml"),
+        "none.toml",
+    );
+    refused(
+        "unknown",
+        &SCENARIO.replace("seed = 3", "seed = 3\nstripes = 2"),
+        "stripes",
+    );
+    let two_deck = "[decks]\nshape = \"straight\"\n[fragility]\nrecords = \"set.toml\"\nlevels_g = [0.1]\n[[limit_state]]\nname = \"u\"\nkind = \"unseating\"\n";
+    refused("twodeck", two_deck, "two-deck");
+    // a record file named by the set that does not exist: the set's key and line, and the file
+    let d = study("recfile", SCENARIO);
+    std::fs::write(
+        d.join("set.toml"),
+        SET.replace("builtin:ELC270", "missing.AT2"),
+    )
+    .unwrap();
+    let (code, _, err) = run(&d, "out", "1");
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("record[1].x") && err.contains("set.toml:9") && err.contains("missing.AT2"),
+        "{err}"
+    );
+    assert!(!d.join("out").exists());
+}

@@ -1,0 +1,154 @@
+//! Limit states evaluated on a bridge run's summary: exceeded or not, and the ratio
+//! demand / capacity.
+//!
+//! | kind | demand | capacity | exceeded |
+//! |---|---|---|---|
+//! | `unseating` | the largest seat displacement of any seated end | the shortest seat length | the run's own `unseated` flag |
+//! | `joint_force` (compliance laws) | largest `peak_contact_force_n` over the joints | `capacity_n` | ratio > 1 |
+//! | `joint_force` (rigid law) | largest `peak_impulse_ns` over the joints | `capacity_ns` | ratio > 1 |
+//! | `bearing_deformation` | largest `peak_bearing_deformation_m` over the segments | `limit_m` | ratio > 1 |
+//! | `rotation` | largest `peak_rotation_deg` over the segments | `limit_deg` | ratio > 1 |
+//! | `joint_opening` | largest `peak_opening_m` over the joints | `limit_m` | ratio > 1 |
+//!
+//! The *margin* is the ratio `r = demand / capacity`; `1 − r` is the remaining fraction of the
+//! capacity (for unseating: the remaining seat fraction). For unseating the ratio is exact when
+//! every seat has the same length (the usual case); with different seat lengths it uses the
+//! shortest and is an upper bound, while `exceeded` is always the run's own per-end check.
+//! Abutment forces are not part of `joint_force`.
+
+use super::AssessmentError;
+use super::settings::{LimitKind, LimitState};
+use crate::math::Real;
+use crate::sim::JointContact;
+use crate::sim::bridge::{BridgeModel, BridgeSummary};
+
+/// A limit state bound to a bridge: its capacity and what it reads.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BoundLimit {
+    /// The limit state as written.
+    pub state: LimitState,
+    /// The capacity the demand is divided by (unseating: the shortest seat length \[m\]).
+    pub capacity: Real,
+    /// `joint_force` on a rigid bridge reads the impulse.
+    pub rigid: bool,
+}
+
+/// The shortest seat length of the bridge's seated ends \[m\].
+fn shortest_seat(model: &BridgeModel) -> Real {
+    let mut lengths: Vec<Real> = model.joints.iter().map(|j| j.seat_length).collect();
+    for side in 0..2 {
+        lengths.push(model.abutments[side].map_or(model.outer_seat_length, |a| a.seat_length));
+    }
+    lengths.into_iter().fold(Real::INFINITY, Real::min)
+}
+
+/// Checks every limit state against `model` (a joint limit state on a bridge without joints,
+/// `capacity_n` on a rigid bridge, …) and binds its capacity.
+pub fn bind(
+    states: &[LimitState],
+    model: &BridgeModel,
+    origin: &str,
+) -> Result<Vec<BoundLimit>, AssessmentError> {
+    let rigid = model
+        .joints
+        .iter()
+        .map(|j| &j.contact)
+        .chain(model.abutments.iter().flatten().map(|a| &a.contact))
+        .all(|c| matches!(c, JointContact::Rigid));
+    let mut out = Vec::new();
+    for s in states {
+        let err = |key: &str, msg: String| AssessmentError::Key {
+            message: msg,
+            key: format!("{}.{key}", s.at.0),
+            origin: origin.to_string(),
+            line: s.at.1,
+        };
+        let needs_joints = matches!(
+            s.kind,
+            LimitKind::JointForce { .. } | LimitKind::JointOpening(_)
+        );
+        if needs_joints && model.joints.is_empty() {
+            return Err(err(
+                "kind",
+                "this bridge has one segment and no joint: a joint limit state has nothing to read"
+                    .into(),
+            ));
+        }
+        let capacity =
+            match s.kind {
+                LimitKind::Unseating => shortest_seat(model),
+                LimitKind::JointForce {
+                    capacity_n,
+                    capacity_ns,
+                } => {
+                    match (rigid, capacity_n, capacity_ns) {
+                        (true, None, Some(c)) | (false, Some(c), None) => c,
+                        (true, ..) => {
+                            return Err(err(
+                        if capacity_n.is_some() { "capacity_n" } else { "kind" },
+                        "the bridge's contact law is rigid (impacts, no contact force): give \
+                         capacity_ns, the capacity in peak impulse [N s], and no capacity_n"
+                            .into(),
+                    ));
+                        }
+                        (false, ..) => {
+                            return Err(err(
+                        if capacity_ns.is_some() { "capacity_ns" } else { "kind" },
+                        "the bridge's contact law is a compliance law: give capacity_n, the \
+                         capacity in peak contact force [N], and no capacity_ns"
+                            .into(),
+                    ));
+                        }
+                    }
+                }
+                LimitKind::BearingDeformation(c)
+                | LimitKind::Rotation(c)
+                | LimitKind::JointOpening(c) => c,
+            };
+        out.push(BoundLimit {
+            state: s.clone(),
+            capacity,
+            rigid,
+        });
+    }
+    Ok(out)
+}
+
+impl BoundLimit {
+    /// The demand of a run \[the capacity's units\].
+    pub fn demand(&self, s: &BridgeSummary) -> Real {
+        let max = |it: &mut dyn Iterator<Item = Real>| it.fold(Real::NEG_INFINITY, Real::max);
+        match self.state.kind {
+            LimitKind::Unseating => s.peak_seat_displacement,
+            LimitKind::JointForce { .. } if self.rigid => {
+                max(&mut s.joints.iter().map(|j| j.peak_impulse))
+            }
+            LimitKind::JointForce { .. } => {
+                let forces: Option<Vec<Real>> =
+                    s.joints.iter().map(|j| j.peak_contact_force).collect();
+                forces.map_or(Real::NAN, |f| max(&mut f.into_iter()))
+            }
+            LimitKind::BearingDeformation(_) => {
+                max(&mut s.segments.iter().map(|g| g.peak_bearing_deformation))
+            }
+            LimitKind::Rotation(_) => {
+                max(&mut s.segments.iter().map(|g| g.peak_rotation.to_degrees()))
+            }
+            LimitKind::JointOpening(_) => max(&mut s.joints.iter().map(|j| j.peak_opening)),
+        }
+    }
+
+    /// `(exceeded, ratio)` of a run: `exceeded` is `None` when the demand is not a finite
+    /// number (the run is then excluded from the fit).
+    pub fn evaluate(&self, s: &BridgeSummary) -> (Option<bool>, Real) {
+        let ratio = self.demand(s) / self.capacity;
+        if !ratio.is_finite() {
+            return (None, ratio);
+        }
+        let exceeded = match self.state.kind {
+            LimitKind::Unseating => s.unseated,
+            _ => ratio > 1.0,
+        };
+        (Some(exceeded), ratio)
+    }
+}

@@ -1,0 +1,87 @@
+//! The probabilistic-assessment workflow of `pounding fragility`: a bridge scenario with a
+//! `[fragility]` table and `[[limit_state]]` tables ([`settings`]), a record set
+//! ([`crate::ground_motion::set`]), intensity measures and stripes ([`im`]), one bridge run per
+//! record (pair) and stripe in parallel ([`run`]), and the limit states evaluated on each run's
+//! summary ([`limit`]).
+//!
+//! ```toml
+//! [fragility]
+//! records = "suite.toml"        # manifest path relative to the scenario
+//! im = "sa"                     # "pga" | "sa"
+//! period_s = "model"            # for sa: seconds, or "model" (the fundamental period)
+//! damping = 0.05                # for sa
+//! pair_im = "rotd50"            # for pairs: "geomean" | "rotd50"
+//! levels_g = [0.1, 0.2, 0.5]    # multiple stripes; or scales = [0.5, 1.0, 2.0] (IDA)
+//! bootstrap = 500               # resamples over records for the intervals
+//! seed = 1
+//! level = 0.95                  # confidence level of the intervals
+//!
+//! [[limit_state]]
+//! name = "unseating"
+//! kind = "unseating"
+//! ```
+//!
+//! **Directions.** A run applies the entry's first component (`x` in the manifest) where a
+//! batch run applies its record: along `Rot(α) ŷ` with the scenario's `scale_y` (the direction
+//! `record_y` acts along), and a pair's second component (`y`) along `Rot(α) x̂` with `scale_x`
+//! (where `record_x` acts). The scenario's own `record_y` / `record_x` are not used. The IM of an
+//! entry is that of its components as applied at unit factor (times `|scale_y|`, `|scale_x|`).
+//!
+//! **Runs.** With `R` entries and `S` stripes, run `i = a S + b` is entry `a` at stripe `b`
+//! (deterministic order for any number of threads). A run that fails (an error) or ends with a
+//! status other than `Completed` is kept in `runs.csv` with its status, and its limit states
+//! are excluded (`None`) from the fit and counted.
+
+pub mod im;
+pub mod limit;
+pub mod run;
+pub mod settings;
+
+pub use settings::{
+    FragilitySettings, ImKind, LimitKind, LimitState, PairIm, PeriodChoice, Stripes,
+};
+
+/// Why a fragility study cannot start (bad input). Nothing has been run or written.
+#[derive(Debug, thiserror::Error)]
+pub enum AssessmentError {
+    /// TOML syntax, an unknown key or a wrong type in `[fragility]` / `[[limit_state]]`.
+    #[error("invalid scenario {origin}: {message}")]
+    Syntax {
+        /// The scenario's name.
+        origin: String,
+        /// The TOML reader's message (names line and column).
+        message: String,
+    },
+    /// A bad or missing value: the key (e.g. `fragility.levels_g`, `limit_state[1].capacity_n`)
+    /// and its line.
+    #[error("{message} — `{key}` ({})", match line { Some(l) => format!("{origin}:{l}"), None => format!("not set in {origin}") })]
+    Key {
+        /// What is wrong.
+        message: String,
+        /// The key.
+        key: String,
+        /// The scenario's name.
+        origin: String,
+        /// 1-based line, `None` when the key is not written.
+        line: Option<usize>,
+    },
+    /// The record set.
+    #[error(transparent)]
+    Set(#[from] crate::ground_motion::set::SetError),
+    /// The bridge scenario itself.
+    #[error(transparent)]
+    Scenario(#[from] crate::sim::scenario::ScenarioError),
+    /// The bridge model (e.g. no fundamental period).
+    #[error("{0}")]
+    Model(String),
+    /// An entry whose IM is zero cannot be scaled to a level.
+    #[error(
+        "record {id}: its {im} is 0, so it cannot be scaled to an IM level; remove it from the set"
+    )]
+    ZeroIm {
+        /// The entry's id.
+        id: String,
+        /// The IM's label.
+        im: String,
+    },
+}

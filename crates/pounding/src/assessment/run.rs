@@ -1,0 +1,327 @@
+//! The runs of a fragility study: every entry of the record set at every stripe, in parallel on
+//! the current rayon pool, rows in a fixed order; `runs.csv`; the data of the fit.
+
+use super::AssessmentError;
+use super::im::{ImSpec, intensity};
+use super::limit::BoundLimit;
+use super::settings::Stripes;
+use crate::ground_motion::GroundMotion;
+use crate::ground_motion::set::RecordSet;
+use crate::math::Real;
+use crate::output::{csv_field, float_token};
+use crate::sim::bridge::{BridgeProblem, simulate_bridge};
+use crate::sim::{SimSettings, SimStatus};
+use rayon::prelude::*;
+
+/// The runs to do: the IM of each entry and the scale factor of each (entry, stripe).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Plan {
+    /// The IM of each entry as applied at unit factor \[g\].
+    pub entry_im: Vec<Real>,
+    /// Stripes: IM levels \[g\] or scale factors.
+    pub stripes: Stripes,
+}
+
+impl Plan {
+    /// Computes every entry's IM (in parallel, deterministic) and refuses an IM of 0.
+    pub fn new(
+        set: &RecordSet,
+        spec: &ImSpec,
+        stripes: &Stripes,
+        ground: &GroundMotion,
+    ) -> Result<Self, AssessmentError> {
+        let entry_im: Vec<Real> = set
+            .records
+            .par_iter()
+            .map(|r| intensity(spec, r, ground.scale_y, ground.scale_x))
+            .collect();
+        for (r, &im) in set.records.iter().zip(&entry_im) {
+            if !(im.is_finite() && im > 0.0) {
+                return Err(AssessmentError::ZeroIm {
+                    id: r.id.clone(),
+                    im: spec.label(),
+                });
+            }
+        }
+        Ok(Self {
+            entry_im,
+            stripes: stripes.clone(),
+        })
+    }
+
+    /// The stripe values (levels in g, or scale factors).
+    pub fn values(&self) -> &[Real] {
+        match &self.stripes {
+            Stripes::Levels(v) | Stripes::Scales(v) => v,
+        }
+    }
+
+    /// `(IM [g], scale factor)` of entry `a` at stripe `b`: at a level `L`, `(L, L / IM_a)`; at a
+    /// scale `s`, `(s · IM_a, s)`.
+    pub fn point(&self, a: usize, b: usize) -> (Real, Real) {
+        let im = self.entry_im[a];
+        match &self.stripes {
+            Stripes::Levels(l) => (l[b], l[b] / im),
+            Stripes::Scales(s) => (s[b] * im, s[b]),
+        }
+    }
+}
+
+/// One run: entry `record` at stripe `stripe`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunRow {
+    /// Entry index.
+    pub record: usize,
+    /// Stripe index.
+    pub stripe: usize,
+    /// The run's IM \[g\].
+    pub im_g: Real,
+    /// The factor both components were multiplied by.
+    pub scale_factor: Real,
+    /// `Completed`, another status (untrustworthy), or `error`.
+    pub status: String,
+    /// The error message of a run that failed (empty otherwise).
+    pub error: String,
+    /// Per limit state: exceeded (`None`: excluded) and the ratio demand / capacity.
+    pub limits: Vec<(Option<bool>, Real)>,
+}
+
+impl RunRow {
+    /// Whether the run counts in the fit (`Completed`).
+    pub fn trusted(&self) -> bool {
+        self.status == "Completed"
+    }
+}
+
+/// Runs every entry at every stripe on the current rayon pool (rows in order `a S + b`, the
+/// same bytes for any number of threads); `progress()` after each run.
+pub fn run_all(
+    base: &BridgeProblem,
+    settings: &SimSettings,
+    set: &RecordSet,
+    plan: &Plan,
+    limits: &[BoundLimit],
+    progress: &(dyn Fn() + Sync),
+) -> Vec<RunRow> {
+    let settings = SimSettings {
+        history_stride: usize::MAX,
+        ..settings.clone()
+    };
+    let ns = plan.values().len();
+    (0..set.records.len() * ns)
+        .into_par_iter()
+        .map(|i| {
+            let (a, b) = (i / ns, i % ns);
+            let (im_g, sf) = plan.point(a, b);
+            let e = &set.records[a];
+            let p = BridgeProblem {
+                model: base.model.clone(),
+                ground: GroundMotion {
+                    along_y: Some(e.x.clone()),
+                    scale_y: base.ground.scale_y * sf,
+                    along_x: e.y.clone(),
+                    scale_x: base.ground.scale_x * sf,
+                    incidence: base.ground.incidence,
+                },
+                q0: base.q0.clone(),
+                u0: base.u0.clone(),
+            };
+            let (status, error, lim) = match simulate_bridge(&p, &settings) {
+                Err(err) => (
+                    "error".to_string(),
+                    err.to_string(),
+                    vec![(None, Real::NAN); limits.len()],
+                ),
+                Ok(sol) => {
+                    let ok = sol.status == SimStatus::Completed;
+                    let lim = limits
+                        .iter()
+                        .map(|l| {
+                            if ok {
+                                l.evaluate(&sol.summary)
+                            } else {
+                                (None, Real::NAN)
+                            }
+                        })
+                        .collect();
+                    (format!("{:?}", sol.status), String::new(), lim)
+                }
+            };
+            progress();
+            RunRow {
+                record: a,
+                stripe: b,
+                im_g,
+                scale_factor: sf,
+                status,
+                error,
+                limits: lim,
+            }
+        })
+        .collect()
+}
+
+/// `runs.csv`: `record`, the metadata columns (sorted names), `level_g` (stripes) or `scale`
+/// (IDA), `im_g`, `scale_factor`, `status`, then per limit state `<name>_exceeded` (`true`,
+/// `false`, empty when excluded) and `<name>_ratio` (demand / capacity; `nan` when excluded),
+/// and `error` last (the message of a failed run).
+pub fn runs_csv(set: &RecordSet, plan: &Plan, limits: &[BoundLimit], rows: &[RunRow]) -> String {
+    let meta = set.meta_keys();
+    let mut head: Vec<String> = vec!["record".into()];
+    head.extend(meta.iter().cloned());
+    head.push(match plan.stripes {
+        Stripes::Levels(_) => "level_g".into(),
+        Stripes::Scales(_) => "scale".into(),
+    });
+    head.extend(["im_g", "scale_factor", "status"].map(String::from));
+    for l in limits {
+        head.push(format!("{}_exceeded", l.state.name));
+        head.push(format!("{}_ratio", l.state.name));
+    }
+    head.push("error".into());
+    let mut out = head.join(",") + "\n";
+    for r in rows {
+        let e = &set.records[r.record];
+        let mut c: Vec<String> = vec![csv_field(&e.id)];
+        for k in &meta {
+            c.push(
+                e.meta
+                    .iter()
+                    .find(|(n, _)| n == k)
+                    .map_or(String::new(), |(_, v)| v.csv_cell()),
+            );
+        }
+        c.push(float_token(plan.values()[r.stripe]));
+        c.push(float_token(r.im_g));
+        c.push(float_token(r.scale_factor));
+        c.push(r.status.clone());
+        for (ex, ratio) in &r.limits {
+            c.push(ex.map_or(String::new(), |b| b.to_string()));
+            c.push(float_token(*ratio));
+        }
+        c.push(csv_field(&r.error));
+        out += &(c.join(",") + "\n");
+    }
+    out
+}
+
+/// `exceeded[entry][stripe]` of limit state `l` (`None` for excluded runs).
+pub fn exceedances(
+    rows: &[RunRow],
+    entries: usize,
+    stripes: usize,
+    l: usize,
+) -> Vec<Vec<Option<bool>>> {
+    let mut out = vec![vec![None; stripes]; entries];
+    for r in rows {
+        out[r.record][r.stripe] = r.limits[l].0;
+    }
+    out
+}
+
+/// IDA: what the runs of one entry say about its first exceedance of a limit state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum FirstExceedance {
+    /// Exceeded first at this IM \[g\] (interpolated, [`first_exceedance`]).
+    At(Real),
+    /// Never exceeded within the scales run (a censored record).
+    NotWithin,
+    /// An excluded run comes before the first exceedance: the crossing is unknown and the entry
+    /// is left out of the fit.
+    Unknown,
+}
+
+/// IDA: the first exceedance of limit state `l` for each entry, from its runs in increasing
+/// scale. Between the last run not exceeding (ratio `r₀` at `IM₀`) and the first exceeding
+/// (`r₁` at `IM₁`) the ratio is interpolated linearly in IM to where it reaches 1,
+/// `IM₀ + (1 − r₀)/(r₁ − r₀) (IM₁ − IM₀)`, clamped to `[IM₀, IM₁]` (unseating, whose flag is
+/// checked per end, may cross outside); exceeded already at the smallest scale: that run's IM
+/// (an upper bound of the crossing).
+pub fn first_exceedance(
+    rows: &[RunRow],
+    entries: usize,
+    stripes: usize,
+    l: usize,
+) -> Vec<FirstExceedance> {
+    (0..entries)
+        .map(|a| {
+            let mut prev: Option<(Real, Real)> = None;
+            for r in &rows[a * stripes..(a + 1) * stripes] {
+                let (ex, r1) = r.limits[l];
+                match ex {
+                    None => return FirstExceedance::Unknown,
+                    Some(false) => prev = Some((r.im_g, r1)),
+                    Some(true) => {
+                        let im1 = r.im_g;
+                        return FirstExceedance::At(match prev {
+                            None => im1,
+                            Some((im0, r0)) => {
+                                let x = im0 + (1.0 - r0) / (r1 - r0) * (im1 - im0);
+                                if x.is_finite() {
+                                    x.clamp(im0, im1)
+                                } else {
+                                    im1
+                                }
+                            }
+                        });
+                    }
+                }
+            }
+            FirstExceedance::NotWithin
+        })
+        .collect()
+}
+
+/// The fit of one limit state: multiple stripes by maximum likelihood
+/// ([`crate::fragility::bootstrap_stripes`]), IDA by the method of moments on the IMs at first
+/// exceedance ([`crate::fragility::bootstrap_ida`]; entries with an unknown crossing are left
+/// out). With `bootstrap.samples = 0` no intervals. `band_im`: the IMs of the bootstrap band.
+pub fn fit_limit_state(
+    name: &str,
+    plan: &Plan,
+    rows: &[RunRow],
+    l: usize,
+    bootstrap: &crate::fragility::BootstrapSettings,
+    band_im: &[Real],
+) -> Result<crate::fragility::FragilityRow, crate::fragility::FragilityError> {
+    use crate::fragility::{FragilityRow, IdaData, StripeData, bootstrap_ida, bootstrap_stripes};
+    let (entries, ns) = (plan.entry_im.len(), plan.values().len());
+    match &plan.stripes {
+        Stripes::Levels(levels) => {
+            let d = StripeData {
+                im: levels.clone(),
+                exceeded: exceedances(rows, entries, ns, l),
+            };
+            let b = (bootstrap.samples > 0)
+                .then(|| bootstrap_stripes(&d, bootstrap, band_im))
+                .transpose()?;
+            FragilityRow::from_stripes(name, &d, b)
+        }
+        Stripes::Scales(_) => {
+            let d = IdaData {
+                im_at_exceedance: first_exceedance(rows, entries, ns, l)
+                    .into_iter()
+                    .filter_map(|f| match f {
+                        FirstExceedance::At(x) => Some(Some(x)),
+                        FirstExceedance::NotWithin => Some(None),
+                        FirstExceedance::Unknown => None,
+                    })
+                    .collect(),
+            };
+            if d.im_at_exceedance.is_empty() {
+                return Ok(FragilityRow {
+                    limit_state: name.to_string(),
+                    method: crate::fragility::Method::MomentsIda,
+                    fit: crate::fragility::Fit::NoFiniteMle(crate::fragility::NoMle::TooFewPoints),
+                    bootstrap: None,
+                    n_records: 0,
+                    n_runs: 0,
+                });
+            }
+            let b = (bootstrap.samples > 0)
+                .then(|| bootstrap_ida(&d, bootstrap, band_im))
+                .transpose()?;
+            FragilityRow::from_ida(name, &d, b)
+        }
+    }
+}
