@@ -169,18 +169,29 @@ pub fn deck_frequencies(mass: &MassProperties, k: &Matrix3<Real>) -> [Real; 3] {
         .map(|&l| l.max(0.0).sqrt())
         .collect();
     ev.sort_by(Real::total_cmp);
+    // a mechanism mode (frequency below MECHANISM_RATIO of the highest: round-off of a singular
+    // stiffness) is a zero frequency, an infinite period (`null` in summary.json)
+    let floor = MECHANISM_RATIO * ev[2];
+    ev.iter_mut().filter(|w| **w <= floor).for_each(|w| *w = 0.0);
     [ev[0], ev[1], ev[2]]
 }
+
+/// A natural frequency at or below this fraction of a body's highest is a mechanism mode (a
+/// singular bearing stiffness): reported as zero (an infinite period), refused by the scenario
+/// readers unless `allow_mechanism = true`, and left out of the Rayleigh fit.
+pub const MECHANISM_RATIO: Real = 1e-6;
 
 /// Rayleigh coefficients `(a_0, a_1)` of `C = a_0 M + a_1 K` giving damping ratio `ζ` at the two
 /// lowest *distinct* frequencies `ω_a < ω_b` (relative separation > 1e-6):
 /// `a_0 = 2ζ ω_a ω_b/(ω_a + ω_b)`, `a_1 = 2ζ/(ω_a + ω_b)`. With a single distinct frequency `ω`:
-/// `a_0 = ζω`, `a_1 = ζ/ω`. Returns `None` if `ζ > 0` and every frequency is zero.
+/// `a_0 = ζω`, `a_1 = ζ/ω`. Zero frequencies (mechanism modes, which no damping can hold) are
+/// skipped: the fit is to the lowest non-zero ones. Returns `None` if `ζ > 0` and every frequency
+/// is zero.
 pub fn rayleigh_coefficients(zeta: Real, omega: &[Real; 3]) -> Option<(Real, Real)> {
     if zeta == 0.0 {
         return Some((0.0, 0.0));
     }
-    let wa = omega[0];
+    let wa = omega.iter().copied().find(|&w| w > 0.0).unwrap_or(0.0);
     let wb = omega
         .iter()
         .copied()
