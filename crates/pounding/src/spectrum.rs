@@ -37,7 +37,11 @@
 //! in `τ` (error a few ulps). An interval longer than 64 damped periods (a far-off sample time,
 //! periods far below the sample interval) is searched on its first three and last periods only,
 //! which provably hold its peak; the work per interval is bounded whatever `h/T`. Periods must
-//! lie in [`PERIOD_RANGE`]. Derivations, switch point and error bounds: the kernel's source
+//! lie in [`PERIOD_RANGE`]. At periods far beyond the record's duration the mass drifts after
+//! the record with its residual relative velocity `v_end = −∫a_g dt`, so `S_d ≈ |v_end|/ω`:
+//! that is physics, but `v_end` is a sum computed to about `ε Σ|a_i| h_i` (`ε = 2⁻⁵³`), so
+//! `S_d` is accurate only while `|v_end|` is well above that (El Centro: `v_end ≈ 9·10⁻⁶ m/s`,
+//! rounding `~10⁻¹⁴ m/s`). Derivations, switch point and error bounds: the kernel's source
 //! doc (`spectrum/oscillator.rs`).
 //!
 //! # Rotated pairs (RotD50, RotD100)

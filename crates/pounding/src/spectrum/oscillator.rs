@@ -111,7 +111,9 @@ fn series(x: Real, z: Real, j: usize, first: Real) -> Real {
         // t_{k+1} from t_k (cur) and t_{k-1} (prev): the recurrence at index k - 1
         let next = -(2.0 * z * x * cur + x * x * prev / k as Real) / (k + 1) as Real;
         sum += next;
-        if next.abs() <= 1e-18 * sum.abs() {
+        // two small terms in a row: every later one is smaller still (a zero term alone is
+        // not the end: with ζ = 0 every other term vanishes)
+        if next.abs() + cur.abs() <= 1e-18 * sum.abs() {
             break;
         }
         (prev, cur) = (cur, next);
