@@ -184,7 +184,7 @@ impl Oscillator {
     /// re-based at `h − T_d` (module doc).
     pub(super) fn stretches(&self, p: &Piece, h: Real) -> Vec<(Piece, Real)> {
         let td = self.td();
-        if p.series || !(h >= LONG_PERIODS * td) {
+        if p.series || h < LONG_PERIODS * td {
             return vec![(*p, h)];
         }
         let t0 = h - td;
