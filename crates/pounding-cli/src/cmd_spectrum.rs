@@ -65,6 +65,20 @@ fn load(name: &str, opts: &ReadOptions) -> Result<Record> {
     Record::from_path_with(Path::new(name), opts).map_err(|e| anyhow!("{e}"))
 }
 
+/// Prints how each record was read, one line per record and component (`x`; a pair's `x` and
+/// `y`), as `simulate` does, with its warning for an implausible PGA.
+fn print_records(singles: &[(String, Record)], pairs: &[(String, Record, Record)]) {
+    use crate::cmd_simulate::sim_records::print_component;
+    use pounding::ground_motion::ComponentInfo;
+    for (_, r) in singles {
+        print_component(&ComponentInfo::of("x", r));
+    }
+    for (_, x, y) in pairs {
+        print_component(&ComponentInfo::of("x", x));
+        print_component(&ComponentInfo::of("y", y));
+    }
+}
+
 /// Runs `pounding spectrum`.
 pub fn run(args: Args) -> Result<ExitCode> {
     if args.records.is_empty() && args.pair.is_empty() {
@@ -116,6 +130,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
             ))
         })
         .collect::<Result<_>>()?;
+    print_records(&singles, &pairs);
     let mut curves = Vec::new();
     let err = |e: pounding::spectrum::SpectrumError| anyhow!("{e}");
     for (name, r) in &singles {

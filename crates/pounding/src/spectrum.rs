@@ -29,7 +29,20 @@
 //! bracketed by sign changes of `u̇` on a sub-grid of spacing at most `T_d / 8` and found by
 //! bisection on the closed form (a sampled peak can be several % low when `T` is a few samples
 //! long). After the record ends the oscillator vibrates freely; that is followed for at least `2T`
-//! (with damping the later free peaks are smaller).
+//! (with damping the later free peaks are smaller; without, they repeat).
+//!
+//! # Precision and cost at extreme `ωh`
+//! Where `ωh <` [`SERIES_BELOW`] (periods far longer than the sample interval) the form above
+//! cancels catastrophically (`p₀ ≈ −a₀/ω²`); there the same motion is evaluated by power series
+//! in `τ` (error a few ulps). An interval longer than 64 damped periods (a far-off sample time,
+//! periods far below the sample interval) is searched on its first three and last periods only,
+//! which provably hold its peak; the work per interval is bounded whatever `h/T`. Periods must
+//! lie in [`PERIOD_RANGE`]. At periods far beyond the record's duration the mass drifts after
+//! the record with its residual relative velocity `v_end = −∫a_g dt`, so `S_d ≈ |v_end|/ω`:
+//! that is physics, but `v_end` is a sum computed to about `ε Σ|a_i| h_i` (`ε = 2⁻⁵³`), so
+//! `S_d` is accurate only while `|v_end|` is well above that (El Centro: `v_end ≈ 9·10⁻⁶ m/s`,
+//! rounding `~10⁻¹⁴ m/s`). Derivations, switch point and error bounds: the kernel's source
+//! doc (`spectrum/oscillator.rs`).
 //!
 //! # Rotated pairs (RotD50, RotD100)
 //! For two horizontal components `x`, `y` (Boore 2010, "Orientation-independent,
@@ -43,8 +56,12 @@
 
 use crate::ground_motion::{G0, Record};
 use crate::math::Real;
+use oscillator::{Oscillator, Piece};
 use std::f64::consts::PI;
 use thiserror::Error;
+
+mod oscillator;
+pub use oscillator::SERIES_BELOW;
 
 /// Bad spectrum input (a parameter out of range); the message names it.
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -89,7 +106,13 @@ impl Ordinate {
     }
 }
 
-/// Checks `damping ∈ [0, 1)` and every period finite and `> 0`.
+/// Shortest and longest period accepted \[s\]: `ω² = (2π/T)²` stays within `4·10^{±200}`, so
+/// `ω²`, `a/ω²` and `ω² S_d` are normal floats (no overflow to `inf`, no loss to subnormals)
+/// for any record value of normal size. Within it the results are accurate for every `ωh`
+/// (module doc of the kernel: series form for small `ωh`, long intervals in closed form).
+pub const PERIOD_RANGE: (Real, Real) = (1e-100, 1e100);
+
+/// Checks `damping ∈ [0, 1)` and every period finite and within [`PERIOD_RANGE`].
 pub fn check(damping: Real, periods: &[Real]) -> Result<(), SpectrumError> {
     if !(damping.is_finite() && (0.0..1.0).contains(&damping)) {
         return Err(SpectrumError::InvalidParameter {
@@ -105,108 +128,17 @@ pub fn check(damping: Real, periods: &[Real]) -> Result<(), SpectrumError> {
             reason: "must be finite and > 0 s".into(),
         });
     }
+    let (lo, hi) = PERIOD_RANGE;
+    if let Some(&t) = periods.iter().find(|t| !(lo..=hi).contains(*t)) {
+        return Err(SpectrumError::InvalidParameter {
+            name: "period".into(),
+            value: t,
+            reason: "must lie in [1e-100, 1e100] s (beyond it ω² = (2π/T)² leaves the range \
+                     where ω², a/ω² and ω² S_d are normal floating-point numbers)"
+                .into(),
+        });
+    }
     Ok(())
-}
-
-/// The oscillator `ω`, `ζ`, `ω_d`.
-#[derive(Debug, Clone, Copy)]
-struct Oscillator {
-    w: Real,
-    z: Real,
-    wd: Real,
-}
-
-/// The closed-form motion on one interval `[0, h]`: `u(τ) = e^{−ζωτ}(c₁ cos ω_d τ + c₂ sin
-/// ω_d τ) + p₀ + p₁ τ`. Linear in `(c₁, c₂, p₀, p₁)`, so responses combine component-wise.
-#[derive(Debug, Clone, Copy, Default)]
-struct Piece {
-    c1: Real,
-    c2: Real,
-    p0: Real,
-    p1: Real,
-}
-
-impl Piece {
-    fn combine(a: &Piece, ca: Real, b: &Piece, cb: Real) -> Piece {
-        Piece {
-            c1: ca * a.c1 + cb * b.c1,
-            c2: ca * a.c2 + cb * b.c2,
-            p0: ca * a.p0 + cb * b.p0,
-            p1: ca * a.p1 + cb * b.p1,
-        }
-    }
-}
-
-impl Oscillator {
-    fn new(period: Real, damping: Real) -> Self {
-        let w = 2.0 * PI / period;
-        Oscillator {
-            w,
-            z: damping,
-            wd: w * (1.0 - damping * damping).sqrt(),
-        }
-    }
-
-    /// The interval starting at `(u₀, u̇₀)` under `a₀ → a₁` over `h`.
-    fn piece(&self, u0: Real, v0: Real, a0: Real, a1: Real, h: Real) -> Piece {
-        let (w, z, wd) = (self.w, self.z, self.wd);
-        let s = if h > 0.0 { (a1 - a0) / h } else { 0.0 };
-        let p1 = -s / (w * w);
-        let p0 = -(a0 + 2.0 * z * w * p1) / (w * w);
-        let c1 = u0 - p0;
-        let c2 = (v0 - p1 + z * w * c1) / wd;
-        Piece { c1, c2, p0, p1 }
-    }
-
-    /// `(u(τ), u̇(τ))` of `p`.
-    fn at(&self, p: &Piece, tau: Real) -> (Real, Real) {
-        let (w, z, wd) = (self.w, self.z, self.wd);
-        let e = (-z * w * tau).exp();
-        let (sn, cs) = (wd * tau).sin_cos();
-        let u = e * (p.c1 * cs + p.c2 * sn) + p.p0 + p.p1 * tau;
-        let v = e * ((-z * w * p.c1 + wd * p.c2) * cs + (-z * w * p.c2 - wd * p.c1) * sn) + p.p1;
-        (u, v)
-    }
-
-    /// Number of sub-intervals of `[0, h]` so that each is at most `T_d / 8` long.
-    fn subdivisions(&self, h: Real) -> usize {
-        let td = 2.0 * PI / self.wd;
-        ((h / (td / 8.0)).ceil() as usize).max(1)
-    }
-
-    /// `max |u|` of `p` over `[0, h]`: the end values and every interior zero of `u̇`
-    /// bracketed on the sub-grid, by bisection.
-    fn peak(&self, p: &Piece, h: Real) -> Real {
-        let m = self.subdivisions(h);
-        let (u0, mut v0) = self.at(p, 0.0);
-        let (mut best, mut t0) = (u0.abs(), 0.0);
-        for j in 1..=m {
-            let t1 = h * j as Real / m as Real;
-            let (u1, v1) = self.at(p, t1);
-            best = best.max(u1.abs());
-            if v0 * v1 < 0.0 {
-                best = best.max(self.extremum(p, t0, t1, v0).abs());
-            }
-            (t0, v0) = (t1, v1);
-        }
-        best
-    }
-
-    /// `u` at the zero of `u̇` in `(a, b)` (`u̇(a)` has sign of `va`, `u̇(b)` the opposite).
-    fn extremum(&self, p: &Piece, mut a: Real, mut b: Real, va: Real) -> Real {
-        for _ in 0..60 {
-            let m = 0.5 * (a + b);
-            if m <= a || m >= b {
-                break;
-            }
-            if self.at(p, m).1 * va > 0.0 {
-                a = m;
-            } else {
-                b = m;
-            }
-        }
-        self.at(p, 0.5 * (a + b)).0
-    }
 }
 
 /// The pieces of the oscillator's motion under the piecewise-linear load `(times, accel)`
@@ -292,16 +224,13 @@ fn rotated_peaks(osc: &Oscillator, px: &[(Piece, Real)], py: &[(Piece, Real)]) -
         .map(|(s, c)| (c, s))
         .collect();
     let mut peaks: Vec<Real> = vec![0.0; 180];
-    let mut ux = Vec::new();
-    let mut uy = Vec::new();
-    // |u_α| ≤ |(u_x, u_y)| ≤ the bound of each piece (|e^{−ζωτ}(c₁ cos + c₂ sin)| ≤ √(c₁² + c₂²));
+    // |u_α| ≤ |(u_x, u_y)| ≤ the bound of each piece (Piece::bound);
     // pieces in decreasing bound, stopping once a bound is below every angle's peak so far
-    let bound = |p: &Piece, h: Real| p.c1.hypot(p.c2) + p.p0.abs() + p.p1.abs() * h;
     let mut order: Vec<(Real, usize)> = px
         .iter()
         .zip(py)
         .enumerate()
-        .map(|(i, ((a, h), (b, _)))| (bound(a, *h).hypot(bound(b, *h)), i))
+        .map(|(i, ((a, h), (b, _)))| (a.bound(*h).hypot(b.bound(*h)), i))
         .collect();
     order.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
     for (b, i) in order {
@@ -309,33 +238,48 @@ fn rotated_peaks(osc: &Oscillator, px: &[(Piece, Real)], py: &[(Piece, Real)]) -
             break;
         }
         let ((pxi, h), (pyi, _)) = (&px[i], &py[i]);
-        let m = osc.subdivisions(*h);
-        ux.clear();
-        uy.clear();
-        for j in 0..=m {
-            let tau = h * j as Real / m as Real;
-            ux.push(osc.at(pxi, tau));
-            uy.push(osc.at(pyi, tau));
-        }
-        for (k, &(c, s)) in angles.iter().enumerate() {
-            let mut best = peaks[k];
-            let mut prev_v = c * ux[0].1 + s * uy[0].1;
-            best = best.max((c * ux[0].0 + s * uy[0].0).abs());
-            for j in 1..=m {
-                let u = c * ux[j].0 + s * uy[j].0;
-                let v = c * ux[j].1 + s * uy[j].1;
-                best = best.max(u.abs());
-                if prev_v * v < 0.0 {
-                    let p = Piece::combine(pxi, c, pyi, s);
-                    let (a, b) = (h * (j - 1) as Real / m as Real, h * j as Real / m as Real);
-                    best = best.max(osc.extremum(&p, a, b, prev_v).abs());
-                }
-                prev_v = v;
-            }
-            peaks[k] = best;
+        let sy = osc.stretches(pyi, *h);
+        for (k, (pxs, hs)) in osc.stretches(pxi, *h).iter().enumerate() {
+            stretch_peaks(osc, &angles, (pxs, &sy[k].0), *hs, &mut peaks);
         }
     }
     peaks
+}
+
+/// Raises `peaks[k]` to `max |c u_x + s u_y|` over `[0, h]` of the pieces `(x, y)`, for every
+/// angle `(c, s)` of `angles`.
+fn stretch_peaks(
+    osc: &Oscillator,
+    angles: &[(Real, Real)],
+    (pxi, pyi): (&Piece, &Piece),
+    h: Real,
+    peaks: &mut [Real],
+) {
+    let m = osc.subdivisions(h);
+    let mut ux = Vec::with_capacity(m + 1);
+    let mut uy = Vec::with_capacity(m + 1);
+    for j in 0..=m {
+        let tau = h * j as Real / m as Real;
+        ux.push(osc.at(pxi, tau));
+        uy.push(osc.at(pyi, tau));
+    }
+    for (k, &(c, s)) in angles.iter().enumerate() {
+        let mut best = peaks[k];
+        let mut prev_v = c * ux[0].1 + s * uy[0].1;
+        best = best.max((c * ux[0].0 + s * uy[0].0).abs());
+        for j in 1..=m {
+            let u = c * ux[j].0 + s * uy[j].0;
+            let v = c * ux[j].1 + s * uy[j].1;
+            best = best.max(u.abs());
+            if prev_v * v < 0.0 {
+                let p = Piece::combine(pxi, c, pyi, s);
+                let (a, b) = (h * (j - 1) as Real / m as Real, h * j as Real / m as Real);
+                best = best.max(osc.extremum(&p, a, b, prev_v).abs());
+            }
+            prev_v = v;
+        }
+        peaks[k] = best;
+    }
 }
 
 /// RotD50 and RotD100 of the pair `(x, y)` at `periods` with damping ratio `damping`.

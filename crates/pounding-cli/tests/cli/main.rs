@@ -81,6 +81,7 @@ mod simulate;
 mod simulate_flags;
 mod small_things;
 mod spectrum;
+mod spectrum_limits;
 mod study;
 mod study_shapes;
 mod vocab;

@@ -48,6 +48,7 @@ mod sim_outputs;
 mod sim_scenario;
 mod sim_shapes;
 mod spectrum;
+mod spectrum_limits;
 mod study;
 mod study_shapes;
 mod study_vocab;
