@@ -42,7 +42,7 @@ pub struct Args {
     )]
     pub laws: Vec<String>,
     /// Override the scenario's time step `[time] dt` for every law, in seconds.
-    #[arg(long, value_name = "DT")]
+    #[arg(long, value_name = "DT", allow_hyphen_values = true)]
     pub dt: Option<f64>,
     /// Output directory.
     #[arg(long, value_name = "DIR", default_value = "out/compare")]

@@ -37,51 +37,51 @@ pub struct ImpactArgs {
     #[arg(
         long,
         required_unless_present_any = ["problem", "shape", "abutment"],
-        allow_negative_numbers = true
+        allow_hyphen_values = true
     )]
     r1: Option<f64>,
     /// Centre-line radius of deck 2 [m] (> W/2).
     #[arg(
         long,
         required_unless_present_any = ["problem", "shape", "abutment"],
-        allow_negative_numbers = true
+        allow_hyphen_values = true
     )]
     r2: Option<f64>,
     /// Curve angle of deck 1 [deg], in (0, 360).
     #[arg(
         long,
         required_unless_present_any = ["problem", "shape", "abutment"],
-        allow_negative_numbers = true
+        allow_hyphen_values = true
     )]
     beta1: Option<f64>,
     /// Curve angle of deck 2 [deg], in (0, 360).
     #[arg(
         long,
         required_unless_present_any = ["problem", "shape", "abutment"],
-        allow_negative_numbers = true
+        allow_hyphen_values = true
     )]
     beta2: Option<f64>,
     /// Deck width W [m] (both decks).
-    #[arg(long, default_value_t = 10.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 10.0, allow_hyphen_values = true)]
     width: f64,
     /// Deck thickness t [m] (both decks).
-    #[arg(long, default_value_t = 0.5, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 0.5, allow_hyphen_values = true)]
     thickness: f64,
     /// Density ρ [kg/m³] (both decks).
-    #[arg(long, default_value_t = 2500.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 2500.0, allow_hyphen_values = true)]
     density: f64,
     /// Rotation of deck 1 [deg], counter-clockwise, |θ| < 90.
     #[arg(
         long,
         required_unless_present_any = ["problem", "shape", "abutment"],
-        allow_negative_numbers = true
+        allow_hyphen_values = true
     )]
     theta1: Option<f64>,
     /// Rotation of deck 2 [deg], counter-clockwise, |θ| < 90.
     #[arg(
         long,
         required_unless_present_any = ["problem", "shape", "abutment"],
-        allow_negative_numbers = true
+        allow_hyphen_values = true
     )]
     theta2: Option<f64>,
     /// Candidate contact: deck1-inner, deck1-outer, deck2-inner or deck2-outer.
@@ -91,25 +91,25 @@ pub struct ImpactArgs {
     #[arg(
         long,
         required_unless_present = "problem",
-        allow_negative_numbers = true
+        allow_hyphen_values = true
     )]
     mu: Option<f64>,
     /// Newton restitution coefficient ε_N in [0, 1].
     #[arg(
         long,
         required_unless_present = "problem",
-        allow_negative_numbers = true
+        allow_hyphen_values = true
     )]
     eps: Option<f64>,
     /// Where the struck point lies: exact (corner position) or end (the paper's face-end idealisation).
     #[arg(long, default_value = "exact")]
     sigma_mode: String,
     /// Pre-impact ratio r = γ_T⁻/γ_N⁻ (evaluated with γ_N⁻ = −1): also solve the impact.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     ratio: Option<f64>,
     /// Joint opening g [m] (M_1 = (0, g)): also report which corner touches first and after what
     /// closing distance, or the overlap if the pose already interpenetrates (docs/guide/model.md).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     opening: Option<f64>,
     /// Deck shape: curved (the default: two S-curved decks, or with --abutment deck 1 against an
     /// abutment), straight (rectangle) or skew (parallelogram). straight/skew without --abutment:
@@ -117,19 +117,19 @@ pub struct ImpactArgs {
     #[arg(long, value_name = "curved|straight|skew")]
     shape: Option<String>,
     /// Deck length L along the axis [m] (> 0; --shape straight|skew).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     length: Option<f64>,
     /// Length of deck 2 [m] (> 0; --shape straight|skew without --abutment; default --length).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     length2: Option<f64>,
     /// Skew angle θ_s [deg] in [0, 90): end faces vs the normal of the deck axis (--shape skew).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     skew: Option<f64>,
     /// The deck (deck 1) against a rigid abutment beyond its far end instead of deck 2.
     #[arg(long)]
     abutment: bool,
     /// Abutment gap g >= 0 [m] along the far face's outward normal (--abutment; default 0).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     gap: Option<f64>,
     /// Striking corner(s) of the far face (--abutment; default both): both, c0, c1; aliases
     /// acute = c0, obtuse = c1 (skew) and outer = c0, inner = c1 (curved).
@@ -137,7 +137,7 @@ pub struct ImpactArgs {
     corner: Option<String>,
     /// Speed of deck 1's longitudinal approach [m/s] (> 0; default 1): toward the abutment
     /// (--abutment, both corners) or toward deck 2 (two straight/skew decks).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     speed: Option<f64>,
     /// Print JSON instead of the readable summary.
     #[arg(long)]

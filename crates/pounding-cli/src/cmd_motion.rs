@@ -35,14 +35,14 @@ struct SynthArgs {
     #[arg(long, value_name = "DIR")]
     out: PathBuf,
     /// Scale every component to this PGA in g (default: unscaled, white-noise intensity S0).
-    #[arg(long, value_name = "G", allow_negative_numbers = true)]
+    #[arg(long, value_name = "G", allow_hyphen_values = true)]
     pga: Option<f64>,
     /// Sample interval in seconds.
     #[arg(
         long,
         value_name = "SECONDS",
         default_value_t = 0.01,
-        allow_negative_numbers = true
+        allow_hyphen_values = true
     )]
     dt: f64,
     /// Duration in seconds (the envelope reaches 5 % of its peak at the end).
@@ -50,7 +50,7 @@ struct SynthArgs {
         long,
         value_name = "SECONDS",
         default_value_t = 20.0,
-        allow_negative_numbers = true
+        allow_hyphen_values = true
     )]
     duration: f64,
     /// Write two independent horizontal components per record (x and y).

@@ -49,10 +49,10 @@ pub struct Args {
     pub csv_units: Option<AccelUnits>,
     /// Sample interval (s) of one-column records (accelerations only, as OpenSees' timeSeries
     /// Path -dt) given by --record / --records; refused for files with their own times.
-    #[arg(long, value_name = "SECONDS", allow_negative_numbers = true)]
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true)]
     pub record_dt: Option<f64>,
     /// Multiply both ground-motion scale factors by S (negative: a sign flip).
-    #[arg(long, value_name = "S", allow_negative_numbers = true)]
+    #[arg(long, value_name = "S", allow_hyphen_values = true)]
     pub scale: Option<f64>,
     /// Replace the scenario's time step `[time] dt` (seconds).
     #[arg(long, value_name = "SECONDS", allow_hyphen_values = true)]

@@ -23,21 +23,21 @@ pub struct Args {
     #[arg(long, num_args = 2, value_names = ["X", "Y"], action = clap::ArgAction::Append)]
     pub pair: Vec<String>,
     /// Damping ratio, a fraction of critical (0.05 = 5 %).
-    #[arg(long, default_value_t = 0.05, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 0.05, allow_hyphen_values = true)]
     pub damping: f64,
     /// Periods in seconds, comma separated (default: 100 from 0.01 s to 10 s, even in log T).
     #[arg(
         long,
         value_delimiter = ',',
         value_name = "T1,T2,...",
-        allow_negative_numbers = true
+        allow_hyphen_values = true
     )]
     pub periods: Vec<f64>,
     /// Units of text records: g or m/s2 (an .AT2 header names its own).
     #[arg(long, value_name = "g|m/s2", default_value = "g")]
     pub csv_units: String,
     /// Sample interval (seconds) of one-column records.
-    #[arg(long, value_name = "SECONDS")]
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true)]
     pub record_dt: Option<f64>,
     /// Output directory.
     #[arg(long, value_name = "DIR", default_value = "out/spectrum")]

@@ -162,7 +162,8 @@ pub struct ContactReport {
     pub normal_impulse: f64,
     /// `Λ_T` \[N s\].
     pub tangential_impulse: f64,
-    /// Post-impact mode.
+    /// Post-impact mode (`open`, `stick`, `slip-positive`, `slip-negative`; `unsolved` when no
+    /// solution was found: the impulses are `NaN`).
     pub mode: &'static str,
     /// `γ_N⁻` \[m/s\].
     pub gamma_n_pre: f64,
@@ -238,7 +239,11 @@ pub fn problem_report(problem: &ImpactProblem) -> ProblemReport {
                 tangent: xy(&k.tangent),
                 normal_impulse: c.normal_impulse,
                 tangential_impulse: c.tangential_impulse,
-                mode: c.mode.name(),
+                mode: if c.normal_impulse.is_nan() {
+                    "unsolved"
+                } else {
+                    c.mode.name()
+                },
                 gamma_n_pre: c.gamma_n_pre,
                 gamma_t_pre: c.gamma_t_pre,
                 gamma_n_post: c.gamma_n_post,
@@ -251,8 +256,9 @@ pub fn problem_report(problem: &ImpactProblem) -> ProblemReport {
         },
         status: s.status.name(),
         solutions: checked.then_some(s.solutions),
-        post_velocity_unique: checked.then_some(s.post_velocity_unique),
-        impulse_unique: checked.then_some(s.solutions <= 1),
+        // uniqueness is a property of solutions: unknown (null) when none was found
+        post_velocity_unique: (checked && s.solutions > 0).then_some(s.post_velocity_unique),
+        impulse_unique: (checked && s.solutions > 0).then_some(s.solutions <= 1),
         tangential_split_unique: matches!(
             s.status,
             impact::ImpactStatus::Solved | impact::ImpactStatus::SolvedByFallback
@@ -314,7 +320,9 @@ impl ProblemReport {
                 "  post-solve check failed (numbers not trustworthy): {v}"
             ));
         }
-        if self.enumerated {
+        if self.enumerated && self.solutions == Some(0) {
+            lines.push("  enumeration: no solution found".to_string());
+        } else if self.enumerated {
             lines.push(format!(
                 "  enumeration: {} distinct solution(s); post-impact velocities {}",
                 self.solutions.unwrap_or(0),
