@@ -88,18 +88,10 @@ pub struct ImpactArgs {
     #[arg(long, required_unless_present_any = ["problem", "shape", "abutment"])]
     case: Option<String>,
     /// Coulomb friction coefficient μ >= 0.
-    #[arg(
-        long,
-        required_unless_present = "problem",
-        allow_hyphen_values = true
-    )]
+    #[arg(long, required_unless_present = "problem", allow_hyphen_values = true)]
     mu: Option<f64>,
     /// Newton restitution coefficient ε_N in [0, 1].
-    #[arg(
-        long,
-        required_unless_present = "problem",
-        allow_hyphen_values = true
-    )]
+    #[arg(long, required_unless_present = "problem", allow_hyphen_values = true)]
     eps: Option<f64>,
     /// Where the struck point lies: exact (corner position) or end (the paper's face-end idealisation).
     #[arg(long, default_value = "exact")]

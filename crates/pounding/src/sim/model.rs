@@ -172,7 +172,9 @@ pub fn deck_frequencies(mass: &MassProperties, k: &Matrix3<Real>) -> [Real; 3] {
     // a mechanism mode (frequency below MECHANISM_RATIO of the highest: round-off of a singular
     // stiffness) is a zero frequency, an infinite period (`null` in summary.json)
     let floor = MECHANISM_RATIO * ev[2];
-    ev.iter_mut().filter(|w| **w <= floor).for_each(|w| *w = 0.0);
+    ev.iter_mut()
+        .filter(|w| **w <= floor)
+        .for_each(|w| *w = 0.0);
     [ev[0], ev[1], ev[2]]
 }
 

@@ -361,7 +361,7 @@ fn dt_beyond_duration(
         .map(String::as_str)
         .filter(|r| !r.trim().eq_ignore_ascii_case("none"))
         .collect();
-    let dt_by = match src.builtin {
+    let dt_by = match src.builtin && dt_at.flag.is_none() {
         true => "the built-in default dt".to_string(),
         false => format!("set by {dt_at}"),
     };

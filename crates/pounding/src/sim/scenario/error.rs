@@ -175,6 +175,10 @@ impl fmt::Display for KeyRef {
             return write!(f, "{flag} (command line, in place of {})", self.key);
         }
         match self.line {
+            // the built-in scenario's lines are not a file the user has
+            Some(_) if self.origin == "built-in default" => {
+                write!(f, "{} (the built-in default)", self.key)
+            }
             Some(l) => write!(f, "{} ({}:{l})", self.key, self.origin),
             None => write!(f, "{} (not set in {}; default)", self.key, self.origin),
         }
