@@ -306,8 +306,8 @@ pub(crate) fn lock_and_clear(out: &Path) -> Result<pounding::output::OutputLock>
     Ok(lock)
 }
 
-/// Prints the run's warnings that stderr has not shown yet: the time step (the record lines
-/// came before the run) and the per-impact summary. `summary.json` lists them all (and
+/// Prints the run's warnings that stderr has not shown yet: the time step's (the record lines
+/// and their PGA warnings came before the run) and the per-impact summary. `summary.json` lists them all (and
 /// `report.html` from it).
 pub(crate) fn print_run_warnings(
     ground: &pounding::ground_motion::GroundMotion,
@@ -316,7 +316,7 @@ pub(crate) fn print_run_warnings(
     impacts: &[pounding::sim::output::RunWarning],
 ) {
     let input = pounding::sim::output::input_warnings(ground, dt, advice);
-    for w in input.iter().filter(|w| w.kind == "time_step_coarse") {
+    for w in input.iter().filter(|w| w.kind != "record_pga_implausible") {
         eprintln!("warning: {}", w.message);
     }
     if let Some(w) = pounding::sim::output::warnings_message(impacts) {

@@ -132,3 +132,30 @@ fn the_batch_counts_the_warnings_of_each_run_as_the_single_run_lists_them() {
         assert_eq!(cells[col], n.to_string(), "scale {scale}");
     }
 }
+
+/// A step longer than the record's sample interval (the built-in El Centro: 0.01 s) skips samples
+/// of the excitation: warned, in summary.json with both intervals.
+#[test]
+fn a_step_beyond_the_record_interval_is_warned() {
+    let d = scratch_dir("warn", "beyond");
+    let out = pounding()
+        .current_dir(&d)
+        .args(["simulate", "--dt", "0.02", "--duration", "4", "--out", "o"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    assert!(err.contains("longer than the sample interval 0.01 s"), "{err}");
+    let s = summary(&d.join("o"));
+    let w = &s["warnings"][0];
+    assert_eq!(w["kind"], "time_step_beyond_record");
+    assert_eq!((w["dt_s"].as_f64(), w["record_dt_s"].as_f64()), (Some(0.02), Some(0.01)));
+    // at the default dt (1 ms) there is no such warning
+    let ok = pounding()
+        .current_dir(&d)
+        .args(["simulate", "--duration", "1", "--out", "p"])
+        .output()
+        .unwrap();
+    assert!(ok.status.success());
+    assert!(!kinds(&summary(&d.join("p"))).contains(&"time_step_beyond_record".to_string()));
+}

@@ -12,7 +12,7 @@ use serde_json::{Value, json};
 /// A warning about a run's input or resolution.
 #[derive(Debug, Clone, PartialEq)]
 pub struct InputWarning {
-    /// `record_pga_implausible` or `time_step_coarse`.
+    /// `record_pga_implausible`, `time_step_beyond_record` or `time_step_coarse`.
     pub kind: &'static str,
     /// The sentence printed on stderr and in `report.html`.
     pub message: String,
@@ -22,8 +22,9 @@ pub struct InputWarning {
 
 /// The warnings of a run on `ground` with step `dt` and the compliance law's time-step advice
 /// (`None` for the rigid law): one per record component whose PGA as read exceeds
-/// [`crate::ground_motion::PLAUSIBLE_PGA_G`], and one when `dt` exceeds the advice's largest
-/// adequate step (`T_c/20`).
+/// [`crate::ground_motion::PLAUSIBLE_PGA_G`], one per uniformly sampled record whose sample
+/// interval is shorter than `dt` (the run skips samples), and one when `dt` exceeds the advice's
+/// largest adequate step (`T_c/20`).
 pub fn input_warnings(
     ground: &GroundMotion,
     dt: Real,
@@ -47,6 +48,34 @@ pub fn input_warnings(
             })
         })
         .collect();
+    for c in ground.components() {
+        // a step longer than the record's sample interval skips samples of the excitation
+        if let Some(rdt) = c.dt.filter(|&rdt| dt > rdt * (1.0 + 1e-9)) {
+            let f = crate::output::float_token;
+            let message = format!(
+                "dt = {} s is longer than the sample interval {} s of record {} (component {}): \
+                 the run sees the record only at its step times and skips samples in between; \
+                 use dt <= {} s",
+                f(dt),
+                f(rdt),
+                c.record,
+                c.component,
+                f(rdt)
+            );
+            out.push(InputWarning {
+                kind: "time_step_beyond_record",
+                json: json!({
+                    "kind": "time_step_beyond_record",
+                    "component": c.component,
+                    "record": c.record,
+                    "dt_s": json_float(dt),
+                    "record_dt_s": json_float(rdt),
+                    "message": message,
+                }),
+                message,
+            });
+        }
+    }
     if let Some(a) = advice.filter(|a| !a.adequate) {
         let f = crate::output::float_token;
         let message = format!(
