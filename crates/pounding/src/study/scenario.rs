@@ -283,6 +283,45 @@ pub const DEFAULT_SKEW_DEG: [Real; 3] = [0.0, 15.0, 30.0];
 
 type S<T> = Option<Spanned<T>>;
 
+/// A list key of a study (`R1`, `mu`, …): a list of numbers, or one number meaning a list of one,
+/// as the same key of a `simulate` scenario is written (`R1 = 100.0`).
+fn list<'de, D: serde::Deserializer<'de>>(d: D) -> Result<S<Vec<Real>>, D::Error> {
+    struct OneOrMany(Vec<Real>);
+    impl<'de> Deserialize<'de> for OneOrMany {
+        fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+            struct V;
+            impl<'de> serde::de::Visitor<'de> for V {
+                type Value = OneOrMany;
+                fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                    f.write_str("a number or a list of numbers")
+                }
+                fn visit_f64<E: serde::de::Error>(self, v: f64) -> Result<OneOrMany, E> {
+                    Ok(OneOrMany(vec![v]))
+                }
+                fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<OneOrMany, E> {
+                    Ok(OneOrMany(vec![v as Real]))
+                }
+                fn visit_u64<E: serde::de::Error>(self, v: u64) -> Result<OneOrMany, E> {
+                    Ok(OneOrMany(vec![v as Real]))
+                }
+                fn visit_seq<A: serde::de::SeqAccess<'de>>(
+                    self,
+                    a: A,
+                ) -> Result<OneOrMany, A::Error> {
+                    Vec::<Real>::deserialize(serde::de::value::SeqAccessDeserializer::new(a))
+                        .map(OneOrMany)
+                }
+            }
+            d.deserialize_any(V)
+        }
+    }
+    let s: Option<Spanned<OneOrMany>> = Option::deserialize(d)?;
+    Ok(s.map(|s| {
+        let span = s.span();
+        Spanned::new(span, s.into_inner().0)
+    }))
+}
+
 #[derive(Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 struct RawScenario {
@@ -297,33 +336,46 @@ struct RawScenario {
 struct RawDecks {
     shape: S<String>,
     #[serde(rename = "L1")]
+    #[serde(default, deserialize_with = "list")]
     l1: S<Vec<Real>>,
     #[serde(rename = "L2")]
+    #[serde(default, deserialize_with = "list")]
     l2: S<Vec<Real>>,
+    #[serde(default, deserialize_with = "list")]
     skew_deg: S<Vec<Real>>,
     width: S<Real>,
     thickness: S<Real>,
     density: S<Real>,
+    #[serde(default, deserialize_with = "list")]
     beta1_deg: S<Vec<Real>>,
+    #[serde(default, deserialize_with = "list")]
     beta2_deg: S<Vec<Real>>,
     #[serde(rename = "R1")]
+    #[serde(default, deserialize_with = "list")]
     r1: S<Vec<Real>>,
     #[serde(rename = "R2")]
+    #[serde(default, deserialize_with = "list")]
     r2: S<Vec<Real>>,
     // Deprecated names (folded into the ones above by `keys::fold_deprecated`).
+    #[serde(default, deserialize_with = "list")]
     l1_m: S<Vec<Real>>,
+    #[serde(default, deserialize_with = "list")]
     l2_m: S<Vec<Real>>,
     width_m: S<Real>,
     thickness_m: S<Real>,
     density_kg_m3: S<Real>,
+    #[serde(default, deserialize_with = "list")]
     r1_m: S<Vec<Real>>,
+    #[serde(default, deserialize_with = "list")]
     r2_m: S<Vec<Real>>,
 }
 
 #[derive(Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 struct RawImpact {
+    #[serde(default, deserialize_with = "list")]
     mu: S<Vec<Real>>,
+    #[serde(default, deserialize_with = "list")]
     eps: S<Vec<Real>>,
     sigma_mode: S<String>,
 }

@@ -118,3 +118,23 @@ fn deprecation_notes_follow_the_lines_of_the_file() {
     let lines: Vec<usize> = notes.iter().map(|n| n.line).collect();
     assert_eq!(lines, vec![2, 3, 4, 5], "{notes:?}");
 }
+
+/// A study list key written as one number, the way a `simulate` scenario writes it (`R1 = 100.0`),
+/// is a list of one: the same scenario as `R1 = [100.0]`. A string is refused naming the key.
+#[test]
+fn a_list_key_written_as_one_number_is_a_list_of_one() {
+    let one = "[decks]\nR1 = 100.0\nR2 = 80\nbeta1_deg = 60.0\n[impact]\nmu = 0.5\neps = 0.5\n";
+    let many =
+        "[decks]\nR1 = [100.0]\nR2 = [80]\nbeta1_deg = [60.0]\n[impact]\nmu = [0.5]\neps = [0.5]\n";
+    let a = Scenario::from_toml(one, "one.toml").unwrap();
+    let b = Scenario::from_toml(many, "many.toml").unwrap();
+    assert_eq!(a, b);
+    let e = Scenario::from_toml("[decks]\nR1 = \"100\"\n", "s.toml").unwrap_err();
+    let msg = e.to_string();
+    assert!(
+        msg.contains("a number or a list of numbers")
+            && msg.contains("line 2")
+            && msg.contains("decks.R1"),
+        "{msg}"
+    );
+}
