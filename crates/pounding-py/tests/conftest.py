@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import os
 import shutil
 import subprocess
@@ -40,10 +41,21 @@ def build_cli():
             "POUNDING_BIN to a `pounding` binary of this checkout)"
         )
     cmd = [cargo, "build", "--release", "-p", "pounding-cli"]
-    p = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True)
+    p = subprocess.run(cmd + ["--message-format=json-render-diagnostics"], cwd=ROOT,
+                       capture_output=True, text=True)
     if p.returncode != 0:
         raise AssertionError(f"{' '.join(cmd)} failed (exit {p.returncode}):\n{p.stderr[-4000:]}")
-    exe = _target_dir() / "release" / ("pounding.exe" if os.name == "nt" else "pounding")
+    exe = None
+    for line in p.stdout.splitlines():  # cargo names the binary it built (any target dir)
+        try:
+            msg = json.loads(line)
+        except ValueError:
+            continue
+        if msg.get("reason") == "compiler-artifact" and msg.get("target", {}).get("name") \
+                == "pounding" and msg.get("executable"):
+            exe = Path(msg["executable"])
+    if exe is None:  # older cargo: the documented place
+        exe = _target_dir() / "release" / ("pounding.exe" if os.name == "nt" else "pounding")
     if not exe.is_file():
         raise AssertionError(f"{' '.join(cmd)} succeeded but {exe} does not exist")
     return str(exe), None
