@@ -174,8 +174,12 @@ def simulate(
         is returned with that status, as the CLI writes its outputs.
 
     Raises:
-        ValueError: bad input, with the CLI's message (file, key, value, reason, line).
+        ValueError: bad input, with the CLI's message (file, key, value, reason, line); a
+            missing scenario file; ``record_dt`` with an array record.
+        TypeError: a complex, bool or masked record array, a bool ``scale``/``dt``.
         pounding.SolverError: an internal failure without a result.
+        KeyboardInterrupt: Ctrl-C during the run (raised at once; the abandoned run finishes
+            on a background thread and is discarded).
     """
     path, array = record_arg(record)
     _no_record_dt_for_arrays(record_dt, [array])
@@ -219,8 +223,11 @@ def batch(
         (empty cells NaN), ``unseated`` bool, text columns str.
 
     Raises:
-        ValueError: bad input for the whole batch (no records, a non-finite scale, the
-            scenario).
+        ValueError: bad input for the whole batch (no records, no scales, a non-finite scale,
+            the scenario, ``record_dt`` with an array record).
+        TypeError: a record that is neither a path nor a tuple, a complex/bool/masked array, a
+            ``threads`` that is not an int.
+        KeyboardInterrupt: Ctrl-C during the batch (raised at once).
     """
     if isinstance(records, (str, bytes, os.PathLike)):
         records = [records]  # one record, not its characters
