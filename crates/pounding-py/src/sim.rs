@@ -240,8 +240,11 @@ fn simulate_run(
             setup.problem = run_bridge_problem(&setup.problem, r, s);
             setup.records = [r.name.clone(), "none".into()];
         }
-        let sol = crate::heavy(py, || setup.run())?.map_err(value_error)?;
-        Run::Bridge(Box::new(setup), Box::new(sol))
+        let (setup, sol) = crate::interruptible(py, move || {
+            let sol = setup.run();
+            (setup, sol)
+        })?;
+        Run::Bridge(Box::new(setup), Box::new(sol.map_err(value_error)?))
     } else {
         sc.override_reading(csv_units).map_err(value_error)?;
         let mut setup = sc.build().map_err(value_error)?;
@@ -249,9 +252,11 @@ fn simulate_run(
             setup.problem = run_problem(&setup.problem, r, s);
             setup.records = [r.name.clone(), "none".into()];
         }
-        let sol =
-            crate::heavy(py, || simulate(&setup.problem, &setup.settings))?.map_err(value_error)?;
-        Run::TwoDecks(Box::new(setup), Box::new(sol))
+        let (setup, sol) = crate::interruptible(py, move || {
+            let sol = simulate(&setup.problem, &setup.settings);
+            (setup, sol)
+        })?;
+        Run::TwoDecks(Box::new(setup), Box::new(sol.map_err(value_error)?))
     };
     Ok(SimRun { run })
 }
@@ -303,12 +308,11 @@ fn batch_run(
             (None, None) => return Err(value_error("a record is neither a path nor an array")),
         });
     }
-    let scales = if scales.is_empty() { vec![1.0] } else { scales };
     let pool = crate::pool(threads)?;
     if sc.is_bridge() {
         let setup = sc.build_bridge().map_err(value_error)?;
         let n = setup.problem.model.segments.len();
-        let rows = crate::heavy(py, || {
+        let rows = crate::interruptible(py, move || {
             pool.install(|| {
                 run_batch(
                     &setup.problem,
@@ -324,7 +328,7 @@ fn batch_run(
         Ok(so::bridge_batch_csv(n, &rows))
     } else {
         let setup = sc.build().map_err(value_error)?;
-        let rows = crate::heavy(py, || {
+        let rows = crate::interruptible(py, move || {
             pool.install(|| {
                 run_batch(
                     &setup.problem,

@@ -100,7 +100,7 @@ fn study<'py>(
         )));
     }
     let pool = crate::pool(threads)?;
-    let study = crate::heavy(py, || {
+    let study = crate::interruptible(py, move || {
         pool.install(|| Study::compute(text, scenario, &|_| {}))
     })?
     .map_err(value_error)?;

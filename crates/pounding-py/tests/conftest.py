@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import os
 import shutil
 import subprocess
@@ -12,17 +13,63 @@ import pytest
 ROOT = Path(__file__).resolve().parents[3]
 
 
-def _find_cli():
+def _target_dir() -> Path:
+    """Cargo's target directory: ``$CARGO_TARGET_DIR`` (relative to the repository root, where
+    cargo runs) or ``<root>/target``."""
+    t = os.environ.get("CARGO_TARGET_DIR")
+    if not t:
+        return ROOT / "target"
+    p = Path(t)
+    return p if p.is_absolute() else ROOT / p
+
+
+def build_cli():
+    """The CLI binary the tests compare with: ``$POUNDING_BIN`` when set, else the result of
+    ``cargo build --release -p pounding-cli`` at the repository root (a no-op when up to date;
+    about 3-6 minutes the first time on 2 cores). Returns ``(path, None)`` or ``(None, reason)``
+    when cargo is absent; a failing build raises (it is a real failure, not a skip)."""
     env = os.environ.get("POUNDING_BIN")
     if env:
-        return env
-    targets = [os.environ.get("CARGO_TARGET_DIR"), str(ROOT / "target")]
-    for t in filter(None, targets):
-        for profile in ("release", "debug"):
-            p = Path(t) / profile / "pounding"
-            if p.is_file():
-                return str(p)
-    return shutil.which("pounding")
+        if not Path(env).is_file():
+            raise AssertionError(f"POUNDING_BIN={env} is not a file")
+        return env, None
+    cargo = shutil.which("cargo")
+    if cargo is None:
+        return None, (
+            "NOT VALIDATED AGAINST THE CLI: cargo is not on PATH and POUNDING_BIN is unset, so the "
+            "tests comparing with the `pounding` binary cannot build it (install Rust, or set "
+            "POUNDING_BIN to a `pounding` binary of this checkout)"
+        )
+    cmd = [cargo, "build", "--release", "-p", "pounding-cli"]
+    p = subprocess.run(cmd + ["--message-format=json-render-diagnostics"], cwd=ROOT,
+                       capture_output=True, text=True)
+    if p.returncode != 0:
+        raise AssertionError(f"{' '.join(cmd)} failed (exit {p.returncode}):\n{p.stderr[-4000:]}")
+    exe = None
+    for line in p.stdout.splitlines():  # cargo names the binary it built (any target dir)
+        try:
+            msg = json.loads(line)
+        except ValueError:
+            continue
+        if msg.get("reason") == "compiler-artifact" and msg.get("target", {}).get("name") \
+                == "pounding" and msg.get("executable"):
+            exe = Path(msg["executable"])
+    if exe is None:  # older cargo: the documented place
+        exe = _target_dir() / "release" / ("pounding.exe" if os.name == "nt" else "pounding")
+    if not exe.is_file():
+        raise AssertionError(f"{' '.join(cmd)} succeeded but {exe} does not exist")
+    return str(exe), None
+
+
+_CLI_SKIPPED: list = []
+
+
+def pytest_terminal_summary(terminalreporter):
+    """A banner at the end when the comparisons with the CLI were skipped: "passed" then does
+    not mean validated against the CLI."""
+    if _CLI_SKIPPED:
+        terminalreporter.section("pounding: comparisons with the CLI SKIPPED", sep="!", red=True)
+        terminalreporter.line(_CLI_SKIPPED[0], red=True)
 
 
 def _skip(name: str, reason: str):
@@ -41,11 +88,16 @@ def root() -> Path:
 
 @pytest.fixture(scope="session")
 def cli():
-    """Runs the ``pounding`` binary (``POUNDING_BIN``, ``$CARGO_TARGET_DIR`` or ``target/``)
-    and returns the completed process; the tests compare its files with the Python results."""
-    exe = _find_cli()
+    """Runs the ``pounding`` binary (``POUNDING_BIN``, else built by ``cargo build --release
+    -p pounding-cli`` in the target directory) and returns the completed process; the tests
+    compare its files with the Python results. Skips (loudly) only when cargo is absent."""
+    exe, reason = build_cli()
     if exe is None:
-        _skip("cli", "no pounding binary (build it: cargo build --release, or set POUNDING_BIN)")
+        import warnings
+
+        warnings.warn(reason, pytest.PytestWarning)
+        _CLI_SKIPPED.append(reason)
+        _skip("cli", reason)
 
     def run(*args, check=True, cwd=None):
         p = subprocess.run([exe, *map(str, args)], capture_output=True, text=True, cwd=cwd)

@@ -52,3 +52,28 @@ def test_batch_bad_lists_raise():
         pounding.batch(None, [], [1.0])
     with pytest.raises(ValueError):
         pounding.batch(None, [(np.zeros(5), 0.01)], [float("nan")])
+
+
+def test_a_single_path_is_one_record_not_its_characters(tmp_path):
+    rec = _records(tmp_path)[0]
+    for one in (str(rec), rec):
+        rows = pounding.batch(None, one, [1.0, 2.0])
+        assert len(rows) == 2, one  # not one row per character of the path
+        assert (rows["status"] != "error").all()
+        assert rows.equals(pounding.batch(None, [str(rec)], [1.0, 2.0]))
+
+
+def test_empty_scales_raise_like_empty_records(tmp_path):
+    rec = _records(tmp_path)[0]
+    with pytest.raises(ValueError, match="need at least one scale"):
+        pounding.batch(None, [str(rec)], [])
+    with pytest.raises(ValueError, match="need at least one record"):
+        pounding.batch(None, [], [1.0])
+    with pytest.raises(TypeError):
+        pounding.batch(None, [b"bytes-path"], [1.0])
+
+
+def test_warnings_column_is_an_int64_count(tmp_path):
+    rows = pounding.batch(None, [str(p) for p in _records(tmp_path)], [1.0, 3.0])
+    assert rows["warnings"].dtype == np.int64
+    assert (rows["warnings"] >= 0).all()

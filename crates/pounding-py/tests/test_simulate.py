@@ -113,3 +113,52 @@ def test_dict_scenario_equals_file(root):
     a = pounding.simulate(str(path), duration=5.0)
     b = pounding.simulate(d, duration=5.0)
     assert a.history_csv() == b.history_csv()
+
+
+def test_result_pickles_and_deepcopies_equal():
+    import copy
+    import pickle
+
+    r = pounding.simulate(None, duration=2.0)
+    for c in (pickle.loads(pickle.dumps(r)), copy.deepcopy(r)):
+        assert c == r and c is not r
+        assert c.summary == r.summary and c.status == r.status and c.warnings == r.warnings
+        assert c.history_csv() == r.history_csv() and c.impacts_csv() == r.impacts_csv()
+        assert c.history_columns == r.history_columns
+        for k, a in r.history.items():  # the same bits (NaN included)
+            assert np.array_equal(c.history[k], a, equal_nan=True), k
+            assert c.history[k].dtype == np.float64
+        assert c.impacts.equals(r.impacts)
+    other = pounding.simulate(None, duration=2.0, scale=2.0)
+    assert other != r  # the comparison can fail
+
+
+def test_simulate_as_a_dask_task_equals_the_local_call():
+    distributed = pytest.importorskip("dask.distributed")
+    local = pounding.simulate(None, duration=2.0)
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False,
+                                  dashboard_address=None) as cluster:
+        with distributed.Client(cluster) as client:
+            fut = client.submit(pounding.simulate, None, duration=2.0, pure=False)
+            got = fut.result()
+    assert got == local and got.summary == local.summary
+    # a threads-only cluster hands the object over without pickling it; a process cluster or a
+    # remote worker sends it through Dask's serializer, which pickles it:
+    from distributed.protocol import deserialize, serialize
+
+    sent = deserialize(*serialize(got))
+    assert sent == local and sent.history_csv() == local.history_csv()
+
+
+def test_history_arrays_are_read_only():
+    r = pounding.simulate(None, duration=2.0)
+    t = r.history["t_s"]
+    before = t.copy()
+    with pytest.raises(ValueError):
+        t[0] = 99.0
+    with pytest.raises(ValueError):
+        r.energy[next(iter(r.energy))][:] = 0.0
+    assert np.array_equal(r.history["t_s"], before)
+    mine = r.history_array  # a copy: free to modify
+    mine[0, 0] = 99.0
+    assert r.history["t_s"][0] == before[0]

@@ -18,22 +18,38 @@ except ImportError:  # pragma: no cover - exercised where pandas is absent
     _pd = None
 
 
+def _is_toml_text(s: str) -> bool:
+    """``True`` when the str ``s`` is TOML text rather than a path: it has a newline, an ``=``
+    or starts with a ``[section]`` header (a path has none of these)."""
+    return "\n" in s or "=" in s or s.lstrip().startswith("[")
+
+
+def _scenario_path(p: str) -> Dict[str, Any]:
+    """The core's ``path`` argument for a scenario file, with the CLI's message (``cannot read
+    scenario file ...``) when it is missing or a directory (never read as TOML text)."""
+    if os.path.isdir(p):
+        raise ValueError(f"cannot read scenario file {p}: is a directory")
+    if not os.path.exists(p):
+        raise ValueError(f"cannot read scenario file {p}: no such file")
+    return {"path": p}
+
+
 def scenario_args(scenario: Any, what: str) -> Dict[str, Any]:
     """The ``path``/``text``/``origin`` arguments of the core for a scenario given as ``None``
-    (built-in default), a path (``str`` naming an existing file or ending in ``.toml``, or an
-    ``os.PathLike``), a TOML string, or a dict with the file's keys."""
+    (built-in default), an ``os.PathLike`` (always a path), a ``str`` (TOML text when it has a
+    newline, an ``=`` or a ``[section]``; otherwise a path, which must be an existing file), or
+    a dict with the file's keys."""
     if scenario is None:
         return {}
     if isinstance(scenario, os.PathLike):
-        return {"path": os.fspath(scenario)}
+        return _scenario_path(os.fspath(scenario))
     if isinstance(scenario, dict):
         text = toml_text(scenario)
         return {"text": text, "origin": f"{what} scenario dict"}
     if isinstance(scenario, str):
-        one_line = "\n" not in scenario
-        if one_line and (os.path.isfile(scenario) or scenario.endswith(".toml")):
-            return {"path": scenario}
-        return {"text": scenario, "origin": f"{what} scenario string"}
+        if _is_toml_text(scenario):
+            return {"text": scenario, "origin": f"{what} scenario string"}
+        return _scenario_path(scenario)
     raise TypeError(
         f"scenario must be None, a path, a TOML string or a dict, not {type(scenario).__name__}"
     )
@@ -96,6 +112,9 @@ def toml_text(d: Dict[str, Any], prefix: str = "") -> str:
     return out
 
 
+#: Count columns whose name has none of the suffixes above.
+_INT_COLUMNS = frozenset({"warnings"})
+
 #: Text columns of the library's tables (kept as str, empty cells as ""), whatever they hold.
 _TEXT_COLUMNS = frozenset({"record", "status", "error", "unseated_end", "contact", "mode", "case",
                            "shape", "site"})
@@ -111,7 +130,7 @@ def _column(name: str, tokens: List[str]):
         return np.array(tokens, dtype=object)
     if tokens and all(t in ("true", "false") for t in tokens):
         return np.array([t == "true" for t in tokens], dtype=bool)
-    integral = name.endswith(_INT_SUFFIXES)
+    integral = name.endswith(_INT_SUFFIXES) or name in _INT_COLUMNS
     try:
         if integral and tokens and all(t.lstrip("-").isdigit() for t in tokens):
             return np.array([int(t) for t in tokens], dtype=np.int64)
@@ -155,6 +174,40 @@ def csv_table(text: str):
     return table(names, cols)
 
 
+def float_array(x: Any, name: str) -> np.ndarray:
+    """``x`` as a contiguous float64 array, refusing what a cast would silently change:
+    masked arrays (the mask would be ignored), complex (the imaginary part dropped), bool
+    (``True`` read as 1.0), and strings/objects (``TypeError``)."""
+    if np.ma.isMaskedArray(x):
+        raise TypeError(f"{name} is a masked array: the mask would be ignored; pass "
+                        f"{name}.filled(value) or the unmasked values")
+    a = np.asarray(x)
+    if a.dtype.kind not in "fiu":
+        what = {"c": "complex (the imaginary part would be dropped)",
+                "b": "bool (True would be read as 1.0)"}.get(a.dtype.kind, f"of dtype {a.dtype}")
+        raise TypeError(f"{name} must hold real numbers, not {what}")
+    return np.ascontiguousarray(a, dtype=np.float64)
+
+
+def real_number(name: str, x: Any) -> float:
+    """``x`` as a float; ``TypeError`` for bool and complex (never cast silently)."""
+    if isinstance(x, (bool, np.bool_)) or isinstance(x, (complex, np.complexfloating)):
+        raise TypeError(f"{name} must be a real number, not {type(x).__name__}")
+    try:
+        return float(x)
+    except (TypeError, ValueError):
+        raise ValueError(f"invalid {name} = {x!r}: expected a number") from None
+
+
+def thread_count(threads: Any) -> Optional[int]:
+    """``threads`` as an int (``None`` stays ``None``); ``TypeError`` for bool, float, str..."""
+    if threads is None:
+        return None
+    if isinstance(threads, (bool, np.bool_)) or not isinstance(threads, (int, np.integer)):
+        raise TypeError(f"threads must be an int or None, not {type(threads).__name__}")
+    return int(threads)
+
+
 def record_arg(record: Any, index: int = 0):
     """``(path, array)`` arguments of the core for a record given as a path or as
     ``(accelerations, dt)`` / ``(accelerations, dt, name)``."""
@@ -163,14 +216,14 @@ def record_arg(record: Any, index: int = 0):
     if isinstance(record, (str, os.PathLike)):
         return os.fspath(record), None
     if isinstance(record, tuple) and len(record) in (2, 3):
-        values = np.asarray(record[0], dtype=np.float64)
+        values = float_array(record[0], "the record's accelerations")
         if values.ndim != 1:
             raise ValueError(
                 f"invalid record: the accelerations must be a 1-D array, got shape {values.shape}"
             )
         if values.size == 0:
             raise ValueError("invalid record: the accelerations array is empty")
-        dt = float(record[1])
+        dt = real_number("the record's dt", record[1])
         name = str(record[2]) if len(record) == 3 else f"array{index}"
         return None, (name, values.tolist(), dt)
     raise TypeError(
@@ -179,10 +232,7 @@ def record_arg(record: Any, index: int = 0):
 
 
 def optional_float(name: str, x: Optional[float]) -> Optional[float]:
-    """``x`` as a float (``None`` stays ``None``)."""
+    """``x`` as a float (``None`` stays ``None``; bool and complex raise ``TypeError``)."""
     if x is None:
         return None
-    try:
-        return float(x)
-    except (TypeError, ValueError):
-        raise ValueError(f"invalid {name} = {x!r}: expected a number") from None
+    return real_number(name, x)

@@ -2,10 +2,14 @@
 
 from __future__ import annotations
 
+import dataclasses
 import json
+import math
 import os
 from dataclasses import dataclass
 from typing import Any, Dict, List, Optional
+
+import numpy as np
 
 from . import _core
 
@@ -33,10 +37,19 @@ class ImpactResult:
             v = v[k]
         return v
 
+    def _contacts(self) -> Optional[List[Dict[str, Any]]]:
+        c = self.report.get("contacts") if isinstance(self.report, dict) else None
+        return c if isinstance(c, list) else None
+
     @property
-    def mode(self) -> Optional[str]:
-        """The tangential outcome (``stick``, ``slip-outward``, ...), or ``None`` when the form
-        does not solve one impact (no ``ratio``) or has per-contact modes (see ``report``)."""
+    def mode(self) -> Any:
+        """The tangential outcome (``stick``, ``slip-outward``, ...): a str for the single-impact
+        forms (bridge, abutment with one corner); for the forms with several contacts (generic,
+        two straight/skew decks, abutment with both corners) a list, one per contact in the
+        report's ``contacts`` order; ``None`` where nothing was solved (no ``ratio``)."""
+        c = self._contacts()
+        if c is not None:
+            return [x.get("mode") for x in c]
         return self._get("mode")
 
     @property
@@ -46,18 +59,30 @@ class ImpactResult:
 
     @property
     def impulses(self) -> Any:
-        """``{"normal": P_N, "tangential": P_T}`` (bridge form) or the form's impulse entry."""
-        return self._get("impulse") if self._get("impulse") is not None else self._get("impulses")
+        """``{"normal": P_N, "tangential": P_T}`` (single-impact forms), or a list of them, one
+        per contact (forms with several contacts; ``None`` entries where unsolved)."""
+        c = self._contacts()
+        if c is not None:
+            return [{"normal": x.get("normal_impulse"), "tangential": x.get("tangential_impulse")}
+                    for x in c]
+        return self._get("impulse")
 
     @property
     def post_velocities(self) -> Any:
-        """Post-impact relative velocities ``{"gamma_n", "gamma_t"}`` (bridge form) or the form's
-        post-impact entry."""
+        """Post-impact relative velocities ``{"gamma_n", "gamma_t"}`` at the contact
+        (single-impact forms), or a list of them, one per contact. The bodies' velocities are
+        in ``report`` (``post``, ``bodies``)."""
+        c = self._contacts()
+        if c is not None:
+            return [{"gamma_n": x.get("gamma_n_post"), "gamma_t": x.get("gamma_t_post")}
+                    for x in c]
         return self._get("post")
 
     @property
     def stick_interval(self) -> Any:
-        """``{"lower": L, "upper": U}``: the stick interval of ``r = gamma_T/gamma_N`` (§9)."""
+        """``{"lower": L, "upper": U}``: the stick interval of ``r = gamma_T/gamma_N`` (§9) of
+        the single-impact forms (bridge, abutment with one corner); ``None`` for the forms with
+        several contacts, which solve the impact at their own velocities."""
         return self._get("stick_interval")
 
     def __str__(self) -> str:
@@ -73,9 +98,31 @@ def _reject(given: Dict[str, Any], names, why: str) -> None:
             raise ValueError(f"{n} {why}")
 
 
+def _plain(v: Any, path: str) -> Any:
+    """``v`` as plain JSON values: dataclasses as dicts, numpy arrays as lists, numpy scalars as
+    Python numbers; a non-finite float raises the library's ``invalid KEY: VALUE reason`` form
+    (JSON has no NaN or infinity)."""
+    if dataclasses.is_dataclass(v) and not isinstance(v, type):
+        v = {f.name: getattr(v, f.name) for f in dataclasses.fields(v)}
+    if isinstance(v, dict):
+        return {str(k): _plain(x, f"{path}.{k}" if path else str(k)) for k, x in v.items()}
+    if isinstance(v, np.ndarray):
+        v = v.tolist()
+    if isinstance(v, (list, tuple)):
+        return [_plain(x, f"{path}[{i}]") for i, x in enumerate(v)]
+    if isinstance(v, np.generic):
+        v = v.item()
+    if isinstance(v, float) and not math.isfinite(v):
+        raise ValueError(f"in the impact problem: invalid {path}: {v} must be finite "
+                         "(a NaN or an infinity is not a number of the problem)")
+    return v
+
+
 def _problem_text(problem: Any) -> str:
-    if isinstance(problem, dict):
-        return json.dumps(problem, allow_nan=False)
+    if isinstance(problem, dict) or (
+        dataclasses.is_dataclass(problem) and not isinstance(problem, type)
+    ):
+        return json.dumps(_plain(problem, ""), allow_nan=False)
     if isinstance(problem, os.PathLike) or (
         isinstance(problem, str) and not problem.lstrip().startswith("{")
     ):
@@ -83,7 +130,7 @@ def _problem_text(problem: Any) -> str:
             return f.read()
     if isinstance(problem, str):
         return problem
-    raise TypeError("problem must be a dict, a JSON string or a path to a JSON file")
+    raise TypeError("problem must be a dict or dataclass, a JSON string or a path to a JSON file")
 
 
 def impact(

@@ -3,16 +3,52 @@
 from __future__ import annotations
 
 import json
+import os
 import warnings
 from typing import Any, Dict, List, Optional, Sequence
 
 import numpy as np
 
 from . import _core
-from ._common import csv_table, optional_float, parse_csv, record_arg, scenario_args
+from ._common import (csv_table, optional_float, parse_csv, record_arg, scenario_args,
+                      real_number, thread_count)
 
 #: The energy columns of ``history.csv`` (the prefix ``E_``/``energy`` terms), by name.
 _ENERGY_PREFIXES = ("e_", "energy", "w_in", "input_energy")
+
+
+class _StoredRun:
+    """A run rebuilt from its texts (an unpickled :class:`SimulationResult`): the same methods
+    as the core's ``SimRun``, answering from ``summary.json``, ``history.csv``, ``impacts.csv``."""
+
+    def __init__(self, summary_json: str, status: str, warnings: List[str], history_csv: str,
+                 impacts_csv: str) -> None:
+        self._summary, self.status, self._warnings = summary_json, status, list(warnings)
+        self._history, self._impacts = history_csv, impacts_csv
+
+    def summary_json(self) -> str:
+        return self._summary
+
+    def impacts_csv(self) -> str:
+        return self._impacts
+
+    def history_csv(self) -> str:
+        return self._history
+
+    def warnings(self) -> List[str]:
+        return list(self._warnings)
+
+    def history(self):
+        lines = self._history.splitlines()
+        names = lines[0].split(",")
+        # shortest round-trip tokens parse back to the same bits; empty cells are NaN
+        data = np.array([[float(t) if t else float("nan") for t in l.split(",")]
+                         for l in lines[1:]], dtype=np.float64).reshape(len(lines) - 1, len(names))
+        return names, data
+
+
+def _restore(summary_json, status, warnings_, history_csv, impacts_csv) -> "SimulationResult":
+    return SimulationResult(_StoredRun(summary_json, status, warnings_, history_csv, impacts_csv))
 
 
 class SimulationResult:
@@ -42,9 +78,11 @@ class SimulationResult:
     def history(self) -> Dict[str, np.ndarray]:
         """The time histories of ``history.csv``: column name → float64 array of shape
         ``(steps stored,)`` (``t_s``, ground accelerations, displacements and rotations in
-        degrees, velocities, gaps, slip, energies, contact forces...). Built on first access."""
+        degrees, velocities, gaps, slip, energies, contact forces...). Built on first access;
+        the arrays are read-only views (``.copy()`` one to modify it)."""
         if self._history is None:
             names, data = self._run.history()
+            data.flags.writeable = False  # shared by every access: read-only views
             self._history = {n: data[:, i] for i, n in enumerate(names)}
         return self._history
 
@@ -87,6 +125,21 @@ class SimulationResult:
         """The text of ``summary.json``, byte for byte the CLI's."""
         return self._run.summary_json()
 
+    def __reduce__(self):
+        """Pickles (and deep-copies) as the run's texts, so a result can be a Dask task's value;
+        the copy answers every attribute with the same values."""
+        r = self._run
+        return (_restore, (r.summary_json(), self.status, list(self.warnings), r.history_csv(),
+                           r.impacts_csv()))
+
+    def __eq__(self, other: object) -> bool:
+        """Equal when the status, warnings and the three output texts are equal."""
+        if not isinstance(other, SimulationResult):
+            return NotImplemented
+        return self.__reduce__()[1] == other.__reduce__()[1]
+
+    __hash__ = None  # type: ignore[assignment]
+
     def __repr__(self) -> str:
         return f"<SimulationResult status={self.status} impacts={self.summary.get('impacts')}>"
 
@@ -121,10 +174,15 @@ def simulate(
         is returned with that status, as the CLI writes its outputs.
 
     Raises:
-        ValueError: bad input, with the CLI's message (file, key, value, reason, line).
+        ValueError: bad input, with the CLI's message (file, key, value, reason, line); a
+            missing scenario file; ``record_dt`` with an array record.
+        TypeError: a complex, bool or masked record array, a bool ``scale``/``dt``.
         pounding.SolverError: an internal failure without a result.
+        KeyboardInterrupt: Ctrl-C during the run (raised at once; the abandoned run finishes
+            on a background thread and is discarded).
     """
     path, array = record_arg(record)
+    _no_record_dt_for_arrays(record_dt, [array])
     run = _core.simulate_run(
         record=path, array=array, csv_units=csv_units,
         record_dt=optional_float("record_dt", record_dt), scale=optional_float("scale", scale),
@@ -153,8 +211,10 @@ def batch(
 
     The batch of ``pounding simulate SCENARIO --records ... --scales ...``: run
     ``i = a * len(scales) + b`` uses record ``a`` as the only component along y scaled by
-    ``scales[b]``. Records are paths (files, not directories) or ``(accelerations, dt[, name])``
-    tuples. A record that cannot be read gives rows with ``status == "error"`` and the message
+    ``scales[b]``. ``records`` is a list of paths (files, not directories) or
+    ``(accelerations, dt[, name])`` tuples; a single path (str or ``os.PathLike``) or a single
+    tuple is one record. ``scales`` is a list of numbers (a single number is one scale); an
+    empty ``records`` or ``scales`` raises ``ValueError``. A record that cannot be read gives rows with ``status == "error"`` and the message
     in ``error`` (the other runs are done), as in the CLI.
 
     Returns:
@@ -163,26 +223,52 @@ def batch(
         (empty cells NaN), ``unseated`` bool, text columns str.
 
     Raises:
-        ValueError: bad input for the whole batch (no records, a non-finite scale, the
-            scenario).
+        ValueError: bad input for the whole batch (no records, no scales, a non-finite scale,
+            the scenario, ``record_dt`` with an array record).
+        TypeError: a record that is neither a path nor a tuple, a complex/bool/masked array, a
+            ``threads`` that is not an int.
+        KeyboardInterrupt: Ctrl-C during the batch (raised at once).
     """
+    if isinstance(records, (str, bytes, os.PathLike)):
+        records = [records]  # one record, not its characters
+    elif isinstance(records, tuple) and len(records) in (2, 3) and isinstance(
+        records[0], np.ndarray
+    ):
+        records = [records]  # one (accelerations, dt[, name]) record
+    if isinstance(scales, (int, float, np.integer, np.floating)) and not isinstance(
+        scales, bool
+    ):
+        scales = [scales]
+    scales = list(scales)  # empty: ValueError from the library, as for records=[]
     paths, arrays = [], []
     for i, r in enumerate(records):
         p, a = record_arg(r, i)
         paths.append(p)
         arrays.append(a)
+    _no_record_dt_for_arrays(record_dt, arrays)
     text = batch_csv_text(scenario, paths, arrays, scales, dt, duration, law, csv_units,
                           record_dt, threads)
     return csv_table(text)
+
+
+def _no_record_dt_for_arrays(record_dt, arrays) -> None:
+    """``record_dt`` reads one-column record files; an array record carries its own dt, so the
+    pair is refused as the CLI refuses ``--record-dt`` for a record with its own times."""
+    if record_dt is not None and any(a is not None for a in arrays):
+        raise ValueError(
+            f"a sample interval of {record_dt!r} s is given by record_dt but the record is an "
+            "array (accelerations, dt) with its own dt: it does not apply; remove it"
+        )
 
 
 def batch_csv_text(scenario, paths, arrays, scales, dt=None, duration=None, law=None,
                    csv_units=None, record_dt=None, threads=None) -> str:
     """The text of ``batch.csv`` for :func:`batch` (internal; byte for byte the CLI's)."""
     return _core.batch_run(
-        records=paths, arrays=arrays, scales=[float(s) for s in scales], csv_units=csv_units,
+        records=paths, arrays=arrays, scales=[real_number("scale", s) for s in scales], csv_units=csv_units,
         record_dt=optional_float("record_dt", record_dt), dt=optional_float("dt", dt),
-        duration=optional_float("duration", duration), law=law, threads=threads,
+        duration=optional_float("duration", duration), law=law,
+        threads=thread_count(threads),
         **scenario_args(scenario, "simulate"),
     )
 

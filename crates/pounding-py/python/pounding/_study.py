@@ -8,7 +8,7 @@ from dataclasses import dataclass
 from typing import Any, Dict, List, Optional
 
 from . import _core
-from ._common import csv_table, scenario_args, table
+from ._common import csv_table, scenario_args, table, thread_count
 
 
 @dataclass(frozen=True)
@@ -53,7 +53,7 @@ def study(scenario: Any = None, *, threads: Optional[int] = None) -> StudyResult
         ValueError: bad scenario (the CLI's message: key, value, reason, line).
         pounding.SolverError: an internal failure without a result.
     """
-    d = _core.study(threads=threads, **scenario_args(scenario, "study"))
+    d = _core.study(threads=thread_count(threads), **scenario_args(scenario, "study"))
     for n in d["notes"]:
         warnings.warn(n, UserWarning, stacklevel=2)
     columns = d["header"].split(",")

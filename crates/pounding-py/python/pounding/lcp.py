@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _core
+from ._common import float_array
 
 __all__ = ["LcpResult", "solve", "enumerate"]
 
@@ -42,7 +43,7 @@ class LcpResult:
 
 
 def _arrays(M, q):
-    return np.ascontiguousarray(M, dtype=np.float64), np.ascontiguousarray(q, dtype=np.float64)
+    return float_array(M, "M"), float_array(q, "q")
 
 
 def solve(M, q) -> LcpResult:
@@ -57,6 +58,7 @@ def solve(M, q) -> LcpResult:
         reported in ``status``; it never raises.
 
     Raises:
+        TypeError: complex, bool or masked arrays (never cast silently).
         ValueError: ``M`` not square, ``q`` of the wrong length, ``n = 0``, or a non-finite entry
             (the library's message, e.g. ``invalid LCP: M[0][1] is not finite``).
     """

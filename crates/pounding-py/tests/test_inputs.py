@@ -1,0 +1,99 @@
+"""Argument interpretation: a scenario str is a path or TOML text by a stated rule, never a
+guess; bad types raise instead of being cast silently."""
+
+import os
+import pathlib
+
+import numpy as np
+import pytest
+
+import pounding
+
+
+@pytest.mark.parametrize("fn", [pounding.study, pounding.simulate])
+def test_a_missing_scenario_file_is_named_not_parsed_as_toml(fn, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(ValueError, match=r"cannot read scenario file my_scenario: no such file"):
+        fn("my_scenario")
+    with pytest.raises(ValueError, match=r"cannot read scenario file .*: no such file"):
+        fn(tmp_path / "missing.toml")
+    (tmp_path / "adir").mkdir()
+    for d in ("adir", pathlib.Path("adir")):
+        with pytest.raises(ValueError, match=r"cannot read scenario file adir: is a directory"):
+            fn(d)
+
+
+def test_toml_text_and_paths_are_told_apart(root, tmp_path, monkeypatch):
+    text = (root / "examples" / "opensees-1d.toml").read_text()
+    # a one-line TOML text (has '=') is text, not a path
+    with pytest.raises(ValueError) as e:
+        pounding.study("nonsense_key = 1")
+    assert "nonsense_key" in str(e.value) and "cannot read scenario file" not in str(e.value)
+    with pytest.raises(ValueError) as e:
+        pounding.study("[nosuchsection]")
+    assert "cannot read scenario file" not in str(e.value)
+    # a relative file name without extension is a path
+    monkeypatch.chdir(tmp_path)
+    study_text = pounding.default_study_scenario()
+    (tmp_path / "mine").write_text(study_text)
+    a = pounding.study("mine").rows
+    b = pounding.study(study_text).rows
+    assert a.equals(b)
+    assert text  # the example exists
+
+
+_M = np.array([[2.0, 1.0], [1.0, 2.0]])
+_Q = np.array([-1.0, -1.0])
+
+
+@pytest.mark.parametrize("M, q, what", [
+    (_M.astype(complex) + 1j, _Q, "complex"),
+    (_M, _Q.astype(complex), "complex"),
+    (_M > 0, _Q, "bool"),
+    (np.ma.masked_array(_M, mask=[[0, 1], [0, 0]]), _Q, "mask"),
+    (_M, np.ma.masked_array(_Q, mask=[1, 0]), "mask"),
+    (_M.astype(str), _Q, "dtype"),
+])
+@pytest.mark.parametrize("fn", [pounding.lcp.solve, pounding.lcp.enumerate])
+def test_lcp_refuses_silent_casts(fn, M, q, what):
+    with pytest.raises(TypeError, match=what):
+        fn(M, q)
+
+
+def test_lcp_accepts_ints_and_lists():
+    assert pounding.lcp.solve([[2, 1], [1, 2]], [-1, -1]).solved
+
+
+@pytest.mark.parametrize("values, what", [
+    (np.zeros(50, dtype=complex), "complex"),
+    (np.zeros(50, dtype=bool), "bool"),
+    (np.ma.masked_array(np.zeros(50), mask=np.arange(50) % 2 == 0), "mask"),
+])
+def test_record_arrays_refuse_silent_casts(values, what):
+    with pytest.raises(TypeError, match=what):
+        pounding.simulate(None, (values, 0.01))
+    with pytest.raises(TypeError, match=what):
+        pounding.batch(None, [(values, 0.01)], [1.0])
+
+
+@pytest.mark.parametrize("threads", [True, 2.0, "2"])
+def test_threads_must_be_an_int(threads):
+    with pytest.raises(TypeError, match="threads"):
+        pounding.batch(None, [(np.zeros(50), 0.01)], [1.0], threads=threads)
+    with pytest.raises(TypeError, match="threads"):
+        pounding.study(None, threads=threads)
+
+
+def test_scalar_bools_are_not_numbers():
+    with pytest.raises(TypeError):
+        pounding.simulate(None, (np.zeros(50), True))
+    with pytest.raises(TypeError):
+        pounding.simulate(None, None, scale=True)
+
+
+def test_record_dt_with_an_array_record_is_refused():
+    rec = (np.zeros(50), 0.01)
+    with pytest.raises(ValueError, match="record_dt .* own dt"):
+        pounding.simulate(None, rec, record_dt=0.02)
+    with pytest.raises(ValueError, match="record_dt .* own dt"):
+        pounding.batch(None, [rec], [1.0], record_dt=0.02)
