@@ -69,7 +69,7 @@ fn fragility_example_runs_end_to_end_and_fits_both_limit_states() {
     assert!(stdout.contains("period: T1 = "), "{stdout}");
     for f in ["fragility.png", "report.html"] {
         let len = std::fs::metadata(d.join("out").join(f)).map(|m| m.len());
-        assert!(len.is_ok_and(|l| l > 1000), "{f}: {len:?}");
+        assert!(len.as_ref().is_ok_and(|l| *l > 1000), "{f}: {len:?}");
     }
     let runs = std::fs::read_to_string(d.join("out/runs.csv")).unwrap();
     let mut lines = runs.lines();
