@@ -12,8 +12,11 @@ fn scratch(name: &str) -> std::path::PathBuf {
     d
 }
 
-/// The cells of every entry: id, metadata as CSV cells, and the samples of both components.
-fn entries(set: &RecordSet) -> Vec<(String, Vec<(String, String)>, Vec<Vec<f64>>)> {
+/// An entry's id, metadata as CSV cells, and the times and samples of its components.
+type Entry = (String, Vec<(String, String)>, Vec<Vec<f64>>);
+
+/// The cells of every entry.
+fn entries(set: &RecordSet) -> Vec<Entry> {
     set.records
         .iter()
         .map(|r| {
