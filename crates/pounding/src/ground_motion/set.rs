@@ -33,6 +33,9 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use toml::Spanned;
 
+#[path = "set_synth.rs"]
+mod synth_set;
+
 /// A metadata value of a record (`[record.meta]`).
 #[derive(Debug, Clone, PartialEq)]
 pub enum MetaValue {
@@ -119,6 +122,8 @@ struct Manifest {
     set: Option<crate::toml_schema::Table<SetSec>>,
     #[serde(default)]
     record: Vec<Spanned<RecordSec>>,
+    #[serde(default)]
+    synth: Option<Spanned<crate::toml_schema::Table<synth_set::SynthSec>>>,
 }
 
 #[derive(Deserialize, Default)]
@@ -173,9 +178,38 @@ impl RecordSet {
             message: crate::input::shorten_lines(&e.to_string(), 200),
         })?;
         let cx = Ctx { origin, text, dir };
+        let set = m.set.map(|s| s.0).unwrap_or_default();
+        if let Some(sy) = &m.synth {
+            let (line, _) = line_col(text, sy.span().start);
+            let problems = if m.record.is_empty() {
+                match synth_set::records(&cx, sy.get_ref(), sy.span().start) {
+                    Ok((records, source)) => {
+                        return Ok(Self {
+                            name: set.name.unwrap_or_else(|| "synthetic".into()),
+                            source: set.source.unwrap_or(source),
+                            records,
+                        });
+                    }
+                    Err(p) => p,
+                }
+            } else {
+                vec![format!(
+                    "synth ({origin}:{line}): a manifest lists [[record]]s or generates them \
+                     with [synth], not both"
+                )]
+            };
+            return Err(SetError::Invalid {
+                origin: origin.to_string(),
+                problems,
+            });
+        }
         let mut problems = Vec::new();
         if m.record.is_empty() {
-            problems.push("no [[record]] tables: list at least one record".to_string());
+            problems.push(
+                "no [[record]] tables: list at least one record (or generate a synthetic \
+                 suite with [synth])"
+                    .to_string(),
+            );
         }
         let mut cache: BTreeMap<(String, Option<String>, String), Result<Record, String>> =
             BTreeMap::new();
@@ -206,7 +240,6 @@ impl RecordSet {
                 problems,
             });
         }
-        let set = m.set.map(|s| s.0).unwrap_or_default();
         Ok(Self {
             name: set.name.unwrap_or_default(),
             source: set.source.unwrap_or_default(),

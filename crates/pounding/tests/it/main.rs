@@ -32,6 +32,7 @@ mod physics_check;
 mod props;
 mod record_formats;
 mod record_misreads;
+mod set_synth;
 mod shapes;
 mod sim;
 mod sim_bearings;
