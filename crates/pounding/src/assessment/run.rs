@@ -275,7 +275,9 @@ pub fn first_exceedance(
 /// The fit of one limit state: multiple stripes by maximum likelihood
 /// ([`crate::fragility::bootstrap_stripes`]), IDA by the method of moments on the IMs at first
 /// exceedance ([`crate::fragility::bootstrap_ida`]; entries with an unknown crossing are left
-/// out). With `bootstrap.samples = 0` no intervals. `band_im`: the IMs of the bootstrap band.
+/// out). IDA entries that exceed already at the smallest scale (left-censored: the IM at first
+/// exceedance is only an upper bound) give
+/// [`crate::fragility::NoMle::ExceededAtFirst`] with their count, no numbers and no bootstrap. With `bootstrap.samples = 0` no intervals. `band_im`: the IMs of the bootstrap band.
 pub fn fit_limit_state(
     name: &str,
     plan: &Plan,
@@ -308,6 +310,23 @@ pub fn fit_limit_state(
                     })
                     .collect(),
             };
+            // Left-censored records (exceeded already at the smallest scale): the IM of that run
+            // is only an upper bound of the crossing; no numbers.
+            let at_first = (0..entries)
+                .filter(|&a| rows[a * ns].limits[l].0 == Some(true))
+                .count();
+            if at_first > 0 {
+                return Ok(FragilityRow {
+                    limit_state: name.to_string(),
+                    method: crate::fragility::Method::MomentsIda,
+                    fit: crate::fragility::Fit::NoFiniteMle(
+                        crate::fragility::NoMle::ExceededAtFirst { count: at_first },
+                    ),
+                    bootstrap: None,
+                    n_records: d.im_at_exceedance.len(),
+                    n_runs: d.im_at_exceedance.iter().flatten().count(),
+                });
+            }
             if d.im_at_exceedance.is_empty() {
                 return Ok(FragilityRow {
                     limit_state: name.to_string(),

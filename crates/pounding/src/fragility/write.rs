@@ -4,7 +4,10 @@
 //! level, n_records, n_runs, bootstrap_samples, bootstrap_failed`. Numbers in the project's
 //! shortest round-trip form ([`crate::output::float_token`]); a number that does not exist (no fit,
 //! no bootstrap) is `nan` in CSV and `null` in JSON, and `status` says why (`ok` or a
-//! [`super::NoMle`] word). The JSON adds the pointwise band of each bootstrap.
+//! [`super::NoMle`] word: `no_exceedance`, `all_exceeded`, `perfectly_separated`,
+//! `not_increasing`, `too_few_points`, `censored` (IDA records never exceeding within the IMs
+//! run), `exceeded_at_first` (IDA records exceeding already at the first IM: the IM at first
+//! exceedance is only an upper bound), `no_dispersion`, `out_of_range`, `not_converged`). The JSON adds the pointwise band of each bootstrap.
 
 use serde_json::{Value, json};
 
@@ -145,7 +148,8 @@ pub fn fragility_csv(rows: &[FragilityRow]) -> String {
 }
 
 /// `fragility.json`: `{"fits": [...]}` with the CSV's keys per row (numbers or `null`), plus
-/// `censored` (IDA records without exceedance, when that is the status) and `band`: the bootstrap's
+/// `censored` (IDA records without exceedance, when that is the status), `exceeded_at_first`
+/// (IDA records exceeding already at the first IM, when that is the status) and `band`: the bootstrap's
 /// `[{"im", "p", "lo", "hi"}]` (empty without a bootstrap).
 pub fn fragility_json(rows: &[FragilityRow]) -> Value {
     let fits: Vec<Value> = rows
@@ -170,6 +174,10 @@ pub fn fragility_json(rows: &[FragilityRow]) -> Value {
                 Fit::NoFiniteMle(super::NoMle::Censored { count }) => json!(count),
                 _ => Value::Null,
             };
+            let at_first = match r.fit {
+                Fit::NoFiniteMle(super::NoMle::ExceededAtFirst { count }) => json!(count),
+                _ => Value::Null,
+            };
             json!({
                 "limit_state": r.limit_state,
                 "method": r.method.as_str(),
@@ -186,6 +194,7 @@ pub fn fragility_json(rows: &[FragilityRow]) -> Value {
                 "bootstrap_samples": r.bootstrap.as_ref().map_or(0, |b| b.samples),
                 "bootstrap_failed": r.bootstrap.as_ref().map_or(0, |b| b.failed),
                 "censored": censored,
+                "exceeded_at_first": at_first,
                 "band": band,
             })
         })

@@ -1,0 +1,81 @@
+//! Findings of a fresh-clone trial of `pounding fragility` / `motion synth` (issue 13), each
+//! pinned: left-censored IDA data, metadata names that clash with output columns, absurd periods,
+//! levels and synthetic-record settings.
+
+use pounding::assessment::Stripes;
+use pounding::assessment::run::{Plan, RunRow, fit_limit_state};
+use pounding::fragility::{BootstrapSettings, Fit, NoMle};
+
+/// A run of entry `record` at stripe `stripe` with one limit state.
+fn run(record: usize, stripe: usize, im: f64, ex: bool, ratio: f64) -> RunRow {
+    RunRow {
+        record,
+        stripe,
+        im_g: im,
+        scale_factor: im,
+        status: "Completed".into(),
+        error: String::new(),
+        limits: vec![(Some(ex), ratio)],
+    }
+}
+
+fn ida_plan(entries: usize) -> Plan {
+    Plan {
+        entry_im: vec![1.0; entries],
+        stripes: Stripes::Scales(vec![1.0, 2.0, 4.0]),
+    }
+}
+
+fn boot() -> BootstrapSettings {
+    BootstrapSettings {
+        samples: 50,
+        seed: 1,
+        level: 0.95,
+    }
+}
+
+#[test]
+fn ida_records_exceeding_at_the_first_scale_get_no_numbers() {
+    // Three records: two exceed only at larger scales, one already at the first scale (its IM at
+    // first exceedance is only an upper bound). Before the fix this was fitted as `ok`.
+    let rows = vec![
+        run(0, 0, 1.0, false, 0.5),
+        run(0, 1, 2.0, true, 1.5),
+        run(0, 2, 4.0, true, 3.0),
+        run(1, 0, 1.0, false, 0.9),
+        run(1, 1, 2.0, false, 0.95),
+        run(1, 2, 4.0, true, 1.1),
+        run(2, 0, 1.0, true, 1.2),
+        run(2, 1, 2.0, true, 2.0),
+        run(2, 2, 4.0, true, 3.0),
+    ];
+    let r = fit_limit_state("ls", &ida_plan(3), &rows, 0, &boot(), &[1.0, 2.0]).unwrap();
+    assert_eq!(r.fit, Fit::NoFiniteMle(NoMle::ExceededAtFirst { count: 1 }));
+    assert_eq!(r.fit.status(), "exceeded_at_first");
+    assert!(r.fit.params().is_none());
+    assert!(r.bootstrap.is_none());
+    let csv = pounding::fragility::fragility_csv(std::slice::from_ref(&r));
+    let line = csv.lines().nth(1).unwrap();
+    assert!(
+        line.starts_with("ls,moments_ida,exceeded_at_first,nan,nan,"),
+        "{line}"
+    );
+    let j = pounding::fragility::fragility_json(std::slice::from_ref(&r));
+    assert_eq!(j["fits"][0]["exceeded_at_first"], 1);
+    assert!(j["fits"][0]["theta"].is_null());
+
+    // All three exceed at the first scale (the trial's case): still no numbers.
+    let all: Vec<RunRow> = (0..3)
+        .flat_map(|a| {
+            (0..3).map(move |b| run(a, b, [1.0, 2.0, 4.0][b] * (1.0 + a as f64), true, 2.0))
+        })
+        .collect();
+    let r = fit_limit_state("ls", &ida_plan(3), &all, 0, &boot(), &[1.0]).unwrap();
+    assert_eq!(r.fit, Fit::NoFiniteMle(NoMle::ExceededAtFirst { count: 3 }));
+
+    // Control: the same records with record 2 crossing between scales 1 and 2 fit `ok`.
+    let mut fixed = rows.clone();
+    fixed[6] = run(2, 0, 1.0, false, 0.6);
+    let r = fit_limit_state("ls", &ida_plan(3), &fixed, 0, &boot(), &[1.0]).unwrap();
+    assert_eq!(r.fit.status(), "ok");
+}
