@@ -79,3 +79,60 @@ fn ida_records_exceeding_at_the_first_scale_get_no_numbers() {
     let r = fit_limit_state("ls", &ida_plan(3), &fixed, 0, &boot(), &[1.0]).unwrap();
     assert_eq!(r.fit.status(), "ok");
 }
+
+fn set_err(manifest: &str) -> String {
+    let d = std::env::temp_dir().join(format!(
+        "pounding-ft-{}-{}",
+        std::process::id(),
+        manifest.len()
+    ));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    std::fs::write(d.join("a.txt"), "0.0\n1.0\n-2.0\n0.5\n").unwrap();
+    std::fs::write(d.join("set.toml"), manifest).unwrap();
+    pounding::ground_motion::set::RecordSet::load(&d.join("set.toml"))
+        .unwrap_err()
+        .to_string()
+}
+
+#[test]
+fn metadata_names_that_repeat_a_runs_csv_column_are_refused() {
+    for key in [
+        "status",
+        "record",
+        "level_g",
+        "scale",
+        "im_g",
+        "scale_factor",
+        "error",
+        "unseating_ratio",
+        "drift_exceeded",
+    ] {
+        let m = format!(
+            "[[record]]\nid = \"A\"\nx = \"a.txt\"\ndt = 0.01\n\n[record.meta]\n{key} = \"x\"\n"
+        );
+        let e = set_err(&m);
+        assert!(e.contains(&format!("record[0].meta.{key}")), "{e}");
+        assert!(e.contains("set.toml: table at line 6"), "{e}");
+        assert!(e.contains("runs.csv"), "{e}");
+    }
+    // a harmless name next to them still reads
+    let d = std::env::temp_dir().join(format!("pounding-ft-ok-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    std::fs::write(d.join("a.txt"), "0.0\n1.0\n").unwrap();
+    std::fs::write(
+        d.join("set.toml"),
+        "[[record]]\nid = \"A\"\nx = \"a.txt\"\ndt = 0.01\n[record.meta]\nstation_status = 1\n",
+    )
+    .unwrap();
+    let s = pounding::ground_motion::set::RecordSet::load(&d.join("set.toml")).unwrap();
+    assert_eq!(s.meta_keys(), vec!["station_status"]);
+}
+
+#[test]
+fn a_one_column_record_in_a_manifest_names_the_manifest_key_dt() {
+    let e = set_err("[[record]]\nid = \"A\"\nx = \"a.txt\"\n");
+    assert!(e.contains("dt = SECONDS in this [[record]]"), "{e}");
+    assert!(!e.contains("--record-dt"), "{e}");
+    assert!(!e.contains("record_dt"), "{e}");
+}
