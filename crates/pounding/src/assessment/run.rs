@@ -23,7 +23,8 @@ pub struct Plan {
 }
 
 impl Plan {
-    /// Computes every entry's IM (in parallel, deterministic) and refuses an IM of 0.
+    /// Computes every entry's IM (in parallel, deterministic) and refuses an IM of 0 and a
+    /// stripe needing a scale factor above [`super::MAX_SCALE_FACTOR`] (naming record and stripe).
     pub fn new(
         set: &RecordSet,
         spec: &ImSpec,
@@ -43,10 +44,28 @@ impl Plan {
                 });
             }
         }
-        Ok(Self {
+        let plan = Self {
             entry_im,
             stripes: stripes.clone(),
-        })
+        };
+        for (a, r) in set.records.iter().enumerate() {
+            for (b, v) in plan.values().iter().enumerate() {
+                let factor = plan.point(a, b).1;
+                if factor > super::MAX_SCALE_FACTOR {
+                    return Err(AssessmentError::ScaleFactor {
+                        id: r.id.clone(),
+                        stripe: match stripes {
+                            Stripes::Levels(_) => format!("level_g = {}", float_token(*v)),
+                            Stripes::Scales(_) => format!("scale = {}", float_token(*v)),
+                        },
+                        im: spec.label(),
+                        entry_im: plan.entry_im[a],
+                        factor,
+                    });
+                }
+            }
+        }
+        Ok(plan)
     }
 
     /// The stripe values (levels in g, or scale factors).

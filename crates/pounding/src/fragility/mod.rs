@@ -33,7 +33,10 @@ pub mod write;
 pub use bootstrap::{BandPoint, Bootstrap, BootstrapSettings, bootstrap_ida, bootstrap_stripes};
 pub use mle::{fit_stripes, stripe_log_likelihood};
 pub use moments::fit_ida;
-pub use write::{FragilityRow, Method, fragility_csv, fragility_json};
+pub use write::{
+    FragilityRow, Method, StudyColumns, fragility_csv, fragility_csv_study, fragility_json,
+    fragility_json_study,
+};
 
 use crate::math::Real;
 use crate::output::float_token;

@@ -136,3 +136,43 @@ fn a_one_column_record_in_a_manifest_names_the_manifest_key_dt() {
     assert!(!e.contains("--record-dt"), "{e}");
     assert!(!e.contains("record_dt"), "{e}");
 }
+
+#[test]
+fn intervals_from_few_records_or_many_failed_replicates_are_flagged() {
+    use pounding::fragility::{IdaData, bootstrap_ida};
+    let ims = |n: usize| IdaData {
+        im_at_exceedance: (0..n).map(|i| Some(0.2 + 0.05 * i as f64)).collect(),
+    };
+    let row = |n: usize| {
+        let d = ims(n);
+        let b = bootstrap_ida(&d, &boot(), &[]).unwrap();
+        pounding::fragility::FragilityRow::from_ida("ls", &d, Some(b)).unwrap()
+    };
+    let few = row(5);
+    assert_eq!(few.fit.status(), "ok");
+    let w = few.interval_warnings();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(w[0].contains("only 5 records"), "{w:?}");
+    assert_eq!(
+        few.bootstrap_failed(),
+        Some(few.bootstrap.as_ref().unwrap().failed)
+    );
+    assert!(row(12).interval_warnings().is_empty());
+    // many failed replicates: a hand-set count
+    let mut many = row(12);
+    many.bootstrap.as_mut().unwrap().failed = 6; // of 50: 12 %
+    let w = many.interval_warnings();
+    assert!(w.len() == 1 && w[0].contains("6 of 50"), "{w:?}");
+    many.bootstrap.as_mut().unwrap().failed = 5; // exactly 10 %: not flagged
+    assert!(many.interval_warnings().is_empty());
+    // no fit: no failed count (not samples/samples), no warning
+    let d = IdaData {
+        im_at_exceedance: vec![Some(0.3), None, Some(0.4)],
+    };
+    let b = bootstrap_ida(&d, &boot(), &[]).unwrap();
+    let none = pounding::fragility::FragilityRow::from_ida("ls", &d, Some(b)).unwrap();
+    assert_eq!(none.bootstrap_failed(), None);
+    assert!(none.interval_warnings().is_empty());
+    let csv = pounding::fragility::fragility_csv(std::slice::from_ref(&none));
+    assert!(csv.lines().nth(1).unwrap().ends_with(",50,nan"), "{csv}");
+}
