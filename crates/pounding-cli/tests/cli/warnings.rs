@@ -145,17 +145,11 @@ fn a_step_beyond_the_record_interval_is_warned() {
         .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "{err}");
-    assert!(
-        err.contains("longer than the sample interval 0.01 s"),
-        "{err}"
-    );
+    assert!(err.contains("longer than the sample interval 0.01 s"), "{err}");
     let s = summary(&d.join("o"));
     let w = &s["warnings"][0];
     assert_eq!(w["kind"], "time_step_beyond_record");
-    assert_eq!(
-        (w["dt_s"].as_f64(), w["record_dt_s"].as_f64()),
-        (Some(0.02), Some(0.01))
-    );
+    assert_eq!((w["dt_s"].as_f64(), w["record_dt_s"].as_f64()), (Some(0.02), Some(0.01)));
     // at the default dt (1 ms) there is no such warning
     let ok = pounding()
         .current_dir(&d)
