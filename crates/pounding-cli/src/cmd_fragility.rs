@@ -10,7 +10,9 @@ use pounding::assessment::im::{ImSpec, PeriodInfo, fundamental_period};
 use pounding::assessment::limit::{BoundLimit, bind};
 use pounding::assessment::run::{Plan, RunRow, fit_limit_state, run_all, runs_csv};
 use pounding::assessment::{FragilitySettings, PeriodChoice};
-use pounding::fragility::{BootstrapSettings, FragilityRow, fragility_csv, fragility_json};
+use pounding::fragility::{
+    BootstrapSettings, FragilityRow, StudyColumns, fragility_csv_study, fragility_json_study,
+};
 use pounding::ground_motion::set::RecordSet;
 use pounding::math::Real;
 use pounding::output::write_atomic;
@@ -179,6 +181,9 @@ pub fn run(args: Args) -> Result<ExitCode> {
         (runs_s, t0, total, &pool),
     )?;
     print_table(&fits);
+    for w in fits.rows.iter().flat_map(FragilityRow::interval_warnings) {
+        eprintln!("warning: {w}");
+    }
     if excluded > 0 {
         eprintln!(
             "error: {excluded} of {total} runs failed or are not trustworthy (status in runs.csv): \
@@ -206,8 +211,17 @@ fn write_outputs(
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
     wr("runs.csv", csv.as_bytes())?;
-    wr("fragility.csv", fragility_csv(&fits.rows).as_bytes())?;
-    let mut j = fragility_json(&fits.rows);
+    let label = st.spec.label();
+    let cols = StudyColumns {
+        im: &label,
+        im_unit: "g",
+        level: st.settings.level,
+    };
+    wr(
+        "fragility.csv",
+        fragility_csv_study(&fits.rows, &cols).as_bytes(),
+    )?;
+    let mut j = fragility_json_study(&fits.rows, &cols);
     if let Some(o) = j.as_object_mut() {
         o.insert("im".into(), json!(st.spec.label()));
         o.insert(
@@ -299,11 +313,27 @@ fn interval(i: Option<(Real, Real)>) -> String {
     i.map_or("-".into(), |(a, b)| format!("{a:.4}-{b:.4}"))
 }
 
-/// Stdout: per limit state θ, β, their intervals and the counts.
+/// `failed/samples` of a row's bootstrap, or `-` (no bootstrap, or no fit).
+pub(crate) fn boot_failed(r: &FragilityRow) -> String {
+    match (&r.bootstrap, r.bootstrap_failed()) {
+        (Some(b), Some(f)) => format!("{f}/{}", b.samples),
+        _ => "-".into(),
+    }
+}
+
+/// Stdout: per limit state θ, β, their intervals, the failed bootstrap replicates and the counts.
 fn print_table(fits: &Fits) {
     println!(
-        "{:<20} {:<20} {:>9} {:>7} {:>17} {:>15} {:>5}",
-        "limit state", "status", "theta_g", "beta", "theta interval", "beta interval", "runs"
+        "{:<20} {:<20} {:>9} {:>7} {:>17} {:>15} {:>11} {:>7} {:>5}",
+        "limit state",
+        "status",
+        "theta_g",
+        "beta",
+        "theta interval",
+        "beta interval",
+        "boot failed",
+        "records",
+        "runs"
     );
     for r in &fits.rows {
         let (t, b) = r.fit.params().map_or(("-".into(), "-".into()), |(t, b)| {
@@ -311,11 +341,13 @@ fn print_table(fits: &Fits) {
         });
         let bs = r.bootstrap.as_ref();
         println!(
-            "{:<20} {:<20} {t:>9} {b:>7} {:>17} {:>15} {:>5}",
+            "{:<20} {:<20} {t:>9} {b:>7} {:>17} {:>15} {:>11} {:>7} {:>5}",
             r.limit_state,
             r.fit.status(),
             interval(bs.and_then(|b| b.theta)),
             interval(bs.and_then(|b| b.beta)),
+            boot_failed(r),
+            r.n_records,
             r.n_runs
         );
     }

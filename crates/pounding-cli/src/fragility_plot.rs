@@ -207,7 +207,7 @@ pub(crate) fn report(st: &Study, plan: &Plan, rows: &[RunRow], fits: &Fits) -> S
             st.settings.bootstrap, st.settings.seed, st.settings.level
         ),
     );
-    h.push_str("</table>\n<h2>Fits</h2>\n<table>\n<tr><th>limit state</th><th>method</th><th>status</th><th>θ [g]</th><th>β</th><th>θ interval</th><th>β interval</th><th>records</th><th>runs</th></tr>\n");
+    h.push_str("</table>\n<h2>Fits</h2>\n<table>\n<tr><th>limit state</th><th>method</th><th>status</th><th>θ [g]</th><th>β</th><th>θ interval</th><th>β interval</th><th>bootstrap failed</th><th>records</th><th>runs</th></tr>\n");
     for f in &fits.rows {
         let (t, b) = f.fit.params().unzip();
         let bs = f.bootstrap.as_ref();
@@ -215,7 +215,7 @@ pub(crate) fn report(st: &Study, plan: &Plan, rows: &[RunRow], fits: &Fits) -> S
             |i: Option<(Real, Real)>| i.map_or("-".into(), |(a, z)| format!("{a:.4} – {z:.4}"));
         let _ = writeln!(
             h,
-            "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
+            "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
             esc(&f.limit_state),
             esc(f.method.as_str()),
             esc(f.fit.status()),
@@ -223,11 +223,25 @@ pub(crate) fn report(st: &Study, plan: &Plan, rows: &[RunRow], fits: &Fits) -> S
             g4(b),
             iv(bs.and_then(|b| b.theta)),
             iv(bs.and_then(|b| b.beta)),
+            esc(&crate::cmd_fragility::boot_failed(f)),
             f.n_records,
             f.n_runs
         );
     }
-    h.push_str("</table>\n<h2>Figure</h2>\n<p><img src=\"fragility.png\" alt=\"fragility curves\" width=\"1100\"></p>\n");
+    h.push_str("</table>\n");
+    let warnings: Vec<String> = fits
+        .rows
+        .iter()
+        .flat_map(pounding::fragility::FragilityRow::interval_warnings)
+        .collect();
+    if !warnings.is_empty() {
+        h.push_str("<h2>Warnings</h2>\n<ul>\n");
+        for w in &warnings {
+            let _ = writeln!(h, "<li>{}</li>", esc(w));
+        }
+        h.push_str("</ul>\n");
+    }
+    h.push_str("<h2>Figure</h2>\n<p><img src=\"fragility.png\" alt=\"fragility curves\" width=\"1100\"></p>\n");
     h.push_str("<p>Lines: fitted lognormal curves; points: the fraction of runs exceeding per stripe; bands: pointwise bootstrap intervals over records. A status other than <code>ok</code> means the data have no finite fit, and no curve is drawn.</p>\n</body>\n</html>\n");
     h
 }

@@ -222,15 +222,17 @@ pub enum OutputError {
         /// Its lock file.
         lock: PathBuf,
     },
-    /// An I/O error on `path`.
-    #[error("{what} {path}: {source}")]
+    /// An I/O error on `path`. The cause is part of the message and deliberately not a
+    /// `source()` as well: an error chain (`{:#}`) printed it twice ("File exists (os error 17):
+    /// File exists (os error 17)").
+    #[error("{what} {path}: {cause}")]
     Io {
         /// What was being done ("cannot create output directory").
         what: &'static str,
         /// The file or directory.
         path: PathBuf,
         /// The cause.
-        source: std::io::Error,
+        cause: std::io::Error,
     },
 }
 
@@ -280,9 +282,27 @@ fn still_linked(f: &std::fs::File, path: &Path) -> bool {
     }
 }
 
-/// Fails with [`OutputError::Locked`] when another process holds the lock of `dir`; creates
+/// Fails with [`OutputError::Locked`] when another process holds the lock of `dir`, and with
+/// [`OutputError::Io`] when `dir` or its nearest existing ancestor is not a directory; creates
 /// nothing (for an early check, before a long computation, that writes nothing on bad input).
 pub fn check_output_dir_free(dir: &Path) -> Result<(), OutputError> {
+    // The directory (or the nearest of its ancestors that exists) must be a directory: a regular
+    // file there would fail only when the outputs are written, after the whole computation.
+    if let Some(file) = dir
+        .ancestors()
+        .filter(|a| !a.as_os_str().is_empty())
+        .find(|a| std::fs::symlink_metadata(a).is_ok())
+        .filter(|a| !a.is_dir())
+    {
+        return Err(OutputError::Io {
+            what: "cannot create output directory",
+            path: dir.to_path_buf(),
+            cause: std::io::Error::other(format!(
+                "{} exists and is not a directory",
+                file.display()
+            )),
+        });
+    }
     let lock = lock_path(dir);
     let Ok(f) = std::fs::OpenOptions::new()
         .read(true)
@@ -307,7 +327,7 @@ pub fn check_output_dir_free(dir: &Path) -> Result<(), OutputError> {
 pub fn lock_output_dir(dir: &Path) -> Result<OutputLock, OutputError> {
     let io = |what, path: &Path| {
         let path = path.to_path_buf();
-        move |source| OutputError::Io { what, path, source }
+        move |cause| OutputError::Io { what, path, cause }
     };
     std::fs::create_dir_all(dir).map_err(io("cannot create output directory", dir))?;
     let lock = lock_path(dir);
@@ -348,7 +368,7 @@ pub fn remove_previous_outputs(lock: &OutputLock, names: &[&str]) -> Result<(), 
         Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(OutputError::Io {
             what: "cannot remove the earlier output",
             path: p.to_path_buf(),
-            source: e,
+            cause: e,
         }),
         _ => Ok(()),
     };

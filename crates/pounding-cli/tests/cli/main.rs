@@ -64,6 +64,7 @@ mod compare;
 mod docs_links;
 mod fragility;
 mod fragility_example;
+mod fragility_trial;
 mod fuzz;
 mod golden;
 mod harden;

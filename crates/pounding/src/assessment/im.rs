@@ -39,11 +39,17 @@ impl ImSpec {
             ImKind::Pga => "PGA".into(),
             ImKind::Sa => format!(
                 "Sa({} s, {} %)",
-                crate::output::float_token(self.period),
-                crate::output::float_token(self.damping * 100.0)
+                sig4(self.period),
+                sig4(self.damping * 100.0)
             ),
         }
     }
+}
+
+/// `x` rounded to 4 significant digits, shortest form (`4.218134191537946` → `4.218`; labels
+/// only: the data keep full precision).
+fn sig4(x: Real) -> String {
+    crate::output::float_token(format!("{x:.3e}").parse::<Real>().unwrap_or(x))
 }
 
 /// `record` times `s`.

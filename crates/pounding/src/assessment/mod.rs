@@ -37,6 +37,12 @@ pub mod limit;
 pub mod run;
 pub mod settings;
 
+/// Largest factor a record may be scaled by (by a level's `L / IM` or an IDA scale): a record
+/// scaled by more is no longer a plausible ground motion of that intensity (practice keeps scale
+/// factors within about 0.25–4; 100 only refuses the absurd, such as the 1e8 of a `period_s` at
+/// which the record has no spectral content).
+pub const MAX_SCALE_FACTOR: crate::math::Real = 100.0;
+
 pub use settings::{
     FragilitySettings, ImKind, LimitKind, LimitState, PairIm, PeriodChoice, Stripes,
 };
@@ -74,6 +80,27 @@ pub enum AssessmentError {
     /// The bridge model (e.g. no fundamental period).
     #[error("{0}")]
     Model(String),
+    /// A stripe that needs a scale factor beyond [`MAX_SCALE_FACTOR`] for an entry: its IM is too
+    /// small for the level (or the IDA scale is absurd).
+    #[error(
+        "record {id}: {stripe} needs a scale factor of {} (its {im} is {} g), beyond the limit of \
+         {MAX_SCALE_FACTOR}: the record's IM is too small for that level; remove the record or \
+         the level",
+        crate::output::float_token(*factor),
+        crate::output::float_token(*entry_im)
+    )]
+    ScaleFactor {
+        /// The entry's id.
+        id: String,
+        /// The stripe, e.g. `level_g = 3` or `scale = 500`.
+        stripe: String,
+        /// The IM's label.
+        im: String,
+        /// The entry's IM at unit factor \[g\].
+        entry_im: crate::math::Real,
+        /// The factor the stripe needs.
+        factor: crate::math::Real,
+    },
     /// An entry whose IM is zero cannot be scaled to a level.
     #[error(
         "record {id}: its {im} is 0, so it cannot be scaled to an IM level; remove it from the set"

@@ -23,7 +23,8 @@ pub struct Plan {
 }
 
 impl Plan {
-    /// Computes every entry's IM (in parallel, deterministic) and refuses an IM of 0.
+    /// Computes every entry's IM (in parallel, deterministic) and refuses an IM of 0 and a
+    /// stripe needing a scale factor above [`super::MAX_SCALE_FACTOR`] (naming record and stripe).
     pub fn new(
         set: &RecordSet,
         spec: &ImSpec,
@@ -43,10 +44,28 @@ impl Plan {
                 });
             }
         }
-        Ok(Self {
+        let plan = Self {
             entry_im,
             stripes: stripes.clone(),
-        })
+        };
+        for (a, r) in set.records.iter().enumerate() {
+            for (b, v) in plan.values().iter().enumerate() {
+                let factor = plan.point(a, b).1;
+                if factor > super::MAX_SCALE_FACTOR {
+                    return Err(AssessmentError::ScaleFactor {
+                        id: r.id.clone(),
+                        stripe: match stripes {
+                            Stripes::Levels(_) => format!("level_g = {}", float_token(*v)),
+                            Stripes::Scales(_) => format!("scale = {}", float_token(*v)),
+                        },
+                        im: spec.label(),
+                        entry_im: plan.entry_im[a],
+                        factor,
+                    });
+                }
+            }
+        }
+        Ok(plan)
     }
 
     /// The stripe values (levels in g, or scale factors).
@@ -275,7 +294,9 @@ pub fn first_exceedance(
 /// The fit of one limit state: multiple stripes by maximum likelihood
 /// ([`crate::fragility::bootstrap_stripes`]), IDA by the method of moments on the IMs at first
 /// exceedance ([`crate::fragility::bootstrap_ida`]; entries with an unknown crossing are left
-/// out). With `bootstrap.samples = 0` no intervals. `band_im`: the IMs of the bootstrap band.
+/// out). IDA entries that exceed already at the smallest scale (left-censored: the IM at first
+/// exceedance is only an upper bound) give
+/// [`crate::fragility::NoMle::ExceededAtFirst`] with their count, no numbers and no bootstrap. With `bootstrap.samples = 0` no intervals. `band_im`: the IMs of the bootstrap band.
 pub fn fit_limit_state(
     name: &str,
     plan: &Plan,
@@ -308,6 +329,23 @@ pub fn fit_limit_state(
                     })
                     .collect(),
             };
+            // Left-censored records (exceeded already at the smallest scale): the IM of that run
+            // is only an upper bound of the crossing; no numbers.
+            let at_first = (0..entries)
+                .filter(|&a| rows[a * ns].limits[l].0 == Some(true))
+                .count();
+            if at_first > 0 {
+                return Ok(FragilityRow {
+                    limit_state: name.to_string(),
+                    method: crate::fragility::Method::MomentsIda,
+                    fit: crate::fragility::Fit::NoFiniteMle(
+                        crate::fragility::NoMle::ExceededAtFirst { count: at_first },
+                    ),
+                    bootstrap: None,
+                    n_records: d.im_at_exceedance.len(),
+                    n_runs: d.im_at_exceedance.iter().flatten().count(),
+                });
+            }
             if d.im_at_exceedance.is_empty() {
                 return Ok(FragilityRow {
                     limit_state: name.to_string(),

@@ -28,6 +28,12 @@ pub enum PairIm {
     RotD50,
 }
 
+/// Largest `period_s` of `Sa` \[s\]: response spectra of engineering practice end at 10 s
+/// (NGA-West2 ground-motion models; design spectra), so 20 s leaves room while refusing a
+/// period that no record's spectrum describes (the spectrum module itself accepts any period
+/// its arithmetic can handle, [`crate::spectrum::PERIOD_RANGE`]).
+pub const MAX_PERIOD_S: Real = 20.0;
+
 /// The period of `Sa`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum PeriodChoice {
@@ -227,12 +233,13 @@ impl FragilitySettings {
                         .as_float()
                         .or(v.get_ref().as_integer().map(|i| i as Real))
                         .unwrap_or(Real::NAN);
-                    if !(t.is_finite() && t > 0.0) {
+                    if !(t.is_finite() && t > 0.0 && t <= MAX_PERIOD_S) {
                         return Err(cx.err(
                             key("period_s"),
                             v,
                             format!(
-                                "invalid period_s = {}: must be finite and > 0",
+                                "invalid period_s = {}: must lie in (0, {MAX_PERIOD_S}] s \
+                                 (the range of engineering response spectra)",
                                 crate::output::float_token(t)
                             ),
                         ));

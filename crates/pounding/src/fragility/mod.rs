@@ -33,7 +33,10 @@ pub mod write;
 pub use bootstrap::{BandPoint, Bootstrap, BootstrapSettings, bootstrap_ida, bootstrap_stripes};
 pub use mle::{fit_stripes, stripe_log_likelihood};
 pub use moments::fit_ida;
-pub use write::{FragilityRow, Method, fragility_csv, fragility_json};
+pub use write::{
+    FragilityRow, Method, StudyColumns, fragility_csv, fragility_csv_study, fragility_json,
+    fragility_json_study,
+};
 
 use crate::math::Real;
 use crate::output::float_token;
@@ -198,6 +201,14 @@ pub enum NoMle {
         /// How many records are censored.
         count: usize,
     },
+    /// IDA records that exceeded the limit state already at the first (smallest) IM run
+    /// (left-censored): their IM at first exceedance is only an upper bound of the crossing, so
+    /// the method of moments would be biased high in θ and low in β. Refused rather than given
+    /// numbers; run the analysis from smaller scales.
+    ExceededAtFirst {
+        /// How many records exceeded already at the first IM.
+        count: usize,
+    },
     /// Every record exceeded at the same IM (IDA): `β = 0`.
     NoDispersion,
     /// The maximum is finite but its `θ` or `β` is beyond the floating-point range: the fitted
@@ -211,7 +222,8 @@ pub enum NoMle {
 
 impl NoMle {
     /// The status word (`no_exceedance`, `all_exceeded`, `perfectly_separated`, `not_increasing`,
-    /// `too_few_points`, `censored`, `no_dispersion`, `out_of_range`, `not_converged`).
+    /// `too_few_points`, `censored`, `exceeded_at_first`, `no_dispersion`, `out_of_range`,
+    /// `not_converged`).
     pub fn as_str(&self) -> &'static str {
         match self {
             NoMle::NoExceedance => "no_exceedance",
@@ -220,6 +232,7 @@ impl NoMle {
             NoMle::NotIncreasing => "not_increasing",
             NoMle::TooFewPoints => "too_few_points",
             NoMle::Censored { .. } => "censored",
+            NoMle::ExceededAtFirst { .. } => "exceeded_at_first",
             NoMle::NoDispersion => "no_dispersion",
             NoMle::OutOfRange => "out_of_range",
             NoMle::NotConverged => "not_converged",

@@ -1,10 +1,15 @@
 //! `fragility.csv` and `fragility.json`: one row (object) per limit state and method.
 //!
 //! CSV columns: `limit_state, method, status, theta, beta, theta_lo, theta_hi, beta_lo, beta_hi,
-//! level, n_records, n_runs, bootstrap_samples, bootstrap_failed`. Numbers in the project's
+//! level, n_records, n_runs, bootstrap_samples, bootstrap_failed`, and for a study
+//! ([`fragility_csv_study`]) `im, im_unit` at the end (e.g. `Sa(1.5 s, 5 %)`, `g`). Numbers in the project's
 //! shortest round-trip form ([`crate::output::float_token`]); a number that does not exist (no fit,
 //! no bootstrap) is `nan` in CSV and `null` in JSON, and `status` says why (`ok` or a
-//! [`super::NoMle`] word). The JSON adds the pointwise band of each bootstrap.
+//! [`super::NoMle`] word; `bootstrap_failed` is `nan` / `null` when the data have no fit, as no
+//! replicate then means anything, and `0` without a bootstrap: `no_exceedance`, `all_exceeded`, `perfectly_separated`,
+//! `not_increasing`, `too_few_points`, `censored` (IDA records never exceeding within the IMs
+//! run), `exceeded_at_first` (IDA records exceeding already at the first IM: the IM at first
+//! exceedance is only an upper bound), `no_dispersion`, `out_of_range`, `not_converged`). The JSON adds the pointwise band of each bootstrap.
 
 use serde_json::{Value, json};
 
@@ -91,6 +96,48 @@ impl FragilityRow {
     }
 }
 
+/// Fewer records than this make bootstrap intervals over records unreliable
+/// ([`FragilityRow::interval_warnings`]).
+pub const MIN_RECORDS_FOR_INTERVALS: usize = 10;
+
+impl FragilityRow {
+    /// Replicates without a fit, `None` when there is no bootstrap or the data themselves have no
+    /// fit (then no replicate is meaningful: written `nan` / `null`, not `samples`).
+    pub fn bootstrap_failed(&self) -> Option<usize> {
+        self.fit.params()?;
+        self.bootstrap.as_ref().map(|b| b.failed)
+    }
+
+    /// Why this row's bootstrap intervals are unreliable (empty when they are not, or when there
+    /// are none): fewer than [`MIN_RECORDS_FOR_INTERVALS`] records, or more than 10 % of the
+    /// replicates without a fit (the intervals describe only the others).
+    pub fn interval_warnings(&self) -> Vec<String> {
+        let Some(b) = self
+            .bootstrap
+            .as_ref()
+            .filter(|_| self.fit.params().is_some())
+        else {
+            return Vec::new();
+        };
+        let mut w = Vec::new();
+        if self.n_records < MIN_RECORDS_FOR_INTERVALS {
+            w.push(format!(
+                "limit state {}: intervals unreliable: the bootstrap resamples only {} records \
+                 (use at least {MIN_RECORDS_FOR_INTERVALS})",
+                self.limit_state, self.n_records
+            ));
+        }
+        if b.failed * 10 > b.samples {
+            w.push(format!(
+                "limit state {}: intervals unreliable: {} of {} bootstrap replicates had no fit \
+                 (more than 10 %); the intervals describe only the others",
+                self.limit_state, b.failed, b.samples
+            ));
+        }
+        w
+    }
+}
+
 /// The CSV column names, in order.
 pub const CSV_COLUMNS: [&str; 14] = [
     "limit_state",
@@ -109,19 +156,45 @@ pub const CSV_COLUMNS: [&str; 14] = [
     "bootstrap_failed",
 ];
 
-/// The numbers of a row: `(θ, β, θ_lo, θ_hi, β_lo, β_hi, level)`, NaN where absent.
-fn numbers(r: &FragilityRow) -> [Real; 7] {
+/// What a study adds to every row of its outputs ([`fragility_csv_study`],
+/// [`fragility_json_study`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StudyColumns<'a> {
+    /// The intensity measure, e.g. `Sa(1.5 s, 5 %)` or `PGA`.
+    pub im: &'a str,
+    /// Its unit, e.g. `g`.
+    pub im_unit: &'a str,
+    /// The confidence level asked for (written as `level` also without a bootstrap).
+    pub level: Real,
+}
+
+/// The numbers of a row: `(θ, β, θ_lo, θ_hi, β_lo, β_hi, level)`, NaN where absent; `level`
+/// without a bootstrap is `level` (the study's), else NaN.
+fn numbers(r: &FragilityRow, level: Option<Real>) -> [Real; 7] {
     let (theta, beta) = r.fit.params().unwrap_or((Real::NAN, Real::NAN));
     let b = r.bootstrap.as_ref();
     let (tl, th) = b.and_then(|b| b.theta).unwrap_or((Real::NAN, Real::NAN));
     let (bl, bh) = b.and_then(|b| b.beta).unwrap_or((Real::NAN, Real::NAN));
-    let level = b.map_or(Real::NAN, |b| b.level);
+    let level = b.map_or(level.unwrap_or(Real::NAN), |b| b.level);
     [theta, beta, tl, th, bl, bh, level]
 }
 
 /// `fragility.csv`: a header and one line per row (see the module documentation).
 pub fn fragility_csv(rows: &[FragilityRow]) -> String {
+    csv_impl(rows, None)
+}
+
+/// `fragility.csv` of a study: [`fragility_csv`] with the columns `im` and `im_unit` added at
+/// the end, and `level` written as asked also without a bootstrap.
+pub fn fragility_csv_study(rows: &[FragilityRow], study: &StudyColumns) -> String {
+    csv_impl(rows, Some(study))
+}
+
+fn csv_impl(rows: &[FragilityRow], study: Option<&StudyColumns>) -> String {
     let mut out = CSV_COLUMNS.join(",");
+    if study.is_some() {
+        out.push_str(",im,im_unit");
+    }
     out.push('\n');
     for r in rows {
         let mut f = vec![
@@ -129,15 +202,23 @@ pub fn fragility_csv(rows: &[FragilityRow]) -> String {
             r.method.as_str().to_string(),
             r.fit.status().to_string(),
         ];
-        f.extend(numbers(r).iter().map(|&x| float_token(x)));
+        f.extend(
+            numbers(r, study.map(|s| s.level))
+                .iter()
+                .map(|&x| float_token(x)),
+        );
         f.push(r.n_records.to_string());
         f.push(r.n_runs.to_string());
-        let (samples, failed) = r
-            .bootstrap
-            .as_ref()
-            .map_or((0, 0), |b| (b.samples, b.failed));
-        f.push(samples.to_string());
-        f.push(failed.to_string());
+        f.push(r.bootstrap.as_ref().map_or(0, |b| b.samples).to_string());
+        f.push(match (&r.bootstrap, r.bootstrap_failed()) {
+            (None, _) => "0".to_string(),
+            (Some(_), None) => float_token(Real::NAN),
+            (Some(_), Some(n)) => n.to_string(),
+        });
+        if let Some(s) = study {
+            f.push(csv_field(s.im));
+            f.push(csv_field(s.im_unit));
+        }
         out.push_str(&f.join(","));
         out.push('\n');
     }
@@ -145,13 +226,25 @@ pub fn fragility_csv(rows: &[FragilityRow]) -> String {
 }
 
 /// `fragility.json`: `{"fits": [...]}` with the CSV's keys per row (numbers or `null`), plus
-/// `censored` (IDA records without exceedance, when that is the status) and `band`: the bootstrap's
+/// `censored` (IDA records without exceedance, when that is the status), `exceeded_at_first`
+/// (IDA records exceeding already at the first IM, when that is the status) and `band`: the bootstrap's
 /// `[{"im", "p", "lo", "hi"}]` (empty without a bootstrap).
 pub fn fragility_json(rows: &[FragilityRow]) -> Value {
+    json_impl(rows, None)
+}
+
+/// `fragility.json` of a study: [`fragility_json`] with `im` and `im_unit` in every fit, and
+/// `level` as asked also without a bootstrap.
+pub fn fragility_json_study(rows: &[FragilityRow], study: &StudyColumns) -> Value {
+    json_impl(rows, Some(study))
+}
+
+fn json_impl(rows: &[FragilityRow], study: Option<&StudyColumns>) -> Value {
     let fits: Vec<Value> = rows
         .iter()
         .map(|r| {
-            let [theta, beta, tl, th, bl, bh, level] = numbers(r).map(json_float);
+            let [theta, beta, tl, th, bl, bh, level] =
+                numbers(r, study.map(|s| s.level)).map(json_float);
             let band: Vec<Value> = r.bootstrap.as_ref().map_or(Vec::new(), |b| {
                 b.band
                     .iter()
@@ -170,7 +263,11 @@ pub fn fragility_json(rows: &[FragilityRow]) -> Value {
                 Fit::NoFiniteMle(super::NoMle::Censored { count }) => json!(count),
                 _ => Value::Null,
             };
-            json!({
+            let at_first = match r.fit {
+                Fit::NoFiniteMle(super::NoMle::ExceededAtFirst { count }) => json!(count),
+                _ => Value::Null,
+            };
+            let mut o = json!({
                 "limit_state": r.limit_state,
                 "method": r.method.as_str(),
                 "status": r.fit.status(),
@@ -184,10 +281,19 @@ pub fn fragility_json(rows: &[FragilityRow]) -> Value {
                 "n_records": r.n_records,
                 "n_runs": r.n_runs,
                 "bootstrap_samples": r.bootstrap.as_ref().map_or(0, |b| b.samples),
-                "bootstrap_failed": r.bootstrap.as_ref().map_or(0, |b| b.failed),
+                "bootstrap_failed": match (&r.bootstrap, r.bootstrap_failed()) {
+                    (None, _) => json!(0),
+                    (Some(_), failed) => json!(failed),
+                },
                 "censored": censored,
+                "exceeded_at_first": at_first,
                 "band": band,
-            })
+            });
+            if let (Some(s), Some(m)) = (study, o.as_object_mut()) {
+                m.insert("im".into(), json!(s.im));
+                m.insert("im_unit".into(), json!(s.im_unit));
+            }
+            o
         })
         .collect();
     json!({ "fits": fits })

@@ -18,6 +18,10 @@
 //! magnitude = 6.9
 //! ```
 //!
+//! A metadata name must not repeat a column of `runs.csv` (`record`, `level_g`, `scale`,
+//! `im_g`, `scale_factor`, `status`, `error`, or a name ending in `_exceeded` / `_ratio`): such a
+//! manifest is refused, naming `record[i].meta.KEY` and the line of its table.
+//!
 //! Every record file is read once (a file named by several entries is shared). Errors name the
 //! manifest, the key and its line, and the record file; every entry is read before the errors
 //! are reported, so that all missing or bad files are named at once. Unknown keys, duplicate
@@ -309,7 +313,7 @@ fn entry(cx: &Ctx, i: usize, r: &RecordSec, cache: &mut Cache) -> Result<SetReco
             .entry(k)
             .or_insert_with(|| read_component(cx.dir, s.get_ref(), &opts))
             .clone();
-        got.map_err(|e| problems.push(format!("{}: {e}", cx.at(i, key, s))))
+        got.map_err(|e| problems.push(format!("{}: {}", cx.at(i, key, s), in_manifest(&e))))
             .ok()
     };
     let x = read("x", &r.x);
@@ -374,10 +378,61 @@ fn meta_values(
             ));
             continue;
         }
+        if let Some(why) = reserved_column(k) {
+            problems.push(format!(
+                "{}: {why}; rename the metadata (e.g. meta_{k})",
+                at(k)
+            ));
+            continue;
+        }
         out.push((k.clone(), value));
     }
     out.sort_by(|a, b| a.0.cmp(&b.0));
     out
+}
+
+/// A record reader's message as it applies inside a manifest: the sample interval of a
+/// one-column file is the entry's `dt` key there, not the scenario's `record_dt` or the
+/// `--record-dt` flag.
+fn in_manifest(message: &str) -> String {
+    message
+        .replace(
+            "record_dt = SECONDS in [ground_motion] or --record-dt SECONDS",
+            "dt = SECONDS in this [[record]] table of the manifest",
+        )
+        .replace(
+            "given by record_dt (scenario) or --record-dt",
+            "given by the entry's dt key (in a manifest)",
+        )
+}
+
+/// The output columns of `runs.csv` that a metadata name must not repeat (a table reader would
+/// return one of the two columns silently).
+pub const RESERVED_COLUMNS: [&str; 7] = [
+    "record",
+    "level_g",
+    "scale",
+    "im_g",
+    "scale_factor",
+    "status",
+    "error",
+];
+
+/// Why metadata name `k` would clash with a `runs.csv` column, if it would: a fixed column
+/// ([`RESERVED_COLUMNS`]) or a name ending in `_exceeded` / `_ratio` (the per-limit-state columns).
+fn reserved_column(k: &str) -> Option<String> {
+    if RESERVED_COLUMNS.contains(&k) {
+        return Some(format!(
+            "{k:?} is an output column of runs.csv (reserved: {})",
+            RESERVED_COLUMNS.join(", ")
+        ));
+    }
+    ["_exceeded", "_ratio"]
+        .iter()
+        .find(|s| k.ends_with(*s))
+        .map(|s| {
+            format!("a name ending in {s} is reserved for the limit-state columns of runs.csv")
+        })
 }
 
 /// Reads one component: `builtin:ELC180` / `builtin:ELC270` or a file relative to `dir`.

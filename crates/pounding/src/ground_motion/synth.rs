@@ -122,6 +122,10 @@ impl Default for SynthParams {
 pub const MAX_COUNT: usize = 10_000;
 /// Largest number of samples of one component.
 pub const MAX_SAMPLES: usize = 10_000_000;
+/// Fewest steps of `dt` in `duration` (a record of fewer is refused).
+pub const MIN_STEPS: usize = 100;
+/// Largest `--pga` \[g\] (the largest recorded PGAs are about 3–4 g).
+pub const MAX_PGA_G: Real = 10.0;
 
 fn bad(name: &str, value: impl ToString, reason: &str) -> SynthError {
     SynthError::InvalidParameter {
@@ -137,7 +141,8 @@ fn bad_real(name: &str, value: Real, reason: &str) -> SynthError {
 }
 
 impl SynthParams {
-    /// Checks every parameter (finite, in range; `dt ≤ duration`; at most [`MAX_SAMPLES`]).
+    /// Checks every parameter (finite, in range; `--pga` in (0, [`MAX_PGA_G`]] g; `duration` a
+    /// whole number of at least [`MIN_STEPS`] steps of `dt`; fewer than [`MAX_SAMPLES`] samples).
     pub fn check(&self) -> Result<(), SynthError> {
         let pos = |name: &str, v: Real| {
             if v.is_finite() && v > 0.0 {
@@ -150,6 +155,13 @@ impl SynthParams {
         pos("--duration", self.duration)?;
         if let Some(p) = self.pga_g {
             pos("--pga", p)?;
+            if p > MAX_PGA_G {
+                return Err(bad_real(
+                    "--pga",
+                    p,
+                    &format!("must lie in (0, {MAX_PGA_G}] g"),
+                ));
+            }
         }
         for (n, v) in [("omega_g", self.omega_g), ("omega_f", self.omega_f)] {
             pos(n, v)?;
@@ -175,11 +187,44 @@ impl SynthParams {
                 ),
             ));
         }
-        if self.duration / self.dt >= MAX_SAMPLES as Real {
+        let steps = self.duration / self.dt;
+        if steps >= MAX_SAMPLES as Real {
+            return Err(bad_real(
+                "--dt",
+                self.dt,
+                &format!(
+                    "with --duration = {} gives {} samples; --duration / --dt must stay below \
+                     {MAX_SAMPLES} samples",
+                    crate::output::float_token(self.duration),
+                    crate::output::float_token(steps.round())
+                ),
+            ));
+        }
+        if (steps - steps.round()).abs() > 1e-9 * steps {
+            let (lo, hi) = (steps.floor() * self.dt, steps.ceil() * self.dt);
             return Err(bad_real(
                 "--duration",
                 self.duration,
-                &format!("--duration / --dt must stay below {MAX_SAMPLES} samples"),
+                &format!(
+                    "is not a whole number of steps of --dt = {} ({} steps); give e.g. \
+                     --duration {} or {}",
+                    crate::output::float_token(self.dt),
+                    crate::output::float_token(steps),
+                    crate::output::float_token((lo * 1e9).round() / 1e9),
+                    crate::output::float_token((hi * 1e9).round() / 1e9)
+                ),
+            ));
+        }
+        if steps < MIN_STEPS as Real {
+            return Err(bad_real(
+                "--duration",
+                self.duration,
+                &format!(
+                    "must be at least {MIN_STEPS} steps of --dt = {} ({} s): a shorter record \
+                     is not a ground motion (it could even be all zeros)",
+                    crate::output::float_token(self.dt),
+                    crate::output::float_token(MIN_STEPS as Real * self.dt)
+                ),
             ));
         }
         Ok(())
