@@ -60,6 +60,7 @@ use oscillator::{Oscillator, Piece};
 use std::f64::consts::PI;
 use thiserror::Error;
 
+mod grid;
 mod oscillator;
 pub use oscillator::SERIES_BELOW;
 
@@ -141,7 +142,7 @@ pub fn check(damping: Real, periods: &[Real]) -> Result<(), SpectrumError> {
     Ok(())
 }
 
-/// The pieces of the oscillator's motion under the piecewise-linear load `(times, accel)`
+/// The plain (uncached) walk of [`peak_displacement_reference`]: the pieces of the oscillator's motion under the piecewise-linear load `(times, accel)`
 /// (from rest at `times[0]`, the load zero after the last sample), followed by free vibration
 /// for at least `2T`: `(piece, h)` per interval.
 fn pieces(osc: &Oscillator, times: &[Real], accel: &[Real], period: Real) -> Vec<(Piece, Real)> {
@@ -172,7 +173,25 @@ fn pieces(osc: &Oscillator, times: &[Real], accel: &[Real], period: Real) -> Vec
 /// `S_d = max_t |u(t)|` of the oscillator `(period, damping)` under the piecewise-linear
 /// record `(times, accel)` (m/s², `times` strictly increasing), over continuous time and the
 /// free vibration after the record (module doc). Parameters are not checked (see [`check`]).
+/// Computed on the fast path of `spectrum/grid.rs` (cached coefficients, bisection only where
+/// it can raise the peak): the same bits as [`peak_displacement_reference`].
 pub fn peak_displacement(times: &[Real], accel: &[Real], period: Real, damping: Real) -> Real {
+    let osc = Oscillator::new(period, damping);
+    let mut scan = grid::Scan::new();
+    grid::walk(&osc, times, accel, period, |p, g| scan.add(&osc, p, g));
+    scan.finish(&osc)
+}
+
+/// [`peak_displacement`] by the plain search: every coefficient recomputed on every interval
+/// and every bracketed zero of `u̇` bisected. Kept for tests that the fast path gives the same
+/// bits.
+#[doc(hidden)]
+pub fn peak_displacement_reference(
+    times: &[Real],
+    accel: &[Real],
+    period: Real,
+    damping: Real,
+) -> Real {
     let osc = Oscillator::new(period, damping);
     pieces(&osc, times, accel, period)
         .iter()
@@ -297,8 +316,12 @@ pub fn rotd(
     };
     for &period in periods {
         let osc = Oscillator::new(period, damping);
-        let px = pieces(&osc, &t, &ax, period);
-        let py = pieces(&osc, &t, &ay, period);
+        let collect = |a: &[Real]| {
+            let mut out = Vec::with_capacity(t.len() + 17);
+            grid::walk(&osc, &t, a, period, |p, g| out.push((*p, g.h())));
+            out
+        };
+        let (px, py) = (collect(&ax), collect(&ay));
         let mut peaks = rotated_peaks(&osc, &px, &py);
         peaks.sort_by(Real::total_cmp);
         out.rotd50.push(Ordinate::new(
