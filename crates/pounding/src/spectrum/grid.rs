@@ -98,6 +98,21 @@ impl Grid {
         self.h
     }
 
+    /// `true` for the cached sub-grid search (neither series form nor long).
+    pub(super) fn is_plain(&self) -> bool {
+        self.kind == Kind::Plain
+    }
+
+    /// `(u, u̇)` of `p` at the sub-grid points `h j / m` (plain grids), the same bits as
+    /// `osc.at`.
+    pub(super) fn samples(&self, osc: &Oscillator, p: &Piece) -> Vec<(Real, Real)> {
+        self.taus
+            .iter()
+            .zip(&self.trig)
+            .map(|(&t, tr)| osc.at_trig(p, t, tr))
+            .collect()
+    }
+
     /// `(u(h), u̇(h))` of `p`, the same bits as `osc.at(p, h)`.
     fn end(&self, osc: &Oscillator, p: &Piece) -> (Real, Real) {
         match &self.end {
@@ -123,7 +138,7 @@ impl Grids {
         }
     }
 
-    fn get(&mut self, h: Real) -> &Grid {
+    pub(super) fn get(&mut self, h: Real) -> &Grid {
         if let Some(i) = self.list.iter().position(|g| g.h.to_bits() == h.to_bits()) {
             return &self.list[i];
         }
@@ -196,8 +211,7 @@ impl Scan {
             self.best = self.best.max(osc.peak(p, g.h));
             return;
         }
-        let vmax = osc.speed_bound(p);
-        let margin = 1e-9 * (p.bound(g.h) + g.h * vmax);
+        let mut vmax_margin = None;
         let (u0, mut va) = osc.at_trig(p, g.taus[0], &g.trig[0]);
         let mut ua = u0.abs();
         self.best = self.best.max(ua);
@@ -207,6 +221,11 @@ impl Scan {
             let ub = u1.abs();
             self.best = self.best.max(ub);
             if va * vb < 0.0 {
+                // V and δ (module doc), computed only where u̇ changes sign
+                let (vmax, margin) = *vmax_margin.get_or_insert_with(|| {
+                    let vmax = osc.speed_bound(p);
+                    (vmax, 1e-9 * (p.bound(g.h) + g.h * vmax))
+                });
                 let bound = 0.5 * (ua + ub + (b - a) * vmax) + margin;
                 if bound >= self.best {
                     self.candidates.push(Candidate {

@@ -88,6 +88,11 @@ impl Piece {
         }
     }
 
+    /// `true` in the series form (`[u₀, u̇₀, a₀, s]`).
+    pub(super) fn is_series(&self) -> bool {
+        self.series
+    }
+
     /// A rigorous bound of `|u|` on `[0, h]`: `|e^{−ζωτ}(c₁ cos + c₂ sin)| ≤ √(c₁² + c₂²)`;
     /// in the series form `|A| ≤ 1` (the energy `u̇² + ω²u²` does not grow), `|B| ≤ τ`
     /// (`|B'| ≤ 1` likewise), `|G| ≤ τ²/2`, `|R| ≤ τ³/6`.
