@@ -127,6 +127,7 @@ pub(super) struct Grids {
     osc: Oscillator,
     list: Vec<Grid>,
     next: usize,
+    last: usize,
 }
 
 impl Grids {
@@ -135,11 +136,22 @@ impl Grids {
             osc,
             list: Vec::with_capacity(CACHE),
             next: 0,
+            last: 0,
         }
     }
 
     pub(super) fn get(&mut self, h: Real) -> &Grid {
+        // the last hit first: consecutive intervals mostly share their length
+        let last = self.last;
+        if self
+            .list
+            .get(last)
+            .is_some_and(|g| g.h.to_bits() == h.to_bits())
+        {
+            return &self.list[last];
+        }
         if let Some(i) = self.list.iter().position(|g| g.h.to_bits() == h.to_bits()) {
+            self.last = i;
             return &self.list[i];
         }
         let g = Grid::new(&self.osc, h);
@@ -152,6 +164,7 @@ impl Grids {
             self.next = (i + 1) % CACHE;
             i
         };
+        self.last = i;
         &self.list[i]
     }
 }
