@@ -60,6 +60,7 @@ use oscillator::{Oscillator, Piece};
 use std::f64::consts::PI;
 use thiserror::Error;
 
+mod grid;
 mod oscillator;
 pub use oscillator::SERIES_BELOW;
 
@@ -141,7 +142,7 @@ pub fn check(damping: Real, periods: &[Real]) -> Result<(), SpectrumError> {
     Ok(())
 }
 
-/// The pieces of the oscillator's motion under the piecewise-linear load `(times, accel)`
+/// The plain (uncached) walk of [`peak_displacement_reference`]: the pieces of the oscillator's motion under the piecewise-linear load `(times, accel)`
 /// (from rest at `times[0]`, the load zero after the last sample), followed by free vibration
 /// for at least `2T`: `(piece, h)` per interval.
 fn pieces(osc: &Oscillator, times: &[Real], accel: &[Real], period: Real) -> Vec<(Piece, Real)> {
@@ -172,7 +173,25 @@ fn pieces(osc: &Oscillator, times: &[Real], accel: &[Real], period: Real) -> Vec
 /// `S_d = max_t |u(t)|` of the oscillator `(period, damping)` under the piecewise-linear
 /// record `(times, accel)` (m/s², `times` strictly increasing), over continuous time and the
 /// free vibration after the record (module doc). Parameters are not checked (see [`check`]).
+/// Computed on the fast path of `spectrum/grid.rs` (cached coefficients, bisection only where
+/// it can raise the peak): the same bits as [`peak_displacement_reference`].
 pub fn peak_displacement(times: &[Real], accel: &[Real], period: Real, damping: Real) -> Real {
+    let osc = Oscillator::new(period, damping);
+    let mut scan = grid::Scan::new();
+    grid::walk(&osc, times, accel, period, |p, g| scan.add(&osc, p, g));
+    scan.finish(&osc)
+}
+
+/// [`peak_displacement`] by the plain search: every coefficient recomputed on every interval
+/// and every bracketed zero of `u̇` bisected. Kept for tests that the fast path gives the same
+/// bits.
+#[doc(hidden)]
+pub fn peak_displacement_reference(
+    times: &[Real],
+    accel: &[Real],
+    period: Real,
+    damping: Real,
+) -> Real {
     let osc = Oscillator::new(period, damping);
     pieces(&osc, times, accel, period)
         .iter()
@@ -187,8 +206,10 @@ pub fn spectrum(
     periods: &[Real],
 ) -> Result<Vec<Ordinate>, SpectrumError> {
     check(damping, periods)?;
+    use rayon::prelude::*;
+    // each period is independent: the same bits for any thread count
     Ok(periods
-        .iter()
+        .par_iter()
         .map(|&t| {
             let sd = peak_displacement(record.times(), record.values(), t, damping);
             Ordinate::new(t, damping, sd)
@@ -233,50 +254,62 @@ fn rotated_peaks(osc: &Oscillator, px: &[(Piece, Real)], py: &[(Piece, Real)]) -
         .map(|(i, ((a, h), (b, _)))| (a.bound(*h).hypot(b.bound(*h)), i))
         .collect();
     order.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+    let mut grids = grid::Grids::new(*osc);
     for (b, i) in order {
         if b < peaks.iter().copied().fold(Real::INFINITY, Real::min) {
             break;
         }
         let ((pxi, h), (pyi, _)) = (&px[i], &py[i]);
+        let g = grids.get(*h);
         let sy = osc.stretches(pyi, *h);
         for (k, (pxs, hs)) in osc.stretches(pxi, *h).iter().enumerate() {
-            stretch_peaks(osc, &angles, (pxs, &sy[k].0), *hs, &mut peaks);
+            // a plain interval is its own single stretch, on the cached grid
+            let g = (k == 0 && g.is_plain()).then_some(g);
+            stretch_peaks(osc, &angles, (pxs, &sy[k].0), *hs, g, &mut peaks);
         }
     }
     peaks
 }
 
 /// Raises `peaks[k]` to `max |c u_x + s u_y|` over `[0, h]` of the pieces `(x, y)`, for every
-/// angle `(c, s)` of `angles`.
+/// angle `(c, s)` of `angles`; `g`, if given, is the cached grid of `h`. A bisection is skipped
+/// where the bound of `spectrum/grid.rs` (with `V = |c| V_x + |s| V_y`, the margin `δ` of both
+/// pieces) is below the angle's peak so far: it could not raise it.
 fn stretch_peaks(
     osc: &Oscillator,
     angles: &[(Real, Real)],
     (pxi, pyi): (&Piece, &Piece),
     h: Real,
+    g: Option<&grid::Grid>,
     peaks: &mut [Real],
 ) {
     let m = osc.subdivisions(h);
-    let mut ux = Vec::with_capacity(m + 1);
-    let mut uy = Vec::with_capacity(m + 1);
-    for j in 0..=m {
-        let tau = h * j as Real / m as Real;
-        ux.push(osc.at(pxi, tau));
-        uy.push(osc.at(pyi, tau));
-    }
+    let sample = |p: &Piece| match g {
+        Some(g) => g.samples(osc, p),
+        None => (0..=m)
+            .map(|j| osc.at(p, h * j as Real / m as Real))
+            .collect::<Vec<_>>(),
+    };
+    let (ux, uy) = (sample(pxi), sample(pyi));
+    let (vx, vy) = (osc.speed_bound(pxi), osc.speed_bound(pyi));
+    let margin = 1e-9 * (pxi.bound(h) + pyi.bound(h) + h * (vx + vy));
     for (k, &(c, s)) in angles.iter().enumerate() {
-        let mut best = peaks[k];
+        let vmax = c.abs() * vx + s.abs() * vy;
+        let mut prev_u = (c * ux[0].0 + s * uy[0].0).abs();
         let mut prev_v = c * ux[0].1 + s * uy[0].1;
-        best = best.max((c * ux[0].0 + s * uy[0].0).abs());
+        let mut best = peaks[k].max(prev_u);
         for j in 1..=m {
-            let u = c * ux[j].0 + s * uy[j].0;
+            let u = (c * ux[j].0 + s * uy[j].0).abs();
             let v = c * ux[j].1 + s * uy[j].1;
-            best = best.max(u.abs());
-            if prev_v * v < 0.0 {
+            best = best.max(u);
+            let (a, b) = (h * (j - 1) as Real / m as Real, h * j as Real / m as Real);
+            if prev_v * v < 0.0
+                && (pxi.is_series() || 0.5 * (prev_u + u + (b - a) * vmax) + margin >= best)
+            {
                 let p = Piece::combine(pxi, c, pyi, s);
-                let (a, b) = (h * (j - 1) as Real / m as Real, h * j as Real / m as Real);
                 best = best.max(osc.extremum(&p, a, b, prev_v).abs());
             }
-            prev_v = v;
+            (prev_u, prev_v) = (u, v);
         }
         peaks[k] = best;
     }
@@ -291,24 +324,28 @@ pub fn rotd(
 ) -> Result<RotD, SpectrumError> {
     check(damping, periods)?;
     let (t, ax, ay) = common_grid(x, y);
-    let mut out = RotD {
-        rotd50: Vec::with_capacity(periods.len()),
-        rotd100: Vec::with_capacity(periods.len()),
-    };
-    for &period in periods {
-        let osc = Oscillator::new(period, damping);
-        let px = pieces(&osc, &t, &ax, period);
-        let py = pieces(&osc, &t, &ay, period);
-        let mut peaks = rotated_peaks(&osc, &px, &py);
-        peaks.sort_by(Real::total_cmp);
-        out.rotd50.push(Ordinate::new(
-            period,
-            damping,
-            0.5 * (peaks[89] + peaks[90]),
-        ));
-        out.rotd100.push(Ordinate::new(period, damping, peaks[179]));
-    }
-    Ok(out)
+    use rayon::prelude::*;
+    // each period is independent: the same bits for any thread count
+    let (rotd50, rotd100) = periods
+        .par_iter()
+        .map(|&period| {
+            let osc = Oscillator::new(period, damping);
+            let collect = |a: &[Real]| {
+                let mut out = Vec::with_capacity(t.len() + 17);
+                grid::walk(&osc, &t, a, period, |p, g| out.push((*p, g.h())));
+                out
+            };
+            let (px, py) = (collect(&ax), collect(&ay));
+            let mut peaks = rotated_peaks(&osc, &px, &py);
+            peaks.sort_by(Real::total_cmp);
+            let median = 0.5 * (peaks[89] + peaks[90]);
+            (
+                Ordinate::new(period, damping, median),
+                Ordinate::new(period, damping, peaks[179]),
+            )
+        })
+        .unzip();
+    Ok(RotD { rotd50, rotd100 })
 }
 
 /// The default periods of `pounding spectrum`: 0.01 s to 10 s, 100 values evenly spaced in

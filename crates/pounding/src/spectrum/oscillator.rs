@@ -88,6 +88,11 @@ impl Piece {
         }
     }
 
+    /// `true` in the series form (`[u₀, u̇₀, a₀, s]`).
+    pub(super) fn is_series(&self) -> bool {
+        self.series
+    }
+
     /// A rigorous bound of `|u|` on `[0, h]`: `|e^{−ζωτ}(c₁ cos + c₂ sin)| ≤ √(c₁² + c₂²)`;
     /// in the series form `|A| ≤ 1` (the energy `u̇² + ω²u²` does not grow), `|B| ≤ τ`
     /// (`|B'| ≤ 1` likewise), `|G| ≤ τ²/2`, `|R| ≤ τ³/6`.
@@ -99,6 +104,14 @@ impl Piece {
             k[0].hypot(k[1]) + k[2].abs() + k[3].abs() * h
         }
     }
+}
+
+/// `e^{−ζωτ}`, `sin ω_d τ`, `cos ω_d τ` at one `τ` (see [`Oscillator::trig`]).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Trig {
+    e: Real,
+    sn: Real,
+    cs: Real,
 }
 
 /// `Σ t_k` of the Taylor series of the solution of `y'' + 2ζω y' + ω² y = 0` continued from the
@@ -159,7 +172,7 @@ impl Oscillator {
 
     /// `(u(τ), u̇(τ))` of `p`.
     pub(super) fn at(&self, p: &Piece, tau: Real) -> (Real, Real) {
-        let (w, z, wd) = (self.w, self.z, self.wd);
+        let (w, z) = (self.w, self.z);
         if p.series {
             let [u0, v0, a0, s] = p.k;
             let x = w * tau;
@@ -171,12 +184,43 @@ impl Oscillator {
             let v = -u0 * w * w * b + v0 * (a - 2.0 * z * w * b) - a0 * b - s * g;
             return (u, v);
         }
+        self.at_trig(p, tau, &self.trig(tau))
+    }
+
+    /// `e^{−ζωτ}`, `sin ω_d τ`, `cos ω_d τ` at `τ`, exactly as [`Oscillator::at`] computes them
+    /// (so a cached value gives the same bits).
+    pub(super) fn trig(&self, tau: Real) -> Trig {
+        let e = (-self.z * self.w * tau).exp();
+        let (sn, cs) = (self.wd * tau).sin_cos();
+        Trig { e, sn, cs }
+    }
+
+    /// `(u(τ), u̇(τ))` of a Nigam–Jennings piece `p` with `t = trig(τ)`: the same operations as
+    /// [`Oscillator::at`], hence the same bits.
+    pub(super) fn at_trig(&self, p: &Piece, tau: Real, t: &Trig) -> (Real, Real) {
+        let (w, z, wd) = (self.w, self.z, self.wd);
         let [c1, c2, p0, p1] = p.k;
-        let e = (-z * w * tau).exp();
-        let (sn, cs) = (wd * tau).sin_cos();
+        let Trig { e, sn, cs } = *t;
         let u = e * (c1 * cs + c2 * sn) + p0 + p1 * tau;
         let v = e * ((-z * w * c1 + wd * c2) * cs + (-z * w * c2 - wd * c1) * sn) + p1;
         (u, v)
+    }
+
+    /// `true` if intervals of length `h` are evaluated in the series form.
+    pub(super) fn is_series(&self, h: Real) -> bool {
+        self.w * h < SERIES_BELOW
+    }
+
+    /// `true` if an interval of length `h` is searched on its first and last periods only.
+    pub(super) fn is_long(&self, h: Real) -> bool {
+        h >= LONG_PERIODS * self.td()
+    }
+
+    /// An upper bound of `max |u̇|` over `τ ≥ 0` of a Nigam–Jennings piece: the transient's
+    /// velocity `e^{−ζωτ}(V₁ cos + V₂ sin)` has `√(V₁² + V₂²) = ω √(c₁² + c₂²)` (as
+    /// `(ζω)² + ω_d² = ω²`), plus `|p₁|`.
+    pub(super) fn speed_bound(&self, p: &Piece) -> Real {
+        self.w * p.k[0].hypot(p.k[1]) + p.k[3].abs()
     }
 
     /// The stretches of `p` on `[0, h]` that hold its peak: `[(p, h)]`, or for an interval of
@@ -184,7 +228,7 @@ impl Oscillator {
     /// re-based at `h − T_d` (module doc).
     pub(super) fn stretches(&self, p: &Piece, h: Real) -> Vec<(Piece, Real)> {
         let td = self.td();
-        if p.series || h < LONG_PERIODS * td {
+        if p.series || !self.is_long(h) {
             return vec![(*p, h)];
         }
         let t0 = h - td;

@@ -50,6 +50,7 @@ mod sim_outputs;
 mod sim_scenario;
 mod sim_shapes;
 mod spectrum;
+mod spectrum_fast;
 mod spectrum_limits;
 mod study;
 mod study_shapes;
