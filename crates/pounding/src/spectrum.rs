@@ -57,11 +57,12 @@
 use crate::ground_motion::{G0, Record};
 use crate::math::Real;
 use oscillator::{Oscillator, Piece};
+use recurrence::{Bounds, Lengths, Step, Tables};
 use std::f64::consts::PI;
 use thiserror::Error;
 
-mod grid;
 mod oscillator;
+mod recurrence;
 pub use oscillator::SERIES_BELOW;
 
 /// Bad spectrum input (a parameter out of range); the message names it.
@@ -173,18 +174,23 @@ fn pieces(osc: &Oscillator, times: &[Real], accel: &[Real], period: Real) -> Vec
 /// `S_d = max_t |u(t)|` of the oscillator `(period, damping)` under the piecewise-linear
 /// record `(times, accel)` (m/s², `times` strictly increasing), over continuous time and the
 /// free vibration after the record (module doc). Parameters are not checked (see [`check`]).
-/// Computed on the fast path of `spectrum/grid.rs` (cached coefficients, bisection only where
-/// it can raise the peak): the same bits as [`peak_displacement_reference`].
+/// Computed by the matrix recurrence of `spectrum/recurrence.rs` (rows per interval length,
+/// bisection only where a rigorous bound says it can raise the peak); agrees with
+/// [`peak_displacement_reference`] to rounding.
 pub fn peak_displacement(times: &[Real], accel: &[Real], period: Real, damping: Real) -> Real {
-    let osc = Oscillator::new(period, damping);
-    let mut scan = grid::Scan::new();
-    grid::walk(&osc, times, accel, period, |p, g| scan.add(&osc, p, g));
-    scan.finish(&osc)
+    peak(&Lengths::new(times), accel, period, damping)
 }
 
-/// [`peak_displacement`] by the plain search: every coefficient recomputed on every interval
-/// and every bracketed zero of `u̇` bisected. Kept for tests that the fast path gives the same
-/// bits.
+/// [`peak_displacement`] on the numbered intervals of a record.
+fn peak(lengths: &Lengths, accel: &[Real], period: Real, damping: Real) -> Real {
+    let osc = Oscillator::new(period, damping);
+    let mut tables = Tables::new(osc, lengths, period);
+    recurrence::Scan::peak(&mut tables, accel)
+}
+
+/// [`peak_displacement`] by the plain search: the kernel's piece form (Nigam–Jennings'
+/// transient plus particular solution) on every interval, every bracketed zero of `u̇`
+/// bisected. An independent formulation, kept for tests of the fast path.
 #[doc(hidden)]
 pub fn peak_displacement_reference(
     times: &[Real],
@@ -207,11 +213,12 @@ pub fn spectrum(
 ) -> Result<Vec<Ordinate>, SpectrumError> {
     check(damping, periods)?;
     use rayon::prelude::*;
+    let lengths = Lengths::new(record.times());
     // each period is independent: the same bits for any thread count
     Ok(periods
         .par_iter()
         .map(|&t| {
-            let sd = peak_displacement(record.times(), record.values(), t, damping);
+            let sd = peak(&lengths, record.values(), t, damping);
             Ordinate::new(t, damping, sd)
         })
         .collect())
@@ -237,79 +244,94 @@ fn common_grid(x: &Record, y: &Record) -> (Vec<Real>, Vec<Real>, Vec<Real>) {
 }
 
 /// The 180 peaks `max_t |u_x cos α + u_y sin α|`, `α = 0°, 1°, …, 179°`, for one oscillator
-/// (the pieces are visited in decreasing order of a rigorous bound of `|(u_x, u_y)|`, and the
-/// rest skipped once the bound falls below every angle's peak: the result is the same).
-fn rotated_peaks(osc: &Oscillator, px: &[(Piece, Real)], py: &[(Piece, Real)]) -> Vec<Real> {
+/// from the walks `sx`, `sy` of the two components. The intervals are visited in decreasing
+/// order of a rigorous bound of `|(u_x, u_y)|` (plus rounding), and the rest skipped once the
+/// bound falls below every angle's peak: the result is the same.
+fn rotated_peaks(osc: &Oscillator, tables: &mut Tables, sx: &[Step], sy: &[Step]) -> Vec<Real> {
     let angles: Vec<(Real, Real)> = (0..180)
         .map(|d| (d as Real).to_radians().sin_cos())
         .map(|(s, c)| (c, s))
         .collect();
     let mut peaks: Vec<Real> = vec![0.0; 180];
-    // |u_α| ≤ |(u_x, u_y)| ≤ the bound of each piece (Piece::bound);
-    // pieces in decreasing bound, stopping once a bound is below every angle's peak so far
-    let mut order: Vec<(Real, usize)> = px
-        .iter()
-        .zip(py)
-        .enumerate()
-        .map(|(i, ((a, h), (b, _)))| (a.bound(*h).hypot(b.bound(*h)), i))
+    let mut order: Vec<(Real, usize)> = (0..sx.len())
+        .map(|i| {
+            let t = tables.get(i);
+            let (bx, by) = (Bounds::new(osc, &sx[i], t), Bounds::new(osc, &sy[i], t));
+            ((bx.u + bx.delta).hypot(by.u + by.delta), i)
+        })
         .collect();
     order.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
-    let mut grids = grid::Grids::new(*osc);
     for (b, i) in order {
         if b < peaks.iter().copied().fold(Real::INFINITY, Real::min) {
             break;
         }
-        let ((pxi, h), (pyi, _)) = (&px[i], &py[i]);
-        let g = grids.get(*h);
-        let sy = osc.stretches(pyi, *h);
-        for (k, (pxs, hs)) in osc.stretches(pxi, *h).iter().enumerate() {
-            // a plain interval is its own single stretch, on the cached grid
-            let g = (k == 0 && g.is_plain()).then_some(g);
-            stretch_peaks(osc, &angles, (pxs, &sy[k].0), *hs, g, &mut peaks);
+        let t = tables.get(i);
+        let h = t.h();
+        let (px, py) = (sx[i].piece(osc, h), sy[i].piece(osc, h));
+        if t.is_long() {
+            // the kernel's first and last periods, every bracketed zero of u̇ bisected
+            let sy_ = osc.stretches(&py, h);
+            for (k, (pxs, hs)) in osc.stretches(&px, h).iter().enumerate() {
+                let m = osc.subdivisions(*hs);
+                let taus: Vec<Real> = (0..=m).map(|j| hs * j as Real / m as Real).collect();
+                let ux: Vec<_> = taus.iter().map(|&t| osc.at(pxs, t)).collect();
+                let uy: Vec<_> = taus.iter().map(|&t| osc.at(&sy_[k].0, t)).collect();
+                let pieces = (pxs, &sy_[k].0);
+                angle_peaks(osc, &angles, &taus, (&ux, &uy), pieces, None, &mut peaks);
+            }
+            continue;
         }
+        let samples = |s: &Step| {
+            let mut out = vec![(s.u0, s.v0)];
+            out.extend(t.rows().iter().map(|r| r.apply(s)));
+            out
+        };
+        let (ux, uy) = (samples(&sx[i]), samples(&sy[i]));
+        let bounds = (Bounds::new(osc, &sx[i], t), Bounds::new(osc, &sy[i], t));
+        let (bx, by) = (&bounds.0, &bounds.1);
+        angle_peaks(
+            osc,
+            &angles,
+            t.taus(),
+            (&ux, &uy),
+            (&px, &py),
+            Some((bx, by)),
+            &mut peaks,
+        );
     }
     peaks
 }
 
-/// Raises `peaks[k]` to `max |c u_x + s u_y|` over `[0, h]` of the pieces `(x, y)`, for every
-/// angle `(c, s)` of `angles`; `g`, if given, is the cached grid of `h`. A bisection is skipped
-/// where the bound of `spectrum/grid.rs` (with `V = |c| V_x + |s| V_y`, the margin `δ` of both
-/// pieces) is below the angle's peak so far: it could not raise it.
-fn stretch_peaks(
+/// Raises `peaks[k]` to `max |c u_x + s u_y|` over one stretch for every angle `(c, s)` of
+/// `angles`, from the samples `(u, u̇)` of both components at `taus` (`τ_0` included). A
+/// bracketed zero of the rotated `u̇` is bisected on the combined piece unless the bound of
+/// `spectrum/recurrence.rs` (both components' [`Bounds`] weighted by `|c|`, `|s|`) is below
+/// the angle's peak so far; without bounds every one is bisected.
+fn angle_peaks(
     osc: &Oscillator,
     angles: &[(Real, Real)],
-    (pxi, pyi): (&Piece, &Piece),
-    h: Real,
-    g: Option<&grid::Grid>,
+    taus: &[Real],
+    (ux, uy): (&[(Real, Real)], &[(Real, Real)]),
+    (px, py): (&Piece, &Piece),
+    bounds: Option<(&Bounds, &Bounds)>,
     peaks: &mut [Real],
 ) {
-    let m = osc.subdivisions(h);
-    let sample = |p: &Piece| match g {
-        Some(g) => g.samples(osc, p),
-        None => (0..=m)
-            .map(|j| osc.at(p, h * j as Real / m as Real))
-            .collect::<Vec<_>>(),
-    };
-    let (ux, uy) = (sample(pxi), sample(pyi));
-    let (vx, vy) = (osc.speed_bound(pxi), osc.speed_bound(pyi));
-    let margin = 1e-9 * (pxi.bound(h) + pyi.bound(h) + h * (vx + vy));
     for (k, &(c, s)) in angles.iter().enumerate() {
-        let vmax = c.abs() * vx + s.abs() * vy;
-        let mut prev_u = (c * ux[0].0 + s * uy[0].0).abs();
-        let mut prev_v = c * ux[0].1 + s * uy[0].1;
-        let mut best = peaks[k].max(prev_u);
-        for j in 1..=m {
-            let u = (c * ux[j].0 + s * uy[j].0).abs();
-            let v = c * ux[j].1 + s * uy[j].1;
-            best = best.max(u);
-            let (a, b) = (h * (j - 1) as Real / m as Real, h * j as Real / m as Real);
-            if prev_v * v < 0.0
-                && (pxi.is_series() || 0.5 * (prev_u + u + (b - a) * vmax) + margin >= best)
-            {
-                let p = Piece::combine(pxi, c, pyi, s);
-                best = best.max(osc.extremum(&p, a, b, prev_v).abs());
+        let rot = bounds.map(|(bx, by)| bx.rotated(c, by, s));
+        let at = |j: usize| (c * ux[j].0 + s * uy[j].0, c * ux[j].1 + s * uy[j].1);
+        let (u, mut va) = at(0);
+        let mut ua = u.abs();
+        let mut best = peaks[k].max(ua);
+        for j in 1..taus.len() {
+            let (u, vb) = at(j);
+            let ub = u.abs();
+            best = best.max(ub);
+            let (a, b) = (taus[j - 1], taus[j]);
+            if va * vb < 0.0 && rot.is_none_or(|r| r.peak(ua, ub, b - a) >= best) {
+                let p = Piece::combine(px, c, py, s);
+                best = best.max(osc.extremum(&p, a, b, va).abs());
             }
-            (prev_u, prev_v) = (u, v);
+            (ua, va) = (ub, vb);
         }
         peaks[k] = best;
     }
@@ -324,19 +346,24 @@ pub fn rotd(
 ) -> Result<RotD, SpectrumError> {
     check(damping, periods)?;
     let (t, ax, ay) = common_grid(x, y);
+    let lengths = Lengths::new(&t);
     use rayon::prelude::*;
     // each period is independent: the same bits for any thread count
     let (rotd50, rotd100) = periods
         .par_iter()
         .map(|&period| {
             let osc = Oscillator::new(period, damping);
-            let collect = |a: &[Real]| {
-                let mut out = Vec::with_capacity(t.len() + 17);
-                grid::walk(&osc, &t, a, period, |p, g| out.push((*p, g.h())));
+            let mut tables = Tables::new(osc, &lengths, period);
+            let mut walk = |a: &[Real]| {
+                let mut out = Vec::with_capacity(tables.len());
+                recurrence::walk(&mut tables, a, |s, t| {
+                    out.push(*s);
+                    t.end(&osc, s)
+                });
                 out
             };
-            let (px, py) = (collect(&ax), collect(&ay));
-            let mut peaks = rotated_peaks(&osc, &px, &py);
+            let (sx, sy) = (walk(&ax), walk(&ay));
+            let mut peaks = rotated_peaks(&osc, &mut tables, &sx, &sy);
             peaks.sort_by(Real::total_cmp);
             let median = 0.5 * (peaks[89] + peaks[90]);
             (

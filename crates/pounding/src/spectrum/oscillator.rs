@@ -65,6 +65,8 @@ pub(super) struct Oscillator {
     w: Real,
     z: Real,
     wd: Real,
+    /// `[1/ω², 1/ω_d]` (for bounds only).
+    inv: [Real; 2],
 }
 
 /// The closed-form motion on one interval `[0, h]`, linear in its four numbers, so responses
@@ -87,31 +89,6 @@ impl Piece {
             series: a.series,
         }
     }
-
-    /// `true` in the series form (`[u₀, u̇₀, a₀, s]`).
-    pub(super) fn is_series(&self) -> bool {
-        self.series
-    }
-
-    /// A rigorous bound of `|u|` on `[0, h]`: `|e^{−ζωτ}(c₁ cos + c₂ sin)| ≤ √(c₁² + c₂²)`;
-    /// in the series form `|A| ≤ 1` (the energy `u̇² + ω²u²` does not grow), `|B| ≤ τ`
-    /// (`|B'| ≤ 1` likewise), `|G| ≤ τ²/2`, `|R| ≤ τ³/6`.
-    pub(super) fn bound(&self, h: Real) -> Real {
-        let k = &self.k;
-        if self.series {
-            k[0].abs() + k[1].abs() * h + k[2].abs() * h * h / 2.0 + k[3].abs() * h * h * h / 6.0
-        } else {
-            k[0].hypot(k[1]) + k[2].abs() + k[3].abs() * h
-        }
-    }
-}
-
-/// `e^{−ζωτ}`, `sin ω_d τ`, `cos ω_d τ` at one `τ` (see [`Oscillator::trig`]).
-#[derive(Debug, Clone, Copy)]
-pub(super) struct Trig {
-    e: Real,
-    sn: Real,
-    cs: Real,
 }
 
 /// `Σ t_k` of the Taylor series of the solution of `y'' + 2ζω y' + ω² y = 0` continued from the
@@ -138,10 +115,12 @@ fn series(x: Real, z: Real, j: usize, first: Real) -> Real {
 impl Oscillator {
     pub(super) fn new(period: Real, damping: Real) -> Self {
         let w = 2.0 * PI / period;
+        let wd = w * (1.0 - damping * damping).sqrt();
         Oscillator {
             w,
             z: damping,
-            wd: w * (1.0 - damping * damping).sqrt(),
+            wd,
+            inv: [1.0 / (w * w), 1.0 / wd],
         }
     }
 
@@ -184,26 +163,51 @@ impl Oscillator {
             let v = -u0 * w * w * b + v0 * (a - 2.0 * z * w * b) - a0 * b - s * g;
             return (u, v);
         }
-        self.at_trig(p, tau, &self.trig(tau))
-    }
-
-    /// `e^{−ζωτ}`, `sin ω_d τ`, `cos ω_d τ` at `τ`, exactly as [`Oscillator::at`] computes them
-    /// (so a cached value gives the same bits).
-    pub(super) fn trig(&self, tau: Real) -> Trig {
-        let e = (-self.z * self.w * tau).exp();
-        let (sn, cs) = (self.wd * tau).sin_cos();
-        Trig { e, sn, cs }
-    }
-
-    /// `(u(τ), u̇(τ))` of a Nigam–Jennings piece `p` with `t = trig(τ)`: the same operations as
-    /// [`Oscillator::at`], hence the same bits.
-    pub(super) fn at_trig(&self, p: &Piece, tau: Real, t: &Trig) -> (Real, Real) {
         let (w, z, wd) = (self.w, self.z, self.wd);
         let [c1, c2, p0, p1] = p.k;
-        let Trig { e, sn, cs } = *t;
+        let e = (-z * w * tau).exp();
+        let (sn, cs) = (wd * tau).sin_cos();
         let u = e * (c1 * cs + c2 * sn) + p0 + p1 * tau;
         let v = e * ((-z * w * c1 + wd * c2) * cs + (-z * w * c2 - wd * c1) * sn) + p1;
         (u, v)
+    }
+
+    /// `ω` \[rad/s\].
+    pub(super) fn omega(&self) -> Real {
+        self.w
+    }
+
+    /// `ζ`.
+    pub(super) fn zeta(&self) -> Real {
+        self.z
+    }
+
+    /// `[1/ω², 1/ω_d]`.
+    pub(super) fn reciprocals(&self) -> [Real; 2] {
+        self.inv
+    }
+
+    /// The unit responses `[A, B, G, R]` at `τ` (module doc): power series while `ωτ < 1`
+    /// (terms fall by `≤ (2ωτ + (ωτ)²)/(k + 1) < 3/(k + 1)`, no cancellation), else
+    /// `A = e^{−ζωτ}(cos ω_dτ + (ζω/ω_d) sin ω_dτ)`, `B = e^{−ζωτ} sin ω_dτ / ω_d`,
+    /// `G = (1 − A)/ω²`, `R = (τ − B − 2ζωG)/ω²` (as `∫A = B + 2ζωG` from `B' = A − 2ζωB`),
+    /// each within a few ulps of its scale (`1/ω`, `1/ω²`, `τ/ω²`).
+    pub(super) fn unit_responses(&self, tau: Real) -> [Real; 4] {
+        let (w, z, wd) = (self.w, self.z, self.wd);
+        let x = w * tau;
+        if x < 1.0 {
+            let b = series(x, z, 1, tau);
+            let g = series(x, z, 2, tau * tau / 2.0);
+            let r = series(x, z, 3, tau * tau * tau / 6.0);
+            return [1.0 - w * w * g, b, g, r];
+        }
+        let e = (-z * w * tau).exp();
+        let (sn, cs) = (wd * tau).sin_cos();
+        let a = e * (cs + z * w / wd * sn);
+        let b = e * sn / wd;
+        let g = (1.0 - a) / (w * w);
+        let r = (tau - b - 2.0 * z * w * g) / (w * w);
+        [a, b, g, r]
     }
 
     /// `true` if intervals of length `h` are evaluated in the series form.
@@ -216,11 +220,17 @@ impl Oscillator {
         h >= LONG_PERIODS * self.td()
     }
 
-    /// An upper bound of `max |u̇|` over `τ ≥ 0` of a Nigam–Jennings piece: the transient's
-    /// velocity `e^{−ζωτ}(V₁ cos + V₂ sin)` has `√(V₁² + V₂²) = ω √(c₁² + c₂²)` (as
-    /// `(ζω)² + ω_d² = ω²`), plus `|p₁|`.
-    pub(super) fn speed_bound(&self, p: &Piece) -> Real {
-        self.w * p.k[0].hypot(p.k[1]) + p.k[3].abs()
+    /// `(V, W)` with `V ≥ max |u̇|` and `W ≥ max |ü|` over `τ ≥ 0` of a Nigam–Jennings piece
+    /// (`None` in the series form): the transient `e^{−ζωτ}(c₁ cos ω_dτ + c₂ sin ω_dτ)` has
+    /// velocity and acceleration of the same form with amplitudes `ω r` and `ω² r`,
+    /// `r = √(c₁² + c₂²)` (as `(ζω)² + ω_d² = ω²`), and the particular part `p₀ + p₁τ` adds
+    /// `p₁` to the velocity and nothing to the acceleration.
+    pub(super) fn transient_bounds(&self, p: &Piece) -> Option<(Real, Real)> {
+        if p.series {
+            return None;
+        }
+        let r = p.k[0].hypot(p.k[1]);
+        Some((self.w * r + p.k[3].abs(), self.w * self.w * r))
     }
 
     /// The stretches of `p` on `[0, h]` that hold its peak: `[(p, h)]`, or for an interval of

@@ -1,8 +1,10 @@
-//! The fast path of `pounding::spectrum::peak_displacement` (cached coefficients per interval
-//! length, bisection only where a rigorous bound says it can raise the peak) against the plain
-//! search (`peak_displacement_reference`: every coefficient recomputed, every bracketed zero of
-//! `u̇` bisected): the same bits on random records, uniform and irregular, over periods that
-//! reach the series form (`ωh < 10⁻³`) and the long-interval form (`h ≥ 64 T_d`).
+//! The fast path of `pounding::spectrum::peak_displacement` (the Nigam–Jennings recurrence as a
+//! matrix with rows per interval length, bisection only where a rigorous bound says it can raise
+//! the peak) against the plain search (`peak_displacement_reference`: the piece form, transient
+//! plus particular solution, on every interval, every bracketed zero of `u̇` bisected): two
+//! formulations of the same exact solution agree to rounding on random records, uniform and
+//! irregular, over periods that reach the series form (`ωh < 10⁻³`) and the long-interval form
+//! (`h ≥ 64 T_d`).
 
 use pounding::spectrum::{peak_displacement, peak_displacement_reference};
 use rand::{Rng, SeedableRng};
@@ -31,9 +33,9 @@ fn random_record(rng: &mut ChaCha8Rng) -> (Vec<f64>, Vec<f64>) {
 }
 
 #[test]
-fn spectrum_fast_path_equals_the_plain_search_bit_for_bit() {
+fn spectrum_fast_path_agrees_with_the_plain_search() {
     let mut rng = ChaCha8Rng::seed_from_u64(13);
-    let mut cases = 0;
+    let (mut cases, mut worst) = (0, 0.0f64);
     for _ in 0..400 {
         let (t, a) = random_record(&mut rng);
         let period = 10f64.powf(rng.random_range(-4.5..2.5));
@@ -44,9 +46,12 @@ fn spectrum_fast_path_equals_the_plain_search_bit_for_bit() {
         };
         let fast = peak_displacement(&t, &a, period, damping);
         let plain = peak_displacement_reference(&t, &a, period, damping);
-        assert_eq!(
-            fast.to_bits(),
-            plain.to_bits(),
+        // the piece form rounds up to ~ε (ωh)⁻² per step relative (its doc); both are the
+        // exact solution to that
+        let rel = (fast - plain).abs() / plain.abs().max(1e-300);
+        worst = worst.max(rel);
+        assert!(
+            rel < 1e-8,
             "T = {period}, ζ = {damping}, n = {}: fast {fast} vs plain {plain}",
             t.len()
         );
@@ -54,10 +59,11 @@ fn spectrum_fast_path_equals_the_plain_search_bit_for_bit() {
         cases += 1;
     }
     assert_eq!(cases, 400);
+    eprintln!("largest relative difference: {worst:e}");
 }
 
 #[test]
-fn spectrum_fast_path_equals_the_plain_search_on_the_default_periods() {
+fn spectrum_fast_path_agrees_with_the_plain_search_on_the_default_periods() {
     // a 20 s uniform record at dt = 0.01 s, every default period and three dampings
     let mut rng = ChaCha8Rng::seed_from_u64(7);
     let t: Vec<f64> = (0..2001).map(|i| i as f64 * 0.01).collect();
@@ -73,10 +79,9 @@ fn spectrum_fast_path_equals_the_plain_search_on_the_default_periods() {
         for period in pounding::spectrum::default_periods() {
             let fast = peak_displacement(&t, &a, period, damping);
             let plain = peak_displacement_reference(&t, &a, period, damping);
-            assert_eq!(
-                fast.to_bits(),
-                plain.to_bits(),
-                "T = {period}, ζ = {damping}"
+            assert!(
+                (fast - plain).abs() <= 1e-12 * plain,
+                "T = {period}, ζ = {damping}: fast {fast} vs plain {plain}"
             );
         }
     }
