@@ -131,23 +131,20 @@ fn the_scenarios_record_dt_reads_the_record_flag_file() {
         "[ground_motion]\nrecord_y = \"own.txt\"\nrecord_x = \"none\"\nrecord_dt = 0.02\n",
     );
     let out = d.join("o");
-    let (code, err) = run(&format!(
-        "simulate {} --record {} --out {}",
-        s(&sc),
-        s(&other),
-        s(&out)
-    ));
-    assert_eq!(code, Some(0), "{err}");
-    assert!(err.contains("dt_s 0.02, npts 40"), "{err}");
-    // --record-dt replaces it
-    let (code, err) = run(&format!(
-        "simulate {} --record {} --record-dt 0.01 --out {}",
-        s(&sc),
-        s(&other),
-        s(&out)
-    ));
-    assert_eq!(code, Some(0), "{err}");
-    assert!(err.contains("dt_s 0.01, npts 40"), "{err}");
+    // the scenario's record_dt, then --record-dt replacing it
+    for (flag, want) in [
+        ("", "dt_s 0.02, npts 40"),
+        ("--record-dt 0.01", "dt_s 0.01, npts 40"),
+    ] {
+        let (code, err) = run(&format!(
+            "simulate {} --record {} {flag} --out {}",
+            s(&sc),
+            s(&other),
+            s(&out)
+        ));
+        assert_eq!(code, Some(0), "{err}");
+        assert!(err.contains(want), "{err}");
+    }
 }
 
 #[test]
