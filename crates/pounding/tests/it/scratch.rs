@@ -86,3 +86,28 @@ impl AsRef<std::ffi::OsStr> for InScratch {
         self.path.as_os_str()
     }
 }
+
+#[test]
+fn a_scratch_directory_is_removed_when_its_test_fails() {
+    if std::env::var_os("POUNDING_KEEP_SCRATCH").is_some() {
+        return; // kept on purpose
+    }
+    let mut path = None;
+    let failed = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        let d = scratch_dir("scratch", "unwind");
+        std::fs::create_dir_all(d.join("out")).unwrap();
+        std::fs::write(d.join("out/f.txt"), "x").unwrap();
+        path = Some(d.to_path_buf());
+        panic!("a failing test (expected)");
+    }));
+    assert!(failed.is_err());
+    let p = path.unwrap();
+    assert!(!p.exists(), "{} left behind", p.display());
+    // and a helper's path inside one keeps it alive until dropped
+    let inside = scratch_dir("scratch", "into").into_join("out");
+    std::fs::write(&*inside, "x").unwrap();
+    let parent = inside.parent().unwrap().to_path_buf();
+    assert!(parent.is_dir());
+    drop(inside);
+    assert!(!parent.exists(), "{} left behind", parent.display());
+}
