@@ -35,6 +35,7 @@ export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$PWD/target}"
 "$venv/bin/pip" install -q --no-build-isolation ./crates/pounding-py
 t1=$(date +%s)
 export POUNDING_BIN="${POUNDING_BIN:-$CARGO_TARGET_DIR/debug/pounding}"
-"$venv/bin/python" -m pytest -q -p no:cacheprovider crates/pounding-py/tests
+# --basetemp: pytest's tmp_path directories go with the venv (removed on exit), not $TMPDIR.
+"$venv/bin/python" -m pytest -q -p no:cacheprovider --basetemp "$venv/pytest" crates/pounding-py/tests
 t2=$(date +%s)
 echo "Python part: install $((t1 - t0)) s, tests $((t2 - t1)) s"

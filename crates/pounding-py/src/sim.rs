@@ -7,13 +7,15 @@ use numpy::PyArray2;
 use pounding::ground_motion::{AccelUnits, ReadOptions, Record};
 use pounding::output::float_token;
 use pounding::shard::Shard;
-use pounding::sim::batch::{BatchRecord, run_batch, run_bridge_problem, run_problem};
+use pounding::sim::batch::{
+    BatchProblem, BatchRecord, BatchRow, run_batch, run_bridge_problem, run_problem,
+};
 use pounding::sim::bridge::BridgeSolution;
 use pounding::sim::output as so;
 use pounding::sim::scenario::{
     BridgeSetup, DEFAULT_SCENARIO_TOML, ParamKey, Scenario, Section, SimSetup,
 };
-use pounding::sim::{SimSolution, SimStatus, simulate};
+use pounding::sim::{SimSettings, SimSolution, SimStatus, simulate};
 use pyo3::prelude::*;
 use std::path::{Path, PathBuf};
 
@@ -312,37 +314,33 @@ fn batch_run(
     if sc.is_bridge() {
         let setup = sc.build_bridge().map_err(value_error)?;
         let n = setup.problem.model.segments.len();
-        let rows = crate::interruptible(py, move || {
-            pool.install(|| {
-                run_batch(
-                    &setup.problem,
-                    &setup.settings,
-                    &list,
-                    &scales,
-                    Shard::ALL,
-                    &|_| {},
-                )
-            })
-        })?
-        .map_err(value_error)?;
+        let rows = batch_rows(py, pool, setup.problem, setup.settings, list, scales)?;
         Ok(so::bridge_batch_csv(n, &rows))
     } else {
         let setup = sc.build().map_err(value_error)?;
-        let rows = crate::interruptible(py, move || {
-            pool.install(|| {
-                run_batch(
-                    &setup.problem,
-                    &setup.settings,
-                    &list,
-                    &scales,
-                    Shard::ALL,
-                    &|_| {},
-                )
-            })
-        })?
-        .map_err(value_error)?;
+        let rows = batch_rows(py, pool, setup.problem, setup.settings, list, scales)?;
         Ok(so::batch_csv(&rows))
     }
+}
+
+/// Runs every record of `list` at every scale on `problem` (two decks or a bridge) in `pool`, off
+/// the Python thread (interruptible): the rows in input order.
+fn batch_rows<P>(
+    py: Python<'_>,
+    pool: rayon::ThreadPool,
+    problem: P,
+    settings: SimSettings,
+    list: Vec<BatchRecord>,
+    scales: Vec<f64>,
+) -> PyResult<Vec<BatchRow<P::Outcome>>>
+where
+    P: BatchProblem + Send + 'static,
+    P::Outcome: 'static,
+{
+    crate::interruptible(py, move || {
+        pool.install(|| run_batch(&problem, &settings, &list, &scales, Shard::ALL, &|_| {}))
+    })?
+    .map_err(value_error)
 }
 
 /// The built-in default `simulate` scenario (commented TOML, `pounding simulate --print-default`).

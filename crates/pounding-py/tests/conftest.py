@@ -86,6 +86,18 @@ def root() -> Path:
     return ROOT
 
 
+@pytest.fixture
+def dask_scratch(tmp_path):
+    """Dask's workers make ``dask-scratch-space`` under the system's temporary directory and leave
+    it there: this points Dask's ``temporary-directory`` at the test's own ``tmp_path`` instead.
+    Skips without ``dask.distributed``."""
+    pytest.importorskip("dask.distributed")
+    import dask
+
+    with dask.config.set({"temporary-directory": str(tmp_path)}):
+        yield
+
+
 @pytest.fixture(scope="session")
 def cli():
     """Runs the ``pounding`` binary (``POUNDING_BIN``, else built by ``cargo build --release

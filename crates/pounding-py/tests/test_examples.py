@@ -14,7 +14,7 @@ def _load(root, name):
     return mod
 
 
-def test_ida_dask_equals_local_batch(root, tmp_path, capsys):
+def test_ida_dask_equals_local_batch(root, tmp_path, capsys, dask_scratch):
     pytest.importorskip("dask.distributed")
     pytest.importorskip("pandas")
     ida = _load(root, "ida_dask")

@@ -133,7 +133,7 @@ def test_result_pickles_and_deepcopies_equal():
     assert other != r  # the comparison can fail
 
 
-def test_simulate_as_a_dask_task_equals_the_local_call():
+def test_simulate_as_a_dask_task_equals_the_local_call(dask_scratch):
     distributed = pytest.importorskip("dask.distributed")
     local = pounding.simulate(None, duration=2.0)
     with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False,

@@ -4,11 +4,8 @@
 use crate::pounding;
 use std::path::{Path, PathBuf};
 
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("pounding-batch-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+fn tmp(name: &str) -> crate::Scratch {
+    crate::scratch_dir("batch", name)
 }
 
 /// Three short synthetic records (CSV, g) in `dir/recs` and a scenario with a coarse step.

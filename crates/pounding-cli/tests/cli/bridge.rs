@@ -46,7 +46,7 @@ dt = 1e-3
 duration = 3.0
 "#;
 
-fn simulate(name: &str, text: &str) -> (Option<i32>, String, std::path::PathBuf) {
+fn simulate(name: &str, text: &str) -> (Option<i32>, String, crate::InScratch) {
     let d = scratch_dir("bridge", name);
     let f = d.join("bridge.toml");
     std::fs::write(&f, text).unwrap();
@@ -57,7 +57,7 @@ fn simulate(name: &str, text: &str) -> (Option<i32>, String, std::path::PathBuf)
         "--out",
         out.to_str().unwrap(),
     ]);
-    (code, err, out)
+    (code, err, d.into_join("out"))
 }
 
 #[test]

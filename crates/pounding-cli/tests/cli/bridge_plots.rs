@@ -107,7 +107,6 @@ fn bridge_run_writes_figures_and_reruns_leave_no_stale_files() {
             "{name} left by the bridge run: {after:?}"
         );
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// One segment (no joint) with and without an abutment: every figure is still written (the joint
@@ -137,5 +136,4 @@ fn single_segment_bridge_writes_every_figure() {
                 .unwrap();
         assert_eq!(s["joints"].as_array().map(Vec::len), Some(0), "{name}: {s}");
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -4,11 +4,8 @@
 use crate::pounding;
 use std::path::{Path, PathBuf};
 
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("pounding-cmp-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+fn tmp(name: &str) -> crate::Scratch {
+    crate::scratch_dir("cmp", name)
 }
 
 fn example() -> PathBuf {
@@ -60,7 +57,6 @@ fn opensees_1d_example_matches_opensees() {
             .unwrap()
             .ends_with("contact_force_xminus_N")
     );
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
@@ -81,7 +77,6 @@ fn rigid_default_summary_has_null_contact_force() {
     assert!(s["peak_contact_force_n"].is_null());
     assert_eq!(s["peak_penetration_m"], s["max_penetration_m"]);
     assert!(s.get("contact_law").is_none());
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 fn fails(name: &str, scenario: &str, needles: &[&str]) {
@@ -103,7 +98,6 @@ fn fails(name: &str, scenario: &str, needles: &[&str]) {
         assert!(err.contains(n), "{name}: error lacks {n:?}: {err}");
     }
     assert!(!out.exists(), "{name}: wrote output on bad input");
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
@@ -183,7 +177,10 @@ fn bad_contact_law_parameters_name_the_key() {
 
 /// Runs `pounding simulate` on `scenario` (written to a scratch `s.toml`): the scratch directory,
 /// the process output and `summary.json` (when written).
-fn simulate_in(name: &str, scenario: &str) -> (PathBuf, std::process::Output, serde_json::Value) {
+fn simulate_in(
+    name: &str,
+    scenario: &str,
+) -> (crate::Scratch, std::process::Output, serde_json::Value) {
     let dir = tmp(name);
     let out = dir.join("out");
     std::fs::write(dir.join("s.toml"), scenario).unwrap();
@@ -202,7 +199,7 @@ fn simulate_in(name: &str, scenario: &str) -> (PathBuf, std::process::Output, se
 
 #[test]
 fn coarse_dt_warns_on_stderr() {
-    let (dir, o, s) = simulate_in(
+    let (_dir, o, s) = simulate_in(
         "coarse",
         "[contact]\nlaw = \"kelvin\"\nk = 1e12\n[time]\ndt = 2e-3\nduration = 1.0\n",
     );
@@ -211,7 +208,6 @@ fn coarse_dt_warns_on_stderr() {
     assert!(err.contains("too coarse for the contact law"), "{err}");
     assert_eq!(s["time_step"]["adequate"], false);
     assert_eq!(s["warnings"][0]["kind"], "time_step_coarse");
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// `pounding compare` on the OpenSees example (rigid vs bilinear vs kelvin): table, CSV, timing,
@@ -279,14 +275,13 @@ fn compare_smoke() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("foo"));
     assert!(!dir.join("c").exists());
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// `law = "linear"` (added through the contact-law registry) runs through `pounding simulate`
 /// and is reported with its stiffness; an unknown law lists it.
 #[test]
 fn simulate_with_the_linear_law() {
-    let (dir, o, s) = simulate_in(
+    let (_dir, o, s) = simulate_in(
         "linear",
         "[time]\nduration = 3.0\n[contact]\nlaw = \"linear\"\nk = 1e9\n",
     );
@@ -298,7 +293,6 @@ fn simulate_with_the_linear_law() {
         "linear: impacts {}, peak force {}, peak penetration {}",
         s["impacts"], s["peak_contact_force_n"], s["peak_penetration_m"]
     );
-    std::fs::remove_dir_all(&dir).unwrap();
     fails(
         "law-list",
         "[contact]\nlaw = \"spring\"\n",

@@ -2,10 +2,12 @@
 //! files written, one runs.csv row per run, fractions and counts in fragility.json/csv equal to
 //! runs.csv, the same bytes for 1 and 2 threads, bad input exits 2 and writes nothing.
 
-use crate::{run_capture, scratch_dir};
+use crate::{run_capture, scratch_with};
 use std::path::Path;
 
-const SCENARIO: &str = r#"[bridge]
+/// The tiny study: two segments, three Sa(T1) levels, two limit states (also the base of the
+/// trial findings' study in `fragility_trial.rs`).
+pub(crate) const SCENARIO: &str = r#"[bridge]
 damping = "dashpots"
 gap = 0.02
 seat_length = 0.1
@@ -57,12 +59,28 @@ x = "builtin:ELC270"
 azimuth = 270
 "#;
 
-fn study(name: &str, scenario: &str) -> std::path::PathBuf {
-    let d = scratch_dir("fragility", name);
-    std::fs::write(d.join("bridge.toml"), scenario).unwrap();
-    std::fs::write(d.join("set.toml"), SET).unwrap();
-    d
+/// A fresh scratch directory `pounding-{prefix}-{name}-…` holding `bridge.toml` (`scenario`) and
+/// `set.toml` (`set`).
+pub(crate) fn study_in(prefix: &str, name: &str, scenario: &str, set: &str) -> crate::Scratch {
+    scratch_with(
+        prefix,
+        name,
+        &[("bridge.toml", scenario), ("set.toml", set)],
+    )
 }
+
+fn study(name: &str, scenario: &str) -> crate::Scratch {
+    study_in("fragility", name, scenario, SET)
+}
+
+/// The files whose bytes must not depend on the thread count (`timing.json` holds wall times).
+const OUTPUTS: [&str; 5] = [
+    "runs.csv",
+    "fragility.csv",
+    "fragility.json",
+    "fragility.png",
+    "report.html",
+];
 
 fn run(d: &Path, out: &str, threads: &str) -> (Option<i32>, String, String) {
     run_capture(&[
@@ -84,14 +102,7 @@ fn fragility_end_to_end_counts_agree_and_bytes_do_not_depend_on_threads() {
         stdout.contains("period: T1 = 1.2 s") && stdout.contains("segment 1"),
         "{stdout}"
     );
-    for f in [
-        "runs.csv",
-        "fragility.csv",
-        "fragility.json",
-        "fragility.png",
-        "report.html",
-        "timing.json",
-    ] {
+    for f in OUTPUTS.into_iter().chain(["timing.json"]) {
         assert!(d.join("one").join(f).is_file(), "{f} missing");
     }
     let runs = std::fs::read_to_string(d.join("one/runs.csv")).unwrap();
@@ -149,13 +160,7 @@ fn fragility_end_to_end_counts_agree_and_bytes_do_not_depend_on_threads() {
     }
     let (code, _, err) = run(&d, "two", "2");
     assert_eq!(code, Some(0), "{err}");
-    for f in [
-        "runs.csv",
-        "fragility.csv",
-        "fragility.json",
-        "fragility.png",
-        "report.html",
-    ] {
+    for f in OUTPUTS {
         let a = std::fs::read(d.join("one").join(f)).unwrap();
         let b = std::fs::read(d.join("two").join(f)).unwrap();
         assert!(a == b, "{f} differs between 1 and 2 threads");
@@ -172,36 +177,31 @@ fn refused(name: &str, scenario: &str, needle: &str) {
 
 #[test]
 fn fragility_bad_input_exits_2_and_writes_nothing() {
-    refused(
-        "level",
-        &SCENARIO.replace("[0.2, 1.0, 3.0]", "[0.2, -1.0]"),
-        "fragility.levels_g",
-    );
-    refused(
-        "damping",
-        &SCENARIO.replace("seed = 3", "seed = 3\ndamping = 1.0"),
-        "fragility.damping",
-    );
-    refused(
-        "period",
-        &SCENARIO.replace("\"model\"", "0.0"),
-        "fragility.period_s",
-    );
-    refused(
-        "kind",
-        &SCENARIO.replace("\"unseating\"", "\"collapse\""),
-        "limit_state[0].kind",
-    );
-    refused(
-        "missing",
-        &SCENARIO.replace("set.toml", "none.toml"),
-        "none.toml",
-    );
-    refused(
-        "unknown",
-        &SCENARIO.replace("seed = 3", "seed = 3\nstripes = 2"),
-        "stripes",
-    );
+    for (name, from, to, needle) in [
+        (
+            "level",
+            "[0.2, 1.0, 3.0]",
+            "[0.2, -1.0]",
+            "fragility.levels_g",
+        ),
+        (
+            "damping",
+            "seed = 3",
+            "seed = 3\ndamping = 1.0",
+            "fragility.damping",
+        ),
+        ("period", "\"model\"", "0.0", "fragility.period_s"),
+        (
+            "kind",
+            "\"unseating\"",
+            "\"collapse\"",
+            "limit_state[0].kind",
+        ),
+        ("missing", "set.toml", "none.toml", "none.toml"),
+        ("unknown", "seed = 3", "seed = 3\nstripes = 2", "stripes"),
+    ] {
+        refused(name, &SCENARIO.replace(from, to), needle);
+    }
     let two_deck = "[decks]\nshape = \"straight\"\n[fragility]\nrecords = \"set.toml\"\nlevels_g = [0.1]\n[[limit_state]]\nname = \"u\"\nkind = \"unseating\"\n";
     refused("twodeck", two_deck, "two-deck");
     // a record file named by the set that does not exist: the set's key and line, and the file

@@ -4,7 +4,7 @@
 //! writes.
 
 use crate::{run_capture, scratch_dir};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 fn example(name: &str) -> String {
     let p = Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -21,7 +21,7 @@ fn edit(text: &str, from: &str, to: &str) -> String {
 
 /// A copy of the example in a temp dir: `count` pairs of `duration` s, the first `stripes`
 /// levels, runs of `run_s` s and 50 bootstrap resamples.
-fn reduced(name: &str, count: usize, stripes: usize, run_s: &str) -> PathBuf {
+fn reduced(name: &str, count: usize, stripes: usize, run_s: &str) -> crate::Scratch {
     let d = scratch_dir("fragex", name);
     let scen = example("viaduct.toml");
     let levels_line = scen

@@ -3,47 +3,14 @@
 //! message, not a doubled os error), the bootstrap's failed replicates and unreliable intervals
 //! are shown, absurd periods, levels and synthetic-record flags are refused naming the key or flag.
 
+use crate::motion::synth;
 use crate::{run_capture, scratch_dir};
 use std::path::Path;
 
-const SCENARIO: &str = r#"[bridge]
-damping = "dashpots"
-gap = 0.02
-seat_length = 0.1
-outer_seat_length = 0.1
-[[segment]]
-shape = "straight"
-L = 30.0
-mass = 1.0e6
-period_s = 1.2
-[[segment]]
-shape = "straight"
-L = 30.0
-mass = 1.2e6
-period_s = 0.5
-[ground_motion]
-scale_y = -1.0
-[time]
-dt = 2e-3
-duration = 2.0
-
-[fragility]
-records = "set.toml"
-im = "sa"
-period_s = 1.5
-levels_g = [0.2, 1.0, 3.0]
-bootstrap = 50
-seed = 3
-
-[[limit_state]]
-name = "seat"
-kind = "unseating"
-
-[[limit_state]]
-name = "impulse"
-kind = "joint_force"
-capacity_ns = 2.0e5
-"#;
+/// The study of `fragility.rs` with a fixed period, 1.5 s, for Sa (same lines).
+fn scenario() -> String {
+    crate::fragility::SCENARIO.replace("period_s = \"model\"", "period_s = 1.5")
+}
 
 const SET: &str = r#"[[record]]
 id = "NS"
@@ -54,11 +21,8 @@ id = "EW"
 x = "builtin:ELC270"
 "#;
 
-fn study(name: &str, scenario: &str) -> std::path::PathBuf {
-    let d = scratch_dir("fragtrial", name);
-    std::fs::write(d.join("bridge.toml"), scenario).unwrap();
-    std::fs::write(d.join("set.toml"), SET).unwrap();
-    d
+fn study(name: &str, scenario: &str) -> crate::Scratch {
+    crate::fragility::study_in("fragtrial", name, scenario, SET)
 }
 
 fn run(d: &Path, out: &Path) -> (Option<i32>, String, String) {
@@ -74,7 +38,7 @@ fn run(d: &Path, out: &Path) -> (Option<i32>, String, String) {
 
 #[test]
 fn an_out_that_is_a_regular_file_is_refused_before_any_run_in_one_message() {
-    let d = study("outfile", SCENARIO);
+    let d = study("outfile", &scenario());
     let file = d.join("taken");
     std::fs::write(&file, "keep me").unwrap();
     for out in [file.clone(), file.join("sub")] {
@@ -91,7 +55,7 @@ fn an_out_that_is_a_regular_file_is_refused_before_any_run_in_one_message() {
 
 #[test]
 fn bootstrap_failures_and_unreliable_intervals_are_shown() {
-    let d = study("boot", SCENARIO);
+    let d = study("boot", &scenario());
     let (code, stdout, err) = run(&d, &d.join("out"));
     assert_eq!(code, Some(0), "{err}");
     assert!(
@@ -130,7 +94,7 @@ fn bootstrap_failures_and_unreliable_intervals_are_shown() {
     // bootstrap = 0: the level asked for is written, not nan
     let d = study(
         "noboot",
-        &SCENARIO.replace("bootstrap = 50", "bootstrap = 0"),
+        &scenario().replace("bootstrap = 50", "bootstrap = 0"),
     );
     let (code, _, err) = run(&d, &d.join("out"));
     assert_eq!(code, Some(0), "{err}");
@@ -156,34 +120,19 @@ fn refused(name: &str, scenario: &str, needles: &[&str]) {
 fn absurd_periods_and_scale_factors_are_refused() {
     refused(
         "period",
-        &SCENARIO.replace("period_s = 1.5", "period_s = 1e6"),
+        &scenario().replace("period_s = 1.5", "period_s = 1e6"),
         &["fragility.period_s", "bridge.toml:25", "(0, 20] s"],
     );
     refused(
         "level",
-        &SCENARIO.replace("[0.2, 1.0, 3.0]", "[0.2, 1.0, 5000.0]"),
+        &scenario().replace("[0.2, 1.0, 3.0]", "[0.2, 1.0, 5000.0]"),
         &["record NS", "level_g = 5000", "scale factor", "too small"],
     );
     refused(
         "scale",
-        &SCENARIO.replace("levels_g = [0.2, 1.0, 3.0]", "scales = [1.0, 500.0]"),
+        &scenario().replace("levels_g = [0.2, 1.0, 3.0]", "scales = [1.0, 500.0]"),
         &["record NS", "scale = 500", "beyond the limit of 100"],
     );
-}
-
-fn synth(d: &Path, name: &str, extra: &[&str]) -> (Option<i32>, String, std::path::PathBuf) {
-    let out = d.join(name);
-    let mut a = vec![
-        "motion",
-        "synth",
-        "--seed",
-        "1",
-        "--out",
-        out.to_str().unwrap(),
-    ];
-    a.extend_from_slice(extra);
-    let (code, _, err) = run_capture(&a);
-    (code, err, out)
 }
 
 #[test]

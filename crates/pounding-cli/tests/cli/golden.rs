@@ -104,12 +104,8 @@ fn command_line(case: &Case, variant: &str) -> String {
 /// directory, `/`-separated).
 fn run(case: &Case, variant: &str) -> (i32, BTreeMap<String, Vec<u8>>) {
     let tag = variant.replace(['-', ' '], "");
-    let out = std::env::temp_dir().join(format!(
-        "pounding-golden-{}-{}-{tag}",
-        std::process::id(),
-        case.name
-    ));
-    let _ = std::fs::remove_dir_all(&out);
+    let scratch = crate::scratch_dir("golden", &format!("{}-{tag}", case.name));
+    let out = scratch.join("out");
     let args: Vec<String> = case
         .args
         .split_whitespace()
@@ -135,7 +131,6 @@ fn run(case: &Case, variant: &str) -> (i32, BTreeMap<String, Vec<u8>>) {
     }
     if out.is_dir() {
         collect(&out, &out, &mut files);
-        let _ = std::fs::remove_dir_all(&out);
     }
     if code != 0 && code != 1 {
         panic!(

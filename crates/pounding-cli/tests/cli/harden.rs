@@ -1,8 +1,8 @@
 //! Hardening: absurd sizes, unchecked claims, overflowing derived quantities, diverged runs.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-fn tmp(name: &str) -> PathBuf {
+fn tmp(name: &str) -> crate::Scratch {
     crate::scratch_dir("harden", name)
 }
 

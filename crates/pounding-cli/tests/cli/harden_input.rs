@@ -2,14 +2,14 @@
 //! with exit 2, naming the file, the key and the line, and nothing is written.
 
 use crate::pounding;
-use std::path::PathBuf;
+use std::path::Path;
 
-fn tmp(name: &str) -> PathBuf {
+fn tmp(name: &str) -> crate::Scratch {
     crate::scratch_dir("hin", name)
 }
 
 /// Runs `pounding ARGS` in `dir`; returns (exit code, stderr).
-fn run_in(dir: &PathBuf, args: &[&str]) -> (Option<i32>, String) {
+fn run_in(dir: &Path, args: &[&str]) -> (Option<i32>, String) {
     let o = pounding().current_dir(dir).args(args).output().unwrap();
     (
         o.status.code(),

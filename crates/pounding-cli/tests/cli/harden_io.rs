@@ -4,7 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
-fn tmp(name: &str) -> PathBuf {
+fn tmp(name: &str) -> crate::Scratch {
     crate::scratch_dir("hio", name)
 }
 

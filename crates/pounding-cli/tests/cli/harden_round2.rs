@@ -2,14 +2,11 @@
 //! messages found by a hostile tester on a release build.
 
 use crate::pounding;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::{Duration, Instant};
 
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("pounding-hr2-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+fn tmp(name: &str) -> crate::Scratch {
+    crate::scratch_dir("hr2", name)
 }
 
 /// Runs `pounding ARGS` in `dir`, killing it after `limit`; returns (exit code, stderr), or

@@ -172,12 +172,12 @@ fn bridge_bad_input_names_the_parameter() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("--r2"));
 }
 
-fn write_tmp(name: &str, text: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("pounding-cli-impact-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+/// Writes `text` to `name` in a fresh scratch directory: (its guard, the file's path).
+fn write_tmp(name: &str, text: &str) -> (crate::Scratch, std::path::PathBuf) {
+    let dir = crate::scratch_dir("cli-impact", name);
     let p = dir.join(name);
     std::fs::write(&p, text).unwrap();
-    p
+    (dir, p)
 }
 
 /// The spinning disc on a rough floor through the generic form (closed form as in the library test).
@@ -191,7 +191,7 @@ fn generic_form_disc_on_rough_floor() {
              "mu": {mu}, "restitution": {eps}}}]}}"#,
         i = 0.5 * m * rho * rho
     );
-    let p = write_tmp("disc.json", &text);
+    let (_dir, p) = write_tmp("disc.json", &text);
     let v = json_of(
         &pounding()
             .args(["impact", "--json", "--problem"])
@@ -238,7 +238,7 @@ fn generic_form_double_contact() {
       "contacts": [
         {"body_a": "deck1", "body_b": "deck2", "point": [5, 0], "normal": [0, 1], "mu": 1.0, "restitution": 0.5},
         {"body_a": "deck1", "body_b": "deck2", "point": [-5, 0], "normal": [0, 1], "mu": 1.0, "restitution": 0.5}]}"#;
-    let p = write_tmp("double.json", text);
+    let (_dir, p) = write_tmp("double.json", text);
     let v = json_of(
         &pounding()
             .args(["impact", "--json", "--problem"])
@@ -289,7 +289,7 @@ fn generic_bad_input_names_the_parameter() {
         ("{\"bodies\": [], \"contacts\": [".to_string(), "not valid JSON"),
         ("{\"contacts\": []}".to_string(), "bodies"),
     ] {
-        let p = write_tmp("bad.json", &text);
+        let (_dir, p) = write_tmp("bad.json", &text);
         let out = pounding().args(["impact", "--json", "--problem"]).arg(&p).output().unwrap();
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(!out.status.success(), "{text} accepted");
@@ -329,7 +329,7 @@ fn generic_form_normal_is_a_direction_and_is_echoed() {
                "contacts": [{{"body_a": "disc", "body_b": null, "point": [0, 0], "normal": {normal},
                  "mu": 0.2, "restitution": 0.5}}]}}"#
         );
-        let p = write_tmp(name, &text);
+        let (_dir, p) = write_tmp(name, &text);
         json_of(
             &pounding()
                 .args(["impact", "--json", "--problem"])

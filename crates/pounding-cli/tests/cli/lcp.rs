@@ -25,10 +25,8 @@ fn siconos(name: &str) -> Option<PathBuf> {
     }
 }
 
-fn tmpdir() -> PathBuf {
-    let d = std::env::temp_dir().join(format!("pounding-cli-lcp-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
+fn tmpdir(name: &str) -> crate::Scratch {
+    crate::scratch_dir("cli-lcp", name)
 }
 
 fn run(args: &[&str]) -> Output {
@@ -46,7 +44,8 @@ fn close(a: &[f64], b: &[f64]) -> bool {
 
 #[test]
 fn solve_sample_reproduces_references() {
-    let out = tmpdir().join("sample.lcpsol");
+    let dir = tmpdir("sample");
+    let out = dir.join("sample.lcpsol");
     let input = data("lcp_problems_sample.txt");
     let refs = parse_lcpsol(
         &std::fs::read_to_string(data("lcp_solutions_sample.txt")).unwrap(),
@@ -174,7 +173,7 @@ fn bench_prints_json_per_class() {
 
 #[test]
 fn bad_input_fails_cleanly() {
-    let d = tmpdir();
+    let d = tmpdir("bad");
     let cases: &[(&str, &str, &str)] = &[
         ("empty.dat", "", "end of file"),
         ("nan.dat", "2\n0\n2\n2\n2 2\n1 0\n0 NaN\n-1 -1\n", "finite"),

@@ -23,12 +23,17 @@ pub fn skipped(reason: &str) {
     }
 }
 
-/// A fresh, empty scratch directory `pounding-{prefix}-{pid}-{name}` under the system's temporary
-/// directory (shared by the test modules).
-pub fn scratch_dir(prefix: &str, name: &str) -> std::path::PathBuf {
-    let d = std::env::temp_dir().join(format!("pounding-{prefix}-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
+// Scratch directories (shared with the library's integration tests: one copy of the code).
+#[path = "../../../pounding/tests/it/scratch.rs"]
+mod scratch;
+pub use scratch::{InScratch, Scratch, scratch_dir};
+
+/// A fresh scratch directory (as [`scratch_dir`]) holding the given files: (file name, text).
+pub fn scratch_with(prefix: &str, name: &str, files: &[(&str, &str)]) -> Scratch {
+    let d = scratch_dir(prefix, name);
+    for (file, text) in files {
+        std::fs::write(d.join(file), text).unwrap();
+    }
     d
 }
 

@@ -88,6 +88,27 @@ fn synth_writes_records_and_a_manifest_that_simulate_reads() {
     assert!(sim.join("summary.json").is_file());
 }
 
+/// Runs `pounding motion synth --seed 1 --out D/NAME EXTRA...`: (exit code, stderr, the output
+/// directory).
+pub(crate) fn synth(
+    d: &std::path::Path,
+    name: &str,
+    extra: &[&str],
+) -> (Option<i32>, String, std::path::PathBuf) {
+    let out = d.join(name);
+    let mut a = vec![
+        "motion",
+        "synth",
+        "--seed",
+        "1",
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    a.extend_from_slice(extra);
+    let (code, _, err) = run_capture(&a);
+    (code, err, out)
+}
+
 #[test]
 fn bad_synth_flags_exit_2_naming_the_flag_and_write_nothing() {
     let d = scratch_dir("motion", "bad");
@@ -108,17 +129,7 @@ fn bad_synth_flags_exit_2_naming_the_flag_and_write_nothing() {
     .into_iter()
     .enumerate()
     {
-        let out = d.join(format!("out{i}"));
-        let mut a = vec![
-            "motion",
-            "synth",
-            "--seed",
-            "1",
-            "--out",
-            out.to_str().unwrap(),
-        ];
-        a.extend_from_slice(args);
-        let (code, _, err) = run_capture(&a);
+        let (code, err, out) = synth(&d, &format!("out{i}"), args);
         assert_eq!(code, Some(2), "{args:?}: {err}");
         assert!(err.contains(flag), "{args:?}: {err}");
         assert!(!err.contains("panicked"));

@@ -5,11 +5,8 @@
 use crate::pounding;
 use std::path::{Path, PathBuf};
 
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("pounding-phys-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+fn tmp(name: &str) -> crate::Scratch {
+    crate::scratch_dir("phys", name)
 }
 
 fn disc(dir: &Path, inertia: &str) -> PathBuf {
@@ -58,7 +55,6 @@ fn tiny_inertia_impact_is_ill_conditioned_with_exit_1() {
             "I = {inertia}: {out}"
         );
     }
-    std::fs::remove_dir_all(&d).unwrap();
 }
 
 fn spike_csv(dir: &Path, g: &str) -> PathBuf {
@@ -126,5 +122,4 @@ fn overflowing_runs_end_diverged_with_exit_1() {
         csv.contains("Diverged") || csv.contains("diverged"),
         "{csv}"
     );
-    std::fs::remove_dir_all(&d).unwrap();
 }

@@ -24,6 +24,15 @@ fn run(cmd: &str) -> (Option<i32>, String) {
     (code, err)
 }
 
+/// Runs `pounding simulate --record RECORD FLAGS --out OUT`: (exit code, stderr).
+fn simulate_record(record: &Path, flags: &str, out: &Path) -> (Option<i32>, String) {
+    run(&format!(
+        "simulate --record {} {flags} --out {}",
+        s(record),
+        s(out)
+    ))
+}
+
 /// `n` samples of a small decaying sine (in g), one a line.
 fn one_column(n: usize) -> String {
     (0..n)
@@ -43,11 +52,7 @@ fn a_one_column_record_whose_comment_names_other_units_exits_2_and_writes_nothin
         &format!("# acceleration (m/s^2)\n{}", one_column(50)),
     );
     let out = d.join("o");
-    let (code, err) = run(&format!(
-        "simulate --record {} --record-dt 0.01 --out {}",
-        s(&p),
-        s(&out)
-    ));
+    let (code, err) = simulate_record(&p, "--record-dt 0.01", &out);
     assert_eq!(code, Some(2), "{err}");
     assert!(
         err.contains("a.txt:1") && err.contains("--csv-units m/s2"),
@@ -55,11 +60,7 @@ fn a_one_column_record_whose_comment_names_other_units_exits_2_and_writes_nothin
     );
     assert!(!out.exists(), "an error wrote {}", out.display());
     // the units the comment names, given: read and run
-    let (code, err) = run(&format!(
-        "simulate --record {} --record-dt 0.01 --csv-units m/s2 --out {}",
-        s(&p),
-        s(&out)
-    ));
+    let (code, err) = simulate_record(&p, "--record-dt 0.01 --csv-units m/s2", &out);
     assert_eq!(code, Some(0), "{err}");
     assert!(
         err.contains("units m/s2 (--csv-units), dt_s 0.01, npts 50"),
@@ -72,11 +73,7 @@ fn two_values_a_line_with_record_dt_exits_2() {
     let d = scratch_dir("misreads", "twoval");
     let p = write(&d, "ta.txt", "0 0.1\n0.01 0.2\n0.02 -0.1\n");
     let out = d.join("o");
-    let (code, err) = run(&format!(
-        "simulate --record {} --record-dt 0.01 --out {}",
-        s(&p),
-        s(&out)
-    ));
+    let (code, err) = simulate_record(&p, "--record-dt 0.01", &out);
     assert_eq!(code, Some(2), "{err}");
     assert!(
         err.contains("ta.txt:1")
@@ -134,34 +131,27 @@ fn the_scenarios_record_dt_reads_the_record_flag_file() {
         "[ground_motion]\nrecord_y = \"own.txt\"\nrecord_x = \"none\"\nrecord_dt = 0.02\n",
     );
     let out = d.join("o");
-    let (code, err) = run(&format!(
-        "simulate {} --record {} --out {}",
-        s(&sc),
-        s(&other),
-        s(&out)
-    ));
-    assert_eq!(code, Some(0), "{err}");
-    assert!(err.contains("dt_s 0.02, npts 40"), "{err}");
-    // --record-dt replaces it
-    let (code, err) = run(&format!(
-        "simulate {} --record {} --record-dt 0.01 --out {}",
-        s(&sc),
-        s(&other),
-        s(&out)
-    ));
-    assert_eq!(code, Some(0), "{err}");
-    assert!(err.contains("dt_s 0.01, npts 40"), "{err}");
+    // the scenario's record_dt, then --record-dt replacing it
+    for (flag, want) in [
+        ("", "dt_s 0.02, npts 40"),
+        ("--record-dt 0.01", "dt_s 0.01, npts 40"),
+    ] {
+        let (code, err) = run(&format!(
+            "simulate {} --record {} {flag} --out {}",
+            s(&sc),
+            s(&other),
+            s(&out)
+        ));
+        assert_eq!(code, Some(0), "{err}");
+        assert!(err.contains(want), "{err}");
+    }
 }
 
 #[test]
 fn a_scenario_given_as_the_record_is_named() {
     let d = scratch_dir("misreads", "toml");
     let sc = write(&d, "my.toml", "[ground_motion]\nscale_y = 1\n");
-    let (code, err) = run(&format!(
-        "simulate --record {} --out {}",
-        s(&sc),
-        s(&d.join("o"))
-    ));
+    let (code, err) = simulate_record(&sc, "", &d.join("o"));
     assert_eq!(code, Some(2), "{err}");
     assert!(
         err.contains("my.toml is a scenario file (.toml)") && err.contains("first"),
@@ -186,11 +176,7 @@ fn the_shared_el_centro_csv_with_a_byte_order_mark_reads_the_same() {
     let bom = write(&d, "bom.csv", &format!("\u{feff}{text}"));
     let mut lines = Vec::new();
     for p in [&plain, &bom] {
-        let (code, err) = run(&format!(
-            "simulate --record {} --duration 0.2 --out {}",
-            s(p),
-            s(&d.join("o"))
-        ));
+        let (code, err) = simulate_record(p, "--duration 0.2", &d.join("o"));
         assert_eq!(code, Some(0), "{err}");
         let line = err
             .lines()

@@ -264,6 +264,7 @@ fn both_reports_load_in_headless_chromium() {
     );
     assert_eq!(pages, 1);
     assert!(images >= 3, "viaduct report shows {images} images");
-    // Keep the screenshots (screenshot-*.png) to look at; drop Chromium's profile.
+    // The screenshots (screenshot-*.png) go with the scratch directory; POUNDING_KEEP_SCRATCH=1
+    // keeps them to look at (docs/development.md). Chromium's profile goes in any case.
     let _ = std::fs::remove_dir_all(work.join("profile"));
 }

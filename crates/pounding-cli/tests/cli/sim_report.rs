@@ -4,7 +4,7 @@
 
 use crate::{run_capture, scratch_dir};
 
-fn run(name: &str, args: &[&str]) -> (Option<i32>, std::path::PathBuf, String) {
+fn run(name: &str, args: &[&str]) -> (Option<i32>, crate::InScratch, String) {
     let d = scratch_dir("simreport", name);
     let out = d.join("out");
     let mut a = vec!["simulate"];
@@ -12,7 +12,7 @@ fn run(name: &str, args: &[&str]) -> (Option<i32>, std::path::PathBuf, String) {
     a.extend_from_slice(&["--out", out.to_str().unwrap()]);
     let (code, _, err) = run_capture(&a);
     let html = std::fs::read_to_string(out.join("report.html")).unwrap_or_default();
-    (code, out, html + &err)
+    (code, d.into_join("out"), html + &err)
 }
 
 /// Every `src="..."`/`href="..."` target of the page exists beside it.

@@ -1,13 +1,10 @@
 //! `pounding simulate`: default run, outputs, determinism, scenario files, bad input.
 
 use crate::pounding;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("pounding-sim-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+fn tmp(name: &str) -> crate::Scratch {
+    crate::scratch_dir("sim", name)
 }
 
 fn summary(out: &Path) -> serde_json::Value {
@@ -150,7 +147,6 @@ fn default_run_writes_every_output_deterministically() {
     ] {
         assert_eq!(s[k], s3[k], "{k}");
     }
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
@@ -196,7 +192,6 @@ fn scenario_paths_are_relative_to_the_scenario_and_scale_applies() {
         s2["peak_joint_opening_m"].as_f64().unwrap() > s1["peak_joint_opening_m"].as_f64().unwrap()
     );
     assert_eq!(s1["ground_motion"]["record_x"], "none");
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// Runs with a scenario text; asserts failure, that the message contains every `needle`, and
@@ -220,7 +215,6 @@ fn fails(name: &str, scenario: &str, extra: &[&str], needles: &[&str]) {
         assert!(err.contains(n), "{name}: error lacks {n:?}: {err}");
     }
     assert!(!out.exists(), "{name}: wrote output on bad input");
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
@@ -291,5 +285,4 @@ fn bad_input_fails_cleanly_and_writes_nothing() {
     assert!(!o.status.success());
     assert!(err.contains("bad.AT2:6"), "{err}");
     assert!(!out.exists());
-    std::fs::remove_dir_all(&dir).unwrap();
 }

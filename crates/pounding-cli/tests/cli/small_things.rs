@@ -53,7 +53,6 @@ fn study_message_is_singular_for_one() {
         err.contains("study: 1 configuration x 1 case x 1 cell = 1 row on 1 thread\n"),
         "{err}"
     );
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// With `dt = 1e-3`, every `t_s` in `history.csv` and `impacts.csv` has at most three decimals
@@ -94,7 +93,6 @@ fn step_times_read_as_decimals_of_the_step() {
         }
     }
     assert!(checked > 800, "{checked}");
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// An impact whose report has exact zeros of either sign shows no `-0.0` (JSON) and the compare

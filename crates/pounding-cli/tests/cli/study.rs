@@ -1,7 +1,7 @@
 //! `pounding study`: outputs, bad scenarios, sharding + merge, thread independence, report links.
 
 use crate::pounding;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// A small study without figures (2 geometries, 2 μ, 5 × 9 cells); also used by
 /// `reports_browser.rs`.
@@ -20,11 +20,8 @@ theta2_deg = { start = -4.0, stop = 4.0, step = 1.0 }
 figures = false
 "#;
 
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("pounding-cli-study-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+fn tmp(name: &str) -> crate::Scratch {
+    crate::scratch_dir("cli-study", name)
 }
 
 fn run(args: &[&str]) -> std::process::Output {

@@ -1,16 +1,10 @@
 //! `pounding study` with straight and skewed decks: outputs, figures, report and bad input.
 
 use crate::pounding;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!(
-        "pounding-cli-study-shapes-{}-{name}",
-        std::process::id()
-    ));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+fn tmp(name: &str) -> crate::Scratch {
+    crate::scratch_dir("cli-study-shapes", name)
 }
 
 fn s(p: &Path) -> &str {

@@ -80,7 +80,6 @@ fn study_old_and_new_deck_keys_give_identical_outputs() {
             );
         }
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// A quantity given under both names is bad input: exit 2, both keys and both lines named,
@@ -126,7 +125,6 @@ fn study_refuses_old_and_new_name_of_one_quantity() {
             "an output directory was written"
         );
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// `--print-default` of `study` shows the current names only, and every one of them is a key of

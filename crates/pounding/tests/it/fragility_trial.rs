@@ -81,13 +81,7 @@ fn ida_records_exceeding_at_the_first_scale_get_no_numbers() {
 }
 
 fn set_err(manifest: &str) -> String {
-    let d = std::env::temp_dir().join(format!(
-        "pounding-ft-{}-{}",
-        std::process::id(),
-        manifest.len()
-    ));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
+    let d = crate::scratch::scratch_dir("ft", &manifest.len().to_string());
     std::fs::write(d.join("a.txt"), "0.0\n1.0\n-2.0\n0.5\n").unwrap();
     std::fs::write(d.join("set.toml"), manifest).unwrap();
     pounding::ground_motion::set::RecordSet::load(&d.join("set.toml"))
@@ -117,8 +111,7 @@ fn metadata_names_that_repeat_a_runs_csv_column_are_refused() {
         assert!(e.contains("runs.csv"), "{e}");
     }
     // a harmless name next to them still reads
-    let d = std::env::temp_dir().join(format!("pounding-ft-ok-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
+    let d = crate::scratch::scratch_dir("ft", "ok");
     std::fs::write(d.join("a.txt"), "0.0\n1.0\n").unwrap();
     std::fs::write(
         d.join("set.toml"),

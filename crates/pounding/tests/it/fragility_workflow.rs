@@ -10,11 +10,8 @@ use pounding::ground_motion::{G0, GroundMotion, Record};
 use pounding::sim::scenario::Scenario;
 use std::path::Path;
 
-fn scratch(name: &str) -> std::path::PathBuf {
-    let d = std::env::temp_dir().join(format!("pounding-fw-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+fn scratch(name: &str) -> crate::scratch::Scratch {
+    crate::scratch::scratch_dir("fw", name)
 }
 
 const MANIFEST: &str = r#"[set]
@@ -435,43 +432,29 @@ fn row(stripe: usize, im: f64, ex: Option<bool>, ratio: f64) -> RunRow {
     }
 }
 
+/// The first exceedance of one record run at three stripes (IM 0.1, 0.2, 0.4 g), given each
+/// run's (exceeded, ratio).
+fn first_of(runs: [(Option<bool>, f64); 3]) -> FirstExceedance {
+    let rows: Vec<RunRow> = runs
+        .iter()
+        .zip([0.1, 0.2, 0.4])
+        .enumerate()
+        .map(|(k, (&(ex, ratio), im))| row(k, im, ex, ratio))
+        .collect();
+    first_exceedance(&rows, 1, 3, 0).swap_remove(0)
+}
+
 #[test]
 fn ida_first_exceedance_interpolates_the_ratio_to_one() {
-    let rows = vec![
-        row(0, 0.1, Some(false), 0.5),
-        row(1, 0.2, Some(false), 0.8),
-        row(2, 0.4, Some(true), 1.3),
-    ];
     // ratio 0.8 at 0.2, 1.3 at 0.4: reaches 1 at 0.2 + 0.2 * 0.2 / 0.5 = 0.28
-    match first_exceedance(&rows, 1, 3, 0)[0] {
+    match first_of([(Some(false), 0.5), (Some(false), 0.8), (Some(true), 1.3)]) {
         FirstExceedance::At(x) => assert!((x - 0.28).abs() < 1e-15, "{x}"),
         o => panic!("{o:?}"),
     }
-    let never = vec![
-        row(0, 0.1, Some(false), 0.5),
-        row(1, 0.2, Some(false), 0.8),
-        row(2, 0.4, Some(false), 0.9),
-    ];
-    assert_eq!(
-        first_exceedance(&never, 1, 3, 0)[0],
-        FirstExceedance::NotWithin
-    );
-    let unknown = vec![
-        row(0, 0.1, Some(false), 0.5),
-        row(1, 0.2, None, f64::NAN),
-        row(2, 0.4, Some(true), 1.3),
-    ];
-    assert_eq!(
-        first_exceedance(&unknown, 1, 3, 0)[0],
-        FirstExceedance::Unknown
-    );
-    let first = vec![
-        row(0, 0.1, Some(true), 1.5),
-        row(1, 0.2, Some(true), 2.0),
-        row(2, 0.4, Some(true), 3.0),
-    ];
-    assert_eq!(
-        first_exceedance(&first, 1, 3, 0)[0],
-        FirstExceedance::At(0.1)
-    );
+    let never = [(Some(false), 0.5), (Some(false), 0.8), (Some(false), 0.9)];
+    assert_eq!(first_of(never), FirstExceedance::NotWithin);
+    let unknown = [(Some(false), 0.5), (None, f64::NAN), (Some(true), 1.3)];
+    assert_eq!(first_of(unknown), FirstExceedance::Unknown);
+    let first = [(Some(true), 1.5), (Some(true), 2.0), (Some(true), 3.0)];
+    assert_eq!(first_of(first), FirstExceedance::At(0.1));
 }

@@ -141,8 +141,7 @@ mod records {
             );
         }
         // Through the file reader, a .VT2/.DT2 name is refused before anything else.
-        let dir = std::env::temp_dir().join(format!("pounding-vt2-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
+        let dir = crate::scratch::scratch_dir("vt2", "names");
         for ext in ["VT2", "dt2"] {
             let p = dir.join(format!("r.{ext}"));
             let text = at2(
@@ -153,7 +152,6 @@ mod records {
             let e = Record::from_path(&p, AccelUnits::G).unwrap_err();
             assert!(e.to_string().contains("not an"), "{e}");
         }
-        let _ = std::fs::remove_dir_all(&dir);
     }
 
     #[test]

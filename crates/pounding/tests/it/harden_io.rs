@@ -149,11 +149,8 @@ fn manifest_counts_are_checked() {
     );
 }
 
-fn tmp(name: &str) -> std::path::PathBuf {
-    let d = std::env::temp_dir().join(format!("pounding-it-hio-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+fn tmp(name: &str) -> crate::scratch::Scratch {
+    crate::scratch::scratch_dir("it-hio", name)
 }
 
 fn names(dir: &std::path::Path) -> Vec<String> {
@@ -243,7 +240,8 @@ fn an_output_directory_has_one_writer_at_a_time() {
     use pounding::output::{
         LOCK_FILE, OutputError, check_output_dir_free, lock_output_dir, remove_previous_outputs,
     };
-    let d = tmp("lock").join("out");
+    let scratch = tmp("lock");
+    let d = scratch.join("out");
     check_output_dir_free(&d).unwrap();
     assert!(!d.exists(), "the early check creates nothing");
     let first = lock_output_dir(&d).unwrap();

@@ -396,16 +396,10 @@ fn fixed_kernel_rejects_non_finite_without_panic() {
 // ---------------------------------------------------------------------------------------------
 // Bad input
 
-fn write_tmp(name: &str, text: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("pounding-lcp-it-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
 fn parse_err(text: &str) -> String {
-    let p = write_tmp("bad.txt", text);
+    let dir = crate::scratch::scratch_dir("lcp-it", "bad");
+    let p = dir.join("bad.txt");
+    std::fs::write(&p, text).unwrap();
     match io::read_any(&p) {
         Ok(v) => panic!("accepted bad input {text:?}: {v:?}"),
         Err(e) => e.to_string(),

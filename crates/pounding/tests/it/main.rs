@@ -33,6 +33,7 @@ mod physics_check;
 mod props;
 mod record_formats;
 mod record_misreads;
+mod scratch;
 mod set_synth;
 mod shapes;
 mod sim;

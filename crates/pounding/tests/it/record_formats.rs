@@ -20,11 +20,8 @@ fn elc(n: usize) -> Vec<f64> {
         .collect()
 }
 
-pub(crate) fn dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("pounding-recfmt-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+pub(crate) fn dir(name: &str) -> crate::scratch::Scratch {
+    crate::scratch::scratch_dir("recfmt", name)
 }
 
 pub(crate) fn write(d: &Path, name: &str, text: &str) -> PathBuf {

@@ -5,11 +5,8 @@ use pounding::ground_motion::set::RecordSet;
 use pounding::ground_motion::synth::{SynthParams, write_suite};
 use std::path::Path;
 
-fn scratch(name: &str) -> std::path::PathBuf {
-    let d = std::env::temp_dir().join(format!("pounding-ss-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+fn scratch(name: &str) -> crate::scratch::Scratch {
+    crate::scratch::scratch_dir("ss", name)
 }
 
 /// An entry's id, metadata as CSV cells, and the times and samples of its components.

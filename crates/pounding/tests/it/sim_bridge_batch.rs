@@ -49,12 +49,11 @@ incidence_deg = 15.0
 dt = 2e-3
 "#;
 
-/// Three short synthetic records (CSV, g) in a fresh directory.
-fn record_files(tag: &str) -> Vec<PathBuf> {
-    let d = std::env::temp_dir().join(format!("pounding-it-bbatch-{}-{tag}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    [(1.0, 0.3), (1.7, 0.25), (0.8, 0.4)]
+/// Three short synthetic records (CSV, g) in a fresh scratch directory (returned with them: the
+/// directory lives as long as its guard).
+fn record_files(tag: &str) -> (crate::scratch::Scratch, Vec<PathBuf>) {
+    let d = crate::scratch::scratch_dir("it-bbatch", tag);
+    let paths = [(1.0, 0.3), (1.7, 0.25), (0.8, 0.4)]
         .iter()
         .enumerate()
         .map(|(i, (f, a))| {
@@ -68,7 +67,8 @@ fn record_files(tag: &str) -> Vec<PathBuf> {
             std::fs::write(&p, s).unwrap();
             p
         })
-        .collect()
+        .collect();
+    (d, paths)
 }
 
 fn batch_records(paths: &[PathBuf]) -> Vec<BatchRecord> {
@@ -109,7 +109,7 @@ fn run(paths: &[PathBuf], threads: usize, shard: BatchShard) -> Vec<BridgeBatchR
 
 #[test]
 fn every_bridge_batch_row_equals_the_single_run_of_its_record_and_scale() {
-    let paths = record_files("equal");
+    let (_dir, paths) = record_files("equal");
     let rows = run(&paths, 2, BatchShard::ALL);
     assert_eq!(rows.len(), 9);
     let csv = bridge_batch_csv(3, &rows);
@@ -201,7 +201,7 @@ fn every_bridge_batch_row_equals_the_single_run_of_its_record_and_scale() {
 
 #[test]
 fn bridge_batch_rows_do_not_depend_on_threads_and_shards_partition_them() {
-    let paths = record_files("threads");
+    let (_dir, paths) = record_files("threads");
     let all = run(&paths, 1, BatchShard::ALL);
     assert_eq!(run(&paths, 2, BatchShard::ALL), all);
     let mut merged = Vec::new();
@@ -216,7 +216,7 @@ fn bridge_batch_rows_do_not_depend_on_threads_and_shards_partition_them() {
 
 #[test]
 fn an_unreadable_record_fails_only_its_rows_and_bad_lists_are_errors() {
-    let mut paths = record_files("bad");
+    let (_dir, mut paths) = record_files("bad");
     paths.insert(1, paths[0].with_file_name("missing.csv"));
     let rows = run(&paths, 2, BatchShard::ALL);
     let csv = bridge_batch_csv(3, &rows);

@@ -204,7 +204,7 @@ fn deck_mass_override_sets_the_mass() {
 
 #[test]
 fn load_resolves_records_relative_to_the_file_and_names_it() {
-    let dir = std::env::temp_dir().join(format!("pounding-scn-{}", std::process::id()));
+    let dir = crate::scratch::scratch_dir("scn", "load");
     std::fs::create_dir_all(dir.join("sub")).unwrap();
     std::fs::write(dir.join("sub/r.csv"), "0, 0\n0.01, 0.1\n0.02, -0.1\n").unwrap();
     let p = dir.join("s.toml");
@@ -234,7 +234,6 @@ fn load_resolves_records_relative_to_the_file_and_names_it() {
     assert_eq!(r.pga(), 0.1 * pounding::ground_motion::G0);
     let e = Scenario::load(&dir.join("absent.toml")).unwrap_err();
     assert!(matches!(e, ScenarioError::Read { .. }), "{e}");
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// The writers' rows have as many fields as their headers, and `summary.json` is JSON.

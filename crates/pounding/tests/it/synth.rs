@@ -208,8 +208,8 @@ fn suites_are_deterministic_for_any_thread_count() {
 
 #[test]
 fn written_files_read_back_as_the_same_samples() {
-    let dir = std::env::temp_dir().join(format!("pounding-it-synth-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
+    let scratch = crate::scratch::scratch_dir("it-synth", "read-back");
+    let dir = scratch.join("suite");
     let p = SynthParams {
         duration: 4.0,
         dt: 0.005,
@@ -237,7 +237,6 @@ fn written_files_read_back_as_the_same_samples() {
     }
     let readme = std::fs::read_to_string(dir.join("SYNTHETIC.txt")).unwrap();
     assert!(readme.contains("Real assessments need real recorded ground motions"));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -311,7 +310,8 @@ fn bad_parameters_are_refused_naming_them_and_nothing_is_written() {
             "zeta_g",
         ),
     ];
-    let dir = std::env::temp_dir().join(format!("pounding-it-synth-bad-{}", std::process::id()));
+    let scratch = crate::scratch::scratch_dir("it-synth", "bad");
+    let dir = scratch.join("suite");
     for (p, count, name) in cases {
         let e = write_suite(&dir, &p, count, 1, false, "t")
             .unwrap_err()
