@@ -25,12 +25,19 @@
 //! ([`bootstrap`]): seeded, and the same for any thread count.
 
 pub mod bootstrap;
+pub mod censored;
 pub mod mle;
 pub mod moments;
 pub mod normal;
 pub mod write;
 
-pub use bootstrap::{BandPoint, Bootstrap, BootstrapSettings, bootstrap_ida, bootstrap_stripes};
+pub use bootstrap::{
+    BandPoint, Bootstrap, BootstrapSettings, bootstrap_ida, bootstrap_ida_censored,
+    bootstrap_stripes,
+};
+pub use censored::{
+    CensoredIdaData, IdaRecord, censored_log_likelihood, censored_mle, fit_ida_censored,
+};
 pub use mle::{fit_stripes, stripe_log_likelihood};
 pub use moments::fit_ida;
 pub use write::{

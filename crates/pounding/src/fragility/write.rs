@@ -22,8 +22,16 @@ use crate::output::{csv_field, float_token, json_float};
 pub enum Method {
     /// Maximum likelihood on multiple-stripe counts (`mle_stripes`).
     MleStripes,
-    /// Method of moments on IDA data (`moments_ida`).
+    /// Method of moments on IDA data (`moments_ida`): IDA data without a censored record.
     MomentsIda,
+    /// Maximum likelihood of the censored lognormal on IDA data with censored records
+    /// (`mle_censored_ida`, [`super::censored`]); the counts are written to `fragility.json`.
+    MleCensoredIda {
+        /// Records never exceeding within the IMs run (right-censored).
+        right: usize,
+        /// Records exceeding already at the first IM (left-censored).
+        left: usize,
+    },
 }
 
 impl Method {
@@ -32,6 +40,7 @@ impl Method {
         match self {
             Method::MleStripes => "mle_stripes",
             Method::MomentsIda => "moments_ida",
+            Method::MleCensoredIda { .. } => "mle_censored_ida",
         }
     }
 }
@@ -92,6 +101,26 @@ impl FragilityRow {
             bootstrap,
             n_records: d.im_at_exceedance.len(),
             n_runs: d.im_at_exceedance.iter().flatten().count(),
+        })
+    }
+
+    /// The row of an IDA fit with censoring bounds: the estimator of
+    /// [`super::CensoredIdaData::method`], the fit (or the bootstrap's fit), `n_runs` = records
+    /// that exceeded (exactly or already at the first IM).
+    pub fn from_ida_censored(
+        limit_state: &str,
+        d: &super::CensoredIdaData,
+        bootstrap: Option<Bootstrap>,
+    ) -> Result<Self, super::FragilityError> {
+        let (method, fit) = super::fit_ida_censored(d)?;
+        let (exact, _, left) = d.counts();
+        Ok(FragilityRow {
+            limit_state: limit_state.to_string(),
+            method,
+            fit: bootstrap.as_ref().map_or(fit, |b| b.fit),
+            bootstrap,
+            n_records: d.records.len(),
+            n_runs: exact + left,
         })
     }
 }
@@ -259,12 +288,14 @@ fn json_impl(rows: &[FragilityRow], study: Option<&StudyColumns>) -> Value {
                     })
                     .collect()
             });
-            let censored = match r.fit {
-                Fit::NoFiniteMle(super::NoMle::Censored { count }) => json!(count),
+            let censored = match (r.fit, r.method) {
+                (Fit::NoFiniteMle(super::NoMle::Censored { count }), _)
+                | (_, Method::MleCensoredIda { right: count, .. }) => json!(count),
                 _ => Value::Null,
             };
-            let at_first = match r.fit {
-                Fit::NoFiniteMle(super::NoMle::ExceededAtFirst { count }) => json!(count),
+            let at_first = match (r.fit, r.method) {
+                (Fit::NoFiniteMle(super::NoMle::ExceededAtFirst { count }), _)
+                | (_, Method::MleCensoredIda { left: count, .. }) => json!(count),
                 _ => Value::Null,
             };
             let mut o = json!({
