@@ -8,8 +8,8 @@
 //! [`super::NoMle`] word; `bootstrap_failed` is `nan` / `null` when the data have no fit, as no
 //! replicate then means anything, and `0` without a bootstrap: `no_exceedance`, `all_exceeded`, `perfectly_separated`,
 //! `not_increasing`, `too_few_points`, `censored` (IDA records never exceeding within the IMs
-//! run), `exceeded_at_first` (IDA records exceeding already at the first IM: the IM at first
-//! exceedance is only an upper bound), `no_dispersion`, `out_of_range`, `not_converged`). The JSON adds the pointwise band of each bootstrap.
+//! run, given without their bound), `exceeded_at_first` (IDA records exceeding already at the first
+//! IM, no longer given by the workflow), `no_dispersion`, `out_of_range`, `not_converged`). The JSON adds the pointwise band of each bootstrap.
 
 use serde_json::{Value, json};
 
@@ -255,8 +255,9 @@ fn csv_impl(rows: &[FragilityRow], study: Option<&StudyColumns>) -> String {
 }
 
 /// `fragility.json`: `{"fits": [...]}` with the CSV's keys per row (numbers or `null`), plus
-/// `censored` (IDA records without exceedance, when that is the status), `exceeded_at_first`
-/// (IDA records exceeding already at the first IM, when that is the status) and `band`: the bootstrap's
+/// `censored` (IDA records without exceedance: with [`Method::MleCensoredIda`] its right-censored
+/// count, or the count when that is the status), `exceeded_at_first` (IDA records exceeding already
+/// at the first IM: the left-censored count, or the count with that status) and `band`: the bootstrap's
 /// `[{"im", "p", "lo", "hi"}]` (empty without a bootstrap).
 pub fn fragility_json(rows: &[FragilityRow]) -> Value {
     json_impl(rows, None)
