@@ -7,31 +7,11 @@
 use crate::{run_capture, scratch_dir};
 use pounding::fragility::{CensoredIdaData, IdaRecord, Method, fit_ida_censored};
 
-/// Two segments, 2 s runs, six synthetic records at PGA 0.3 g scaled by 0.25…2: `impulse`
-/// (6e5 N s) is never reached by two records, `low` (1e5 N s) is exceeded by one at the first
-/// scale, `mid` (2e5 N s) is crossed between scales by every record.
-const SCENARIO: &str = r#"[bridge]
-damping = "dashpots"
-gap = 0.02
-seat_length = 0.1
-outer_seat_length = 0.1
-[[segment]]
-shape = "straight"
-L = 30.0
-mass = 1.0e6
-period_s = 1.2
-[[segment]]
-shape = "straight"
-L = 30.0
-mass = 1.2e6
-period_s = 0.5
-[ground_motion]
-scale_y = -1.0
-[time]
-dt = 2e-3
-duration = 2.0
-
-[fragility]
+/// The study on the bridge of `cli::fragility` (two segments, 2 s runs): six synthetic records at
+/// PGA 0.3 g scaled by 0.25…2; `impulse` (6e5 N s) is never reached by two records, `low`
+/// (1e5 N s) is exceeded by one at the first scale, `mid` (2e5 N s) is crossed between scales by
+/// every record.
+const STUDY: &str = r#"[fragility]
 records = "set.toml"
 im = "pga"
 scales = [0.25, 0.5, 1.0, 2.0]
@@ -94,7 +74,9 @@ fn records_from_runs(runs: &str, ls: &str) -> Vec<IdaRecord> {
 #[test]
 fn truncated_ida_with_records_that_never_exceed_gets_a_censored_fit() {
     let d = scratch_dir("fragcens", "ida");
-    std::fs::write(d.join("bridge.toml"), SCENARIO).unwrap();
+    let bridge =
+        &crate::fragility::SCENARIO[..crate::fragility::SCENARIO.find("[fragility]").unwrap()];
+    std::fs::write(d.join("bridge.toml"), format!("{bridge}{STUDY}")).unwrap();
     std::fs::write(d.join("set.toml"), SET).unwrap();
     let out = d.join("out");
     let (code, stdout, err) = run_capture(&[

@@ -338,7 +338,8 @@ fn random_censored_data_get_a_maximum_or_a_status_that_the_rule_predicts() {
         let fit = censored_mle(&data(&recs)).unwrap();
         let exact: Vec<f64> = recs
             .iter()
-            .filter_map(|r| matches!(r, E(_)).then(|| r.im()))
+            .filter(|r| matches!(r, E(_)))
+            .map(IdaRecord::im)
             .collect();
         if exact.is_empty() {
             continue; // the stripe rules, tested with the stripe fit
