@@ -3,10 +3,13 @@
 //! * `fit_stripes_40x8` — maximum likelihood on 40 records × 8 stripes;
 //! * `bootstrap_stripes_1000` — that fit plus 1,000 record resamples, jackknife and a 20-IM band,
 //!   on the default (all-core) pool;
-//! * `bootstrap_ida_1000` — method of moments on 40 records with the same bootstrap.
+//! * `bootstrap_ida_1000` — method of moments on 40 records with the same bootstrap;
+//! * `bootstrap_ida_censored_1000` — the censored MLE on those 40 records truncated at IM 0.6
+//!   (right-censored above it, 14 records) with the same bootstrap.
 
 use pounding::fragility::{
-    BootstrapSettings, IdaData, StripeData, bootstrap_ida, bootstrap_stripes, fit_stripes,
+    BootstrapSettings, CensoredIdaData, IdaData, IdaRecord, StripeData, bootstrap_ida,
+    bootstrap_ida_censored, bootstrap_stripes, fit_stripes,
 };
 use std::hint::black_box;
 
@@ -73,4 +76,27 @@ fn bootstrap_ida_1000(bencher: divan::Bencher) {
     };
     let band = band();
     bencher.bench(|| bootstrap_ida(black_box(&d), &s, &band).unwrap());
+}
+
+#[divan::bench(sample_count = 10)]
+fn bootstrap_ida_censored_1000(bencher: divan::Bencher) {
+    let d = CensoredIdaData {
+        records: capacities()
+            .into_iter()
+            .map(|c| {
+                if c > 0.6 {
+                    IdaRecord::NotExceeded(0.6)
+                } else {
+                    IdaRecord::Exceeded(c)
+                }
+            })
+            .collect(),
+    };
+    let s = BootstrapSettings {
+        samples: 1000,
+        seed: 1,
+        level: 0.95,
+    };
+    let band = band();
+    bencher.bench(|| bootstrap_ida_censored(black_box(&d), &s, &band).unwrap());
 }

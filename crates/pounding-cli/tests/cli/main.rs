@@ -68,6 +68,7 @@ mod bridge_plots;
 mod compare;
 mod docs_links;
 mod fragility;
+mod fragility_censored;
 mod fragility_example;
 mod fragility_trial;
 mod fuzz;

@@ -292,11 +292,13 @@ pub fn first_exceedance(
 }
 
 /// The fit of one limit state: multiple stripes by maximum likelihood
-/// ([`crate::fragility::bootstrap_stripes`]), IDA by the method of moments on the IMs at first
-/// exceedance ([`crate::fragility::bootstrap_ida`]; entries with an unknown crossing are left
-/// out). IDA entries that exceed already at the smallest scale (left-censored: the IM at first
-/// exceedance is only an upper bound) give
-/// [`crate::fragility::NoMle::ExceededAtFirst`] with their count, no numbers and no bootstrap. With `bootstrap.samples = 0` no intervals. `band_im`: the IMs of the bootstrap band.
+/// ([`crate::fragility::bootstrap_stripes`]); IDA from the first exceedance of each entry
+/// ([`crate::fragility::bootstrap_ida_censored`]): an entry crossing between two scales is an
+/// exact observation, one never exceeding is right-censored at its largest IM, one exceeding
+/// already at the smallest scale is left-censored at that IM, one with an unknown crossing is
+/// left out. Without a censored entry the method of moments, else the censored MLE
+/// ([`crate::fragility::censored`]). With `bootstrap.samples = 0` no intervals. `band_im`: the
+/// IMs of the bootstrap band.
 pub fn fit_limit_state(
     name: &str,
     plan: &Plan,
@@ -305,7 +307,10 @@ pub fn fit_limit_state(
     bootstrap: &crate::fragility::BootstrapSettings,
     band_im: &[Real],
 ) -> Result<crate::fragility::FragilityRow, crate::fragility::FragilityError> {
-    use crate::fragility::{FragilityRow, IdaData, StripeData, bootstrap_ida, bootstrap_stripes};
+    use crate::fragility::{
+        CensoredIdaData, FragilityRow, IdaRecord, StripeData, bootstrap_ida_censored,
+        bootstrap_stripes,
+    };
     let (entries, ns) = (plan.entry_im.len(), plan.values().len());
     match &plan.stripes {
         Stripes::Levels(levels) => {
@@ -319,34 +324,24 @@ pub fn fit_limit_state(
             FragilityRow::from_stripes(name, &d, b)
         }
         Stripes::Scales(_) => {
-            let d = IdaData {
-                im_at_exceedance: first_exceedance(rows, entries, ns, l)
+            let d = CensoredIdaData {
+                records: first_exceedance(rows, entries, ns, l)
                     .into_iter()
-                    .filter_map(|f| match f {
-                        FirstExceedance::At(x) => Some(Some(x)),
-                        FirstExceedance::NotWithin => Some(None),
-                        FirstExceedance::Unknown => None,
+                    .enumerate()
+                    .filter_map(|(a, f)| match f {
+                        // Exceeded at the smallest scale: that IM is only an upper bound.
+                        FirstExceedance::At(x) if rows[a * ns].limits[l].0 == Some(true) => {
+                            Some(IdaRecord::ExceededAtFirst(x))
+                        }
+                        FirstExceedance::At(x) => Some(IdaRecord::Exceeded(x)),
+                        FirstExceedance::NotWithin if ns > 0 => {
+                            Some(IdaRecord::NotExceeded(plan.point(a, ns - 1).0))
+                        }
+                        FirstExceedance::NotWithin | FirstExceedance::Unknown => None,
                     })
                     .collect(),
             };
-            // Left-censored records (exceeded already at the smallest scale): the IM of that run
-            // is only an upper bound of the crossing; no numbers.
-            let at_first = (0..entries)
-                .filter(|&a| rows[a * ns].limits[l].0 == Some(true))
-                .count();
-            if at_first > 0 {
-                return Ok(FragilityRow {
-                    limit_state: name.to_string(),
-                    method: crate::fragility::Method::MomentsIda,
-                    fit: crate::fragility::Fit::NoFiniteMle(
-                        crate::fragility::NoMle::ExceededAtFirst { count: at_first },
-                    ),
-                    bootstrap: None,
-                    n_records: d.im_at_exceedance.len(),
-                    n_runs: d.im_at_exceedance.iter().flatten().count(),
-                });
-            }
-            if d.im_at_exceedance.is_empty() {
+            if d.records.is_empty() {
                 return Ok(FragilityRow {
                     limit_state: name.to_string(),
                     method: crate::fragility::Method::MomentsIda,
@@ -357,9 +352,9 @@ pub fn fit_limit_state(
                 });
             }
             let b = (bootstrap.samples > 0)
-                .then(|| bootstrap_ida(&d, bootstrap, band_im))
+                .then(|| bootstrap_ida_censored(&d, bootstrap, band_im))
                 .transpose()?;
-            FragilityRow::from_ida(name, &d, b)
+            FragilityRow::from_ida_censored(name, &d, b)
         }
     }
 }

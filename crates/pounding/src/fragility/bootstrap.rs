@@ -25,6 +25,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
 
+use super::censored::{IdaRecord, fit_by};
 use super::mle::fit_counts;
 use super::moments::fit_values;
 use super::normal::{cdf, quantile};
@@ -127,9 +128,7 @@ pub fn bootstrap_stripes(
         }
         fit_counts(&counts)
     };
-    let fits = replicates(settings, rows, &refit);
-    let jack = jackknife(rows, &refit);
-    Ok(summarise(fit, settings, band_im, &fits, &jack))
+    Ok(resample(fit, settings, band_im, rows, &refit))
 }
 
 /// Bootstraps an IDA (method-of-moments) fit over records; `band_im` as in [`bootstrap_stripes`].
@@ -146,10 +145,53 @@ pub fn bootstrap_ida(
         let sample: Vec<Option<Real>> = pick.iter().map(|&r| d.im_at_exceedance[r]).collect();
         fit_values(&sample)
     };
-    let rows = d.im_at_exceedance.len();
-    let fits = replicates(settings, rows, &refit);
-    let jack = jackknife(rows, &refit);
-    Ok(summarise(fit, settings, band_im, &fits, &jack))
+    Ok(resample(
+        fit,
+        settings,
+        band_im,
+        d.im_at_exceedance.len(),
+        &refit,
+    ))
+}
+
+/// Bootstraps an IDA fit with censoring bounds over records; `band_im` as in
+/// [`bootstrap_stripes`]. The estimator is chosen once, from the data
+/// ([`super::CensoredIdaData::method`]), and every replicate and jackknife fit uses it: data with a
+/// censored record refit every resample by the censored MLE, also a resample that happens to
+/// draw no censored record (mixing estimators would mix their biases into one interval). Without
+/// a censored record this is [`bootstrap_ida`] on the exceedance IMs (the same numbers).
+pub fn bootstrap_ida_censored(
+    d: &super::CensoredIdaData,
+    settings: &BootstrapSettings,
+    band_im: &[Real],
+) -> Result<Bootstrap, FragilityError> {
+    d.validate()?;
+    settings.validate()?;
+    check_positive("band_im", band_im)?;
+    let method = d.method();
+    let fit = fit_by(method, &d.records);
+    let refit = |pick: &[usize]| {
+        let sample: Vec<IdaRecord> = pick.iter().map(|&r| d.records[r]).collect();
+        fit_by(method, &sample)
+    };
+    Ok(resample(fit, settings, band_im, d.records.len(), &refit))
+}
+
+/// The bootstrap of `fit`: `refit` applied to the resamples and the leave-one-out sets of `rows`
+/// records, summarised.
+fn resample<F>(
+    fit: Fit,
+    settings: &BootstrapSettings,
+    band_im: &[Real],
+    rows: usize,
+    refit: &F,
+) -> Bootstrap
+where
+    F: Fn(&[usize]) -> Fit + Sync,
+{
+    let fits = replicates(settings, rows, refit);
+    let jack = jackknife(rows, refit);
+    summarise(fit, settings, band_im, &fits, &jack)
 }
 
 /// Fits of `settings.samples` resamples of `rows` records, in replicate order.

@@ -71,7 +71,7 @@ fn term(u: Real, n: Real, z: Real) -> Real {
 }
 
 /// `(λ(u), h(u))`: `λ = φ/Φ` and `h = d²/du² ln Φ = −λ (u + λ)`.
-fn mills(u: Real) -> (Real, Real) {
+pub(crate) fn mills(u: Real) -> (Real, Real) {
     if u < -5.0 {
         // λ(u) = w + d with w = −u and d = u + λ = 1/(w + 2/(w + 3/(w + …))).
         let w = -u;
@@ -133,7 +133,7 @@ pub(crate) fn fit_counts(counts: &[(Real, usize, usize)]) -> Fit {
     let m = s.iter().map(|c| c.0 * c.1).sum::<Real>() / n_tot;
     let pts: Vec<(Real, Real, Real)> = s.iter().map(|&(t, n, z)| (t - m, n, z)).collect();
     let range = pts[pts.len() - 1].0 - pts[0].0;
-    match newton(&pts, start(&pts)) {
+    match newton(|c| loglik(&pts, c), |c| derivs(&pts, c), start(&pts)) {
         // The probit changes by c₁·range across the stripes: below 1e-9 the fitted curve is flat
         // (equal fractions give c₁ = 0 exactly, rounding leaves ~1e-16).
         Some((c0, c1)) if c1 * range > 1e-9 => {
@@ -170,23 +170,36 @@ fn loglik(pts: &[(Real, Real, Real)], c: (Real, Real)) -> Real {
     pts.iter().map(|&(t, n, z)| term(c.0 + c.1 * t, n, z)).sum()
 }
 
-/// Newton's method with backtracking on the concave `ℓ(c₀, c₁)`; `None` when it does not converge.
-fn newton(pts: &[(Real, Real, Real)], mut c: (Real, Real)) -> Option<(Real, Real)> {
-    let mut l = loglik(pts, c);
+/// Gradient `g` and Hessian `h = [H₀₀, H₀₁, H₁₁]` of the stripe `ℓ(c₀, c₁)`.
+fn derivs(pts: &[(Real, Real, Real)], c: (Real, Real)) -> ([Real; 2], [Real; 3]) {
+    let (mut g, mut h) = ([0.0; 2], [0.0; 3]);
+    for &(t, n, z) in pts {
+        let u = c.0 + c.1 * t;
+        let (lp, hp) = mills(u);
+        let (lm, hm) = mills(-u);
+        let gu = z * lp - (n - z) * lm;
+        let hu = z * hp + (n - z) * hm;
+        g[0] += gu;
+        g[1] += gu * t;
+        h[0] += hu;
+        h[1] += hu * t;
+        h[2] += hu * t * t;
+    }
+    (g, h)
+}
+
+/// Newton's method with backtracking (Armijo) on a concave function of two parameters:
+/// `loglik(c)` its value (non-finite outside its domain: such trial points are rejected),
+/// `derivs(c)` its gradient and Hessian `[H₀₀, H₀₁, H₁₁]` (see the module documentation for the
+/// convergence test). `None` when it does not converge or the Hessian is not negative definite.
+pub(crate) fn newton<L, D>(loglik: L, derivs: D, mut c: (Real, Real)) -> Option<(Real, Real)>
+where
+    L: Fn((Real, Real)) -> Real,
+    D: Fn((Real, Real)) -> ([Real; 2], [Real; 3]),
+{
+    let mut l = loglik(c);
     for _ in 0..200 {
-        let (mut g, mut h) = ([0.0; 2], [0.0; 3]);
-        for &(t, n, z) in pts {
-            let u = c.0 + c.1 * t;
-            let (lp, hp) = mills(u);
-            let (lm, hm) = mills(-u);
-            let gu = z * lp - (n - z) * lm;
-            let hu = z * hp + (n - z) * hm;
-            g[0] += gu;
-            g[1] += gu * t;
-            h[0] += hu;
-            h[1] += hu * t;
-            h[2] += hu * t * t;
-        }
+        let (g, h) = derivs(c);
         let det = h[0] * h[2] - h[1] * h[1];
         if !(h[0] < 0.0 && det > 0.0 && det.is_finite()) {
             return None;
@@ -207,7 +220,7 @@ fn newton(pts: &[(Real, Real, Real)], mut c: (Real, Real)) -> Option<(Real, Real
         let mut accepted = false;
         for _ in 0..60 {
             let trial = (c.0 + a * d.0, c.1 + a * d.1);
-            let lt = loglik(pts, trial);
+            let lt = loglik(trial);
             if lt.is_finite() && lt >= l + 1e-4 * a * dec {
                 c = trial;
                 l = lt;

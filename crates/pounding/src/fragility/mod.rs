@@ -17,6 +17,10 @@
 //! * **Incremental dynamic analysis** ([`IdaData`], [`fit_ida`]): the IM at which each record
 //!   first exceeds the limit state; fitted by the method of moments on `ln IM` (Baker 2015, eq. 2–3),
 //!   see [`moments`].
+//! * **Truncated IDA** ([`CensoredIdaData`], [`fit_ida_censored`]): IDA records that never exceed
+//!   within the IMs run (right-censored) or exceed already at the first (left-censored), fitted by
+//!   the maximum likelihood of the censored lognormal, see [`censored`] (data without a censored
+//!   record keep the method of moments).
 //!
 //! Data without a finite maximum-likelihood estimate (no exceedance at all, exceedance everywhere,
 //! perfectly separated stripes, too few stripes, …) give [`Fit::NoFiniteMle`] with the reason,
@@ -25,12 +29,19 @@
 //! ([`bootstrap`]): seeded, and the same for any thread count.
 
 pub mod bootstrap;
+pub mod censored;
 pub mod mle;
 pub mod moments;
 pub mod normal;
 pub mod write;
 
-pub use bootstrap::{BandPoint, Bootstrap, BootstrapSettings, bootstrap_ida, bootstrap_stripes};
+pub use bootstrap::{
+    BandPoint, Bootstrap, BootstrapSettings, bootstrap_ida, bootstrap_ida_censored,
+    bootstrap_stripes,
+};
+pub use censored::{
+    CensoredIdaData, IdaRecord, censored_log_likelihood, censored_mle, fit_ida_censored,
+};
 pub use mle::{fit_stripes, stripe_log_likelihood};
 pub use moments::fit_ida;
 pub use write::{
@@ -195,21 +206,24 @@ pub enum NoMle {
     /// Fewer than two stripes with runs (stripes), or fewer than two records (IDA): two parameters
     /// cannot be estimated.
     TooFewPoints,
-    /// IDA records that never exceeded the limit state within the IMs run (censored): the method of
-    /// moments needs the IM of every record and is refused rather than biased.
+    /// IDA records that never exceeded the limit state within the IMs run (censored), given to
+    /// [`fit_ida`] without their bound: the method of moments needs the IM of every record and is
+    /// refused rather than biased. With their bounds ([`CensoredIdaData`]) they are fitted by the
+    /// censored MLE instead, as `pounding fragility` does.
     Censored {
         /// How many records are censored.
         count: usize,
     },
     /// IDA records that exceeded the limit state already at the first (smallest) IM run
     /// (left-censored): their IM at first exceedance is only an upper bound of the crossing, so
-    /// the method of moments would be biased high in θ and low in β. Refused rather than given
-    /// numbers; run the analysis from smaller scales.
+    /// the method of moments would be biased high in θ and low in β. No longer produced by the
+    /// workflow, which fits such records as left-censored ([`censored`]); kept for compatibility.
     ExceededAtFirst {
         /// How many records exceeded already at the first IM.
         count: usize,
     },
-    /// Every record exceeded at the same IM (IDA): `β = 0`.
+    /// Every record exceeded at the same IM (IDA; with censored records: and every censoring
+    /// bound on their side, see [`censored`]): `β = 0`.
     NoDispersion,
     /// The maximum is finite but its `θ` or `β` is beyond the floating-point range: the fitted
     /// curve is practically flat over the data (e.g. fractions 1/4, 1/4, 2/4, 0/1, 1/5 rising by

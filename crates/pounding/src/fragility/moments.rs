@@ -11,8 +11,8 @@
 //! **Censored records** (`None`: the record never exceeded within the IMs run) are not given a
 //! number: dropping them would bias `θ` low and setting them to the largest IM run would bias it
 //! too, so any censored record gives [`NoMle::Censored`] (all censored: [`NoMle::NoExceedance`]).
-//! Run the analysis to higher IM levels, or use multiple-stripe data and [`super::fit_stripes`],
-//! whose likelihood handles the runs that did not exceed. Fewer than two records give
+//! Give the censoring bounds ([`super::CensoredIdaData`]) to fit them by the censored likelihood
+//! ([`super::censored`]), or use multiple-stripe data and [`super::fit_stripes`]. Fewer than two records give
 //! [`NoMle::TooFewPoints`]; identical IMs give [`NoMle::NoDispersion`].
 
 use super::{Fit, FragilityError, IdaData, NoMle};

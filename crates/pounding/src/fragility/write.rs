@@ -8,8 +8,8 @@
 //! [`super::NoMle`] word; `bootstrap_failed` is `nan` / `null` when the data have no fit, as no
 //! replicate then means anything, and `0` without a bootstrap: `no_exceedance`, `all_exceeded`, `perfectly_separated`,
 //! `not_increasing`, `too_few_points`, `censored` (IDA records never exceeding within the IMs
-//! run), `exceeded_at_first` (IDA records exceeding already at the first IM: the IM at first
-//! exceedance is only an upper bound), `no_dispersion`, `out_of_range`, `not_converged`). The JSON adds the pointwise band of each bootstrap.
+//! run, given without their bound), `exceeded_at_first` (IDA records exceeding already at the first
+//! IM, no longer given by the workflow), `no_dispersion`, `out_of_range`, `not_converged`). The JSON adds the pointwise band of each bootstrap.
 
 use serde_json::{Value, json};
 
@@ -22,8 +22,16 @@ use crate::output::{csv_field, float_token, json_float};
 pub enum Method {
     /// Maximum likelihood on multiple-stripe counts (`mle_stripes`).
     MleStripes,
-    /// Method of moments on IDA data (`moments_ida`).
+    /// Method of moments on IDA data (`moments_ida`): IDA data without a censored record.
     MomentsIda,
+    /// Maximum likelihood of the censored lognormal on IDA data with censored records
+    /// (`mle_censored_ida`, [`super::censored`]); the counts are written to `fragility.json`.
+    MleCensoredIda {
+        /// Records never exceeding within the IMs run (right-censored).
+        right: usize,
+        /// Records exceeding already at the first IM (left-censored).
+        left: usize,
+    },
 }
 
 impl Method {
@@ -32,6 +40,7 @@ impl Method {
         match self {
             Method::MleStripes => "mle_stripes",
             Method::MomentsIda => "moments_ida",
+            Method::MleCensoredIda { .. } => "mle_censored_ida",
         }
     }
 }
@@ -92,6 +101,26 @@ impl FragilityRow {
             bootstrap,
             n_records: d.im_at_exceedance.len(),
             n_runs: d.im_at_exceedance.iter().flatten().count(),
+        })
+    }
+
+    /// The row of an IDA fit with censoring bounds: the estimator of
+    /// [`super::CensoredIdaData::method`], the fit (or the bootstrap's fit), `n_runs` = records
+    /// that exceeded (exactly or already at the first IM).
+    pub fn from_ida_censored(
+        limit_state: &str,
+        d: &super::CensoredIdaData,
+        bootstrap: Option<Bootstrap>,
+    ) -> Result<Self, super::FragilityError> {
+        let (method, fit) = super::fit_ida_censored(d)?;
+        let (exact, _, left) = d.counts();
+        Ok(FragilityRow {
+            limit_state: limit_state.to_string(),
+            method,
+            fit: bootstrap.as_ref().map_or(fit, |b| b.fit),
+            bootstrap,
+            n_records: d.records.len(),
+            n_runs: exact + left,
         })
     }
 }
@@ -226,8 +255,9 @@ fn csv_impl(rows: &[FragilityRow], study: Option<&StudyColumns>) -> String {
 }
 
 /// `fragility.json`: `{"fits": [...]}` with the CSV's keys per row (numbers or `null`), plus
-/// `censored` (IDA records without exceedance, when that is the status), `exceeded_at_first`
-/// (IDA records exceeding already at the first IM, when that is the status) and `band`: the bootstrap's
+/// `censored` (IDA records without exceedance: with [`Method::MleCensoredIda`] its right-censored
+/// count, or the count when that is the status), `exceeded_at_first` (IDA records exceeding already
+/// at the first IM: the left-censored count, or the count with that status) and `band`: the bootstrap's
 /// `[{"im", "p", "lo", "hi"}]` (empty without a bootstrap).
 pub fn fragility_json(rows: &[FragilityRow]) -> Value {
     json_impl(rows, None)
@@ -259,12 +289,14 @@ fn json_impl(rows: &[FragilityRow], study: Option<&StudyColumns>) -> Value {
                     })
                     .collect()
             });
-            let censored = match r.fit {
-                Fit::NoFiniteMle(super::NoMle::Censored { count }) => json!(count),
+            let censored = match (r.fit, r.method) {
+                (Fit::NoFiniteMle(super::NoMle::Censored { count }), _)
+                | (_, Method::MleCensoredIda { right: count, .. }) => json!(count),
                 _ => Value::Null,
             };
-            let at_first = match r.fit {
-                Fit::NoFiniteMle(super::NoMle::ExceededAtFirst { count }) => json!(count),
+            let at_first = match (r.fit, r.method) {
+                (Fit::NoFiniteMle(super::NoMle::ExceededAtFirst { count }), _)
+                | (_, Method::MleCensoredIda { left: count, .. }) => json!(count),
                 _ => Value::Null,
             };
             let mut o = json!({

@@ -35,9 +35,11 @@ fn boot() -> BootstrapSettings {
 }
 
 #[test]
-fn ida_records_exceeding_at_the_first_scale_get_no_numbers() {
+fn ida_records_exceeding_at_the_first_scale_are_left_censored_in_the_fit() {
     // Three records: two exceed only at larger scales, one already at the first scale (its IM at
-    // first exceedance is only an upper bound). Before the fix this was fitted as `ok`.
+    // first exceedance is only an upper bound). The first trial fitted it as exact (`ok`, biased);
+    // round 4 refused it (`exceeded_at_first`); now it is a left-censored record of the censored
+    // MLE (`mle_censored_ida`), never an exact observation.
     let rows = vec![
         run(0, 0, 1.0, false, 0.5),
         run(0, 1, 2.0, true, 1.5),
@@ -50,34 +52,42 @@ fn ida_records_exceeding_at_the_first_scale_get_no_numbers() {
         run(2, 2, 4.0, true, 3.0),
     ];
     let r = fit_limit_state("ls", &ida_plan(3), &rows, 0, &boot(), &[1.0, 2.0]).unwrap();
-    assert_eq!(r.fit, Fit::NoFiniteMle(NoMle::ExceededAtFirst { count: 1 }));
-    assert_eq!(r.fit.status(), "exceeded_at_first");
-    assert!(r.fit.params().is_none());
-    assert!(r.bootstrap.is_none());
+    use pounding::fragility::{CensoredIdaData, IdaRecord, Method, censored_mle};
+    let expect = CensoredIdaData {
+        records: vec![
+            IdaRecord::Exceeded(1.0 + (1.0 - 0.5) / (1.5 - 0.5)),
+            IdaRecord::Exceeded(2.0 + (1.0 - 0.95) / (1.1 - 0.95) * 2.0),
+            IdaRecord::ExceededAtFirst(1.0),
+        ],
+    };
+    assert_eq!(r.method, Method::MleCensoredIda { right: 0, left: 1 });
+    assert_eq!(r.fit, censored_mle(&expect).unwrap());
+    assert_eq!(r.fit.status(), "ok");
     let csv = pounding::fragility::fragility_csv(std::slice::from_ref(&r));
     let line = csv.lines().nth(1).unwrap();
-    assert!(
-        line.starts_with("ls,moments_ida,exceeded_at_first,nan,nan,"),
-        "{line}"
-    );
+    assert!(line.starts_with("ls,mle_censored_ida,ok,"), "{line}");
     let j = pounding::fragility::fragility_json(std::slice::from_ref(&r));
     assert_eq!(j["fits"][0]["exceeded_at_first"], 1);
-    assert!(j["fits"][0]["theta"].is_null());
+    assert_eq!(j["fits"][0]["censored"], 0);
+    assert!(j["fits"][0]["theta"].is_f64());
 
-    // All three exceed at the first scale (the trial's case): still no numbers.
+    // All three exceed at the first scale (the trial's case): no numbers (θ → 0).
     let all: Vec<RunRow> = (0..3)
         .flat_map(|a| {
             (0..3).map(move |b| run(a, b, [1.0, 2.0, 4.0][b] * (1.0 + a as f64), true, 2.0))
         })
         .collect();
     let r = fit_limit_state("ls", &ida_plan(3), &all, 0, &boot(), &[1.0]).unwrap();
-    assert_eq!(r.fit, Fit::NoFiniteMle(NoMle::ExceededAtFirst { count: 3 }));
+    assert_eq!(r.fit, Fit::NoFiniteMle(NoMle::AllExceeded));
+    assert!(r.fit.params().is_none());
 
-    // Control: the same records with record 2 crossing between scales 1 and 2 fit `ok`.
+    // Control: the same records with record 2 crossing between scales 1 and 2 keep the method
+    // of moments.
     let mut fixed = rows.clone();
     fixed[6] = run(2, 0, 1.0, false, 0.6);
     let r = fit_limit_state("ls", &ida_plan(3), &fixed, 0, &boot(), &[1.0]).unwrap();
     assert_eq!(r.fit.status(), "ok");
+    assert_eq!(r.method, Method::MomentsIda);
 }
 
 fn set_err(manifest: &str) -> String {

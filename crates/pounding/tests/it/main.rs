@@ -14,6 +14,7 @@ mod event_chain_checks;
 mod event_chain_sim;
 mod event_exact;
 mod fragility;
+mod fragility_censored;
 mod fragility_trial;
 mod fragility_workflow;
 mod fuzz;
