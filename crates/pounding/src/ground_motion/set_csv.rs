@@ -232,8 +232,8 @@ fn row(
     }
 }
 
-/// Line numbers of byte offsets met in increasing order (the CSV reader's own count is one short
-/// after a CRLF: it stops between `\r` and `\n`).
+/// Line numbers of byte offsets met in increasing order (the CSV reader's own count is short
+/// after a CRLF, where it stops between `\r` and `\n`, and after blank lines).
 struct Lines<'a> {
     text: &'a [u8],
     pos: usize,
@@ -244,7 +244,8 @@ impl Lines<'_> {
     /// The 1-based line of the row starting at byte `b` (a line break is `\n`, `\r\n` or `\r`).
     fn at(&mut self, b: u64) -> usize {
         let mut b = (b as usize).min(self.text.len());
-        if b > 0 && self.text[b - 1] == b'\r' && self.text.get(b) == Some(&b'\n') {
+        // the reader's offset is where it started: before the line breaks it skipped
+        while matches!(self.text.get(b), Some(b'\n' | b'\r')) {
             b += 1;
         }
         while self.pos < b {
