@@ -325,3 +325,19 @@ fn the_shipped_csv_example_lists_the_records_of_the_toml_example() {
     // a CSV manifest has no [set] table
     assert_eq!((c.name.as_str(), c.source.as_str()), ("", ""));
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(300))]
+    /// Any text of CSV-ish characters is read or refused, never a panic; a refusal names the file.
+    #[test]
+    fn any_csv_text_is_read_or_refused_naming_the_file(
+        body in "[,\"\r\n ax1.:b\u{feff}eé-]{0,60}",
+        header in proptest::sample::select(vec!["id,x", "id,x,y,dt,units,m", "x,id,dt", "", "id"]),
+    ) {
+        let text = format!("{header}\n{body}");
+        match RecordSet::from_csv(&text, "p.csv", Path::new("/nonexistent-dir")) {
+            Ok(s) => proptest::prop_assert!(!s.records.is_empty()),
+            Err(e) => proptest::prop_assert!(e.to_string().contains("p.csv"), "{e}"),
+        }
+    }
+}
