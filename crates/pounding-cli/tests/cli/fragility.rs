@@ -5,7 +5,7 @@
 use crate::{run_capture, scratch_dir};
 use std::path::Path;
 
-const SCENARIO: &str = r#"[bridge]
+pub(crate) const SCENARIO: &str = r#"[bridge]
 damping = "dashpots"
 gap = 0.02
 seat_length = 0.1

@@ -5,45 +5,6 @@
 use crate::{run_capture, scratch_dir};
 use std::path::Path;
 
-const SCENARIO: &str = r#"[bridge]
-damping = "dashpots"
-gap = 0.02
-seat_length = 0.1
-outer_seat_length = 0.1
-[[segment]]
-shape = "straight"
-L = 30.0
-mass = 1.0e6
-period_s = 1.2
-[[segment]]
-shape = "straight"
-L = 30.0
-mass = 1.2e6
-period_s = 0.5
-[ground_motion]
-scale_y = -1.0
-[time]
-dt = 2e-3
-duration = 1.5
-
-[fragility]
-records = "RECORDS"
-im = "sa"
-period_s = "model"
-levels_g = [0.3, 2.0]
-bootstrap = 20
-seed = 3
-
-[[limit_state]]
-name = "seat"
-kind = "unseating"
-
-[[limit_state]]
-name = "impulse"
-kind = "joint_force"
-capacity_ns = 2.0e5
-"#;
-
 const SET_TOML: &str = r#"[[record]]
 id = "NS"
 x = "builtin:ELC180"
@@ -72,7 +33,12 @@ pair,builtin:ELC180,builtin:ELC270,,,\r\n";
 
 fn study(name: &str, records: &str) -> std::path::PathBuf {
     let d = scratch_dir("mcsv", name);
-    std::fs::write(d.join("bridge.toml"), SCENARIO.replace("RECORDS", records)).unwrap();
+    // the bridge, stripes and limit states of cli::fragility (2 s runs, 3 levels)
+    let scenario = crate::fragility::SCENARIO.replace(
+        "records = \"set.toml\"",
+        &format!("records = \"{records}\""),
+    );
+    std::fs::write(d.join("bridge.toml"), scenario).unwrap();
     std::fs::write(d.join("set.toml"), SET_TOML).unwrap();
     std::fs::write(d.join("set.csv"), SET_CSV).unwrap();
     d
@@ -127,14 +93,14 @@ fn a_csv_manifest_gives_the_output_bytes_of_the_equivalent_toml() {
             .starts_with("record,azimuth,event,station,level_g,"),
         "{runs}"
     );
-    // 3 entries x 2 levels; the metadata cells as written in the spreadsheet
-    assert_eq!(lines.clone().count(), 6, "{runs}");
+    // 3 entries x 3 levels; the metadata cells as written in the spreadsheet
+    assert_eq!(lines.clone().count(), 9, "{runs}");
     assert!(
-        runs.contains("\nNS,180,\"Imperial Valley, 1940\",,0.3,"),
+        runs.contains("\nNS,180,\"Imperial Valley, 1940\",,0.2,"),
         "{runs}"
     );
-    assert!(runs.contains("\nEW,270,,007,0.3,"), "{runs}");
-    assert!(runs.contains("\npair,,,,0.3,"), "{runs}");
+    assert!(runs.contains("\nEW,270,,007,0.2,"), "{runs}");
+    assert!(runs.contains("\npair,,,,0.2,"), "{runs}");
 }
 
 /// Bad CSV manifests: (name, text, what stderr must hold).
