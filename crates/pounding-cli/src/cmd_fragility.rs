@@ -37,7 +37,8 @@ pub const FRAGILITY_OUTPUTS: &[&str] = &[
 pub struct Args {
     /// A bridge scenario (`[[segment]]`s) with a `[fragility]` table and `[[limit_state]]` tables.
     pub scenario: PathBuf,
-    /// The record-set manifest (TOML), instead of `[fragility] records`.
+    /// The record-set manifest (`.toml`, or `.csv` with a header row), instead of
+    /// `[fragility] records`.
     #[arg(long)]
     pub set: Option<PathBuf>,
     /// Output directory.
@@ -86,7 +87,8 @@ fn read(args: &Args) -> Result<Study> {
             .parent()
             .map_or_else(|| rel.clone(), |d| d.join(rel)),
         (None, None) => bail!(
-            "{}: no record set: give [fragility] records = \"MANIFEST.toml\" or --set MANIFEST",
+            "{}: no record set: give [fragility] records = \"MANIFEST.toml\" (or .csv) or \
+             --set MANIFEST",
             scenario.origin()
         ),
     };

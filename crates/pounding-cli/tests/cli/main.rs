@@ -79,6 +79,7 @@ mod harden_io;
 mod harden_round2;
 mod inputs;
 mod lcp;
+mod manifest_csv;
 mod motion;
 mod physics_check;
 mod record_misreads;

@@ -6,7 +6,7 @@
 //!
 //! ```toml
 //! [fragility]
-//! records = "suite.toml"        # manifest path relative to the scenario
+//! records = "suite.toml"        # manifest path relative to the scenario (.toml or .csv)
 //! im = "sa"                     # "pga" | "sa"
 //! period_s = "model"            # for sa: seconds, or "model" (the fundamental period)
 //! damping = 0.05                # for sa

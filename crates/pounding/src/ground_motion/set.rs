@@ -1,5 +1,10 @@
-//! Record sets: a TOML manifest listing ground-motion records, single or as horizontal pairs,
-//! with free metadata carried into the outputs of a fragility study.
+//! Record sets: a manifest listing ground-motion records, single or as horizontal pairs,
+//! with free metadata carried into the outputs of a fragility study. A `.toml` manifest holds
+//! `[[record]]` tables (below) or a `[synth]` table (`set_synth.rs`); a `.csv` manifest holds a
+//! header row and one row per record, its columns the keys below and metadata (`set_csv.rs`).
+//! Both are read into the same entries and checked and read by one function, so a CSV manifest
+//! gives the record set of the equivalent TOML manifest (without `[set]`). Any other extension
+//! is refused.
 //!
 //! ```toml
 //! [set]
@@ -39,6 +44,9 @@ use toml::Spanned;
 
 #[path = "set_synth.rs"]
 mod synth_set;
+
+#[path = "set_csv.rs"]
+mod csv_set;
 
 /// A metadata value of a record (`[record.meta]`).
 #[derive(Debug, Clone, PartialEq)]
@@ -108,6 +116,15 @@ pub enum SetError {
         /// The TOML reader's message.
         message: String,
     },
+    /// The manifest's extension is neither `.toml` nor `.csv`.
+    #[error(
+        "record set {path}: unknown manifest type: the extension must be .toml ([[record]] \
+         tables or [synth]) or .csv (a header row and one row per record)"
+    )]
+    Extension {
+        /// The path as given.
+        path: String,
+    },
     /// Bad values or unreadable record files: one line per problem, each naming the key and
     /// its line (and the record file).
     #[error("record set {origin}: {}", .problems.join("; "))]
@@ -154,25 +171,130 @@ struct Ctx<'a> {
     origin: &'a str,
     text: &'a str,
     dir: &'a Path,
+    /// A CSV manifest (locations name a column; messages speak of cells, not keys).
+    csv: bool,
+}
+
+/// Where a value of a manifest entry is: its line and, in a CSV manifest, its column (0-based).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Loc {
+    line: usize,
+    col: Option<usize>,
+}
+
+/// A value of a manifest entry and where it is.
+#[derive(Debug, Clone)]
+struct Val<T> {
+    v: T,
+    at: Loc,
+}
+
+/// One record entry as written in the manifest, whatever its syntax (`[[record]]` table or CSV
+/// row): the single path from which both kinds of manifest are checked and read ([`build`]).
+struct Entry {
+    id: Val<String>,
+    x: Val<String>,
+    y: Option<Val<String>>,
+    dt: Option<Val<Real>>,
+    units: Option<Val<String>>,
+    /// Metadata, checked (names and types) by the syntax's reader.
+    meta: Vec<(String, MetaValue)>,
+    /// What the syntax's reader refused in this entry's metadata.
+    meta_problems: Vec<String>,
 }
 
 impl Ctx<'_> {
-    fn at<T>(&self, i: usize, key: &str, s: &Spanned<T>) -> String {
-        let (line, _) = line_col(self.text, s.span().start);
-        format!("record[{i}].{key} ({}:{line})", self.origin)
+    /// `record[i].KEY (FILE:LINE)`; in a CSV manifest `KEY (FILE:LINE, column C)` (the line
+    /// of the row and the spreadsheet letter of the column).
+    fn at(&self, i: usize, key: &str, at: Loc) -> String {
+        match at.col {
+            Some(c) if self.csv => {
+                format!(
+                    "{key} ({}:{}, column {})",
+                    self.origin,
+                    at.line,
+                    column_name(c)
+                )
+            }
+            _ if self.csv => format!("{key} ({}:{})", self.origin, at.line),
+            _ => format!("record[{i}].{key} ({}:{})", self.origin, at.line),
+        }
     }
+
+    /// A TOML value with its line.
+    fn val<T: Clone>(&self, s: &Spanned<T>) -> Val<T> {
+        let (line, _) = line_col(self.text, s.span().start);
+        Val {
+            v: s.get_ref().clone(),
+            at: Loc { line, col: None },
+        }
+    }
+}
+
+/// A spreadsheet's name of the 0-based column `c`: `A`, …, `Z`, `AA`, …
+pub(crate) fn column_name(c: usize) -> String {
+    let mut n = c + 1;
+    let mut out = Vec::new();
+    while n > 0 {
+        out.push(b'A' + ((n - 1) % 26) as u8);
+        n = (n - 1) / 26;
+    }
+    out.reverse();
+    String::from_utf8(out).unwrap_or_default()
 }
 
 impl RecordSet {
     /// Reads the manifest `path` and every record it names (paths relative to its directory).
+    /// The syntax follows the extension: `.toml` ([`RecordSet::from_toml`]) or `.csv`
+    /// ([`RecordSet::from_csv`]), in any case; any other extension is refused.
     pub fn load(path: &Path) -> Result<Self, SetError> {
+        let ext = path
+            .extension()
+            .map(|e| e.to_string_lossy().to_ascii_lowercase());
+        let csv = match ext.as_deref() {
+            Some("toml") => false,
+            Some("csv") => true,
+            _ => {
+                return Err(SetError::Extension {
+                    path: path.display().to_string(),
+                });
+            }
+        };
         let text = crate::input::read_text(path, "record set", crate::input::SCENARIO_LIMIT)
             .map_err(|e| SetError::Read {
                 path: path.display().to_string(),
                 message: e.to_string(),
             })?;
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        Self::from_toml(&text, &path.display().to_string(), &dir)
+        let origin = path.display().to_string();
+        if csv {
+            Self::from_csv(&text, &origin, &dir)
+        } else {
+            Self::from_toml(&text, &origin, &dir)
+        }
+    }
+
+    /// Reads a CSV manifest from `text` (a header row naming the columns `id`, `x`, and
+    /// optionally `y`, `dt`, `units`; every other column is metadata; see `set_csv.rs`),
+    /// named `origin` in messages, record paths relative to `dir`. The record set is the one the
+    /// equivalent TOML manifest (without `[set]`) gives.
+    pub fn from_csv(text: &str, origin: &str, dir: &Path) -> Result<Self, SetError> {
+        let cx = Ctx {
+            origin,
+            text,
+            dir,
+            csv: true,
+        };
+        let (entries, problems) = csv_set::entries(&cx);
+        let records = build(&cx, &entries, problems).map_err(|problems| SetError::Invalid {
+            origin: origin.to_string(),
+            problems,
+        })?;
+        Ok(Self {
+            name: String::new(),
+            source: String::new(),
+            records,
+        })
     }
 
     /// Reads a manifest from `text`, named `origin` in messages, record paths relative to `dir`.
@@ -181,7 +303,12 @@ impl RecordSet {
             origin: origin.to_string(),
             message: crate::input::shorten_lines(&e.to_string(), 200),
         })?;
-        let cx = Ctx { origin, text, dir };
+        let cx = Ctx {
+            origin,
+            text,
+            dir,
+            csv: false,
+        };
         let set = m.set.map(|s| s.0).unwrap_or_default();
         if let Some(sy) = &m.synth {
             let (line, _) = line_col(text, sy.span().start);
@@ -215,35 +342,32 @@ impl RecordSet {
                     .to_string(),
             );
         }
-        let mut cache: BTreeMap<(String, Option<String>, String), Result<Record, String>> =
-            BTreeMap::new();
-        let mut ids: BTreeMap<String, usize> = BTreeMap::new();
-        let mut records = Vec::new();
-        for (i, r) in m.record.iter().enumerate() {
-            let r = r.get_ref();
-            let id = r.id.get_ref().trim().to_string();
-            if id.is_empty() || id.contains(['\n', '\r']) {
-                problems.push(format!(
-                    "{}: must be non-empty text on one line",
-                    cx.at(i, "id", &r.id)
-                ));
-            } else if let Some(j) = ids.insert(id.clone(), i) {
-                problems.push(format!(
-                    "{}: duplicate id {id:?} (also record[{j}])",
-                    cx.at(i, "id", &r.id)
-                ));
-            }
-            match entry(&cx, i, r, &mut cache) {
-                Ok(rec) => records.push(rec),
-                Err(mut p) => problems.append(&mut p),
-            }
-        }
-        if !problems.is_empty() {
-            return Err(SetError::Invalid {
-                origin: origin.to_string(),
-                problems,
-            });
-        }
+        let entries: Vec<Entry> = m
+            .record
+            .iter()
+            .enumerate()
+            .map(|(i, r)| {
+                let r = r.get_ref();
+                let mut meta_problems = Vec::new();
+                let meta = match &r.meta {
+                    Some(t) => meta_values(&cx, i, t, &mut meta_problems),
+                    None => Vec::new(),
+                };
+                Entry {
+                    id: cx.val(&r.id),
+                    x: cx.val(&r.x),
+                    y: r.y.as_ref().map(|s| cx.val(s)),
+                    dt: r.dt.as_ref().map(|s| cx.val(s)),
+                    units: r.units.as_ref().map(|s| cx.val(s)),
+                    meta,
+                    meta_problems,
+                }
+            })
+            .collect();
+        let records = build(&cx, &entries, problems).map_err(|problems| SetError::Invalid {
+            origin: origin.to_string(),
+            problems,
+        })?;
         Ok(Self {
             name: set.name.unwrap_or_default(),
             source: set.source.unwrap_or_default(),
@@ -262,59 +386,106 @@ impl RecordSet {
     }
 }
 
+/// The entries checked and their records read (each file once), after the `problems` the
+/// syntax's reader found; every entry is read before the problems are reported.
+fn build(
+    cx: &Ctx,
+    entries: &[Entry],
+    mut problems: Vec<String>,
+) -> Result<Vec<SetRecord>, Vec<String>> {
+    let mut cache = Cache::new();
+    let mut ids: BTreeMap<String, usize> = BTreeMap::new();
+    let mut records = Vec::new();
+    for (i, r) in entries.iter().enumerate() {
+        let id = r.id.v.trim().to_string();
+        if id.is_empty() || id.contains(['\n', '\r']) {
+            problems.push(format!(
+                "{}: must be non-empty text on one line",
+                cx.at(i, "id", r.id.at)
+            ));
+        } else if let Some(j) = ids.insert(id.clone(), i) {
+            problems.push(format!(
+                "{}: duplicate id {id:?} (also {})",
+                cx.at(i, "id", r.id.at),
+                if cx.csv {
+                    format!("line {}", entries[j].id.at.line)
+                } else {
+                    format!("record[{j}]")
+                }
+            ));
+        }
+        match entry(cx, i, r, &mut cache) {
+            Ok(rec) => records.push(rec),
+            Err(mut p) => problems.append(&mut p),
+        }
+    }
+    if problems.is_empty() {
+        Ok(records)
+    } else {
+        Err(problems)
+    }
+}
+
 type Cache = BTreeMap<(String, Option<String>, String), Result<Record, String>>;
 
-/// One `[[record]]` entry: its components read (through `cache`), checked and its metadata.
-fn entry(cx: &Ctx, i: usize, r: &RecordSec, cache: &mut Cache) -> Result<SetRecord, Vec<String>> {
+/// One entry: its components read (through `cache`), checked and its metadata.
+fn entry(cx: &Ctx, i: usize, r: &Entry, cache: &mut Cache) -> Result<SetRecord, Vec<String>> {
     let mut problems = Vec::new();
     let mut opts = ReadOptions {
-        dt_from: format!("record[{i}].dt"),
+        dt_from: if cx.csv {
+            "the dt cell".into()
+        } else {
+            format!("record[{i}].dt")
+        },
         units_from: format!("record[{i}].units"),
         ..ReadOptions::default()
     };
     if let Some(u) = &r.units {
-        match AccelUnits::from_name(u.get_ref()) {
+        match AccelUnits::from_name(&u.v) {
             Some(units) => opts.units = units,
             None => problems.push(format!(
                 "{}: unknown units {:?} (use \"g\" or \"m/s2\")",
-                cx.at(i, "units", u),
-                u.get_ref()
+                cx.at(i, "units", u.at),
+                u.v
             )),
         }
     } else {
         opts.units_from = "units default".into();
     }
     if let Some(dt) = &r.dt {
-        let v = *dt.get_ref();
+        let v = dt.v;
         if !(v.is_finite() && v > 0.0) {
             problems.push(format!(
                 "{}: invalid dt = {}: must be finite and > 0",
-                cx.at(i, "dt", dt),
+                cx.at(i, "dt", dt.at),
                 crate::output::float_token(v)
             ));
         } else {
             opts.dt = Some(v);
         }
     }
-    let meta = match &r.meta {
-        Some(t) => meta_values(cx, i, t, &mut problems),
-        None => Vec::new(),
-    };
+    problems.extend(r.meta_problems.iter().cloned());
     if !problems.is_empty() {
         return Err(problems);
     }
-    let mut read = |key: &str, s: &Spanned<String>| -> Option<Record> {
+    let mut read = |key: &str, s: &Val<String>| -> Option<Record> {
         let k = (
-            s.get_ref().clone(),
+            s.v.clone(),
             opts.dt.map(|d| d.to_string()),
             opts.units_from.clone(),
         );
         let got = cache
             .entry(k)
-            .or_insert_with(|| read_component(cx.dir, s.get_ref(), &opts))
+            .or_insert_with(|| read_component(cx.dir, &s.v, &opts))
             .clone();
-        got.map_err(|e| problems.push(format!("{}: {}", cx.at(i, key, s), in_manifest(&e))))
-            .ok()
+        got.map_err(|e| {
+            problems.push(format!(
+                "{}: {}",
+                cx.at(i, key, s.at),
+                in_manifest(&e, cx.csv)
+            ))
+        })
+        .ok()
     };
     let x = read("x", &r.x);
     let y = r.y.as_ref().map(|y| (y, read("y", y)));
@@ -330,7 +501,7 @@ fn entry(cx: &Ctx, i: usize, r: &RecordSec, cache: &mut Cache) -> Result<SetReco
             {
                 problems.push(format!(
                     "{}: the pair's components have different sample intervals: x {} s, y {} s",
-                    cx.at(i, "y", ys),
+                    cx.at(i, "y", ys.at),
                     crate::output::float_token(a),
                     crate::output::float_token(b)
                 ));
@@ -340,10 +511,10 @@ fn entry(cx: &Ctx, i: usize, r: &RecordSec, cache: &mut Cache) -> Result<SetReco
         }
     };
     Ok(SetRecord {
-        id: r.id.get_ref().trim().to_string(),
+        id: r.id.v.trim().to_string(),
         x,
         y,
-        meta,
+        meta: r.meta.clone(),
     })
 }
 
@@ -371,18 +542,8 @@ fn meta_values(
                 continue;
             }
         };
-        if k.is_empty() || k.contains([',', '"', '\n', '\r']) {
-            problems.push(format!(
-                "{}: a metadata name becomes a column: no commas, quotes or line breaks",
-                at(k)
-            ));
-            continue;
-        }
-        if let Some(why) = reserved_column(k) {
-            problems.push(format!(
-                "{}: {why}; rename the metadata (e.g. meta_{k})",
-                at(k)
-            ));
+        if let Some(why) = meta_name_problem(k) {
+            problems.push(format!("{}: {why}", at(k)));
             continue;
         }
         out.push((k.clone(), value));
@@ -391,19 +552,38 @@ fn meta_values(
     out
 }
 
+/// Why `k` cannot name metadata (it becomes a column of `runs.csv`), if it cannot: empty, with
+/// commas, quotes or line breaks, or repeating a column of `runs.csv`.
+fn meta_name_problem(k: &str) -> Option<String> {
+    if k.is_empty() || k.contains([',', '"', '\n', '\r']) {
+        return Some(
+            "a metadata name becomes a column: no commas, quotes or line breaks".to_string(),
+        );
+    }
+    reserved_column(k).map(|why| format!("{why}; rename the metadata (e.g. meta_{k})"))
+}
+
 /// A record reader's message as it applies inside a manifest: the sample interval of a
-/// one-column file is the entry's `dt` key there, not the scenario's `record_dt` or the
-/// `--record-dt` flag.
-fn in_manifest(message: &str) -> String {
+/// one-column file is the entry's `dt` key (a TOML manifest) or cell (a CSV manifest) there,
+/// not the scenario's `record_dt` or the `--record-dt` flag.
+fn in_manifest(message: &str, csv: bool) -> String {
+    let (given, by) = if csv {
+        (
+            "a dt cell in this row of the manifest",
+            "given by the row's dt cell (in a CSV manifest)",
+        )
+    } else {
+        (
+            "dt = SECONDS in this [[record]] table of the manifest",
+            "given by the entry's dt key (in a manifest)",
+        )
+    };
     message
         .replace(
             "record_dt = SECONDS in [ground_motion] or --record-dt SECONDS",
-            "dt = SECONDS in this [[record]] table of the manifest",
+            given,
         )
-        .replace(
-            "given by record_dt (scenario) or --record-dt",
-            "given by the entry's dt key (in a manifest)",
-        )
+        .replace("given by record_dt (scenario) or --record-dt", by)
 }
 
 /// The output columns of `runs.csv` that a metadata name must not repeat (a table reader would

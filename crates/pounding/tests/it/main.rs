@@ -30,6 +30,7 @@ mod impact_report;
 mod impact_split;
 mod lcp;
 mod lemke_degenerate;
+mod manifest_csv;
 mod physics_check;
 mod props;
 mod record_formats;

@@ -1,0 +1,343 @@
+//! Record-set manifests in CSV (issue 13): the same record set as the equivalent TOML manifest
+//! (whatever the line endings, byte-order mark, quoting, blank rows and spaces a spreadsheet
+//! writes), metadata cells kept as written, and every bad input refused naming the file, the
+//! line and the column.
+
+use pounding::ground_motion::set::{MetaValue, RecordSet};
+use std::path::{Path, PathBuf};
+
+fn scratch(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("pounding-mcsv-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    // a one-column file (needs dt) and a CSV `t, a` pair with equal sample intervals
+    std::fs::write(d.join("a.txt"), "0.0\n1.0\n-2.0\n0.5\n").unwrap();
+    std::fs::write(d.join("b.csv"), "0,0\n0.02,0.1\n0.04,-0.2\n").unwrap();
+    std::fs::write(d.join("c.csv"), "0,0\n0.02,0.3\n0.04,0.1\n").unwrap();
+    d
+}
+
+/// A TOML manifest without `[set]` and its CSV equivalent (as a spreadsheet saves it).
+const TOML: &str = r#"[[record]]
+id = "A"
+x = "a.txt"
+dt = 0.01
+units = "m/s2"
+[record.meta]
+event = "Imperial Valley, 1940"
+magnitude = 6.95
+station = "007"
+soft = true
+
+[[record]]
+id = "P"
+x = "builtin:ELC180"
+y = "builtin:ELC270"
+[record.meta]
+magnitude = 7
+note = 'say "hi"' 
+
+[[record]]
+id = "Q"
+x = "b.csv"
+y = "c.csv"
+units = "g"
+[record.meta]
+magnitude = 6.5
+"#;
+
+const CSV: &str = "id,x,y,dt,units,event,magnitude,station,soft,note\n\
+A,a.txt,,0.01,m/s2,\"Imperial Valley, 1940\",6.95,007,true,\n\
+P,builtin:ELC180,builtin:ELC270,,,,7,,,\"say \"\"hi\"\"\"\n\
+Q,b.csv,c.csv,,g,,6.5,,,\n";
+
+fn load(d: &Path, name: &str, text: &str) -> RecordSet {
+    std::fs::write(d.join(name), text).unwrap();
+    RecordSet::load(&d.join(name)).unwrap_or_else(|e| panic!("{name}: {e}"))
+}
+
+#[test]
+fn a_csv_manifest_gives_the_record_set_of_the_equivalent_toml() {
+    let d = scratch("same");
+    let toml = load(&d, "set.toml", TOML);
+    assert_eq!(toml.records.len(), 3);
+    // what a spreadsheet may write: CRLF, a byte-order mark, blank rows (empty or all commas),
+    // spaces around cells, columns in another order, an upper-case extension
+    let crlf = CSV.replace('\n', "\r\n");
+    let bom = format!("\u{feff}{crlf}");
+    let blank = CSV.replacen("\nP,", "\n,,,,,,,,,\n\nP,", 1);
+    let spaced = " id , x ,y, dt,units ,event,magnitude , station,soft,note \n\
+        A , a.txt,, 0.01 ,m/s2,\"Imperial Valley, 1940\", 6.95,007 , true,\n\
+        P, builtin:ELC180 ,builtin:ELC270,  ,,,7,,,\"say \"\"hi\"\"\"\n\
+        Q,b.csv , c.csv,, g ,,6.5,,,\n"
+        .to_string();
+    let reordered = "magnitude,units,dt,y,x,id,station,event,soft,note\n\
+        6.95,m/s2,0.01,,a.txt,A,007,\"Imperial Valley, 1940\",true,\n\
+        7,,,builtin:ELC270,builtin:ELC180,P,,,,\"say \"\"hi\"\"\"\n\
+        6.5,g,,c.csv,b.csv,Q,,,,\n";
+    for (name, text) in [
+        ("plain.csv", CSV.to_string()),
+        ("crlf.csv", crlf),
+        ("bom.csv", bom),
+        ("blank.csv", blank),
+        ("spaced.csv", spaced),
+        ("reordered.csv", reordered.to_string()),
+        ("upper.CSV", CSV.to_string()),
+    ] {
+        let csv = load(&d, name, &text);
+        assert_eq!(csv, toml, "{name}");
+    }
+    // the values themselves (not only equal to TOML's): the quoted comma and quote survive,
+    // `007` stays text, an empty cell is no value
+    let a = &toml.records[0];
+    assert_eq!(a.x.values(), &[0.0, 1.0, -2.0, 0.5]);
+    assert_eq!(a.x.dt(), Some(0.01));
+    assert!(a.meta.contains(&(
+        "event".into(),
+        MetaValue::Text("Imperial Valley, 1940".into())
+    )));
+    assert!(
+        a.meta
+            .contains(&("station".into(), MetaValue::Text("007".into())))
+    );
+    assert!(a.meta.contains(&("soft".into(), MetaValue::Bool(true))));
+    assert_eq!(toml.records[1].meta.len(), 2);
+    assert_eq!(
+        toml.meta_keys(),
+        vec!["event", "magnitude", "note", "soft", "station"]
+    );
+    // a pair read with units g: times g0
+    let q = &toml.records[2];
+    assert!((q.x.values()[1] - 0.1 * pounding::ground_motion::G0).abs() < 1e-12);
+    assert!(q.y.is_some());
+}
+
+#[test]
+fn csv_metadata_cells_keep_their_text() {
+    let d = scratch("cells");
+    let s = load(
+        &d,
+        "m.csv",
+        "id,x,m\nA,builtin:ELC180,6.90\nB,builtin:ELC180,6.9\nC,builtin:ELC180,42\n\
+         D,builtin:ELC180,false\nE,builtin:ELC180,1e3\nF,builtin:ELC180,nan\nG,builtin:ELC180,-0\n",
+    );
+    let cells: Vec<String> = s.records.iter().map(|r| r.meta[0].1.csv_cell()).collect();
+    // every runs.csv cell is the manifest's cell as written
+    assert_eq!(cells, ["6.90", "6.9", "42", "false", "1e3", "nan", "-0"]);
+    assert_eq!(s.records[1].meta[0].1, MetaValue::Number(6.9));
+    assert_eq!(s.records[2].meta[0].1, MetaValue::Integer(42));
+    assert_eq!(s.records[0].meta[0].1, MetaValue::Text("6.90".into()));
+}
+
+fn err(name: &str, text: &str) -> String {
+    let d = scratch(&format!("err-{name}"));
+    let p = d.join(name);
+    std::fs::write(&p, text).unwrap();
+    RecordSet::load(&p).unwrap_err().to_string()
+}
+
+/// Each bad CSV manifest and the pieces its message must hold (file:line, column, reason).
+pub const BAD: &[(&str, &str, &[&str])] = &[
+    (
+        "look-alike column",
+        "id,x,Units\nA,builtin:ELC180,g\n",
+        &[
+            "set.csv:1, column C",
+            "\"Units\"",
+            "looks like",
+            "\"units\"",
+        ],
+    ),
+    (
+        "unit for units",
+        "id,x,unit\nA,a.txt,g\n",
+        &["set.csv:1, column C", "\"unit\"", "meta_unit"],
+    ),
+    (
+        "format column",
+        "id,x,format\nA,a.txt,at2\n",
+        &["set.csv:1, column C", "format is found from its file"],
+    ),
+    (
+        "missing x column",
+        "id,file_name\nA,a.txt\n",
+        &["set.csv:1", "no \"x\" column"],
+    ),
+    (
+        "missing id column",
+        "x\nbuiltin:ELC180\n",
+        &["set.csv:1", "no \"id\" column"],
+    ),
+    (
+        "semicolons",
+        "id;x\nA;builtin:ELC180\n",
+        &["set.csv:1", "no \"id\" column", "semicolons"],
+    ),
+    (
+        "neither x nor y",
+        "id,x,y\nA,builtin:ELC180,\nB,,\n",
+        &["x (set.csv:3, column B): empty"],
+    ),
+    (
+        "y without x",
+        "id,x,y\nA,,builtin:ELC270\n",
+        &["x (set.csv:2, column B)", "y is given"],
+    ),
+    (
+        "non-numeric dt",
+        "id,x,dt\nA,a.txt,0.01\nB,a.txt,abc\n",
+        &["dt (set.csv:3, column C): not a number: \"abc\""],
+    ),
+    (
+        "zero dt",
+        "id,x,dt\nA,a.txt,0\n",
+        &["dt (set.csv:2, column C): invalid dt = 0"],
+    ),
+    (
+        "unknown units",
+        "id,x,units\nA,a.txt,gal\n",
+        &["units (set.csv:2, column C): unknown units \"gal\""],
+    ),
+    (
+        "duplicate ids",
+        "id,x\nA,builtin:ELC180\nB,builtin:ELC180\nA,builtin:ELC270\n",
+        &["id (set.csv:4, column A): duplicate id \"A\" (also line 2)"],
+    ),
+    (
+        "empty id",
+        "x,id\nbuiltin:ELC180,\n",
+        &["id (set.csv:2, column B): must be non-empty"],
+    ),
+    ("header only", "id,x,y\r\n", &["set.csv", "no records"]),
+    ("empty file", "", &["set.csv", "empty file"]),
+    (
+        "ragged row",
+        "id,x,magnitude\nA,builtin:ELC180,6.9\nB,builtin:ELC270\n",
+        &[
+            "set.csv:3, column C: the row has 2 cells, the header 3",
+            "ragged",
+        ],
+    ),
+    (
+        "ragged long row",
+        "id,x\r\nA,builtin:ELC180,6.9\r\n",
+        &["set.csv:2, column C: the row has 3 cells, the header 2"],
+    ),
+    (
+        "reserved metadata",
+        "id,x,status\nA,builtin:ELC180,ok\n",
+        &[
+            "set.csv:1, column C",
+            "\"status\" is an output column of runs.csv",
+        ],
+    ),
+    (
+        "limit-state metadata",
+        "id,x,seat_ratio\nA,builtin:ELC180,1\n",
+        &["set.csv:1, column C", "ending in _ratio"],
+    ),
+    (
+        "repeated column",
+        "id,x,m,m\nA,builtin:ELC180,1,2\n",
+        &["set.csv:1, column D", "repeats column C"],
+    ),
+    (
+        "unnamed column with a value",
+        "id,x,\nA,builtin:ELC180,\nB,builtin:ELC180,7\n",
+        &["set.csv:3, column C", "no name in the header"],
+    ),
+    (
+        "missing files, all named",
+        "id,x,y\nA,nope1.AT2,\nB,builtin:ELC180,nope2.AT2\n",
+        &[
+            "x (set.csv:2, column B)",
+            "nope1.AT2",
+            "y (set.csv:3, column C)",
+            "nope2.AT2",
+        ],
+    ),
+    (
+        "dt for a built-in record",
+        "id,x,dt\nA,builtin:ELC180,0.01\n",
+        &[
+            "x (set.csv:2, column B)",
+            "the dt cell applies to one-column files",
+        ],
+    ),
+    (
+        "one-column file without dt",
+        "id,x\nA,a.txt\n",
+        &["x (set.csv:2, column B)", "dt cell"],
+    ),
+    (
+        "a pair with different sample intervals",
+        "id,x,y\nA,b.csv,d.csv\n",
+        &["y (set.csv:2, column C)", "different sample intervals"],
+    ),
+    (
+        "line after blank lines",
+        "id,x\n\n,\n\nA,\n",
+        &["x (set.csv:5, column B): empty"],
+    ),
+    (
+        "line after a quoted line break, CRLF",
+        "id,x,note\r\nA,builtin:ELC180,\"two\r\nlines\"\r\nB,,\r\n",
+        &["x (set.csv:4, column B): empty"],
+    ),
+];
+
+#[test]
+fn csv_manifest_errors_name_the_file_line_and_column() {
+    for (what, text, needles) in BAD {
+        let d = scratch(&format!("bad-{}", what.replace(' ', "-")));
+        std::fs::write(d.join("d.csv"), "0,0\n0.01,1\n0.02,0\n").unwrap();
+        std::fs::write(d.join("set.csv"), text).unwrap();
+        let e = RecordSet::load(&d.join("set.csv")).unwrap_err().to_string();
+        // the manifest as the user named it (here: a path in a scratch directory)
+        let e = e.replace(&format!("{}/", d.display()), "");
+        for n in *needles {
+            assert!(e.contains(n), "{what}: {n:?} not in {e}");
+        }
+    }
+}
+
+#[test]
+fn a_manifest_of_another_type_is_refused_not_guessed() {
+    for name in ["set.txt", "set", "set.tsv", "set.toml.bak"] {
+        let e = err(name, "id,x\nA,builtin:ELC180\n");
+        assert!(
+            e.contains(name) && e.contains("unknown manifest type") && e.contains(".csv"),
+            "{name}: {e}"
+        );
+    }
+    // a CSV text in a .toml file is read as TOML (and refused by the TOML reader)
+    let e = err("set.toml", "id,x\nA,builtin:ELC180\n");
+    assert!(e.contains("invalid record set"), "{e}");
+}
+
+#[test]
+fn the_shipped_csv_example_lists_the_records_of_the_toml_example() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/fragility");
+    let t = RecordSet::load(&dir.join("el-centro.toml")).unwrap();
+    let c = RecordSet::load(&dir.join("el-centro.csv")).unwrap();
+    assert_eq!(c.records.len(), 3);
+    assert_eq!(c.records, t.records);
+    // a CSV manifest has no [set] table
+    assert_eq!((c.name.as_str(), c.source.as_str()), ("", ""));
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(300))]
+    /// Any text of CSV-ish characters is read or refused, never a panic; a refusal names the file.
+    #[test]
+    fn any_csv_text_is_read_or_refused_naming_the_file(
+        body in "[,\"\r\n ax1.:b\u{feff}eé-]{0,60}",
+        header in proptest::sample::select(vec!["id,x", "id,x,y,dt,units,m", "x,id,dt", "", "id"]),
+    ) {
+        let text = format!("{header}\n{body}");
+        match RecordSet::from_csv(&text, "p.csv", Path::new("/nonexistent-dir")) {
+            Ok(s) => proptest::prop_assert!(!s.records.is_empty()),
+            Err(e) => proptest::prop_assert!(e.to_string().contains("p.csv"), "{e}"),
+        }
+    }
+}
