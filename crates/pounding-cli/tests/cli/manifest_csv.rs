@@ -31,7 +31,7 @@ NS,builtin:ELC180,,180,\"Imperial Valley, 1940\",\r\n\
 EW,builtin:ELC270,,270,,007\r\n\
 pair,builtin:ELC180,builtin:ELC270,,,\r\n";
 
-fn study(name: &str, records: &str) -> std::path::PathBuf {
+fn study(name: &str, records: &str) -> crate::scratch::Scratch {
     let d = scratch_dir("mcsv", name);
     // the bridge, stripes and limit states of cli::fragility (2 s runs, 3 levels)
     let scenario = crate::fragility::SCENARIO.replace(

@@ -4,12 +4,10 @@
 //! line and the column.
 
 use pounding::ground_motion::set::{MetaValue, RecordSet};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-fn scratch(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("pounding-mcsv-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
+fn scratch(name: &str) -> crate::scratch::Scratch {
+    let d = crate::scratch::scratch_dir("mcsv", name);
     // a one-column file (needs dt) and a CSV `t, a` pair with equal sample intervals
     std::fs::write(d.join("a.txt"), "0.0\n1.0\n-2.0\n0.5\n").unwrap();
     std::fs::write(d.join("b.csv"), "0,0\n0.02,0.1\n0.04,-0.2\n").unwrap();
