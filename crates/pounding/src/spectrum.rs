@@ -302,6 +302,9 @@ fn rotated_peaks(osc: &Oscillator, tables: &mut Tables, sx: &[Step], sy: &[Step]
     peaks
 }
 
+/// `(u, u̇)` at one instant.
+type State = (Real, Real);
+
 /// Raises `peaks[k]` to `max |c u_x + s u_y|` over one stretch for every angle `(c, s)` of
 /// `angles`, from the samples `(u, u̇)` of both components at `taus` (`τ_0` included). A
 /// bracketed zero of the rotated `u̇` is bisected on the combined piece unless the bound of
@@ -311,7 +314,7 @@ fn angle_peaks(
     osc: &Oscillator,
     angles: &[(Real, Real)],
     taus: &[Real],
-    (ux, uy): (&[(Real, Real)], &[(Real, Real)]),
+    (ux, uy): (&[State], &[State]),
     (px, py): (&Piece, &Piece),
     bounds: Option<(&Bounds, &Bounds)>,
     peaks: &mut [Real],

@@ -118,8 +118,8 @@ pub(super) struct Table {
     rows: Vec<Row>,
     /// `true` if the kernel evaluates this `h` in its series form.
     series: bool,
-    /// `1/h` (for bounds only).
-    inv_h: Real,
+    /// The quick filter's coefficients ([`Bounds::filter`]).
+    filter: [Real; 5],
 }
 
 impl Table {
@@ -131,12 +131,14 @@ impl Table {
             taus[m] = h;
             rows = taus[1..].iter().map(|&t| Row::new(osc, t, h)).collect();
         }
+        let series = osc.is_series(h);
+        let d_max = taus.windows(2).map(|w| w[1] - w[0]).fold(0.0, Real::max);
         Table {
             h,
             taus,
             rows,
-            series: osc.is_series(h),
-            inv_h: 1.0 / h,
+            series,
+            filter: Bounds::filter(osc, h, series, d_max),
         }
     }
 
@@ -158,6 +160,13 @@ impl Table {
     /// The rows at `τ_1 … τ_m` (empty for a long interval).
     pub(super) fn rows(&self) -> &[Row] {
         &self.rows
+    }
+
+    /// `k · x`: at least `W d²/8 + δ` of [`Bounds`] on each sub-interval of the step.
+    #[inline(always)]
+    fn excess(&self, s: &Step) -> Real {
+        let (k, x) = (&self.filter, Bounds::sizes(s));
+        (k[0] * x[0] + k[1] * x[1]) + (k[2] * x[2] + k[3] * x[3]) + k[4] * x[4]
     }
 
     /// `(u(h), u̇(h))` from the step's start: the last row, or the kernel for a long interval.
@@ -300,20 +309,34 @@ impl Bounds {
     /// in the Nigam–Jennings form, the piece's `|c₁| + |c₂| + |p₀| + |p₁| h` (bounded here
     /// without division: the same magnitudes as [`Oscillator::piece`]).
     pub(super) fn new(osc: &Oscillator, s: &Step, t: &Table) -> Self {
-        let (w, z, h) = (osc.omega(), osc.zeta(), t.h);
-        let alpha = s.a0.abs().max(s.a1.abs());
+        let w = osc.omega();
         let e = (s.v0 * s.v0 + (w * s.u0) * (w * s.u0)).sqrt();
-        let u = e / w + alpha * h * h / 2.0;
+        Bounds::of(osc, t.h, t.series, e, Bounds::sizes(s))
+    }
+
+    /// `x = (|u₀|, |u̇₀|, α, |a₀|, |a₁ − a₀|)`, the sizes the bounds are linear in.
+    #[inline(always)]
+    fn sizes(s: &Step) -> [Real; 5] {
+        let (a0, a1) = (s.a0.abs(), s.a1.abs());
+        [s.u0.abs(), s.v0.abs(), a0.max(a1), a0, (s.a1 - s.a0).abs()]
+    }
+
+    /// The bounds from the energy `E` and the sizes `x` on an interval of length `h`
+    /// (`series`: in the kernel's series form). Linear in `(E, x)` with non-negative
+    /// coefficients.
+    fn of(osc: &Oscillator, h: Real, series: bool, e: Real, x: [Real; 5]) -> Self {
+        let (w, z) = (osc.omega(), osc.zeta());
+        let [u0, v0, alpha, a0, da] = x;
+        let [iw2, iwd] = osc.reciprocals();
+        let u = e * (w * iw2) + alpha * h * h / 2.0;
         let v = e + alpha * h;
         let acc = alpha + 2.0 * z * w * v + w * w * u;
         let mut scale = u + h * v;
-        if !t.series {
-            let [iw2, iwd] = osc.reciprocals();
-            let slope = (s.a1 - s.a0).abs() * t.inv_h;
-            let p1 = slope * iw2;
-            let p0 = (s.a0.abs() + 2.0 * z * w * p1) * iw2;
-            let c1 = s.u0.abs() + p0;
-            let c2 = (s.v0.abs() + p1 + z * w * c1) * iwd;
+        if !series {
+            let p1 = da / h * iw2;
+            let p0 = (a0 + 2.0 * z * w * p1) * iw2;
+            let c1 = u0 + p0;
+            let c2 = (v0 + p1 + z * w * c1) * iwd;
             scale += c1 + c2 + p0 + p1 * h;
         }
         Bounds {
@@ -322,6 +345,20 @@ impl Bounds {
             w: acc,
             delta: ROUNDING * 4.0 * scale,
         }
+    }
+
+    /// The coefficients `k` of a quick filter: `W d²/8 + δ ≤ k · x` on every sub-interval
+    /// (`d ≤ d_max`) of an interval of length `h`, with `E ≤ |u̇₀| + ω|u₀|` (so `k · x`
+    /// is [`Bounds::of`] at that `E`: linear, `k_i` its value at the `i`-th unit vector).
+    fn filter(osc: &Oscillator, h: Real, series: bool, d_max: Real) -> [Real; 5] {
+        let mut k = [0.0; 5];
+        for (i, k) in k.iter_mut().enumerate() {
+            let mut x = [0.0; 5];
+            x[i] = 1.0;
+            let b = Bounds::of(osc, h, series, x[1] + osc.omega() * x[0], x);
+            *k = b.w * d_max * d_max / 8.0 + b.delta;
+        }
+        k
     }
 
     /// The bound of `|u|` on `[a, b]` (module doc) from `|u|` at its ends, `d = b − a`.
@@ -371,8 +408,6 @@ struct Candidate {
 pub(super) struct Scan {
     best: Real,
     candidates: Vec<Candidate>,
-    /// Scratch for the samples of one interval.
-    samples: Vec<(Real, Real)>,
 }
 
 impl Scan {
@@ -380,7 +415,6 @@ impl Scan {
         Scan {
             best: 0.0,
             candidates: Vec::new(),
-            samples: Vec::new(),
         }
     }
 
@@ -401,39 +435,42 @@ impl Scan {
             if ub > self.best {
                 self.best = ub;
             }
-            if s.v0 * end.1 < 0.0 {
-                self.brackets(osc, s, t, &[end]);
+            if s.v0 * end.1 < 0.0 && s.u0.abs().max(ub) + t.excess(s) >= self.best {
+                self.brackets(osc, s, t);
             }
             return end;
         }
-        let mut buf = std::mem::take(&mut self.samples);
-        buf.clear();
-        buf.extend(t.rows.iter().map(|r| r.apply(s)));
-        let (mut best, mut va, mut changes) = (self.best, s.v0, false);
-        for &(u, v) in &buf {
-            let ub = u.abs();
+        // several points: one pass for the maximum and the quick filter (with the running
+        // maximum, a lower bound of the final one), the brackets recomputed only if one is open
+        let ex = t.excess(s);
+        let (mut best, mut ua, mut va, mut open) = (self.best, s.u0.abs(), s.v0, false);
+        let mut end = (s.u0, s.v0);
+        for row in &t.rows {
+            end = row.apply(s);
+            let ub = end.0.abs();
             if ub > best {
                 best = ub;
             }
-            changes |= va * v < 0.0;
-            va = v;
+            // (no short-circuit and no f64::max: branch-free, the samples are finite)
+            let top = if ua > ub { ua } else { ub };
+            open |= (va * end.1 < 0.0) & (top + ex >= best);
+            (ua, va) = (ub, end.1);
         }
         self.best = best;
-        if changes {
-            self.brackets(osc, s, t, &buf);
+        if open {
+            self.brackets(osc, s, t);
         }
-        let end = buf[buf.len() - 1];
-        self.samples = buf;
         end
     }
 
-    /// The sub-intervals of one interval where `u̇` changes sign (samples at `τ_1 … τ_m`):
-    /// candidates unless their bound is below the peak so far (module doc).
+    /// The sub-intervals of one interval where `u̇` changes sign (samples at `τ_1 … τ_m`,
+    /// recomputed): candidates unless their bound is below the peak so far (module doc).
     #[inline(never)]
-    fn brackets(&mut self, osc: &Oscillator, s: &Step, t: &Table, samples: &[(Real, Real)]) {
+    fn brackets(&mut self, osc: &Oscillator, s: &Step, t: &Table) {
         let (mut bounds, mut refined) = (Bounds::new(osc, s, t), false);
         let (mut ua, mut va) = (s.u0.abs(), s.v0);
-        for (j, &(u, vb)) in samples.iter().enumerate() {
+        for (j, row) in t.rows.iter().enumerate() {
+            let (u, vb) = row.apply(s);
             let ub = u.abs();
             if va * vb < 0.0 {
                 let (a, b) = (t.taus[j], t.taus[j + 1]);
