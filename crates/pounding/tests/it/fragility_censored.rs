@@ -3,6 +3,7 @@
 //! without censoring, bootstrap coverage on truncated lognormal data, the statuses of data
 //! without a finite maximum (each one checked against the likelihood itself), the workflow.
 
+use crate::fragility_trial::run;
 use pounding::assessment::Stripes;
 use pounding::assessment::run::{Plan, RunRow, fit_limit_state};
 use pounding::fragility::normal::{cdf, pdf};
@@ -380,19 +381,6 @@ fn bad_censored_input_is_an_error_naming_the_record() {
     assert!(e.to_string().contains("`records[0]` = -1"), "{e}");
     let e = fit_ida_censored(&data(&[])).unwrap_err();
     assert!(e.to_string().contains("`records` is empty"), "{e}");
-}
-
-/// A run of entry `record` at stripe `stripe` with one limit state.
-fn run(record: usize, stripe: usize, im: f64, ex: bool, ratio: f64) -> RunRow {
-    RunRow {
-        record,
-        stripe,
-        im_g: im,
-        scale_factor: im,
-        status: "Completed".into(),
-        error: String::new(),
-        limits: vec![(Some(ex), ratio)],
-    }
 }
 
 #[test]

@@ -6,8 +6,9 @@ use pounding::assessment::Stripes;
 use pounding::assessment::run::{Plan, RunRow, fit_limit_state};
 use pounding::fragility::{BootstrapSettings, Fit, NoMle};
 
-/// A run of entry `record` at stripe `stripe` with one limit state.
-fn run(record: usize, stripe: usize, im: f64, ex: bool, ratio: f64) -> RunRow {
+/// A run of entry `record` at stripe `stripe` with one limit state (also used by
+/// `fragility_censored`).
+pub(crate) fn run(record: usize, stripe: usize, im: f64, ex: bool, ratio: f64) -> RunRow {
     RunRow {
         record,
         stripe,
