@@ -45,6 +45,14 @@
 //! quadratic bound exceeds the true extremum by `O((ωd)⁴) A` only, so almost only the extrema
 //! that set the peak are bisected.
 //!
+//! Two cheaper tests come first, both upper bounds of the one above, so they only skip what it
+//! would skip: a linear form `k · (|u₀|, |u̇₀|, α, |a₀|, |a₁ − a₀|)` with coefficients per table
+//! bounding `W d²/8 + δ` ([`Bounds::filter`]), and, for intervals with several sub-grid points
+//! (periods under 8 samples), the envelope `|c₁| + |c₂| + max(|p₀|, |p₀ + p₁h|) + δ` of the
+//! whole interval ([`Table::envelope`]): below the peak so far, the interior is not sampled at
+//! all (a short-period oscillator follows the load quasi-statically, far below its peak most
+//! of the time).
+//!
 //! Intervals of at least 64 damped periods (the kernel's long form) take the kernel's own
 //! search of their first and last periods.
 
@@ -120,6 +128,8 @@ pub(super) struct Table {
     series: bool,
     /// The quick filter's coefficients ([`Bounds::filter`]).
     filter: [Real; 5],
+    /// `1/h`.
+    inv_h: Real,
 }
 
 impl Table {
@@ -139,6 +149,7 @@ impl Table {
             rows,
             series,
             filter: Bounds::filter(osc, h, series, d_max),
+            inv_h: 1.0 / h,
         }
     }
 
@@ -167,6 +178,20 @@ impl Table {
     fn excess(&self, s: &Step) -> Real {
         let (k, x) = (&self.filter, Bounds::sizes(s));
         (k[0] * x[0] + k[1] * x[1]) + (k[2] * x[2] + k[3] * x[3]) + k[4] * x[4]
+    }
+
+    /// `|c₁| + |c₂| + max(|p₀|, |p₀ + p₁h|) ≥ max |u|` over the interval: the Nigam–Jennings
+    /// piece of the step (module doc of the kernel), computed with reciprocals (its rounding,
+    /// a few ulps of these sizes, is inside `δ` of [`Bounds`]).
+    #[inline(always)]
+    fn envelope(&self, osc: &Oscillator, s: &Step) -> Real {
+        let (w, z) = (osc.omega(), osc.zeta());
+        let [iw2, iwd] = osc.reciprocals();
+        let p1 = -(s.a1 - s.a0) * self.inv_h * iw2;
+        let p0 = -(s.a0 + 2.0 * z * w * p1) * iw2;
+        let c1 = s.u0 - p0;
+        let c2 = (s.v0 - p1 + z * w * c1) * iwd;
+        c1.abs() + c2.abs() + p0.abs().max((p0 + p1 * self.h).abs())
     }
 
     /// `(u(h), u̇(h))` from the step's start: the last row, or the kernel for a long interval.
@@ -440,11 +465,19 @@ impl Scan {
             }
             return end;
         }
-        // several points: one pass for the maximum and the quick filter (with the running
-        // maximum, a lower bound of the final one), the brackets recomputed only if one is open
+        // several points (periods shorter than 8 samples): the end first; if the whole
+        // interval's envelope cannot reach the peak so far, nothing inside can raise it
         let ex = t.excess(s);
+        let mut end = t.rows[t.rows.len() - 1].apply(s);
+        if end.0.abs() > self.best {
+            self.best = end.0.abs();
+        }
+        if !t.series && t.envelope(osc, s) + ex < self.best {
+            return end;
+        }
+        // else one pass for the maximum and the quick filter (with the running maximum, a
+        // lower bound of the final one), the brackets recomputed only if one is open
         let (mut best, mut ua, mut va, mut open) = (self.best, s.u0.abs(), s.v0, false);
-        let mut end = (s.u0, s.v0);
         for row in &t.rows {
             end = row.apply(s);
             let ub = end.0.abs();
