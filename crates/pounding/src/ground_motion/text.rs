@@ -16,7 +16,7 @@ impl Record {
     /// a velocity or displacement column, a time unit other than seconds, and an acceleration
     /// unit (in brackets anywhere in a cell, `a[gal]`, `acc (cm/s^2)`, or a word, `acc_gal`) that
     /// is not an acceleration unit or differs from `units` are refused. Times must increase
-    /// strictly. `#` lines are checked as [comment lines](check_comments) are. Errors carry the
+    /// strictly. `#` lines are checked as comment lines are. Errors carry the
     /// 1-based line number.
     pub fn from_csv_str(
         text: &str,
@@ -90,7 +90,7 @@ impl Record {
     /// Parses whitespace-separated columns `t a` (t in s, a in `units`), one sample a line.
     /// Blank lines and lines starting with `#` (a comment header) are skipped; a `#` line before
     /// the first sample that looks like a header of the columns (`# t (s)  a (gal)`) is checked
-    /// as a CSV header is; every `#` line is checked as [comment lines](check_comments) are.
+    /// as a CSV header is; every `#` line is checked as comment lines are.
     /// Times must increase strictly. Errors carry the 1-based line number.
     pub fn from_columns_str(
         text: &str,
@@ -140,7 +140,7 @@ impl Record {
     /// Parses a sequence of accelerations (in `units`) sampled every `dt` seconds from `t = 0`,
     /// any number of whitespace-separated values a line, read in order as OpenSees'
     /// `timeSeries Path -dt` does. Blank lines are skipped; `#` lines are checked as
-    /// [comment lines](check_comments) are.
+    /// comment lines are.
     ///
     /// A file in which every line holds exactly two values is refused as ambiguous: the two
     /// columns may be `t a` (then no sample interval applies) or two components (one file each).
