@@ -15,7 +15,7 @@ pub struct BridgePlan {
     /// polylines of the requested number of chords.
     pub outlines: Vec<Vec<Vector>>,
     /// Reference corners of every segment: `[start c0, start c1, end c0, end c1]` of its placed
-    /// faces ([`crate::sim::SegmentBody`]).
+    /// faces ([`crate::sim::model::SegmentBody`]).
     pub corners: Vec<[Vector; 4]>,
     /// Reference centroid of every segment.
     pub centroids: Vec<Vector>,
@@ -59,7 +59,7 @@ pub fn bridge_plan(model: &BridgeModel, arc_chords: usize) -> BridgePlan {
 
 /// The path of each corner of each segment over the run, its displacement from the reference
 /// position magnified by `exaggeration`: `p⁰ + f (p(t) − p⁰)` with
-/// `p(t) = G⁰ + d + Rot(θ)(p⁰ − G⁰)` ([`crate::sim::SegmentBody::place`]). Per segment the four
+/// `p(t) = G⁰ + d + Rot(θ)(p⁰ − G⁰)` ([`crate::sim::model::SegmentBody::place`]). Per segment the four
 /// corners in the order of [`BridgePlan::corners`], per corner one point per kept time
 /// (non-finite where the state is).
 pub type CornerPaths = Vec<[Vec<Vector>; 4]>;
