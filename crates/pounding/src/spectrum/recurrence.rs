@@ -28,7 +28,7 @@
 //! # Bisection only where it can raise the peak
 //! The peak search takes `|u|` at the sub-grid points and, on each sub-interval `[a, b]` where
 //! the computed `u̇` changes sign, `|u|` at the zero of `u̇` found by bisection on the kernel's
-//! closed form (60 evaluations). A bisection is deferred, and skipped unless the bound
+//! closed form (32 halvings). A bisection is deferred, and skipped unless the bound
 //!
 //! ```text
 //! |u(τ)| ≤ min( ½(|u(a)| + |u(b)| + d V),  max(|u(a)|, |u(b)|) + W d²/8 ) + δ,     d = b − a,
