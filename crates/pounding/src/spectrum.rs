@@ -52,7 +52,8 @@
 //! `α = 0°, 1°, …, 179°` the peak `max_t |u_α|` is taken over continuous time as above;
 //! **RotD50** is the median of the 180 peaks (the mean of the two middle ones) and **RotD100**
 //! the largest. The two records are put on the union of their sample times (both stay exactly
-//! linear there) and the shorter is padded with zeros.
+//! linear there); each is zero outside its own span, with the same jumps at its first and last
+//! sample as alone, so the responses at 0° and 90° are those of `x` and `y` alone.
 
 use crate::ground_motion::{G0, Record};
 use crate::math::Real;
@@ -233,14 +234,28 @@ pub struct RotD {
     pub rotd100: Vec<Ordinate>,
 }
 
-/// The two records on the union of their sample times (zero outside each record).
-fn common_grid(x: &Record, y: &Record) -> (Vec<Real>, Vec<Real>, Vec<Real>) {
+/// The union of the two records' sample times, and each record's loads `(a₀, a₁)` on its
+/// intervals: the record's own (linear) values inside its span, zero outside it. At the first
+/// and last sample the load jumps, as in the single-record spectrum (from rest at the first
+/// sample, zero after the last), so the rotated response at 0° is `x`'s and at 90° `y`'s.
+fn common_grid(x: &Record, y: &Record) -> (Vec<Real>, [Vec<(Real, Real)>; 2]) {
     let mut t: Vec<Real> = x.times().iter().chain(y.times()).copied().collect();
     t.sort_by(Real::total_cmp);
     t.dedup();
-    let ax = t.iter().map(|&s| x.accel(s)).collect();
-    let ay = t.iter().map(|&s| y.accel(s)).collect();
-    (t, ax, ay)
+    let loads = |r: &Record| {
+        let (first, last) = (r.times()[0], r.times()[r.times().len() - 1]);
+        t.windows(2)
+            .map(|w| {
+                if w[0] >= first && w[1] <= last {
+                    (r.accel(w[0]), r.accel(w[1]))
+                } else {
+                    (0.0, 0.0)
+                }
+            })
+            .collect()
+    };
+    let l = [loads(x), loads(y)];
+    (t, l)
 }
 
 /// The 180 peaks `max_t |u_x cos α + u_y sin α|`, `α = 0°, 1°, …, 179°`, for one oscillator
@@ -348,7 +363,7 @@ pub fn rotd(
     periods: &[Real],
 ) -> Result<RotD, SpectrumError> {
     check(damping, periods)?;
-    let (t, ax, ay) = common_grid(x, y);
+    let (t, [lx, ly]) = common_grid(x, y);
     let lengths = Lengths::new(&t);
     use rayon::prelude::*;
     // each period is independent: the same bits for any thread count
@@ -357,7 +372,7 @@ pub fn rotd(
         .map(|&period| {
             let osc = Oscillator::new(period, damping);
             let mut tables = Tables::new(osc, &lengths, period);
-            let mut walk = |a: &[Real]| {
+            let mut walk = |a: &[(Real, Real)]| {
                 let mut out = Vec::with_capacity(tables.len());
                 recurrence::walk(&mut tables, a, |s, t| {
                     out.push(*s);
@@ -365,7 +380,7 @@ pub fn rotd(
                 });
                 out
             };
-            let (sx, sy) = (walk(&ax), walk(&ay));
+            let (sx, sy) = (walk(&lx), walk(&ly));
             let mut peaks = rotated_peaks(&osc, &mut tables, &sx, &sy);
             peaks.sort_by(Real::total_cmp);
             let median = 0.5 * (peaks[89] + peaks[90]);

@@ -287,18 +287,19 @@ impl<'a> Tables<'a> {
     }
 }
 
-/// Walks the oscillator from rest through the record `accel` (on the intervals of `tables`)
-/// and the free tail: `f(step, table)` per interval returns the state at its end.
-#[inline(always)]
+/// Walks the oscillator from rest through the loads `(a₀, a₁)` of each interval of `tables`
+/// (the load linear in between; a load may jump from one interval to the next, as a record
+/// does at its first and last sample) and the free tail: `f(step, table)` per interval returns
+/// the state at its end.
 pub(super) fn walk(
     tables: &mut Tables,
-    accel: &[Real],
+    loads: &[(Real, Real)],
     mut f: impl FnMut(&Step, &Table) -> (Real, Real),
 ) {
     let mut s = Step::default();
     let index = &tables.lengths.index;
-    for (&k, a) in index.iter().zip(accel.windows(2)) {
-        (s.a0, s.a1) = (a[0], a[1]);
+    for (&k, &(a0, a1)) in index.iter().zip(loads) {
+        (s.a0, s.a1) = (a0, a1);
         let t = if tables.kept.is_empty() {
             let h = tables.lengths.hs[k as usize];
             &*tables.scratch.insert(Table::new(&tables.osc, h))
