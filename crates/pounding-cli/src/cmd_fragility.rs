@@ -140,12 +140,18 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let plan = pool.install(|| Plan::new(&st.set, &st.spec, &st.settings.stripes, ground))?;
     pounding::output::check_output_dir_free(&args.out)?;
     let total = st.set.records.len() * plan.values().len();
+    use crate::cmd_simulate::sim_records::count;
+    let what = match &st.settings.stripes {
+        pounding::assessment::Stripes::Levels(_) => "stripe",
+        pounding::assessment::Stripes::Scales(_) => "IDA scale",
+    };
     eprintln!(
-        "fragility: {} entries of {} x {} stripes = {total} runs on {} threads; IM = {}",
-        st.set.records.len(),
+        "fragility: {} of {} x {} = {} on {}; IM = {}",
+        count(st.set.records.len(), "entry").replace("entrys", "entries"),
         st.set_path.display(),
-        plan.values().len(),
-        pool.current_num_threads(),
+        count(plan.values().len(), what),
+        count(total, "run"),
+        count(pool.current_num_threads(), "thread"),
         st.spec.label()
     );
     if let Some(p) = &st.period {

@@ -23,14 +23,15 @@ pub struct Args {
     #[arg(long, num_args = 2, value_names = ["X", "Y"], action = clap::ArgAction::Append)]
     pub pair: Vec<String>,
     /// Damping ratio, a fraction of critical (0.05 = 5 %).
-    #[arg(long, default_value_t = 0.05, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = 0.05, allow_hyphen_values = true, value_parser = finite)]
     pub damping: f64,
     /// Periods in seconds, comma separated (default: 100 from 0.01 s to 10 s, even in log T).
     #[arg(
         long,
         value_delimiter = ',',
         value_name = "T1,T2,...",
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        value_parser = finite
     )]
     pub periods: Vec<f64>,
     /// Units of text records: g or m/s2 (an .AT2 header names its own).
@@ -45,7 +46,31 @@ pub struct Args {
 }
 
 /// A record named on the command line.
+/// A number as given on the command line, refused (quoting it) if it does not read as a
+/// finite double (`1e400` would read as `inf`).
+fn finite(s: &str) -> std::result::Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(x) if x.is_finite() => Ok(x),
+        Ok(_) => Err(format!("{s:?} is not a finite number")),
+        Err(e) => Err(format!("{s:?}: {e}")),
+    }
+}
+
+/// A record by file name or `builtin:NAME`, refused if it has fewer than two samples (a
+/// spectrum of one sample would be all zeros: the load is zero after the last sample).
 fn load(name: &str, opts: &ReadOptions) -> Result<Record> {
+    let r = load_any(name, opts)?;
+    if r.times().len() < 2 {
+        bail!(
+            "record {name}: {} sample: a spectrum needs at least two (the record is linear \
+             between its samples and zero after the last)",
+            r.times().len()
+        );
+    }
+    Ok(r)
+}
+
+fn load_any(name: &str, opts: &ReadOptions) -> Result<Record> {
     if let Some(b) = name.strip_prefix("builtin:") {
         if opts.dt.is_some() {
             bail!(

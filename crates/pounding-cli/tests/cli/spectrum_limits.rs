@@ -136,3 +136,40 @@ fn spectrum_prints_how_each_record_was_read() {
     assert_eq!(warnings.len(), 1, "{err}");
     assert!(warnings[0].contains("ms2.csv") && warnings[0].contains("5.000 g"));
 }
+
+#[test]
+fn spectrum_refuses_one_sample_records_and_overflowing_numbers() {
+    // trial findings: a one-sample record gave an all-zero spectrum with exit 0, `--periods
+    // 1e400` was reported as `period = inf`, and a PGA of 1e300 g printed as 301 digits
+    let d = scratch_dir("spectrum-limits", "one");
+    std::fs::write(d.join("one.csv"), "0,0.5\n").unwrap();
+    let one = d.join("one.csv");
+    for args in [
+        vec![one.to_str().unwrap()],
+        vec!["--pair", "builtin:ELC180", one.to_str().unwrap()],
+    ] {
+        let (code, err, _) = run(&d, &args);
+        assert_eq!(code, Some(2), "{err}");
+        assert!(
+            err.contains("one.csv: 1 sample: a spectrum needs at least two"),
+            "{err}"
+        );
+        assert!(!d.join("out").exists());
+    }
+    for (flag, value) in [("--periods", "1,1e400"), ("--damping", "1e999")] {
+        let (code, err, _) = run(&d, &["builtin:ELC180", flag, value]);
+        assert_eq!(code, Some(2), "{err}");
+        let token = value.split(',').next_back().unwrap();
+        assert!(
+            err.contains(&format!("\"{token}\" is not a finite number")),
+            "{err}"
+        );
+        assert!(!d.join("out").exists());
+    }
+    std::fs::write(d.join("huge.csv"), "t,a\n0,0\n0.01,1e300\n0.02,0\n").unwrap();
+    let huge = d.join("huge.csv");
+    let (code, err, _) = run(&d, &[huge.to_str().unwrap(), "--periods", "1"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(err.contains("pga_g 1.0000e300"), "{err}");
+    assert!(err.contains("has a PGA of 1.000e300 g"), "{err}");
+}

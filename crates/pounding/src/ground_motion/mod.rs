@@ -369,10 +369,12 @@ impl ComponentInfo {
     pub fn units_warning(&self) -> Option<String> {
         (self.pga_g > PLAUSIBLE_PGA_G).then(|| {
             format!(
-                "record {} has a PGA of {:.3} g as read in {}; check its units (a text record: \
+                "record {} has a PGA of {} g as read in {}; check its units (a text record: \
                  csv_units / --csv-units; an AT2 record: the units of its header, or csv_units / \
                  --csv-units when the header names none)",
-                self.record, self.pga_g, self.units
+                self.record,
+                fixed_or_exp(self.pga_g, 3),
+                self.units
             )
         })
     }
@@ -395,15 +397,25 @@ impl ComponentInfo {
     pub fn line(&self) -> String {
         let f = crate::output::float_token;
         format!(
-            "ground motion {}: record {}, units {}, dt_s {}, npts {}, duration_s {}, pga_g {:.4}",
+            "ground motion {}: record {}, units {}, dt_s {}, npts {}, duration_s {}, pga_g {}",
             self.component,
             self.record,
             self.units,
             self.dt.map_or("irregular".to_string(), f),
             self.npts,
             f(self.duration),
-            self.pga_g
+            fixed_or_exp(self.pga_g, 4)
         )
+    }
+}
+
+/// `x` with `digits` decimals, or in scientific notation once it is too large for that to
+/// be readable (`1e300 g` as 301 digits, in a trial).
+fn fixed_or_exp(x: Real, digits: usize) -> String {
+    if x.abs() < 1e6 || !x.is_finite() {
+        format!("{x:.digits$}")
+    } else {
+        format!("{x:.digits$e}")
     }
 }
 

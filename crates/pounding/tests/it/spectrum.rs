@@ -173,8 +173,12 @@ fn rotd_keeps_each_records_jumps_at_its_first_and_last_sample() {
             .collect(),
     )
     .unwrap();
-    let zero = Record::new("zero", (0..400).map(|i| i as f64 * 0.01).collect(), vec![0.0; 400])
-        .unwrap();
+    let zero = Record::new(
+        "zero",
+        (0..400).map(|i| i as f64 * 0.01).collect(),
+        vec![0.0; 400],
+    )
+    .unwrap();
     let other = motion(350, 0.011);
     let periods = [0.1, 0.5, 1.0, 3.0];
     let close = |a: f64, b: f64| (a - b).abs() < 1e-9 * b;
@@ -185,8 +189,16 @@ fn rotd_keeps_each_records_jumps_at_its_first_and_last_sample() {
         let sd = peak_displacement(x.times(), x.values(), t, 0.05);
         let so = peak_displacement(other.times(), other.values(), t, 0.05);
         // alone at 0° (and at 90° with the components swapped): the largest of |cos α| sd
-        assert!(close(xz.rotd100[k].sd, sd), "T {t}: {} vs {sd}", xz.rotd100[k].sd);
-        assert!(close(zx.rotd100[k].sd, sd), "T {t}: {} vs {sd}", zx.rotd100[k].sd);
+        assert!(
+            close(xz.rotd100[k].sd, sd),
+            "T {t}: {} vs {sd}",
+            xz.rotd100[k].sd
+        );
+        assert!(
+            close(zx.rotd100[k].sd, sd),
+            "T {t}: {} vs {sd}",
+            zx.rotd100[k].sd
+        );
         // the rotated peaks include 0° and 90°: RotD100 is at least either component's
         assert!(xo.rotd100[k].sd >= sd.max(so) * (1.0 - 1e-12), "T {t}");
     }
