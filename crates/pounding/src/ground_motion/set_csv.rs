@@ -259,10 +259,57 @@ impl Lines<'_> {
     }
 }
 
+/// Where a quoted cell of `text` opens and is never closed, if one is: its 1-based line and
+/// 0-based column. The CSV reader would take every later line into that cell (silently
+/// dropping rows), so such a file is refused. A quote opens a cell only as its first character
+/// (as the reader reads it); `""` inside quotes is an escaped quote.
+fn unterminated_quote(text: &[u8]) -> Option<(usize, usize)> {
+    #[derive(PartialEq)]
+    enum S {
+        Start,
+        Field,
+        Quoted,
+        QuoteInQuoted,
+    }
+    let (mut st, mut line, mut col, mut opened) = (S::Start, 1, 0, (1, 0));
+    for (k, &c) in text.iter().enumerate() {
+        let newline = c == b'\n' || (c == b'\r' && text.get(k + 1) != Some(&b'\n'));
+        if st == S::Quoted || (st == S::QuoteInQuoted && c == b'"') {
+            st = if c == b'"' && st == S::Quoted {
+                S::QuoteInQuoted
+            } else {
+                S::Quoted
+            };
+        } else if c == b',' {
+            (st, col) = (S::Start, col + 1);
+        } else if c == b'\n' || c == b'\r' {
+            (st, col) = (S::Start, if newline { 0 } else { col });
+        } else if st == S::Start && c == b'"' {
+            (st, opened) = (S::Quoted, (line, col));
+        } else {
+            st = S::Field;
+        }
+        if newline {
+            line += 1;
+        }
+    }
+    (st == S::Quoted).then_some(opened)
+}
+
 /// The entries of the CSV manifest `cx.text` and the problems found while reading its rows
 /// (every row is read, so that all problems are listed at once).
 pub(super) fn entries(cx: &Ctx) -> (Vec<Entry>, Vec<String>) {
     let text = cx.text.strip_prefix('\u{feff}').unwrap_or(cx.text);
+    if let Some((line, c)) = unterminated_quote(text.as_bytes()) {
+        let problem = format!(
+            "{}:{line}, column {}: a quoted cell opens here and is never closed: every later \
+             line would be read into it; close the quote (a quote inside a quoted cell is \
+             written \"\")",
+            cx.origin,
+            column_name(c)
+        );
+        return (Vec::new(), vec![problem]);
+    }
     let mut rd = csv::ReaderBuilder::new()
         .has_headers(false)
         .flexible(true)

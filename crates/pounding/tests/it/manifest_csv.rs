@@ -282,6 +282,21 @@ pub const BAD: &[(&str, &str, &[&str])] = &[
         "id,x,note\r\nA,builtin:ELC180,\"two\r\nlines\"\r\nB,,\r\n",
         &["x (set.csv:4, column B): empty"],
     ),
+    (
+        "unterminated quote swallowing later rows",
+        "id,x,dt,units,event\nA,a.txt,0.01,m/s2,\"Imp\nB,a.txt,0.01,m/s2,ev\n",
+        &["set.csv:2, column E", "never closed"],
+    ),
+    (
+        "unterminated quote on the last row",
+        "id,x,dt,units,event\r\nA,a.txt,0.01,m/s2,ok\r\nB,a.txt,0.01,m/s2,\"Imp\r\n",
+        &["set.csv:3, column E", "never closed"],
+    ),
+    (
+        "unterminated quote after a closed multi-line one and an escaped quote",
+        "id,x,note\nA,builtin:ELC180,\"two\nlines \"\"q\"\"\"\nB,builtin:ELC270,\"x\n",
+        &["set.csv:4, column C", "never closed"],
+    ),
 ];
 
 #[test]
