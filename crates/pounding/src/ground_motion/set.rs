@@ -17,6 +17,7 @@
 //! y = "SYN001_y.AT2"            # optional second horizontal component: makes a pair
 //! dt = 0.01                     # optional, for one-column files (as record_dt)
 //! units = "g"                   # optional, for text files (as csv_units): "g" | "m/s2"
+//!                               # (and an .AT2 whose header names none; else refused)
 //!
 //! [record.meta]                 # optional free metadata (strings, numbers, booleans;
 //!                               # output columns in alphabetical order)
@@ -478,14 +479,22 @@ fn entry(cx: &Ctx, i: usize, r: &Entry, cache: &mut Cache) -> Result<SetRecord, 
             .entry(k)
             .or_insert_with(|| read_component(cx.dir, &s.v, &opts))
             .clone();
-        got.map_err(|e| {
-            problems.push(format!(
-                "{}: {}",
-                cx.at(i, key, s.at),
-                in_manifest(&e, cx.csv)
-            ))
-        })
-        .ok()
+        let rec = got
+            .map_err(|e| {
+                problems.push(format!(
+                    "{}: {}",
+                    cx.at(i, key, s.at),
+                    in_manifest(&e, cx.csv)
+                ))
+            })
+            .ok()?;
+        if let Some(u) = &r.units
+            && let Some(why) = units_do_not_apply(key, &s.v, &rec)
+        {
+            problems.push(format!("{}: {why}", cx.at(i, "units", u.at)));
+            return None;
+        }
+        Some(rec)
     };
     let x = read("x", &r.x);
     let y = r.y.as_ref().map(|y| (y, read("y", y)));
@@ -613,6 +622,28 @@ fn reserved_column(k: &str) -> Option<String> {
         .map(|s| {
             format!("a name ending in {s} is reserved for the limit-state columns of runs.csv")
         })
+}
+
+/// Why a `units` key (or cell) does not apply to the component `key` = `spec` read as `rec`,
+/// if it does not: a built-in record, or an `.AT2` file whose header names its units (its
+/// label, set by the AT2 reader, is then `UNITS header`), keeps its own units, so a `units`
+/// given for it would be silently ignored. An `.AT2` whose header names no units takes them.
+fn units_do_not_apply(key: &str, spec: &str, rec: &Record) -> Option<String> {
+    let spec = spec.trim();
+    let what = if spec.starts_with("builtin:") {
+        format!("{key} = {spec} is a built-in PEER record in its header's units")
+    } else if rec.units().ends_with(" header") {
+        format!(
+            "{key} = {spec} is a PEER .AT2 file whose header names its units ({})",
+            rec.units().trim_end_matches(" header")
+        )
+    } else {
+        return None;
+    };
+    Some(format!(
+        "units apply to text files (and to an .AT2 file whose header names no units), but \
+         {what}: it does not apply; remove it"
+    ))
 }
 
 /// Reads one component: `builtin:ELC180` / `builtin:ELC270` or a file relative to `dir`.

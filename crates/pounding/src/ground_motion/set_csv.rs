@@ -13,13 +13,14 @@
 //!   A column whose name looks like one of these keys but is not one (`ID`, `Units`, `unit`,
 //!   `path`, `file`, `format`, `record_dt`, …) is refused rather than taken as metadata: a typo
 //!   must not silently drop a unit or a sample interval.
-//! * An empty cell is "not given"; spaces around a cell are ignored; a row of empty cells is
-//!   skipped. A metadata cell is an integer, a number or `true` / `false` when it reads back as
-//!   written (`6.95`, `42`), else text (`007`, `6.90`, `rock`): its `runs.csv` cell is the text
-//!   of the manifest's cell.
+//! * An empty cell is "not given"; spaces around a cell are ignored, also inside quotes
+//!   (`" padded "` is `padded`); a row of empty cells is skipped. A metadata cell is an
+//!   integer, a number or `true` / `false` when it reads back as written (`6.95`, `42`), else
+//!   text (`007`, `6.90`, `rock`): its `runs.csv` cell is the text of the manifest's cell.
 //! * Quoted cells (with commas, quotes `""` or line breaks), CRLF line endings and a UTF-8
-//!   byte-order mark are read as a spreadsheet writes them. A row with more or fewer cells than
-//!   the header (a ragged row) is refused.
+//!   byte-order mark are read as a spreadsheet writes them. A quote that opens a cell and is
+//!   never closed is refused (naming the line where it opens), not read to the end of the
+//!   file. A row with more or fewer cells than the header (a ragged row) is refused.
 //! * Messages name the manifest, the line where the row starts (1-based: the header is line 1)
 //!   and the column (its spreadsheet letter; the key is its header name).
 

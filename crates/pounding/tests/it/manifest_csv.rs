@@ -354,3 +354,75 @@ proptest::proptest! {
         }
     }
 }
+
+/// A `units` key or cell for a record that keeps its own units (a built-in record, an `.AT2`
+/// whose header names them) is refused naming the key, file and line, in TOML and CSV alike; an
+/// `.AT2` whose header names no units takes them.
+#[test]
+fn units_for_a_record_with_its_own_units_are_refused_not_ignored() {
+    let d = scratch("units-own");
+    let at2 = |units: &str| {
+        format!(
+            "PEER NGA STRONG MOTION DATABASE RECORD\nTEST RECORD\n\
+             ACCELERATION TIME SERIES{units}\nNPTS=    4, DT=   .0100 SEC\n\
+             0.1 0.2 -0.1 0.0\n"
+        )
+    };
+    std::fs::write(d.join("g.AT2"), at2(" IN UNITS OF G")).unwrap();
+    std::fs::write(d.join("none.AT2"), at2("")).unwrap();
+    let cases = [
+        (
+            "t1.toml",
+            "[[record]]\nid = \"A\"\nx = \"g.AT2\"\nunits = \"m/s2\"\n",
+            "record[0].units (",
+            "t1.toml:4)",
+        ),
+        (
+            "t2.toml",
+            "[[record]]\nid = \"A\"\nx = \"builtin:ELC180\"\n\n[[record]]\nid = \"B\"\n\
+             x = \"builtin:ELC180\"\ny = \"builtin:ELC270\"\nunits = \"g\"\n",
+            "record[1].units (",
+            "t2.toml:9)",
+        ),
+        (
+            "c1.csv",
+            "id,x,units\nA,none.AT2,\nB,g.AT2,m/s2\n",
+            "units (",
+            "c1.csv:3, column C)",
+        ),
+        (
+            "c2.csv",
+            "id,x,units\nA,builtin:ELC180,m/s2\n",
+            "units (",
+            "c2.csv:2, column C)",
+        ),
+    ];
+    for (name, text, key, at) in cases {
+        std::fs::write(d.join(name), text).unwrap();
+        let e = RecordSet::load(&d.join(name)).unwrap_err().to_string();
+        assert!(
+            e.contains(key) && e.contains(at) && e.contains("does not apply; remove it"),
+            "{name}: {e}"
+        );
+        assert!(e.contains("AT2") || e.contains("built-in"), "{name}: {e}");
+    }
+    // an .AT2 whose header names no units takes the given units (m/s2: values as written)
+    let s = load(&d, "ok.csv", "id,x,units\nA,none.AT2,m/s2\nB,none.AT2,\n");
+    let (a, b) = (&s.records[0].x, &s.records[1].x);
+    assert!(a.units().contains("m/s2"), "{}", a.units());
+    let ratio = b.values()[1] / a.values()[1];
+    assert!((ratio - 9.80665).abs() < 1e-9, "{ratio}");
+}
+
+/// A quoted cell is trimmed of surrounding spaces like any other (as the guide says).
+#[test]
+fn quoted_csv_cells_are_trimmed() {
+    let d = scratch("trim");
+    let s = load(
+        &d,
+        "set.csv",
+        "id,x,note\n\" A \",builtin:ELC180,\" padded \"\n",
+    );
+    assert_eq!(s.records[0].id, "A");
+    assert_eq!(s.records[0].meta[0].1, MetaValue::Text("padded".into()));
+}
