@@ -426,3 +426,54 @@ fn quoted_csv_cells_are_trimmed() {
     assert_eq!(s.records[0].id, "A");
     assert_eq!(s.records[0].meta[0].1, MetaValue::Text("padded".into()));
 }
+
+/// 20,000 entries in one manifest: every entry's line is right (the last one's duplicate id is
+/// named at its line). Naming lines by scanning the text per entry made this quadratic (40 s
+/// for a TOML manifest); it is now linear (a fraction of a second; timed by the `manifest`
+/// bench, not here).
+#[test]
+fn a_manifest_of_20000_entries_names_the_line_of_the_last() {
+    let d = scratch("big");
+    let n = 20_000;
+    let mut toml = String::new();
+    let mut csv = String::from("id,x,dt\n");
+    for i in 0..n {
+        let id = if i == n - 1 { 0 } else { i };
+        toml.push_str(&format!(
+            "[[record]]\nid = \"R{id}\"\nx = \"a.txt\"\ndt = 0.01\n\n"
+        ));
+        csv.push_str(&format!("R{id},a.txt,0.01\n"));
+    }
+    let t = err_in(&d, "big.toml", &toml);
+    let last = 5 * (n - 1) + 2;
+    assert!(
+        t.contains(&format!(
+            "record[{}].id (big.toml:{last}): duplicate id \"R0\" (also record[0])",
+            n - 1
+        )),
+        "{t}"
+    );
+    let c = err_in(&d, "big.csv", &csv);
+    assert!(
+        c.contains(&format!(
+            "id (big.csv:{}, column A): duplicate id \"R0\" (also line 2)",
+            n + 1
+        )),
+        "{c}"
+    );
+    // without the duplicate: every entry read, in order
+    let ok = toml.replace(
+        &format!("[[record]]\nid = \"R0\"\nx = \"a.txt\"\ndt = 0.01\n\n"),
+        "",
+    );
+    let s = load(&d, "ok.toml", &ok);
+    assert_eq!(s.records.len(), n - 2);
+    assert_eq!(s.records[0].id, "R1");
+    assert_eq!(s.records[n - 3].id, format!("R{}", n - 2));
+}
+
+fn err_in(d: &Path, name: &str, text: &str) -> String {
+    std::fs::write(d.join(name), text).unwrap();
+    let e = RecordSet::load(&d.join(name)).unwrap_err().to_string();
+    e.replace(&format!("{}/", d.display()), "")
+}
