@@ -6,7 +6,8 @@
 //!
 //! | input | limit |
 //! |---|---|
-//! | scenario file (study, simulate, compare) | [`SCENARIO_LIMIT`] = 16 MiB |
+//! | scenario file (study, simulate, compare, fragility) | [`SCENARIO_LIMIT`] = 16 MiB |
+//! | record set (`fragility --set`: a `.toml` or `.csv` manifest) | [`SCENARIO_LIMIT`] = 16 MiB |
 //! | ground-motion record (`.AT2`, `.csv`) | [`RECORD_LIMIT`] = 256 MiB |
 //! | LCP file (Siconos `.dat`, `LCPSET 1`) | [`LCP_LIMIT`] = 256 MiB |
 //! | impact problem (`impact --problem`, JSON) | [`PROBLEM_LIMIT`] = 16 MiB |

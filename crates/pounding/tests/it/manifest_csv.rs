@@ -477,3 +477,54 @@ fn err_in(d: &Path, name: &str, text: &str) -> String {
     let e = RecordSet::load(&d.join(name)).unwrap_err().to_string();
     e.replace(&format!("{}/", d.display()), "")
 }
+
+/// A manifest over its size limit is refused naming the limit and the page that lists it, and
+/// that page lists it; so does it every kind of file read with a limit (`read_text(_, WHAT, _)`).
+#[test]
+fn the_manifest_size_limit_is_listed_where_its_message_points() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let page = std::fs::read_to_string(root.join("docs/guide/robustness.md")).unwrap();
+    let rows: Vec<&str> = page.lines().filter(|l| l.starts_with("| ")).collect();
+    let d = scratch("limit");
+    for name in ["big.toml", "big.csv"] {
+        let f = std::fs::File::create(d.join(name)).unwrap();
+        f.set_len(16 * 1024 * 1024 + 1).unwrap();
+        let e = RecordSet::load(&d.join(name)).unwrap_err().to_string();
+        assert!(
+            e.contains(name) && e.contains("16 MiB") && e.contains("docs/guide/robustness.md"),
+            "{e}"
+        );
+    }
+    assert!(
+        rows.iter()
+            .any(|r| r.starts_with("| record set") && r.contains("| 16 MiB |")),
+        "no record-set row in robustness.md"
+    );
+    let mut kinds = Vec::new();
+    for dir in ["crates/pounding/src", "crates/pounding-cli/src"] {
+        let mut stack = vec![root.join(dir)];
+        while let Some(p) = stack.pop() {
+            if p.is_dir() {
+                stack.extend(std::fs::read_dir(&p).unwrap().map(|e| e.unwrap().path()));
+                continue;
+            }
+            let src = std::fs::read_to_string(&p).unwrap_or_default();
+            for (k, _) in src.match_indices("read_text(") {
+                let call = &src[k..(k + 200).min(src.len())];
+                let call = &call[..call.find(';').unwrap_or(call.len())];
+                if let Some(q) = call.split('"').nth(1)
+                    && call.contains("LIMIT")
+                {
+                    kinds.push(q.trim_end_matches(" file").to_string());
+                }
+            }
+        }
+    }
+    assert!(kinds.iter().any(|k| k == "record set"), "{kinds:?}");
+    for k in kinds {
+        assert!(
+            rows.iter().any(|r| r.contains(&k)),
+            "robustness.md lists no limit for {k:?}"
+        );
+    }
+}
