@@ -528,3 +528,38 @@ fn the_manifest_size_limit_is_listed_where_its_message_points() {
         );
     }
 }
+
+/// A manifest saved in UTF-16 (with or without a byte-order mark) is refused saying so; one in
+/// Latin-1 names the line of the first byte that is not UTF-8.
+#[test]
+fn a_manifest_not_in_utf8_is_refused_with_a_hint() {
+    let d = scratch("enc");
+    let text = "id,x\nA,builtin:ELC180\n";
+    let le: Vec<u8> = text.encode_utf16().flat_map(u16::to_le_bytes).collect();
+    let be: Vec<u8> = text.encode_utf16().flat_map(u16::to_be_bytes).collect();
+    let cases: [(&str, Vec<u8>); 3] = [
+        ("le-bom.csv", [&[0xFF, 0xFE][..], &le].concat()),
+        ("be-bom.toml", [&[0xFE, 0xFF][..], &be].concat()),
+        ("le.csv", le.clone()),
+    ];
+    for (name, bytes) in cases {
+        std::fs::write(d.join(name), bytes).unwrap();
+        let e = RecordSet::load(&d.join(name)).unwrap_err().to_string();
+        assert!(
+            e.contains(name) && e.contains("looks like UTF-16") && e.contains("save it as UTF-8"),
+            "{name}: {e}"
+        );
+    }
+    let latin1 = b"id,x,event\nA,builtin:ELC180,ok\nB,builtin:ELC270,Ciudad Ju\xe1rez\n";
+    std::fs::write(d.join("latin1.csv"), latin1).unwrap();
+    let e = RecordSet::load(&d.join("latin1.csv"))
+        .unwrap_err()
+        .to_string();
+    let at = latin1.iter().position(|&b| b == 0xE1).unwrap();
+    assert!(
+        e.contains("latin1.csv")
+            && e.contains(&format!("0xE1 on line 3, at offset {at}"))
+            && e.contains("save it as UTF-8"),
+        "{e}"
+    );
+}
