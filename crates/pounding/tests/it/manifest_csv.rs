@@ -462,10 +462,7 @@ fn a_manifest_of_20000_entries_names_the_line_of_the_last() {
         "{c}"
     );
     // without the duplicate: every entry read, in order
-    let ok = toml.replace(
-        &format!("[[record]]\nid = \"R0\"\nx = \"a.txt\"\ndt = 0.01\n\n"),
-        "",
-    );
+    let ok = toml.replace("[[record]]\nid = \"R0\"\nx = \"a.txt\"\ndt = 0.01\n\n", "");
     let s = load(&d, "ok.toml", &ok);
     assert_eq!(s.records.len(), n - 2);
     assert_eq!(s.records[0].id, "R1");
