@@ -118,15 +118,16 @@ pub fn read_text(path: &Path, what: &str, limit: u64) -> std::io::Result<String>
     Ok(text)
 }
 
-/// UTF-16 text: a UTF-16 byte-order mark (`FF FE`, `FE FF`), or NUL bytes in at least a quarter
-/// of the first 4 KiB (UTF-16 writes a NUL beside every ASCII character; UTF-8 text has none).
+/// UTF-16 text: a UTF-16 byte-order mark (`FF FE`, `FE FF`), or NUL bytes in a quarter to three
+/// quarters of the first 4 KiB (UTF-16 writes a NUL beside every ASCII character; UTF-8 text
+/// has none; a file of only NULs is not text at all and is left to the reader's messages).
 fn looks_utf16(buf: &[u8]) -> bool {
     if buf.starts_with(&[0xFF, 0xFE]) || buf.starts_with(&[0xFE, 0xFF]) {
         return true;
     }
     let head = &buf[..buf.len().min(4096)];
     let nul = head.iter().filter(|&&b| b == 0).count();
-    nul > 0 && 4 * nul >= head.len()
+    nul > 0 && 4 * nul >= head.len() && 4 * nul <= 3 * head.len()
 }
 
 /// Checks a `--threads` value against `1 ..= MAX_THREADS` (`None`: all cores, accepted).
