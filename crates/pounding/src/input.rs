@@ -6,7 +6,8 @@
 //!
 //! | input | limit |
 //! |---|---|
-//! | scenario file (study, simulate, compare) | [`SCENARIO_LIMIT`] = 16 MiB |
+//! | scenario file (study, simulate, compare, fragility) | [`SCENARIO_LIMIT`] = 16 MiB |
+//! | record set (`fragility --set`: a `.toml` or `.csv` manifest) | [`SCENARIO_LIMIT`] = 16 MiB |
 //! | ground-motion record (`.AT2`, `.csv`) | [`RECORD_LIMIT`] = 256 MiB |
 //! | LCP file (Siconos `.dat`, `LCPSET 1`) | [`LCP_LIMIT`] = 256 MiB |
 //! | impact problem (`impact --problem`, JSON) | [`PROBLEM_LIMIT`] = 16 MiB |
@@ -90,12 +91,23 @@ pub fn read_text(path: &Path, what: &str, limit: u64) -> std::io::Result<String>
     if buf.len() as u64 > limit {
         return Err(too_large());
     }
+    if looks_utf16(&buf) {
+        return Err(Error::new(
+            ErrorKind::InvalidData,
+            "is not UTF-8 text: it looks like UTF-16 (a UTF-16 byte-order mark, or a NUL byte \
+             between characters): save it as UTF-8 (e.g. \"CSV UTF-8\" in a spreadsheet)",
+        ));
+    }
     let mut text = String::from_utf8(buf).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let bytes = e.as_bytes();
+        let line = 1 + bytes[..at].iter().filter(|&&b| b == b'\n').count();
         Error::new(
             ErrorKind::InvalidData,
             format!(
-                "is not valid UTF-8 text (invalid byte at offset {})",
-                e.utf8_error().valid_up_to()
+                "is not valid UTF-8 text (invalid byte 0x{:02X} on line {line}, at offset {at}; \
+                 Latin-1 or Windows-1252 text? save it as UTF-8)",
+                bytes[at]
             ),
         )
     })?;
@@ -104,6 +116,18 @@ pub fn read_text(path: &Path, what: &str, limit: u64) -> std::io::Result<String>
         text.drain(..'\u{feff}'.len_utf8());
     }
     Ok(text)
+}
+
+/// UTF-16 text: a UTF-16 byte-order mark (`FF FE`, `FE FF`), or NUL bytes in a quarter to three
+/// quarters of the first 4 KiB (UTF-16 writes a NUL beside every ASCII character; UTF-8 text
+/// has none; a file of only NULs is not text at all and is left to the reader's messages).
+fn looks_utf16(buf: &[u8]) -> bool {
+    if buf.starts_with(&[0xFF, 0xFE]) || buf.starts_with(&[0xFE, 0xFF]) {
+        return true;
+    }
+    let head = &buf[..buf.len().min(4096)];
+    let nul = head.iter().filter(|&&b| b == 0).count();
+    nul > 0 && 4 * nul >= head.len() && 4 * nul <= 3 * head.len()
 }
 
 /// Checks a `--threads` value against `1 ..= MAX_THREADS` (`None`: all cores, accepted).

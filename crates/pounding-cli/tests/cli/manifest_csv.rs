@@ -142,6 +142,16 @@ const BAD: &[(&str, &str, &str)] = &[
         "id,x\nA,nope.AT2\n",
         "x (set.csv:2, column B)",
     ),
+    (
+        "unterminated-quote",
+        "id,x,event\nA,builtin:ELC180,\"Imp\nB,builtin:ELC270,ev\n",
+        "set.csv:2, column C: a quoted cell opens here and is never closed",
+    ),
+    (
+        "units-builtin",
+        "id,x,units\nA,builtin:ELC180,m/s2\n",
+        "units (set.csv:2, column C)",
+    ),
 ];
 
 #[test]

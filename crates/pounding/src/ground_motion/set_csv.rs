@@ -13,13 +13,14 @@
 //!   A column whose name looks like one of these keys but is not one (`ID`, `Units`, `unit`,
 //!   `path`, `file`, `format`, `record_dt`, …) is refused rather than taken as metadata: a typo
 //!   must not silently drop a unit or a sample interval.
-//! * An empty cell is "not given"; spaces around a cell are ignored; a row of empty cells is
-//!   skipped. A metadata cell is an integer, a number or `true` / `false` when it reads back as
-//!   written (`6.95`, `42`), else text (`007`, `6.90`, `rock`): its `runs.csv` cell is the text
-//!   of the manifest's cell.
+//! * An empty cell is "not given"; spaces around a cell are ignored, also inside quotes
+//!   (`" padded "` is `padded`); a row of empty cells is skipped. A metadata cell is an
+//!   integer, a number or `true` / `false` when it reads back as written (`6.95`, `42`), else
+//!   text (`007`, `6.90`, `rock`): its `runs.csv` cell is the text of the manifest's cell.
 //! * Quoted cells (with commas, quotes `""` or line breaks), CRLF line endings and a UTF-8
-//!   byte-order mark are read as a spreadsheet writes them. A row with more or fewer cells than
-//!   the header (a ragged row) is refused.
+//!   byte-order mark are read as a spreadsheet writes them. A quote that opens a cell and is
+//!   never closed is refused (naming the line where it opens), not read to the end of the
+//!   file. A row with more or fewer cells than the header (a ragged row) is refused.
 //! * Messages name the manifest, the line where the row starts (1-based: the header is line 1)
 //!   and the column (its spreadsheet letter; the key is its header name).
 
@@ -259,10 +260,57 @@ impl Lines<'_> {
     }
 }
 
+/// Where a quoted cell of `text` opens and is never closed, if one is: its 1-based line and
+/// 0-based column. The CSV reader would take every later line into that cell (silently
+/// dropping rows), so such a file is refused. A quote opens a cell only as its first character
+/// (as the reader reads it); `""` inside quotes is an escaped quote.
+fn unterminated_quote(text: &[u8]) -> Option<(usize, usize)> {
+    #[derive(PartialEq)]
+    enum S {
+        Start,
+        Field,
+        Quoted,
+        QuoteInQuoted,
+    }
+    let (mut st, mut line, mut col, mut opened) = (S::Start, 1, 0, (1, 0));
+    for (k, &c) in text.iter().enumerate() {
+        let newline = c == b'\n' || (c == b'\r' && text.get(k + 1) != Some(&b'\n'));
+        if st == S::Quoted || (st == S::QuoteInQuoted && c == b'"') {
+            st = if c == b'"' && st == S::Quoted {
+                S::QuoteInQuoted
+            } else {
+                S::Quoted
+            };
+        } else if c == b',' {
+            (st, col) = (S::Start, col + 1);
+        } else if c == b'\n' || c == b'\r' {
+            (st, col) = (S::Start, if newline { 0 } else { col });
+        } else if st == S::Start && c == b'"' {
+            (st, opened) = (S::Quoted, (line, col));
+        } else {
+            st = S::Field;
+        }
+        if newline {
+            line += 1;
+        }
+    }
+    (st == S::Quoted).then_some(opened)
+}
+
 /// The entries of the CSV manifest `cx.text` and the problems found while reading its rows
 /// (every row is read, so that all problems are listed at once).
 pub(super) fn entries(cx: &Ctx) -> (Vec<Entry>, Vec<String>) {
     let text = cx.text.strip_prefix('\u{feff}').unwrap_or(cx.text);
+    if let Some((line, c)) = unterminated_quote(text.as_bytes()) {
+        let problem = format!(
+            "{}:{line}, column {}: a quoted cell opens here and is never closed: every later \
+             line would be read into it; close the quote (a quote inside a quoted cell is \
+             written \"\")",
+            cx.origin,
+            column_name(c)
+        );
+        return (Vec::new(), vec![problem]);
+    }
     let mut rd = csv::ReaderBuilder::new()
         .has_headers(false)
         .flexible(true)

@@ -282,6 +282,21 @@ pub const BAD: &[(&str, &str, &[&str])] = &[
         "id,x,note\r\nA,builtin:ELC180,\"two\r\nlines\"\r\nB,,\r\n",
         &["x (set.csv:4, column B): empty"],
     ),
+    (
+        "unterminated quote swallowing later rows",
+        "id,x,dt,units,event\nA,a.txt,0.01,m/s2,\"Imp\nB,a.txt,0.01,m/s2,ev\n",
+        &["set.csv:2, column E", "never closed"],
+    ),
+    (
+        "unterminated quote on the last row",
+        "id,x,dt,units,event\r\nA,a.txt,0.01,m/s2,ok\r\nB,a.txt,0.01,m/s2,\"Imp\r\n",
+        &["set.csv:3, column E", "never closed"],
+    ),
+    (
+        "unterminated quote after a closed multi-line one and an escaped quote",
+        "id,x,note\nA,builtin:ELC180,\"two\nlines \"\"q\"\"\"\nB,builtin:ELC270,\"x\n",
+        &["set.csv:4, column C", "never closed"],
+    ),
 ];
 
 #[test]
@@ -338,4 +353,210 @@ proptest::proptest! {
             Err(e) => proptest::prop_assert!(e.to_string().contains("p.csv"), "{e}"),
         }
     }
+}
+
+/// A `units` key or cell for a record that keeps its own units (a built-in record, an `.AT2`
+/// whose header names them) is refused naming the key, file and line, in TOML and CSV alike; an
+/// `.AT2` whose header names no units takes them.
+#[test]
+fn units_for_a_record_with_its_own_units_are_refused_not_ignored() {
+    let d = scratch("units-own");
+    let at2 = |units: &str| {
+        format!(
+            "PEER NGA STRONG MOTION DATABASE RECORD\nTEST RECORD\n\
+             ACCELERATION TIME SERIES{units}\nNPTS=    4, DT=   .0100 SEC\n\
+             0.1 0.2 -0.1 0.0\n"
+        )
+    };
+    std::fs::write(d.join("g.AT2"), at2(" IN UNITS OF G")).unwrap();
+    std::fs::write(d.join("none.AT2"), at2("")).unwrap();
+    let cases = [
+        (
+            "t1.toml",
+            "[[record]]\nid = \"A\"\nx = \"g.AT2\"\nunits = \"m/s2\"\n",
+            "record[0].units (",
+            "t1.toml:4)",
+        ),
+        (
+            "t2.toml",
+            "[[record]]\nid = \"A\"\nx = \"builtin:ELC180\"\n\n[[record]]\nid = \"B\"\n\
+             x = \"builtin:ELC180\"\ny = \"builtin:ELC270\"\nunits = \"g\"\n",
+            "record[1].units (",
+            "t2.toml:9)",
+        ),
+        (
+            "c1.csv",
+            "id,x,units\nA,none.AT2,\nB,g.AT2,m/s2\n",
+            "units (",
+            "c1.csv:3, column C)",
+        ),
+        (
+            "c2.csv",
+            "id,x,units\nA,builtin:ELC180,m/s2\n",
+            "units (",
+            "c2.csv:2, column C)",
+        ),
+    ];
+    for (name, text, key, at) in cases {
+        std::fs::write(d.join(name), text).unwrap();
+        let e = RecordSet::load(&d.join(name)).unwrap_err().to_string();
+        assert!(
+            e.contains(key) && e.contains(at) && e.contains("does not apply; remove it"),
+            "{name}: {e}"
+        );
+        assert!(e.contains("AT2") || e.contains("built-in"), "{name}: {e}");
+    }
+    // an .AT2 whose header names no units takes the given units (m/s2: values as written)
+    let s = load(&d, "ok.csv", "id,x,units\nA,none.AT2,m/s2\nB,none.AT2,\n");
+    let (a, b) = (&s.records[0].x, &s.records[1].x);
+    assert!(a.units().contains("m/s2"), "{}", a.units());
+    let ratio = b.values()[1] / a.values()[1];
+    assert!((ratio - 9.80665).abs() < 1e-9, "{ratio}");
+}
+
+/// A quoted cell is trimmed of surrounding spaces like any other (as the guide says).
+#[test]
+fn quoted_csv_cells_are_trimmed() {
+    let d = scratch("trim");
+    let s = load(
+        &d,
+        "set.csv",
+        "id,x,note\n\" A \",builtin:ELC180,\" padded \"\n",
+    );
+    assert_eq!(s.records[0].id, "A");
+    assert_eq!(s.records[0].meta[0].1, MetaValue::Text("padded".into()));
+}
+
+/// 20,000 entries in one manifest: every entry's line is right (the last one's duplicate id is
+/// named at its line). Naming lines by scanning the text per entry made this quadratic (40 s
+/// for a TOML manifest); it is now linear (a fraction of a second; timed by the `manifest`
+/// bench, not here).
+#[test]
+fn a_manifest_of_20000_entries_names_the_line_of_the_last() {
+    let d = scratch("big");
+    let n = 20_000;
+    let mut toml = String::new();
+    let mut csv = String::from("id,x,dt\n");
+    for i in 0..n {
+        let id = if i == n - 1 { 0 } else { i };
+        toml.push_str(&format!(
+            "[[record]]\nid = \"R{id}\"\nx = \"a.txt\"\ndt = 0.01\n\n"
+        ));
+        csv.push_str(&format!("R{id},a.txt,0.01\n"));
+    }
+    let t = err_in(&d, "big.toml", &toml);
+    let last = 5 * (n - 1) + 2;
+    assert!(
+        t.contains(&format!(
+            "record[{}].id (big.toml:{last}): duplicate id \"R0\" (also record[0])",
+            n - 1
+        )),
+        "{t}"
+    );
+    let c = err_in(&d, "big.csv", &csv);
+    assert!(
+        c.contains(&format!(
+            "id (big.csv:{}, column A): duplicate id \"R0\" (also line 2)",
+            n + 1
+        )),
+        "{c}"
+    );
+    // without the duplicate: every entry read, in order
+    let ok = toml.replace("[[record]]\nid = \"R0\"\nx = \"a.txt\"\ndt = 0.01\n\n", "");
+    let s = load(&d, "ok.toml", &ok);
+    assert_eq!(s.records.len(), n - 2);
+    assert_eq!(s.records[0].id, "R1");
+    assert_eq!(s.records[n - 3].id, format!("R{}", n - 2));
+}
+
+fn err_in(d: &Path, name: &str, text: &str) -> String {
+    std::fs::write(d.join(name), text).unwrap();
+    let e = RecordSet::load(&d.join(name)).unwrap_err().to_string();
+    e.replace(&format!("{}/", d.display()), "")
+}
+
+/// A manifest over its size limit is refused naming the limit and the page that lists it, and
+/// that page lists it; so does it every kind of file read with a limit (`read_text(_, WHAT, _)`).
+#[test]
+fn the_manifest_size_limit_is_listed_where_its_message_points() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let page = std::fs::read_to_string(root.join("docs/guide/robustness.md")).unwrap();
+    let rows: Vec<&str> = page.lines().filter(|l| l.starts_with("| ")).collect();
+    let d = scratch("limit");
+    for name in ["big.toml", "big.csv"] {
+        let f = std::fs::File::create(d.join(name)).unwrap();
+        f.set_len(16 * 1024 * 1024 + 1).unwrap();
+        let e = RecordSet::load(&d.join(name)).unwrap_err().to_string();
+        assert!(
+            e.contains(name) && e.contains("16 MiB") && e.contains("docs/guide/robustness.md"),
+            "{e}"
+        );
+    }
+    assert!(
+        rows.iter()
+            .any(|r| r.starts_with("| record set") && r.contains("| 16 MiB |")),
+        "no record-set row in robustness.md"
+    );
+    let mut kinds = Vec::new();
+    for dir in ["crates/pounding/src", "crates/pounding-cli/src"] {
+        let mut stack = vec![root.join(dir)];
+        while let Some(p) = stack.pop() {
+            if p.is_dir() {
+                stack.extend(std::fs::read_dir(&p).unwrap().map(|e| e.unwrap().path()));
+                continue;
+            }
+            let src = std::fs::read_to_string(&p).unwrap_or_default();
+            for (k, _) in src.match_indices("read_text(") {
+                let call = &src[k..(k + 200).min(src.len())];
+                let call = &call[..call.find(';').unwrap_or(call.len())];
+                if let Some(q) = call.split('"').nth(1)
+                    && call.contains("LIMIT")
+                {
+                    kinds.push(q.trim_end_matches(" file").to_string());
+                }
+            }
+        }
+    }
+    assert!(kinds.iter().any(|k| k == "record set"), "{kinds:?}");
+    for k in kinds {
+        assert!(
+            rows.iter().any(|r| r.contains(&k)),
+            "robustness.md lists no limit for {k:?}"
+        );
+    }
+}
+
+/// A manifest saved in UTF-16 (with or without a byte-order mark) is refused saying so; one in
+/// Latin-1 names the line of the first byte that is not UTF-8.
+#[test]
+fn a_manifest_not_in_utf8_is_refused_with_a_hint() {
+    let d = scratch("enc");
+    let text = "id,x\nA,builtin:ELC180\n";
+    let le: Vec<u8> = text.encode_utf16().flat_map(u16::to_le_bytes).collect();
+    let be: Vec<u8> = text.encode_utf16().flat_map(u16::to_be_bytes).collect();
+    let cases: [(&str, Vec<u8>); 3] = [
+        ("le-bom.csv", [&[0xFF, 0xFE][..], &le].concat()),
+        ("be-bom.toml", [&[0xFE, 0xFF][..], &be].concat()),
+        ("le.csv", le.clone()),
+    ];
+    for (name, bytes) in cases {
+        std::fs::write(d.join(name), bytes).unwrap();
+        let e = RecordSet::load(&d.join(name)).unwrap_err().to_string();
+        assert!(
+            e.contains(name) && e.contains("looks like UTF-16") && e.contains("save it as UTF-8"),
+            "{name}: {e}"
+        );
+    }
+    let latin1 = b"id,x,event\nA,builtin:ELC180,ok\nB,builtin:ELC270,Ciudad Ju\xe1rez\n";
+    std::fs::write(d.join("latin1.csv"), latin1).unwrap();
+    let e = RecordSet::load(&d.join("latin1.csv"))
+        .unwrap_err()
+        .to_string();
+    let at = latin1.iter().position(|&b| b == 0xE1).unwrap();
+    assert!(
+        e.contains("latin1.csv")
+            && e.contains(&format!("0xE1 on line 3, at offset {at}"))
+            && e.contains("save it as UTF-8"),
+        "{e}"
+    );
 }
