@@ -3,7 +3,7 @@
 //!
 //! | kind | demand | capacity | exceeded |
 //! |---|---|---|---|
-//! | `unseating` | the largest seat displacement of any seated end | the shortest seat length | the run's own `unseated` flag |
+//! | `unseating` | the largest ratio of an end's seat displacement to its own seat length | 1 | the run's own `unseated` flag |
 //! | `joint_force` (compliance laws) | largest `peak_contact_force_n` over the joints | `capacity_n` | ratio > 1 |
 //! | `joint_force` (rigid law) | largest `peak_impulse_ns` over the joints | `capacity_ns` | ratio > 1 |
 //! | `bearing_deformation` | largest `peak_bearing_deformation_m` over the segments | `limit_m` | ratio > 1 |
@@ -11,9 +11,8 @@
 //! | `joint_opening` | largest `peak_opening_m` over the joints | `limit_m` | ratio > 1 |
 //!
 //! The *margin* is the ratio `r = demand / capacity`; `1 − r` is the remaining fraction of the
-//! capacity (for unseating: the remaining seat fraction). For unseating the ratio is exact when
-//! every seat has the same length (the usual case); with different seat lengths it uses the
-//! shortest and is an upper bound, while `exceeded` is always the run's own per-end check.
+//! capacity (for unseating: the remaining seat fraction of the most critical end, each end
+//! against its own seat length; `exceeded` is the run's own per-end check).
 //! Abutment forces are not part of `joint_force`.
 
 use super::AssessmentError;
@@ -27,19 +26,10 @@ use crate::sim::bridge::{BridgeModel, BridgeSummary};
 pub struct BoundLimit {
     /// The limit state as written.
     pub state: LimitState,
-    /// The capacity the demand is divided by (unseating: the shortest seat length \[m\]).
+    /// The capacity the demand is divided by (unseating: 1, the demand being a ratio).
     pub capacity: Real,
     /// `joint_force` on a rigid bridge reads the impulse.
     pub rigid: bool,
-}
-
-/// The shortest seat length of the bridge's seated ends \[m\].
-fn shortest_seat(model: &BridgeModel) -> Real {
-    let mut lengths: Vec<Real> = model.joints.iter().map(|j| j.seat_length).collect();
-    for side in 0..2 {
-        lengths.push(model.abutments[side].map_or(model.outer_seat_length, |a| a.seat_length));
-    }
-    lengths.into_iter().fold(Real::INFINITY, Real::min)
 }
 
 /// Checks every limit state against `model` (a joint limit state on a bridge without joints,
@@ -76,7 +66,7 @@ pub fn bind(
         }
         let capacity =
             match s.kind {
-                LimitKind::Unseating => shortest_seat(model),
+                LimitKind::Unseating => 1.0,
                 LimitKind::JointForce {
                     capacity_n,
                     capacity_ns,
@@ -119,7 +109,7 @@ impl BoundLimit {
     pub fn demand(&self, s: &BridgeSummary) -> Real {
         let max = |it: &mut dyn Iterator<Item = Real>| it.fold(Real::NEG_INFINITY, Real::max);
         match self.state.kind {
-            LimitKind::Unseating => s.peak_seat_displacement,
+            LimitKind::Unseating => s.peak_seat_ratio,
             LimitKind::JointForce { .. } if self.rigid => {
                 max(&mut s.joints.iter().map(|j| j.peak_impulse))
             }

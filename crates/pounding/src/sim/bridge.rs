@@ -1138,6 +1138,9 @@ pub struct BridgeSummary {
     /// Largest seat displacement over all seated ends (joint ends and outer ends, as the
     /// two-deck [`super::SimSummary::peak_seat_displacement`]) \[m\].
     pub peak_seat_displacement: Real,
+    /// Largest ratio of an end's seat displacement to its own seat length, over all seated
+    /// ends: the unseating margin (above 1 where an end unseated) \[-\].
+    pub peak_seat_ratio: Real,
     /// Some end exceeded its seat length.
     pub unseated: bool,
     /// First time an end exceeded its seat length \[s\].
@@ -1418,6 +1421,12 @@ fn solution(
             .seat
             .iter()
             .copied()
+            .fold(Real::NEG_INFINITY, Real::max),
+        peak_seat_ratio: peaks
+            .seat
+            .iter()
+            .zip(&br.seats)
+            .map(|(d, seat)| d / seat.length)
             .fold(Real::NEG_INFINITY, Real::max),
         unseated: peaks.unseat.is_some(),
         unseating_time: peaks.unseat.map(|u| u.0),

@@ -396,6 +396,7 @@ fn limit_states_on_a_hand_set_summary() {
     s.joints[0].peak_opening = 0.04;
     s.joints[0].peak_impulse = 2.0e5;
     s.peak_seat_displacement = 0.3;
+    s.peak_seat_ratio = 0.6;
     s.unseated = false;
     let got: Vec<(Option<bool>, f64)> = lims.iter().map(|l| l.evaluate(&s)).collect();
     let names: Vec<&str> = lims.iter().map(|l| l.state.name.as_str()).collect();
@@ -407,13 +408,9 @@ fn limit_states_on_a_hand_set_summary() {
     assert!(close(got[1].1, 0.8));
     assert_eq!(got[2].0, Some(false));
     assert!(close(got[2].1, 0.8));
-    // unseating: the run's flag; the ratio over the shortest seat (the default seat length)
-    let seat = setup.problem.model.joints[0].seat_length;
+    // unseating: the run's flag; the ratio is the summary's per-end seat ratio
     assert_eq!(got[3].0, Some(false));
-    assert!(close(
-        got[3].1,
-        0.3 / seat.min(setup.problem.model.outer_seat_length)
-    ));
+    assert!(close(got[3].1, 0.6));
     s.unseated = true;
     assert_eq!(lims[3].evaluate(&s).0, Some(true));
     assert_eq!(got[4], (Some(true), 2.0));

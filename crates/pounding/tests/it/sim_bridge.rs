@@ -258,3 +258,49 @@ fn bad_bridges_are_errors_naming_the_key() {
         "{e}"
     );
 }
+
+#[test]
+fn the_unseating_ratio_reads_each_end_against_its_own_seat() {
+    // Three segments on bearings under El Centro; only the two outer seats are short enough
+    // to matter. `peak_seat_ratio` must put its flag and its ratio on the same side of 1 (the
+    // fragility `unseating` margin): dividing the largest displacement of any end by the
+    // shortest seat (as before) breaks that whenever another end moves more.
+    let settings = SimSettings {
+        duration: Some(8.0),
+        ..SimSettings::default()
+    };
+    let run = |seat_j0: f64| {
+        let mut m = chain(3, 2.0e7, 0.03, 0.5);
+        // a softer middle segment moves more than the outer two
+        m.segments[1] = Segment::with_corner_bearings(straight(30.0), false, 4.0e6);
+        m.outer_seat_length = seat_j0;
+        m.joints[0].seat_length = 1e3;
+        m.joints[1].seat_length = 1e3;
+        let bp = BridgeProblem::at_rest(m, el_centro_1940());
+        simulate_bridge(&bp, &settings).unwrap().summary
+    };
+    let long = run(10.0);
+    assert!(!long.unseated);
+    // the outer ends' own seat displacement (every other seat is 100x longer)
+    let d = long.peak_seat_ratio * 10.0;
+    assert!(
+        d > 1e-4 && long.peak_seat_displacement / 1e3 < d / 10.0,
+        "{d}"
+    );
+    // the middle segment's ends (at the joints) move more: the old ratio would be off
+    assert!(
+        long.peak_seat_displacement > d * 1.01,
+        "{} vs {d}",
+        long.peak_seat_displacement
+    );
+    for (seat, unseats) in [(d * (1.0 + 1e-9), false), (d * (1.0 - 1e-9), true)] {
+        let s = run(seat);
+        assert_eq!(s.unseated, unseats, "seat {seat}");
+        assert_eq!(s.peak_seat_ratio > 1.0, unseats, "{}", s.peak_seat_ratio);
+        assert!(
+            (s.peak_seat_ratio - d / seat).abs() < 1e-9,
+            "{}",
+            s.peak_seat_ratio
+        );
+    }
+}
