@@ -269,7 +269,7 @@ impl<'a> Tables<'a> {
     }
 
     /// The table of the `k`-th distinct length.
-    #[inline]
+    #[inline(always)]
     fn table(&mut self, k: u32) -> &Table {
         if self.kept.is_empty() {
             let h = self.lengths.hs[k as usize];
@@ -297,16 +297,10 @@ pub(super) fn walk(
     mut f: impl FnMut(&Step, &Table) -> (Real, Real),
 ) {
     let mut s = Step::default();
-    let index = &tables.lengths.index;
-    for (&k, &(a0, a1)) in index.iter().zip(loads) {
+    let lengths = tables.lengths;
+    for (&k, &(a0, a1)) in lengths.index.iter().zip(loads) {
         (s.a0, s.a1) = (a0, a1);
-        let t = if tables.kept.is_empty() {
-            let h = tables.lengths.hs[k as usize];
-            &*tables.scratch.insert(Table::new(&tables.osc, h))
-        } else {
-            &tables.kept[k as usize]
-        };
-        (s.u0, s.v0) = f(&s, t);
+        (s.u0, s.v0) = f(&s, tables.table(k));
     }
     (s.a0, s.a1) = (0.0, 0.0);
     for _ in 0..TAIL_STEPS {
@@ -535,15 +529,10 @@ impl Scan {
         let osc = tables.osc;
         let mut scan = Scan::new();
         let mut s = Step::default();
-        for (&k, a) in tables.lengths.index.iter().zip(accel.windows(2)) {
+        let lengths = tables.lengths;
+        for (&k, a) in lengths.index.iter().zip(accel.windows(2)) {
             (s.a0, s.a1) = (a[0], a[1]);
-            let t = if tables.kept.is_empty() {
-                let h = tables.lengths.hs[k as usize];
-                &*tables.scratch.insert(Table::new(&osc, h))
-            } else {
-                &tables.kept[k as usize]
-            };
-            (s.u0, s.v0) = scan.add(&osc, &s, t);
+            (s.u0, s.v0) = scan.add(&osc, &s, tables.table(k));
         }
         (s.a0, s.a1) = (0.0, 0.0);
         for _ in 0..TAIL_STEPS {
