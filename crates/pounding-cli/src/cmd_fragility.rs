@@ -3,11 +3,12 @@
 //! ([`pounding::assessment`]); `runs.csv`, the fitted curves, a figure, a report and
 //! `timing.json` in `--out`.
 
+use crate::fragility_study::{Fits, Study, boot_failed};
 use anyhow::{Context, Result, anyhow, bail};
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use pounding::assessment::im::{ImSpec, PeriodInfo, fundamental_period};
-use pounding::assessment::limit::{BoundLimit, bind};
+use pounding::assessment::limit::bind;
 use pounding::assessment::run::{Plan, RunRow, fit_limit_state, run_all, runs_csv};
 use pounding::assessment::{FragilitySettings, PeriodChoice};
 use pounding::fragility::{
@@ -47,25 +48,6 @@ pub struct Args {
     /// Worker threads (default: all cores).
     #[arg(long)]
     pub threads: Option<usize>,
-}
-
-/// Everything read and checked before any run.
-pub(crate) struct Study {
-    pub origin: String,
-    pub setup: pounding::sim::scenario::BridgeSetup,
-    pub settings: FragilitySettings,
-    pub set: RecordSet,
-    pub set_path: PathBuf,
-    pub limits: Vec<BoundLimit>,
-    pub spec: ImSpec,
-    pub period: Option<PeriodInfo>,
-}
-
-impl Study {
-    /// The scenario's name.
-    pub fn scenario_origin(&self) -> &str {
-        &self.origin
-    }
 }
 
 /// Reads the scenario, its `[fragility]` settings, the record set and binds the limit states.
@@ -280,12 +262,6 @@ fn write_outputs(
     .map_err(|e| anyhow!("{e:#}"))
 }
 
-/// The fits of every limit state and the IMs of the bootstrap band.
-pub(crate) struct Fits {
-    pub rows: Vec<FragilityRow>,
-    pub band_im: Vec<Real>,
-}
-
 /// Fits every limit state ([`fit_limit_state`]); the band spans the IMs run, 60 points evenly
 /// spaced in log IM.
 fn fit_all(st: &Study, plan: &Plan, rows: &[RunRow]) -> Result<Fits> {
@@ -319,14 +295,6 @@ fn fit_all(st: &Study, plan: &Plan, rows: &[RunRow]) -> Result<Fits> {
 /// `lo–hi` of an interval, or `-`.
 fn interval(i: Option<(Real, Real)>) -> String {
     i.map_or("-".into(), |(a, b)| format!("{a:.4}-{b:.4}"))
-}
-
-/// `failed/samples` of a row's bootstrap, or `-` (no bootstrap, or no fit).
-pub(crate) fn boot_failed(r: &FragilityRow) -> String {
-    match (&r.bootstrap, r.bootstrap_failed()) {
-        (Some(b), Some(f)) => format!("{f}/{}", b.samples),
-        _ => "-".into(),
-    }
 }
 
 /// Stdout: per limit state θ, β, their intervals, the failed bootstrap replicates and the counts.

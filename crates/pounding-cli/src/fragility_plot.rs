@@ -4,7 +4,7 @@
 //! self-contained page (inline CSS, no scripts, no timestamps) with the study, the table of fits
 //! and the figure.
 
-use crate::cmd_fragility::{Fits, Study};
+use crate::fragility_study::{Fits, Study, boot_failed};
 use crate::plot_style::{
     BLUE, DrawResult, FAMILY, GREEN, ORANGE, PURPLE, RED, e, register, save_png, series_legend,
 };
@@ -223,7 +223,7 @@ pub(crate) fn report(st: &Study, plan: &Plan, rows: &[RunRow], fits: &Fits) -> S
             g4(b),
             iv(bs.and_then(|b| b.theta)),
             iv(bs.and_then(|b| b.beta)),
-            esc(&crate::cmd_fragility::boot_failed(f)),
+            esc(&boot_failed(f)),
             f.n_records,
             f.n_runs
         );

@@ -15,6 +15,7 @@ mod cmd_spectrum;
 mod cmd_study;
 mod figures;
 mod fragility_plot;
+mod fragility_study;
 mod plot_style;
 mod plots;
 mod report;
