@@ -59,7 +59,9 @@
 //! [`super::SimSolution::time_step_advice`] (the CLI warns when it is not adequate).
 #![allow(clippy::needless_range_loop)]
 use super::contact::{Pose, State, candidates};
-use super::driver::{Bridge, ImpactLog, Scheme, StepInput, StepOutput, Stepper, StepperStats};
+use super::driver::{
+    Bridge, ImpactLog, Scheme, StepInput, StepOutput, Stepper, StepperStats, Winv,
+};
 use super::model::SegmentBody;
 use super::{ComplianceContact, ImpactRecord, SimContact, SimError};
 use crate::analytic::SlipMode;
@@ -171,7 +173,7 @@ fn crossing(t: Real, h: Real, d0: Real, d1: Real) -> Real {
 struct Trial<'a> {
     q: &'a State,
     u: &'a State,
-    sc: &'a Scheme,
+    winv: Winv<'a>,
     base: State,
 }
 
@@ -384,7 +386,7 @@ impl ComplianceStepper {
 
     /// The residual `r(u) = u − base − hθ Ŵ⁻¹ R(u)`.
     fn resid(&self, tr: &Trial, un: &State, ev: &[EndEval]) -> State {
-        un - &tr.base - tr.sc.winv_mul(&gen_force(ev)) * self.hth
+        un - &tr.base - tr.winv.mul(&gen_force(ev)) * self.hth
     }
 
     /// Newton with backtracking on `r(u) = 0` from `un`; returns the converged iterate or, if
@@ -399,8 +401,8 @@ impl ComplianceStepper {
             return (true, un, ev);
         }
         for _ in 0..50 {
-            let jac = DMatrix::identity(n, n)
-                - tr.sc.winv_mul_mat(&force_jacobian(&ev, false)) * self.hth;
+            let jac =
+                DMatrix::identity(n, n) - tr.winv.mul_mat(&force_jacobian(&ev, false)) * self.hth;
             let Some(du) = jac.lu().solve(&(-&r)) else {
                 break;
             };
@@ -473,7 +475,7 @@ impl ComplianceStepper {
         for _ in 0..30 {
             let mut ev = self.eval_at(tr, &un);
             self.hold(&mut ev, &held, &lam, &un);
-            let r_u = &un - &tr.base - tr.sc.winv_mul(&gen_force(&ev)) * hth;
+            let r_u = &un - &tr.base - tr.winv.mul(&gen_force(&ev)) * hth;
             let mut r = State::zeros(n);
             r.rows_mut(0, nq).copy_from(&r_u);
             for (i, &e) in held.iter().enumerate() {
@@ -482,9 +484,9 @@ impl ComplianceStepper {
             let dr = force_jacobian(&ev, true);
             let mut jac = nalgebra::DMatrix::<Real>::zeros(n, n);
             jac.view_mut((0, 0), (nq, nq))
-                .copy_from(&(DMatrix::identity(nq, nq) - tr.sc.winv_mul_mat(&dr) * hth));
+                .copy_from(&(DMatrix::identity(nq, nq) - tr.winv.mul_mat(&dr) * hth));
             for (i, &e) in held.iter().enumerate() {
-                let col = -(tr.sc.winv_mul(&(&ev[e].wn - &ev[e].wt * ev[e].mus))) * hth;
+                let col = -(tr.winv.mul(&(&ev[e].wn - &ev[e].wt * ev[e].mus))) * hth;
                 jac.view_mut((0, nq + i), (nq, 1)).copy_from(&col);
                 // δ = −g_N, ∂g_N/∂q = w_Nᵀ, ∂q/∂u = hθ
                 let row = -(ev[e].wn.transpose() * hth);
@@ -645,12 +647,11 @@ impl Stepper for ComplianceStepper {
 
     fn step(&mut self, inp: &StepInput, log: &mut ImpactLog) -> StepOutput {
         let (h, th, hth) = (self.h, self.th, self.hth);
-        let sc = inp.scheme;
-        let wr = sc.winv_mul(&self.r_k);
+        let wr = inp.winv.mul(&self.r_k);
         let tr = Trial {
             q: inp.q,
             u: inp.u,
-            sc,
+            winv: inp.winv,
             base: inp.u_free + &wr * (h * (1.0 - th)),
         };
         let guess = &tr.base + &wr * hth;

@@ -108,8 +108,10 @@ pub(crate) struct Scheme {
     pub ag: Vec<Vector>,
     /// `M`, `K`, `C`, frequencies per segment.
     pub bodies: Vec<BodySystem>,
-    /// `Ŵ_j⁻¹ = (M_j + hθC_j + h²θ²K_j)⁻¹` per segment.
-    winv: Vec<Matrix3<Real>>,
+    /// `Ŵ_j = M_j + hθC_j + h²θ²K_j` per segment.
+    pub(crate) what: Vec<Matrix3<Real>>,
+    /// `Ŵ_j⁻¹` per segment.
+    pub(crate) winv: Vec<Matrix3<Real>>,
     a_u: Vec<Matrix3<Real>>,
     a_q: Vec<Matrix3<Real>>,
     b_g: Vec<Matrix3x2<Real>>,
@@ -148,6 +150,7 @@ impl Scheme {
             th,
             n_steps,
             ag,
+            what: Vec::with_capacity(n),
             winv: Vec::with_capacity(n),
             a_u: Vec::with_capacity(n),
             a_q: Vec::with_capacity(n),
@@ -173,6 +176,7 @@ impl Scheme {
             sc.a_q.push(-(winv * kk) * h);
             sc.b_g.push(-(winv * mr) * h);
             sc.winv.push(winv);
+            sc.what.push(what);
             sc.mr.push(mr);
         }
         sc.bodies = bodies;
@@ -207,21 +211,6 @@ impl Scheme {
             let x: Vector3<Real> = v.fixed_rows::<3>(3 * j).into_owned();
             out.fixed_rows_mut::<3>(3 * j).copy_from(&(b * x));
         }
-    }
-
-    /// `Ŵ⁻¹ v`.
-    pub fn winv_mul(&self, v: &State) -> State {
-        Self::apply(&self.winv, v)
-    }
-
-    /// `Ŵ⁻¹ D` column by column.
-    pub fn winv_mul_mat(&self, d: &DMatrix<Real>) -> DMatrix<Real> {
-        let mut out = DMatrix::zeros(d.nrows(), d.ncols());
-        for c in 0..d.ncols() {
-            let col: State = d.column(c).into_owned();
-            out.set_column(c, &self.winv_mul(&col));
-        }
-        out
     }
 
     /// The contact-free velocity `u_free = u + A_u u + A_q q + B_g ā`, into `out`.
@@ -259,6 +248,30 @@ impl Scheme {
     fn damping_power(&self, v: &State, cv: &mut State) -> Real {
         Self::apply_blocks_into(self.bodies.iter().map(|b| &b.damping), v, cv);
         v.dot(cv)
+    }
+}
+
+/// A block-diagonal iteration-matrix inverse, one `3 × 3` block per segment: the scheme's
+/// `Ŵ⁻¹`, or in a step where yielding bearings flow, the inverse of the tangent
+/// `Ŵ_t = Ŵ − h²θ² Σ Bᵀ (k0 I − K_t) B` of [`super::elements::Implicit`] (the response of the
+/// segments to a contact impulse with their bearings on the branch they are on).
+#[derive(Clone, Copy)]
+pub(crate) struct Winv<'a>(pub &'a [Matrix3<Real>]);
+
+impl Winv<'_> {
+    /// `Ŵ⁻¹ v`.
+    pub fn mul(&self, v: &State) -> State {
+        Scheme::apply(self.0, v)
+    }
+
+    /// `Ŵ⁻¹ D` column by column.
+    pub fn mul_mat(&self, d: &DMatrix<Real>) -> DMatrix<Real> {
+        let mut out = DMatrix::zeros(d.nrows(), d.ncols());
+        for c in 0..d.ncols() {
+            let col: State = d.column(c).into_owned();
+            out.set_column(c, &self.mul(&col));
+        }
+        out
     }
 }
 
@@ -462,6 +475,9 @@ pub(crate) struct StepInput<'a> {
     pub bridge: &'a Bridge,
     /// Time grid and matrices.
     pub scheme: &'a Scheme,
+    /// The iteration-matrix inverse of this step (the scheme's `Ŵ⁻¹`, or the tangent one where
+    /// bearings flow: [`Winv`]).
+    pub winv: Winv<'a>,
 }
 
 /// The times `t_k = k·h` of the step grid, as the decimals the user expects: with `h` a short
@@ -542,6 +558,9 @@ pub(crate) struct StepperStats {
     pub lcp_failures: usize,
     pub newton_failures: usize,
     pub closure_steps: usize,
+    /// Steps in which a contact impulse changed a yielding bearing's branch and the end
+    /// velocity was corrected ([`super::yielding`]).
+    pub bearing_corrections: usize,
     pub time_step_advice: Option<TimeStepAdvice>,
 }
 
@@ -864,6 +883,7 @@ pub(crate) fn run<S: Stepper>(
     let nb = bridge.bodies.len();
     let has_elements = !el.is_empty();
     let mut el_force = super::elements::StepForce::new(nb);
+    let mut yielding = super::yielding::Implicit::new(&el.bearings, sc);
     // the geometry at q_k: computed once per state, after q_{k+1} is known, so that the
     // elements' commit at q_{k+1} and the next step share its sin θ_j, cos θ_j
     let mut frame = bridge.frame(&q);
@@ -895,12 +915,20 @@ pub(crate) fn run<S: Stepper>(
         let abar = sc.ag[k] * (1.0 - th) + sc.ag[k + 1] * th;
         sc.u_free(&q, &u, &abar, &mut work.u_free);
         if has_elements {
-            el.step_force(&q, &u, h, &bridge.bodies, &frame.pose, &mut el_force);
+            el.step_force(&q, &u, h, th, &bridge.bodies, &frame.pose, &mut el_force);
             Scheme::apply_blocks_into(sc.winv.iter(), &el_force.r, &mut work.wr);
             for (uf, wr) in work.u_free.iter_mut().zip(work.wr.iter()) {
                 *uf += wr * h;
             }
+            if !yielding.is_empty() {
+                yielding.solve_free(sc, &el.bearings, &q, &u, &mut work.u_free, &el_force);
+            }
         }
+        let winv = if yielding.tangent {
+            Winv(&yielding.winv)
+        } else {
+            Winv(&sc.winv)
+        };
         let input = StepInput {
             t_next: clock.time(k + 1),
             q: &q,
@@ -909,8 +937,12 @@ pub(crate) fn run<S: Stepper>(
             frame: &frame,
             bridge,
             scheme: sc,
+            winv,
         };
-        let out = stepper.step(&input, &mut log);
+        let mut out = stepper.step(&input, &mut log);
+        if !yielding.is_empty() {
+            yielding.finish_step(sc, &el.bearings, &q, &u, &mut out.u, &mut el_force);
+        }
         peaks.pen = peaks.pen.max(out.penetration);
         ledger.advance(sc, k, &u, &out.u, &mut work);
         if has_elements {
@@ -930,7 +962,9 @@ pub(crate) fn run<S: Stepper>(
             break;
         }
     }
-    let stats = stepper.finish(&mut log);
+    let mut stats = stepper.finish(&mut log);
+    stats.newton_failures += yielding.failures;
+    stats.bearing_corrections = yielding.corrections;
     if status == SimStatus::Completed && stats.lcp_failures > 0 {
         status = SimStatus::CompletedWithLcpFailures;
     } else if status == SimStatus::Completed && stats.newton_failures > 0 {

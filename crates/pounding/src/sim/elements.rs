@@ -13,8 +13,10 @@
 //! force at the predicted end of the step (return mappings evaluated there, not committed): a
 //! predictor–corrector of second order where the laws are smooth (with `R̄ = R(q_k)` the scheme
 //! was first order and `viaduct-1d` differed from OpenSees' implicit Newmark by a few % at
-//! dt = 1e-4; with the mean it agrees to 0.1 %). After `q_{k+1}` the return mappings commit the
-//! new states.
+//! dt = 1e-4; with the mean it agrees to 0.1 %). For the bearings this is only the first
+//! estimate: [`super::yielding`] then solves their return mapping at the actual end of the step
+//! together with the momentum balance (the explicit estimate let a stiff bearing carry many times
+//! its yield force at a coarse step). After `q_{k+1}` the return mappings commit the new states.
 //!
 //! # Energy
 //! With `R̄` inside the momentum balance the discrete energy balance stays exact when the work
@@ -47,7 +49,7 @@ pub(crate) struct StepForce {
     rb0: State,
     /// `R̃(q_k + h u_k)` and its bearings' part.
     r1: State,
-    rb1: State,
+    pub(super) rb1: State,
     /// The cables' part `R̄ − R̄_b` (work booking).
     rc: State,
 }
@@ -119,18 +121,20 @@ impl Elements {
         self.bearings.is_empty() && self.cables.is_empty()
     }
 
-    /// The force held over the step from `q_k` with velocity `u_k`: the trapezoidal mean
-    /// `R̄ = ½ (R(q_k) + R̃(q_k + h u_k))` of the committed force and the trial force at the
+    /// The force held over the step from `q_k` with velocity `u_k`, first estimate: the mean
+    /// `R̄ = (1−θ) R(q_k) + θ R̃(q_k + h u_k)` of the committed force and the trial force at the
     /// predicted end of the step (return mappings evaluated, not committed), second order where
     /// the element laws are smooth. Leaves `R̄` in `f.r` and its bearings' part in `f.rb` (the
     /// rest is the cables'). `pose` is the pose at `q` (its `sin θ_j, cos θ_j` are shared with
     /// the contact geometry of the step); the pose at the predicted state is computed here only
     /// when there are cables (bearings use the linearised deformation).
+    #[allow(clippy::too_many_arguments)]
     pub fn step_force(
         &self,
         q: &State,
         u: &State,
         h: Real,
+        th: Real,
         bodies: &[SegmentBody],
         pose: &Pose,
         f: &mut StepForce,
@@ -148,9 +152,10 @@ impl Elements {
             f.pose_pred.set(bodies, f.pred.as_slice());
             self.add_cable_forces(&mut f.r1, &f.pose_pred, bodies);
         }
+        // (1−θ) a + θ b: for θ = ½ the same bits as (a + b)·½ (scaling by ½ is exact)
         for i in 0..q.len() {
-            f.r[i] = (f.r0[i] + f.r1[i]) * 0.5;
-            f.rb[i] = (f.rb0[i] + f.rb1[i]) * 0.5;
+            f.r[i] = f.r0[i] * (1.0 - th) + f.r1[i] * th;
+            f.rb[i] = f.rb0[i] * (1.0 - th) + f.rb1[i] * th;
         }
     }
 

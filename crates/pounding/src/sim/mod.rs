@@ -69,6 +69,7 @@ pub mod options;
 pub mod output;
 mod rigid;
 pub mod scenario;
+mod yielding;
 
 use crate::analytic::SlipMode;
 use crate::geometry::{ContactCase, GeometryError};

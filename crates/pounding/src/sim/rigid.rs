@@ -203,7 +203,7 @@ impl RigidStepper {
             .chain(active.iter().map(|a| &a.wt))
             .collect();
         let wcols: Vec<State> = dirs.iter().map(|d| d.dense(nb)).collect();
-        let wiw: Vec<State> = wcols.iter().map(|w| sc.winv_mul(w)).collect();
+        let wiw: Vec<State> = wcols.iter().map(|w| inp.winv.mul(w)).collect();
         let nc = 2 * n_act;
         let g = (0..nc)
             .map(|i| (0..nc).map(|j| dot_seq(&wcols[i], &wiw[j])).collect())

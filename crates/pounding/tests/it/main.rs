@@ -52,6 +52,7 @@ mod sim_friction;
 mod sim_outputs;
 mod sim_scenario;
 mod sim_shapes;
+mod sim_yielding;
 mod spectrum;
 mod spectrum_fast;
 mod spectrum_limits;

@@ -1,0 +1,124 @@
+//! Yielding bearings never leave their yield surface, whatever the step.
+//!
+//! One straight segment on its four corner bearings (bilinear, kinematic hardening), no damping,
+//! no contact, shaken along its axis: the deck translates without rotating, so the force the
+//! bearings exert in the momentum balance of each step is read back from the history,
+//! `F̄ = −m (u_{k+1} − u_k)/h − m ā_g`, and split into the hardening springs' part
+//! `b k0 Σ q̄` and the elastic–perfectly-plastic part, which must stay within `(1 − b) fy`.
+//! The coarse-step regression (a stiff bearing at a step far beyond its elastic period used to
+//! carry 100 × its yield force and report 1 % of the converged deformation) is checked against
+//! the converged answer.
+
+use pounding::sim::bridge::BridgeSolution;
+use pounding::sim::scenario::Scenario;
+use proptest::prelude::*;
+
+/// A one-segment bridge: mass `m`, four bearings of `k0` each, yield force `fy` of the four
+/// together, post-yield ratio `b`, step `dt`, `duration` s of El Centro 1940 NS scaled by
+/// `scale`.
+fn scenario(m: f64, k0: f64, fy: f64, b: f64, dt: f64, duration: f64, scale: f64) -> String {
+    format!(
+        "[bridge]\ndamping_ratio = 0.0\n\n[[segment]]\nshape = \"straight\"\nL = 30.0\n\
+         mass = {m:e}\nbearing_stiffness = {k0:e}\nbearing = \"bilinear\"\nfy = {fy:e}\n\
+         b = {b}\n\n[ground_motion]\nrecord_y = \"builtin:ELC180\"\nrecord_x = \"none\"\n\
+         scale_y = {scale}\n\n[time]\ndt = {dt:e}\nduration = {duration}\nhistory_every = 1\n"
+    )
+}
+
+/// Runs the scenario; returns the solution and `ā_g,k` of each step (y).
+fn run(text: &str) -> (BridgeSolution, Vec<f64>, f64) {
+    let setup = Scenario::from_toml(text, "yielding.toml")
+        .unwrap()
+        .build_bridge()
+        .unwrap();
+    let h = setup.settings.dt;
+    let sol = setup.run().unwrap();
+    let n = sol.steps;
+    let ag = setup.problem.ground.sample_uniform(h, n);
+    let th = setup.settings.theta;
+    let abar = (0..n)
+        .map(|k| ag[k].y * (1.0 - th) + ag[k + 1].y * th)
+        .collect();
+    (sol, abar, h)
+}
+
+/// The largest ratio `|F̄_p| / ((1 − b) fy)` of the elastic–perfectly-plastic part of the
+/// bearings' force over the steps, with the rounding allowance of each step's read-back.
+fn worst_yield_ratio(m: f64, k0: f64, fy: f64, b: f64, text: &str) -> (f64, BridgeSolution) {
+    let (sol, abar, h) = run(text);
+    assert_eq!(sol.status, pounding::sim::SimStatus::Completed);
+    assert_eq!(
+        sol.t.len(),
+        sol.steps + 1,
+        "history_every = 1 keeps every step"
+    );
+    let mut worst: f64 = 0.0;
+    for (k, ab) in abar.iter().enumerate() {
+        let (y0, y1) = (sol.q[3 * k + 1], sol.q[3 * (k + 1) + 1]);
+        let (v0, v1) = (sol.u[3 * k + 1], sol.u[3 * (k + 1) + 1]);
+        assert!(sol.q[3 * k + 2].abs() < 1e-12, "the deck does not rotate");
+        let f = -m * (v1 - v0) / h - m * ab;
+        let hardening = 4.0 * b * k0 * 0.5 * (y0 + y1);
+        let fp = f - hardening;
+        let eps = f64::EPSILON;
+        let rounding = 64.0
+            * eps
+            * (m * (v0.abs() + v1.abs()) / h
+                + hardening.abs()
+                + 4.0 * k0 * (y0.abs() + y1.abs())
+                + m * ab.abs());
+        let excess = (fp.abs() - (1.0 - b) * fy - rounding).max(0.0);
+        worst = worst.max(1.0 + excess / ((1.0 - b) * fy));
+    }
+    (worst, sol)
+}
+
+/// The stiff bearing of the failing report: `k0 = 1e12` N/m per bearing, `fy = 1e4` N, `b = 0`,
+/// at `dt = 5e-3` s (the bearing's elastic period is 3 ms) and at the default 1e-3 s, against
+/// the converged `dt = 1e-4` s: the peak deformation within 1 %, the force on the yield surface.
+#[test]
+fn a_stiff_yielding_bearing_at_a_coarse_step_keeps_to_its_yield_force_and_converges() {
+    let (m, fy) = (1.0e6, 1.0e4);
+    let peak = |k0: f64, dt: f64| {
+        let text = scenario(m, k0, fy, 0.0, dt, 12.0, 1.0);
+        let (worst, sol) = worst_yield_ratio(m, k0, fy, 0.0, &text);
+        assert!(
+            worst <= 1.0 + 1e-9,
+            "k0 {k0:e}, dt {dt:e}: force {worst} × fy"
+        );
+        sol.summary.segments[0].peak_bearing_deformation
+    };
+    for k0 in [1e12, 1e10] {
+        let converged = peak(k0, 1e-4);
+        for dt in [5e-3, 1e-3] {
+            let p = peak(k0, dt);
+            let rel = (p - converged).abs() / converged;
+            assert!(
+                rel < 0.01,
+                "k0 {k0:e}, dt {dt:e}: peak {p} vs converged {converged} ({:.2} %)",
+                rel * 100.0
+            );
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// Random stiffness, yield force, hardening, mass, step and shaking: the bearings' force in
+    /// every step's momentum balance stays within the yield surface up to rounding.
+    #[test]
+    fn no_yielding_bearing_force_leaves_its_yield_surface(
+        log_k0 in 5.0f64..13.0,
+        log_fy in 2.0f64..6.5,
+        b in prop::sample::select(vec![0.0, 0.01, 0.1, 0.5]),
+        log_m in 4.5f64..7.0,
+        log_dt in -4.0f64..-2.0,
+        scale in 0.1f64..3.0,
+    ) {
+        let (k0, fy, m, dt) = (10f64.powf(log_k0), 10f64.powf(log_fy), 10f64.powf(log_m), 10f64.powf(log_dt));
+        let text = scenario(m, k0, fy, b, dt, 3.0, scale);
+        let (worst, _) = worst_yield_ratio(m, k0, fy, b, &text);
+        prop_assert!(worst <= 1.0 + 1e-9, "force {} × (1 − b) fy", worst);
+    }
+}
