@@ -74,7 +74,13 @@ fn read(args: &Args) -> Result<Study> {
             scenario.origin()
         ),
     };
-    let set = RecordSet::load(&set_path)?;
+    // text records of entries without `units` are read in the scenario's `csv_units`, as
+    // `simulate --records` reads them
+    let reading = scenario.override_reading(None)?;
+    let set = RecordSet::load_with_units(&set_path, reading.units, &reading.units_from)?;
+    for w in set_warnings(&set) {
+        eprintln!("warning: {w}");
+    }
     let limits = bind(
         &settings.limit_states,
         &setup.problem.model,
@@ -106,6 +112,23 @@ fn read(args: &Args) -> Result<Study> {
         spec,
         period,
     })
+}
+
+/// The implausible-PGA warnings of the records of `set` (units probably wrong), one per
+/// component, naming the entry.
+fn set_warnings(set: &RecordSet) -> Vec<String> {
+    use pounding::ground_motion::ComponentInfo;
+    set.records
+        .iter()
+        .flat_map(|r| {
+            [("x", Some(&r.x)), ("y", r.y.as_ref())]
+                .into_iter()
+                .filter_map(move |(c, rec)| {
+                    let w = ComponentInfo::of(c, rec?).units_warning()?;
+                    Some(format!("record set entry {:?}: {w}", r.id))
+                })
+        })
+        .collect()
 }
 
 /// Runs the command.

@@ -83,6 +83,7 @@ mod manifest_csv;
 mod motion;
 mod physics_check;
 mod record_misreads;
+mod record_units;
 mod reports_browser;
 mod shapes;
 mod sim_report;

@@ -129,6 +129,13 @@ impl FragilityRow {
 /// ([`FragilityRow::interval_warnings`]).
 pub const MIN_RECORDS_FOR_INTERVALS: usize = 10;
 
+/// Fewer bootstrap replicates than this make the intervals unreliable
+/// ([`FragilityRow::interval_warnings`]): a 95 % interval's bounds are the 2.5 % and 97.5 %
+/// quantiles of the replicates, and the BCa corrections (bias and acceleration) are estimated
+/// from them too; with 200 replicates each tail holds 5 of them (Efron & Tibshirani, *An
+/// Introduction to the Bootstrap*, 1993, §19: about 1000 recommended for BCa).
+pub const MIN_BOOTSTRAP_SAMPLES: usize = 200;
+
 impl FragilityRow {
     /// Replicates without a fit, `None` when there is no bootstrap or the data themselves have no
     /// fit (then no replicate is meaningful: written `nan` / `null`, not `samples`).
@@ -138,8 +145,10 @@ impl FragilityRow {
     }
 
     /// Why this row's bootstrap intervals are unreliable (empty when they are not, or when there
-    /// are none): fewer than [`MIN_RECORDS_FOR_INTERVALS`] records, or more than 10 % of the
-    /// replicates without a fit (the intervals describe only the others).
+    /// are none): fewer than [`MIN_RECORDS_FOR_INTERVALS`] records, fewer than
+    /// [`MIN_BOOTSTRAP_SAMPLES`] replicates, an interval that does not contain its own point
+    /// estimate, or more than 10 % of the replicates without a fit (the intervals describe only
+    /// the others). Printed on stderr, listed in the report and in `fragility.json`.
     pub fn interval_warnings(&self) -> Vec<String> {
         let Some(b) = self
             .bootstrap
@@ -155,6 +164,26 @@ impl FragilityRow {
                  (use at least {MIN_RECORDS_FOR_INTERVALS})",
                 self.limit_state, self.n_records
             ));
+        }
+        if b.samples < MIN_BOOTSTRAP_SAMPLES {
+            w.push(format!(
+                "limit state {}: intervals unreliable: only {} bootstrap replicates (use at least \
+                 {MIN_BOOTSTRAP_SAMPLES}; about 1000 for stable 95 % bounds)",
+                self.limit_state, b.samples
+            ));
+        }
+        if let Some((theta, beta)) = self.fit.params() {
+            for (name, v, i) in [("theta", theta, b.theta), ("beta", beta, b.beta)] {
+                if let Some((lo, hi)) = i.filter(|(lo, hi)| !(*lo <= v && v <= *hi)) {
+                    w.push(format!(
+                        "limit state {}: the {name} interval [{lo:.5}, {hi:.5}] does not contain \
+                         the estimate {v:.5}: the bootstrap replicates are shifted from the fit to \
+                         the data (few replicates or records, or a skewed distribution); do not \
+                         read it as a confidence interval",
+                        self.limit_state
+                    ));
+                }
+            }
         }
         if b.failed * 10 > b.samples {
             w.push(format!(
@@ -320,6 +349,7 @@ fn json_impl(rows: &[FragilityRow], study: Option<&StudyColumns>) -> Value {
                 "censored": censored,
                 "exceeded_at_first": at_first,
                 "band": band,
+                "interval_warnings": r.interval_warnings(),
             });
             if let (Some(s), Some(m)) = (study, o.as_object_mut()) {
                 m.insert("im".into(), json!(s.im));

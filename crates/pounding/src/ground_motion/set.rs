@@ -178,6 +178,9 @@ struct Ctx<'a> {
     /// binary search ([`Ctx::line`]), so that naming the line of every entry stays linear in the
     /// manifest's size (a scan from the start per entry made 20,000 entries take 40 s).
     breaks: Vec<usize>,
+    /// The units of text records of entries without `units`, and where they come from (the
+    /// scenario's `csv_units`): [`RecordSet::load_with_units`].
+    units: (AccelUnits, String),
 }
 
 /// Where a value of a manifest entry is: its line and, in a CSV manifest, its column (0-based).
@@ -217,6 +220,7 @@ impl<'a> Ctx<'a> {
             dir,
             csv,
             breaks: breaks.map(|(k, _)| k).collect(),
+            units: (AccelUnits::G, "units default".into()),
         }
     }
 
@@ -269,6 +273,14 @@ impl RecordSet {
     /// The syntax follows the extension: `.toml` ([`RecordSet::from_toml`]) or `.csv`
     /// ([`RecordSet::from_csv`]), in any case; any other extension is refused.
     pub fn load(path: &Path) -> Result<Self, SetError> {
+        Self::load_with_units(path, AccelUnits::G, "units default")
+    }
+
+    /// [`RecordSet::load`] with the units of text records whose entry gives no `units`: the
+    /// scenario's `csv_units` (`units`, and `from` naming it in messages and in each record's
+    /// reading line), so that a manifest reads a text record as `simulate --records` reads it
+    /// under the same scenario.
+    pub fn load_with_units(path: &Path, units: AccelUnits, from: &str) -> Result<Self, SetError> {
         let ext = path
             .extension()
             .map(|e| e.to_string_lossy().to_ascii_lowercase());
@@ -288,10 +300,11 @@ impl RecordSet {
             })?;
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         let origin = path.display().to_string();
+        let units = (units, from.to_string());
         if csv {
-            Self::from_csv(&text, &origin, &dir)
+            Self::from_csv_units(&text, &origin, &dir, units)
         } else {
-            Self::from_toml(&text, &origin, &dir)
+            Self::from_toml_units(&text, &origin, &dir, units)
         }
     }
 
@@ -300,7 +313,18 @@ impl RecordSet {
     /// named `origin` in messages, record paths relative to `dir`. The record set is the one the
     /// equivalent TOML manifest (without `[set]`) gives.
     pub fn from_csv(text: &str, origin: &str, dir: &Path) -> Result<Self, SetError> {
-        let cx = Ctx::new(origin, text, dir, true);
+        Self::from_csv_units(text, origin, dir, (AccelUnits::G, "units default".into()))
+    }
+
+    /// [`RecordSet::from_csv`] with the default units of text records.
+    fn from_csv_units(
+        text: &str,
+        origin: &str,
+        dir: &Path,
+        units: (AccelUnits, String),
+    ) -> Result<Self, SetError> {
+        let mut cx = Ctx::new(origin, text, dir, true);
+        cx.units = units;
         let (entries, problems) = csv_set::entries(&cx);
         let records = build(&cx, &entries, problems).map_err(|problems| SetError::Invalid {
             origin: origin.to_string(),
@@ -315,11 +339,22 @@ impl RecordSet {
 
     /// Reads a manifest from `text`, named `origin` in messages, record paths relative to `dir`.
     pub fn from_toml(text: &str, origin: &str, dir: &Path) -> Result<Self, SetError> {
+        Self::from_toml_units(text, origin, dir, (AccelUnits::G, "units default".into()))
+    }
+
+    /// [`RecordSet::from_toml`] with the default units of text records.
+    fn from_toml_units(
+        text: &str,
+        origin: &str,
+        dir: &Path,
+        units: (AccelUnits, String),
+    ) -> Result<Self, SetError> {
         let m: Manifest = toml::from_str(text).map_err(|e| SetError::Syntax {
             origin: origin.to_string(),
             message: crate::input::shorten_lines(&e.to_string(), 200),
         })?;
-        let cx = Ctx::new(origin, text, dir, false);
+        let mut cx = Ctx::new(origin, text, dir, false);
+        cx.units = units;
         let set = m.set.map(|s| s.0).unwrap_or_default();
         if let Some(sy) = &m.synth {
             let (line, _) = line_col(text, sy.span().start);
@@ -461,7 +496,8 @@ fn entry(cx: &Ctx, i: usize, r: &Entry, cache: &mut Cache) -> Result<SetRecord, 
             )),
         }
     } else {
-        opts.units_from = "units default".into();
+        opts.units = cx.units.0;
+        opts.units_from = cx.units.1.clone();
     }
     if let Some(dt) = &r.dt {
         let v = dt.v;

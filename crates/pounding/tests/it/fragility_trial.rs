@@ -29,7 +29,7 @@ fn ida_plan(entries: usize) -> Plan {
 
 fn boot() -> BootstrapSettings {
     BootstrapSettings {
-        samples: 50,
+        samples: 200,
         seed: 1,
         level: 0.95,
     }
@@ -164,10 +164,10 @@ fn intervals_from_few_records_or_many_failed_replicates_are_flagged() {
     assert!(row(12).interval_warnings().is_empty());
     // many failed replicates: a hand-set count
     let mut many = row(12);
-    many.bootstrap.as_mut().unwrap().failed = 6; // of 50: 12 %
+    many.bootstrap.as_mut().unwrap().failed = 21; // of 200: 10.5 %
     let w = many.interval_warnings();
-    assert!(w.len() == 1 && w[0].contains("6 of 50"), "{w:?}");
-    many.bootstrap.as_mut().unwrap().failed = 5; // exactly 10 %: not flagged
+    assert!(w.len() == 1 && w[0].contains("21 of 200"), "{w:?}");
+    many.bootstrap.as_mut().unwrap().failed = 20; // exactly 10 %: not flagged
     assert!(many.interval_warnings().is_empty());
     // no fit: no failed count (not samples/samples), no warning
     let d = IdaData {
@@ -178,5 +178,51 @@ fn intervals_from_few_records_or_many_failed_replicates_are_flagged() {
     assert_eq!(none.bootstrap_failed(), None);
     assert!(none.interval_warnings().is_empty());
     let csv = pounding::fragility::fragility_csv(std::slice::from_ref(&none));
-    assert!(csv.lines().nth(1).unwrap().ends_with(",50,nan"), "{csv}");
+    assert!(csv.lines().nth(1).unwrap().ends_with(",200,nan"), "{csv}");
+}
+
+/// Two replicates (the hostile report: θ = 0.40337 with an interval [0.40351, 0.624]): the
+/// intervals are flagged as too few replicates, and an interval that misses its own estimate
+/// says so, in `interval_warnings` and in `fragility.json`.
+#[test]
+fn an_interval_from_too_few_replicates_or_missing_its_estimate_says_why() {
+    use pounding::fragility::{IdaData, bootstrap_ida};
+    let d = IdaData {
+        im_at_exceedance: (0..12).map(|i| Some(0.2 + 0.05 * i as f64)).collect(),
+    };
+    let two = BootstrapSettings {
+        samples: 2,
+        ..boot()
+    };
+    let b = bootstrap_ida(&d, &two, &[]).unwrap();
+    let mut row = pounding::fragility::FragilityRow::from_ida("ls", &d, Some(b)).unwrap();
+    let w = row.interval_warnings();
+    assert!(
+        w.iter().any(|m| m.contains("only 2 bootstrap replicates")),
+        "{w:?}"
+    );
+    // an interval that excludes the estimate, hand-set as in the report
+    let (theta, _) = row.fit.params().unwrap();
+    row.bootstrap.as_mut().unwrap().theta = Some((theta * 1.0004, theta * 1.5));
+    let w = row.interval_warnings();
+    assert!(
+        w.iter()
+            .any(|m| m.contains("theta interval") && m.contains("does not contain")),
+        "{w:?}"
+    );
+    let j = pounding::fragility::fragility_json(std::slice::from_ref(&row));
+    let listed = j["fits"][0]["interval_warnings"].as_array().unwrap();
+    assert_eq!(listed.len(), w.len());
+    // enough replicates and an interval around the estimate: nothing to say
+    let b = bootstrap_ida(&d, &boot(), &[]).unwrap();
+    let ok = pounding::fragility::FragilityRow::from_ida("ls", &d, Some(b)).unwrap();
+    let (t, be) = ok.fit.params().unwrap();
+    let bt = ok.bootstrap.as_ref().unwrap();
+    assert!(bt.theta.unwrap().0 <= t && t <= bt.theta.unwrap().1);
+    assert!(bt.beta.unwrap().0 <= be && be <= bt.beta.unwrap().1);
+    assert!(
+        ok.interval_warnings().is_empty(),
+        "{:?}",
+        ok.interval_warnings()
+    );
 }
