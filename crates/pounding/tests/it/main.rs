@@ -42,6 +42,7 @@ mod sim;
 mod sim_bearings;
 mod sim_bridge;
 mod sim_bridge_batch;
+mod sim_bridge_curves;
 mod sim_bridge_examples;
 mod sim_bridge_plan;
 mod sim_bridge_points;

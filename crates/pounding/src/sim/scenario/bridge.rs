@@ -317,8 +317,9 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
     }
     let n = raw.segment.len();
     let mut segments = Vec::with_capacity(n);
+    let curves = default_curves(raw.segment.iter().map(|s| s.get_ref()));
     for (i, s) in raw.segment.iter().enumerate() {
-        segments.push(segment(&v, i, s.get_ref())?);
+        segments.push(segment(&v, i, s.get_ref(), curves[i])?);
     }
     let nj = n - 1;
     if nj == 0 {
@@ -791,9 +792,8 @@ fn segment_shape(
     v: &Val,
     i: usize,
     s: &SegmentSec,
-    width: f64,
-    thickness: f64,
-    density: f64,
+    default_left: bool,
+    (width, thickness, density): (f64, f64, f64),
 ) -> Result<(DeckShape, bool), ScenarioError> {
     let sk = |key: &str| format!("segment[{i}].{key}");
     let shape_name = s
@@ -842,7 +842,7 @@ fn segment_shape(
                 "must lie in (0, 180)",
             )?;
             let left = match s.curve.as_ref().map(|c| (c.get_ref().as_str(), v.line(c))) {
-                None => i.is_multiple_of(2),
+                None => default_left,
                 Some(("left", _)) => true,
                 Some(("right", _)) => false,
                 Some((other, line)) => {
@@ -993,13 +993,42 @@ fn bearing_count(v: &Val, i: usize, s: &SegmentSec) -> Result<usize, ScenarioErr
     })
 }
 
-/// One `[[segment]]` table.
-fn segment(v: &Val, i: usize, s: &SegmentSec) -> Result<Segment, ScenarioError> {
+/// The direction each curved segment takes when its `curve` is left out (`true`: left): the
+/// curves alternate along the bridge, left first — each such segment curves the other way than
+/// the curved segment before it (given or defaulted), straight and skew spans in between not
+/// counting; the first curved segment curves left. (An S, repeated, whatever spans stand between
+/// its curves.) Entries of other segments are unused.
+fn default_curves<'a>(segments: impl Iterator<Item = &'a SegmentSec>) -> Vec<bool> {
+    let mut prev: Option<bool> = None;
+    segments
+        .map(|s| {
+            let curved = s.shape.as_ref().is_some_and(|x| x.get_ref() == "curved");
+            let left = match s.curve.as_ref().map(|c| c.get_ref().as_str()) {
+                Some("right") => false,
+                Some("left") => true,
+                _ => prev.map_or(true, |p| !p),
+            };
+            if curved {
+                prev = Some(left);
+            }
+            left
+        })
+        .collect()
+}
+
+/// One `[[segment]]` table; `default_left`: its curve when `curve` is left out
+/// ([`default_curves`]).
+fn segment(
+    v: &Val,
+    i: usize,
+    s: &SegmentSec,
+    default_left: bool,
+) -> Result<Segment, ScenarioError> {
     let sk = |key: &str| format!("segment[{i}].{key}");
     let width = v.dim(sk("width"), &s.width, Some(10.0))?;
     let thickness = v.dim(sk("thickness"), &s.thickness, Some(0.5))?;
     let density = v.pos(sk("density"), &s.density, Some(2500.0))?;
-    let (mut shape, mirrored) = segment_shape(v, i, s, width, thickness, density)?;
+    let (mut shape, mirrored) = segment_shape(v, i, s, default_left, (width, thickness, density))?;
     if let (Some(ms), Some(_)) = (&s.mass, &s.density) {
         return Err(v.err(
             sk("density"),
