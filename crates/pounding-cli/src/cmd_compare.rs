@@ -132,7 +132,7 @@ fn build_setups(laws: &[String], base: Scenario) -> Result<Vec<SimSetup>> {
     let base = base.with_compared_laws(laws);
     base.check_contact_keys()?;
     let mut setups = Vec::new();
-    let mut memory = 0u64;
+    let mut sizes = Vec::new();
     for l in laws {
         let mut s = base
             .clone()
@@ -145,20 +145,10 @@ fn build_setups(laws: &[String], base: Scenario) -> Result<Vec<SimSetup>> {
             .duration
             .unwrap_or_else(|| s.problem.ground.end_time());
         let n = s.settings.step_count(d).map_err(|e| anyhow!("{e}"))?;
-        memory += pounding::sim::options::run_memory_bytes(n, s.settings.history_stride);
+        sizes.push((n, s.settings.history_stride, 2));
         setups.push(s);
     }
-    let limit = pounding::sim::options::MAX_RUN_MEMORY_BYTES;
-    if memory > limit {
-        bail!(
-            "run too large: the {} runs need an estimated {:.1} GiB of memory (history every \
-             0.5 ms), more than the limit {:.0} GiB: shorten [time] duration, compare fewer laws \
-             or use a larger --dt",
-            setups.len(),
-            memory as Real / (1u64 << 30) as Real,
-            limit as Real / (1u64 << 30) as Real
-        );
-    }
+    pounding::sim::options::check_runs_memory(&sizes).map_err(|e| anyhow!(e))?;
     Ok(setups)
 }
 

@@ -55,6 +55,19 @@ pub(super) fn run(
     {
         bail!("no law of --laws can run on this bridge: {first}");
     }
+    let sizes: Vec<(usize, usize, usize)> = setups
+        .iter()
+        .flatten()
+        .map(|s| {
+            let d = s
+                .settings
+                .duration
+                .unwrap_or_else(|| s.problem.ground.end_time());
+            let n = s.settings.step_count(d).unwrap_or(usize::MAX);
+            (n, s.settings.history_stride, s.problem.model.segments.len())
+        })
+        .collect();
+    pounding::sim::options::check_runs_memory(&sizes).map_err(|e| anyhow!(e))?;
     if let Some(Ok(s)) = setups.iter().find(|s| s.is_ok()) {
         crate::cmd_simulate::sim_records::print_components(&s.problem.ground);
     }

@@ -42,8 +42,9 @@ fn setup(dir: &Path) -> (PathBuf, PathBuf) {
              [[joint]]\n[abutment.start]\ngap = 0.02\n[ground_motion]\nscale_y = -1.5\n\
              incidence_deg = 10.0\n[time]\ndt = 2e-3\n",
             seg("straight"),
-            seg("curved"),
-            seg("curved"),
+            // the curves written out (right, then left: the S this test was built on)
+            seg("curved") + "curve = \"right\"\n",
+            seg("curved") + "curve = \"left\"\n",
             seg("straight")
         ),
     )

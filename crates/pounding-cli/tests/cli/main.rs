@@ -80,6 +80,7 @@ mod harden_round2;
 mod inputs;
 mod lcp;
 mod manifest_csv;
+mod memory_guards;
 mod motion;
 mod physics_check;
 mod record_misreads;

@@ -175,6 +175,69 @@ pub fn run_memory_bytes(n_steps: usize, history_stride: usize) -> u64 {
         )
 }
 
+/// Bytes per kept history row of a bridge of `n_segments` segments (`J = N − 1` joints): the
+/// driver's trace (`t`, `q` and `u` of `3N` each, four candidate gaps, two end gaps, a slip and
+/// two end forces per joint, two abutment gaps, the energies), counted twice (a growing vector
+/// may hold twice its length), and the `history.csv` text (at most `11 + 6N + 3J` columns of 25
+/// bytes, at least the two-deck file's 31).
+pub fn history_row_bytes(n_segments: usize) -> u64 {
+    let n = n_segments.max(1) as u64;
+    let j = n - 1;
+    let real = std::mem::size_of::<Real>() as u64;
+    let trace = real * (1 + 6 * n + 9 * j + 2) + std::mem::size_of::<super::Energy>() as u64;
+    let columns = (11 + 6 * n + 3 * j).max(31);
+    (2 * trace).saturating_add(columns.saturating_mul(25))
+}
+
+/// [`run_memory_bytes`] of a bridge of `n_segments` segments (the history row of
+/// [`history_row_bytes`]); the two-deck model is `n_segments = 2`.
+pub fn bridge_run_memory_bytes(n_steps: usize, history_stride: usize, n_segments: usize) -> u64 {
+    (n_steps as u64)
+        .saturating_add(1)
+        .saturating_mul(GROUND_BYTES_PER_STEP)
+        .saturating_add(
+            history_rows(n_steps, history_stride).saturating_mul(history_row_bytes(n_segments)),
+        )
+}
+
+/// The estimated memory of several runs held at once (a comparison keeps every law's history
+/// until it writes): each `(n_steps, history_stride, n_segments)` by
+/// [`bridge_run_memory_bytes`]. An error message (naming the limit and the ways around it) when
+/// the sum exceeds [`MAX_RUN_MEMORY_BYTES`].
+pub fn check_runs_memory(runs: &[(usize, usize, usize)]) -> Result<u64, String> {
+    let bytes = runs.iter().fold(0u64, |acc, &(n, s, segs)| {
+        acc.saturating_add(bridge_run_memory_bytes(n, s, segs))
+    });
+    if bytes <= MAX_RUN_MEMORY_BYTES {
+        return Ok(bytes);
+    }
+    let gib = |b: u64| b as Real / (1u64 << 30) as Real;
+    Err(format!(
+        "run too large: the {} runs need an estimated {:.1} GiB of memory (history every 0.5 ms), \
+         more than the limit {:.0} GiB: shorten [time] duration, compare fewer laws or use a \
+         larger --dt",
+        runs.len(),
+        gib(bytes),
+        gib(MAX_RUN_MEMORY_BYTES)
+    ))
+}
+
+/// The smallest history stride whose [`bridge_run_memory_bytes`] is at most
+/// [`MAX_RUN_MEMORY_BYTES`] (`None` if even the first and last step are too much).
+pub fn min_bridge_history_stride(n_steps: usize, n_segments: usize) -> Option<usize> {
+    let ok = |s: usize| bridge_run_memory_bytes(n_steps, s, n_segments) <= MAX_RUN_MEMORY_BYTES;
+    let hi = n_steps.max(1);
+    if !ok(hi) {
+        return None;
+    }
+    let (mut lo, mut hi) = (1usize, hi);
+    while lo < hi {
+        let mid = lo + (hi - lo) / 2;
+        if ok(mid) { hi = mid } else { lo = mid + 1 }
+    }
+    Some(lo)
+}
+
 /// The smallest history stride whose [`run_memory_bytes`] for `n_steps` is at most
 /// [`MAX_RUN_MEMORY_BYTES`] (`None` if even keeping only the first and last step is too much).
 pub fn min_history_stride(n_steps: usize) -> Option<usize> {

@@ -357,7 +357,7 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
         damping_model,
     };
     let (ground, records, units) = build_ground(sc)?;
-    let settings = build_settings(sc, &ground, &records, || {
+    let settings = build_settings(sc, &ground, &records, model.segments.len(), || {
         model.validate().map_err(|e| model_error(&v, raw, e))?;
         check_mechanism(&v, raw, &model)
     })?;

@@ -422,7 +422,7 @@ pub(super) fn build(sc: &Scenario) -> Result<SimSetup, ScenarioError> {
     let src = &sc.src;
     let model = build_model(sc)?;
     let (ground, records, units) = build_ground(sc)?;
-    let settings = build_settings(sc, &ground, &records, || {
+    let settings = build_settings(sc, &ground, &records, 2, || {
         model.validate().map_err(|e| scaled_mass_error(src, e))?;
         let sys = model.linear_system().map_err(|e| sim_error(src, e))?;
         check_mechanism(sc, &sys.frequencies)
@@ -442,6 +442,7 @@ pub(super) fn build_settings(
     sc: &Scenario,
     ground: &GroundMotion,
     records: &[String; 2],
+    n_segments: usize,
     model_checks: impl FnOnce() -> Result<(), ScenarioError>,
 ) -> Result<SimSettings, ScenarioError> {
     let src = &sc.src;
@@ -484,13 +485,14 @@ pub(super) fn build_settings(
                 note: String::new(),
             }
         })?;
-        if !sc.batch
-            && let Err(_) = settings.check_memory(d)
-        {
-            use crate::sim::options::{MAX_RUN_MEMORY_BYTES, min_history_stride, run_memory_bytes};
-            let n = settings.step_count(d).unwrap_or(usize::MAX);
+        use crate::sim::options::{
+            MAX_RUN_MEMORY_BYTES, bridge_run_memory_bytes, min_bridge_history_stride,
+        };
+        let n = settings.step_count(d).unwrap_or(usize::MAX);
+        let bytes = bridge_run_memory_bytes(n, settings.history_stride, n_segments);
+        if !sc.batch && bytes > MAX_RUN_MEMORY_BYTES {
             let gib = |b: u64| b as Real / (1u64 << 30) as Real;
-            let advice = match min_history_stride(n) {
+            let advice = match min_bridge_history_stride(n, n_segments) {
                 Some(s) => format!("set history_every >= {s} (or shorten the run)"),
                 None => "shorten the run or use a larger dt".into(),
             };
@@ -499,7 +501,7 @@ pub(super) fn build_settings(
                     "run too large: {n} steps with history_every = {} need an estimated {:.1} GiB \
                      of memory, more than the limit {:.0} GiB; {advice}",
                     settings.history_stride,
-                    gib(run_memory_bytes(n, settings.history_stride)),
+                    gib(bytes),
                     gib(MAX_RUN_MEMORY_BYTES)
                 ),
                 at: vec![

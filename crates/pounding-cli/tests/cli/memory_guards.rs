@@ -1,0 +1,74 @@
+//! Run-size guards that know the bridge: the history of 200 segments is ~40 times the two-deck
+//! row, so a run the two-deck estimate let through aborted allocating (exit 134, an empty
+//! output directory); `compare` on such a bridge had no guard at all.
+
+use crate::{run_capture, scratch_with};
+
+fn bridge(n: usize, time: &str) -> String {
+    let mut s = String::from("[bridge]\ngap = 0.05\n");
+    for _ in 0..n {
+        s.push_str("[[segment]]\nshape = \"straight\"\nL = 30.0\nmass = 1e6\nperiod_s = 1.0\n");
+    }
+    s + "[ground_motion]\nrecord_y = \"builtin:ELC180\"\n[time]\n" + time
+}
+
+#[test]
+fn a_bridge_run_or_comparison_too_large_for_memory_is_refused_naming_the_way_around() {
+    let d = scratch_with(
+        "memory",
+        "bridge",
+        &[
+            ("sim.toml", &bridge(200, "dt = 5e-4\nhistory_every = 1\n")),
+            ("cmp.toml", &bridge(200, "dt = 1e-3\nduration = 120\n")),
+            (
+                "ok.toml",
+                &bridge(200, "dt = 5e-4\nhistory_every = 3\nduration = 0.01\n"),
+            ),
+        ],
+    );
+    let p = |f: &str| d.join(f).to_str().unwrap().to_string();
+    let (code, _, err) = run_capture(&["simulate", &p("sim.toml"), "--out", &p("o1")]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("run too large") && err.contains("history_every >= 3"),
+        "{err}"
+    );
+    assert!(!d.join("o1").exists(), "nothing written");
+    let (code, _, err) = run_capture(&["compare", &p("cmp.toml"), "--out", &p("o2")]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("run too large") && err.contains("GiB"),
+        "{err}"
+    );
+    assert!(!d.join("o2").exists(), "nothing written");
+    // the stride it advises is accepted
+    let (code, _, err) = run_capture(&["simulate", &p("ok.toml"), "--out", &p("o3")]);
+    assert_eq!(code, Some(0), "{err}");
+}
+
+/// The estimate bounds what a run writes: `history.csv` of a 12-segment bridge is below the
+/// text part of the estimate, and the estimate per row grows with the segments.
+#[test]
+fn the_history_estimate_bounds_the_written_history_of_a_bridge() {
+    use pounding::sim::options::history_row_bytes;
+    let d = scratch_with(
+        "memory",
+        "rows",
+        &[(
+            "b.toml",
+            &bridge(12, "dt = 1e-3\nduration = 0.5\nhistory_every = 1\n"),
+        )],
+    );
+    let p = |f: &str| d.join(f).to_str().unwrap().to_string();
+    let (code, _, err) = run_capture(&["simulate", &p("b.toml"), "--out", &p("o")]);
+    assert_eq!(code, Some(0), "{err}");
+    let csv = std::fs::read_to_string(d.join("o/history.csv")).unwrap();
+    let rows = csv.lines().count() as u64 - 1;
+    assert_eq!(rows, 501);
+    assert!(
+        (csv.len() as u64) < rows * history_row_bytes(12),
+        "{} bytes written for {rows} rows",
+        csv.len()
+    );
+    assert!(history_row_bytes(200) > 30 * history_row_bytes(2));
+}
