@@ -106,8 +106,10 @@ impl AccelUnits {
 pub struct Record {
     /// A short name (file name or component label) for messages and outputs.
     pub name: String,
-    times: Vec<Real>,
-    values: Vec<Real>,
+    /// Samples, shared between clones: a record set whose entries name the same file holds its
+    /// samples once (a 200 000-row manifest copied them per entry and ran out of memory).
+    times: std::sync::Arc<[Real]>,
+    values: std::sync::Arc<[Real]>,
     /// The units as read (e.g. `CM/S/S header`, `g (csv_units default)`).
     units: String,
     /// The sample interval of a uniformly sampled record \[s\], `None` if irregular.
@@ -218,8 +220,8 @@ impl Record {
         let dt = uniform_step(&times);
         Ok(Self {
             name,
-            times,
-            values,
+            times: times.into(),
+            values: values.into(),
             units: "m/s2".into(),
             dt,
         })

@@ -560,3 +560,28 @@ fn a_manifest_not_in_utf8_is_refused_with_a_hint() {
         "{e}"
     );
 }
+
+/// Entries naming the same file share its samples (a 200 000-row manifest copied them per
+/// entry and ran out of memory): the record of every entry points at one buffer.
+#[test]
+fn entries_naming_one_file_share_its_samples() {
+    let d = scratch("share");
+    // a longer record, as real ones are (the copies were what cost memory)
+    let rec: String = (0..5000)
+        .map(|k| format!("{}\n", (k as f64 * 0.01).sin()))
+        .collect();
+    std::fs::write(d.join("long.txt"), rec).unwrap();
+    let mut csv = String::from("id,x,dt\n");
+    for i in 0..20_000 {
+        csv.push_str(&format!("R{i},long.txt,0.01\n"));
+    }
+    let s = load(&d, "many.csv", &csv);
+    assert_eq!(s.records.len(), 20_000);
+    let first = s.records[0].x.values().as_ptr();
+    assert!(
+        s.records
+            .iter()
+            .all(|r| std::ptr::eq(r.x.values().as_ptr(), first) && r.x.values().len() == 5000),
+        "every entry shares the one buffer"
+    );
+}
