@@ -262,11 +262,11 @@ pub fn run(args: Args) -> Result<ExitCode> {
         sol.steps,
         sim_secs * 1e3,
         s.impacts,
-        bounded(s.peak_joint_closing, 4),
-        bounded(s.peak_joint_opening, 4),
-        bounded(s.peak_seat_displacement, 4),
+        pounding::output::bounded(s.peak_joint_closing, 4),
+        pounding::output::bounded(s.peak_joint_opening, 4),
+        pounding::output::bounded(s.peak_seat_displacement, 4),
         match s.unseating_time {
-            Some(t) => format!(" (UNSEATED at {} s)", bounded(t, 3)),
+            Some(t) => format!(" (UNSEATED at {} s)", pounding::output::bounded(t, 3)),
             None => String::new(),
         },
         s.energy_balance_error,
@@ -276,8 +276,8 @@ pub fn run(args: Args) -> Result<ExitCode> {
         eprintln!(
             "contact law {}: peak contact force {} MN, peak penetration {} mm",
             describe_contact(&setup.problem.model.contact)["law"],
-            bounded(f / 1e6, 4),
-            bounded(s.peak_penetration * 1e3, 4)
+            pounding::output::bounded(f / 1e6, 4),
+            pounding::output::bounded(s.peak_penetration * 1e3, 4)
         );
     }
     if sol.status != pounding::sim::SimStatus::Completed {
@@ -321,18 +321,6 @@ pub(crate) fn print_run_warnings(
     }
     if let Some(w) = pounding::sim::output::warnings_message(impacts) {
         eprintln!("{w}");
-    }
-}
-
-/// `x` with `decimals` decimals for `|x| < 1e6`, in exponent form (`1.2346e190`) beyond, and
-/// `inf`/`-inf`/`nan` when not finite: a bounded width for the summary line of a diverged run.
-fn bounded(x: Real, decimals: usize) -> String {
-    if !x.is_finite() {
-        float_token(x)
-    } else if x.abs() < 1e6 {
-        pounding::output::fixed(x, decimals)
-    } else {
-        format!("{x:.4e}")
     }
 }
 

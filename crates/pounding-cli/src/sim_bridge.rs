@@ -6,7 +6,7 @@
 
 use super::{Args, lock_and_clear};
 use anyhow::{Context, Result, anyhow};
-use pounding::output::{fixed, float_token, write_atomic};
+use pounding::output::{bounded, float_token, write_atomic};
 use pounding::sim::SimStatus;
 use pounding::sim::output::{bridge_history_csv, bridge_impacts_csv, bridge_summary_json_text};
 use pounding::sim::scenario::Scenario;
@@ -75,7 +75,7 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
     let joints: Vec<String> = s
         .joints
         .iter()
-        .map(|j| format!("{} (closing {} m)", j.impacts, fixed(j.peak_closing, 4)))
+        .map(|j| format!("{} (closing {} m)", j.impacts, bounded(j.peak_closing, 4)))
         .collect();
     eprintln!(
         "simulated a bridge of {} segments for {} s in {} steps ({:.1} ms): {} impacts; per joint: \

@@ -17,6 +17,19 @@ pub fn fixed(x: f64, decimals: usize) -> String {
     }
 }
 
+/// [`fixed`] for `|x| < 1e6`, exponent form (`1.2346e190`) beyond, and `inf`/`-inf`/`nan` when
+/// not finite: a bounded width for the summary line of a diverged run (a closing of 1e300 m
+/// printed as 301 digits).
+pub fn bounded(x: f64, decimals: usize) -> String {
+    if !x.is_finite() {
+        float_token(x)
+    } else if x.abs() < 1e6 {
+        fixed(x, decimals)
+    } else {
+        format!("{x:.4e}")
+    }
+}
+
 /// Replaces every negative zero in a JSON tree by `0.0` (a `-0.0` in a report only puzzles a
 /// reader; it equals `0`).
 pub fn json_without_negative_zero(v: &mut serde_json::Value) {

@@ -67,6 +67,7 @@ mod bridge_batch;
 mod bridge_plots;
 mod compare;
 mod docs_links;
+mod errors_round3;
 mod fragility;
 mod fragility_censored;
 mod fragility_example;

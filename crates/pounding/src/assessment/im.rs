@@ -158,8 +158,8 @@ pub fn fundamental_period(model: &BridgeModel) -> Result<PeriodInfo, AssessmentE
         let w1 = w[0];
         if !(w1.is_finite() && w1 > 0.0) {
             return Err(AssessmentError::Model(format!(
-                "segment {} has no first-mode frequency (free to slide or spin): period_s = \
-                 \"model\" cannot be used; give period_s in seconds",
+                "segment[{i}] (segment {} from the start) has no first-mode frequency (free to \
+                 slide or spin): period_s = \"model\" cannot be used; give period_s in seconds",
                 i + 1
             )));
         }

@@ -309,10 +309,20 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
     let d_eps = v.unit(bk("eps_n"), &b.eps_n, Some(0.5))?;
     let d_seat = v.pos(bk("seat_length"), &b.seat_length, Some(0.4))?;
     if raw.segment.is_empty() {
+        // `segment = []`: name the line that says so
+        let line = v
+            .text
+            .lines()
+            .position(|l| {
+                let l = l.trim_start();
+                l.strip_prefix("segment")
+                    .is_some_and(|r| r.trim_start().starts_with('='))
+            })
+            .map(|k| k + 1);
         return Err(v.err(
             "segment".into(),
-            None,
-            "a bridge needs at least one [[segment]]".into(),
+            line,
+            "a bridge needs at least one [[segment]] (this list is empty)".into(),
         ));
     }
     let n = raw.segment.len();
@@ -1093,7 +1103,30 @@ fn segment(
             }
             k
         }
-        (None, Some(_)) => v.pos(sk("bearing_stiffness"), &s.bearing_stiffness, None)?,
+        (None, Some(b)) => {
+            let k = v.pos(sk("bearing_stiffness"), &s.bearing_stiffness, None)?;
+            // `k r²` (lever arms up to kilometres) must stay finite and `k` a normal double:
+            // 1e308 overflowed in the rotational stiffness, 5e-324 gave a segment without
+            // stiffness, both reported under keys the file does not have
+            if !(k.is_normal() && (k * 1e100).is_finite()) {
+                let why = if k < f64::MIN_POSITIVE {
+                    "below the smallest normal double: the segment would have no stiffness"
+                } else {
+                    "the rotational stiffness k r² of the bearings (lever arms of metres to \
+                     kilometres) would overflow"
+                };
+                return Err(v.err(
+                    sk("bearing_stiffness"),
+                    Some(v.line(b)),
+                    format!(
+                        "invalid {} = {}: {why}; use a physical stiffness (N/m per bearing)",
+                        sk("bearing_stiffness"),
+                        crate::output::float_token(k)
+                    ),
+                ));
+            }
+            k
+        }
         (None, None) => {
             return Err(v.err(sk("period_s"), None, format!("segment[{i}] needs its bearings: give {} (translational period of its bearings) or {} (per bearing, N/m)", sk("period_s"), sk("bearing_stiffness"))));
         }

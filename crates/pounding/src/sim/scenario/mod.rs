@@ -144,6 +144,31 @@ impl Scenario {
                     .into(),
             });
         }
+        let bridge_only = ["joint", "abutment"]
+            .iter()
+            .find(|k| matches!(table.get(**k), Some(toml::Value::Array(_))))
+            .or_else(|| {
+                table
+                    .get("abutment")
+                    .and_then(toml::Value::as_table)
+                    .filter(|t| t.contains_key("start") || t.contains_key("end"))
+                    .map(|_| &"abutment")
+            });
+        if !is_bridge && let Some(k) = bridge_only {
+            let form = if *k == "abutment" {
+                "[abutment.start] / [abutment.end]"
+            } else {
+                "[[joint]]"
+            };
+            return Err(ScenarioError::Syntax {
+                origin: origin.to_string(),
+                message: format!(
+                    "{form} tables belong to a bridge file: add the bridge's [[segment]] tables \
+                     (one per segment, from the start); a two-deck file has one [joint] table \
+                     and an [abutments] table"
+                ),
+            });
+        }
         let (raw, bridge) = if is_bridge {
             let b: bridge::BridgeRaw = toml::from_str(text).map_err(syntax)?;
             let raw = sections::Raw {
