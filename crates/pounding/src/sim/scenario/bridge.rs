@@ -1016,7 +1016,7 @@ fn default_curves<'a>(segments: impl Iterator<Item = &'a SegmentSec>) -> Vec<boo
             let left = match s.curve.as_ref().map(|c| c.get_ref().as_str()) {
                 Some("right") => false,
                 Some("left") => true,
-                _ => prev.map_or(true, |p| !p),
+                _ => prev.is_none_or(|p| !p),
             };
             if curved {
                 prev = Some(left);
