@@ -146,7 +146,11 @@ impl Scenario {
         }
         let bridge_only = ["joint", "abutment"]
             .iter()
-            .find(|k| matches!(table.get(**k), Some(toml::Value::Array(_))))
+            .find(|k| {
+                // an array of tables (`[[joint]]`), not a list of numbers (a type error below)
+                matches!(table.get(**k), Some(toml::Value::Array(a))
+                    if !a.is_empty() && a.iter().all(toml::Value::is_table))
+            })
             .or_else(|| {
                 table
                     .get("abutment")
