@@ -203,13 +203,14 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let (origin, text) = (sc.origin().to_string(), sc.text().to_string());
     let sc = with_flags(sc, &args);
     let reading = sc.override_reading(args.csv_units)?;
-    let setup = sc.build()?;
+    let mut setup = sc.build()?;
     if !args.records.is_empty() {
         return sim_batch::run(&args, &setup.problem, &setup.settings, &reading, t_start);
     }
     sim_records::print_components(&setup.problem.ground);
     pounding::output::check_output_dir_free(&args.out)?;
     note_rounded_duration(&setup.settings);
+    setup.settings.progress = time_estimate();
     let t_sim = Instant::now();
     let sol = simulate(&setup.problem, &setup.settings).map_err(|e| anyhow!("{e}"))?;
     let sim_secs = t_sim.elapsed().as_secs_f64();
@@ -321,6 +322,51 @@ pub(crate) fn print_run_warnings(
     }
     if let Some(w) = pounding::sim::output::warnings_message(impacts) {
         eprintln!("{w}");
+    }
+}
+
+/// Wall time after which a long run is announced, and the projected remainder that makes it
+/// worth a line.
+const ESTIMATE_AFTER_S: f64 = 2.0;
+const ESTIMATE_WORTH_S: f64 = 30.0;
+
+/// A progress observer that says once on stderr how long a long run will take: after
+/// [`ESTIMATE_AFTER_S`] of wall time, if the steps still to go would take more than
+/// [`ESTIMATE_WORTH_S`] at the rate so far (a bridge with many simultaneous contacts can take
+/// hours; a user should know before waiting). The rate so far is what it is: contacts that
+/// begin later may slow the run further, so the line says "at the rate so far".
+pub(crate) fn time_estimate() -> pounding::sim::Progress {
+    let start = Instant::now();
+    let said = std::sync::atomic::AtomicBool::new(false);
+    pounding::sim::Progress::new(move |done, total| {
+        let elapsed = start.elapsed().as_secs_f64();
+        if done == 0
+            || elapsed < ESTIMATE_AFTER_S
+            || said.load(std::sync::atomic::Ordering::Relaxed)
+        {
+            return;
+        }
+        let rest = elapsed * (total - done.min(total)) as f64 / done as f64;
+        if rest > ESTIMATE_WORTH_S {
+            said.store(true, std::sync::atomic::Ordering::Relaxed);
+            eprintln!(
+                "note: {done} of {total} steps in {elapsed:.0} s; at the rate so far the run needs \
+                 about {} more ({:.2} ms per step)",
+                human_duration(rest),
+                elapsed * 1e3 / done as f64
+            );
+        }
+    })
+}
+
+/// `s` seconds as `42 s`, `12 min` or `3.4 h`.
+fn human_duration(s: f64) -> String {
+    if s < 120.0 {
+        format!("{s:.0} s")
+    } else if s < 7200.0 {
+        format!("{:.0} min", s / 60.0)
+    } else {
+        format!("{:.1} h", s / 3600.0)
     }
 }
 

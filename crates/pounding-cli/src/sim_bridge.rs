@@ -23,10 +23,11 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
         let setup = sc.build_bridge()?;
         return super::sim_batch::run_bridge(args, &setup, &reading, t_start);
     }
-    let setup = sc.build_bridge()?;
+    let mut setup = sc.build_bridge()?;
     super::sim_records::print_components(&setup.problem.ground);
     pounding::output::check_output_dir_free(&args.out)?;
     super::note_rounded_duration(&setup.settings);
+    setup.settings.progress = super::time_estimate();
     let t_sim = Instant::now();
     let sol = setup.run().map_err(|e| anyhow!("{e}"))?;
     let sim_secs = t_sim.elapsed().as_secs_f64();

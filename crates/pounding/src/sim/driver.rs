@@ -890,6 +890,9 @@ pub(crate) fn run<S: Stepper>(
     let mut obs = Observed::default();
     let clock = TimeGrid::new(h);
     for k in 0..=sc.n_steps {
+        if k % super::PROGRESS_EVERY == 0 {
+            settings.progress.report(k, sc.n_steps);
+        }
         let t = clock.time(k);
         peaks.observe(t, &q, &frame, bridge, &mut obs);
         peaks.observe_segments(&q, bridge);

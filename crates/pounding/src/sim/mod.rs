@@ -559,6 +559,8 @@ pub struct SimSettings {
     pub history_stride: usize,
     /// Settings of Lemke's method for the contact LCPs.
     pub lemke: LemkeSettings,
+    /// An observer of the run's progress (none by default): it sees, never changes, the run.
+    pub progress: Progress,
 }
 
 impl Default for SimSettings {
@@ -570,7 +572,48 @@ impl Default for SimSettings {
             impact_velocity: 1e-3,
             history_stride: 1,
             lemke: LemkeSettings::default(),
+            progress: Progress::default(),
         }
+    }
+}
+
+/// Steps between two calls of a [`Progress`] observer.
+pub const PROGRESS_EVERY: usize = 64;
+
+/// An observer of a run's progress: `f(steps done, total steps)`, called by the time loop before
+/// the first step and every [`PROGRESS_EVERY`] steps (a front end's progress bar or time
+/// estimate). Observers do not take part in the results: two settings that differ only in
+/// their observer compare equal.
+#[derive(Clone, Default)]
+pub struct Progress(Option<std::sync::Arc<dyn Fn(usize, usize) + Send + Sync>>);
+
+impl Progress {
+    /// An observer calling `f`.
+    pub fn new(f: impl Fn(usize, usize) + Send + Sync + 'static) -> Self {
+        Self(Some(std::sync::Arc::new(f)))
+    }
+
+    /// Reports `done` of `total` steps (nothing without an observer).
+    pub fn report(&self, done: usize, total: usize) {
+        if let Some(f) = &self.0 {
+            f(done, total);
+        }
+    }
+}
+
+impl std::fmt::Debug for Progress {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(if self.0.is_some() {
+            "Progress(observer)"
+        } else {
+            "Progress(none)"
+        })
+    }
+}
+
+impl PartialEq for Progress {
+    fn eq(&self, _: &Self) -> bool {
+        true
     }
 }
 

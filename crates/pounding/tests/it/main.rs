@@ -51,6 +51,7 @@ mod sim_bridge_site_contact;
 mod sim_compliance;
 mod sim_friction;
 mod sim_outputs;
+mod sim_progress;
 mod sim_scenario;
 mod sim_shapes;
 mod sim_yielding;
