@@ -97,3 +97,42 @@ def test_record_dt_with_an_array_record_is_refused():
         pounding.simulate(None, rec, record_dt=0.02)
     with pytest.raises(ValueError, match="record_dt .* own dt"):
         pounding.batch(None, [rec], [1.0], record_dt=0.02)
+
+
+_SHORT = {"time": {"duration": 0.05}}
+
+
+@pytest.mark.parametrize("record", [(np.array(2.0), 0.01), (np.float64(2.0), 0.01)])
+def test_a_scalar_record_is_refused_not_run_as_one_sample(record):
+    # np.ascontiguousarray made a 0-d array 1-d: it ran as a one-sample record
+    with pytest.raises(ValueError, match="1-D array, got shape"):
+        pounding.simulate(_SHORT, record=record)
+    with pytest.raises(ValueError, match="1-D array, got shape"):
+        pounding.batch(_SHORT, [record], [1.0])
+
+
+@pytest.mark.parametrize("kw", [{"dt": "0_01"}, {"scale": "2"}, {"duration": b"1"}])
+def test_text_is_never_read_as_a_number(kw):
+    # float("0_01") is 1.0: a string dt became a one-second step
+    with pytest.raises(TypeError, match="must be a number, not"):
+        pounding.simulate(_SHORT, **kw)
+    with pytest.raises(TypeError, match="must be a number, not str"):
+        pounding.simulate(_SHORT, record=(np.array([0.0, 1.0, 0.0]), "0_01"))
+
+
+def test_integers_beyond_2_53_are_refused_not_rounded():
+    big = 2**53 + 1
+    with pytest.raises(ValueError, match="beyond 2\\*\\*53"):
+        pounding.simulate(_SHORT, record=(np.array([0, big, 0], dtype=np.int64), 0.01))
+    with pytest.raises(ValueError, match="beyond 2\\*\\*53"):
+        pounding.lcp.solve(np.array([[big]], dtype=np.int64), np.array([-1]))
+    with pytest.raises(ValueError, match="beyond 2\\*\\*53"):
+        pounding.simulate(_SHORT, dt=big)
+    # 2**53 itself is exact
+    r = pounding.lcp.solve(np.array([[2**53]], dtype=np.int64), np.array([-1]))
+    assert r.solved
+
+
+def test_a_numpy_bool_in_a_scenario_dict_is_a_bool():
+    sc = {"bearings": {"allow_mechanism": np.bool_(True)}, "time": {"duration": 0.05}}
+    assert pounding.simulate(sc).status == "Completed"

@@ -66,7 +66,7 @@ def _key(k: Any) -> str:
 
 
 def _toml_value(v: Any, where: str) -> str:
-    if isinstance(v, bool):
+    if isinstance(v, (bool, np.bool_)):
         return "true" if v else "false"
     if isinstance(v, (int, np.integer)):
         return str(int(v))
@@ -186,13 +186,27 @@ def float_array(x: Any, name: str) -> np.ndarray:
         what = {"c": "complex (the imaginary part would be dropped)",
                 "b": "bool (True would be read as 1.0)"}.get(a.dtype.kind, f"of dtype {a.dtype}")
         raise TypeError(f"{name} must hold real numbers, not {what}")
-    return np.ascontiguousarray(a, dtype=np.float64)
+    if a.dtype.kind in "iu" and a.size and (int(a.max()) > _EXACT or int(a.min()) < -_EXACT):
+        raise ValueError(f"{name} holds integers beyond 2**53, which a float64 cannot hold "
+                         "exactly: convert them to float yourself if rounding is intended")
+    # np.ascontiguousarray makes a 0-d array 1-d: keep its shape, so that a scalar given where
+    # an array is expected is refused by the caller's shape check, not run as one sample
+    return np.ascontiguousarray(a, dtype=np.float64).reshape(a.shape)
+
+
+#: The largest integer magnitude every smaller integer of which a float64 holds exactly.
+_EXACT = 2**53
 
 
 def real_number(name: str, x: Any) -> float:
     """``x`` as a float; ``TypeError`` for bool and complex (never cast silently)."""
     if isinstance(x, (bool, np.bool_)) or isinstance(x, (complex, np.complexfloating)):
         raise TypeError(f"{name} must be a real number, not {type(x).__name__}")
+    if isinstance(x, (str, bytes)):
+        # float("0_01") is 1.0: text is never read as a number here
+        raise TypeError(f"{name} must be a number, not {type(x).__name__} {x!r}")
+    if isinstance(x, (int, np.integer)) and abs(int(x)) > _EXACT:
+        raise ValueError(f"invalid {name} = {x}: an integer beyond 2**53 has no exact float")
     try:
         return float(x)
     except (TypeError, ValueError):
