@@ -98,6 +98,9 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
         },
         out.display()
     );
+    if let Some(g) = pounding::sim::output::governing_seat_line(s) {
+        eprintln!("governing seat: {g}");
+    }
     if sol.status != SimStatus::Completed {
         eprintln!(
             "error: simulation status {:?} after {} s ({} steps): the results are not trustworthy; \

@@ -1124,6 +1124,32 @@ pub struct SegmentSummary {
     pub frequencies: [Real; 3],
 }
 
+/// The seat margin of one seated end (a segment's start or end, on an abutment seat, a joint's
+/// seat, or an outer seat without abutment).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SeatSummary {
+    /// `segment<i>-start` / `segment<i>-end` (1-based, as `unseated_end`).
+    pub end: String,
+    /// The segment (1-based).
+    pub segment: usize,
+    /// What the end sits on: `abutment-start`, `abutment-end`, `joint<k>` (1-based), or
+    /// `outer-start` / `outer-end` (an outer end without abutment).
+    pub support: String,
+    /// The seat length \[m\].
+    pub seat_length: Real,
+    /// The largest displacement of the end off its seat (along the face's outward normal; the
+    /// larger of its two corners) \[m\].
+    pub peak_displacement: Real,
+    /// `peak_displacement / seat_length` (above 1: unseated) \[-\].
+    pub ratio: Real,
+    /// When the peak was first reached \[s\].
+    pub peak_time: Real,
+    /// The displacement at the end of the run (residual) \[m\].
+    pub residual_displacement: Real,
+    /// The end left its seat.
+    pub unseated: bool,
+}
+
 /// Peaks and the energy check of a bridge run.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BridgeSummary {
@@ -1147,6 +1173,11 @@ pub struct BridgeSummary {
     pub unseating_time: Option<Real>,
     /// Which end first: `segment<i>-start` / `segment<i>-end` (1-based).
     pub unseated_end: Option<String>,
+    /// Every seated end's margin, in bridge order (segment 1 start, segment 1 end, …).
+    pub seats: Vec<SeatSummary>,
+    /// The index in [`Self::seats`] of the governing end: the largest ratio (the first of equal
+    /// ones).
+    pub governing_seat: usize,
     /// Largest penetration at a joint (rigid: the scheme's overlap; compliance: the law's
     /// deformation) \[m\].
     pub peak_penetration: Real,
@@ -1412,6 +1443,35 @@ fn solution(
             if e % 2 == 0 { "start" } else { "end" }
         )
     });
+    let n = br.bodies.len();
+    let seats: Vec<SeatSummary> = br
+        .seats
+        .iter()
+        .enumerate()
+        .map(|(e, seat)| {
+            let (i, at_end) = (e / 2, e % 2 == 1);
+            let support = match (at_end, i, model.abutments[usize::from(at_end)].is_some()) {
+                (false, 0, true) => "abutment-start".to_string(),
+                (false, 0, false) => "outer-start".to_string(),
+                (false, _, _) => format!("joint{i}"),
+                (true, _, has) if i + 1 == n => {
+                    if has { "abutment-end" } else { "outer-end" }.to_string()
+                }
+                (true, _, _) => format!("joint{}", i + 1),
+            };
+            SeatSummary {
+                end: format!("segment{}-{}", i + 1, if at_end { "end" } else { "start" }),
+                segment: i + 1,
+                support,
+                seat_length: seat.length,
+                peak_displacement: peaks.seat[e],
+                ratio: peaks.seat[e] / seat.length,
+                peak_time: peaks.seat_time[e],
+                residual_displacement: peaks.seat_last[e],
+                unseated: peaks.seat[e] > seat.length,
+            }
+        })
+        .collect();
     let summary = BridgeSummary {
         impacts: log.impacts,
         joints,
@@ -1431,6 +1491,11 @@ fn solution(
         unseated: peaks.unseat.is_some(),
         unseating_time: peaks.unseat.map(|u| u.0),
         unseated_end,
+        governing_seat: seats
+            .iter()
+            .enumerate()
+            .fold(0, |g, (e, s)| if s.ratio > seats[g].ratio { e } else { g }),
+        seats,
         peak_penetration: peaks.pen,
         energy_balance_error: r.energy_balance_error,
         final_energy: r.final_energy,

@@ -589,6 +589,10 @@ pub(crate) struct Peaks {
     pub slip: Vec<Real>,
     /// Per seated end: the largest seat displacement.
     pub seat: Vec<Real>,
+    /// Per seated end: the time of [`Self::seat`] (the first time it was reached).
+    pub seat_time: Vec<Real>,
+    /// Per seated end: the seat displacement at the last observed step (the residual).
+    pub seat_last: Vec<Real>,
     /// First unseating: time and seated-end index.
     pub unseat: Option<(Real, usize)>,
     /// Largest penetration of any joint (or contact deformation of the law).
@@ -622,6 +626,8 @@ impl Peaks {
             rot: vec![0.0; br.bodies.len()],
             slip: vec![0.0; nj],
             seat: vec![Real::NEG_INFINITY; br.seats.len()],
+            seat_time: vec![0.0; br.seats.len()],
+            seat_last: vec![Real::NAN; br.seats.len()],
             unseat: None,
             pen: 0.0,
             abut: [None, None],
@@ -701,7 +707,11 @@ impl Peaks {
                 .iter()
                 .map(|p| (pose.place(bodies, s_end.body, p) - p).dot(&s_end.inward))
                 .fold(Real::NEG_INFINITY, Real::max);
+            if s > self.seat[e] {
+                self.seat_time[e] = t;
+            }
             self.seat[e] = self.seat[e].max(s);
+            self.seat_last[e] = s;
             if self.unseat.is_none() && s > s_end.length {
                 self.unseat = Some((t, e));
             }

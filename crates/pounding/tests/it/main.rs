@@ -47,6 +47,7 @@ mod sim_bridge_examples;
 mod sim_bridge_plan;
 mod sim_bridge_points;
 mod sim_bridge_reference;
+mod sim_bridge_seats;
 mod sim_bridge_site_contact;
 mod sim_compliance;
 mod sim_friction;

@@ -263,6 +263,8 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
         "abutments": abutments,
         "segments": segments,
         "peak_seat_displacement_m": json_float(s.peak_seat_displacement),
+        "governing_seat": governing_seat_json(s),
+        "seats": s.seats.iter().map(seat_json).collect::<Vec<_>>(),
         "unseated": s.unseated,
         "unseating_time_s": opt(s.unseating_time),
         "unseated_end": s.unseated_end,
@@ -331,4 +333,47 @@ pub fn bridge_summary_json_text(setup: &BridgeSetup, sol: &BridgeSolution) -> St
     let mut s = serde_json::to_string_pretty(&v).unwrap_or_default();
     s.push('\n');
     s
+}
+
+/// One seated end's margin in `summary.json`.
+fn seat_json(s: &crate::sim::bridge::SeatSummary) -> serde_json::Value {
+    json!({
+        "end": s.end,
+        "segment": s.segment,
+        "support": s.support,
+        "seat_length_m": json_float(s.seat_length),
+        "peak_seat_displacement_m": json_float(s.peak_displacement),
+        "ratio": json_float(s.ratio),
+        "peak_time_s": json_float(s.peak_time),
+        "residual_seat_displacement_m": json_float(s.residual_displacement),
+        "unseated": s.unseated,
+    })
+}
+
+/// The governing seated end (the largest ratio of displacement to its own seat) in
+/// `summary.json`: which end, its support, ratio and seat.
+fn governing_seat_json(s: &crate::sim::bridge::BridgeSummary) -> serde_json::Value {
+    match s.seats.get(s.governing_seat) {
+        Some(g) => json!({
+            "end": g.end,
+            "support": g.support,
+            "ratio": json_float(g.ratio),
+            "peak_seat_displacement_m": json_float(g.peak_displacement),
+            "seat_length_m": json_float(g.seat_length),
+        }),
+        None => serde_json::Value::Null,
+    }
+}
+
+/// The governing seated end in words, for the terminal: `segment3-end on joint3: 97 % of its
+/// 0.4 m seat`.
+pub fn governing_seat_line(s: &crate::sim::bridge::BridgeSummary) -> Option<String> {
+    let g = s.seats.get(s.governing_seat)?;
+    Some(format!(
+        "{} on {}: {} % of its {} m seat",
+        g.end,
+        g.support,
+        crate::output::bounded(100.0 * g.ratio, 0),
+        crate::output::float_token(g.seat_length)
+    ))
 }

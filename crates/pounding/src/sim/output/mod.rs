@@ -21,7 +21,7 @@ mod input_warnings;
 pub use batch::{BATCH_HEADER, BATCH_TAIL, batch_csv, bridge_batch_csv, bridge_batch_header};
 pub use bridge::{
     bridge_history_csv, bridge_impacts_csv, bridge_run_warnings, bridge_summary_json,
-    bridge_summary_json_text,
+    bridge_summary_json_text, governing_seat_line,
 };
 pub use bridge_plan::{
     BridgePlan, CornerPaths, bridge_plan, corner_paths, joint_openings, plan_exaggeration,
