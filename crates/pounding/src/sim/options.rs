@@ -225,7 +225,14 @@ pub fn check_runs_memory(runs: &[(usize, usize, usize)]) -> Result<u64, String> 
 /// The smallest history stride whose [`bridge_run_memory_bytes`] is at most
 /// [`MAX_RUN_MEMORY_BYTES`] (`None` if even the first and last step are too much).
 pub fn min_bridge_history_stride(n_steps: usize, n_segments: usize) -> Option<usize> {
-    let ok = |s: usize| bridge_run_memory_bytes(n_steps, s, n_segments) <= MAX_RUN_MEMORY_BYTES;
+    smallest_stride(n_steps, |s| {
+        bridge_run_memory_bytes(n_steps, s, n_segments) <= MAX_RUN_MEMORY_BYTES
+    })
+}
+
+/// The smallest stride in `1..=n_steps` for which `ok` holds, `ok` being monotone (false then
+/// true as the stride grows): bisection. `None` if even the largest fails.
+fn smallest_stride(n_steps: usize, ok: impl Fn(usize) -> bool) -> Option<usize> {
     let hi = n_steps.max(1);
     if !ok(hi) {
         return None;
@@ -241,18 +248,10 @@ pub fn min_bridge_history_stride(n_steps: usize, n_segments: usize) -> Option<us
 /// The smallest history stride whose [`run_memory_bytes`] for `n_steps` is at most
 /// [`MAX_RUN_MEMORY_BYTES`] (`None` if even keeping only the first and last step is too much).
 pub fn min_history_stride(n_steps: usize) -> Option<usize> {
-    let ok = |s: usize| run_memory_bytes(n_steps, s) <= MAX_RUN_MEMORY_BYTES;
-    let hi = n_steps.max(1);
-    if !ok(hi) {
-        return None;
-    }
-    // the estimate does not increase with the stride: bisect
-    let (mut lo, mut hi) = (1usize, hi);
-    while lo < hi {
-        let mid = lo + (hi - lo) / 2;
-        if ok(mid) { hi = mid } else { lo = mid + 1 }
-    }
-    Some(lo)
+    // the estimate does not increase with the stride
+    smallest_stride(n_steps, |s| {
+        run_memory_bytes(n_steps, s) <= MAX_RUN_MEMORY_BYTES
+    })
 }
 
 impl super::SimSettings {
