@@ -645,6 +645,10 @@ impl Stepper for ComplianceStepper {
         self.d_cont
     }
 
+    fn adjust_contact_energy(&mut self, delta: Real) {
+        self.d_cont += delta;
+    }
+
     fn step(&mut self, inp: &StepInput, log: &mut ImpactLog) -> StepOutput {
         let (h, th, hth) = (self.h, self.th, self.hth);
         let wr = inp.winv.mul(&self.r_k);

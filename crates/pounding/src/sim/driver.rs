@@ -571,6 +571,9 @@ pub(crate) trait Stepper {
     fn contact_forces(&self) -> Option<&[[Real; 2]]>;
     /// The contact term `D_contact` of the energy balance so far.
     fn contact_energy(&self) -> Real;
+    /// Adds `delta` to the contact term of the energy balance (the driver's correction of a
+    /// step's end velocity with the contact impulse held fixed, [`super::yielding`]).
+    fn adjust_contact_energy(&mut self, delta: Real);
     /// Advances `u_k → u_{k+1}`, logging impacts.
     fn step(&mut self, input: &StepInput, log: &mut ImpactLog) -> StepOutput;
     /// Closes what is still open at the end of the run; returns the counters.
@@ -954,7 +957,11 @@ pub(crate) fn run<S: Stepper>(
         };
         let mut out = stepper.step(&input, &mut log);
         if !yielding.is_empty() {
-            yielding.finish_step(sc, &el.bearings, &q, &u, &mut out.u, &mut el_force);
+            let d_contact =
+                yielding.finish_step(sc, &el.bearings, &q, &u, &mut out.u, &mut el_force);
+            if d_contact != 0.0 {
+                stepper.adjust_contact_energy(d_contact);
+            }
         }
         peaks.pen = peaks.pen.max(out.penetration);
         ledger.advance(sc, k, &u, &out.u, &mut work);

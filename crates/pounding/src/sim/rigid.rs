@@ -373,6 +373,10 @@ impl Stepper for RigidStepper {
         self.d_cont
     }
 
+    fn adjust_contact_energy(&mut self, delta: Real) {
+        self.d_cont += delta;
+    }
+
     fn step(&mut self, inp: &StepInput, log: &mut ImpactLog) -> StepOutput {
         let mut u_new = inp.u_free.clone();
         let active = self.active_set(inp);

@@ -320,6 +320,12 @@ impl Implicit {
     /// bearings' return mapping at the end position (correcting it with the impulse held fixed
     /// where the linearisation does not hold) and books the end force into `f`
     /// (`R̄ += θ (R̃(q_{k+1}) − R̃_pred)`, bearings' part and whole).
+    ///
+    /// Returns the change of the contact term of the energy balance that a correction makes:
+    /// the contact impulse `Π` does the work `−½ Πᵀ (u_k + u_{k+1})`, so moving `u_{k+1}` by
+    /// `Δu` with `Π` fixed changes it by `−½ Πᵀ Δu` (to be added to the stepper's
+    /// [`super::driver::Stepper::contact_energy`]).
+    #[allow(clippy::too_many_arguments)]
     pub fn finish_step(
         &mut self,
         sc: &Scheme,
@@ -328,8 +334,9 @@ impl Implicit {
         u: &State,
         u_new: &mut State,
         f: &mut StepForce,
-    ) {
+    ) -> Real {
         let mut corrected = false;
+        let mut d_contact = 0.0;
         for (g, (j, idx)) in self.groups.iter().enumerate() {
             let j = *j;
             let x_new: Vector3<Real> = u_new.fixed_rows::<3>(3 * j).into_owned();
@@ -353,6 +360,7 @@ impl Implicit {
                         self.failures += 1;
                     }
                     corrected = true;
+                    d_contact -= 0.5 * pi.dot(&(x - x_new));
                     u_new.fixed_rows_mut::<3>(3 * j).copy_from(&x);
                     r
                 }
@@ -366,5 +374,6 @@ impl Implicit {
         if corrected {
             self.corrections += 1;
         }
+        d_contact
     }
 }
