@@ -16,8 +16,8 @@
 //! The required gap between two adjacent frames with peak displacements `u₁`, `u₂` is
 //! `g_SRSS = √(u₁² + u₂²)` or, by the double-difference (CQC) rule,
 //! `g_DDC = √(u₁² + u₂² − 2 ρ₁₂ u₁ u₂)` with the CQC correlation of two equally damped modes
-//! `ρ₁₂ = 8 ξ² (1 + r) r^{3/2} / ((1 − r²)² + 4 ξ² r (1 + r)²)`, `r = T₂/T₁` (Der Kiureghian 1981;
-//! Kasai, Jagiasi & Jeng 1996, adopted by AASHTO Guide Spec 4.12 commentary practice).
+//! `ρ₁₂ = 8 ξ² (1 + r) r^{3/2} / ((1 − r²)² + 4 ξ² r (1 + r)²)`, `r = T₂/T₁` (Der Kiureghian 1981).
+//! See the guide page `docs/guide/check.md` for every input and clause.
 
 use thiserror::Error;
 
