@@ -32,6 +32,7 @@
 //! status other than `Completed` is kept in `runs.csv` with its status, and its limit states
 //! are excluded (`None`) from the fit and counted.
 
+pub mod code_check;
 pub mod im;
 pub mod limit;
 pub mod run;

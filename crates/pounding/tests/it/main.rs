@@ -2,6 +2,7 @@
 
 mod analytic;
 mod batch;
+mod code_check;
 mod common;
 mod contact;
 mod contact_law;
