@@ -84,6 +84,7 @@ mod motion;
 mod physics_check;
 mod record_misreads;
 mod reports_browser;
+mod reports_browser_anim;
 mod shapes;
 mod sim_report;
 mod simulate;
