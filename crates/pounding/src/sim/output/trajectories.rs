@@ -45,11 +45,11 @@ pub fn bridge_trajectories_json(setup: &BridgeSetup, sol: &BridgeSolution) -> St
     let stride = trajectory_stride(rows);
     let plan = super::bridge_plan(model, 16);
     let mut s = String::with_capacity(64 * n * rows / stride + 4096);
-    let _ = write!(
+    let _ = writeln!(
         s,
         "{{\"format\":\"pounding-trajectories\",\"version\":1,\"units\":{{\"length\":\"m\",\
          \"time\":\"s\",\"angle\":\"deg\",\"acceleration\":\"m/s2\",\"impulse\":\"N s\",\
-         \"force\":\"N\"}},\"segments\":{n},\"rows\":{rows},\"stride\":{stride},\n"
+         \"force\":\"N\"}},\"segments\":{n},\"rows\":{rows},\"stride\":{stride},"
     );
     let outlines: Vec<String> = plan
         .outlines
