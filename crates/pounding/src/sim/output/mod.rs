@@ -60,6 +60,7 @@ pub const SIM_OUTPUTS: &[&str] = &[
     "joint_openings.png",
     "plan.png",
     "report.html",
+    "trajectories.json",
 ];
 
 /// `history.csv`: one row per stored step (every `history_stride`-th) — time, ground
