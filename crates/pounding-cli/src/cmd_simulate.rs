@@ -171,6 +171,7 @@ pub(crate) fn write_report(
     summary_json: &str,
     candidates: &[&'static str],
     files: &[&'static str],
+    animation: Option<&str>,
 ) -> Result<()> {
     let input = crate::sim_report::ReportInput {
         what,
@@ -182,6 +183,7 @@ pub(crate) fn write_report(
             .filter(|f| args.out.join(f).is_file())
             .collect(),
         files,
+        animation,
     };
     let html = crate::sim_report::report_html(&input, summary_json);
     let p = args.out.join("report.html");
@@ -243,6 +245,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
         &summary,
         sim_plots::FIGURES,
         &["summary.json", "history.csv", "impacts.csv"],
+        None,
     )?;
     let write_secs = t_write.elapsed().as_secs_f64();
     let timing = json!({

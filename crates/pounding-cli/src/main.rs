@@ -20,6 +20,7 @@ mod plot_style;
 mod plots;
 mod report;
 mod report_pages;
+mod sim_anim;
 mod sim_report;
 
 /// Nonsmooth rigid-impact analysis of pounding between bridge deck segments.

@@ -8,7 +8,9 @@ use super::{Args, lock_and_clear};
 use anyhow::{Context, Result, anyhow};
 use pounding::output::{bounded, float_token, write_atomic};
 use pounding::sim::SimStatus;
-use pounding::sim::output::{bridge_history_csv, bridge_impacts_csv, bridge_summary_json_text};
+use pounding::sim::output::{
+    bridge_history_csv, bridge_impacts_csv, bridge_summary_json_text, bridge_trajectories_json,
+};
 use pounding::sim::scenario::Scenario;
 use serde_json::json;
 use std::process::ExitCode;
@@ -51,6 +53,8 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
     )?;
     let summary = bridge_summary_json_text(&setup, &sol);
     wr("summary.json", summary.as_bytes())?;
+    let traj = bridge_trajectories_json(&setup, &sol);
+    wr("trajectories.json", traj.as_bytes())?;
     crate::plots::bridge::write_all(out, &setup.problem.model, &sol)
         .map_err(|e| anyhow!("plotting: {e}"))?;
     let n = sol.n_segments;
@@ -60,7 +64,13 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
         (&origin, &text),
         &summary,
         crate::plots::bridge::FIGURES,
-        &["summary.json", "history.csv", "impacts.csv"],
+        &[
+            "summary.json",
+            "history.csv",
+            "impacts.csv",
+            "trajectories.json",
+        ],
+        Some(&traj),
     )?;
     let timing = json!({
         "simulate_s": sim_secs,

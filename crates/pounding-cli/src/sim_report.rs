@@ -1,5 +1,6 @@
 //! `report.html` of `pounding simulate` (two decks or a bridge): one self-contained page (inline
-//! CSS, relative links only, no scripts, no timestamps) with the run's status, the model (the
+//! CSS, relative links only, no timestamps; scripts only in a bridge run's plan animation,
+//! [`crate::sim_anim`]) with the run's status, the model (the
 //! scenario as run and the command-line replacements), the ground motion, the warnings, the
 //! summary (the scalars of `summary.json` and one table per array: joints, abutments,
 //! segments) and every figure the run drew.
@@ -23,6 +24,9 @@ pub struct ReportInput<'a> {
     pub figures: Vec<&'a str>,
     /// Data files written beside the page.
     pub files: &'a [&'a str],
+    /// The trajectories JSON of a bridge run: the page then shows the plan animation
+    /// ([`crate::sim_anim`]).
+    pub animation: Option<&'a str>,
 }
 
 /// The page, from the run's `summary.json` text.
@@ -64,12 +68,21 @@ pub fn report_html(input: &ReportInput, summary_json: &str) -> String {
          them in full.</p>",
         links.join(", ")
     );
-    h.push_str(
-        "<nav><a href=\"#warnings\">Warnings</a><a href=\"#ground\">Ground motion</a><a \
+    let _ = writeln!(
+        h,
+        "<nav><a href=\"#warnings\">Warnings</a>{}<a href=\"#ground\">Ground motion</a><a \
          href=\"#summary\">Summary</a><a href=\"#figures\">Figures</a><a \
-         href=\"#model\">Model</a></nav>\n",
+         href=\"#model\">Model</a></nav>",
+        if input.animation.is_some() {
+            "<a href=\"#animation\">Animation</a>"
+        } else {
+            ""
+        }
     );
     warnings(&mut h, &summary);
+    if let Some(traj) = input.animation {
+        h.push_str(&crate::sim_anim::section(traj));
+    }
     let _ = writeln!(h, "<h2 id=\"ground\">Ground motion</h2>");
     object_tables(&mut h, &summary["ground_motion"]);
     let _ = writeln!(h, "<h2 id=\"summary\">Summary</h2>");

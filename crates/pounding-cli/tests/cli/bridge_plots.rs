@@ -7,7 +7,7 @@ use std::path::Path;
 
 const CURVED_5: &str = include_str!("../../../../examples/viaduct-curved-5.toml");
 
-const BRIDGE_FILES: [&str; 9] = [
+const BRIDGE_FILES: [&str; 10] = [
     "displacements.png",
     "energy.png",
     "history.csv",
@@ -17,6 +17,7 @@ const BRIDGE_FILES: [&str; 9] = [
     "report.html",
     "summary.json",
     "timing.json",
+    "trajectories.json",
 ];
 
 const BRIDGE_PNGS: [&str; 4] = [

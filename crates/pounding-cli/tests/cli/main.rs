@@ -87,6 +87,7 @@ mod physics_check;
 mod record_misreads;
 mod record_units;
 mod reports_browser;
+mod reports_browser_anim;
 mod shapes;
 mod sim_report;
 mod simulate;

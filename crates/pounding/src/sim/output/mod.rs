@@ -18,6 +18,7 @@ mod bridge_plan;
 mod compare;
 mod compare_bridge;
 mod input_warnings;
+mod trajectories;
 pub use batch::{BATCH_HEADER, BATCH_TAIL, batch_csv, bridge_batch_csv, bridge_batch_header};
 pub use bridge::{
     bridge_history_csv, bridge_impacts_csv, bridge_run_warnings, bridge_summary_json,
@@ -33,6 +34,7 @@ pub use compare_bridge::{
     bridge_compare_csv, bridge_compare_sites_csv, bridge_compare_table,
 };
 pub use input_warnings::{InputWarning, input_warnings, warning_sentence};
+pub use trajectories::{TRAJECTORY_MAX_FRAMES, bridge_trajectories_json, trajectory_stride};
 
 /// Degrees per radian.
 pub(crate) const DEG: Real = 180.0 / std::f64::consts::PI;
@@ -58,6 +60,7 @@ pub const SIM_OUTPUTS: &[&str] = &[
     "joint_openings.png",
     "plan.png",
     "report.html",
+    "trajectories.json",
 ];
 
 /// `history.csv`: one row per stored step (every `history_stride`-th) — time, ground

@@ -1,0 +1,182 @@
+//! Headless-browser check of the plan animation in `report.html` of `pounding simulate` on a
+//! bridge: the page is opened offline in Chromium inside a probe page that moves the time slider
+//! to three frames (a quarter of the run, the first impact, the end) and reads the player's
+//! state. At each, the drawn displacements `x_i, y_i, θ_i` equal `history.csv`'s row at that
+//! time and each drawn centroid is `G⁰ + f d` for the shown magnification `f`; at the first
+//! impact a marker is drawn at that impact's joint (nearest joint of the plan) with its time.
+//! No console message may appear. Skipped (reason printed) without Chromium, as
+//! [`crate::reports_browser`].
+
+use crate::reports_browser::{chromium, file_url, headless};
+use crate::{pounding, scratch_dir, skipped};
+use serde_json::Value;
+use std::path::Path;
+
+/// `history.csv` as (header, rows).
+fn csv(p: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    let text = std::fs::read_to_string(p).unwrap();
+    let mut lines = text.lines();
+    let head = lines.next().unwrap().split(',').map(String::from).collect();
+    let rows = lines
+        .map(|l| {
+            l.split(',')
+                .map(|v| v.parse().unwrap_or(f64::NAN))
+                .collect()
+        })
+        .collect();
+    (head, rows)
+}
+
+#[test]
+fn plan_animation_draws_history_positions_and_impacts() {
+    let Some(chrome) = chromium() else {
+        skipped("no runnable chromium (install Debian's `chromium` package)");
+        return;
+    };
+    let work = scratch_dir("browser", "anim");
+    let out = work.join("viaduct");
+    let example =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/viaduct-rigid-1d.toml");
+    let o = pounding()
+        .args([
+            "simulate",
+            example.to_str().unwrap(),
+            "--duration",
+            "3",
+            "--out",
+        ])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // The first impact (impacts.csv: impact,t_s,site,...; site `jointK`, 1-based).
+    let impacts = std::fs::read_to_string(out.join("impacts.csv")).unwrap();
+    let first: Vec<&str> = impacts
+        .lines()
+        .nth(1)
+        .expect("an impact")
+        .split(',')
+        .collect();
+    let t_imp: f64 = first[1].parse().unwrap();
+    let joint: usize = first[2]
+        .strip_prefix("joint")
+        .unwrap()
+        .parse::<usize>()
+        .unwrap()
+        - 1;
+    let probe = work.join("probe.html");
+    std::fs::write(
+        &probe,
+        format!(
+            "<!DOCTYPE html><html><body><div id=\"r\">PROBE pending</div>\
+             <iframe id=\"f\" src=\"{}\" width=\"1400\" height=\"1200\"></iframe><script>\
+             document.getElementById('f').onload = function () {{\
+             var r = document.getElementById('r');\
+             try {{ var A = this.contentWindow.poundingAnim, N = A.data.frames.length, res = [];\
+             [Math.floor(N / 4), A.frameAt({t_imp}), N - 1].forEach(function (k) {{\
+             var s = this.contentDocument.getElementById('an-t'); s.value = k;\
+             s.dispatchEvent(new Event('input'));\
+             res.push({{frame: A.state.frame, t: A.data.frames[A.state.frame].t, mag: A.state.mag,\
+             drawn: A.state.drawn, markers: A.state.markers}}); }}, this);\
+             r.textContent = 'PROBE ' + JSON.stringify(res) + ' END';\
+             }} catch (e) {{ r.textContent = 'PROBE error ' + e + ' END'; }} }};</script></body></html>",
+            file_url(&out.join("report.html"))
+        ),
+    )
+    .unwrap();
+    let (dom, log) = headless(
+        &chrome,
+        &work.join("profile"),
+        &["--dump-dom".into()],
+        &file_url(&probe),
+    );
+    let console: Vec<&str> = log
+        .lines()
+        .filter(|l| l.contains(":CONSOLE") || l.contains("Failed to load resource"))
+        .collect();
+    assert!(
+        console.is_empty(),
+        "console messages:\n{}",
+        console.join("\n")
+    );
+    let result = dom
+        .split("PROBE ")
+        .nth(1)
+        .and_then(|r| r.split(" END").next())
+        .unwrap_or("no probe result");
+    let states: Value = serde_json::from_str(result)
+        .unwrap_or_else(|e| panic!("probe result {result}: {e}\n{log}"));
+    let traj: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("trajectories.json")).unwrap())
+            .unwrap();
+    let (head, rows) = csv(&out.join("history.csv"));
+    let n = traj["segments"].as_u64().unwrap() as usize;
+    assert_eq!(head[3], "x1_m");
+    let states = states.as_array().unwrap();
+    assert_eq!(states.len(), 3);
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * (1.0 + a.abs().max(b.abs()));
+    for st in states {
+        let t = st["t"].as_f64().unwrap();
+        let row = rows
+            .iter()
+            .find(|r| close(r[0], t))
+            .unwrap_or_else(|| panic!("no history row at t = {t}"));
+        let drawn = st["drawn"].as_array().unwrap();
+        assert_eq!(drawn.len(), n);
+        let mag = st["mag"].as_f64().unwrap();
+        for (i, d) in drawn.iter().enumerate() {
+            let want = [row[3 + 3 * i], row[4 + 3 * i], row[5 + 3 * i]];
+            let got = ["x", "y", "theta_deg"].map(|k| d[k].as_f64().unwrap());
+            for c in 0..3 {
+                assert!(
+                    close(got[c], want[c]),
+                    "t {t} segment {}: {got:?} vs {want:?}",
+                    i + 1
+                );
+            }
+            let g0 = &traj["centroids"][i];
+            for c in 0..2 {
+                let g = g0[c].as_f64().unwrap() + mag * want[c];
+                let shown = d["centroid"][c].as_f64().unwrap();
+                assert!(
+                    close(shown, g),
+                    "t {t} segment {} centroid {shown} vs {g}",
+                    i + 1
+                );
+            }
+        }
+    }
+    // The first impact: a marker with its time at its joint.
+    let st = &states[1];
+    let marks = st["markers"].as_array().unwrap();
+    let m = marks
+        .iter()
+        .find(|m| m["site_kind"] == "joint" && close(m["t"].as_f64().unwrap(), t_imp))
+        .unwrap_or_else(|| panic!("no marker of the impact at {t_imp}: {marks:?}"));
+    assert_eq!(m["site"].as_u64(), Some(joint as u64));
+    // Nearest joint (midpoint of segment k's end face and k+1's start face, at rest) to the marker.
+    let (mx, my) = (m["x"].as_f64().unwrap(), m["y"].as_f64().unwrap());
+    let c = &traj["corners"];
+    let mid = |k: usize| -> (f64, f64) {
+        let p = |s: usize, j: usize, a: usize| c[s][j][a].as_f64().unwrap();
+        let x = (p(k, 2, 0) + p(k, 3, 0) + p(k + 1, 0, 0) + p(k + 1, 1, 0)) / 4.0;
+        let y = (p(k, 2, 1) + p(k, 3, 1) + p(k + 1, 0, 1) + p(k + 1, 1, 1)) / 4.0;
+        (x, y)
+    };
+    let nearest = (0..n - 1)
+        .min_by(|&a, &b| {
+            let d = |k| {
+                let (x, y) = mid(k);
+                (x - mx).hypot(y - my)
+            };
+            d(a).total_cmp(&d(b))
+        })
+        .unwrap();
+    assert_eq!(
+        nearest,
+        joint,
+        "marker at ({mx}, {my}) is not at joint {}",
+        joint + 1
+    );
+    let _ = std::fs::remove_dir_all(work.join("profile"));
+}
