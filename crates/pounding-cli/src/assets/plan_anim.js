@@ -118,7 +118,7 @@
     state.zoom = { cx: (px - o[0]) / k, cy: -(py - o[1]) / k, w: w }; draw();
   });
   cv.addEventListener('dblclick', function () { state.zoom = null; draw(); });
-  var ev = $('an-events'), names = { first_impact: 'first impact', peak_closing: 'peak closing', unseating: 'unseating' };
+  var ev = $('an-events'), names = { first_impact: 'first impact', peak_closing: 'peak closing', peak_seat_ratio: 'peak seat ratio', unseating: 'unseating' };
   Object.keys(names).forEach(function (k) {
     var t = D.events[k]; if (t === null || t === undefined) return;
     var b = document.createElement('button'); b.textContent = names[k] + ' (' + t.toFixed(3) + ' s)';

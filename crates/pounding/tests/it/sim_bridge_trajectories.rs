@@ -65,4 +65,9 @@ fn trajectories_hold_decimated_history_rows_exactly() {
         j["events"]["first_impact"].as_f64().unwrap(),
         sol.impacts[0].time
     );
+    let g = &sol.summary.seats[sol.summary.governing_seat];
+    assert_eq!(
+        j["events"]["peak_seat_ratio"].as_f64().unwrap(),
+        g.peak_time
+    );
 }

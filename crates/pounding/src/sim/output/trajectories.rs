@@ -123,7 +123,8 @@ pub fn bridge_trajectories_json(setup: &BridgeSetup, sol: &BridgeSolution) -> St
     s
 }
 
-/// The governing event times: first impact, peak closing (smallest joint opening), unseating.
+/// The governing event times: first impact, peak closing (smallest joint opening), the peak of
+/// the governing seat ratio ([`crate::sim::bridge::BridgeSummary::governing_seat`]), unseating.
 fn events(setup: &BridgeSetup, sol: &BridgeSolution) -> String {
     let first = sol.impacts.first().map(|i| i.time);
     let mut peak: Option<(Real, Real)> = None;
@@ -135,10 +136,12 @@ fn events(setup: &BridgeSetup, sol: &BridgeSolution) -> String {
         }
     }
     let o = |x: Option<Real>| x.map_or("null".into(), num);
+    let governing = sol.summary.seats.get(sol.summary.governing_seat);
     format!(
-        "{{\"first_impact\":{},\"peak_closing\":{},\"unseating\":{}}}",
+        "{{\"first_impact\":{},\"peak_closing\":{},\"peak_seat_ratio\":{},\"unseating\":{}}}",
         o(first),
         o(peak.map(|p| p.0)),
+        o(governing.map(|g| g.peak_time)),
         o(sol.summary.unseating_time)
     )
 }
