@@ -187,10 +187,7 @@ fn check_page(chrome: &Path, work: &Path, page: &Path, tag: &str) -> usize {
     let (n, bad) = rest.split_once(" bad=").unwrap();
     assert_eq!(bad, "[]", "{shown}: images that did not load: {bad}");
     // Console messages of the report page (the probe itself logs nothing).
-    let console: Vec<&str> = log
-        .lines()
-        .filter(|l| l.contains(":CONSOLE") || l.contains("Failed to load resource"))
-        .collect();
+    let console = console_messages(&log);
     assert!(
         console.is_empty(),
         "{shown}: console messages:\n{}",
@@ -282,4 +279,11 @@ fn both_reports_load_in_headless_chromium() {
     // The screenshots (screenshot-*.png) go with the scratch directory; POUNDING_KEEP_SCRATCH=1
     // keeps them to look at (docs/development.md). Chromium's profile goes in any case.
     let _ = std::fs::remove_dir_all(work.join("profile"));
+}
+
+/// The console messages and failed loads in a headless Chromium log.
+pub(crate) fn console_messages(log: &str) -> Vec<&str> {
+    log.lines()
+        .filter(|l| l.contains(":CONSOLE") || l.contains("Failed to load resource"))
+        .collect()
 }

@@ -90,10 +90,7 @@ fn plan_animation_draws_history_positions_and_impacts() {
         &["--dump-dom".into()],
         &file_url(&probe),
     );
-    let console: Vec<&str> = log
-        .lines()
-        .filter(|l| l.contains(":CONSOLE") || l.contains("Failed to load resource"))
-        .collect();
+    let console = crate::reports_browser::console_messages(&log);
     assert!(
         console.is_empty(),
         "console messages:\n{}",

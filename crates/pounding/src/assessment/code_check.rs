@@ -39,40 +39,31 @@ pub enum CodeCheckError {
     },
 }
 
-fn non_negative(key: &'static str, value: f64) -> Result<f64, CodeCheckError> {
-    if value.is_finite() && value >= 0.0 {
+/// `value` if it is finite and `ok`, else an error naming `key` and `what` it must be.
+fn within(
+    key: &'static str,
+    value: f64,
+    ok: bool,
+    what: &'static str,
+) -> Result<f64, CodeCheckError> {
+    if value.is_finite() && ok {
         Ok(value)
     } else {
-        Err(CodeCheckError::OutOfRange {
-            key,
-            what: "a finite number ≥ 0",
-            value,
-        })
+        Err(CodeCheckError::OutOfRange { key, what, value })
     }
+}
+
+fn non_negative(key: &'static str, value: f64) -> Result<f64, CodeCheckError> {
+    within(key, value, value >= 0.0, "a finite number ≥ 0")
 }
 
 fn positive(key: &'static str, value: f64) -> Result<f64, CodeCheckError> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(CodeCheckError::OutOfRange {
-            key,
-            what: "a finite number > 0",
-            value,
-        })
-    }
+    within(key, value, value > 0.0, "a finite number > 0")
 }
 
 fn angle(key: &'static str, deg: f64) -> Result<f64, CodeCheckError> {
-    if deg.is_finite() && (0.0..90.0).contains(&deg.abs()) {
-        Ok(deg.abs())
-    } else {
-        Err(CodeCheckError::OutOfRange {
-            key,
-            what: "an angle in degrees with |value| < 90",
-            value: deg,
-        })
-    }
+    let ok = (0.0..90.0).contains(&deg.abs());
+    within(key, deg, ok, "an angle in degrees with |value| < 90").map(f64::abs)
 }
 
 /// Ground type of EN 1998-1 §3.1.2 (Table 3.1).
