@@ -630,7 +630,7 @@ impl BridgeModel {
 
     /// The driver's view of the bridge: segments, joints, abutments, seats (per segment
     /// `[start, end]`).
-    fn bridge(&self) -> Bridge {
+    pub(crate) fn bridge(&self) -> Bridge {
         let bodies = self.layout();
         let n = bodies.len();
         let joints = self
@@ -1261,13 +1261,30 @@ pub fn simulate_bridge(
             ));
         }
     }
+    let bridge = model.bridge();
+    let initial = (problem.q0.as_slice(), problem.u0.as_slice());
+    let (result, scheme, compliant) =
+        integrate(model, &bridge, &problem.ground, initial, settings)?;
+    Ok(solution(result, &scheme, &bridge, model, compliant))
+}
+
+/// Integrates a validated `model` from the initial state of `problem` over the driver's view
+/// `bridge` of it ([`BridgeModel::bridge`], whose seat order a preset may change): the stepper of
+/// its contact laws in the one driver loop. Returns the run, its scheme and whether the contact
+/// is compliant. The time step and the contact kinds are checked here.
+pub(crate) fn integrate(
+    model: &BridgeModel,
+    bridge: &Bridge,
+    ground: &GroundMotion,
+    (q0, u0): (&[Real], &[Real]),
+    settings: &SimSettings,
+) -> Result<(driver::RunResult, driver::Scheme, bool), SimError> {
     let compliant = model.contact_kind()?;
     model.check_time_step(settings.dt)?;
     let systems = model.body_systems()?;
-    let scheme = driver::Scheme::new(&problem.ground, settings, systems)?;
-    let bridge = model.bridge();
-    let q0 = State::from_column_slice(&problem.q0);
-    let u0 = State::from_column_slice(&problem.u0);
+    let scheme = driver::Scheme::new(ground, settings, systems)?;
+    let q0 = State::from_column_slice(q0);
+    let u0 = State::from_column_slice(u0);
     let result = if compliant {
         let mut sites = Vec::new();
         let mut vr = Real::INFINITY;
@@ -1290,8 +1307,8 @@ pub fn simulate_bridge(
         }
         let abuts = bridge.abutments.clone();
         let mut stepper =
-            compliance::ComplianceStepper::new(&q0, &u0, sites, abuts, vr, &scheme, &bridge);
-        driver::run(q0, u0, settings, &scheme, &bridge, &mut stepper)
+            compliance::ComplianceStepper::new(&q0, &u0, sites, abuts, vr, &scheme, bridge);
+        driver::run(q0, u0, settings, &scheme, bridge, &mut stepper)
     } else {
         let law = |name: String, mu: Real, eps: Real| {
             ImpactLaw::new(mu, eps).map_err(|_| SimError::invalid(name, mu, "invalid impact law"))
@@ -1309,9 +1326,9 @@ pub fn simulate_bridge(
             }
         }
         let mut stepper = rigid::RigidStepper::with_laws(joint_laws, abut, settings);
-        driver::run(q0, u0, settings, &scheme, &bridge, &mut stepper)
+        driver::run(q0, u0, settings, &scheme, bridge, &mut stepper)
     };
-    Ok(solution(result, &scheme, &bridge, model, compliant))
+    Ok((result, scheme, compliant))
 }
 
 /// The largest summed normal impulse of one impact, per joint and per abutment side (the

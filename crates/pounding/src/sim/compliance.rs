@@ -63,7 +63,7 @@ use super::driver::{
     Bridge, ImpactLog, Scheme, StepInput, StepOutput, Stepper, StepperStats, Winv,
 };
 use super::model::SegmentBody;
-use super::{ComplianceContact, ImpactRecord, SimContact, SimError};
+use super::{ImpactRecord, SimContact};
 use crate::analytic::SlipMode;
 use crate::contact_law::sharing::JointLaw;
 use crate::contact_law::timestep::law_time_step_advice;
@@ -214,11 +214,6 @@ pub(crate) struct ComplianceStepper {
 }
 
 impl ComplianceStepper {
-    /// The joint law shared by the two ends (checked before the time grid is built).
-    pub fn joint_law(cc: &ComplianceContact) -> Result<JointLaw, SimError> {
-        JointLaw::new(cc.law, 2).map_err(|e| SimError::invalid("corners", 2.0, &e.to_string()))
-    }
-
     /// The stepper at the initial state `(q0, u0)`: law states open at the initial gaps
     /// (committed `δ = −g_N(q_0)`). `sites` holds the law of every joint and then of every
     /// abutment of `abutments` (a subset of the bridge's, start before end). The time-step advice

@@ -25,25 +25,22 @@
 //! ([`Bridge::new`], [`pair_solution`]).
 
 use super::contact::{JointFrame, JointGeom, Pose, State, candidates};
-use super::model::{LinearSystem, SegmentBody};
+use super::model::SegmentBody;
 use super::{
-    Energy, History, ImpactRecord, SimContact, SimError, SimModel, SimProblem, SimSettings,
-    SimSolution, SimStatus, SimSummary, balance_error, energies_finite, max_nan,
+    Energy, History, ImpactRecord, SimContact, SimError, SimProblem, SimSettings, SimSolution,
+    SimStatus, SimSummary, balance_error, energies_finite, max_nan,
 };
 use crate::contact_law::timestep::TimeStepAdvice;
 use crate::ground_motion::GroundMotion;
 use crate::math::{Real, Vector};
 use nalgebra::{DMatrix, Matrix3, Matrix3x2, Vector2, Vector3};
 
-/// Validates the settings, the ground motion, the model and the initial state; returns the
-/// assembled linear system.
-pub(crate) fn checked_system(
-    problem: &SimProblem,
-    settings: &SimSettings,
-) -> Result<LinearSystem, SimError> {
+/// Validates the settings, the ground motion, the two-deck model (its linear system) and the
+/// initial state, naming the two-deck keys in the errors.
+pub(crate) fn checked_pair(problem: &SimProblem, settings: &SimSettings) -> Result<(), SimError> {
     settings.validate()?;
     problem.ground.validate()?;
-    let sys = problem.model.linear_system()?;
+    problem.model.linear_system()?;
     for (i, v) in problem.q0.iter().chain(problem.u0.iter()).enumerate() {
         if !v.is_finite() {
             let name = if i < 6 {
@@ -54,7 +51,7 @@ pub(crate) fn checked_system(
             return Err(SimError::invalid(name, *v, "must be finite"));
         }
     }
-    Ok(sys)
+    Ok(())
 }
 
 /// The linear structure of one segment in `(u_x, u_y, θ)`: its mass, bearing stiffness and
@@ -72,24 +69,6 @@ pub(crate) struct BodySystem {
     pub frequencies: [Real; 3],
     /// Rayleigh coefficients `(a_0, a_1)`.
     pub rayleigh: (Real, Real),
-}
-
-impl BodySystem {
-    /// The diagonal blocks of the two-deck system (exact copies).
-    pub fn of_pair(sys: &LinearSystem) -> Vec<Self> {
-        (0..2)
-            .map(|j| {
-                let o = 3 * j;
-                BodySystem {
-                    mass: sys.mass.fixed_view::<3, 3>(o, o).into_owned(),
-                    stiffness: sys.stiffness.fixed_view::<3, 3>(o, o).into_owned(),
-                    damping: sys.damping.fixed_view::<3, 3>(o, o).into_owned(),
-                    frequencies: sys.frequencies[j],
-                    rayleigh: sys.rayleigh[j],
-                }
-            })
-            .collect()
-    }
 }
 
 /// The time grid and the iteration matrices of the θ-method, one `3 × 3` block per segment.
@@ -391,46 +370,6 @@ pub(crate) struct Bridge {
 }
 
 impl Bridge {
-    /// The two-deck model's segments, joint, abutments and seats ([`super::SEAT_ENDS`] order).
-    pub fn new(model: &SimModel) -> Self {
-        let decks = model.bodies();
-        let bodies = vec![
-            SegmentBody::of_deck(&decks[0], 1),
-            SegmentBody::of_deck(&decks[1], 2),
-        ];
-        let joints = vec![JointGeom::new(&bodies, 0, model.gap)];
-        let abutments = model
-            .abutments
-            .iter()
-            .enumerate()
-            .filter_map(|(j, a)| a.map(|a| AbutmentFace::new(&bodies, j, j, a.gap)))
-            .collect();
-        let mut seats = Vec::with_capacity(4);
-        for (j, b) in decks.iter().enumerate() {
-            let far_seat = model.abutments[j].map_or(model.seat_length, |a| a.seat_length);
-            seats.push(SeatEnd {
-                body: j,
-                corners: b.joint_corners,
-                inward: b.joint_inward,
-                length: model.seat_length,
-            });
-            seats.push(SeatEnd {
-                body: j,
-                corners: b.far_corners,
-                inward: b.far_inward,
-                length: far_seat,
-            });
-        }
-        Bridge {
-            bodies,
-            joints,
-            abutments,
-            seats,
-            bearing_points: Vec::new(),
-            elements: Default::default(),
-        }
-    }
-
     /// The geometry at `q`.
     pub fn frame(&self, q: &State) -> Frame {
         let pose = Pose::new(&self.bodies, q.as_slice());

@@ -910,38 +910,21 @@ pub(crate) fn energies_finite(e: &[Real]) -> bool {
     e.iter().all(|x| x.is_finite())
 }
 
-/// Runs the simulation (see the module documentation for the model and the scheme): the
-/// time-stepping driver (`driver.rs`) with the stepper of the joint's contact law (rigid:
-/// `rigid.rs`; compliance: [`compliance`]).
+/// Runs the two-deck model (see the module documentation for the model and the scheme): it is
+/// the bridge of two segments [`bridge::BridgeModel::from_pair`], integrated by
+/// [`bridge::simulate_bridge`]'s driver and steppers; only the seat order (the two-deck
+/// [`SEAT_ENDS`]: joint end before far end of each deck) and the result's shape are its own.
 ///
-/// Bad input → [`SimError`]; numerical trouble → [`SimSolution::status`].
+/// Bad input → [`SimError`] (named with the two-deck keys); numerical trouble →
+/// [`SimSolution::status`].
 pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolution, SimError> {
-    use compliance::ComplianceStepper;
-    let sys = driver::checked_system(problem, settings)?;
-    let joint = match &problem.model.contact {
-        JointContact::Compliance(cc) => Some((cc, ComplianceStepper::joint_law(cc)?)),
-        JointContact::Rigid => None,
-    };
-    let scheme = driver::Scheme::new(&problem.ground, settings, driver::BodySystem::of_pair(&sys))?;
-    let bridge = driver::Bridge::new(&problem.model);
-    let q0 = contact::State::from_column_slice(&problem.q0);
-    let u0 = contact::State::from_column_slice(&problem.u0);
-    let result = match joint {
-        Some((cc, joint)) => {
-            let sites = vec![compliance::SiteLaw {
-                law: joint,
-                mu: problem.model.friction,
-            }];
-            let vr = cc.friction_velocity;
-            let mut stepper =
-                ComplianceStepper::new(&q0, &u0, sites, Vec::new(), vr, &scheme, &bridge);
-            driver::run(q0, u0, settings, &scheme, &bridge, &mut stepper)
-        }
-        None => {
-            let mut stepper = rigid::RigidStepper::new(&problem.model, settings)?;
-            driver::run(q0, u0, settings, &scheme, &bridge, &mut stepper)
-        }
-    };
+    driver::checked_pair(problem, settings)?;
+    let model = bridge::BridgeModel::from_pair(&problem.model);
+    let mut view = model.bridge();
+    // the bridge orders each segment's seats start, end; deck 1's start is its far end
+    view.seats.swap(0, 1);
+    let initial = (problem.q0.as_slice(), problem.u0.as_slice());
+    let (result, scheme, _) = bridge::integrate(&model, &view, &problem.ground, initial, settings)?;
     Ok(driver::pair_solution(result, &scheme))
 }
 

@@ -9,8 +9,8 @@
 
 use super::contact::{Direction, State, dot_dir};
 use super::driver::{ImpactLog, StepInput, StepOutput, Stepper, StepperStats};
-use super::{ImpactRecord, SimContact, SimError, SimModel, SimSettings};
-use crate::analytic::{ImpactLaw, LawError, SlipMode};
+use super::{ImpactRecord, SimContact, SimSettings};
+use crate::analytic::{ImpactLaw, SlipMode};
 use crate::law_check;
 use crate::lcp::{self, LcpStatus, LemkeSettings};
 use crate::math::{Real, cross};
@@ -114,16 +114,6 @@ pub(crate) struct RigidStepper {
 }
 
 impl RigidStepper {
-    /// The stepper of `model`'s impact law (ε_N, μ), the same at the joint and the abutments.
-    pub fn new(model: &SimModel, settings: &SimSettings) -> Result<Self, SimError> {
-        let (mu, eps) = (model.friction, model.restitution);
-        let law = ImpactLaw::new(mu, eps).map_err(|e| match e {
-            LawError::Friction(v) => SimError::invalid("friction", v, "must be >= 0"),
-            LawError::Restitution(v) => SimError::invalid("restitution", v, "must lie in [0, 1]"),
-        })?;
-        Ok(Self::with_laws(vec![law], [law, law], settings))
-    }
-
     /// The stepper with an impact law per joint and per abutment side.
     pub fn with_laws(
         joint_laws: Vec<ImpactLaw>,
