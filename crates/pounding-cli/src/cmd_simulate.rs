@@ -237,6 +237,9 @@ pub fn run(args: Args) -> Result<ExitCode> {
     )?;
     let summary = summary_json_text(&setup, &sol);
     wr("summary.json", summary.as_bytes())?;
+    for t in &sol.tables {
+        wr(&t.file_name(), t.csv().as_bytes())?;
+    }
     sim_plots::write_all(out, &setup.problem, &sol).map_err(|e| anyhow!("plotting: {e}"))?;
     write_report(
         &args,
@@ -244,7 +247,14 @@ pub fn run(args: Args) -> Result<ExitCode> {
         (&origin, &text),
         &summary,
         sim_plots::FIGURES,
-        &["summary.json", "history.csv", "impacts.csv"],
+        &[
+            "summary.json",
+            "history.csv",
+            "impacts.csv",
+            "bearings.csv",
+            "restrainers.csv",
+            "joint_slip.csv",
+        ],
         None,
     )?;
     let write_secs = t_write.elapsed().as_secs_f64();

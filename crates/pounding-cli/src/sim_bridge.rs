@@ -55,6 +55,9 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
     wr("summary.json", summary.as_bytes())?;
     let traj = bridge_trajectories_json(&setup, &sol);
     wr("trajectories.json", traj.as_bytes())?;
+    for t in &sol.tables {
+        wr(&t.file_name(), t.csv().as_bytes())?;
+    }
     crate::plots::bridge::write_all(out, &setup.problem.model, &sol)
         .map_err(|e| anyhow!("plotting: {e}"))?;
     let n = sol.n_segments;
@@ -69,6 +72,9 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
             "history.csv",
             "impacts.csv",
             "trajectories.json",
+            "bearings.csv",
+            "restrainers.csv",
+            "joint_slip.csv",
         ],
         Some(&traj),
     )?;

@@ -159,6 +159,31 @@ impl SimRun {
             .map_err(|e| crate::SolverError::new_err(e.to_string()))?;
         Ok((names, PyArray2::from_owned_array(py, a)))
     }
+    /// The observers' tables (`bearings`, `restrainers`, `joint_slip`, as the CLI's
+    /// `<name>.csv`): a list of `(name, column headers, float64 array (rows, columns))`, the
+    /// values handed over as they are (no text in between).
+    #[allow(clippy::type_complexity)]
+    fn tables<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<Vec<(String, Vec<String>, Bound<'py, PyArray2<f64>>)>> {
+        let tables = match &self.run {
+            Run::TwoDecks(_, r) => &r.tables,
+            Run::Bridge(_, r) => &r.tables,
+        };
+        tables
+            .iter()
+            .map(|t| {
+                let heads: Vec<String> = t.columns.iter().map(|c| c.header()).collect();
+                let a = numpy::ndarray::Array2::from_shape_vec(
+                    (t.rows(), heads.len()),
+                    t.values.clone(),
+                )
+                .map_err(|e| crate::SolverError::new_err(e.to_string()))?;
+                Ok((t.name.to_string(), heads, PyArray2::from_owned_array(py, a)))
+            })
+            .collect()
+    }
     /// How the run ended (`Completed`, `Diverged`, ... as in summary.json).
     #[getter]
     fn status(&self) -> String {

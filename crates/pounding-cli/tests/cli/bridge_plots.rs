@@ -7,14 +7,17 @@ use std::path::Path;
 
 const CURVED_5: &str = include_str!("../../../../examples/viaduct-curved-5.toml");
 
-const BRIDGE_FILES: [&str; 10] = [
+const BRIDGE_FILES: [&str; 13] = [
+    "bearings.csv",
     "displacements.png",
     "energy.png",
     "history.csv",
     "impacts.csv",
     "joint_openings.png",
+    "joint_slip.csv",
     "plan.png",
     "report.html",
+    "restrainers.csv",
     "summary.json",
     "timing.json",
     "trajectories.json",

@@ -22,9 +22,13 @@ class _StoredRun:
     as the core's ``SimRun``, answering from ``summary.json``, ``history.csv``, ``impacts.csv``."""
 
     def __init__(self, summary_json: str, status: str, warnings: List[str], history_csv: str,
-                 impacts_csv: str) -> None:
+                 impacts_csv: str, tables: Sequence[Any] = ()) -> None:
         self._summary, self.status, self._warnings = summary_json, status, list(warnings)
         self._history, self._impacts = history_csv, impacts_csv
+        self._tables = [(n, list(h), np.array(a, dtype=np.float64)) for n, h, a in tables]
+
+    def tables(self):
+        return [(n, list(h), a.copy()) for n, h, a in self._tables]
 
     def summary_json(self) -> str:
         return self._summary
@@ -47,8 +51,10 @@ class _StoredRun:
         return names, data
 
 
-def _restore(summary_json, status, warnings_, history_csv, impacts_csv) -> "SimulationResult":
-    return SimulationResult(_StoredRun(summary_json, status, warnings_, history_csv, impacts_csv))
+def _restore(summary_json, status, warnings_, history_csv, impacts_csv,
+             tables=()) -> "SimulationResult":
+    return SimulationResult(_StoredRun(summary_json, status, warnings_, history_csv, impacts_csv,
+                                       tables))
 
 
 class SimulationResult:
@@ -68,6 +74,7 @@ class SimulationResult:
         self.status: str = run.status
         self.warnings: List[str] = list(run.warnings())
         self._history: Optional[Dict[str, np.ndarray]] = None
+        self._tables: Optional[Dict[str, Dict[str, np.ndarray]]] = None
 
     @property
     def ok(self) -> bool:
@@ -85,6 +92,33 @@ class SimulationResult:
             data.flags.writeable = False  # shared by every access: read-only views
             self._history = {n: data[:, i] for i, n in enumerate(names)}
         return self._history
+
+    @property
+    def tables(self) -> Dict[str, Dict[str, np.ndarray]]:
+        """The run's other tables, as the CLI's ``<name>.csv``: ``"bearings"`` (each bearing's
+        deformation and the force it exerts on its segment), ``"restrainers"`` (each
+        restrainer's elongation and tension), ``"joint_slip"`` (each joint's slip); name →
+        column name → read-only float64 array of shape ``(steps stored,)``. The values come
+        from the solver as they are (no text in between)."""
+        if self._tables is None:
+            out: Dict[str, Dict[str, np.ndarray]] = {}
+            for name, heads, data in self._run.tables():
+                data.flags.writeable = False
+                out[name] = {h: data[:, i] for i, h in enumerate(heads)}
+            self._tables = out
+        return self._tables
+
+    @property
+    def bearings(self) -> Dict[str, np.ndarray]:
+        """``tables["bearings"]``: ``t_s`` and, per bearing, ``segment<i>_bearing<j>_ux_m``,
+        ``_uy_m`` (deformation) and ``_fx_N``, ``_fy_N`` (force on the segment)."""
+        return self.tables["bearings"]
+
+    @property
+    def restrainers(self) -> Dict[str, np.ndarray]:
+        """``tables["restrainers"]``: ``t_s`` and, per restrainer,
+        ``joint<k>_restrainer<r>_elongation_m`` and ``_force_N``."""
+        return self.tables["restrainers"]
 
     @property
     def history_array(self) -> np.ndarray:
@@ -129,11 +163,12 @@ class SimulationResult:
         """Pickles (and deep-copies) as the run's texts, so a result can be a Dask task's value;
         the copy answers every attribute with the same values."""
         r = self._run
+        tables = [(n, h, a.tolist()) for n, h, a in r.tables()]
         return (_restore, (r.summary_json(), self.status, list(self.warnings), r.history_csv(),
-                           r.impacts_csv()))
+                           r.impacts_csv(), tables))
 
     def __eq__(self, other: object) -> bool:
-        """Equal when the status, warnings and the three output texts are equal."""
+        """Equal when the status, warnings, the three output texts and the tables are equal."""
         if not isinstance(other, SimulationResult):
             return NotImplemented
         return self.__reduce__()[1] == other.__reduce__()[1]

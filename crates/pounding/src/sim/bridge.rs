@@ -676,7 +676,18 @@ impl BridgeModel {
             joints,
             abutments,
             seats,
-            bearing_points: self.bearing_points(),
+            bearings: self
+                .bearing_points()
+                .into_iter()
+                .zip(&self.segments)
+                .map(|(points, s)| {
+                    let at = |(p, b): (Vector, &Bearing)| driver::BearingAt {
+                        point: p,
+                        stiffness: b.stiffness,
+                    };
+                    points.into_iter().zip(&s.bearings).map(at).collect()
+                })
+                .collect(),
             elements,
         }
     }
@@ -742,7 +753,7 @@ impl BridgeModel {
         for (i, s) in self.segments.iter().enumerate() {
             let Some(y) = s.bearing_yield else { continue };
             let total: Real = s.bearings.iter().map(|b| b.stiffness).sum();
-            for (b, p) in s.bearings.iter().zip(&points[i]) {
+            for (slot, (b, p)) in s.bearings.iter().zip(&points[i]).enumerate() {
                 if b.stiffness == 0.0 {
                     continue;
                 }
@@ -750,6 +761,7 @@ impl BridgeModel {
                     .expect("validated");
                 el.bearings.push(super::elements::YieldingBearing {
                     body: i,
+                    slot,
                     arm: p - bodies[i].centroid,
                     law,
                     state: BearingState::default(),
@@ -1232,6 +1244,9 @@ pub struct BridgeSolution {
     pub closure_steps: usize,
     /// Time-step adequacy of the compliance law.
     pub time_step_advice: Option<TimeStepAdvice>,
+    /// The observers' tables at the history steps: `bearings`, `restrainers`, `joint_slip`
+    /// ([`super::table::Table`]; written as `<name>.csv`).
+    pub tables: Vec<super::table::Table>,
 }
 
 /// Runs a bridge (module doc; the scheme of [`super::simulate`]).
@@ -1285,6 +1300,7 @@ pub(crate) fn integrate(
     let scheme = driver::Scheme::new(ground, settings, systems)?;
     let q0 = State::from_column_slice(q0);
     let u0 = State::from_column_slice(u0);
+    let observers = super::observer::standard(bridge);
     let result = if compliant {
         let mut sites = Vec::new();
         let mut vr = Real::INFINITY;
@@ -1308,7 +1324,7 @@ pub(crate) fn integrate(
         let abuts = bridge.abutments.clone();
         let mut stepper =
             compliance::ComplianceStepper::new(&q0, &u0, sites, abuts, vr, &scheme, bridge);
-        driver::run(q0, u0, settings, &scheme, bridge, &mut stepper)
+        driver::run(q0, u0, settings, &scheme, bridge, &mut stepper, observers)
     } else {
         let law = |name: String, mu: Real, eps: Real| {
             ImpactLaw::new(mu, eps).map_err(|_| SimError::invalid(name, mu, "invalid impact law"))
@@ -1326,7 +1342,7 @@ pub(crate) fn integrate(
             }
         }
         let mut stepper = rigid::RigidStepper::with_laws(joint_laws, abut, settings);
-        driver::run(q0, u0, settings, &scheme, bridge, &mut stepper)
+        driver::run(q0, u0, settings, &scheme, bridge, &mut stepper, observers)
     };
     Ok((result, scheme, compliant))
 }
@@ -1540,5 +1556,6 @@ fn solution(
         newton_failures: r.stats.newton_failures,
         closure_steps: r.stats.closure_steps,
         time_step_advice: r.stats.time_step_advice,
+        tables: r.tables,
     }
 }

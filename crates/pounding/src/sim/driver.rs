@@ -26,6 +26,8 @@
 
 use super::contact::{JointFrame, JointGeom, Pose, State, candidates};
 use super::model::SegmentBody;
+use super::observer::{Observer, Snapshot};
+use super::table::Table;
 use super::{
     Energy, History, ImpactRecord, SimContact, SimError, SimProblem, SimSettings, SimSolution,
     SimStatus, SimSummary, balance_error, energies_finite, max_nan,
@@ -352,6 +354,15 @@ pub(crate) struct SeatEnd {
     pub length: Real,
 }
 
+/// A bearing under a segment: its point (global reference pose) and its (initial) stiffness.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct BearingAt {
+    /// The point \[m\].
+    pub point: Vector,
+    /// Stiffness in each plan direction \[N/m\].
+    pub stiffness: Real,
+}
+
 /// The bridge as lists: segments, joints, abutments, seated ends.
 pub(crate) struct Bridge {
     /// Reference-pose segments.
@@ -362,9 +373,8 @@ pub(crate) struct Bridge {
     pub abutments: Vec<AbutmentFace>,
     /// Seated ends, in the order of the seat outputs.
     pub seats: Vec<SeatEnd>,
-    /// Bearing points of each segment (global reference pose) for the bearing-deformation
-    /// monitor; empty: not monitored.
-    pub bearing_points: Vec<Vec<Vector>>,
+    /// The bearings of each segment.
+    pub bearings: Vec<Vec<BearingAt>>,
     /// Yielding bearings and restrainers in their initial state.
     pub elements: super::elements::Elements,
 }
@@ -587,11 +597,11 @@ impl Peaks {
             let (x, y) = (q[3 * j], q[3 * j + 1]);
             *d = d.max((x * x + y * y).sqrt());
         }
-        for (j, pts) in br.bearing_points.iter().enumerate() {
+        for (j, pts) in br.bearings.iter().enumerate() {
             let (x, y, th) = (q[3 * j], q[3 * j + 1], q[3 * j + 2]);
             let g = br.bodies[j].centroid;
-            for p in pts {
-                let r = p - g;
+            for b in pts {
+                let r = b.point - g;
                 let (ux, uy) = (x - th * r.y, y + th * r.x);
                 self.bearing[j] = self.bearing[j].max((ux * ux + uy * uy).sqrt());
             }
@@ -809,6 +819,8 @@ pub(crate) struct RunResult {
     pub energy_balance_error: Real,
     pub final_energy: Energy,
     pub max_input_energy: Real,
+    /// The observers' tables.
+    pub tables: Vec<Table>,
 }
 
 /// Runs the time loop with `stepper` from `(q0, u0)` (module doc).
@@ -819,6 +831,7 @@ pub(crate) fn run<S: Stepper>(
     sc: &Scheme,
     bridge: &Bridge,
     stepper: &mut S,
+    mut observers: Vec<Box<dyn Observer>>,
 ) -> RunResult {
     let (h, th) = (sc.h, sc.th);
     let (mut q, mut u) = (q0, u0);
@@ -859,6 +872,17 @@ pub(crate) fn run<S: Stepper>(
         if k % settings.history_stride == 0 || k == sc.n_steps {
             let nj = bridge.joints.len();
             trace.record(t, &q, &frame, &u, &obs, energy, forces.map(|f| &f[..nj]));
+            let snapshot = Snapshot {
+                t,
+                q: &q,
+                frame: &frame,
+                bridge,
+                elements: &el,
+                slip: &obs.slip,
+            };
+            for o in &mut observers {
+                o.observe(&snapshot);
+            }
         }
         if !ledger.finite(&energy) {
             status = SimStatus::Diverged;
@@ -949,6 +973,7 @@ pub(crate) fn run<S: Stepper>(
         final_energy,
         max_input_energy: ledger.max_in,
         log,
+        tables: observers.into_iter().map(|o| o.into_table()).collect(),
     }
 }
 
@@ -998,6 +1023,7 @@ pub(crate) fn pair_solution(r: RunResult, sc: &Scheme) -> SimSolution {
         time_step_advice: r.stats.time_step_advice,
         newton_failures: r.stats.newton_failures,
         closure_steps: r.stats.closure_steps,
+        tables: r.tables,
     }
 }
 

@@ -81,6 +81,8 @@ impl StepForce {
 pub(crate) struct YieldingBearing {
     /// The segment.
     pub body: usize,
+    /// Its index among the segment's bearings.
+    pub slot: usize,
     /// Lever arm `r = p − G⁰` (reference pose).
     pub arm: Vector,
     /// Its law.
@@ -102,6 +104,14 @@ pub(crate) struct Cable {
     pub length: Real,
     /// The cable.
     pub element: RestrainerElement,
+}
+
+impl Cable {
+    /// Elongation `e = |P_b − P_a| − L_0` in `pose` (exact anchor positions).
+    pub fn elongation(&self, pose: &Pose, bodies: &[SegmentBody]) -> Real {
+        let (pa, pb, _, _) = cable_points(self, pose, bodies);
+        (pb - pa).norm() - self.length
+    }
 }
 
 /// The nonlinear elements and their energy bookkeeping.
@@ -242,7 +252,7 @@ impl Elements {
 }
 
 /// Linearised deformation `u = (x − θ r_y, y + θ r_x)` of a bearing with arm `r` on `body`.
-fn deformation(q: &State, body: usize, r: &Vector) -> Vector {
+pub(crate) fn deformation(q: &State, body: usize, r: &Vector) -> Vector {
     let (x, y, th) = (q[3 * body], q[3 * body + 1], q[3 * body + 2]);
     Vector::new(x - th * r.y, y + th * r.x)
 }

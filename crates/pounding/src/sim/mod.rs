@@ -65,10 +65,12 @@ pub mod contact;
 mod driver;
 mod elements;
 pub mod model;
+mod observer;
 pub mod options;
 pub mod output;
 mod rigid;
 pub mod scenario;
+pub mod table;
 mod yielding;
 
 use crate::analytic::SlipMode;
@@ -876,6 +878,9 @@ pub struct SimSolution {
     /// Compliance laws: steps solved by the graph closure of a force jump at contact onset
     /// (Kelvin's dashpot; [`compliance`] module doc).
     pub closure_steps: usize,
+    /// The observers' tables at the history steps, as for a bridge
+    /// ([`bridge::BridgeSolution::tables`]; deck `j` is segment `j`).
+    pub tables: Vec<table::Table>,
 }
 
 /// `a.max(b)` that propagates NaN (`f64::max` drops it, which once made a NaN energy balance

@@ -159,35 +159,38 @@ pub fn history_rows(n_steps: usize, history_stride: usize) -> u64 {
     (n / s).saturating_add(1 + u64::from(!n.is_multiple_of(s)))
 }
 
-/// Estimated peak memory \[bytes\] of a run of `n_steps` steps keeping every
-/// `history_stride`-th step: `(n + 1) · `[`GROUND_BYTES_PER_STEP`]` + rows · (`
-/// [`HISTORY_BYTES_PER_ROW`]` + `[`HISTORY_TEXT_BYTES_PER_ROW`]`)` with `rows` from
-/// [`history_rows`]. Impact records (one per impact, not bounded by the step count) and
-/// allocator slack are not counted; a 500 000-step run at stride 1 estimated at 519 MB peaked at
-/// 369 MB resident.
+/// Estimated peak memory \[bytes\] of a two-deck run of `n_steps` steps keeping every
+/// `history_stride`-th step: the bridge estimate [`bridge_run_memory_bytes`] of two segments (the
+/// two-deck model runs as that bridge, with its trace, its observers' tables and its `History`
+/// copy, whose row [`HISTORY_BYTES_PER_ROW`] the trace's doubled row covers). Impact records
+/// (one per impact, not bounded by the step count) and allocator slack are not counted.
 pub fn run_memory_bytes(n_steps: usize, history_stride: usize) -> u64 {
-    (n_steps as u64)
-        .saturating_add(1)
-        .saturating_mul(GROUND_BYTES_PER_STEP)
-        .saturating_add(
-            history_rows(n_steps, history_stride)
-                .saturating_mul(HISTORY_BYTES_PER_ROW + HISTORY_TEXT_BYTES_PER_ROW),
-        )
+    bridge_run_memory_bytes(n_steps, history_stride, 2)
 }
 
 /// Bytes per kept history row of a bridge of `n_segments` segments (`J = N − 1` joints): the
 /// driver's trace (`t`, `q` and `u` of `3N` each, four candidate gaps, two end gaps, a slip and
-/// two end forces per joint, two abutment gaps, the energies), counted twice (a growing vector
-/// may hold twice its length), and the `history.csv` text (at most `11 + 6N + 3J` columns of 25
-/// bytes, at least the two-deck file's 31).
+/// two end forces per joint, two abutment gaps, the energies) and the observers' tables
+/// (`bearings`: four values per bearing, counted for [`ESTIMATED_BEARINGS`] per segment;
+/// `restrainers`: two per restrainer, counted for two per joint; `joint_slip`: one per joint;
+/// a time each), counted twice (a growing vector may hold twice its length), and the text of
+/// the largest file, built and written one at a time (`history.csv`: at most `11 + 6N + 3J`
+/// columns, at least the two-deck file's 31; `bearings.csv`: `1 + 4 b N`), 25 bytes a column.
 pub fn history_row_bytes(n_segments: usize) -> u64 {
     let n = n_segments.max(1) as u64;
     let j = n - 1;
     let real = std::mem::size_of::<Real>() as u64;
-    let trace = real * (1 + 6 * n + 9 * j + 2) + std::mem::size_of::<super::Energy>() as u64;
-    let columns = (11 + 6 * n + 3 * j).max(31);
+    let tables = 3 + 4 * ESTIMATED_BEARINGS * n + 5 * j;
+    let trace =
+        real * (1 + 6 * n + 9 * j + 2 + tables) + std::mem::size_of::<super::Energy>() as u64;
+    let columns = (11 + 6 * n + 3 * j)
+        .max(31)
+        .max(1 + 4 * ESTIMATED_BEARINGS * n);
     (2 * trace).saturating_add(columns.saturating_mul(25))
 }
+
+/// Bearings per segment assumed by [`history_row_bytes`] (four corner bearings, the default).
+pub const ESTIMATED_BEARINGS: u64 = 4;
 
 /// [`run_memory_bytes`] of a bridge of `n_segments` segments (the history row of
 /// [`history_row_bytes`]); the two-deck model is `n_segments = 2`.

@@ -53,6 +53,7 @@ mod sim_bridge_site_contact;
 mod sim_bridge_trajectories;
 mod sim_compliance;
 mod sim_friction;
+mod sim_observers;
 mod sim_outputs;
 mod sim_progress;
 mod sim_scenario;
