@@ -410,3 +410,59 @@ fn keys_a_bridge_cannot_use_are_refused() {
     assert_eq!(code, Some(0), "{err}");
     assert!(err.contains("--law hertz replaces"), "{err}");
 }
+
+/// `examples/viaduct-rigid-1d.toml` with the bilinear law of `examples/viaduct-1d.toml` at both
+/// abutments (rigid joints): exit 0, the energy balance closed, `impacts.csv` with the pulse
+/// columns filled at the abutments and the estimate columns at the joints, `summary.json` with
+/// both kinds' keys, `history.csv`'s joint forces `nan` (rigid joints).
+#[test]
+fn mixed_sites_run_from_the_command_line() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let base = std::fs::read_to_string(format!("{root}/../../examples/viaduct-rigid-1d.toml"))
+        .unwrap()
+        .replace(
+            "history_every = 100",
+            "history_every = 100\nduration = 12.0",
+        );
+    let law = "law = \"bilinear\"\nk1 = 1.5586e10\nk2 = 3.1328e9\ndelta_y = 2.54e-3\n";
+    let text = format!("{base}\n[abutment.start.contact]\n{law}[abutment.end.contact]\n{law}");
+    let (code, err, out) = simulate("mixed", &text);
+    assert_eq!(code, Some(0), "{err}");
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(s["status"], "Completed");
+    assert!(s["energy_balance_error"].as_f64().unwrap() < 1e-9, "{s}");
+    assert!(s["joints"][0]["peak_contact_force_n"].is_null());
+    assert!(s["abutments"][0]["peak_contact_force_n"].as_f64().unwrap() > 0.0);
+    assert_eq!(s["newton_failures"], 0);
+    assert!(!s["peak_force_estimate_n"].is_null(), "{s}");
+    let impacts = std::fs::read_to_string(out.join("impacts.csv")).unwrap();
+    let head: Vec<&str> = impacts.lines().next().unwrap().split(',').collect();
+    let col = |name: &str| head.iter().position(|h| *h == name).unwrap();
+    let (pulse, est, site) = (
+        col("peak_force_n"),
+        col("peak_force_estimate_n"),
+        col("site"),
+    );
+    let (mut joints, mut abuts) = (0, 0);
+    for line in impacts.lines().skip(1) {
+        let c: Vec<&str> = line.split(',').collect();
+        if c[site].starts_with("abutment") {
+            abuts += 1;
+            assert!(c[pulse] != "nan" && c[est] == "nan", "{line}");
+        } else {
+            joints += 1;
+            assert!(c[pulse] == "nan" && c[est] != "nan", "{line}");
+        }
+    }
+    assert!(joints > 0 && abuts > 0, "{impacts}");
+    let history = std::fs::read_to_string(out.join("history.csv")).unwrap();
+    let head: Vec<&str> = history.lines().next().unwrap().split(',').collect();
+    let f = head.iter().position(|h| *h == "joint1_force_N").unwrap();
+    assert!(
+        history
+            .lines()
+            .skip(1)
+            .all(|l| l.split(',').nth(f) == Some("nan"))
+    );
+}

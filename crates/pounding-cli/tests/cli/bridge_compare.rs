@@ -234,11 +234,6 @@ fn bad_site_contact_tables_exit_2_naming_key_and_line() {
             "k_h = 1e10",
         ),
         (
-            joint("[joint.contact]\nlaw = \"rigid\""),
-            "joint[1].contact.law",
-            "law = \"rigid\"",
-        ),
-        (
             joint("[joint.contact]\nk1 = -5.0"),
             "joint[1].contact.k1",
             "k1 = -5.0",

@@ -312,7 +312,7 @@ impl BridgeModel {
             (0.0..1.0).contains(&self.damping_ratio),
             "must lie in [0, 1)",
         )?;
-        self.contact_kind()?;
+        self.contact_kinds()?;
         self.check_overlaps()?;
         self.check_points()?;
         Ok(())
@@ -484,39 +484,6 @@ impl BridgeModel {
             .enumerate()
             .filter_map(|(s, a)| a.as_ref().map(|a| (abut_key(s, "law"), &a.contact)));
         joints.chain(abuts)
-    }
-
-    /// `true` for compliance laws, `false` for rigid contact; an error when they are mixed.
-    fn contact_kind(&self) -> Result<bool, SimError> {
-        let mut kind: Option<(String, bool)> = None;
-        for (name, c) in self.contacts() {
-            let comp = matches!(c, JointContact::Compliance(_));
-            if let JointContact::Compliance(cc) = c {
-                let v = cc.friction_velocity;
-                check(
-                    name.replace(".law", ".friction_velocity"),
-                    v,
-                    v > 0.0,
-                    "must be finite and > 0",
-                )?;
-            }
-            match &kind {
-                None => kind = Some((name, comp)),
-                Some((first, k)) if *k != comp => {
-                    return Err(SimError::InvalidArgument {
-                        name,
-                        reason: format!(
-                            "mixes rigid and compliance contact ({first} is {}); every joint and \
-                             abutment of a bridge must use rigid contact, or every one a \
-                             compliance law",
-                            if *k { "a compliance law" } else { "rigid" }
-                        ),
-                    });
-                }
-                Some(_) => {}
-            }
-        }
-        Ok(kind.is_some_and(|k| k.1))
     }
 
     /// The segments placed end to end in the global frame (module doc).
@@ -1278,73 +1245,171 @@ pub fn simulate_bridge(
     }
     let bridge = model.bridge();
     let initial = (problem.q0.as_slice(), problem.u0.as_slice());
-    let (result, scheme, compliant) =
-        integrate(model, &bridge, &problem.ground, initial, settings)?;
-    Ok(solution(result, &scheme, &bridge, model, compliant))
+    let (result, scheme, kinds) = integrate(model, &bridge, &problem.ground, initial, settings)?;
+    Ok(solution(result, &scheme, &bridge, model, &kinds))
 }
 
 /// Integrates a validated `model` from the initial state of `problem` over the driver's view
 /// `bridge` of it ([`BridgeModel::bridge`], whose seat order a preset may change): the stepper of
-/// its contact laws in the one driver loop. Returns the run, its scheme and whether the contact
-/// is compliant. The time step and the contact kinds are checked here.
+/// its contact sites in the one driver loop — the rigid one when every site is rigid, the
+/// compliance one when every site has a compliance law, else both coupled
+/// ([`super::mixed`]). Returns the run, its scheme and the kinds of the sites. The time step
+/// and the contact laws are checked here.
 pub(crate) fn integrate(
     model: &BridgeModel,
     bridge: &Bridge,
     ground: &GroundMotion,
     (q0, u0): (&[Real], &[Real]),
     settings: &SimSettings,
-) -> Result<(driver::RunResult, driver::Scheme, bool), SimError> {
-    let compliant = model.contact_kind()?;
+) -> Result<(driver::RunResult, driver::Scheme, SiteKinds), SimError> {
+    let kinds = model.contact_kinds()?;
     model.check_time_step(settings.dt)?;
     let systems = model.body_systems()?;
     let scheme = driver::Scheme::new(ground, settings, systems)?;
     let q0 = State::from_column_slice(q0);
     let u0 = State::from_column_slice(u0);
     let observers = super::observer::standard(bridge);
-    let result = if compliant {
+    let (any_rigid, any_compliant) = (kinds.any(false), kinds.any(true));
+    let rigid = || model.rigid_stepper(&kinds, settings);
+    let compliance = || model.compliance_stepper(&kinds, bridge, &scheme, (&q0, &u0));
+    let result = match (any_rigid, any_compliant) {
+        (_, false) => {
+            let mut stepper = rigid()?;
+            driver::run(q0, u0, settings, &scheme, bridge, &mut stepper, observers)
+        }
+        (false, true) => {
+            let mut stepper = compliance()?.0;
+            driver::run(q0, u0, settings, &scheme, bridge, &mut stepper, observers)
+        }
+        (true, true) => {
+            let (c, joint_site, abutment_site) = compliance()?;
+            let mut stepper =
+                super::mixed::MixedStepper::new(rigid()?, c, joint_site, abutment_site);
+            driver::run(q0, u0, settings, &scheme, bridge, &mut stepper, observers)
+        }
+    };
+    Ok((result, scheme, kinds))
+}
+
+/// Which contact sites have a compliance law (`true`) and which are rigid (`false`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) struct SiteKinds {
+    /// Per joint.
+    pub joints: Vec<bool>,
+    /// Per abutment side (`None`: no abutment).
+    pub abutments: [Option<bool>; 2],
+}
+
+impl SiteKinds {
+    /// Some site is of kind `compliant`.
+    pub fn any(&self, compliant: bool) -> bool {
+        self.joints.contains(&compliant) || self.abutments.contains(&Some(compliant))
+    }
+}
+
+impl BridgeModel {
+    /// The kind of every contact site; a compliance law's `friction_velocity` must be `> 0`.
+    fn contact_kinds(&self) -> Result<SiteKinds, SimError> {
+        for (name, c) in self.contacts() {
+            if let JointContact::Compliance(cc) = c {
+                let v = cc.friction_velocity;
+                check(
+                    name.replace(".law", ".friction_velocity"),
+                    v,
+                    v > 0.0,
+                    "must be finite and > 0",
+                )?;
+            }
+        }
+        let comp = |c: &JointContact| matches!(c, JointContact::Compliance(_));
+        Ok(SiteKinds {
+            joints: self.joints.iter().map(|j| comp(&j.contact)).collect(),
+            abutments: self.abutments.map(|a| a.map(|a| comp(&a.contact))),
+        })
+    }
+
+    /// The rigid stepper of the rigid sites (every site of an all-rigid bridge).
+    fn rigid_stepper(
+        &self,
+        kinds: &SiteKinds,
+        settings: &SimSettings,
+    ) -> Result<rigid::RigidStepper, SimError> {
+        let law = |name: String, mu: Real, eps: Real| {
+            ImpactLaw::new(mu, eps).map_err(|_| SimError::invalid(name, mu, "invalid impact law"))
+        };
+        let none = ImpactLaw::new(0.0, 0.0).expect("valid");
+        let joint_laws = self
+            .joints
+            .iter()
+            .enumerate()
+            .map(|(k, j)| match kinds.joints[k] {
+                false => law(joint_key(k, "law"), j.friction, j.restitution),
+                true => Ok(none),
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let mut abut = [none; 2];
+        for (s, a) in self.abutments.iter().enumerate() {
+            if let (Some(a), Some(false)) = (a, kinds.abutments[s]) {
+                abut[s] = law(abut_key(s, "law"), a.friction, a.restitution)?;
+            }
+        }
+        let on = kinds.joints.iter().map(|c| !c).collect();
+        let abut_on = kinds.abutments.map(|k| k == Some(false));
+        Ok(rigid::RigidStepper::with_laws(joint_laws, abut, settings).only(on, abut_on))
+    }
+
+    /// The compliance stepper of the compliance sites, with the compliance site index of every
+    /// joint and of every present abutment (`None`: rigid).
+    #[allow(clippy::type_complexity)]
+    fn compliance_stepper(
+        &self,
+        kinds: &SiteKinds,
+        bridge: &Bridge,
+        scheme: &driver::Scheme,
+        (q0, u0): (&State, &State),
+    ) -> Result<
+        (
+            compliance::ComplianceStepper,
+            Vec<Option<usize>>,
+            Vec<Option<usize>>,
+        ),
+        SimError,
+    > {
         let mut sites = Vec::new();
         let mut vr = Real::INFINITY;
         let mut law_of = |name: String, c: &JointContact, mu: Real| -> Result<_, SimError> {
             let JointContact::Compliance(cc) = c else {
-                unreachable!("contact_kind checked")
+                unreachable!("a compliance site")
             };
             vr = vr.min(cc.friction_velocity);
             let law = crate::contact_law::sharing::JointLaw::new(cc.law, 2)
                 .map_err(|e| SimError::invalid(name, 2.0, &e.to_string()))?;
             Ok(compliance::SiteLaw { law, mu })
         };
-        for (k, j) in model.joints.iter().enumerate() {
-            sites.push(law_of(joint_key(k, "law"), &j.contact, j.friction)?);
-        }
-        for (s, a) in model.abutments.iter().enumerate() {
-            if let Some(a) = a {
-                sites.push(law_of(abut_key(s, "law"), &a.contact, a.friction)?);
+        let (mut joints, mut joint_site) = (Vec::new(), Vec::new());
+        for (k, j) in self.joints.iter().enumerate() {
+            joint_site.push(kinds.joints[k].then_some(sites.len()));
+            if kinds.joints[k] {
+                sites.push(law_of(joint_key(k, "law"), &j.contact, j.friction)?);
+                joints.push(bridge.joints[k]);
             }
         }
-        let abuts = bridge.abutments.clone();
-        let mut stepper =
-            compliance::ComplianceStepper::new(&q0, &u0, sites, abuts, vr, &scheme, bridge);
-        driver::run(q0, u0, settings, &scheme, bridge, &mut stepper, observers)
-    } else {
-        let law = |name: String, mu: Real, eps: Real| {
-            ImpactLaw::new(mu, eps).map_err(|_| SimError::invalid(name, mu, "invalid impact law"))
-        };
-        let joint_laws = model
-            .joints
-            .iter()
-            .enumerate()
-            .map(|(k, j)| law(joint_key(k, "law"), j.friction, j.restitution))
-            .collect::<Result<Vec<_>, _>>()?;
-        let mut abut = [ImpactLaw::new(0.0, 0.0).expect("valid"); 2];
-        for (s, a) in model.abutments.iter().enumerate() {
-            if let Some(a) = a {
-                abut[s] = law(abut_key(s, "law"), a.friction, a.restitution)?;
+        let (mut abuts, mut abutment_site) = (Vec::new(), Vec::new());
+        for face in &bridge.abutments {
+            let a = self.abutments[face.side]
+                .as_ref()
+                .expect("a present abutment");
+            let compliant = kinds.abutments[face.side] == Some(true);
+            abutment_site.push(compliant.then_some(sites.len()));
+            if compliant {
+                sites.push(law_of(abut_key(face.side, "law"), &a.contact, a.friction)?);
+                abuts.push(*face);
             }
         }
-        let mut stepper = rigid::RigidStepper::with_laws(joint_laws, abut, settings);
-        driver::run(q0, u0, settings, &scheme, bridge, &mut stepper, observers)
-    };
-    Ok((result, scheme, compliant))
+        let stepper =
+            compliance::ComplianceStepper::new(q0, u0, sites, (joints, abuts), vr, scheme, bridge);
+        Ok((stepper, joint_site, abutment_site))
+    }
 }
 
 /// The largest summed normal impulse of one impact, per joint and per abutment side (the
@@ -1388,7 +1453,7 @@ fn joint_summaries(
     r: &driver::RunResult,
     br: &Bridge,
     imp_joint: &[Real],
-    compliant: bool,
+    kinds: &SiteKinds,
 ) -> Vec<JointSummary> {
     let (peaks, log) = (&r.peaks, &r.log);
     let nj = br.joints.len();
@@ -1396,7 +1461,7 @@ fn joint_summaries(
     (0..nj)
         .map(|k| JointSummary {
             impacts: joint_impacts(k),
-            peak_contact_force: if compliant {
+            peak_contact_force: if kinds.joints[k] {
                 Some(peaks.force[k].unwrap_or(0.0))
             } else {
                 None
@@ -1431,19 +1496,19 @@ fn solution(
     sc: &driver::Scheme,
     br: &Bridge,
     model: &BridgeModel,
-    compliant: bool,
+    kinds: &SiteKinds,
 ) -> BridgeSolution {
     let nj = br.joints.len();
     let nb = br.bodies.len();
     let (peaks, log) = (&r.peaks, &r.log);
     let (imp_joint, imp_abut) = impulse_peaks(&log.records, nj);
-    let joints = joint_summaries(&r, br, &imp_joint, compliant);
+    let joints = joint_summaries(&r, br, &imp_joint, kinds);
     let mut abutments = [None, None];
     for (side, a) in model.abutments.iter().enumerate() {
         if a.is_some() {
             abutments[side] = Some(AbutmentSummary {
                 impacts: log.abutment_impacts[side],
-                peak_contact_force: if compliant {
+                peak_contact_force: if kinds.abutments[side] == Some(true) {
                     Some(peaks.abut_force[side].unwrap_or(0.0))
                 } else {
                     None

@@ -58,7 +58,7 @@
 //! masses) and `v_ref = 1 m/s`; the advice is returned in
 //! [`super::SimSolution::time_step_advice`] (the CLI warns when it is not adequate).
 #![allow(clippy::needless_range_loop)]
-use super::contact::{Pose, State, candidates};
+use super::contact::{JointGeom, Pose, State, candidates};
 use super::driver::{
     Bridge, ImpactLog, Scheme, StepInput, StepOutput, Stepper, StepperStats, Winv,
 };
@@ -74,7 +74,7 @@ use nalgebra::DMatrix;
 
 /// One contact end (a joint end or an abutment corner) evaluated at a trial state.
 #[derive(Clone)]
-struct EndEval {
+pub(crate) struct EndEval {
     /// A contact exists at this end (a corner over the other face; always at an abutment).
     present: bool,
     /// The realised candidate of a joint end.
@@ -215,15 +215,16 @@ pub(crate) struct ComplianceStepper {
 
 impl ComplianceStepper {
     /// The stepper at the initial state `(q0, u0)`: law states open at the initial gaps
-    /// (committed `δ = −g_N(q_0)`). `sites` holds the law of every joint and then of every
-    /// abutment of `abutments` (a subset of the bridge's, start before end). The time-step advice
+    /// (committed `δ = −g_N(q_0)`). `sites` holds the law of every joint of `joints` and then of
+    /// every abutment of `abutments` (subsets of the bridge's, in bridge order: the compliance
+    /// sites; a mixed bridge's rigid sites are the rigid stepper's). The time-step advice
     /// uses the first joint's law and the smallest two-segment effective mass over the joints
     /// (with no joint: the first site and the smallest segment mass).
     pub fn new(
         q0: &State,
         u0: &State,
         sites: Vec<SiteLaw>,
-        abutments: Vec<super::driver::AbutmentFace>,
+        (joints, abutments): (Vec<JointGeom>, Vec<super::driver::AbutmentFace>),
         friction_velocity: Real,
         scheme: &Scheme,
         bridge: &Bridge,
@@ -245,7 +246,7 @@ impl ComplianceStepper {
         };
         let mut s = ComplianceStepper {
             bodies: bridge.bodies.clone(),
-            joints: bridge.joints.clone(),
+            joints,
             abutments,
             vr: friction_velocity,
             h,
@@ -545,7 +546,7 @@ impl ComplianceStepper {
             if f_now > 0.0 && !self.site_in_contact[k] {
                 log.impacts += 1;
                 if k < nj {
-                    log.count_joint(k);
+                    log.count_joint(self.joints[k].a);
                 } else {
                     log.count_abutment(self.abutments[k - nj].side);
                 }
@@ -558,7 +559,7 @@ impl ComplianceStepper {
             if fn1 > 0.0 && self.open_imp[e].is_none() {
                 let (contact, site) = if e / 2 < nj {
                     let case = ev[e].case.unwrap_or(ContactCase::Deck1Inner);
-                    (SimContact::Joint(case), e / 2)
+                    (SimContact::Joint(case), self.joints[e / 2].a)
                 } else {
                     let side = self.abutments[e / 2 - nj].side;
                     let corner = e % 2;
@@ -631,20 +632,20 @@ impl ComplianceStepper {
     }
 }
 
-impl Stepper for ComplianceStepper {
-    fn contact_forces(&self) -> Option<&[[Real; 2]]> {
-        Some(&self.forces)
-    }
+/// How a step's contact forces were found.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Solved {
+    /// Newton converged.
+    Newton,
+    /// In the closure of the law's graph.
+    Closure,
+    /// Neither: the iterate with the smallest residual.
+    Failed,
+}
 
-    fn contact_energy(&self) -> Real {
-        self.d_cont
-    }
-
-    fn adjust_contact_energy(&mut self, delta: Real) {
-        self.d_cont += delta;
-    }
-
-    fn step(&mut self, inp: &StepInput, log: &mut ImpactLog) -> StepOutput {
+impl ComplianceStepper {
+    /// `u_{k+1}` of the step from `inp` and the ends there, without committing anything.
+    pub(crate) fn solve_step(&self, inp: &StepInput) -> (State, Vec<EndEval>, Solved) {
         let (h, th, hth) = (self.h, self.th, self.hth);
         let wr = inp.winv.mul(&self.r_k);
         let tr = Trial {
@@ -654,17 +655,32 @@ impl Stepper for ComplianceStepper {
             base: inp.u_free + &wr * (h * (1.0 - th)),
         };
         let guess = &tr.base + &wr * hth;
-        let (converged, mut un, mut ev) = self.newton(&tr, guess);
-        if !converged {
-            match self.closure_step(&tr, &un, &ev) {
-                Some((u2, ev2)) => {
-                    un = u2;
-                    ev = ev2;
-                    self.stats.closure_steps += 1;
-                }
-                // keep the iterate with the smallest residual
-                None => self.stats.newton_failures += 1,
-            }
+        let (converged, un, ev) = self.newton(&tr, guess);
+        if converged {
+            return (un, ev, Solved::Newton);
+        }
+        match self.closure_step(&tr, &un, &ev) {
+            Some((u2, ev2)) => (u2, ev2, Solved::Closure),
+            None => (un, ev, Solved::Failed),
+        }
+    }
+
+    /// Commits the step solved by [`Self::solve_step`]: counters, contact work
+    /// `−h ū·R̄`, impact records, law states.
+    pub(crate) fn commit(
+        &mut self,
+        inp: &StepInput,
+        un: State,
+        ev: Vec<EndEval>,
+        solved: Solved,
+        log: &mut ImpactLog,
+    ) -> StepOutput {
+        let (h, th) = (self.h, self.th);
+        match solved {
+            Solved::Newton => {}
+            Solved::Closure => self.stats.closure_steps += 1,
+            // the iterate with the smallest residual was kept
+            Solved::Failed => self.stats.newton_failures += 1,
         }
         let r_new = gen_force(&ev);
         let rbar = &self.r_k * (1.0 - th) + &r_new * th;
@@ -679,6 +695,25 @@ impl Stepper for ComplianceStepper {
         self.ends = ev;
         self.set_forces();
         StepOutput { u: un, penetration }
+    }
+}
+
+impl Stepper for ComplianceStepper {
+    fn contact_forces(&self) -> Option<&[[Real; 2]]> {
+        Some(&self.forces)
+    }
+
+    fn contact_energy(&self) -> Real {
+        self.d_cont
+    }
+
+    fn adjust_contact_energy(&mut self, delta: Real) {
+        self.d_cont += delta;
+    }
+
+    fn step(&mut self, inp: &StepInput, log: &mut ImpactLog) -> StepOutput {
+        let (un, ev, solved) = self.solve_step(inp);
+        self.commit(inp, un, ev, solved, log)
     }
 
     fn finish(&mut self, log: &mut ImpactLog) -> StepperStats {

@@ -64,6 +64,7 @@ pub mod compliance;
 pub mod contact;
 mod driver;
 mod elements;
+mod mixed;
 pub mod model;
 mod observer;
 pub mod options;

@@ -111,6 +111,8 @@ pub(crate) struct RigidStepper {
     lemke: LemkeSettings,
     d_cont: Real,
     stats: StepperStats,
+    /// Per joint and abutment side: handled here (a mixed bridge's compliance sites are not).
+    on: (Vec<bool>, [bool; 2]),
 }
 
 impl RigidStepper {
@@ -127,7 +129,19 @@ impl RigidStepper {
             lemke: settings.lemke.clone(),
             d_cont: 0.0,
             stats: StepperStats::default(),
+            on: (Vec::new(), [true; 2]),
         }
+    }
+
+    /// Handles only the joints `k` with `joints[k]` and the abutment sides with `abutments[side]`
+    /// (the rigid sites of a mixed bridge).
+    pub fn only(mut self, joints: Vec<bool>, abutments: [bool; 2]) -> Self {
+        self.on = (joints, abutments);
+        self
+    }
+
+    fn joint_on(&self, k: usize) -> bool {
+        self.on.0.get(k).copied().unwrap_or(true)
     }
 
     /// Contacts whose predicted gap `g + h γ_N(u_k) ≤ 0`: joint ends in joint order, then the
@@ -137,6 +151,9 @@ impl RigidStepper {
         let (pose, bodies) = (&fr.pose, &br.bodies);
         let mut active = Vec::new();
         for (k, (jg, jf)) in br.joints.iter().zip(&fr.joints).enumerate() {
+            if !self.joint_on(k) {
+                continue;
+            }
             for s in jf.sel.iter().flatten() {
                 let c = jf.cands[*s];
                 let (wn, wt) = c.force_directions(pose, jg);
@@ -151,7 +168,7 @@ impl RigidStepper {
                 }
             }
         }
-        for ab in &br.abutments {
+        for ab in br.abutments.iter().filter(|ab| self.on.1[ab.side]) {
             let (j, n, tn) = (ab.body, ab.normal, ab.tangent);
             for (k, c0) in ab.corners.iter().enumerate() {
                 let pc = pose.place(bodies, j, c0);
@@ -354,6 +371,37 @@ impl RigidStepper {
     }
 }
 
+impl RigidStepper {
+    /// The impulses `P = (P_N, P_T)` of the LCP solution `z`, added to `u` as `Ŵ⁻¹ W P`.
+    fn impulses(asm: &Assembled, active: &[ActiveContact], z: &[Real], u: &mut State) -> Vec<Real> {
+        let (n, nc) = (active.len(), 2 * active.len());
+        let mut p = vec![0.0; nc];
+        for i in 0..n {
+            p[i] = z[i];
+            p[n + i] = z[n + i] - active[i].law.mu() * z[i];
+        }
+        for i in 0..nc {
+            *u += &asm.wiw[i] * p[i];
+        }
+        p
+    }
+
+    /// `u_{k+1}` of the step from `inp`, committing nothing (no impact records, energy or
+    /// counters): the inner solve of a mixed bridge's coupling iteration.
+    pub(crate) fn solve_step(&mut self, inp: &StepInput) -> State {
+        let mut u_new = inp.u_free.clone();
+        let active = self.active_set(inp);
+        if !active.is_empty() {
+            let stats = std::mem::take(&mut self.stats);
+            let asm = Self::assemble(inp, &active);
+            let (z, _, _) = self.solve(&asm, &active);
+            Self::impulses(&asm, &active, &z, &mut u_new);
+            self.stats = stats;
+        }
+        u_new
+    }
+}
+
 impl Stepper for RigidStepper {
     fn contact_forces(&self) -> Option<&[[Real; 2]]> {
         None
@@ -373,16 +421,9 @@ impl Stepper for RigidStepper {
         if !active.is_empty() {
             self.stats.lcp_solves += 1;
             let asm = Self::assemble(inp, &active);
-            let (n, nc) = (active.len(), 2 * active.len());
+            let nc = 2 * active.len();
             let (z, ok, any) = self.solve(&asm, &active);
-            let mut p = vec![0.0; nc];
-            for i in 0..n {
-                p[i] = z[i];
-                p[n + i] = z[n + i] - active[i].law.mu() * z[i];
-            }
-            for i in 0..nc {
-                u_new += &asm.wiw[i] * p[i];
-            }
+            let p = Self::impulses(&asm, &active, &z, &mut u_new);
             let gam_post: Vec<Real> = (0..nc).map(|i| dot_seq(&asm.wcols[i], &u_new)).collect();
             if ok || any {
                 self.check(&asm, &active, inp.u_free, &p, &gam_post);

@@ -45,6 +45,7 @@ mod sim_bridge;
 mod sim_bridge_batch;
 mod sim_bridge_curves;
 mod sim_bridge_examples;
+mod sim_bridge_mixed;
 mod sim_bridge_plan;
 mod sim_bridge_points;
 mod sim_bridge_reference;

@@ -188,16 +188,6 @@ fn bad_site_contact_tables_name_the_key_and_line() {
                 "not used by law = \"kelvin\"",
             ],
         ),
-        // mixed rigid and compliance contact
-        (
-            "",
-            "[joint.contact]\nlaw = \"rigid\"",
-            &[
-                "joint[1].contact.law",
-                "b.toml:28",
-                "mixes rigid and compliance",
-            ],
-        ),
         // bad value
         (
             "[joint.contact]\nk = -1.0",

@@ -127,13 +127,22 @@ fn site_restitution(m: &BridgeModel, r: &ImpactRecord) -> Real {
     }
 }
 
-/// Every joint and abutment of the bridge uses rigid contact (a bridge never mixes them).
-fn is_rigid(m: &BridgeModel) -> bool {
-    m.joints
-        .first()
+/// Whether some contact site of the bridge is rigid, and whether some has a compliance law
+/// (a bridge without any site counts as rigid).
+fn site_kinds(m: &BridgeModel) -> (bool, bool) {
+    let contacts = m
+        .joints
+        .iter()
         .map(|j| j.contact)
-        .or(m.abutments.iter().flatten().next().map(|a| a.contact))
-        .is_none_or(|c| matches!(c, JointContact::Rigid))
+        .chain(m.abutments.iter().flatten().map(|a| a.contact));
+    let (mut rigid, mut compliant) = (false, false);
+    for c in contacts {
+        match c {
+            JointContact::Rigid => rigid = true,
+            JointContact::Compliance(_) => compliant = true,
+        }
+    }
+    (rigid || !compliant, compliant)
 }
 
 /// The bridge run's warnings ([`super::energy_warnings`], contacts named `site/contact` as the
@@ -153,19 +162,26 @@ pub fn bridge_run_warnings(sol: &BridgeSolution) -> Vec<super::RunWarning> {
 /// site and the corner in separate columns), then [`super::PULSE_COLUMNS`] (compliance laws)
 /// or [`super::ESTIMATE_COLUMNS`] (rigid law, with each site's `ε_N`).
 pub fn bridge_impacts_csv(model: &BridgeModel, sol: &BridgeSolution) -> String {
-    let rigid = is_rigid(model);
+    let (rigid, compliant) = site_kinds(model);
+    let columns = match (rigid, compliant) {
+        (true, false) => super::ESTIMATE_COLUMNS.to_string(),
+        (false, true) => super::PULSE_COLUMNS.to_string(),
+        _ => format!("{},{}", super::PULSE_COLUMNS, super::ESTIMATE_COLUMNS),
+    };
     let mut s = format!(
         "impact,t_s,site,contact,mode,gamma_n_pre_mps,gamma_t_pre_mps,gamma_n_post_mps,\
-         gamma_t_post_mps,impulse_n_Ns,impulse_t_Ns,energy_dissipated_J,{}\n",
-        if rigid {
-            super::ESTIMATE_COLUMNS
-        } else {
-            super::PULSE_COLUMNS
-        }
+         gamma_t_post_mps,impulse_n_Ns,impulse_t_Ns,energy_dissipated_J,{columns}\n"
     );
     for r in &sol.impacts {
         let f = super::impact_numbers(r);
-        let p = super::pulse_cells(r, rigid, site_restitution(model, r));
+        let eps = site_restitution(model, r);
+        let p = match (rigid, compliant) {
+            (true, false) => super::pulse_cells(r, true, eps),
+            (false, true) => super::pulse_cells(r, false, eps),
+            // a mixed bridge: the pulse of a compliance record, the estimate of a rigid one
+            _ if r.pulse.is_some() => format!("{},nan,nan", super::pulse_cells(r, false, eps)),
+            _ => format!("nan,nan,nan,{}", super::pulse_cells(r, true, eps)),
+        };
         s.push_str(&format!(
             "{},{},{},{},{},{f},{p}\n",
             r.impact,
@@ -255,7 +271,7 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
     let e = &s.final_energy;
     let (joints, abutments, segments) = bridge_arrays(setup, sol);
     let hyst: Real = s.segments.iter().map(|g| g.hysteretic_energy).sum();
-    let compliant = !is_rigid(m);
+    let (rigid, compliant) = site_kinds(m);
     let mut out = json!({
         "impacts": s.impacts,
         "impacting_contacts": sol.impacts.len(),
@@ -307,9 +323,11 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
             .map(|w| w.json)
             .chain(bridge_run_warnings(sol).iter().map(super::RunWarning::json))
             .collect();
-    if !compliant {
+    if rigid {
+        // the rigid sites' impacts (a compliance record has its measured pulse instead)
+        let records = sol.impacts.iter().filter(|r| r.pulse.is_none());
         out["peak_force_estimate_n"] =
-            super::peak_estimate_json(sol.impacts.iter().map(|r| (r, site_restitution(m, r))));
+            super::peak_estimate_json(records.map(|r| (r, site_restitution(m, r))));
     }
     if compliant {
         out["newton_failures"] = json!(sol.newton_failures);

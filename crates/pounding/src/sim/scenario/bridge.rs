@@ -487,7 +487,6 @@ fn sites(
         });
         next += 1;
     }
-    check_mixed(sc, &contacts, &kinds)?;
     Ok((joints, abutments))
 }
 
@@ -567,50 +566,6 @@ fn site_contacts<'a>(
         }
     }
     Ok(out)
-}
-
-/// Refuses rigid contact at some sites and compliance laws at others (the library's
-/// `BridgeModel::validate` would too), naming the first site whose own `law` key makes the
-/// difference, with its line. `rigid[i]`: whether site `i` got rigid contact.
-fn check_mixed(
-    sc: &Scenario,
-    contacts: &[SiteContact],
-    rigid: &[bool],
-) -> Result<(), ScenarioError> {
-    if rigid.iter().all(|&r| r) || rigid.iter().all(|&r| !r) {
-        return Ok(());
-    }
-    let run_rigid = sc.law() == "rigid";
-    let culprit = contacts
-        .iter()
-        .zip(rigid)
-        .find(|(c, r)| c.law_line.is_some() && **r != run_rigid)
-        .or_else(|| contacts.iter().zip(rigid).find(|(_, r)| **r != rigid[0]));
-    let Some((c, &r)) = culprit else {
-        return Ok(());
-    };
-    let kind = |rigid: bool| {
-        if rigid {
-            "rigid contact"
-        } else {
-            "a compliance law"
-        }
-    };
-    Err(ScenarioError::Bridge {
-        message: format!(
-            "{}.contact.law = \"{}\" mixes rigid and compliance contact ({} uses {}, other sites \
-             {}): every joint and abutment of a bridge must use rigid contact, or every one a \
-             compliance law",
-            c.site,
-            c.law,
-            c.site,
-            kind(r),
-            kind(!r)
-        ),
-        key: format!("{}.contact.law", c.site),
-        origin: sc.src.origin.clone(),
-        line: c.law_line,
-    })
 }
 
 /// A segment whose bearings leave it free to slide or spin (lowest natural frequency zero, or

@@ -126,7 +126,7 @@ history_every = 10   # write every n-th step to history.csv (peaks use every ste
 # [abutment.start]          # optional; also [abutment.end]: gap, seat_length, mu, eps_n
 # gap = 0.04
 # [abutment.start.contact]  # optional: the abutment's own contact keys (as [joint.contact]);
-# law = "hertz"             #   rigid and compliance contact cannot be mixed in one bridge
+# law = "hertz"             #   rigid and compliance sites may be mixed in one bridge
 "#;
 
 #[derive(Deserialize, Default, Clone, Debug)]

@@ -1,0 +1,108 @@
+//! Rigid and compliance contact sites in one bridge ([`pounding::sim`]'s mixed stepper): the
+//! three-segment viaduct with rigid joints and compliance-law abutments runs, its energy balance
+//! closes, and as the abutments stiffen it tends to the all-rigid run.
+
+use pounding::sim::bridge::{BridgeSolution, simulate_bridge};
+use pounding::sim::scenario::{BridgeSetup, Scenario};
+use pounding::sim::{SimContact, SimStatus};
+
+/// `examples/viaduct-rigid-1d.toml` with `abut` appended (each abutment's `contact` table),
+/// over `duration` seconds.
+fn viaduct(abut: &str, duration: f64) -> BridgeSetup {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let text = std::fs::read_to_string(format!("{root}/../../examples/viaduct-rigid-1d.toml"))
+        .unwrap()
+        .replace(
+            "history_every = 100",
+            &format!("history_every = 10\nduration = {duration}"),
+        );
+    let text = format!("{text}\n{abut}");
+    Scenario::from_toml(&text, "viaduct-mixed.toml")
+        .and_then(|s| s.build_bridge())
+        .unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn run(setup: &BridgeSetup) -> BridgeSolution {
+    simulate_bridge(&setup.problem, &setup.settings).unwrap()
+}
+
+/// The contact tables of both abutments with the law text `law`.
+fn abutments(law: &str) -> String {
+    format!("[abutment.start.contact]\n{law}\n[abutment.end.contact]\n{law}\n")
+}
+
+/// The bilinear impact law of `examples/viaduct-1d.toml` at both abutments, rigid joints.
+#[test]
+fn rigid_joints_with_bilinear_abutments_run_with_a_closed_energy_balance() {
+    let bilinear = "law = \"bilinear\"\nk1 = 1.5586e10\nk2 = 3.1328e9\ndelta_y = 2.54e-3";
+    let sol = run(&viaduct(&abutments(bilinear), 20.0));
+    assert_eq!(sol.status, SimStatus::Completed);
+    let s = &sol.summary;
+    assert!(
+        s.energy_balance_error < 1e-9,
+        "energy balance {:e}",
+        s.energy_balance_error
+    );
+    // both kinds act: rigid joint impacts (impulses, no force) and abutment contact forces
+    let joint_impacts: usize = s.joints.iter().map(|j| j.impacts).sum();
+    let abut = s
+        .abutments
+        .iter()
+        .flatten()
+        .map(|a| a.impacts)
+        .sum::<usize>();
+    assert!(joint_impacts > 0 && abut > 0, "{joint_impacts} {abut}");
+    assert!(s.joints.iter().all(|j| j.peak_contact_force.is_none()));
+    for a in s.abutments.iter().flatten() {
+        assert!(a.peak_contact_force.is_some());
+    }
+    let pulses = |abutment: bool| {
+        sol.impacts
+            .iter()
+            .filter(|r| matches!(r.contact, SimContact::Abutment { .. }) == abutment)
+            .map(|r| r.pulse.is_some())
+            .collect::<Vec<_>>()
+    };
+    assert!(
+        pulses(true).iter().all(|&p| p),
+        "abutment records carry force pulses"
+    );
+    assert!(
+        pulses(false).iter().all(|&p| !p),
+        "joint records are impulses"
+    );
+    assert_eq!(sol.newton_failures, 0);
+}
+
+/// Kelvin abutments calibrated to the same restitution (0.6) as the rigid abutments: as their
+/// stiffness grows from 1e9 to 1e11 N/m the response tends to the all-rigid run (a linear
+/// spring–dashpot's restitution does not depend on its stiffness, so the limit is the rigid
+/// impact with the same ε).
+#[test]
+fn stiffening_compliance_abutments_tend_to_the_all_rigid_run() {
+    let dur = 8.0;
+    let rigid = run(&viaduct("", dur));
+    let peak = |s: &BridgeSolution| -> Vec<f64> {
+        let mut v: Vec<f64> = s.summary.joints.iter().map(|j| j.peak_closing).collect();
+        v.extend(s.summary.segments.iter().map(|g| g.peak_displacement));
+        v
+    };
+    let reference = peak(&rigid);
+    let mut errors = Vec::new();
+    for k in [1e9, 1e10, 1e11] {
+        let law = format!("law = \"kelvin\"\nk = {k:e}\ncalibration = \"numerical\"");
+        let sol = run(&viaduct(&abutments(&law), dur));
+        assert_eq!(sol.status, SimStatus::Completed, "k = {k:e}");
+        assert!(sol.summary.energy_balance_error < 1e-9, "k = {k:e}");
+        let err = peak(&sol)
+            .iter()
+            .zip(&reference)
+            .map(|(a, b)| (a - b).abs() / b.abs())
+            .fold(0.0f64, f64::max);
+        errors.push(err);
+    }
+    assert!(
+        errors[2] < errors[0] && errors[2] < 0.05,
+        "relative differences to the rigid run: {errors:?}"
+    );
+}
