@@ -52,14 +52,13 @@ fn sig4(x: Real) -> String {
     crate::output::float_token(format!("{x:.3e}").parse::<Real>().unwrap_or(x))
 }
 
-/// `record` times `s`.
-fn scaled(record: &Record, s: Real) -> Record {
+/// `record` times `s`; `None` when a scaled acceleration is not finite (a factor of 1e308).
+fn scaled(record: &Record, s: Real) -> Option<Record> {
     if s == 1.0 {
-        return record.clone();
+        return Some(record.clone());
     }
     let v: Vec<Real> = record.values().iter().map(|a| a * s).collect();
-    Record::new(record.name.clone(), record.times().to_vec(), v)
-        .expect("a scaled copy of a valid record is valid")
+    Record::new(record.name.clone(), record.times().to_vec(), v).ok()
 }
 
 /// IM of one component \[g\].
@@ -100,13 +99,13 @@ fn pga_rotd50(x: &Record, y: &Record) -> Real {
 
 /// The IM \[g\] of an entry as applied at unit scale: its first component times `|sx|`, its
 /// second times `|sy|` (the scenario's `[ground_motion]` scale factors of the directions they act
-/// along).
-pub fn intensity(spec: &ImSpec, rec: &SetRecord, sx: Real, sy: Real) -> Real {
-    let x = scaled(&rec.x, sx.abs());
-    match &rec.y {
+/// along). `None` when a scaled component's accelerations overflow.
+pub fn intensity(spec: &ImSpec, rec: &SetRecord, sx: Real, sy: Real) -> Option<Real> {
+    let x = scaled(&rec.x, sx.abs())?;
+    Some(match &rec.y {
         None => single(spec, &x),
         Some(y) => {
-            let y = scaled(y, sy.abs());
+            let y = scaled(y, sy.abs())?;
             match (spec.pair, spec.kind) {
                 (PairIm::GeoMean, _) => (single(spec, &x) * single(spec, &y)).sqrt(),
                 (PairIm::RotD50, ImKind::Pga) => pga_rotd50(&x, &y),
@@ -117,7 +116,7 @@ pub fn intensity(spec: &ImSpec, rec: &SetRecord, sx: Real, sy: Real) -> Real {
                 }
             }
         }
-    }
+    })
 }
 
 /// How the fundamental period was found.

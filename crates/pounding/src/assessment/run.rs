@@ -31,11 +31,25 @@ impl Plan {
         stripes: &Stripes,
         ground: &GroundMotion,
     ) -> Result<Self, AssessmentError> {
-        let entry_im: Vec<Real> = set
+        let entry_im: Vec<Option<Real>> = set
             .records
             .par_iter()
             .map(|r| intensity(spec, r, ground.scale_y, ground.scale_x))
             .collect();
+        let mut ims = Vec::with_capacity(entry_im.len());
+        for (r, im) in set.records.iter().zip(entry_im) {
+            let Some(im) = im else {
+                return Err(AssessmentError::Model(format!(
+                    "record {}: its accelerations times the scenario's factors (`[ground_motion] \
+                     scale_y` = {}, `scale_x` = {}) are not finite; use smaller factors",
+                    r.id,
+                    float_token(ground.scale_y),
+                    float_token(ground.scale_x)
+                )));
+            };
+            ims.push(im);
+        }
+        let entry_im = ims;
         for (r, &im) in set.records.iter().zip(&entry_im) {
             if !(im.is_finite() && im > 0.0) {
                 return Err(AssessmentError::ZeroIm {

@@ -111,16 +111,18 @@ impl Implicit {
     }
 
     /// `R̃(q⁺)` of one segment's bearings (the same operations as the driver's first estimate,
-    /// so an elastic step reproduces it bit for bit), `J = Σ Bᵀ (k0 I − K_t) B`, and whether any
-    /// bearing flows.
+    /// so an elastic step reproduces it bit for bit), `J = Σ Bᵀ (k0 I − K_t) B`, whether any
+    /// bearing flows, and the sum of the magnitudes of the terms of `R̃` (its rounding scale:
+    /// the moments of opposite bearings cancel in `R̃_θ`, not in its rounding).
     fn end_force(
         bearings: &[YieldingBearing],
         idx: &[usize],
         qj: &Vector3<Real>,
-    ) -> (Vector3<Real>, Matrix3<Real>, bool) {
+    ) -> (Vector3<Real>, Matrix3<Real>, bool, Vector3<Real>) {
         let mut r = Vector3::zeros();
         let mut jac = Matrix3::zeros();
         let mut flows = false;
+        let mut size = Vector3::zeros();
         for &i in idx {
             let b = &bearings[i];
             let u = Vector::new(qj.x - qj.z * b.arm.y, qj.y + qj.z * b.arm.x);
@@ -129,6 +131,11 @@ impl Implicit {
             r.x += fp.x;
             r.y += fp.y;
             r.z += -b.arm.y * fp.x + b.arm.x * fp.y;
+            size += Vector3::new(
+                fp.x.abs(),
+                fp.y.abs(),
+                (b.arm.y * fp.x).abs() + (b.arm.x * fp.y).abs(),
+            );
             if resp.yielding {
                 flows = true;
                 let bm = b_matrix(&b.arm);
@@ -136,7 +143,7 @@ impl Implicit {
                 jac += bm.transpose() * d * bm;
             }
         }
-        (r, jac, flows)
+        (r, jac, flows, size)
     }
 
     /// `q⁺ = q_k + h ((1−θ) u_k + θ x)` of segment `j`, as the driver forms it.
@@ -178,14 +185,16 @@ impl Implicit {
         let fy: Real = idx.iter().map(|&i| bearings[i].law.fy()).sum();
         for _ in 0..MAX_ITER {
             let qp = Self::end_position(sc, q, u, j, &x);
-            let (r, jac, _) = Self::end_force(bearings, idx, &qp);
+            let (r, jac, _, r_size) = Self::end_force(bearings, idx, &qp);
             let g = what * (x - base) - (r - r_pred) * hth - pi;
             let wt = what - jac * (hth * hth);
             // converged: each entry of `g` (an impulse) below 1e-12 of the yield impulse
             // `hθ fy`, or at its rounding floor: the size of its terms (`Ŵ` times the
-            // resolution of `x` and `base`, the forces), entry by entry, times a few ulps
-            let size =
-                what.abs() * (x.abs() + base.abs()) + (r.abs() + r_pred.abs()) * hth + pi.abs();
+            // resolution of `x` and `base`, the bearings' forces and moments term by term),
+            // entry by entry, times a few ulps
+            let size = what.abs() * (x.abs() + base.abs())
+                + (r_size * 2.0 + r.abs() + r_pred.abs()) * hth
+                + pi.abs();
             let tol = 1e-12 * hth * fy;
             if (0..3).all(|i| g[i].abs() <= (64.0 * Real::EPSILON * size[i]).max(tol)) {
                 return (x, r, jac, wt, true);
@@ -201,7 +210,7 @@ impl Implicit {
             x = next;
         }
         let qp = Self::end_position(sc, q, u, j, &x);
-        let (r, jac, _) = Self::end_force(bearings, idx, &qp);
+        let (r, jac, _, _) = Self::end_force(bearings, idx, &qp);
         (x, r, jac, what - jac * (hth * hth), false)
     }
 
@@ -345,7 +354,7 @@ impl Implicit {
                 self.rf[g]
             } else {
                 let qp = Self::end_position(sc, q, u, j, &x_new);
-                let (r_true, _, _) = Self::end_force(bearings, idx, &qp);
+                let (r_true, _, _, _) = Self::end_force(bearings, idx, &qp);
                 let qf = Self::end_position(sc, q, u, j, &self.xf[g]);
                 let r_lin = self.rf[g] + self.jac[g] * (qp - qf);
                 let scale = r_true.amax().max(r_pred.amax()).max(self.rf[g].amax());

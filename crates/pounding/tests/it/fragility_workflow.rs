@@ -375,6 +375,46 @@ fn a_record_with_zero_im_is_an_error_naming_it() {
     assert!(e.to_string().contains("Z1"), "{e}");
 }
 
+/// A scale factor that overflows a record (`scale_y = 1e308`) is an error naming the record and
+/// the key, not a panic (the hostile campaign's panic in the IM of a scaled record).
+#[test]
+fn a_scale_factor_that_overflows_a_record_is_an_error() {
+    let r = Record::uniform("big", 0.01, vec![0.0, 3.0, -2.0, 1.0]).unwrap();
+    let set = RecordSet {
+        name: String::new(),
+        source: String::new(),
+        records: vec![pounding::ground_motion::set::SetRecord {
+            id: "B1".into(),
+            x: r,
+            y: None,
+            meta: Vec::new(),
+        }],
+    };
+    for kind in [ImKind::Pga, ImKind::Sa] {
+        let spec = ImSpec {
+            kind,
+            period: 1.0,
+            damping: 0.05,
+            pair: PairIm::GeoMean,
+        };
+        let e = Plan::new(
+            &set,
+            &spec,
+            &Stripes::Levels(vec![0.1]),
+            &GroundMotion {
+                scale_y: -1e308,
+                ..GroundMotion::none()
+            },
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(
+            e.contains("B1") && e.contains("scale_y") && e.contains("not finite"),
+            "{e}"
+        );
+    }
+}
+
 #[test]
 fn limit_states_on_a_hand_set_summary() {
     let text = format!("{BRIDGE}{}", FRAG.replace(
