@@ -134,22 +134,42 @@ fn build_setups(laws: &[String], base: Scenario) -> Result<Vec<SimSetup>> {
     let mut setups = Vec::new();
     let mut sizes = Vec::new();
     for l in laws {
-        let mut s = base
+        let s = base
             .clone()
             .with_law(l)
             .build()
             .with_context(|| format!("contact law {l:?}"))?;
-        s.settings.history_stride = plot_stride(s.settings.dt);
         let d = s
             .settings
             .duration
             .unwrap_or_else(|| s.problem.ground.end_time());
         let n = s.settings.step_count(d).map_err(|e| anyhow!("{e}"))?;
-        sizes.push((n, s.settings.history_stride, 2));
+        sizes.push((n, 2));
         setups.push(s);
     }
-    pounding::sim::options::check_runs_memory(&sizes).map_err(|e| anyhow!(e))?;
+    let dt = setups.first().map_or(1e-3, |s| s.settings.dt);
+    let stride = fitted_stride(&sizes, dt)?;
+    for s in &mut setups {
+        s.settings.history_stride = stride;
+    }
     Ok(setups)
+}
+
+/// The history stride of the compared runs: a sample per 0.5 ms ([`plot_stride`]) when every
+/// law's history fits in memory together, else the finest that fits (said on stderr; the
+/// scenario's `history_every` is not used: the overlay plots need their own sampling).
+pub(crate) fn fitted_stride(sizes: &[(usize, usize)], dt: Real) -> Result<usize> {
+    let fine = plot_stride(dt);
+    let stride =
+        pounding::sim::options::runs_history_stride(sizes, fine).map_err(|e| anyhow!(e))?;
+    if stride > fine {
+        eprintln!(
+            "note: the {} runs keep a history sample every {} s (not every 0.5 ms) to fit in memory",
+            sizes.len(),
+            float_token(stride as Real * dt)
+        );
+    }
+    Ok(stride)
 }
 
 /// A history sample per 0.5 ms (the overlay plots).

@@ -46,7 +46,7 @@ pub(super) fn run(
     let mut setups: Vec<Result<BridgeSetup, String>> = Vec::new();
     for l in laws {
         setups.push(match base.clone().with_law(l).build_bridge() {
-            Ok(s) => Ok(with_plot_stride(s)),
+            Ok(s) => Ok(s),
             Err(e) => Err(e.to_string()),
         });
     }
@@ -55,7 +55,7 @@ pub(super) fn run(
     {
         bail!("no law of --laws can run on this bridge: {first}");
     }
-    let sizes: Vec<(usize, usize, usize)> = setups
+    let sizes: Vec<(usize, usize)> = setups
         .iter()
         .flatten()
         .map(|s| {
@@ -64,10 +64,18 @@ pub(super) fn run(
                 .duration
                 .unwrap_or_else(|| s.problem.ground.end_time());
             let n = s.settings.step_count(d).unwrap_or(usize::MAX);
-            (n, s.settings.history_stride, s.problem.model.segments.len())
+            (n, s.problem.model.segments.len())
         })
         .collect();
-    pounding::sim::options::check_runs_memory(&sizes).map_err(|e| anyhow!(e))?;
+    let dt = setups
+        .iter()
+        .flatten()
+        .next()
+        .map_or(1e-3, |s| s.settings.dt);
+    let stride = super::fitted_stride(&sizes, dt)?;
+    for s in setups.iter_mut().flatten() {
+        s.settings.history_stride = stride;
+    }
     if let Some(Ok(s)) = setups.iter().find(|s| s.is_ok()) {
         crate::cmd_simulate::sim_records::print_components(&s.problem.ground);
     }
@@ -129,13 +137,6 @@ pub(super) fn run(
         return Ok(ExitCode::FAILURE);
     }
     Ok(ExitCode::SUCCESS)
-}
-
-/// A history sample per 0.5 ms (the plots); `--dt` was applied to the scenario, whose build
-/// checks it as `simulate` does.
-fn with_plot_stride(mut s: BridgeSetup) -> BridgeSetup {
-    s.settings.history_stride = super::plot_stride(s.settings.dt);
-    s
 }
 
 /// Writes the CSV files, the table, the plot and `timing.json` into the locked `out`.

@@ -208,21 +208,44 @@ pub fn bridge_run_memory_bytes(n_steps: usize, history_stride: usize, n_segments
 /// [`bridge_run_memory_bytes`]. An error message (naming the limit and the ways around it) when
 /// the sum exceeds [`MAX_RUN_MEMORY_BYTES`].
 pub fn check_runs_memory(runs: &[(usize, usize, usize)]) -> Result<u64, String> {
-    let bytes = runs.iter().fold(0u64, |acc, &(n, s, segs)| {
-        acc.saturating_add(bridge_run_memory_bytes(n, s, segs))
-    });
+    let bytes = runs_memory_bytes(runs);
     if bytes <= MAX_RUN_MEMORY_BYTES {
         return Ok(bytes);
     }
     let gib = |b: u64| b as Real / (1u64 << 30) as Real;
     Err(format!(
-        "run too large: the {} runs need an estimated {:.1} GiB of memory (history every 0.5 ms), \
-         more than the limit {:.0} GiB: shorten [time] duration, compare fewer laws or use a \
-         larger --dt",
+        "run too large: the {} runs need an estimated {:.1} GiB of memory even keeping only the \
+         first and last step of each, more than the limit {:.0} GiB: shorten [time] duration, \
+         compare fewer laws or use a larger --dt",
         runs.len(),
         gib(bytes),
         gib(MAX_RUN_MEMORY_BYTES)
     ))
+}
+
+fn runs_memory_bytes(runs: &[(usize, usize, usize)]) -> u64 {
+    runs.iter().fold(0u64, |acc, &(n, s, segs)| {
+        acc.saturating_add(bridge_run_memory_bytes(n, s, segs))
+    })
+}
+
+/// The history stride of runs held at once (`(n_steps, n_segments)` each, all kept at one
+/// stride): `from` when they fit in [`MAX_RUN_MEMORY_BYTES`], else the smallest larger stride
+/// that fits; the error of [`check_runs_memory`] when even the first and last steps do not.
+pub fn runs_history_stride(runs: &[(usize, usize)], from: usize) -> Result<usize, String> {
+    let at = |s: usize| -> Vec<(usize, usize, usize)> {
+        runs.iter().map(|&(n, segs)| (n, s, segs)).collect()
+    };
+    let fits = |s: usize| runs_memory_bytes(&at(s)) <= MAX_RUN_MEMORY_BYTES;
+    let from = from.max(1);
+    if fits(from) {
+        return Ok(from);
+    }
+    let longest = runs.iter().map(|r| r.0).max().unwrap_or(1);
+    match smallest_stride(longest, fits) {
+        Some(s) => Ok(s.max(from)),
+        None => check_runs_memory(&at(longest.max(1))).map(|_| longest.max(1)),
+    }
 }
 
 /// The smallest history stride whose [`bridge_run_memory_bytes`] is at most

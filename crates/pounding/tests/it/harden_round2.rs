@@ -80,3 +80,19 @@ fn runs_beyond_the_memory_limit_are_refused_with_the_stride_that_fits() {
     // the estimate never overflows
     assert_eq!(run_memory_bytes(usize::MAX, 1), u64::MAX);
 }
+
+/// Compared runs held at once keep the finest history that fits: their own stride when it
+/// fits, else the smallest that does (monotone), else an error naming the limit.
+#[test]
+fn compared_runs_keep_the_finest_history_that_fits() {
+    use pounding::sim::options::{MAX_RUN_MEMORY_BYTES, check_runs_memory, runs_history_stride};
+    assert_eq!(runs_history_stride(&[(10_000, 3); 6], 5), Ok(5));
+    let big = [(2_000_000, 200); 6];
+    let s = runs_history_stride(&big, 5).unwrap();
+    assert!(s > 5);
+    let at = |s: usize| big.iter().map(|&(n, g)| (n, s, g)).collect::<Vec<_>>();
+    assert!(check_runs_memory(&at(s)).unwrap() <= MAX_RUN_MEMORY_BYTES);
+    assert!(check_runs_memory(&at(s - 1)).is_err());
+    let e = runs_history_stride(&[(30_000_000, 2); 6], 50).unwrap_err();
+    assert!(e.contains("first and last"), "{e}");
+}
