@@ -96,3 +96,46 @@ fn compared_runs_keep_the_finest_history_that_fits() {
     let e = runs_history_stride(&[(30_000_000, 2); 6], 50).unwrap_err();
     assert!(e.contains("first and last"), "{e}");
 }
+
+/// Hostile round 3 campaign (F4, F9): values a shape or the model refuses after their own range
+/// check (a subnormal angle, density, mass or yield force) are named by the key the user wrote,
+/// at its line — not the `[[segment]]` header, not another key.
+#[test]
+fn values_refused_by_the_shape_or_model_name_their_own_key_and_line() {
+    let base = "[[segment]]\nshape = \"curved\"\nR = 150.0\nbeta_deg = 12.0\ndensity = 2500.0\n\
+                period_s = 1.0\nbearing = \"bilinear\"\nfy = 4.0e5\nb = 0.05\n\
+                [[segment]]\nshape = \"skew\"\nL = 30.0\nskew_deg = 20.0\nwidth = 9.396926207859083\n\
+                mass = 1.2e6\nbearing_stiffness = 1.0e8\n\
+                [ground_motion]\nrecord_y = \"builtin:ELC180\"\nrecord_x = \"none\"\n";
+    for (from, to, key, line) in [
+        (
+            "beta_deg = 12.0",
+            "beta_deg = 5e-324",
+            "segment[0].beta_deg",
+            4,
+        ),
+        (
+            "density = 2500.0",
+            "density = 1e308",
+            "segment[0].density",
+            5,
+        ),
+        (
+            "density = 2500.0",
+            "density = 5e-324",
+            "segment[0].density",
+            5,
+        ),
+        ("fy = 4.0e5", "fy = 1e-320", "segment[0].fy", 8),
+        ("mass = 1.2e6", "mass = 1e-300", "segment[1].mass", 15),
+    ] {
+        let text = base.replace(from, to);
+        assert_ne!(text, base);
+        let e = pounding::sim::scenario::Scenario::from_toml(&text, "s.toml")
+            .and_then(|s| s.build_bridge())
+            .err()
+            .unwrap_or_else(|| panic!("{to} must be refused"))
+            .to_string();
+        assert!(e.contains(&format!("`{key}` (s.toml:{line})")), "{to}: {e}");
+    }
+}

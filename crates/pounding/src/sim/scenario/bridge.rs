@@ -609,6 +609,31 @@ fn check_mechanism(v: &Val, raw: &BridgeRaw, model: &BridgeModel) -> Result<(), 
     Ok(())
 }
 
+/// The line of `key` where `[[segment]]` table `t` writes it (`None`: not written there).
+fn segment_key_line(v: &Val, t: &SegmentSec, key: &str) -> Option<usize> {
+    let num = |x: &Sp<f64>| x.as_ref().map(|x| v.line(x));
+    let text = |x: &Sp<String>| x.as_ref().map(|x| v.line(x));
+    match key {
+        "shape" => text(&t.shape),
+        "L" => num(&t.L),
+        "skew_deg" => num(&t.skew_deg),
+        "R" => num(&t.R),
+        "beta_deg" => num(&t.beta_deg),
+        "curve" => text(&t.curve),
+        "width" => num(&t.width),
+        "thickness" => num(&t.thickness),
+        "density" => num(&t.density),
+        "mass" => num(&t.mass),
+        "period_s" => num(&t.period_s),
+        "bearing_stiffness" => num(&t.bearing_stiffness),
+        "bearing_points" => t.bearing_points.as_ref().map(|x| v.line(x)),
+        "bearing" => text(&t.bearing),
+        "fy" => num(&t.fy),
+        "b" => num(&t.b),
+        _ => None,
+    }
+}
+
 /// A model error (named `segment[i].key`, `joint[k].key`, `abutment.side.key`, `bridge.key`) with
 /// the line of that key, or of its table when the key is not written there.
 fn model_error(v: &Val, raw: &BridgeRaw, e: crate::sim::SimError) -> ScenarioError {
@@ -625,11 +650,8 @@ fn model_error(v: &Val, raw: &BridgeRaw, e: crate::sim::SimError) -> ScenarioErr
     };
     let line = if let Some(i) = index("segment[") {
         let seg = raw.segment.get(i);
-        let own = seg.and_then(|t| match name.rsplit('.').next() {
-            Some("bearing_points") => t.get_ref().bearing_points.as_ref().map(|x| v.line(x)),
-            Some("width") => t.get_ref().width.as_ref().map(|x| v.line(x)),
-            _ => None,
-        });
+        let key = name.rsplit('.').next().unwrap_or_default();
+        let own = seg.and_then(|t| segment_key_line(v, t.get_ref(), key));
         own.or(seg.map(|t| v.line(t)))
     } else if let Some(k) = index("joint[") {
         // faces of different widths: the `width` of the segment after the joint (or before it),
@@ -765,8 +787,25 @@ fn segment_shape(
         .shape
         .as_ref()
         .map_or("straight", |x| x.get_ref().as_str());
-    let geo = |key: &str, e: crate::geometry::GeometryError| {
-        v.err(sk(key), None, format!("invalid segment {}: {e}", i + 1))
+    // a shape's own check names the parameter as the shape knows it: the key the user wrote
+    let geo = |fallback: &str, e: crate::geometry::GeometryError| {
+        let crate::geometry::GeometryError::InvalidParameter { name, .. } = &e;
+        let key = match name.as_str() {
+            "R" => "R",
+            "beta" => "beta_deg",
+            "skew" => "skew_deg",
+            "length" => "L",
+            "width" => "width",
+            "thickness" => "thickness",
+            "density" if s.mass.is_some() => "mass",
+            "density" => "density",
+            _ => fallback,
+        };
+        v.err(
+            sk(key),
+            segment_key_line(v, s, key),
+            format!("invalid {}: {e}", sk(key)),
+        )
     };
     let natural_left = i == 0;
     let mut mirrored = false;
@@ -803,8 +842,8 @@ fn segment_shape(
                 sk("beta_deg"),
                 &s.beta_deg,
                 None,
-                |x| x > 0.0 && x < 180.0,
-                "must lie in (0, 180)",
+                |x| x.to_radians() > 0.0 && x < 180.0,
+                "must lie in (0, 180) (and not round to 0 in radians)",
             )?;
             let left = match s.curve.as_ref().map(|c| (c.get_ref().as_str(), v.line(c))) {
                 None => default_left,
