@@ -136,3 +136,37 @@ def test_integers_beyond_2_53_are_refused_not_rounded():
 def test_a_numpy_bool_in_a_scenario_dict_is_a_bool():
     sc = {"bearings": {"allow_mechanism": np.bool_(True)}, "time": {"duration": 0.05}}
     assert pounding.simulate(sc).status == "Completed"
+
+
+def _bridge_dict(**bridge):
+    return {"bridge": {"damping_ratio": 0.05, **bridge},
+            "segment": [{"shape": "straight", "L": 30.0, "mass": 1.0e6, "period_s": 1.0},
+                        {"shape": "straight", "L": 30.0, "mass": 1.0e6, "period_s": 0.8}],
+            "ground_motion": {"record_y": "builtin:ELC180", "record_x": "none"},
+            "time": {"dt": 1e-3, "duration": 0.5}}
+
+
+def test_scenario_dict_values_read_as_their_arguments_would():
+    """Hostile round 3 campaign (F5): a 0-d array in a scenario dict is its value, a Decimal the
+    float it is as an argument, an integer beyond 2**53 refused as it is as an argument."""
+    from decimal import Decimal
+    plain = pounding.simulate(_bridge_dict(gap=0.03)).summary
+    assert pounding.simulate(_bridge_dict(gap=np.array(0.03))).summary == plain
+    assert pounding.simulate(_bridge_dict(gap=Decimal("0.03"))).summary == plain
+    big = _bridge_dict()
+    big["segment"][0]["mass"] = 2**53 + 1
+    with pytest.raises(ValueError, match=r"segment.*mass.*2\*\*53"):
+        pounding.simulate(big)
+
+
+def test_batch_scales_and_threads_are_checked_by_name():
+    rec = [(np.sin(np.arange(200) * 0.1), 0.01)]
+    one = pounding.batch(_bridge_dict(), rec, [1.0])
+    zero_d = pounding.batch(_bridge_dict(), rec, np.array(1.0))
+    assert len(one) == len(zero_d) == 1
+    assert list(one["peak_seat_displacement_m"]) == list(zero_d["peak_seat_displacement_m"])
+    with pytest.raises(TypeError, match="scales must be a number or a list"):
+        pounding.batch(_bridge_dict(), rec, "1.0")
+    for t in (0, 2**70):
+        with pytest.raises(ValueError, match=r"threads .* must lie in \[1, 1024\]"):
+            pounding.batch(_bridge_dict(), rec, [1.0], threads=t)

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import csv
 import io
+import decimal
+import fractions
 import json
 import os
 from typing import Any, Dict, List, Optional, Tuple
@@ -69,6 +71,9 @@ def _toml_value(v: Any, where: str) -> str:
     if isinstance(v, (bool, np.bool_)):
         return "true" if v else "false"
     if isinstance(v, (int, np.integer)):
+        if abs(int(v)) > _EXACT:
+            raise ValueError(f"invalid scenario dict: {where} = {v} is an integer beyond 2**53, "
+                             "which the scenario's float values cannot hold exactly")
         return str(int(v))
     if isinstance(v, (float, np.floating)):
         x = float(v)
@@ -77,8 +82,12 @@ def _toml_value(v: Any, where: str) -> str:
         if x in (float("inf"), float("-inf")):
             return "inf" if x > 0 else "-inf"
         return repr(x)  # shortest round-trip: the TOML reader gets the same bits
+    if isinstance(v, (decimal.Decimal, fractions.Fraction)):
+        return _toml_value(float(v), where)  # as a scale= argument of the same value
     if isinstance(v, str):
         return json.dumps(v)
+    if isinstance(v, np.ndarray) and v.ndim == 0:
+        return _toml_value(v.item(), where)  # a 0-d array is its one value
     if isinstance(v, (list, tuple, np.ndarray)):
         return "[" + ", ".join(_toml_value(x, where) for x in v) + "]"
     if isinstance(v, dict):
@@ -219,6 +228,8 @@ def thread_count(threads: Any) -> Optional[int]:
         return None
     if isinstance(threads, (bool, np.bool_)) or not isinstance(threads, (int, np.integer)):
         raise TypeError(f"threads must be an int or None, not {type(threads).__name__}")
+    if not 1 <= int(threads) <= 1024:
+        raise ValueError(f"invalid threads = {threads}: must lie in [1, 1024]")
     return int(threads)
 
 

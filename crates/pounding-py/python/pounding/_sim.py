@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import decimal
 import json
 import os
 import warnings
@@ -270,7 +271,12 @@ def batch(
         records[0], np.ndarray
     ):
         records = [records]  # one (accelerations, dt[, name]) record
-    if isinstance(scales, (int, float, np.integer, np.floating)) and not isinstance(
+    if isinstance(scales, (str, bytes)):
+        raise TypeError(f"scales must be a number or a list of numbers, not "
+                        f"{type(scales).__name__} {scales!r}")
+    if isinstance(scales, np.ndarray) and scales.ndim == 0:
+        scales = scales.item()  # a 0-d array is one scale
+    if isinstance(scales, (int, float, np.integer, np.floating, decimal.Decimal)) and not isinstance(
         scales, bool
     ):
         scales = [scales]
