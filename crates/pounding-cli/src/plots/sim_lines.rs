@@ -150,7 +150,7 @@ pub(crate) fn energy_panel<DB: DrawingBackend>(
     ];
     if elements {
         series.push(Series {
-            label: "hysteretic + restrainer work",
+            label: "yielding bearings + restrainers (stored + dissipated)",
             pts: en(&|e| e.elements),
             color: ORANGE,
         });

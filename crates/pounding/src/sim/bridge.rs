@@ -1518,7 +1518,7 @@ fn solution(
             });
         }
     }
-    let correction = r.elements.bearing_energy_correction(&r.final_q, nb);
+    let correction = r.elements.bearing_stored_energy(nb);
     let segments = (0..nb)
         .map(|i| {
             let x = r.final_q[3 * i];

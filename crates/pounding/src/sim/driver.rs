@@ -219,10 +219,22 @@ impl Scheme {
     }
 
     /// `(T, V) = (½ uᵀ M u, ½ qᵀ K q)`; `w` holds `M u` and `K q`.
-    fn energies(&self, q: &State, u: &State, w: &mut Work) -> (Real, Real) {
+    ///
+    /// The segments with `yielding[j]` are left out of the strain energy: their stiffness is
+    /// their yielding bearings' initial stiffness, whose energy the elements book as work
+    /// ([`super::elements::Elements::book`]).
+    fn energies(&self, q: &State, u: &State, w: &mut Work, yielding: &[bool]) -> (Real, Real) {
         Self::apply_blocks_into(self.bodies.iter().map(|b| &b.mass), u, &mut w.mu);
         Self::apply_blocks_into(self.bodies.iter().map(|b| &b.stiffness), q, &mut w.kq);
-        (0.5 * u.dot(&w.mu), 0.5 * q.dot(&w.kq))
+        let strain = if yielding.iter().any(|y| *y) {
+            (0..q.len())
+                .filter(|i| !yielding[i / 3])
+                .map(|i| q[i] * w.kq[i])
+                .sum::<Real>()
+        } else {
+            q.dot(&w.kq)
+        };
+        (0.5 * u.dot(&w.mu), 0.5 * strain)
     }
 
     /// `vᵀ C v`; `cv` holds `C v`.
@@ -280,6 +292,9 @@ struct Work {
     u_free: State,
     /// `Ŵ⁻¹ R̄` of the elements.
     wr: State,
+    /// `q_θ = q_k + θ h ū_θ` and `K q_θ` (the yielding bearings' work).
+    q_th: State,
+    kq_th: State,
 }
 
 impl Work {
@@ -296,6 +311,8 @@ impl Work {
             fbar: z(),
             u_free: z(),
             wr: z(),
+            q_th: z(),
+            kq_th: z(),
         }
     }
 }
@@ -836,7 +853,12 @@ pub(crate) fn run<S: Stepper>(
     let (h, th) = (sc.h, sc.th);
     let (mut q, mut u) = (q0, u0);
     let mut work = Work::new(q.len());
-    let (t0, v0) = sc.energies(&q, &u, &mut work);
+    let el0 = &bridge.elements;
+    let mut yield_body = vec![false; bridge.bodies.len()];
+    for b in &el0.bearings {
+        yield_body[b.body] = true;
+    }
+    let (t0, v0) = sc.energies(&q, &u, &mut work, &yield_body);
     let mut ledger = Ledger::new(t0 + v0);
     let mut peaks = Peaks::new(bridge);
     let mut trace = Trace::default();
@@ -865,7 +887,7 @@ pub(crate) fn run<S: Stepper>(
         if let Some(f) = forces {
             peaks.observe_forces(f, &abut_sides);
         }
-        let (tk, vk) = sc.energies(&q, &u, &mut work);
+        let (tk, vk) = sc.energies(&q, &u, &mut work, &yield_body);
         let w_el = (!el.is_empty()).then(|| el.w_bearings.iter().sum::<Real>() + el.w_cables);
         let mut energy = ledger.check(tk, vk, stepper.contact_energy(), w_el);
         energy.elements = w_el.unwrap_or(0.0);
@@ -929,7 +951,15 @@ pub(crate) fn run<S: Stepper>(
         peaks.pen = peaks.pen.max(out.penetration);
         ledger.advance(sc, k, &u, &out.u, &mut work);
         if has_elements {
-            el.book(h, &work.u_mid, &mut el_force, nb);
+            if !yielding.is_empty() {
+                for i in 0..q.len() {
+                    work.q_th[i] = q[i] + work.u_th[i] * (th * h);
+                }
+                let k_blocks = sc.bodies.iter().map(|b| &b.stiffness);
+                Scheme::apply_blocks_into(k_blocks, &work.q_th, &mut work.kq_th);
+            }
+            let kq = (&work.kq_th, yield_body.as_slice());
+            el.book(h, &work.u_mid, kq, &mut el_force, nb);
         }
         for (qi, vi) in q.iter_mut().zip(work.u_th.iter()) {
             *qi += vi * h;
@@ -958,7 +988,7 @@ pub(crate) fn run<S: Stepper>(
     if status == SimStatus::Completed && th == 0.5 && energy_balance_error > 1e-6 {
         status = SimStatus::CompletedWithEnergyError;
     }
-    let (tf, vf) = sc.energies(&q, &u, &mut work);
+    let (tf, vf) = sc.energies(&q, &u, &mut work, &yield_body);
     let mut final_energy = ledger.energy(tf, vf, stepper.contact_energy());
     final_energy.elements = el.w_bearings.iter().sum::<Real>() + el.w_cables;
     RunResult {

@@ -20,11 +20,15 @@
 //!
 //! # Energy
 //! With `R̄` inside the momentum balance the discrete energy balance stays exact when the work
-//! `W_el = −Σ h ū·R̄` done *on* these forces is booked beside the other terms. It splits into
-//! the bearings' stored-energy correction and their hysteretic dissipation
-//! `D_h = W_el,bearings − (V_bearings − ½ qᵀ K q)` (`V_bearings = Σ ½ b k0 |u|² + ½ (1 − b) k0
-//! |u − u_p|²`, which tends to the plastic work `Σ f_p·Δu_p` as `h → 0`), and the work done on the
-//! restrainers (their stored energy plus, with yield, their plastic work).
+//! done *on* the elements is booked beside the other terms. A segment with yielding bearings
+//! books their whole force: `W_b = Σ h ū·(K q_θ − R̄_b)` (its `K` is their initial stiffness,
+//! left out of the strain energy `½ qᵀ K q` of the balance), a sum of terms of the size of the
+//! bearings' true forces: booking `½ qᵀ K q` and `−Σ h ū·R̄_b` apart made both grow like
+//! `½ k0 |u_p|²` of the plastic slide (1e13 J for a stiff bearing under a 2 kJ input), whose
+//! rounding was then reported as an energy error. `W_b` splits into what the bearings store,
+//! `V_b = Σ ½ b k0 |u|² + ½ (1 − b) k0 |u − u_p|²`, and their hysteretic dissipation
+//! `D_h = W_b − V_b` (which tends to the plastic work `Σ f_p·Δu_p` as `h → 0`). The cables'
+//! work is `−Σ h ū·(R̄ − R̄_b)` (their stored energy plus, with yield, their plastic work).
 
 use super::contact::{Pose, State};
 use super::model::SegmentBody;
@@ -119,7 +123,7 @@ impl Cable {
 pub(crate) struct Elements {
     pub bearings: Vec<YieldingBearing>,
     pub cables: Vec<Cable>,
-    /// Work done on the bearing corrections, per segment.
+    /// Energy absorbed by the yielding bearings (work done on them), per segment.
     pub w_bearings: Vec<Real>,
     /// Work done on the restrainers.
     pub w_cables: Real,
@@ -208,16 +212,32 @@ impl Elements {
         }
     }
 
-    /// Books the work `−h ū·R̄` of the step done on the elements (`f` from
-    /// [`Elements::step_force`]).
-    pub fn book(&mut self, h: Real, u_mid: &State, f: &mut StepForce, bodies: usize) {
+    /// Books the work of the step done on the elements (`f` from [`Elements::step_force`]):
+    /// on a segment with yielding bearings (`yielding[j]`) the work of their whole force,
+    /// `h ū·(K q_θ − R̄_b)` (`kq_th = K q_θ`; the linear part `K q` is their initial stiffness,
+    /// left out of the strain energy [`super::driver`] books), so that the energy they absorb is
+    /// summed from forces of their own size (never from `½ k0 |u|²` of a plastic slide, which
+    /// for a stiff bearing is many orders above the input); on the cables `−h ū·(R̄ − R̄_b)`.
+    pub fn book(
+        &mut self,
+        h: Real,
+        u_mid: &State,
+        (kq_th, yielding): (&State, &[bool]),
+        f: &mut StepForce,
+        bodies: usize,
+    ) {
         let (r, rb) = (&f.r, &f.rb);
         if self.w_bearings.len() < bodies {
             self.w_bearings.resize(bodies, 0.0);
         }
         for (j, w) in self.w_bearings.iter_mut().enumerate() {
-            let s: Real = (0..3).map(|i| u_mid[3 * j + i] * rb[3 * j + i]).sum();
-            *w -= h * s;
+            if !yielding[j] {
+                continue;
+            }
+            let s: Real = (0..3)
+                .map(|i| u_mid[3 * j + i] * (kq_th[3 * j + i] - rb[3 * j + i]))
+                .sum();
+            *w += h * s;
         }
         for i in 0..r.len() {
             f.rc[i] = r[i] - rb[i];
@@ -239,13 +259,12 @@ impl Elements {
         }
     }
 
-    /// `(Σ stored − Σ ½ k0 |u|²)` of each segment's yielding bearings at `q`: what the bearings
-    /// store beyond the linear `½ qᵀ K q`.
-    pub fn bearing_energy_correction(&self, q: &State, bodies: usize) -> Vec<Real> {
+    /// The energy each segment's yielding bearings store in their committed state (the rest
+    /// of what they absorbed, [`Elements::w_bearings`], they dissipated).
+    pub fn bearing_stored_energy(&self, bodies: usize) -> Vec<Real> {
         let mut out = vec![0.0; bodies];
         for b in &self.bearings {
-            let u = deformation(q, b.body, &b.arm);
-            out[b.body] += b.law.stored_energy(&b.state) - 0.5 * b.law.k0() * u.norm_squared();
+            out[b.body] += b.law.stored_energy(&b.state);
         }
         out
     }

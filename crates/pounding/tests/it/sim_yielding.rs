@@ -171,3 +171,28 @@ fn two_component_flow_of_symmetric_bearings_converges_at_every_step() {
         }
     }
 }
+
+/// Hostile round 3 campaign (F1, F7): a rigid–plastic-like bearing (k0 = 1e15 N/m, fy = 1e3 N)
+/// slides 0.09 m. Its energy is booked from its own forces, so the balance closes far below the
+/// status threshold (it was 1.4e-6 from the rounding of `½ k0 |u_p|²` ≈ 1e13 J), the energy
+/// absorbed by the bearings never goes negative, and the linear strain energy stays 0.
+#[test]
+fn a_stiff_sliding_bearing_books_energies_of_its_own_size() {
+    let text = scenario(1e6, 1e15, 1e3, 0.0, 1e-3, 30.0, 1.0);
+    let (sol, _, _) = run(&text);
+    assert_eq!(sol.status, pounding::sim::SimStatus::Completed);
+    let s = &sol.summary;
+    assert!(
+        s.energy_balance_error < 1e-7,
+        "{:e}",
+        s.energy_balance_error
+    );
+    assert!(s.segments[0].peak_bearing_deformation > 0.05);
+    let scale = s.max_input_energy;
+    for e in &sol.energy {
+        assert!(e.elements >= -1e-9 * scale, "{e:?}");
+        assert!(e.potential.abs() <= 1e-9 * scale, "{e:?}");
+        assert!(e.elements <= 1.01 * scale, "{e:?}");
+    }
+    assert!(s.segments[0].hysteretic_energy > 0.0);
+}
