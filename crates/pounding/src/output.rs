@@ -63,23 +63,24 @@ pub fn csv_field(s: &str) -> String {
 /// tiny or huge values stay short. Non-finite values are `inf`, `-inf` and `nan`. Negative zero
 /// is written `0` (it equals `0`; a `-0` only puzzles a reader).
 pub fn float_token(x: f64) -> String {
+    let mut s = String::new();
+    push_float_token(&mut s, x);
+    s
+}
+
+/// [`float_token`] appended to `out` (no allocation of its own: the writers of large tables).
+pub fn push_float_token(out: &mut String, x: f64) {
+    use std::fmt::Write;
     if x == 0.0 {
-        "0".to_string()
+        out.push('0');
     } else if x.is_nan() {
-        "nan".to_string()
+        out.push_str("nan");
     } else if x.is_infinite() {
-        if x > 0.0 {
-            "inf".to_string()
-        } else {
-            "-inf".to_string()
-        }
+        out.push_str(if x > 0.0 { "inf" } else { "-inf" });
+    } else if (1e-5..1e16).contains(&x.abs()) {
+        let _ = write!(out, "{x}");
     } else {
-        let a = x.abs();
-        if a == 0.0 || (1e-5..1e16).contains(&a) {
-            format!("{x}")
-        } else {
-            format!("{x:e}")
-        }
+        let _ = write!(out, "{x:e}");
     }
 }
 

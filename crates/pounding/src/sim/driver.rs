@@ -862,6 +862,10 @@ pub(crate) fn run<S: Stepper>(
     let mut ledger = Ledger::new(t0 + v0);
     let mut peaks = Peaks::new(bridge);
     let mut trace = Trace::default();
+    let rows = super::options::history_rows(sc.n_steps, settings.history_stride);
+    for o in &mut observers {
+        o.reserve(usize::try_from(rows).unwrap_or(0));
+    }
     let mut log = ImpactLog::default();
     let mut status = SimStatus::Completed;
     let mut steps_done = 0usize;

@@ -44,6 +44,8 @@ pub(crate) trait Observer: Send {
     fn observe(&mut self, s: &Snapshot<'_>);
     /// The table recorded.
     fn into_table(self: Box<Self>) -> Table;
+    /// Room for `rows` rows (the run's kept steps), so that recording never reallocates.
+    fn reserve(&mut self, rows: usize);
 }
 
 /// The observers every bridge run records (in output order).
@@ -89,6 +91,10 @@ impl BearingForces {
 }
 
 impl Observer for BearingForces {
+    fn reserve(&mut self, rows: usize) {
+        self.table.reserve_rows(rows);
+    }
+
     fn observe(&mut self, s: &Snapshot<'_>) {
         let v = &mut self.table.values;
         v.push(s.t);
@@ -136,6 +142,10 @@ impl RestrainerForces {
 }
 
 impl Observer for RestrainerForces {
+    fn reserve(&mut self, rows: usize) {
+        self.table.reserve_rows(rows);
+    }
+
     fn observe(&mut self, s: &Snapshot<'_>) {
         let v = &mut self.table.values;
         v.push(s.t);
@@ -167,6 +177,10 @@ impl JointSlip {
 }
 
 impl Observer for JointSlip {
+    fn reserve(&mut self, rows: usize) {
+        self.table.reserve_rows(rows);
+    }
+
     fn observe(&mut self, s: &Snapshot<'_>) {
         self.table.values.push(s.t);
         self.table.values.extend_from_slice(s.slip);

@@ -7,7 +7,7 @@
 //! (`t_s`, `segment1_bearing2_fx_N`), the convention of every CSV the library writes.
 
 use crate::math::Real;
-use crate::output::float_token;
+use crate::output::push_float_token;
 
 /// One column: its name and its unit (`m`, `N`, `s`, `deg`, …; empty: dimensionless).
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -61,6 +61,11 @@ impl Table {
         }
     }
 
+    /// Room for `rows` more rows.
+    pub fn reserve_rows(&mut self, rows: usize) {
+        self.values.reserve(rows.saturating_mul(self.columns.len()));
+    }
+
     /// The number of rows.
     pub fn rows(&self) -> usize {
         self.values.len() / self.columns.len().max(1)
@@ -86,11 +91,16 @@ impl Table {
     /// The CSV text: the header, then one line per row of shortest round-trip floats.
     pub fn csv(&self) -> String {
         let head: Vec<String> = self.columns.iter().map(Column::header).collect();
-        let mut s = head.join(",");
+        let mut s = String::with_capacity(self.values.len() * 20 + 64);
+        s.push_str(&head.join(","));
         s.push('\n');
         for r in 0..self.rows() {
-            let cells: Vec<String> = self.row(r).iter().map(|v| float_token(*v)).collect();
-            s.push_str(&cells.join(","));
+            for (i, v) in self.row(r).iter().enumerate() {
+                if i > 0 {
+                    s.push(',');
+                }
+                push_float_token(&mut s, *v);
+            }
             s.push('\n');
         }
         s

@@ -10,7 +10,6 @@ use super::scenario::{Scenario, StudyShape};
 use crate::geometry::ContactCase;
 use crate::output::float_token;
 use rayon::prelude::*;
-use std::fmt::Write;
 
 /// The header line of `bounds.csv` (without newline).
 pub const BOUNDS_HEADER: &str = "beta1_deg,beta2_deg,r1_m,r2_m,mu,eps,case,theta1_deg,theta2_deg,first_contact,end_closes,sigma_m,g_nn,g_nt,g_tt,kappa,varrho,lower,upper,lcp_agrees";
@@ -46,16 +45,7 @@ fn push_f(s: &mut String, x: f64) {
 
 /// Appends exactly the text of [`float_token`]`(x)`.
 pub fn push_token(s: &mut String, x: f64) {
-    let a = x.abs();
-    if a == 0.0 {
-        s.push('0');
-    } else if x.is_finite() && (1e-5..1e16).contains(&a) {
-        let _ = write!(s, "{x}");
-    } else if x.is_finite() {
-        let _ = write!(s, "{x:e}");
-    } else {
-        s.push_str(&float_token(x));
-    }
+    crate::output::push_float_token(s, x);
 }
 
 /// Reusable text pieces of `bounds.csv` rows: the θ tokens of the grid and the parameter prefix of the

@@ -343,19 +343,23 @@ fn scaling_to_a_level_gives_that_im_exactly() {
     }
 }
 
-#[test]
-fn a_record_with_zero_im_is_an_error_naming_it() {
-    let z = Record::uniform("zero", 0.01, vec![0.0; 10]).unwrap();
-    let set = RecordSet {
+/// A record set of the one entry `id` (one component).
+fn one_record_set(id: &str, x: Record) -> RecordSet {
+    RecordSet {
         name: String::new(),
         source: String::new(),
         records: vec![pounding::ground_motion::set::SetRecord {
-            id: "Z1".into(),
-            x: z,
+            id: id.into(),
+            x,
             y: None,
             meta: Vec::new(),
         }],
-    };
+    }
+}
+
+#[test]
+fn a_record_with_zero_im_is_an_error_naming_it() {
+    let set = one_record_set("Z1", Record::uniform("zero", 0.01, vec![0.0; 10]).unwrap());
     let spec = ImSpec {
         kind: ImKind::Pga,
         period: 1.0,
@@ -380,16 +384,7 @@ fn a_record_with_zero_im_is_an_error_naming_it() {
 #[test]
 fn a_scale_factor_that_overflows_a_record_is_an_error() {
     let r = Record::uniform("big", 0.01, vec![0.0, 3.0, -2.0, 1.0]).unwrap();
-    let set = RecordSet {
-        name: String::new(),
-        source: String::new(),
-        records: vec![pounding::ground_motion::set::SetRecord {
-            id: "B1".into(),
-            x: r,
-            y: None,
-            meta: Vec::new(),
-        }],
-    };
+    let set = one_record_set("B1", r);
     for kind in [ImKind::Pga, ImKind::Sa] {
         let spec = ImSpec {
             kind,

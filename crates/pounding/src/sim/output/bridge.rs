@@ -61,41 +61,41 @@ pub fn bridge_history_csv(setup: &BridgeSetup, sol: &BridgeSolution) -> String {
     let mut s = head.join(",");
     s.push('\n');
     let deg = |k: usize, v: Real| if k % 3 == 2 { v * DEG } else { v };
+    let mut row: Vec<Real> = Vec::with_capacity(head.len());
     for (r, &t) in sol.t.iter().enumerate() {
         let a = setup
             .problem
             .ground
             .accel(crate::sim::solver_time(t, sol.dt));
-        let mut row = vec![float_token(t), float_token(a.x), float_token(a.y)];
+        row.clear();
+        row.extend([t, a.x, a.y]);
         let q = &sol.q[3 * n * r..3 * n * (r + 1)];
         let u = &sol.u[3 * n * r..3 * n * (r + 1)];
-        row.extend(q.iter().enumerate().map(|(k, v)| float_token(deg(k, *v))));
-        row.extend(u.iter().enumerate().map(|(k, v)| float_token(deg(k, *v))));
-        row.extend(
-            sol.end_gaps[2 * nj * r..2 * nj * (r + 1)]
-                .iter()
-                .map(|g| float_token(*g)),
-        );
+        row.extend(q.iter().enumerate().map(|(k, v)| deg(k, *v)));
+        row.extend(u.iter().enumerate().map(|(k, v)| deg(k, *v)));
+        row.extend(&sol.end_gaps[2 * nj * r..2 * nj * (r + 1)]);
         if forces {
             let f = &sol.contact_force[2 * nj * r..2 * nj * (r + 1)];
-            row.extend(f.chunks(2).map(|c| float_token(c[0] + c[1])));
+            row.extend(f.chunks(2).map(|c| c[0] + c[1]));
         }
         for &side in &ab {
-            row.push(float_token(sol.abutment_gaps[r][side]));
+            row.push(sol.abutment_gaps[r][side]);
         }
         let e = &sol.energy[r];
-        row.extend(
-            [
-                e.input,
-                e.kinetic,
-                e.potential,
-                e.viscous,
-                e.contact,
-                e.elements,
-            ]
-            .map(float_token),
-        );
-        s.push_str(&row.join(","));
+        row.extend([
+            e.input,
+            e.kinetic,
+            e.potential,
+            e.viscous,
+            e.contact,
+            e.elements,
+        ]);
+        for (i, v) in row.iter().enumerate() {
+            if i > 0 {
+                s.push(',');
+            }
+            crate::output::push_float_token(&mut s, *v);
+        }
         s.push('\n');
     }
     s
