@@ -197,6 +197,14 @@ pub fn run(args: Args) -> Result<ExitCode> {
     for w in fits.rows.iter().flat_map(FragilityRow::interval_warnings) {
         eprintln!("warning: {w}");
     }
+    let warned = rows.iter().filter(|r| r.warnings > 0).count();
+    if warned > 0 {
+        eprintln!(
+            "warning: {warned} of {total} runs have warnings (a time step coarser than the \
+             record's samples, energy created at a contact, ...): the warnings column of \
+             runs.csv counts them; run one with `pounding simulate --record` to read them"
+        );
+    }
     if excluded > 0 {
         eprintln!(
             "error: {excluded} of {total} runs failed or are not trustworthy (status in runs.csv): \

@@ -121,6 +121,7 @@ fn fragility_end_to_end_counts_agree_and_bytes_do_not_depend_on_threads() {
             "seat_ratio",
             "impulse_exceeded",
             "impulse_ratio",
+            "warnings",
             "error"
         ]
     );
@@ -165,6 +166,27 @@ fn fragility_end_to_end_counts_agree_and_bytes_do_not_depend_on_threads() {
         let b = std::fs::read(d.join("two").join(f)).unwrap();
         assert!(a == b, "{f} differs between 1 and 2 threads");
     }
+}
+
+/// Hostile round 3 campaign (F8): a run's warnings reach a fragility user: a step of 0.02 s
+/// skips samples of the 0.01 s records, so every run has a warning, counted in runs.csv's
+/// `warnings` column and summarised on stderr (the same run through `simulate` warns too).
+#[test]
+fn fragility_runs_count_their_warnings() {
+    let d = study("warn", &SCENARIO.replace("dt = 2e-3", "dt = 2e-2"));
+    let (code, _, err) = run(&d, "w", "1");
+    assert_eq!(code, Some(0), "{err}");
+    assert!(err.contains("6 of 6 runs have warnings"), "{err}");
+    let runs = std::fs::read_to_string(d.join("w/runs.csv")).unwrap();
+    let mut lines = runs.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = head.iter().position(|h| *h == "warnings").unwrap();
+    for l in lines {
+        let n: usize = l.split(',').nth(col).unwrap().parse().unwrap();
+        assert!(n >= 1, "{l}");
+    }
+    let (code, _, err) = run(&d, "w2", "1");
+    assert_eq!(code, Some(0), "{err}");
 }
 
 fn refused(name: &str, scenario: &str, needle: &str) {

@@ -115,6 +115,9 @@ pub struct RunRow {
     pub status: String,
     /// The error message of a run that failed (empty otherwise).
     pub error: String,
+    /// The number of the run's warnings (as the same single run's `summary.json` lists them:
+    /// a coarse time step for the record, energy created at a contact, ...).
+    pub warnings: usize,
     /// Per limit state: exceeded (`None`: excluded) and the ratio demand / capacity.
     pub limits: Vec<(Option<bool>, Real)>,
 }
@@ -159,11 +162,12 @@ pub fn run_all(
                 q0: base.q0.clone(),
                 u0: base.u0.clone(),
             };
-            let (status, error, lim) = match simulate_bridge(&p, &settings) {
+            let (status, error, lim, warnings) = match simulate_bridge(&p, &settings) {
                 Err(err) => (
                     "error".to_string(),
                     err.to_string(),
                     vec![(None, Real::NAN); limits.len()],
+                    0,
                 ),
                 Ok(sol) => {
                     let ok = sol.status == SimStatus::Completed;
@@ -177,7 +181,11 @@ pub fn run_all(
                             }
                         })
                         .collect();
-                    (format!("{:?}", sol.status), String::new(), lim)
+                    let advice = sol.time_step_advice.as_ref();
+                    let warnings = crate::sim::output::input_warnings(&p.ground, sol.dt, advice)
+                        .len()
+                        + crate::sim::output::bridge_run_warnings(&sol).len();
+                    (format!("{:?}", sol.status), String::new(), lim, warnings)
                 }
             };
             progress();
@@ -189,6 +197,7 @@ pub fn run_all(
                 status,
                 error,
                 limits: lim,
+                warnings,
             }
         })
         .collect()
@@ -197,7 +206,8 @@ pub fn run_all(
 /// `runs.csv`: `record`, the metadata columns (sorted names), `level_g` (stripes) or `scale`
 /// (IDA), `im_g`, `scale_factor`, `status`, then per limit state `<name>_exceeded` (`true`,
 /// `false`, empty when excluded) and `<name>_ratio` (demand / capacity; `nan` when excluded),
-/// and `error` last (the message of a failed run).
+/// `warnings` (the number of the run's warnings) and `error` last (the message of a failed
+/// run).
 pub fn runs_csv(set: &RecordSet, plan: &Plan, limits: &[BoundLimit], rows: &[RunRow]) -> String {
     let meta = set.meta_keys();
     let mut head: Vec<String> = vec!["record".into()];
@@ -211,6 +221,7 @@ pub fn runs_csv(set: &RecordSet, plan: &Plan, limits: &[BoundLimit], rows: &[Run
         head.push(format!("{}_exceeded", l.state.name));
         head.push(format!("{}_ratio", l.state.name));
     }
+    head.push("warnings".into());
     head.push("error".into());
     let mut out = head.join(",") + "\n";
     for r in rows {
@@ -232,6 +243,7 @@ pub fn runs_csv(set: &RecordSet, plan: &Plan, limits: &[BoundLimit], rows: &[Run
             c.push(ex.map_or(String::new(), |b| b.to_string()));
             c.push(float_token(*ratio));
         }
+        c.push(r.warnings.to_string());
         c.push(csv_field(&r.error));
         out += &(c.join(",") + "\n");
     }

@@ -643,13 +643,14 @@ fn in_manifest(message: &str, csv: bool) -> String {
 
 /// The output columns of `runs.csv` that a metadata name must not repeat (a table reader would
 /// return one of the two columns silently).
-pub const RESERVED_COLUMNS: [&str; 7] = [
+pub const RESERVED_COLUMNS: [&str; 8] = [
     "record",
     "level_g",
     "scale",
     "im_g",
     "scale_factor",
     "status",
+    "warnings",
     "error",
 ];
 

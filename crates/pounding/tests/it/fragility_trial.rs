@@ -17,6 +17,7 @@ pub(crate) fn run(record: usize, stripe: usize, im: f64, ex: bool, ratio: f64) -
         status: "Completed".into(),
         error: String::new(),
         limits: vec![(Some(ex), ratio)],
+        warnings: 0,
     }
 }
 

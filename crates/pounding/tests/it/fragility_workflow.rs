@@ -461,6 +461,7 @@ fn row(stripe: usize, im: f64, ex: Option<bool>, ratio: f64) -> RunRow {
         status: "Completed".into(),
         error: String::new(),
         limits: vec![(ex, ratio)],
+        warnings: 0,
     }
 }
 
