@@ -372,8 +372,8 @@ impl ComponentInfo {
         (self.pga_g > PLAUSIBLE_PGA_G).then(|| {
             format!(
                 "record {} has a PGA of {} g as read in {}; check its units (a text record: \
-                 csv_units / --csv-units; an AT2 record: the units of its header, or csv_units / \
-                 --csv-units when the header names none)",
+                 csv_units / --csv-units, or its units in a record-set manifest; an AT2 record: \
+                 the units of its header, or those settings when the header names none)",
                 self.record,
                 fixed_or_exp(self.pga_g, 3),
                 self.units

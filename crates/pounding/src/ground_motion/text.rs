@@ -406,7 +406,8 @@ pub(super) fn units_disagree(what: &str, named: &str, factor: Real, units: Accel
         .find(|u| u.factor() == factor)
     {
         Some(u) => format!(
-            "set csv_units = \"{0}\" in [ground_motion] (or --csv-units {0}) to read it in {0}",
+            "set csv_units = \"{0}\" in [ground_motion] (or --csv-units {0}; in a record-set \
+             manifest, the entry's units = \"{0}\") to read it in {0}",
             u.name()
         ),
         None => "the text formats (CSV, columns, one column) are read in g or m/s2 only: convert \
@@ -415,7 +416,7 @@ pub(super) fn units_disagree(what: &str, named: &str, factor: Real, units: Accel
     };
     format!(
         "{what} names the units {named} but the record is read in {} (csv_units / \
-         --csv-units): {fix}",
+         --csv-units, or a manifest entry's units): {fix}",
         units.name()
     )
 }
