@@ -360,23 +360,26 @@ fn one_record_set(id: &str, x: Record) -> RecordSet {
 #[test]
 fn a_record_with_zero_im_is_an_error_naming_it() {
     let set = one_record_set("Z1", Record::uniform("zero", 0.01, vec![0.0; 10]).unwrap());
+    let e = plan_error(&set, ImKind::Pga, 1.0);
+    assert!(e.contains("Z1"), "{e}");
+}
+
+/// The error of the plan of `set` at one level of an IM of `kind`, the record along y times
+/// `scale_y`.
+fn plan_error(set: &RecordSet, kind: ImKind, scale_y: f64) -> String {
     let spec = ImSpec {
-        kind: ImKind::Pga,
+        kind,
         period: 1.0,
         damping: 0.05,
         pair: PairIm::GeoMean,
     };
-    let e = Plan::new(
-        &set,
-        &spec,
-        &Stripes::Levels(vec![0.1]),
-        &GroundMotion {
-            scale_y: 1.0,
-            ..GroundMotion::none()
-        },
-    )
-    .unwrap_err();
-    assert!(e.to_string().contains("Z1"), "{e}");
+    let ground = GroundMotion {
+        scale_y,
+        ..GroundMotion::none()
+    };
+    Plan::new(set, &spec, &Stripes::Levels(vec![0.1]), &ground)
+        .unwrap_err()
+        .to_string()
 }
 
 /// A scale factor that overflows a record (`scale_y = 1e308`) is an error naming the record and
@@ -386,23 +389,7 @@ fn a_scale_factor_that_overflows_a_record_is_an_error() {
     let r = Record::uniform("big", 0.01, vec![0.0, 3.0, -2.0, 1.0]).unwrap();
     let set = one_record_set("B1", r);
     for kind in [ImKind::Pga, ImKind::Sa] {
-        let spec = ImSpec {
-            kind,
-            period: 1.0,
-            damping: 0.05,
-            pair: PairIm::GeoMean,
-        };
-        let e = Plan::new(
-            &set,
-            &spec,
-            &Stripes::Levels(vec![0.1]),
-            &GroundMotion {
-                scale_y: -1e308,
-                ..GroundMotion::none()
-            },
-        )
-        .unwrap_err()
-        .to_string();
+        let e = plan_error(&set, kind, -1e308);
         assert!(
             e.contains("B1") && e.contains("scale_y") && e.contains("not finite"),
             "{e}"
