@@ -249,32 +249,55 @@ impl RigidStepper {
             b[i] = asm.gam_free[i] + eps(i) * asm.gam_pre[i].min(0.0);
             b[n + i] = asm.gam_free[n + i];
         }
+        // without friction at every active contact the tangential rows only say `P_T = 0`
+        // (with `μ = 0` the friction-cone rows are degenerate: a rounding-level tangential
+        // free velocity, e.g. from a yielding bearing's tangent, made Lemke fail on them)
+        if active.iter().all(|a| a.law.mu() == 0.0) {
+            let (z, ok, any) = self.frictionless(n, g, &b, &mu);
+            if !(ok || any) {
+                self.stats.lcp_failures += 1;
+            } else if !ok {
+                self.stats.lcp_enumeration_fallbacks += 1;
+            }
+            return (z, ok, any);
+        }
         let (mut z, ok, any) = solve_contact_lcp(n, &a, &b, &self.lemke);
         if !ok {
             if any {
                 self.stats.lcp_enumeration_fallbacks += 1;
             } else {
                 self.stats.lcp_failures += 1;
-                // frictionless fallback: LCP in P_N only
-                let mut a0 = vec![vec![0.0; m]; m];
-                let mut b0 = vec![0.0; m];
-                for i in 0..n {
-                    for j in 0..n {
-                        a0[i][j] = g[i][j];
-                    }
-                    b0[i] = b[i];
-                    // decouple the dummy rows: z = 0, w = 1
-                    a0[n + i][n + i] = 1.0;
-                    a0[2 * n + i][2 * n + i] = 1.0;
-                    b0[n + i] = 1.0;
-                    b0[2 * n + i] = 1.0;
-                }
-                let (z0, _, _) = solve_contact_lcp(n, &a0, &b0, &self.lemke);
-                z = z0;
-                for i in 0..n {
-                    z[n + i] = mu(i) * z[i]; // P_T = 0
-                }
+                z = self.frictionless(n, g, &b, &mu).0;
             }
+        }
+        (z, ok, any)
+    }
+
+    /// The frictionless LCP in `P_N` (`G_NN P_N + b_N ≥ 0`), with the tangential rows decoupled
+    /// (`z = 0`, `w = 1`); returns `z` with `P_TR = μ P_N`, i.e. `P_T = 0`, and `(ok, any)` as
+    /// [`solve_contact_lcp`].
+    fn frictionless(
+        &self,
+        n: usize,
+        g: &[Vec<Real>],
+        b: &[Real],
+        mu: &dyn Fn(usize) -> Real,
+    ) -> (Vec<Real>, bool, bool) {
+        let m = 3 * n;
+        let mut a0 = vec![vec![0.0; m]; m];
+        let mut b0 = vec![0.0; m];
+        for i in 0..n {
+            a0[i][..n].copy_from_slice(&g[i][..n]);
+            b0[i] = b[i];
+            // decouple the dummy rows: z = 0, w = 1
+            a0[n + i][n + i] = 1.0;
+            a0[2 * n + i][2 * n + i] = 1.0;
+            b0[n + i] = 1.0;
+            b0[2 * n + i] = 1.0;
+        }
+        let (mut z, ok, any) = solve_contact_lcp(n, &a0, &b0, &self.lemke);
+        for i in 0..n {
+            z[n + i] = mu(i) * z[i]; // P_T = 0
         }
         (z, ok, any)
     }
