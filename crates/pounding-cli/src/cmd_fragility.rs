@@ -77,7 +77,23 @@ fn read(args: &Args) -> Result<Study> {
     // text records of entries without `units` are read in the scenario's `csv_units`, as
     // `simulate --records` reads them
     let reading = scenario.override_reading(None)?;
-    let set = RecordSet::load_with_units(&set_path, reading.units, &reading.units_from)?;
+    let set =
+        RecordSet::load_with_units(&set_path, reading.units, &reading.units_from).map_err(|e| {
+            match (&args.set, e) {
+                // a manifest that cannot be read or has no known extension: name the key that gave it
+                (
+                    None,
+                    e @ (pounding::ground_motion::set::SetError::Read { .. }
+                    | pounding::ground_motion::set::SetError::Extension { .. }),
+                ) => anyhow::Error::from(pounding::assessment::AssessmentError::Key {
+                    message: e.to_string(),
+                    key: "fragility.records".into(),
+                    origin: scenario.origin().to_string(),
+                    line: settings.records_line,
+                }),
+                (_, e) => e.into(),
+            }
+        })?;
     for w in set_warnings(&set) {
         eprintln!("warning: {w}");
     }

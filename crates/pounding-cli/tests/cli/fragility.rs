@@ -219,11 +219,22 @@ fn fragility_bad_input_exits_2_and_writes_nothing() {
             "\"collapse\"",
             "limit_state[0].kind",
         ),
-        ("missing", "set.toml", "none.toml", "none.toml"),
+        (
+            "missing",
+            "set.toml",
+            "none.toml",
+            "none.toml: No such file or directory (os error 2) — `fragility.records` (/",
+        ),
         ("unknown", "seed = 3", "seed = 3\nstripes = 2", "stripes"),
     ] {
         refused(name, &SCENARIO.replace(from, to), needle);
     }
+    // the manifest of `[fragility] records` that cannot be read: named with that key's line
+    refused(
+        "missing-line",
+        &SCENARIO.replace("set.toml", "none.toml"),
+        "bridge.toml:23)",
+    );
     let two_deck = "[decks]\nshape = \"straight\"\n[fragility]\nrecords = \"set.toml\"\nlevels_g = [0.1]\n[[limit_state]]\nname = \"u\"\nkind = \"unseating\"\n";
     refused("twodeck", two_deck, "two-deck");
     // a record file named by the set that does not exist: the set's key and line, and the file

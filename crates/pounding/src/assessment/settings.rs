@@ -89,6 +89,8 @@ pub struct LimitState {
 pub struct FragilitySettings {
     /// The manifest, relative to the scenario's directory (`None`: not given).
     pub records: Option<PathBuf>,
+    /// The line of `records` in the scenario.
+    pub records_line: Option<usize>,
     /// The intensity measure.
     pub im: ImKind,
     /// The period of `Sa`.
@@ -303,6 +305,7 @@ impl FragilitySettings {
         let (stripes, bootstrap, seed, level, records) = Self::run_keys(cx, s)?;
         Ok(Self {
             records,
+            records_line: s.records.as_ref().and_then(|v| cx.line(v)),
             im,
             period,
             damping,
