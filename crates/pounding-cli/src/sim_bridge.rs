@@ -19,6 +19,7 @@ use std::time::Instant;
 /// Runs a bridge scenario (single run).
 pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
     let (origin, text) = (sc.origin().to_string(), sc.text().to_string());
+    pounding::assessment::FragilitySettings::check_if_present(&text, &origin)?;
     let sc = super::with_flags(sc, args);
     if !args.records.is_empty() {
         let reading = sc.override_reading(args.csv_units)?;

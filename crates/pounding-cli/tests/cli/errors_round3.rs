@@ -66,3 +66,37 @@ fn a_diverged_number_is_printed_in_exponent_form() {
     assert_eq!(bounded(0.02244, 4), "0.0224");
     assert_eq!(bounded(f64::INFINITY, 4), "inf");
 }
+
+/// Hostile round 3 campaign (F11): seat lengths and restrainer slack have the range other
+/// lengths have (9.2e18 m was accepted), and `simulate` of a scenario with a `[fragility]` table
+/// checks that table too (a typo in it went unnoticed until `fragility` ran).
+#[test]
+fn seat_lengths_and_fragility_tables_are_checked_by_simulate() {
+    let two = format!("{SEG}period_s = 1.0\n{SEG}period_s = 0.8\n");
+    refused(
+        "seat",
+        &format!("[bridge]\nseat_length = 9.2e18\n{two}"),
+        &[
+            "bridge.seat_length = 9.2e18",
+            "(0, 1e3] m",
+            "s.toml:2",
+        ],
+    );
+    refused(
+        "outer",
+        &format!("[bridge]\nouter_seat_length = 2e3\n{two}"),
+        &["bridge.outer_seat_length", "s.toml:2"],
+    );
+    refused(
+        "slack",
+        &format!("[bridge]\nrestrainer_k = 1e7\nrestrainer_slack = 9.2e18\n{two}"),
+        &["restrainer_slack", "[0, 1e3] m"],
+    );
+    refused(
+        "fragility",
+        &format!(
+            "{two}[fragility]\nrecords = \"set.toml\"\nlevels_g = [0.1]\nbootstrap = \"many\"\n"
+        ),
+        &["bootstrap"],
+    );
+}

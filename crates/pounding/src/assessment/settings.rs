@@ -173,6 +173,19 @@ impl Cx<'_> {
 }
 
 impl FragilitySettings {
+    /// Checks the `[fragility]` and `[[limit_state]]` tables of a scenario that has a
+    /// `[fragility]` table (a run of it by `simulate` does not use them, but must not leave a
+    /// typo in them unnoticed); `Ok` when there is none.
+    pub fn check_if_present(text: &str, origin: &str) -> Result<(), AssessmentError> {
+        let has = toml::from_str::<toml::Table>(text)
+            .map(|t| t.contains_key("fragility"))
+            .unwrap_or(false);
+        if has {
+            Self::from_scenario(text, origin)?;
+        }
+        Ok(())
+    }
+
     /// Reads `[fragility]` and `[[limit_state]]` from the scenario `text` named `origin`.
     pub fn from_scenario(text: &str, origin: &str) -> Result<Self, AssessmentError> {
         let f: File = toml::from_str(text).map_err(|e| AssessmentError::Syntax {

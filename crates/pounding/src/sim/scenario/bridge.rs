@@ -213,6 +213,10 @@ impl Val<'_> {
     fn dim(&self, key: String, x: &Sp<f64>, d: Option<f64>) -> Result<f64, ScenarioError> {
         self.num(key, x, d, dimension, "must lie in [1e-3, 1e5] m")
     }
+    /// [`Val::num`] of a seat length (above 0, at most 1 km).
+    fn seat(&self, key: String, x: &Sp<f64>, d: Option<f64>) -> Result<f64, ScenarioError> {
+        self.num(key, x, d, |x| x > 0.0 && x <= 1e3, "must lie in (0, 1e3] m")
+    }
     /// [`Val::num`] of a gap (0 … 1 km).
     fn gap(&self, key: String, x: &Sp<f64>, d: Option<f64>) -> Result<f64, ScenarioError> {
         self.num(key, x, d, short, "must lie in [0, 1e3] m")
@@ -303,11 +307,11 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
             ));
         }
     };
-    let outer_seat_length = v.pos(bk("outer_seat_length"), &b.outer_seat_length, Some(0.4))?;
+    let outer_seat_length = v.seat(bk("outer_seat_length"), &b.outer_seat_length, Some(0.4))?;
     let d_gap = v.gap(bk("gap"), &b.gap, Some(0.05))?;
     let d_mu = v.nonneg(bk("mu"), &b.mu, Some(0.5))?;
     let d_eps = v.unit(bk("eps_n"), &b.eps_n, Some(0.5))?;
-    let d_seat = v.pos(bk("seat_length"), &b.seat_length, Some(0.4))?;
+    let d_seat = v.seat(bk("seat_length"), &b.seat_length, Some(0.4))?;
     if raw.segment.is_empty() {
         // `segment = []`: name the line that says so
         let line = v
@@ -455,7 +459,7 @@ fn sites(
         let gap = v.gap(jk("gap"), &j.gap, Some(d.gap))?;
         let friction = v.nonneg(jk("mu"), &j.mu, Some(d.mu))?;
         let restitution = v.unit(jk("eps_n"), &j.eps_n, Some(d.eps_n))?;
-        let seat_length = v.pos(jk("seat_length"), &j.seat_length, Some(d.seat_length))?;
+        let seat_length = v.seat(jk("seat_length"), &j.seat_length, Some(d.seat_length))?;
         let restrainers = restrainer(v, k, j, &raw.bridge)?;
         joints.push(Joint {
             gap,
@@ -480,7 +484,7 @@ fn sites(
         let m = masses[if side == 0 { 0 } else { n - 1 }];
         abutments[side] = Some(BridgeAbutment {
             gap: v.gap(ak("gap"), &a.gap, Some(d.gap))?,
-            seat_length: v.pos(ak("seat_length"), &a.seat_length, Some(d.seat_length))?,
+            seat_length: v.seat(ak("seat_length"), &a.seat_length, Some(d.seat_length))?,
             friction: v.nonneg(ak("mu"), &a.mu, Some(d.mu))?,
             restitution,
             contact: contact_for(&contacts[next], restitution, [2.0 * m, 2.0 * m])?,
@@ -725,7 +729,7 @@ fn restrainer(
         return Ok(Vec::new());
     }
     let k_ = v.pos(kk, &rk, None)?;
-    let slack = v.nonneg(ks, &rs, Some(0.0))?;
+    let slack = v.gap(ks, &rs, Some(0.0))?;
     let fy = match rf {
         Some(_) => Some(v.pos(kf, &rf, None)?),
         None => None,
