@@ -170,7 +170,7 @@ fn bad_bridges_name_the_key_and_line_and_write_nothing() {
         (
             "[abutment.end]\ngap = 0.04",
             "[abutment.end]\ngap = 0.04\nseat_length = -1.0",
-            &["abutment.end.seat_length", "must be > 0"],
+            &["abutment.end.seat_length", "must lie in (0, 1e3] m"],
         ),
         // hostile-trial findings
         (
