@@ -178,6 +178,24 @@ fn execute<P: BatchProblem>(
     settings: &SimSettings,
 ) -> Result<(Vec<BatchRow<P::Outcome>>, f64)> {
     let t_runs = Instant::now();
+    // without a terminal the bar is hidden: say once how long a long batch will take, as a
+    // single run does (`time_estimate`)
+    let said = std::sync::atomic::AtomicBool::new(!plan.pb.is_hidden());
+    let progress = |n: usize| {
+        plan.pb.inc(n as u64);
+        let (done, total) = (plan.pb.position(), plan.pb.length().unwrap_or(0));
+        let elapsed = t_runs.elapsed().as_secs_f64();
+        if done == 0 || elapsed < 2.0 || said.load(std::sync::atomic::Ordering::Relaxed) {
+            return;
+        }
+        let rest = elapsed * total.saturating_sub(done) as f64 / done as f64;
+        if rest > 30.0 && !said.swap(true, std::sync::atomic::Ordering::Relaxed) {
+            eprintln!(
+                "note: {done} of {total} runs in {elapsed:.0} s; at the rate so far the batch \
+                 needs about {rest:.0} s more"
+            );
+        }
+    };
     let rows = plan
         .pool
         .install(|| {
@@ -187,7 +205,7 @@ fn execute<P: BatchProblem>(
                 &plan.records,
                 &plan.scales,
                 plan.shard,
-                &|n| plan.pb.inc(n as u64),
+                &progress,
             )
         })
         .map_err(|e| anyhow!("{e}"))?;

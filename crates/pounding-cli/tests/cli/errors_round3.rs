@@ -76,11 +76,7 @@ fn seat_lengths_and_fragility_tables_are_checked_by_simulate() {
     refused(
         "seat",
         &format!("[bridge]\nseat_length = 9.2e18\n{two}"),
-        &[
-            "bridge.seat_length = 9.2e18",
-            "(0, 1e3] m",
-            "s.toml:2",
-        ],
+        &["bridge.seat_length = 9.2e18", "(0, 1e3] m", "s.toml:2"],
     );
     refused(
         "outer",
