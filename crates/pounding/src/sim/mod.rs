@@ -64,6 +64,7 @@ pub mod compliance;
 pub mod contact;
 mod driver;
 mod elements;
+mod integrate;
 mod mixed;
 pub mod model;
 mod observer;
@@ -930,7 +931,8 @@ pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolut
     // the bridge orders each segment's seats start, end; deck 1's start is its far end
     view.seats.swap(0, 1);
     let initial = (problem.q0.as_slice(), problem.u0.as_slice());
-    let (result, scheme, _) = bridge::integrate(&model, &view, &problem.ground, initial, settings)?;
+    let (result, scheme, _) =
+        integrate::integrate(&model, &view, &problem.ground, initial, settings)?;
     Ok(driver::pair_solution(result, &scheme))
 }
 

@@ -15,17 +15,7 @@ fn close(a: f64, b: f64, tol: f64) {
 /// 0.03995 m, ε_s = 2 d_g/600, d_eg = 50 ε_s = 6.658 mm, l_ov = 400 + 6.658 + 100 = 506.66 mm.
 #[test]
 fn ec8_overlap_length_of_the_worked_example() {
-    let r = ec8_seat(&Ec8Seat {
-        ground: GroundType::A,
-        spectrum: SpectrumType::Type1,
-        a_gr: 2.35,
-        importance_class: 1,
-        l_eff: 50.0,
-        d_ed: 0.100,
-        l_m: 0.40,
-        near_fault_factor: 1.0,
-    })
-    .unwrap();
+    let r = ec8_seat(&example()).unwrap();
     close(r.l_ov * 1e3, 506.66, 0.01);
     close(r.d_g, 0.03995, 1e-12);
     // d_eg is capped at 2 d_g for a long L_eff (§6.6.4(3)).
