@@ -616,22 +616,21 @@ pub fn check_study(study: &pounding::study::Study) {
 /// Oracle of a finished rigid or compliance run that ended `Completed` or
 /// `CompletedWithLcpFailures` (callers filter): every history sample, impact record and summary
 /// number is finite and every normal impulse `≥ 0`. Panics on failure.
-pub fn check_sim(sol: &pounding::sim::SimSolution) {
-    let h = &sol.history;
+pub fn check_sim(sol: &pounding::sim::bridge::BridgeSolution) {
     let fin = |x: f64| x.is_finite();
-    assert!(h.t.iter().copied().all(fin), "time not finite");
+    assert!(sol.t.iter().copied().all(fin), "time not finite");
     assert!(
-        h.q.iter().flatten().copied().all(fin),
+        sol.q.iter().copied().all(fin),
         "{:?} with non-finite q",
         sol.status
     );
     assert!(
-        h.u.iter().flatten().copied().all(fin),
+        sol.u.iter().copied().all(fin),
         "{:?} with non-finite u",
         sol.status
     );
-    assert!(h.slip.iter().copied().all(fin), "non-finite slip");
-    for e in &h.energy {
+    assert!(sol.slip.iter().copied().all(fin), "non-finite slip");
+    for e in &sol.energy {
         for x in [e.input, e.kinetic, e.potential, e.viscous, e.contact] {
             assert!(
                 x.is_finite(),
@@ -660,17 +659,16 @@ pub fn check_sim(sol: &pounding::sim::SimSolution) {
     }
     let s = &sol.summary;
     let mut v = vec![
-        s.peak_joint_closing,
-        s.peak_joint_opening,
-        s.peak_slip,
         s.peak_seat_displacement,
-        s.max_penetration,
         s.energy_balance_error,
         s.max_input_energy,
         s.peak_penetration,
     ];
-    v.extend(s.peak_rotation);
-    v.extend(s.peak_seat_by_end);
+    for j in &s.joints {
+        v.extend([j.peak_closing, j.peak_opening, j.peak_slip]);
+    }
+    v.extend(s.segments.iter().map(|g| g.peak_rotation));
+    v.extend(s.seats.iter().map(|e| e.peak_displacement));
     for (k, x) in v.iter().enumerate() {
         assert!(
             x.is_finite(),

@@ -19,9 +19,10 @@ use crate::cmd_simulate;
 use anyhow::{Context, Result, anyhow, bail};
 use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
+use pounding::sim::bridge::BridgeSolution;
 use pounding::sim::output::{COMPARE_OUTPUTS, compare_csv, compare_table};
 use pounding::sim::scenario::{Scenario, SimSetup};
-use pounding::sim::{SimSolution, simulate};
+use pounding::sim::simulate;
 use serde_json::json;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -52,7 +53,7 @@ pub struct Args {
 /// One law's run.
 struct Run {
     law: String,
-    sol: SimSolution,
+    sol: BridgeSolution,
     secs: f64,
     gap0: Real,
 }
@@ -214,7 +215,8 @@ fn run_laws(laws: &[String], setups: &[SimSetup]) -> Result<Vec<Run>> {
 fn write_outputs(out: &Path, runs: &[Run], t_start: Instant) -> Result<()> {
     let lock = pounding::output::lock_output_dir(out)?;
     pounding::output::remove_previous_outputs(&lock, COMPARE_OUTPUTS)?;
-    let rows: Vec<(&str, &SimSolution)> = runs.iter().map(|r| (r.law.as_str(), &r.sol)).collect();
+    let rows: Vec<(&str, &BridgeSolution)> =
+        runs.iter().map(|r| (r.law.as_str(), &r.sol)).collect();
     let wr = |name: &str, bytes: &[u8]| {
         write_atomic(&out.join(name), bytes)
             .with_context(|| format!("cannot write {}", out.join(name).display()))

@@ -276,8 +276,8 @@ pub fn run(args: Args) -> Result<ExitCode> {
         sol.steps,
         sim_secs * 1e3,
         s.impacts,
-        pounding::output::bounded(s.peak_joint_closing, 4),
-        pounding::output::bounded(s.peak_joint_opening, 4),
+        pounding::output::bounded(s.joints[0].peak_closing, 4),
+        pounding::output::bounded(s.joints[0].peak_opening, 4),
         pounding::output::bounded(s.peak_seat_displacement, 4),
         match s.unseating_time {
             Some(t) => format!(" (UNSEATED at {} s)", pounding::output::bounded(t, 3)),
@@ -286,7 +286,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
         s.energy_balance_error,
         out.display()
     );
-    if let Some(f) = s.peak_contact_force {
+    if let Some(f) = s.joints[0].peak_contact_force {
         eprintln!(
             "contact law {}: peak contact force {} MN, peak penetration {} mm",
             describe_contact(&setup.problem.model.contact)["law"],

@@ -16,9 +16,7 @@ use pounding::ground_motion::{ComponentInfo, G0, ReadOptions, Record};
 use pounding::math::Real;
 use pounding::output::write_atomic;
 use pounding::shard::Shard;
-use pounding::sim::batch::{
-    BatchOutcome, BatchProblem, BatchRecord, BatchRow, BridgeBatchOutcome, run_batch,
-};
+use pounding::sim::batch::{BatchOutcome, BatchProblem, BatchRecord, BatchRow, run_batch};
 use pounding::sim::output::{batch_csv, bridge_batch_csv};
 use pounding::sim::scenario::BridgeSetup;
 use pounding::sim::{SimProblem, SimSettings, SimStatus};
@@ -148,15 +146,7 @@ pub fn run(
 ) -> Result<ExitCode> {
     let plan = plan(args, reading)?;
     let (rows, runs_secs) = execute(&plan, base, settings)?;
-    let curves = curves(&plan.records, &rows, |m: &BatchOutcome| {
-        let m = &m.summary;
-        [
-            m.peak_seat_displacement,
-            m.peak_joint_opening,
-            m.peak_rotation[0].max(m.peak_rotation[1]) * DEG,
-            m.impacts as Real,
-        ]
-    });
+    let curves = curves(&plan.records, &rows);
     write_outputs(
         args,
         &plan,
@@ -165,9 +155,7 @@ pub fn run(
         base.model.seat_length,
         (rows.len(), runs_secs, t_start),
     )?;
-    Ok(report(&rows, runs_secs, &args.out, |o| {
-        (o.status, o.summary.unseated, o.warnings)
-    }))
+    Ok(report(&rows, runs_secs, &args.out))
 }
 
 /// Runs the plan's batch of `base` on its pool with its progress bar: the rows and the seconds
@@ -176,7 +164,7 @@ fn execute<P: BatchProblem>(
     plan: &Plan,
     base: &P,
     settings: &SimSettings,
-) -> Result<(Vec<BatchRow<P::Outcome>>, f64)> {
+) -> Result<(Vec<BatchRow>, f64)> {
     let t_runs = Instant::now();
     // without a terminal the bar is hidden: say once how long a long batch will take, as a
     // single run does (`time_estimate`)
@@ -226,16 +214,7 @@ pub fn run_bridge(
     let plan = plan(args, reading)?;
     let base = &setup.problem;
     let (rows, runs_secs) = execute(&plan, base, &setup.settings)?;
-    let curves = curves(&plan.records, &rows, |o: &BridgeBatchOutcome| {
-        let m = &o.summary;
-        let max = |v: &mut dyn Iterator<Item = Real>| v.fold(Real::NAN, Real::max);
-        [
-            m.peak_seat_displacement,
-            max(&mut m.joints.iter().map(|j| j.peak_opening)),
-            max(&mut m.segments.iter().map(|g| g.peak_rotation)) * DEG,
-            m.impacts as Real,
-        ]
-    });
+    let curves = curves(&plan.records, &rows);
     let model = &base.model;
     let seat = model
         .joints
@@ -256,17 +235,22 @@ pub fn run_bridge(
         seat,
         (rows.len(), runs_secs, t_start),
     )?;
-    Ok(report(&rows, runs_secs, &args.out, |o| {
-        (o.status, o.summary.unseated, o.warnings)
-    }))
+    Ok(report(&rows, runs_secs, &args.out))
 }
 
-/// The curves of `batch.png`: per record, the peak responses of its completed runs against PGA.
-fn curves<O>(
-    records: &[BatchRecord],
-    rows: &[BatchRow<O>],
-    values: impl Fn(&O) -> [Real; 4],
-) -> Vec<BatchCurve> {
+/// The curves of `batch.png`: per record, the peak responses of its completed runs against PGA
+/// (the largest seat displacement, the largest joint opening and segment rotation, the impacts).
+fn curves(records: &[BatchRecord], rows: &[BatchRow]) -> Vec<BatchCurve> {
+    let values = |o: &BatchOutcome| {
+        let m = &o.summary;
+        let max = |v: &mut dyn Iterator<Item = Real>| v.fold(Real::NAN, Real::max);
+        [
+            m.peak_seat_displacement,
+            max(&mut m.joints.iter().map(|j| j.peak_opening)),
+            max(&mut m.segments.iter().map(|g| g.peak_rotation)) * DEG,
+            m.impacts as Real,
+        ]
+    };
     records
         .iter()
         .enumerate()
@@ -290,14 +274,9 @@ fn curves<O>(
 }
 
 /// Prints the batch's summary and errors; exit code 1 when a run failed or is not trustworthy.
-/// `status(o)` is a run's status, whether it unseated and its number of warnings.
-fn report<O>(
-    rows: &[BatchRow<O>],
-    runs_secs: f64,
-    out: &Path,
-    status: impl Fn(&O) -> (SimStatus, bool, usize),
-) -> ExitCode {
-    let failed: Vec<&BatchRow<O>> = rows.iter().filter(|r| r.outcome.is_err()).collect();
+fn report(rows: &[BatchRow], runs_secs: f64, out: &Path) -> ExitCode {
+    let status = |o: &BatchOutcome| (o.status, o.summary.unseated, o.warnings);
+    let failed: Vec<&BatchRow> = rows.iter().filter(|r| r.outcome.is_err()).collect();
     let unseated = rows
         .iter()
         .filter(|r| r.outcome.as_ref().is_ok_and(|o| status(o).1))
@@ -324,7 +303,7 @@ fn report<O>(
         );
     }
     // runs that finished but are not trustworthy (diverged, LCP/law-check or Newton failures)
-    let untrusted: Vec<(&BatchRow<O>, SimStatus)> = rows
+    let untrusted: Vec<(&BatchRow, SimStatus)> = rows
         .iter()
         .filter_map(|r| r.outcome.as_ref().ok().map(|o| (r, status(o).0)))
         .filter(|(_, st)| *st != SimStatus::Completed)

@@ -28,7 +28,8 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use pounding::analytic::SlipMode;
 use pounding::math::Real;
-use pounding::sim::{SimProblem, SimSolution};
+use pounding::sim::SimProblem;
+use pounding::sim::bridge::BridgeSolution;
 use std::path::Path;
 
 pub use crate::plots::sim_batch::{BatchCurve, batch_plot};
@@ -49,12 +50,12 @@ fn save(
 const DEG: Real = 180.0 / std::f64::consts::PI;
 
 /// Writes all plots into `out`.
-pub fn write_all(out: &Path, problem: &SimProblem, sol: &SimSolution) -> R {
+pub fn write_all(out: &Path, problem: &SimProblem, sol: &BridgeSolution) -> R {
     register();
     let c = Hist {
         problem,
         sol,
-        t_end: sol.history.t.last().copied().unwrap_or(1.0).max(1e-9),
+        t_end: sol.t.last().copied().unwrap_or(1.0).max(1e-9),
     };
 
     save(out, "displacements.png", (1400, 1050), |root| {
@@ -87,7 +88,7 @@ pub fn write_all(out: &Path, problem: &SimProblem, sol: &SimSolution) -> R {
 #[derive(Clone, Copy)]
 struct Hist<'a> {
     problem: &'a SimProblem,
-    sol: &'a SimSolution,
+    sol: &'a BridgeSolution,
     /// End of the time axis \[s\].
     t_end: Real,
 }
@@ -95,7 +96,7 @@ struct Hist<'a> {
 impl Hist<'_> {
     /// `(t, f(step))` over the history.
     fn col(&self, f: &dyn Fn(usize) -> Real) -> Vec<(Real, Real)> {
-        let t = &self.sol.history.t;
+        let t = &self.sol.t;
         (0..t.len()).map(|i| (t[i], f(i))).collect()
     }
 }
@@ -107,10 +108,9 @@ fn displacements(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
         sol,
         t_end,
     } = *c;
-    let h = &sol.history;
     let col = |f: &dyn Fn(usize) -> Real| c.col(f);
     let areas = root.split_evenly((3, 1));
-    let ag: Vec<_> = h.t.iter().map(|&t| problem.ground.accel(t)).collect();
+    let ag: Vec<_> = sol.t.iter().map(|&t| problem.ground.accel(t)).collect();
     line_panel(
         &areas[0],
         "Ground acceleration (positive: ground accelerates toward +x / +y)",
@@ -144,12 +144,12 @@ fn displacements(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
             &[
                 Series {
                     label: &format!("y{} (normal to joint)", j + 1),
-                    pts: col(&|i| h.q[i][o + 1]),
+                    pts: col(&|i| sol.q_row(i)[o + 1]),
                     color: BLUE,
                 },
                 Series {
                     label: &format!("x{} (along joint)", j + 1),
-                    pts: col(&|i| h.q[i][o]),
+                    pts: col(&|i| sol.q_row(i)[o]),
                     color: ORANGE,
                 },
             ],
@@ -163,7 +163,6 @@ fn displacements(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
 /// `rotations.png`.
 fn rotations(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
     let Hist { sol, t_end, .. } = *c;
-    let h = &sol.history;
     let col = |f: &dyn Fn(usize) -> Real| c.col(f);
     line_panel(
         root,
@@ -173,12 +172,12 @@ fn rotations(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
         &[
             Series {
                 label: "θ1 (deck 1)",
-                pts: col(&|i| h.q[i][2] * DEG),
+                pts: col(&|i| sol.q_row(i)[2] * DEG),
                 color: BLUE,
             },
             Series {
                 label: "θ2 (deck 2)",
-                pts: col(&|i| h.q[i][5] * DEG),
+                pts: col(&|i| sol.q_row(i)[5] * DEG),
                 color: RED,
             },
         ],
@@ -194,7 +193,6 @@ fn joint_gap(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
         sol,
         t_end,
     } = *c;
-    let h = &sol.history;
     let col = |f: &dyn Fn(usize) -> Real| c.col(f);
     let g = problem.model.gap;
     let w = problem.model.deck_bodies()[0].half_face;
@@ -209,12 +207,12 @@ fn joint_gap(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
         &[
             Series {
                 label: &format!("end x = +{w} m (deck1-inner / deck2-outer)"),
-                pts: col(&|i| h.end_gaps[i][0]),
+                pts: col(&|i| sol.end_gaps_row(i)[0]),
                 color: BLUE,
             },
             Series {
                 label: &format!("end x = −{w} m (deck1-outer / deck2-inner)"),
-                pts: col(&|i| h.end_gaps[i][1]),
+                pts: col(&|i| sol.end_gaps_row(i)[1]),
                 color: RED,
             },
         ],
@@ -231,7 +229,6 @@ fn abutment_gap(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
         sol,
         t_end,
     } = *c;
-    let h = &sol.history;
     let col = |f: &dyn Fn(usize) -> Real| c.col(f);
     let mut series = Vec::new();
     let mut lines = vec![(0.0, "contact", BLACK)];
@@ -242,7 +239,7 @@ fn abutment_gap(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
             let c = if j == 0 { BLUE } else { RED };
             series.push(Series {
                 label: labels[j],
-                pts: col(&|i| h.abutment_gaps[i][j]),
+                pts: col(&|i| sol.abutment_gaps[i][j]),
                 color: c,
             });
             lines.push((a.gap, gap_labels[j], c));
@@ -252,7 +249,7 @@ fn abutment_gap(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
         root,
         &format!(
             "Gap between far end faces and abutments (smaller of the two corners; {} impacting contacts)",
-            sol.summary.abutment_impacting_contacts
+            sol.abutment_impacting_contacts()
         ),
         "gap [m]",
         t_end,
@@ -345,13 +342,12 @@ fn impulses(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
 /// `energy.png`.
 fn energy(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
     let Hist { sol, t_end, .. } = *c;
-    let h = &sol.history;
     energy_panel(
         root,
         sol.summary.energy_balance_error,
         t_end,
-        &h.t,
-        &h.energy,
+        &sol.t,
+        &sol.energy,
         false,
     )
 }

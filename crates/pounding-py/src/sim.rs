@@ -15,7 +15,7 @@ use pounding::sim::output as so;
 use pounding::sim::scenario::{
     BridgeSetup, DEFAULT_SCENARIO_TOML, ParamKey, Scenario, Section, SimSetup,
 };
-use pounding::sim::{SimSettings, SimSolution, SimStatus, simulate};
+use pounding::sim::{SimSettings, SimStatus, simulate};
 use pyo3::prelude::*;
 use std::path::{Path, PathBuf};
 
@@ -89,9 +89,19 @@ impl Flags {
     }
 }
 
+/// A run: the scenario as read (the two-deck form or a bridge's, which name the files' columns)
+/// and the one solution type of both.
 enum Run {
-    TwoDecks(Box<SimSetup>, Box<SimSolution>),
+    TwoDecks(Box<SimSetup>, Box<BridgeSolution>),
     Bridge(Box<BridgeSetup>, Box<BridgeSolution>),
+}
+
+impl Run {
+    fn solution(&self) -> &BridgeSolution {
+        match self {
+            Run::TwoDecks(_, r) | Run::Bridge(_, r) => r,
+        }
+    }
 }
 
 /// The result of one simulation, kept in Rust: the summary, tables and histories are made on
@@ -167,11 +177,9 @@ impl SimRun {
         &self,
         py: Python<'py>,
     ) -> PyResult<Vec<(String, Vec<String>, Bound<'py, PyArray2<f64>>)>> {
-        let tables = match &self.run {
-            Run::TwoDecks(_, r) => &r.tables,
-            Run::Bridge(_, r) => &r.tables,
-        };
-        tables
+        self.run
+            .solution()
+            .tables
             .iter()
             .map(|t| {
                 let heads: Vec<String> = t.columns.iter().map(|c| c.header()).collect();
@@ -187,22 +195,17 @@ impl SimRun {
     /// How the run ended (`Completed`, `Diverged`, ... as in summary.json).
     #[getter]
     fn status(&self) -> String {
-        let s: SimStatus = match &self.run {
-            Run::TwoDecks(_, r) => r.status,
-            Run::Bridge(_, r) => r.status,
-        };
+        let s: SimStatus = self.run.solution().status;
         format!("{s:?}")
     }
     /// The CLI's warnings of the run (energy created at a contact, a time step too coarse).
     fn warnings(&self) -> Vec<String> {
-        let (w, advice, dt) = match &self.run {
-            Run::TwoDecks(_, r) => (so::run_warnings(r), r.time_step_advice.as_ref(), r.dt),
-            Run::Bridge(_, r) => (
-                so::bridge_run_warnings(r),
-                r.time_step_advice.as_ref(),
-                r.dt,
-            ),
+        let w = match &self.run {
+            Run::TwoDecks(_, r) => so::run_warnings(r),
+            Run::Bridge(_, r) => so::bridge_run_warnings(r),
         };
+        let sol = self.run.solution();
+        let (advice, dt) = (sol.time_step_advice.as_ref(), sol.dt);
         let mut out: Vec<String> = so::warnings_message(&w).into_iter().collect();
         if let Some(a) = advice.filter(|a| !a.adequate) {
             out.push(format!(
@@ -357,10 +360,9 @@ fn batch_rows<P>(
     settings: SimSettings,
     list: Vec<BatchRecord>,
     scales: Vec<f64>,
-) -> PyResult<Vec<BatchRow<P::Outcome>>>
+) -> PyResult<Vec<BatchRow>>
 where
     P: BatchProblem + Send + 'static,
-    P::Outcome: 'static,
 {
     crate::interruptible(py, move || {
         pool.install(|| run_batch(&problem, &settings, &list, &scales, Shard::ALL, &|_| {}))

@@ -50,24 +50,26 @@ fn color_of(law: &str) -> RGBColor {
 type Pts = Vec<(Real, Real)>;
 
 fn series(r: &Run) -> (Pts, Pts) {
-    let h = &r.sol.history;
-    let gap =
-        h.t.iter()
-            .zip(&h.end_gaps)
-            .map(|(t, g)| {
-                let m = g
-                    .iter()
-                    .copied()
-                    .filter(|x| x.is_finite())
-                    .fold(Real::INFINITY, Real::min);
-                (*t, if m.is_finite() { m } else { Real::NAN })
-            })
-            .collect();
-    let force =
-        h.t.iter()
-            .zip(&h.contact_force)
-            .map(|(t, f)| (*t, (f[0] + f[1]) / 1e6))
-            .collect();
+    let sol = &r.sol;
+    let gap = sol
+        .t
+        .iter()
+        .zip(sol.end_gaps.chunks_exact(2))
+        .map(|(t, g)| {
+            let m = g
+                .iter()
+                .copied()
+                .filter(|x| x.is_finite())
+                .fold(Real::INFINITY, Real::min);
+            (*t, if m.is_finite() { m } else { Real::NAN })
+        })
+        .collect();
+    let force = sol
+        .t
+        .iter()
+        .zip(sol.contact_force.chunks_exact(2))
+        .map(|(t, f)| (*t, (f[0] + f[1]) / 1e6))
+        .collect();
     (gap, force)
 }
 
@@ -179,7 +181,7 @@ pub(super) fn plots(out: &Path, runs: &[Run]) -> R {
     register();
     let t_end = runs
         .iter()
-        .filter_map(|r| r.sol.history.t.last().copied())
+        .filter_map(|r| r.sol.t.last().copied())
         .fold(0.0, Real::max)
         .max(1e-9);
     let zoom = zoom_window(runs);

@@ -20,7 +20,7 @@
 //! ([`BatchRow::outcome`]) and every other run is still done.
 
 use super::bridge::{BridgeProblem, BridgeSolution, BridgeSummary, simulate_bridge};
-use super::{SimError, SimProblem, SimSettings, SimSolution, SimStatus, SimSummary, simulate};
+use super::{SimError, SimProblem, SimSettings, SimStatus, simulate};
 use crate::ground_motion::{GroundMotion, Record};
 use crate::math::Real;
 use rayon::prelude::*;
@@ -37,14 +37,13 @@ pub struct BatchRecord {
     pub record: Result<Record, String>,
 }
 
-/// What one run produced: `S` is the run's summary ([`SimSummary`] for the two-deck model,
-/// [`BridgeSummary`] for a bridge, [`BridgeBatchOutcome`]).
+/// What one run produced (of the two-deck model or a bridge: both are bridges).
 #[derive(Debug, Clone, PartialEq)]
-pub struct BatchOutcome<S = SimSummary> {
+pub struct BatchOutcome {
     /// How the run ended.
     pub status: SimStatus,
     /// Peaks, unseating and energies (as in a single run).
-    pub summary: S,
+    pub summary: BridgeSummary,
     /// Impacting contacts (the rows of a single run's `impacts.csv`).
     pub impacting_contacts: usize,
     /// Steps taken.
@@ -66,28 +65,9 @@ pub struct BatchOutcome<S = SimSummary> {
     pub warnings: usize,
 }
 
-impl From<SimSolution> for BatchOutcome {
-    fn from(s: SimSolution) -> Self {
-        Self {
-            status: s.status,
-            impacting_contacts: s.impacts.len(),
-            summary: s.summary,
-            steps: s.steps,
-            dt: s.dt,
-            lcp_solves: s.lcp_solves,
-            lcp_enumeration_fallbacks: s.lcp_enumeration_fallbacks,
-            lcp_failures: s.lcp_failures,
-            newton_failures: s.newton_failures,
-            time_step_advice: s.time_step_advice,
-            warnings: 0,
-        }
-    }
-}
-
-/// One row of a batch (one run): `O` is what a run produced ([`BatchOutcome`] for the two-deck
-/// model, [`BridgeBatchOutcome`] for a bridge).
+/// One row of a batch (one run).
 #[derive(Debug, Clone, PartialEq)]
-pub struct BatchRow<O = BatchOutcome> {
+pub struct BatchRow {
     /// Global run index `i = record_index · (number of scales) + scale_index`.
     pub index: usize,
     /// Index of the record.
@@ -102,7 +82,7 @@ pub struct BatchRow<O = BatchOutcome> {
     /// \[m/s²\]; NaN when the record could not be read.
     pub pga: Real,
     /// The run's result, or the error (an unreadable record, or a simulation input error).
-    pub outcome: Result<O, String>,
+    pub outcome: Result<BatchOutcome, String>,
 }
 
 /// `ground` with `record` as its only component along `Rot(α) ŷ` and its scale factors
@@ -159,8 +139,6 @@ pub fn validate_lists(records: &[BatchRecord], scales: &[Real]) -> Result<(), Si
 /// A base problem a batch can run under each `(record, scale)`: the two-deck [`SimProblem`]
 /// or a bridge's [`BridgeProblem`].
 pub trait BatchProblem: Sync {
-    /// The per-run result kept in a row.
-    type Outcome: Send;
     /// Checks the model once, before any run.
     fn check(&self) -> Result<(), SimError>;
     /// Runs the problem under `record` scaled by `scale`: `(PGA [m/s²], outcome)`.
@@ -169,11 +147,10 @@ pub trait BatchProblem: Sync {
         record: &Record,
         scale: Real,
         settings: &SimSettings,
-    ) -> (Real, Result<Self::Outcome, SimError>);
+    ) -> (Real, Result<BatchOutcome, SimError>);
 }
 
 impl BatchProblem for SimProblem {
-    type Outcome = BatchOutcome;
     fn check(&self) -> Result<(), SimError> {
         self.model.linear_system().map(|_| ())
     }
@@ -194,7 +171,6 @@ impl BatchProblem for SimProblem {
 }
 
 impl BatchProblem for BridgeProblem {
-    type Outcome = BridgeBatchOutcome;
     fn check(&self) -> Result<(), SimError> {
         self.model.validate()
     }
@@ -203,11 +179,11 @@ impl BatchProblem for BridgeProblem {
         r: &Record,
         scale: Real,
         st: &SimSettings,
-    ) -> (Real, Result<BridgeBatchOutcome, SimError>) {
+    ) -> (Real, Result<BatchOutcome, SimError>) {
         let p = run_bridge_problem(self, r, scale);
         let out = simulate_bridge(&p, st).map(|sol| {
             let w = crate::sim::output::bridge_run_warnings(&sol).len();
-            counted(BridgeBatchOutcome::from(sol), &p.ground, w)
+            counted(BatchOutcome::from(sol), &p.ground, w)
         });
         (r.pga() * p.ground.scale_y.abs(), out)
     }
@@ -215,11 +191,7 @@ impl BatchProblem for BridgeProblem {
 
 /// `o` with its [`BatchOutcome::warnings`]: the input warnings of a run on `ground`
 /// ([`crate::sim::output::input_warnings`]) and `impact_warnings` per-impact ones.
-fn counted<S>(
-    mut o: BatchOutcome<S>,
-    ground: &GroundMotion,
-    impact_warnings: usize,
-) -> BatchOutcome<S> {
+fn counted(mut o: BatchOutcome, ground: &GroundMotion, impact_warnings: usize) -> BatchOutcome {
     let input = crate::sim::output::input_warnings(ground, o.dt, o.time_step_advice.as_ref());
     o.warnings = input.len() + impact_warnings;
     o
@@ -227,8 +199,7 @@ fn counted<S>(
 
 /// Runs every `(record, scale)` pair of `shard` in parallel on the current rayon pool and returns
 /// the rows in increasing global index (module docs). `progress(1)` is called after each run.
-/// The base is a two-deck [`SimProblem`] (rows of [`BatchOutcome`]) or a bridge's
-/// [`BridgeProblem`] (rows of [`BridgeBatchOutcome`], each equal to [`simulate_bridge`] on
+/// The base is a two-deck [`SimProblem`] or a bridge's [`BridgeProblem`] (each row equal to [`simulate_bridge`] on
 /// [`run_bridge_problem`] bit for bit; also reachable as [`run_bridge_batch`]).
 ///
 /// Errors (bad input for the whole batch: the model, the settings, the lists) are returned before
@@ -241,7 +212,7 @@ pub fn run_batch<P: BatchProblem>(
     scales: &[Real],
     shard: BatchShard,
     progress: &(dyn Fn(usize) + Sync),
-) -> Result<Vec<BatchRow<P::Outcome>>, SimError> {
+) -> Result<Vec<BatchRow>, SimError> {
     let settings = batch_settings(records, scales, settings)?;
     base.check()?;
     Ok(run_pairs(records, scales, shard, progress, &|r, scale| {
@@ -269,18 +240,18 @@ fn batch_settings(
 }
 
 /// One run of a batch: `(record, scale)` → the PGA of the applied component and the outcome.
-type RunOne<'a, O> = dyn Fn(&Record, Real) -> (Real, Result<O, SimError>) + Sync + 'a;
+type RunOne<'a> = dyn Fn(&Record, Real) -> (Real, Result<BatchOutcome, SimError>) + Sync + 'a;
 
 /// The rows of every `(record, scale)` pair of `shard`, in parallel on the current rayon pool, in
 /// increasing global index; `run(record, scale)` gives the PGA of the applied component and the
 /// outcome (its error is prefixed with the record's name).
-fn run_pairs<O: Send>(
+fn run_pairs(
     records: &[BatchRecord],
     scales: &[Real],
     shard: BatchShard,
     progress: &(dyn Fn(usize) + Sync),
-    run: &RunOne<'_, O>,
-) -> Vec<BatchRow<O>> {
+    run: &RunOne<'_>,
+) -> Vec<BatchRow> {
     let ns = scales.len();
     let todo: Vec<usize> = (0..records.len() * ns)
         .filter(|&i| shard.contains(i))
@@ -311,10 +282,7 @@ fn run_pairs<O: Send>(
         .collect()
 }
 
-/// What one bridge run produced ([`run_bridge_batch`]).
-pub type BridgeBatchOutcome = BatchOutcome<BridgeSummary>;
-
-impl From<BridgeSolution> for BridgeBatchOutcome {
+impl From<BridgeSolution> for BatchOutcome {
     fn from(s: BridgeSolution) -> Self {
         Self {
             status: s.status,
@@ -331,9 +299,6 @@ impl From<BridgeSolution> for BridgeBatchOutcome {
         }
     }
 }
-
-/// One row of a bridge batch.
-pub type BridgeBatchRow = BatchRow<BridgeBatchOutcome>;
 
 /// The bridge problem of one run: `base` with `record` as its only component along `Rot(α) ŷ`,
 /// scale factors multiplied by `scale` (the single run `pounding simulate bridge.toml --record R

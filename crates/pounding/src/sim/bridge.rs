@@ -38,7 +38,7 @@
 //! compliance laws); their parameters may differ.
 
 use super::contact::JointGeom;
-use super::driver::{self, AbutmentFace, BodySystem, Bridge, SeatEnd};
+use super::driver::{self, AbutmentFace, BodySystem, Bridge, SeatEnd, SeatSupport};
 use super::integrate::SiteKinds;
 use super::model::{EndFace, SegmentBody, deck_frequencies, rayleigh_coefficients};
 use super::{
@@ -628,9 +628,24 @@ impl BridgeModel {
             } else {
                 self.joints[i].seat_length
             };
-            for (f, length) in [(&b.start, start), (&b.end, end)] {
+            let start_support = match i {
+                0 if self.abutments[0].is_some() => SeatSupport::Abutment(0),
+                0 => SeatSupport::Outer(0),
+                _ => SeatSupport::Joint(i - 1),
+            };
+            let end_support = match i + 1 == n {
+                true if self.abutments[1].is_some() => SeatSupport::Abutment(1),
+                true => SeatSupport::Outer(1),
+                false => SeatSupport::Joint(i),
+            };
+            for (at_end, f, length, support) in [
+                (false, &b.start, start, start_support),
+                (true, &b.end, end, end_support),
+            ] {
                 seats.push(SeatEnd {
                     body: i,
+                    at_end,
+                    support,
                     corners: f.corners,
                     inward: f.inward,
                     length,
@@ -1065,6 +1080,9 @@ pub struct JointSummary {
     pub peak_closing: Real,
     /// `max_t (largest end gap − g)` \[m\].
     pub peak_opening: Real,
+    /// `max_t |slip|`: the relative tangential displacement of the two face midpoints along the
+    /// joint's reference tangent ([`BridgeSolution::slip`]) \[m\].
+    pub peak_slip: Real,
     /// Either end at this joint exceeded its seat length.
     pub unseated: bool,
     /// Episodes of positive restrainer force (0 without a restrainer).
@@ -1101,6 +1119,8 @@ pub struct SegmentSummary {
     pub hysteretic_energy: Real,
     /// Natural frequencies `ω_1 ≤ ω_2 ≤ ω_3` on the bearings \[rad/s\].
     pub frequencies: [Real; 3],
+    /// Rayleigh coefficients `(a_0, a_1)` of the segment's damping (`(0, 0)` with dashpots).
+    pub rayleigh: (Real, Real),
 }
 
 /// The seat margin of one seated end (a segment's start or end, on an abutment seat, a joint's
@@ -1141,7 +1161,7 @@ pub struct BridgeSummary {
     /// Per segment.
     pub segments: Vec<SegmentSummary>,
     /// Largest seat displacement over all seated ends (joint ends and outer ends, as the
-    /// two-deck [`super::SimSummary::peak_seat_displacement`]) \[m\].
+    /// two-deck `peak_seat_displacement_m`) \[m\].
     pub peak_seat_displacement: Real,
     /// Largest ratio of an end's seat displacement to its own seat length, over all seated
     /// ends: the unseating margin (above 1 where an end unseated) \[-\].
@@ -1187,8 +1207,16 @@ pub struct BridgeSolution {
     pub q: Vec<Real>,
     /// `u` rows.
     pub u: Vec<Real>,
+    /// Signed gaps of each joint's four corner-against-face candidates in
+    /// [`crate::geometry::ContactCase::ALL`] order (`4 (N − 1)` per kept time; corner to the other
+    /// face's *line*, meaningful only for a corner over that face) \[m\].
+    pub gaps: Vec<Real>,
     /// End gaps of each joint (`2 (N − 1)` per kept time; NaN where no corner is over the face) \[m\].
     pub end_gaps: Vec<Real>,
+    /// Slip of each joint (`N − 1` per kept time): the displacement of segment `k`'s end-face
+    /// midpoint relative to segment `k + 1`'s start-face midpoint along the joint's reference
+    /// tangent `τ⁰` \[m\].
+    pub slip: Vec<Real>,
     /// Normal force of each joint end (compliance; `2 (N − 1)` per kept time) \[N\].
     pub contact_force: Vec<Real>,
     /// Smaller abutment corner gap `[start, end]` per kept time (NaN where absent) \[m\].
@@ -1214,6 +1242,55 @@ pub struct BridgeSolution {
     /// The observers' tables at the history steps: `bearings`, `restrainers`, `joint_slip`
     /// ([`super::table::Table`]; written as `<name>.csv`).
     pub tables: Vec<super::table::Table>,
+}
+
+impl BridgeSolution {
+    /// Number of kept times (rows of the histories).
+    pub fn rows(&self) -> usize {
+        self.t.len()
+    }
+
+    /// `q` at kept time `r` (`3 N` values: `x_j, y_j, θ_j` per segment) \[m, rad\].
+    pub fn q_row(&self, r: usize) -> &[Real] {
+        let n = 3 * self.n_segments;
+        &self.q[n * r..n * (r + 1)]
+    }
+
+    /// The rows of `q`, one per kept time.
+    pub fn q_rows(&self) -> std::slice::ChunksExact<'_, Real> {
+        self.q.chunks_exact(3 * self.n_segments)
+    }
+
+    /// The rows of `u`, one per kept time.
+    pub fn u_rows(&self) -> std::slice::ChunksExact<'_, Real> {
+        self.u.chunks_exact(3 * self.n_segments)
+    }
+
+    /// `u` at kept time `r` \[m/s, rad/s\].
+    pub fn u_row(&self, r: usize) -> &[Real] {
+        let n = 3 * self.n_segments;
+        &self.u[n * r..n * (r + 1)]
+    }
+
+    /// The joints' end gaps at kept time `r` (two per joint) \[m\].
+    pub fn end_gaps_row(&self, r: usize) -> &[Real] {
+        let n = 2 * self.n_segments.saturating_sub(1);
+        &self.end_gaps[n * r..n * (r + 1)]
+    }
+
+    /// The joints' end forces at kept time `r` (two per joint; empty for rigid contact) \[N\].
+    pub fn contact_force_row(&self, r: usize) -> &[Real] {
+        let n = 2 * self.n_segments.saturating_sub(1);
+        self.contact_force.get(n * r..n * (r + 1)).unwrap_or(&[])
+    }
+
+    /// Impacting contacts at the abutments.
+    pub fn abutment_impacting_contacts(&self) -> usize {
+        self.impacts
+            .iter()
+            .filter(|r| matches!(r.contact, SimContact::Abutment { .. }))
+            .count()
+    }
 }
 
 /// Runs a bridge (module doc; the scheme of [`super::simulate`]).
@@ -1307,9 +1384,12 @@ fn joint_summaries(
             peak_impulse: imp_joint[k],
             peak_closing: peaks.close[k],
             peak_opening: peaks.open[k],
-            // seats per segment [start, end]: joint k is segment k's end and k+1's start
-            unseated: peaks.seat[2 * k + 1] > br.seats[2 * k + 1].length
-                || peaks.seat[2 * k + 2] > br.seats[2 * k + 2].length,
+            peak_slip: peaks.slip[k],
+            unseated: br
+                .seats
+                .iter()
+                .zip(&peaks.seat)
+                .any(|(s, &d)| s.support == SeatSupport::Joint(k) && d > s.length),
             restrainer_engagements: r
                 .elements
                 .cables
@@ -1328,8 +1408,14 @@ fn joint_summaries(
         .collect()
 }
 
-/// Assembles the [`BridgeSolution`] of a run.
-fn solution(
+/// `segment<i>-start` / `segment<i>-end` (1-based) of a seated end.
+fn seat_name(seat: &SeatEnd) -> String {
+    let face = if seat.at_end { "end" } else { "start" };
+    format!("segment{}-{face}", seat.body + 1)
+}
+
+/// Assembles the [`BridgeSolution`] of a run (its seats in the order of `br.seats`).
+pub(crate) fn solution(
     r: driver::RunResult,
     sc: &driver::Scheme,
     br: &Bridge,
@@ -1369,45 +1455,31 @@ fn solution(
                 hysteretic_energy: r.elements.w_bearings.get(i).copied().unwrap_or(0.0)
                     - correction[i],
                 frequencies: sc.bodies[i].frequencies,
+                rayleigh: sc.bodies[i].rayleigh,
             }
         })
         .collect();
-    let unseated_end = peaks.unseat.map(|(_, e)| {
-        format!(
-            "segment{}-{}",
-            e / 2 + 1,
-            if e % 2 == 0 { "start" } else { "end" }
-        )
-    });
-    let n = br.bodies.len();
     let seats: Vec<SeatSummary> = br
         .seats
         .iter()
         .enumerate()
-        .map(|(e, seat)| {
-            let (i, at_end) = (e / 2, e % 2 == 1);
-            let support = match (at_end, i, model.abutments[usize::from(at_end)].is_some()) {
-                (false, 0, true) => "abutment-start".to_string(),
-                (false, 0, false) => "outer-start".to_string(),
-                (false, _, _) => format!("joint{i}"),
-                (true, _, has) if i + 1 == n => {
-                    if has { "abutment-end" } else { "outer-end" }.to_string()
-                }
-                (true, _, _) => format!("joint{}", i + 1),
-            };
-            SeatSummary {
-                end: format!("segment{}-{}", i + 1, if at_end { "end" } else { "start" }),
-                segment: i + 1,
-                support,
-                seat_length: seat.length,
-                peak_displacement: peaks.seat[e],
-                ratio: peaks.seat[e] / seat.length,
-                peak_time: peaks.seat_time[e],
-                residual_displacement: peaks.seat_last[e],
-                unseated: peaks.seat[e] > seat.length,
-            }
+        .map(|(e, seat)| SeatSummary {
+            end: seat_name(seat),
+            segment: seat.body + 1,
+            support: match seat.support {
+                SeatSupport::Abutment(side) => format!("abutment-{}", ABUTMENT_SIDES[side]),
+                SeatSupport::Outer(side) => format!("outer-{}", ABUTMENT_SIDES[side]),
+                SeatSupport::Joint(k) => format!("joint{}", k + 1),
+            },
+            seat_length: seat.length,
+            peak_displacement: peaks.seat[e],
+            ratio: peaks.seat[e] / seat.length,
+            peak_time: peaks.seat_time[e],
+            residual_displacement: peaks.seat_last[e],
+            unseated: peaks.seat[e] > seat.length,
         })
         .collect();
+    let unseated_end = peaks.unseat.map(|(_, e)| seat_name(&br.seats[e]));
     let summary = BridgeSummary {
         impacts: log.impacts,
         joints,
@@ -1447,7 +1519,9 @@ fn solution(
         t: tr.t,
         q: tr.q,
         u: tr.u,
+        gaps: tr.gaps,
         end_gaps: tr.end_gaps,
+        slip: tr.slip,
         contact_force: tr.contact_force,
         abutment_gaps: tr.abutment_gaps,
         energy: tr.energy,

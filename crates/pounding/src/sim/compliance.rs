@@ -20,8 +20,8 @@
 //! at contact onset) can leave a step without a root when it would end within `O(h² c δ̇ / m)`
 //! of `δ = 0`; that step is solved in the **closure of the law's graph**: the ends within 1 µm of
 //! `δ = 0` are held at `δ_{k+1} = 0` by an unknown force `λ ∈ [0, F(0⁺, δ̇)]` (Newton on
-//! `(u, λ)`, [`super::SimSolution::closure_steps`]). If that fails too, the iterate with the
-//! smallest residual is kept and the step is counted in [`super::SimSolution::newton_failures`]
+//! `(u, λ)`, [`super::bridge::BridgeSolution::closure_steps`]). If that fails too, the iterate with the
+//! smallest residual is kept and the step is counted in [`super::bridge::BridgeSolution::newton_failures`]
 //! (status [`super::SimStatus::CompletedWithNewtonFailures`]).
 //!
 //! # Contacts
@@ -47,8 +47,8 @@
 //! `∫ f dt` (trapezoidal, as the scheme) and the contact work `−∫ γ·f dt` as energy dissipated,
 //! and the force pulse ([`super::ImpactPulse`]: the end's peak force, duration of positive force
 //! and largest penetration).
-//! [`super::SimSummary::peak_contact_force`] is the largest total joint force,
-//! [`super::SimSummary::peak_penetration`] the largest `δ` of an end. The contact term of the
+//! [`super::bridge::JointSummary::peak_contact_force`] is the largest total joint force,
+//! [`super::bridge::BridgeSummary::peak_penetration`] the largest `δ` of an end. The contact term of the
 //! energy balance is `D_contact = −Σ h ū·R̄` (`ū` the mean velocity, `R̄ = (1−θ)R_k + θR_{k+1}`):
 //! the law's dissipation plus the energy momentarily stored in the contact spring; with θ = ½
 //! the discrete balance is exact, as for the rigid scheme.
@@ -56,7 +56,7 @@
 //! # Time step
 //! [`crate::contact_law::timestep::law_time_step_advice`] with `m_eff = m1 m2/(m1 + m2)` (deck
 //! masses) and `v_ref = 1 m/s`; the advice is returned in
-//! [`super::SimSolution::time_step_advice`] (the CLI warns when it is not adequate).
+//! [`super::bridge::BridgeSolution::time_step_advice`] (the CLI warns when it is not adequate).
 #![allow(clippy::needless_range_loop)]
 use super::contact::{JointGeom, Pose, State, candidates};
 use super::driver::{

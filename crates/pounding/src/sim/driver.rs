@@ -3,7 +3,8 @@
 //! The shape follows an optimisation executor (argmin): the **driver** owns the loop over the
 //! steps `t_k = k h`, the ground-motion samples, the monitors (peaks, seats and unseating,
 //! abutment closings, the energy bookkeeping and its balance, divergence detection), the
-//! history decimation and the assembly of the [`SimSolution`]; a **[`Stepper`]** advances the
+//! history decimation and the run's result ([`RunResult`], made a
+//! [`super::bridge::BridgeSolution`] by `bridge.rs`); a **[`Stepper`]** advances the
 //! state by one step and owns only what its contact law needs:
 //!
 //! * [`super::rigid::RigidStepper`]: Moreau–Jean with the impact LCP (module doc of [`super`]);
@@ -29,8 +30,8 @@ use super::model::SegmentBody;
 use super::observer::{Observer, Snapshot};
 use super::table::Table;
 use super::{
-    Energy, History, ImpactRecord, SimContact, SimError, SimProblem, SimSettings, SimSolution,
-    SimStatus, SimSummary, balance_error, energies_finite, max_nan,
+    Energy, ImpactRecord, SimError, SimProblem, SimSettings, SimStatus, balance_error,
+    energies_finite, max_nan,
 };
 use crate::contact_law::timestep::TimeStepAdvice;
 use crate::ground_motion::GroundMotion;
@@ -358,11 +359,26 @@ impl AbutmentFace {
     }
 }
 
+/// What a seated end rests on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum SeatSupport {
+    /// The abutment of a side (0 start, 1 end).
+    Abutment(usize),
+    /// Joint `k` (0-based, between segments `k` and `k + 1`).
+    Joint(usize),
+    /// An outer seat without abutment, of a side (0 start, 1 end).
+    Outer(usize),
+}
+
 /// A segment end resting on a seat.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct SeatEnd {
     /// The segment.
     pub body: usize,
+    /// The segment's end face (`false`: its start face).
+    pub at_end: bool,
+    /// What it rests on.
+    pub support: SeatSupport,
     /// Its corners (reference pose).
     pub corners: [Vector; 2],
     /// Inward normal of the face.
@@ -1011,97 +1027,14 @@ pub(crate) fn run<S: Stepper>(
     }
 }
 
-/// The two-deck [`SimSolution`] of a run of the two-deck bridge (pure copies of the run's
-/// values).
-pub(crate) fn pair_solution(r: RunResult, sc: &Scheme) -> SimSolution {
-    let summary = pair_summary(&r);
-    let tr = r.trace;
-    let rows6 = |v: Vec<Real>| -> Vec<[Real; 6]> {
-        v.chunks_exact(6)
-            .map(|c| <[Real; 6]>::try_from(c).unwrap())
-            .collect()
-    };
-    let rows4 = |v: Vec<Real>| -> Vec<[Real; 4]> {
-        v.chunks_exact(4)
-            .map(|c| <[Real; 4]>::try_from(c).unwrap())
-            .collect()
-    };
-    let rows2 = |v: Vec<Real>| -> Vec<[Real; 2]> {
-        v.chunks_exact(2)
-            .map(|c| <[Real; 2]>::try_from(c).unwrap())
-            .collect()
-    };
-    let history = History {
-        t: tr.t,
-        q: rows6(tr.q),
-        u: rows6(tr.u),
-        gaps: rows4(tr.gaps),
-        end_gaps: rows2(tr.end_gaps),
-        slip: tr.slip,
-        energy: tr.energy,
-        contact_force: rows2(tr.contact_force),
-        abutment_gaps: tr.abutment_gaps,
-    };
-    SimSolution {
-        status: r.status,
-        history,
-        impacts: r.log.records,
-        summary,
-        steps: r.steps,
-        dt: sc.h,
-        lcp_solves: r.stats.lcp_solves,
-        lcp_enumeration_fallbacks: r.stats.lcp_enumeration_fallbacks,
-        lcp_failures: r.stats.lcp_failures,
-        frequencies: [sc.bodies[0].frequencies, sc.bodies[1].frequencies],
-        rayleigh: [sc.bodies[0].rayleigh, sc.bodies[1].rayleigh],
-        time_step_advice: r.stats.time_step_advice,
-        newton_failures: r.stats.newton_failures,
-        closure_steps: r.stats.closure_steps,
-        tables: r.tables,
-    }
-}
-
-/// The [`SimSummary`] of a two-deck run.
-fn pair_summary(r: &RunResult) -> SimSummary {
-    let (peaks, log) = (&r.peaks, &r.log);
-    SimSummary {
-        impacts: log.impacts,
-        impacting_contacts: log.records.len(),
-        peak_joint_closing: peaks.close[0],
-        peak_joint_opening: peaks.open[0],
-        peak_rotation: [peaks.rot[0], peaks.rot[1]],
-        peak_slip: peaks.slip[0],
-        peak_seat_displacement: peaks
-            .seat
-            .iter()
-            .copied()
-            .fold(Real::NEG_INFINITY, Real::max),
-        peak_seat_by_end: [peaks.seat[0], peaks.seat[1], peaks.seat[2], peaks.seat[3]],
-        unseated: peaks.unseat.is_some(),
-        unseating_time: peaks.unseat.map(|u| u.0),
-        unseated_end: peaks.unseat.map(|u| u.1),
-        max_penetration: peaks.pen,
-        energy_balance_error: r.energy_balance_error,
-        final_energy: r.final_energy,
-        max_input_energy: r.max_input_energy,
-        peak_contact_force: peaks.force[0],
-        peak_penetration: peaks.pen,
-        peak_abutment_closing: peaks.abut,
-        abutment_impacting_contacts: log
-            .records
-            .iter()
-            .filter(|r| matches!(r.contact, SimContact::Abutment { .. }))
-            .count(),
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::super::{
-        ComplianceContact, JointContact, SimModel, SimProblem, SimSettings, SimSolution, simulate,
+        ComplianceContact, JointContact, SimModel, SimProblem, SimSettings, simulate,
     };
     use crate::contact_law::{ContactLaw, Hertz};
     use crate::ground_motion::el_centro_1940;
+    use crate::sim::bridge::BridgeSolution;
 
     /// Step times read back as the decimal `k·h` (no `13.003000000000002`), for short decimal
     /// steps; other steps keep `k·h`.
@@ -1137,7 +1070,7 @@ mod tests {
     }
 
     /// The default bridge under El Centro (6 s) with a joint so wide that it never closes.
-    fn open_run(law: JointContact, seat_length: f64) -> SimSolution {
+    fn open_run(law: JointContact, seat_length: f64) -> BridgeSolution {
         let mut model = SimModel::default_bridge();
         model.gap = 2.0;
         model.seat_length = seat_length;
@@ -1164,21 +1097,26 @@ mod tests {
             let c = open_run(hertz(), seat);
             assert_eq!(r.status, c.status);
             assert_eq!(r.summary.impacts + c.summary.impacts, 0);
-            assert_eq!(c.summary.peak_contact_force, Some(0.0));
-            assert_eq!(r.summary.peak_contact_force, None);
+            assert_eq!(c.summary.joints[0].peak_contact_force, Some(0.0));
+            assert_eq!(r.summary.joints[0].peak_contact_force, None);
             let mut cs = c.summary.clone();
-            cs.peak_contact_force = None;
+            cs.joints[0].peak_contact_force = None;
             assert_eq!(format!("{:?}", r.summary), format!("{cs:?}"));
             assert_eq!(r.summary.unseated, seat < 1.0);
             assert!(r.summary.energy_balance_error < 1e-12);
-            let mut ch = c.history.clone();
-            assert_eq!(ch.contact_force.len(), ch.t.len());
-            assert!(ch.contact_force.iter().all(|f| *f == [0.0, 0.0]));
-            ch.contact_force.clear();
-            // Debug text compares NaN (no abutment gap) bit for bit, unlike `==`
-            let same = format!("{:?}", r.history) == format!("{ch:?}");
-            assert!(same, "the histories differ");
-            assert!(r.history.t.len() == 6001 && r.summary.peak_joint_opening > 0.0);
+            let mut c = c.clone();
+            assert_eq!(c.contact_force.len(), 2 * c.t.len());
+            assert!(c.contact_force.iter().all(|f| *f == 0.0));
+            c.contact_force.clear();
+            // the histories of both runs; Debug text compares NaN (no abutment gap) bit for bit
+            let history = |s: &BridgeSolution| {
+                format!(
+                    "{:?}",
+                    (&s.t, &s.q, &s.u, &s.gaps, &s.end_gaps, &s.slip, &s.energy)
+                ) + &format!("{:?}", (&s.contact_force, &s.abutment_gaps, &s.tables))
+            };
+            assert!(history(&r) == history(&c), "the histories differ");
+            assert!(r.t.len() == 6001 && r.summary.joints[0].peak_opening > 0.0);
         }
     }
 }

@@ -48,7 +48,7 @@
 //! `D_contact −= ½ (u_k + u_{k+1})ᵀ W P` (spec §11: `ΔT = ½ (γ⁺ + γ⁻)ᵀ Λ` at an impact; may be
 //! negative), with `ū = (u_k + u_{k+1})/2`, `ū_θ = (1−θ) u_k + θ u_{k+1}`, `F̄ = (1−θ)F_k + θF_{k+1}`.
 //! For `θ = ½` the discrete balance `E_0 + W_in = T + V + D_viscous + D_contact` holds to rounding,
-//! so [`SimSummary::energy_balance_error`] checks the implementation's bookkeeping (a sign or
+//! so [`bridge::BridgeSummary::energy_balance_error`] checks the implementation's bookkeeping (a sign or
 //! scaling slip shows at O(1)); for `θ > ½` it measures the scheme's numerical dissipation.
 //!
 //! # Code layout
@@ -558,7 +558,7 @@ pub struct SimSettings {
     /// A step is an *impact* if some contact with `γ_N⁻ < −impact_velocity` gets `P_N > 0`
     /// \[m/s\]. Default 1e-3.
     pub impact_velocity: Real,
-    /// Keep every `history_stride`-th step in [`SimSolution::history`] (the last step always).
+    /// Keep every `history_stride`-th step in [`bridge::BridgeSolution::t`] and the other histories (the last step always).
     /// Peaks are taken over every step regardless. Default 1.
     pub history_stride: usize,
     /// Settings of Lemke's method for the contact LCPs.
@@ -744,86 +744,8 @@ pub struct Energy {
     pub elements: Real,
 }
 
-/// Sampled time histories (every `history_stride`-th step and the last one).
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct History {
-    /// Times \[s\].
-    pub t: Vec<Real>,
-    /// Displacements `q`.
-    pub q: Vec<[Real; 6]>,
-    /// Velocities `u`.
-    pub u: Vec<[Real; 6]>,
-    /// Signed gaps of the four candidate contacts in [`ContactCase::ALL`] order (corner to the
-    /// other face *line*; only meaningful for a corner over the face) \[m\].
-    pub gaps: Vec<[Real; 4]>,
-    /// Joint gap at each end `[x = +W/2, x = −W/2]` (the realised candidate's gap; NaN if none) \[m\].
-    pub end_gaps: Vec<[Real; 2]>,
-    /// Relative tangential slip of deck 1's face midpoint with respect to deck 2's along `τ⁰ = (−1, 0)`
-    /// (toward deck 1's radially outward side) \[m\].
-    pub slip: Vec<Real>,
-    /// Energies.
-    pub energy: Vec<Energy>,
-    /// Normal contact force of each joint end `[x = +W/2, x = −W/2]` \[N\] (compliance laws
-    /// only; empty for rigid contact).
-    pub contact_force: Vec<[Real; 2]>,
-    /// Smaller signed gap of the two far-face corners to the abutment, per deck (NaN without an
-    /// abutment) \[m\].
-    pub abutment_gaps: Vec<[Real; 2]>,
-}
-
 /// The four deck ends checked for unseating, in this order.
 pub const SEAT_ENDS: [&str; 4] = ["deck1-joint", "deck1-far", "deck2-joint", "deck2-far"];
-
-/// Peak values and the energy check.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SimSummary {
-    /// Number of impacts (steps with at least one impacting contact).
-    pub impacts: usize,
-    /// Number of impacting contacts (rows of [`SimSolution::impacts`]).
-    pub impacting_contacts: usize,
-    /// `max_t (g − min end gap)` \[m\] (≥ g means contact; > g means penetration).
-    pub peak_joint_closing: Real,
-    /// `max_t (max end gap − g)` \[m\].
-    pub peak_joint_opening: Real,
-    /// `[max |θ1|, max |θ2|]` \[rad\].
-    pub peak_rotation: [Real; 2],
-    /// `max_t |slip|` (see [`History::slip`]) \[m\].
-    pub peak_slip: Real,
-    /// Largest seat displacement over all ends \[m\].
-    pub peak_seat_displacement: Real,
-    /// Peak seat displacement per end ([`SEAT_ENDS`] order) \[m\]. The seat displacement of an end
-    /// is the largest displacement of its two corners along the end face's *inward* normal (the
-    /// direction in which the end slides off its support).
-    pub peak_seat_by_end: [Real; 4],
-    /// Some end exceeded the seat length.
-    pub unseated: bool,
-    /// First time an end exceeded the seat length \[s\].
-    pub unseating_time: Option<Real>,
-    /// Which end ([`SEAT_ENDS`] index) unseated first.
-    pub unseated_end: Option<usize>,
-    /// Largest penetration `max_t max(0, −min end gap)` \[m\]: the velocity-level scheme lets the
-    /// decks overlap by `O(h |γ_N⁻|)` in an impact step (the position update uses the mean of the
-    /// pre- and post-impact velocities).
-    pub max_penetration: Real,
-    /// `max_t |E_0 + W_in − (T + V + D_viscous + D_contact)| / max_t |E_0 + W_in|`.
-    pub energy_balance_error: Real,
-    /// Energies at the end of the run.
-    pub final_energy: Energy,
-    /// Maximum of the input energy `E_0 + W_in` over time \[J\].
-    pub max_input_energy: Real,
-    /// Peak total normal contact force of the joint (sum over its corner contacts) \[N\];
-    /// `None` for rigid contact (impulses, no force).
-    pub peak_contact_force: Option<Real>,
-    /// Peak penetration `max_t max(0, −min end gap)` \[m\] (rigid: the same as
-    /// [`SimSummary::max_penetration`]; compliance: the law's deformation).
-    pub peak_penetration: Real,
-    /// Per deck with an abutment: `max_t (gap_a − smaller corner gap)` \[m\] (`≥ gap_a` means
-    /// contact, more means penetration); `None` without an abutment.
-    pub peak_abutment_closing: [Option<Real>; 2],
-    /// Impacting contacts at the abutments (rows of [`SimSolution::impacts`] with
-    /// [`SimContact::Abutment`]).
-    pub abutment_impacting_contacts: usize,
-}
 
 /// How the run ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -832,57 +754,17 @@ pub enum SimStatus {
     Completed,
     /// All steps done, but some contact LCPs were not solved by Lemke nor by enumeration (in those
     /// steps the frictionless LCP was used), or a solution failed the post-solve checks of the
-    /// impact laws on the recovered velocities (see [`SimSolution::lcp_failures`]).
+    /// impact laws on the recovered velocities (see [`bridge::BridgeSolution::lcp_failures`]).
     CompletedWithLcpFailures,
     /// The state or an energy of the bookkeeping became non-finite; the run stopped.
     Diverged,
     /// All steps done with a compliance law, but the Newton iteration on the contact forces
-    /// did not converge in some steps (see [`SimSolution::newton_failures`]).
+    /// did not converge in some steps (see [`bridge::BridgeSolution::newton_failures`]).
     CompletedWithNewtonFailures,
     /// All steps done, but the discrete energy balance (exact to rounding for θ = ½) is off by
     /// more than 1e-6 of the input energy: some force was not resolved consistently (e.g. an
-    /// element or contact too stiff for the step); see [`SimSummary::energy_balance_error`].
+    /// element or contact too stiff for the step); see [`bridge::BridgeSummary::energy_balance_error`].
     CompletedWithEnergyError,
-}
-
-/// Result of [`simulate`].
-#[derive(Debug, Clone, PartialEq)]
-pub struct SimSolution {
-    /// Outcome.
-    pub status: SimStatus,
-    /// Sampled histories.
-    pub history: History,
-    /// Impacting contacts, in time order.
-    pub impacts: Vec<ImpactRecord>,
-    /// Peaks and energy check.
-    pub summary: SimSummary,
-    /// Steps taken.
-    pub steps: usize,
-    /// Step size used \[s\].
-    pub dt: Real,
-    /// Steps with at least one active contact (LCP solves).
-    pub lcp_solves: usize,
-    /// LCP solves where Lemke failed but enumeration succeeded.
-    pub lcp_enumeration_fallbacks: usize,
-    /// LCP solves where both failed, plus solves whose solution failed the post-solve checks
-    /// ([`crate::law_check::check_laws`] on `γ_{k+1} = Wᵀ u_{k+1}`: Newton, Coulomb cone and
-    /// sliding direction at every active contact).
-    pub lcp_failures: usize,
-    /// Natural frequencies of each deck \[rad/s\].
-    pub frequencies: [[Real; 3]; 2],
-    /// Rayleigh coefficients `(a_0, a_1)` per deck.
-    pub rayleigh: [(Real, Real); 2],
-    /// Compliance laws: the time-step check of the contact (`None` for rigid contact). When
-    /// `adequate` is `false`, `dt` is too coarse to resolve the contact pulse.
-    pub time_step_advice: Option<crate::contact_law::timestep::TimeStepAdvice>,
-    /// Compliance laws: steps whose Newton iteration on the contact forces did not converge.
-    pub newton_failures: usize,
-    /// Compliance laws: steps solved by the graph closure of a force jump at contact onset
-    /// (Kelvin's dashpot; [`compliance`] module doc).
-    pub closure_steps: usize,
-    /// The observers' tables at the history steps, as for a bridge
-    /// ([`bridge::BridgeSolution::tables`]; deck `j` is segment `j`).
-    pub tables: Vec<table::Table>,
 }
 
 /// `a.max(b)` that propagates NaN (`f64::max` drops it, which once made a NaN energy balance
@@ -896,7 +778,7 @@ pub(crate) fn max_nan(a: Real, b: Real) -> Real {
     }
 }
 
-/// [`SimSummary::energy_balance_error`] from `max |balance|` and `max |E_0 + W_in|`: NaN when
+/// [`bridge::BridgeSummary::energy_balance_error`] from `max |balance|` and `max |E_0 + W_in|`: NaN when
 /// either is NaN (never 0), `0` only for an exact balance of a run without energy.
 pub(crate) fn balance_error(max_bal: Real, max_in: Real) -> Real {
     if max_bal.is_nan() || max_in.is_nan() {
@@ -919,21 +801,25 @@ pub(crate) fn energies_finite(e: &[Real]) -> bool {
 
 /// Runs the two-deck model (see the module documentation for the model and the scheme): it is
 /// the bridge of two segments [`bridge::BridgeModel::from_pair`], integrated by
-/// [`bridge::simulate_bridge`]'s driver and steppers; only the seat order (the two-deck
-/// [`SEAT_ENDS`]: joint end before far end of each deck) and the result's shape are its own.
+/// [`bridge::simulate_bridge`]'s driver and steppers, with the same result; deck `j` is segment
+/// `j`, the joint is joint 1. Only its seat order is its own: each deck's joint end before its far
+/// end ([`SEAT_ENDS`]; the first of two ends that unseat in the same step is reported).
 ///
 /// Bad input → [`SimError`] (named with the two-deck keys); numerical trouble →
-/// [`SimSolution::status`].
-pub fn simulate(problem: &SimProblem, settings: &SimSettings) -> Result<SimSolution, SimError> {
+/// [`bridge::BridgeSolution::status`].
+pub fn simulate(
+    problem: &SimProblem,
+    settings: &SimSettings,
+) -> Result<bridge::BridgeSolution, SimError> {
     driver::checked_pair(problem, settings)?;
     let model = bridge::BridgeModel::from_pair(&problem.model);
     let mut view = model.bridge();
     // the bridge orders each segment's seats start, end; deck 1's start is its far end
     view.seats.swap(0, 1);
     let initial = (problem.q0.as_slice(), problem.u0.as_slice());
-    let (result, scheme, _) =
+    let (result, scheme, kinds) =
         integrate::integrate(&model, &view, &problem.ground, initial, settings)?;
-    Ok(driver::pair_solution(result, &scheme))
+    Ok(bridge::solution(result, &scheme, &view, &model, &kinds))
 }
 
 /// The time `t_k = k·dt` of step `k` as the decimal the user expects: for a step with a short

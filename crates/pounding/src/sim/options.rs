@@ -136,22 +136,12 @@ pub const MAX_RUN_MEMORY_BYTES: u64 = 4 << 30;
 pub const GROUND_BYTES_PER_STEP: u64 =
     (std::mem::size_of::<Vector>() + 2 * std::mem::size_of::<Real>()) as u64;
 
-/// Bytes per kept row of [`super::History`]: one element of each of its vectors (232 bytes).
-pub const HISTORY_BYTES_PER_ROW: u64 = (std::mem::size_of::<Real>() // t
-    + 2 * std::mem::size_of::<[Real; 6]>() // q, u
-    + std::mem::size_of::<[Real; 4]>() // gaps
-    + std::mem::size_of::<[Real; 2]>() // end_gaps
-    + std::mem::size_of::<Real>() // slip
-    + std::mem::size_of::<super::Energy>() // energy
-    + 2 * std::mem::size_of::<[Real; 2]>()) // contact_force, abutment_gaps
-    as u64;
-
 /// Bytes per kept row of the `history.csv` text a front end builds in memory before writing it
 /// atomically: at most 31 columns of at most 25 bytes (a shortest round-trip token such as
 /// `-1.2345678901234567e-100` and its separator).
 pub const HISTORY_TEXT_BYTES_PER_ROW: u64 = 31 * 25;
 
-/// Number of rows [`super::History`] keeps for `n_steps` steps at `history_stride`: steps
+/// Number of rows a run's histories keep for `n_steps` steps at `history_stride`: steps
 /// `0, s, 2s, …` and the last one, `⌊n/s⌋ + 1` plus 1 when `s` does not divide `n`.
 pub fn history_rows(n_steps: usize, history_stride: usize) -> u64 {
     let s = history_stride.max(1) as u64;
@@ -161,8 +151,7 @@ pub fn history_rows(n_steps: usize, history_stride: usize) -> u64 {
 
 /// Estimated peak memory \[bytes\] of a two-deck run of `n_steps` steps keeping every
 /// `history_stride`-th step: the bridge estimate [`bridge_run_memory_bytes`] of two segments (the
-/// two-deck model runs as that bridge, with its trace, its observers' tables and its `History`
-/// copy, whose row [`HISTORY_BYTES_PER_ROW`] the trace's doubled row covers). Impact records
+/// two-deck model runs as that bridge, with its trace and its observers' tables). Impact records
 /// (one per impact, not bounded by the step count) and allocator slack are not counted.
 pub fn run_memory_bytes(n_steps: usize, history_stride: usize) -> u64 {
     bridge_run_memory_bytes(n_steps, history_stride, 2)

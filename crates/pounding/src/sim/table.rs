@@ -1,7 +1,7 @@
 //! Typed tables of a run: named columns with units, one row per kept step, and the one CSV
 //! writer for them.
 //!
-//! An observer ([`super::observer`]) fills a [`Table`] while the driver runs; the run returns its
+//! An observer (`sim/observer.rs`) fills a [`Table`] while the driver runs; the run returns its
 //! tables in order, and every front end writes or hands them on without knowing their content:
 //! the CLI writes `<name>.csv`, Python gets numpy columns. A header cell is `<column>_<unit>`
 //! (`t_s`, `segment1_bearing2_fx_N`), the convention of every CSV the library writes.

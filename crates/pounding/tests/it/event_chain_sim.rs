@@ -71,7 +71,7 @@ fn run(c: &Chain, r: &ChainSolution, gm: &GroundMotion, dt: f64) -> (f64, ChainS
     assert_eq!(sol.status, SimStatus::Completed);
     let (mut err, mut peak) = (0.0f64, [0.0f64; 2]);
     let mut opening = f64::NEG_INFINITY;
-    for (t, q) in sol.history.t.iter().zip(&sol.history.q) {
+    for (t, q) in sol.t.iter().zip(sol.q_rows()) {
         let (x, _) = r.at(*t);
         let xs = [q[4], q[1]];
         for i in 0..2 {
@@ -92,7 +92,7 @@ fn run(c: &Chain, r: &ChainSolution, gm: &GroundMotion, dt: f64) -> (f64, ChainS
             steps[g].push(row.impact);
         }
     }
-    let last = sol.history.q.last().unwrap();
+    let last = sol.q_rows().last().unwrap();
     let s = ChainSummary {
         impacts: steps
             .iter_mut()
@@ -101,8 +101,8 @@ fn run(c: &Chain, r: &ChainSolution, gm: &GroundMotion, dt: f64) -> (f64, ChainS
                 v.len()
             })
             .collect(),
-        peak_closing: vec![sol.summary.peak_joint_closing],
-        peak_opening: vec![opening.max(sol.summary.peak_joint_opening)],
+        peak_closing: vec![sol.summary.joints[0].peak_closing],
+        peak_opening: vec![opening.max(sol.summary.joints[0].peak_opening)],
         peak_displacement: peak.to_vec(),
         final_displacement: vec![last[4].abs(), last[1].abs()],
     };

@@ -225,7 +225,7 @@ fn spike_ground(value_g: f64) -> GroundMotion {
     g
 }
 
-fn assert_diverged(s: &pounding::sim::SimSolution, what: &str) {
+fn assert_diverged(s: &pounding::sim::bridge::BridgeSolution, what: &str) {
     assert_eq!(s.status, SimStatus::Diverged, "{what}");
     let e = s.summary.energy_balance_error;
     assert!(e != 0.0, "{what}: a non-finite balance reads as 0");

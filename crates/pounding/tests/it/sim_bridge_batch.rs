@@ -5,7 +5,7 @@
 use pounding::ground_motion::{AccelUnits, Record};
 use pounding::output::float_token;
 use pounding::sim::SimStatus;
-use pounding::sim::batch::{BatchRecord, BatchShard, BridgeBatchRow, run_bridge_batch};
+use pounding::sim::batch::{BatchRecord, BatchRow, BatchShard, run_bridge_batch};
 use pounding::sim::output::{bridge_batch_csv, bridge_batch_header};
 use pounding::sim::scenario::Scenario;
 use std::path::PathBuf;
@@ -83,7 +83,7 @@ fn batch_records(paths: &[PathBuf]) -> Vec<BatchRecord> {
 
 const SCALES: [f64; 3] = [0.5, 1.0, 2.0];
 
-fn run(paths: &[PathBuf], threads: usize, shard: BatchShard) -> Vec<BridgeBatchRow> {
+fn run(paths: &[PathBuf], threads: usize, shard: BatchShard) -> Vec<BatchRow> {
     let setup = Scenario::from_toml(BRIDGE, "bridge.toml")
         .unwrap()
         .for_batch()

@@ -202,10 +202,10 @@ fn the_two_deck_model_records_the_same_tables() {
     let names: Vec<&str> = sol.tables.iter().map(|t| t.name).collect();
     assert_eq!(names, ["bearings", "restrainers", "joint_slip"]);
     let b = table(&sol.tables, "bearings");
-    assert_eq!(b.rows(), sol.history.t.len());
+    assert_eq!(b.rows(), sol.t.len());
     assert_eq!(b.columns[1].header(), "segment1_bearing1_ux_m");
     let slip = table(&sol.tables, "joint_slip");
-    for (r, s) in sol.history.slip.iter().enumerate() {
+    for (r, s) in sol.slip.iter().enumerate() {
         assert_eq!(slip.row(r)[1], *s);
     }
 }

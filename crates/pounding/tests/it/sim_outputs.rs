@@ -6,15 +6,16 @@ use pounding::contact_law::registry::default_k_h;
 use pounding::contact_law::{ContactLaw, Hertz, LinearSpring};
 use pounding::ground_motion::GroundMotion;
 use pounding::shape::{DeckShape, StraightDeck};
+use pounding::sim::bridge::BridgeSolution;
 use pounding::sim::{
-    ComplianceContact, DampingModel, JointContact, SimModel, SimProblem, SimSettings, SimSolution,
-    SimStatus, simulate,
+    ComplianceContact, DampingModel, JointContact, SimModel, SimProblem, SimSettings, SimStatus,
+    simulate,
 };
 
 /// Two straight decks of 1e6 kg each (m_eff = 5e5 kg) on very soft bearings (T = 100 s, so that
 /// the bearings change the contact pulse by ~1e-6), undamped, gap 0, meeting head-on at the
 /// reference pose with a closing speed of 1 m/s, μ = 0, restitution `eps`, over `t_end` s.
-fn head_on(contact: JointContact, eps: f64, dt: f64, t_end: f64) -> SimSolution {
+fn head_on(contact: JointContact, eps: f64, dt: f64, t_end: f64) -> BridgeSolution {
     let m = 1.0e6;
     let deck = DeckShape::Straight(StraightDeck {
         length: 30.0,
@@ -78,7 +79,7 @@ fn compliance_impact_pulse_matches_the_linear_spring_closed_form() {
         // and the impulse of the elastic impact, 2 m_eff v, shared by the two corners
         assert!((r.impulse_n / (m_eff * v) - 1.0).abs() < 1e-4);
     }
-    let total = sol.summary.peak_contact_force.unwrap();
+    let total = sol.summary.joints[0].peak_contact_force.unwrap();
     assert!((total / f_max - 1.0).abs() < 1e-4);
 }
 
@@ -114,7 +115,7 @@ fn rigid_peak_force_estimate_against_a_hertz_compliance_run() {
         .map(|r| rigid_peak_force(r.impulse_n, r.gamma_n_pre, 1.0, 0.5 * k_h))
         .collect();
     let f_est: f64 = est.iter().map(|e| e.peak_force).sum();
-    let f_hertz = hertz.summary.peak_contact_force.unwrap();
+    let f_hertz = hertz.summary.joints[0].peak_contact_force.unwrap();
     // closed form of the Hertz peak (m_eff = 5e5 kg, v = 1 m/s)
     let d_max = (5.0 * 5.0e5 / (4.0 * k_h)).powf(0.4);
     assert!((f_hertz / (k_h * d_max.powf(1.5)) - 1.0).abs() < 1e-3);
@@ -151,7 +152,7 @@ fn batch_csv_appends_force_time_step_and_newton_columns() {
         0.1,
     );
     let rigid = head_on(JointContact::Rigid, 1.0, 1e-4, 0.01);
-    let row = |index: usize, sol: &SimSolution| BatchRow {
+    let row = |index: usize, sol: &BridgeSolution| BatchRow {
         index,
         record_index: index,
         record: format!("r{index}"),
@@ -169,7 +170,7 @@ fn batch_csv_appends_force_time_step_and_newton_columns() {
     assert!(lines.iter().all(|l| l.split(',').count() == head.len()));
     let c = lines[1];
     let peak: f64 = col(c, "peak_contact_force_n").parse().unwrap();
-    assert_eq!(peak, comp.summary.peak_contact_force.unwrap());
+    assert_eq!(peak, comp.summary.joints[0].peak_contact_force.unwrap());
     let spc: f64 = col(c, "steps_per_contact").parse().unwrap();
     assert_eq!(spc, comp.time_step_advice.unwrap().steps_per_contact);
     assert!(
@@ -220,7 +221,9 @@ fn a_bearing_layout_that_is_a_mechanism_is_refused_unless_allowed() {
         .build()
         .unwrap();
     let sol = simulate(&setup.problem, &setup.settings).unwrap();
-    assert!(sol.frequencies[0][0] <= 1e-6 * sol.frequencies[0][2]);
+    assert!(
+        sol.summary.segments[0].frequencies[0] <= 1e-6 * sol.summary.segments[0].frequencies[2]
+    );
     // the default layout (4 corners) is not a mechanism
     assert!(Scenario::from_toml("", "d").unwrap().build().is_ok());
 }

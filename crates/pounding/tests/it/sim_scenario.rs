@@ -246,7 +246,7 @@ fn writers_rows_match_their_headers() {
     let mut lines = h.lines();
     let n = lines.next().unwrap().split(',').count();
     assert!(h.lines().next().unwrap().ends_with(",abutment_gap1_m"));
-    assert_eq!(h.lines().count(), sol.history.t.len() + 1);
+    assert_eq!(h.lines().count(), sol.t.len() + 1);
     assert!(lines.all(|l| l.split(',').count() == n));
     let i = impacts_csv(&setup.problem.model, &sol);
     assert_eq!(i.lines().count(), sol.impacts.len() + 1);

@@ -5,8 +5,7 @@ use super::DEG;
 use crate::ground_motion::G0;
 use crate::math::Real;
 use crate::output::float_token;
-use crate::sim::SEAT_ENDS;
-use crate::sim::batch::{BatchRow, BridgeBatchOutcome, BridgeBatchRow};
+use crate::sim::batch::{BatchOutcome, BatchRow};
 use crate::sim::bridge::ABUTMENT_SIDES;
 
 /// CSV field: quoted when it contains a comma, a quote or a line break.
@@ -58,25 +57,26 @@ fn tail_cells(
 pub fn batch_csv(rows: &[BatchRow]) -> String {
     rows_csv(BATCH_HEADER, rows, |o, c| {
         let m = &o.summary;
+        let joint = &m.joints[0];
         c.push(format!("{:?}", o.status));
         c.push(m.impacts.to_string());
-        c.push(m.impacting_contacts.to_string());
+        c.push(o.impacting_contacts.to_string());
         for v in [
-            m.peak_joint_closing,
-            m.peak_joint_opening,
-            m.peak_rotation[0] * DEG,
-            m.peak_rotation[1] * DEG,
-            m.peak_slip,
+            joint.peak_closing,
+            joint.peak_opening,
+            m.segments[0].peak_rotation * DEG,
+            m.segments[1].peak_rotation * DEG,
+            joint.peak_slip,
             m.peak_seat_displacement,
         ] {
             c.push(float_token(v));
         }
         c.push(m.unseated.to_string());
         c.push(m.unseating_time.map_or(String::new(), float_token));
-        c.push(m.unseated_end.map_or("", |i| SEAT_ENDS[i]).to_string());
+        c.push(super::pair_unseated_end(m).unwrap_or_default());
         let e = &m.final_energy;
         for v in [
-            m.max_penetration,
+            m.peak_penetration,
             m.energy_balance_error,
             e.input,
             e.viscous,
@@ -88,7 +88,7 @@ pub fn batch_csv(rows: &[BatchRow]) -> String {
         c.push(o.steps.to_string());
         c.push(o.lcp_solves.to_string());
         c.push(o.lcp_failures.to_string());
-        let peak = m.peak_contact_force;
+        let peak = joint.peak_contact_force;
         c.extend(tail_cells(
             peak.is_some(),
             peak,
@@ -102,7 +102,11 @@ pub fn batch_csv(rows: &[BatchRow]) -> String {
 /// `header`, then one row per run: `index, record, scale`, then for a run that failed
 /// `, , error`, empty cells and the message in the last column (`error`); else the PGA in g and
 /// m/s², the cells of `cells` and an empty `error`.
-fn rows_csv<O>(header: &str, rows: &[BatchRow<O>], cells: impl Fn(&O, &mut Vec<String>)) -> String {
+fn rows_csv(
+    header: &str,
+    rows: &[BatchRow],
+    cells: impl Fn(&BatchOutcome, &mut Vec<String>),
+) -> String {
     let ncols = header.split(',').count();
     let mut s = format!("{header}\n");
     for r in rows {
@@ -200,7 +204,7 @@ fn opt(x: Option<Real>) -> String {
 }
 
 /// The cells of one completed bridge run after `pga_mps2`.
-fn bridge_cells(o: &BridgeBatchOutcome, c: &mut Vec<String>) {
+fn bridge_cells(o: &BatchOutcome, c: &mut Vec<String>) {
     let m = &o.summary;
     let e = &m.final_energy;
     let hyst: Real = m.segments.iter().map(|g| g.hysteretic_energy).sum();
@@ -284,6 +288,6 @@ fn bridge_cells(o: &BridgeBatchOutcome, c: &mut Vec<String>) {
 /// (an abutment the bridge does not have, the contact force of the rigid law, a joint without a
 /// restrainer, no unseating, no joint at all for one segment) are empty fields; a value that is
 /// not a number is `nan` (the project's CSV tokens, [`float_token`]).
-pub fn bridge_batch_csv(n_segments: usize, rows: &[BridgeBatchRow]) -> String {
+pub fn bridge_batch_csv(n_segments: usize, rows: &[BatchRow]) -> String {
     rows_csv(&bridge_batch_header(n_segments), rows, bridge_cells)
 }

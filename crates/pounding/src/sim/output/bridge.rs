@@ -304,19 +304,7 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
             "outer_seat_length_m": json_float(m.outer_seat_length),
         },
     });
-    super::add_run_keys(
-        &mut out,
-        &super::RunKeys {
-            status: sol.status,
-            steps: sol.steps,
-            dt: sol.dt,
-            lcp: [
-                sol.lcp_solves,
-                sol.lcp_enumeration_fallbacks,
-                sol.lcp_failures,
-            ],
-        },
-    );
+    super::add_run_keys(&mut out, &super::RunKeys::of(sol));
     out["warnings"] =
         super::input_warnings(&setup.problem.ground, sol.dt, sol.time_step_advice.as_ref())
             .into_iter()

@@ -4,7 +4,7 @@
 use super::DEG;
 use crate::math::Real;
 use crate::output::{fixed, float_token};
-use crate::sim::SimSolution;
+use crate::sim::bridge::BridgeSolution;
 
 /// Every file `compare` writes; removed before a new run writes. `timing.json` is written last
 /// and marks a complete run (as in `pounding study`).
@@ -21,22 +21,23 @@ peak_joint_closing_m,peak_joint_opening_m,peak_rotation1_deg,peak_rotation2_deg,
 peak_seat_displacement_m,unseated,unseating_time_s,contact_dissipation_J,steps_per_contact,status";
 
 /// `compare.csv`: [`COMPARE_HEADER`], then one row per `(law, solution)`.
-pub fn compare_csv(runs: &[(&str, &SimSolution)]) -> String {
+pub fn compare_csv(runs: &[(&str, &BridgeSolution)]) -> String {
     let mut s = String::from(COMPARE_HEADER);
     s.push('\n');
     for &(law, sol) in runs {
         let m = &sol.summary;
+        let joint = &m.joints[0];
         let row = [
             law.to_string(),
             m.impacts.to_string(),
-            m.impacting_contacts.to_string(),
-            float_token(m.peak_contact_force.unwrap_or(Real::NAN)),
+            sol.impacts.len().to_string(),
+            float_token(joint.peak_contact_force.unwrap_or(Real::NAN)),
             float_token(m.peak_penetration),
-            float_token(m.peak_joint_closing),
-            float_token(m.peak_joint_opening),
-            float_token(m.peak_rotation[0] * DEG),
-            float_token(m.peak_rotation[1] * DEG),
-            float_token(m.peak_slip),
+            float_token(joint.peak_closing),
+            float_token(joint.peak_opening),
+            float_token(m.segments[0].peak_rotation * DEG),
+            float_token(m.segments[1].peak_rotation * DEG),
+            float_token(joint.peak_slip),
             float_token(m.peak_seat_displacement),
             m.unseated.to_string(),
             float_token(m.unseating_time.unwrap_or(Real::NAN)),
@@ -54,7 +55,7 @@ pub fn compare_csv(runs: &[(&str, &SimSolution)]) -> String {
 }
 
 /// The readable table `pounding compare` prints: one line per `(law, solution)`.
-pub fn compare_table(runs: &[(&str, &SimSolution)]) -> String {
+pub fn compare_table(runs: &[(&str, &BridgeSolution)]) -> String {
     let mut s = format!(
         "{:<11} {:>7} {:>11} {:>10} {:>11} {:>17} {:>9} {:>9}\n",
         "law",
@@ -68,7 +69,7 @@ pub fn compare_table(runs: &[(&str, &SimSolution)]) -> String {
     );
     for &(law, sol) in runs {
         let m = &sol.summary;
-        let f = m
+        let f = m.joints[0]
             .peak_contact_force
             .map_or("-".to_string(), |f| format!("{:.3}", f / 1e6));
         s.push_str(&format!(
@@ -77,9 +78,9 @@ pub fn compare_table(runs: &[(&str, &SimSolution)]) -> String {
             m.impacts,
             f,
             fixed(m.peak_penetration * 1e3, 3),
-            fixed(m.peak_joint_closing, 5),
-            fixed(m.peak_rotation[0] * DEG, 4),
-            fixed(m.peak_rotation[1] * DEG, 4),
+            fixed(m.joints[0].peak_closing, 5),
+            fixed(m.segments[0].peak_rotation * DEG, 4),
+            fixed(m.segments[1].peak_rotation * DEG, 4),
             fixed(m.peak_seat_displacement, 4),
             if m.unseated { "YES" } else { "no" }
         ));

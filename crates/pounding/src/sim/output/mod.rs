@@ -2,8 +2,9 @@
 //! the batch's `batch.csv`, and those of `pounding compare`. Numbers are shortest round-trip ([`float_token`]: `inf`, `-inf`, `nan`
 //! in CSV; [`json_float`]: `null` in JSON), so the bytes are the same for any thread count.
 
+use super::bridge::{BridgeSolution, SeatSummary};
 use super::scenario::SimSetup;
-use super::{JointContact, SEAT_ENDS, SimModel, SimProblem, SimSolution};
+use super::{JointContact, SimModel, SimProblem};
 
 use crate::geometry::ContactCase;
 use crate::ground_motion::Record;
@@ -70,9 +71,8 @@ pub const SIM_OUTPUTS: &[&str] = &[
 /// acceleration, displacements and velocities of both decks (rotations in degrees), the gaps of
 /// the corner contacts and joint ends, slip, the energy terms, and (compliance laws) the joint
 /// forces and (with abutments) the abutment gaps.
-pub fn history_csv(problem: &SimProblem, sol: &SimSolution) -> String {
-    let h = &sol.history;
-    let mut s = String::with_capacity(h.t.len() * 400);
+pub fn history_csv(problem: &SimProblem, sol: &BridgeSolution) -> String {
+    let mut s = String::with_capacity(sol.rows() * 400);
     s.push_str(
         "t_s,ag_x_mps2,ag_y_mps2,x1_m,y1_m,theta1_deg,x2_m,y2_m,theta2_deg,\
          vx1_mps,vy1_mps,omega1_degps,vx2_mps,vy2_mps,omega2_degps,",
@@ -84,7 +84,7 @@ pub fn history_csv(problem: &SimProblem, sol: &SimSolution) -> String {
         "joint_gap_xplus_m,joint_gap_xminus_m,slip_m,\
          input_energy_J,kinetic_energy_J,strain_energy_J,viscous_dissipation_J,contact_dissipation_J",
     );
-    let forces = !h.contact_force.is_empty();
+    let forces = !sol.contact_force.is_empty();
     if forces {
         s.push_str(",contact_force_xplus_N,contact_force_xminus_N");
     }
@@ -97,36 +97,51 @@ pub fn history_csv(problem: &SimProblem, sol: &SimSolution) -> String {
     }
     s.push('\n');
     let mut row: Vec<String> = Vec::with_capacity(32);
-    for i in 0..h.t.len() {
+    for i in 0..sol.rows() {
         row.clear();
-        let t = h.t[i];
+        let t = sol.t[i];
         let a = problem.ground.accel(crate::sim::solver_time(t, sol.dt));
         row.push(float_token(t));
         row.push(float_token(a.x));
         row.push(float_token(a.y));
-        for (k, v) in h.q[i].iter().enumerate() {
+        for (k, v) in sol.q_row(i).iter().enumerate() {
             row.push(float_token(if k % 3 == 2 { v * DEG } else { *v }));
         }
-        for (k, v) in h.u[i].iter().enumerate() {
+        for (k, v) in sol.u_row(i).iter().enumerate() {
             row.push(float_token(if k % 3 == 2 { v * DEG } else { *v }));
         }
-        row.extend(h.gaps[i].iter().map(|&g| float_token(g)));
-        row.extend(h.end_gaps[i].iter().map(|&g| float_token(g)));
-        row.push(float_token(h.slip[i]));
-        let e = &h.energy[i];
+        row.extend(sol.gaps[4 * i..4 * i + 4].iter().map(|&g| float_token(g)));
+        row.extend(sol.end_gaps_row(i).iter().map(|&g| float_token(g)));
+        row.push(float_token(sol.slip[i]));
+        let e = &sol.energy[i];
         for v in [e.input, e.kinetic, e.potential, e.viscous, e.contact] {
             row.push(float_token(v));
         }
-        if forces {
-            row.extend(h.contact_force[i].iter().map(|&f| float_token(f)));
-        }
+        row.extend(sol.contact_force_row(i).iter().map(|&f| float_token(f)));
         for &j in &abut {
-            row.push(float_token(h.abutment_gaps[i][j]));
+            row.push(float_token(sol.abutment_gaps[i][j]));
         }
         s.push_str(&row.join(","));
         s.push('\n');
     }
     s
+}
+
+/// The two-deck name of a seated end of the two-deck bridge ([`crate::sim::SEAT_ENDS`]): deck `j` is segment
+/// `j`; its end on the joint is `deck<j>-joint`, the other `deck<j>-far`.
+pub fn pair_seat_name(seat: &SeatSummary) -> String {
+    let side = if seat.support.starts_with("joint") {
+        "joint"
+    } else {
+        "far"
+    };
+    format!("deck{}-{side}", seat.segment)
+}
+
+/// The two-deck name ([`pair_seat_name`]) of the end that unseated first.
+pub(crate) fn pair_unseated_end(s: &super::bridge::BridgeSummary) -> Option<String> {
+    let name = s.unseated_end.as_ref()?;
+    s.seats.iter().find(|e| &e.end == name).map(pair_seat_name)
 }
 
 /// The numbers of an `impacts.csv` row: velocities before and after, impulses, dissipated
@@ -213,7 +228,7 @@ pub(crate) fn peak_estimate_json<'a>(
 /// `impacts.csv`: one row per impacting contact (time, contact, mode, relative velocities before
 /// and after, impulses, dissipated energy), then [`PULSE_COLUMNS`] (compliance law) or
 /// [`ESTIMATE_COLUMNS`] (rigid law).
-pub fn impacts_csv(model: &SimModel, sol: &SimSolution) -> String {
+pub fn impacts_csv(model: &SimModel, sol: &BridgeSolution) -> String {
     let rigid = matches!(model.contact, JointContact::Rigid);
     let mut s = format!(
         "impact,t_s,contact,mode,gamma_n_pre_mps,gamma_t_pre_mps,gamma_n_post_mps,gamma_t_post_mps,\
@@ -339,37 +354,46 @@ pub fn warnings_message(w: &[RunWarning]) -> Option<String> {
 }
 
 /// The two-deck run's warnings ([`energy_warnings`], contacts named as in `impacts.csv`).
-pub fn run_warnings(sol: &SimSolution) -> Vec<RunWarning> {
+pub fn run_warnings(sol: &BridgeSolution) -> Vec<RunWarning> {
     let rigid = sol.time_step_advice.is_none() && sol.impacts.iter().all(|r| r.pulse.is_none());
     energy_warnings(&sol.impacts, rigid, |r| r.contact.name().to_string())
 }
 
 /// The `summary.json` value: peaks, unseating, energies, status and counters, the ground motion
 /// and the model (keys for straight/skewed decks, abutments and compliance laws only when used).
-pub fn summary_json(setup: &SimSetup, sol: &SimSolution) -> serde_json::Value {
+pub fn summary_json(setup: &SimSetup, sol: &BridgeSolution) -> serde_json::Value {
     let s = &sol.summary;
     let e = &s.final_energy;
     let m = &setup.problem.model;
-    let seat: serde_json::Map<String, serde_json::Value> = SEAT_ENDS
+    let joint = &s.joints[0];
+    let seat: serde_json::Map<String, serde_json::Value> = s
+        .seats
         .iter()
-        .zip(s.peak_seat_by_end)
-        .map(|(k, v)| (k.to_string(), json_float(v)))
+        .map(|end| (pair_seat_name(end), json_float(end.peak_displacement)))
         .collect();
+    let unseated_end = pair_unseated_end(s);
+    let deck = |j: usize| &s.segments[j];
+    let period = |w: Real| json_float(2.0 * std::f64::consts::PI / w);
+    let periods = [0, 1].map(|j| deck(j).frequencies.map(period));
+    let rayleigh = [0, 1].map(|j| {
+        let (a0, a1) = deck(j).rayleigh;
+        [json_float(a0), json_float(a1)]
+    });
     let mut out = json!({
         "impacts": s.impacts,
-        "impacting_contacts": s.impacting_contacts,
-        "peak_joint_closing_m": json_float(s.peak_joint_closing),
-        "peak_joint_opening_m": json_float(s.peak_joint_opening),
-        "peak_rotation_deg": [json_float(s.peak_rotation[0] * DEG), json_float(s.peak_rotation[1] * DEG)],
-        "peak_slip_m": json_float(s.peak_slip),
+        "impacting_contacts": sol.impacts.len(),
+        "peak_joint_closing_m": json_float(joint.peak_closing),
+        "peak_joint_opening_m": json_float(joint.peak_opening),
+        "peak_rotation_deg": [json_float(deck(0).peak_rotation * DEG), json_float(deck(1).peak_rotation * DEG)],
+        "peak_slip_m": json_float(joint.peak_slip),
         "peak_seat_displacement_m": json_float(s.peak_seat_displacement),
         "peak_seat_displacement_by_end_m": seat,
         "seat_length_m": json_float(m.seat_length),
         "unseated": s.unseated,
         "unseating_time_s": s.unseating_time.map_or(serde_json::Value::Null, json_float),
-        "unseated_end": s.unseated_end.map(|i| SEAT_ENDS[i]),
-        "max_penetration_m": json_float(s.max_penetration),
-        "peak_contact_force_n": s.peak_contact_force.map_or(serde_json::Value::Null, json_float),
+        "unseated_end": unseated_end,
+        "max_penetration_m": json_float(s.peak_penetration),
+        "peak_contact_force_n": joint.peak_contact_force.map_or(serde_json::Value::Null, json_float),
         "peak_penetration_m": json_float(s.peak_penetration),
         "energy_balance_error": json_float(s.energy_balance_error),
         "energy_J": {
@@ -380,8 +404,8 @@ pub fn summary_json(setup: &SimSetup, sol: &SimSolution) -> serde_json::Value {
             "contact_dissipation": json_float(e.contact),
             "max_input": json_float(s.max_input_energy),
         },
-        "natural_periods_s": sol.frequencies.map(|w| w.map(|w| json_float(2.0 * std::f64::consts::PI / w))),
-        "rayleigh_a0_a1": sol.rayleigh.map(|(a, b)| [json_float(a), json_float(b)]),
+        "natural_periods_s": periods,
+        "rayleigh_a0_a1": rayleigh,
         "ground_motion": ground_json(&setup.records, &setup.problem.ground),
         "model": {
             "mass_kg": m.masses().map(json_float),
@@ -410,18 +434,18 @@ pub fn summary_json(setup: &SimSetup, sol: &SimSolution) -> serde_json::Value {
                     json!({
                         "gap_m": json_float(a.gap),
                         "seat_length_m": json_float(a.seat_length),
-                        "peak_closing_m": s.peak_abutment_closing[j].map_or(serde_json::Value::Null, json_float),
+                        "peak_closing_m": s.abutments[j].as_ref().map_or(serde_json::Value::Null, |a| json_float(a.peak_closing)),
                     }),
                 );
             }
         }
         ab.insert(
             "impacting_contacts".into(),
-            json!(s.abutment_impacting_contacts),
+            json!(sol.abutment_impacting_contacts()),
         );
         out["abutments"] = serde_json::Value::Object(ab);
     }
-    add_run_keys(&mut out, &RunKeys::of_pair(sol));
+    add_run_keys(&mut out, &RunKeys::of(sol));
     add_compliance_summary(&mut out, m, sol);
     out["warnings"] = input_warnings(&setup.problem.ground, sol.dt, sol.time_step_advice.as_ref())
         .into_iter()
@@ -473,7 +497,7 @@ pub(crate) struct RunKeys {
 }
 
 impl RunKeys {
-    fn of_pair(sol: &SimSolution) -> Self {
+    pub(crate) fn of(sol: &BridgeSolution) -> Self {
         RunKeys {
             status: sol.status,
             steps: sol.steps,
@@ -500,7 +524,7 @@ pub(crate) fn add_run_keys(v: &mut serde_json::Value, r: &RunKeys) {
 }
 
 /// `summary.json` as written: [`summary_json`] pretty-printed, with a final newline.
-pub fn summary_json_text(setup: &SimSetup, sol: &SimSolution) -> String {
+pub fn summary_json_text(setup: &SimSetup, sol: &BridgeSolution) -> String {
     let mut v = summary_json(setup, sol);
     crate::output::json_without_negative_zero(&mut v);
     let mut s = serde_json::to_string_pretty(&v).unwrap_or_default();
@@ -523,7 +547,7 @@ pub fn describe_contact(c: &JointContact) -> serde_json::Value {
 /// Adds the compliance-law fields to a `summary.json` value (nothing for rigid contact, so the
 /// rigid summary keeps its keys): `contact_law` (parameters), `time_step` (contact duration,
 /// steps per contact, adequate), `newton_failures`.
-fn add_compliance_summary(v: &mut serde_json::Value, m: &SimModel, sol: &SimSolution) {
+fn add_compliance_summary(v: &mut serde_json::Value, m: &SimModel, sol: &BridgeSolution) {
     if matches!(m.contact, JointContact::Rigid) {
         return;
     }
