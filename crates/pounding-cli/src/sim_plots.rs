@@ -30,6 +30,7 @@ use pounding::analytic::SlipMode;
 use pounding::math::Real;
 use pounding::sim::SimProblem;
 use pounding::sim::bridge::BridgeSolution;
+use pounding::sim::dofs::PlanDof;
 use std::path::Path;
 
 pub use crate::plots::sim_batch::{BatchCurve, batch_plot};
@@ -132,7 +133,7 @@ fn displacements(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
         SeriesLabelPosition::UpperRight,
     )?;
     for (j, area) in areas[1..].iter().enumerate() {
-        let o = 3 * j;
+        let (ix, iy) = (sol.dofs.plan(j, PlanDof::X), sol.dofs.plan(j, PlanDof::Y));
         line_panel(
             area,
             &format!(
@@ -144,12 +145,12 @@ fn displacements(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
             &[
                 Series {
                     label: &format!("y{} (normal to joint)", j + 1),
-                    pts: col(&|i| sol.q_row(i)[o + 1]),
+                    pts: col(&|i| sol.q_row(i)[iy]),
                     color: BLUE,
                 },
                 Series {
                     label: &format!("x{} (along joint)", j + 1),
-                    pts: col(&|i| sol.q_row(i)[o]),
+                    pts: col(&|i| sol.q_row(i)[ix]),
                     color: ORANGE,
                 },
             ],
@@ -172,12 +173,12 @@ fn rotations(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
         &[
             Series {
                 label: "θ1 (deck 1)",
-                pts: col(&|i| sol.q_row(i)[2] * DEG),
+                pts: col(&|i| sol.q_row(i)[sol.dofs.plan(0, PlanDof::Theta)] * DEG),
                 color: BLUE,
             },
             Series {
                 label: "θ2 (deck 2)",
-                pts: col(&|i| sol.q_row(i)[5] * DEG),
+                pts: col(&|i| sol.q_row(i)[sol.dofs.plan(1, PlanDof::Theta)] * DEG),
                 color: RED,
             },
         ],

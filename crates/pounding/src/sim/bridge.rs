@@ -38,6 +38,7 @@
 //! compliance laws); their parameters may differ.
 
 use super::contact::JointGeom;
+use super::dofs::Dofs;
 use super::driver::{self, AbutmentFace, BodySystem, Bridge, SeatEnd, SeatSupport};
 use super::integrate::SiteKinds;
 use super::model::{EndFace, SegmentBody, deck_frequencies, rayleigh_coefficients};
@@ -486,6 +487,11 @@ impl BridgeModel {
         joints.chain(abuts)
     }
 
+    /// The DOF map of the bridge: every segment a plan rigid body `(x, y, θ)`, in bridge order.
+    pub fn dofs(&self) -> Dofs {
+        Dofs::plan_rigid(self.segments.len())
+    }
+
     /// The segments placed end to end in the global frame (module doc).
     pub fn layout(&self) -> Vec<SegmentBody> {
         let mut out: Vec<SegmentBody> = Vec::with_capacity(self.segments.len());
@@ -652,8 +658,10 @@ impl BridgeModel {
                 });
             }
         }
-        let elements = self.elements(&bodies);
+        let dofs = self.dofs();
+        let elements = self.elements(&bodies, &dofs);
         Bridge {
+            dofs,
             bodies,
             joints,
             abutments,
@@ -727,10 +735,13 @@ impl BridgeModel {
 
 impl BridgeModel {
     /// The yielding bearings and restrainers (validated parameters).
-    fn elements(&self, bodies: &[SegmentBody]) -> super::elements::Elements {
+    fn elements(&self, bodies: &[SegmentBody], dofs: &Dofs) -> super::elements::Elements {
         use crate::element::bearing::{BearingState, BilinearBearing};
         use crate::element::restrainer::{Restrainer, RestrainerElement, SlackGrowth};
-        let mut el = super::elements::Elements::default();
+        let mut el = super::elements::Elements {
+            dofs: dofs.clone(),
+            ..Default::default()
+        };
         let points = self.bearing_points();
         for (i, s) in self.segments.iter().enumerate() {
             let Some(y) = s.bearing_yield else { continue };
@@ -1046,7 +1057,7 @@ pub struct BridgeProblem {
     pub model: BridgeModel,
     /// The ground acceleration.
     pub ground: GroundMotion,
-    /// Initial displacements `q(0)`, `3 N` entries \[m, rad\].
+    /// Initial displacements `q(0)`, laid out by [`BridgeModel::dofs`] \[m, rad\].
     pub q0: Vec<Real>,
     /// Initial velocities `u(0)` relative to the ground \[m/s, rad/s\].
     pub u0: Vec<Real>,
@@ -1055,7 +1066,7 @@ pub struct BridgeProblem {
 impl BridgeProblem {
     /// At rest in the reference pose.
     pub fn at_rest(model: BridgeModel, ground: GroundMotion) -> Self {
-        let n = 3 * model.segments.len();
+        let n = model.dofs().len();
         Self {
             model,
             ground,
@@ -1201,9 +1212,11 @@ pub struct BridgeSolution {
     pub dt: Real,
     /// Number of segments.
     pub n_segments: usize,
+    /// Where each segment's coordinates sit in the rows of [`Self::q`] and [`Self::u`].
+    pub dofs: Dofs,
     /// Kept times \[s\].
     pub t: Vec<Real>,
-    /// `q` rows (`3 N` per kept time).
+    /// `q` rows ([`Self::dofs`]`.len()` per kept time).
     pub q: Vec<Real>,
     /// `u` rows.
     pub u: Vec<Real>,
@@ -1250,25 +1263,25 @@ impl BridgeSolution {
         self.t.len()
     }
 
-    /// `q` at kept time `r` (`3 N` values: `x_j, y_j, θ_j` per segment) \[m, rad\].
+    /// `q` at kept time `r` (laid out by [`Self::dofs`]: `x_j, y_j, θ_j` per segment) \[m, rad\].
     pub fn q_row(&self, r: usize) -> &[Real] {
-        let n = 3 * self.n_segments;
+        let n = self.dofs.len();
         &self.q[n * r..n * (r + 1)]
     }
 
     /// The rows of `q`, one per kept time.
     pub fn q_rows(&self) -> std::slice::ChunksExact<'_, Real> {
-        self.q.chunks_exact(3 * self.n_segments)
+        self.q.chunks_exact(self.dofs.len())
     }
 
     /// The rows of `u`, one per kept time.
     pub fn u_rows(&self) -> std::slice::ChunksExact<'_, Real> {
-        self.u.chunks_exact(3 * self.n_segments)
+        self.u.chunks_exact(self.dofs.len())
     }
 
     /// `u` at kept time `r` \[m/s, rad/s\].
     pub fn u_row(&self, r: usize) -> &[Real] {
-        let n = 3 * self.n_segments;
+        let n = self.dofs.len();
         &self.u[n * r..n * (r + 1)]
     }
 
@@ -1304,7 +1317,7 @@ pub fn simulate_bridge(
     settings.validate()?;
     problem.ground.validate()?;
     model.validate()?;
-    let n = 3 * model.segments.len();
+    let n = model.dofs().len();
     for (name, v) in [("q0", &problem.q0), ("u0", &problem.u0)] {
         if v.len() != n {
             return Err(SimError::InvalidArgument {
@@ -1445,8 +1458,7 @@ pub(crate) fn solution(
     let correction = r.elements.bearing_stored_energy(nb);
     let segments = (0..nb)
         .map(|i| {
-            let x = r.final_q[3 * i];
-            let y = r.final_q[3 * i + 1];
+            let [x, y, _] = br.dofs.plan_of(i, r.final_q.as_slice());
             SegmentSummary {
                 peak_displacement: peaks.disp[i],
                 final_displacement: (x * x + y * y).sqrt(),
@@ -1516,6 +1528,7 @@ pub(crate) fn solution(
         steps: r.steps,
         dt: sc.h,
         n_segments: nb,
+        dofs: br.dofs.clone(),
         t: tr.t,
         q: tr.q,
         u: tr.u,

@@ -191,6 +191,8 @@ pub(crate) struct SiteLaw {
 /// (a joint's two ends; an abutment's corners `c0`, `c1`).
 pub(crate) struct ComplianceStepper {
     bodies: Vec<SegmentBody>,
+    /// The DOF map of the segments.
+    dofs: super::dofs::Dofs,
     joints: Vec<super::contact::JointGeom>,
     abutments: Vec<super::driver::AbutmentFace>,
     /// Law of each site.
@@ -230,7 +232,7 @@ impl ComplianceStepper {
         bridge: &Bridge,
     ) -> Self {
         let (h, th) = (scheme.h, scheme.th);
-        let n = 3 * bridge.bodies.len();
+        let n = bridge.dofs.len();
         let n_ends = 2 * sites.len();
         let m_eff = bridge
             .joints
@@ -246,6 +248,7 @@ impl ComplianceStepper {
         };
         let mut s = ComplianceStepper {
             bodies: bridge.bodies.clone(),
+            dofs: bridge.dofs.clone(),
             joints,
             abutments,
             vr: friction_velocity,
@@ -322,8 +325,8 @@ impl ComplianceStepper {
     /// Evaluates every end at `(q, u)` from the committed `states`.
     fn eval_ends(&self, q: &State, u: &State, states: &[LawState]) -> Vec<EndEval> {
         let n = q.len();
-        let nb = self.bodies.len();
-        let pose = Pose::new(&self.bodies, q.as_slice());
+        let dofs = &self.dofs;
+        let pose = Pose::new(&self.bodies, dofs, q.as_slice());
         let mut out = Vec::with_capacity(states.len());
         for jg in &self.joints {
             let jf = candidates(&self.bodies, &pose, jg);
@@ -332,7 +335,7 @@ impl ComplianceStepper {
                     Some(i) => {
                         let c = jf.cands[i];
                         let (wn, wt) = c.force_directions(&pose, jg);
-                        let (wn, wt) = (wn.dense(nb), wt.dense(nb));
+                        let (wn, wt) = (wn.dense(dofs), wt.dense(dofs));
                         self.end_eval(out.len(), states, Some(c.case), wn, wt, -c.gap, u)
                     }
                     None => {
@@ -356,7 +359,7 @@ impl ComplianceStepper {
                     second: None,
                 };
                 let delta = -(pc - ab.point).dot(&nn);
-                let (wn, wt) = (dir(nn).dense(nb), dir(tn).dense(nb));
+                let (wn, wt) = (dir(nn).dense(dofs), dir(tn).dense(dofs));
                 out.push(self.end_eval(out.len(), states, None, wn, wt, delta, u));
             }
         }

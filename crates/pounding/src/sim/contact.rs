@@ -21,6 +21,7 @@
 //! simulator uses, per end, the candidate whose corner lies over the other face (spec §5.4; the
 //! smaller gap if both do, i.e. corner on corner), so at most two contacts per joint.
 
+use super::dofs::Dofs;
 use super::model::{EndFace, SegmentBody};
 use crate::geometry::ContactCase;
 use crate::math::{Real, Vector, cross};
@@ -81,26 +82,27 @@ pub(crate) struct Pose {
 
 impl Pose {
     /// The pose at `q`.
-    pub fn new(bodies: &[SegmentBody], q: &[Real]) -> Self {
+    pub fn new(bodies: &[SegmentBody], dofs: &Dofs, q: &[Real]) -> Self {
         let n = bodies.len();
         let mut pose = Pose {
             d: Vec::with_capacity(n),
             sc: Vec::with_capacity(n),
             g: Vec::with_capacity(n),
         };
-        pose.set(bodies, q);
+        pose.set(bodies, dofs, q);
         pose
     }
 
     /// Overwrites this pose with the pose at `q` (reusing its storage).
-    pub fn set(&mut self, bodies: &[SegmentBody], q: &[Real]) {
+    pub fn set(&mut self, bodies: &[SegmentBody], dofs: &Dofs, q: &[Real]) {
         self.d.clear();
         self.sc.clear();
         self.g.clear();
         for (j, b) in bodies.iter().enumerate() {
-            let d = Vector::new(q[3 * j], q[3 * j + 1]);
+            let [x, y, th] = dofs.plan_of(j, q);
+            let d = Vector::new(x, y);
             self.d.push(d);
-            self.sc.push(q[3 * j + 2].sin_cos());
+            self.sc.push(th.sin_cos());
             self.g.push(b.centroid + d);
         }
     }
@@ -137,11 +139,11 @@ pub(crate) struct Direction {
 }
 
 impl Direction {
-    /// The dense column in `q` coordinates (`3 n_bodies` entries).
-    pub fn dense(&self, n_bodies: usize) -> State {
-        let mut w = State::zeros(3 * n_bodies);
+    /// The dense column in `q` coordinates (`dofs.len()` entries).
+    pub fn dense(&self, dofs: &Dofs) -> State {
+        let mut w = State::zeros(dofs.len());
         for (j, v) in std::iter::once(self.first).chain(self.second) {
-            w.fixed_rows_mut::<3>(3 * j).copy_from_slice(&v);
+            dofs.add_plan(j, w.as_mut_slice(), v);
         }
         w
     }
@@ -263,12 +265,15 @@ pub(crate) fn candidates(bodies: &[SegmentBody], pose: &Pose, joint: &JointGeom)
 /// `Σ_d w_d v_d` over the entries of `w` in order (a left-to-right sum, as the dense 6-entry
 /// sum of the two-deck model).
 #[inline]
-pub(crate) fn dot_dir(w: &Direction, v: &State) -> Real {
-    let mut it = std::iter::once(w.first).chain(w.second);
-    let (j0, a0) = it.next().unwrap();
-    let head = (0..3).map(move |i| a0[i] * v[3 * j0 + i]);
+pub(crate) fn dot_dir(w: &Direction, v: &State, dofs: &Dofs) -> Real {
+    let (j0, a0) = w.first;
+    let v0 = dofs.plan_of(j0, v.as_slice());
+    let head = (0..3).map(move |i| a0[i] * v0[i]);
     match w.second {
         None => head.sum(),
-        Some((j1, a1)) => head.chain((0..3).map(move |i| a1[i] * v[3 * j1 + i])).sum(),
+        Some((j1, a1)) => {
+            let v1 = dofs.plan_of(j1, v.as_slice());
+            head.chain((0..3).map(move |i| a1[i] * v1[i])).sum()
+        }
     }
 }

@@ -26,6 +26,7 @@
 //! ([`Bridge::new`], [`pair_solution`]).
 
 use super::contact::{JointFrame, JointGeom, Pose, State, candidates};
+use super::dofs::{Dofs, PlanDof};
 use super::model::SegmentBody;
 use super::observer::{Observer, Snapshot};
 use super::table::Table;
@@ -99,6 +100,8 @@ pub(crate) struct Scheme {
     b_g: Vec<Matrix3x2<Real>>,
     /// `M_j r`: the effective load is `F = −M r a_g`.
     mr: Vec<Matrix3x2<Real>>,
+    /// Where each segment's block sits in the state.
+    pub dofs: Dofs,
 }
 
 impl Scheme {
@@ -139,6 +142,7 @@ impl Scheme {
             b_g: Vec::with_capacity(n),
             mr: Vec::with_capacity(n),
             bodies: Vec::new(),
+            dofs: Dofs::plan_rigid(n),
         };
         for b in &bodies {
             let (mm, kk, cc) = (&b.mass, &b.stiffness, &b.damping);
@@ -165,33 +169,27 @@ impl Scheme {
         Ok(sc)
     }
 
-    /// Number of segments.
-    pub fn n_bodies(&self) -> usize {
-        self.bodies.len()
-    }
-
-    /// Applies a block-diagonal matrix (one `3 × 3` block per segment) to `v`.
-    fn apply(blocks: &[Matrix3<Real>], v: &State) -> State {
-        Self::apply_blocks(blocks.iter(), v)
-    }
-
-    /// [`Self::apply`] with the blocks from an iterator (no list of blocks is collected: the
-    /// energy terms of every step use the blocks of [`Self::bodies`] in place).
-    fn apply_blocks<'a>(blocks: impl Iterator<Item = &'a Matrix3<Real>>, v: &State) -> State {
+    /// Applies a block-diagonal matrix (one `3 × 3` block per segment, at its place in the DOF
+    /// map `dofs`) to `v`.
+    fn apply(dofs: &Dofs, blocks: &[Matrix3<Real>], v: &State) -> State {
         let mut out = State::zeros(v.len());
-        Self::apply_blocks_into(blocks, v, &mut out);
+        Self::apply_blocks_into(dofs, blocks.iter(), v, &mut out);
         out
     }
 
-    /// [`Self::apply_blocks`] into `out` (same length as `v`), allocating nothing.
+    /// [`Self::apply`] with the blocks from an iterator (no list of blocks is collected: the
+    /// energy terms of every step use the blocks of [`Self::bodies`] in place), into `out` (same
+    /// length as `v`), allocating nothing.
     fn apply_blocks_into<'a>(
+        dofs: &Dofs,
         blocks: impl Iterator<Item = &'a Matrix3<Real>>,
         v: &State,
         out: &mut State,
     ) {
         for (j, b) in blocks.enumerate() {
-            let x: Vector3<Real> = v.fixed_rows::<3>(3 * j).into_owned();
-            out.fixed_rows_mut::<3>(3 * j).copy_from(&(b * x));
+            let s = dofs.start(j);
+            let x: Vector3<Real> = v.fixed_rows::<3>(s).into_owned();
+            out.fixed_rows_mut::<3>(s).copy_from(&(b * x));
         }
     }
 
@@ -201,12 +199,13 @@ impl Scheme {
         // order, ((u + A_u u) + A_q q) + B_g ā, as the whole-vector expression (bit-identical)
         let a = Vector2::new(abar.x, abar.y);
         for j in 0..self.a_u.len() {
-            let uj: Vector3<Real> = u.fixed_rows::<3>(3 * j).into_owned();
-            let qj: Vector3<Real> = q.fixed_rows::<3>(3 * j).into_owned();
+            let s = self.dofs.start(j);
+            let uj: Vector3<Real> = u.fixed_rows::<3>(s).into_owned();
+            let qj: Vector3<Real> = q.fixed_rows::<3>(s).into_owned();
             let au = self.a_u[j] * uj;
             let aq = self.a_q[j] * qj;
             let bg = self.b_g[j] * a;
-            out.fixed_rows_mut::<3>(3 * j)
+            out.fixed_rows_mut::<3>(s)
                 .copy_from(&(((uj + au) + aq) + bg));
         }
     }
@@ -215,7 +214,8 @@ impl Scheme {
     fn load(&self, a: &Vector, f: &mut State) {
         let a = Vector2::new(a.x, a.y);
         for (j, m) in self.mr.iter().enumerate() {
-            f.fixed_rows_mut::<3>(3 * j).copy_from(&(-(m * a)));
+            f.fixed_rows_mut::<3>(self.dofs.start(j))
+                .copy_from(&(-(m * a)));
         }
     }
 
@@ -225,11 +225,12 @@ impl Scheme {
     /// their yielding bearings' initial stiffness, whose energy the elements book as work
     /// ([`super::elements::Elements::book`]).
     fn energies(&self, q: &State, u: &State, w: &mut Work, yielding: &[bool]) -> (Real, Real) {
-        Self::apply_blocks_into(self.bodies.iter().map(|b| &b.mass), u, &mut w.mu);
-        Self::apply_blocks_into(self.bodies.iter().map(|b| &b.stiffness), q, &mut w.kq);
+        let dofs = &self.dofs;
+        Self::apply_blocks_into(dofs, self.bodies.iter().map(|b| &b.mass), u, &mut w.mu);
+        Self::apply_blocks_into(dofs, self.bodies.iter().map(|b| &b.stiffness), q, &mut w.kq);
         let strain = if yielding.iter().any(|y| *y) {
             (0..q.len())
-                .filter(|i| !yielding[i / 3])
+                .filter(|&i| !yielding[dofs.which(i).0])
                 .map(|i| q[i] * w.kq[i])
                 .sum::<Real>()
         } else {
@@ -240,7 +241,7 @@ impl Scheme {
 
     /// `vᵀ C v`; `cv` holds `C v`.
     fn damping_power(&self, v: &State, cv: &mut State) -> Real {
-        Self::apply_blocks_into(self.bodies.iter().map(|b| &b.damping), v, cv);
+        Self::apply_blocks_into(&self.dofs, self.bodies.iter().map(|b| &b.damping), v, cv);
         v.dot(cv)
     }
 }
@@ -250,12 +251,12 @@ impl Scheme {
 /// `Ŵ_t = Ŵ − h²θ² Σ Bᵀ (k0 I − K_t) B` of [`super::elements::Implicit`] (the response of the
 /// segments to a contact impulse with their bearings on the branch they are on).
 #[derive(Clone, Copy)]
-pub(crate) struct Winv<'a>(pub &'a [Matrix3<Real>]);
+pub(crate) struct Winv<'a>(pub &'a [Matrix3<Real>], pub &'a Dofs);
 
 impl Winv<'_> {
     /// `Ŵ⁻¹ v`.
     pub fn mul(&self, v: &State) -> State {
-        Scheme::apply(self.0, v)
+        Scheme::apply(self.1, self.0, v)
     }
 
     /// `Ŵ⁻¹ D` column by column.
@@ -406,6 +407,8 @@ pub(crate) struct Bridge {
     pub abutments: Vec<AbutmentFace>,
     /// Seated ends, in the order of the seat outputs.
     pub seats: Vec<SeatEnd>,
+    /// Where each segment's coordinates sit in `q` and `u`.
+    pub dofs: Dofs,
     /// The bearings of each segment.
     pub bearings: Vec<Vec<BearingAt>>,
     /// Yielding bearings and restrainers in their initial state.
@@ -415,7 +418,7 @@ pub(crate) struct Bridge {
 impl Bridge {
     /// The geometry at `q`.
     pub fn frame(&self, q: &State) -> Frame {
-        let pose = Pose::new(&self.bodies, q.as_slice());
+        let pose = Pose::new(&self.bodies, &self.dofs, q.as_slice());
         let joints = self
             .joints
             .iter()
@@ -426,7 +429,7 @@ impl Bridge {
 
     /// [`Self::frame`] at `q` into `frame` (a frame of this bridge), reusing its storage.
     pub fn update_frame(&self, q: &State, frame: &mut Frame) {
-        frame.pose.set(&self.bodies, q.as_slice());
+        frame.pose.set(&self.bodies, &self.dofs, q.as_slice());
         for (jf, j) in frame.joints.iter_mut().zip(&self.joints) {
             *jf = candidates(&self.bodies, &frame.pose, j);
         }
@@ -626,12 +629,13 @@ impl Peaks {
     /// The per-segment monitors of the bridge model (displacement magnitude, bearing
     /// deformation `u_b = (x − θ r_y, y + θ r_x)`, `r = b − G⁰`).
     fn observe_segments(&mut self, q: &State, br: &Bridge) {
+        let q = q.as_slice();
         for (j, d) in self.disp.iter_mut().enumerate() {
-            let (x, y) = (q[3 * j], q[3 * j + 1]);
+            let [x, y, _] = br.dofs.plan_of(j, q);
             *d = d.max((x * x + y * y).sqrt());
         }
         for (j, pts) in br.bearings.iter().enumerate() {
-            let (x, y, th) = (q[3 * j], q[3 * j + 1], q[3 * j + 2]);
+            let [x, y, th] = br.dofs.plan_of(j, q);
             let g = br.bodies[j].centroid;
             for b in pts {
                 let r = b.point - g;
@@ -684,7 +688,7 @@ impl Peaks {
             slips.push(slip);
         }
         for (j, r) in self.rot.iter_mut().enumerate() {
-            *r = r.max(q[3 * j + 2].abs());
+            *r = r.max(q[br.dofs.plan(j, PlanDof::Theta)].abs());
         }
         for (e, s_end) in br.seats.iter().enumerate() {
             let s = s_end
@@ -889,7 +893,7 @@ pub(crate) fn run<S: Stepper>(
     let mut el = bridge.elements.clone();
     let nb = bridge.bodies.len();
     let has_elements = !el.is_empty();
-    let mut el_force = super::elements::StepForce::new(nb);
+    let mut el_force = super::elements::StepForce::new(&sc.dofs);
     let mut yielding = super::yielding::Implicit::new(&el.bearings, sc);
     // the geometry at q_k: computed once per state, after q_{k+1} is known, so that the
     // elements' commit at q_{k+1} and the next step share its sin θ_j, cos θ_j
@@ -937,7 +941,7 @@ pub(crate) fn run<S: Stepper>(
         sc.u_free(&q, &u, &abar, &mut work.u_free);
         if has_elements {
             el.step_force(&q, &u, h, th, &bridge.bodies, &frame.pose, &mut el_force);
-            Scheme::apply_blocks_into(sc.winv.iter(), &el_force.r, &mut work.wr);
+            Scheme::apply_blocks_into(&sc.dofs, sc.winv.iter(), &el_force.r, &mut work.wr);
             for (uf, wr) in work.u_free.iter_mut().zip(work.wr.iter()) {
                 *uf += wr * h;
             }
@@ -946,9 +950,9 @@ pub(crate) fn run<S: Stepper>(
             }
         }
         let winv = if yielding.tangent {
-            Winv(&yielding.winv)
+            Winv(&yielding.winv, &sc.dofs)
         } else {
-            Winv(&sc.winv)
+            Winv(&sc.winv, &sc.dofs)
         };
         let input = StepInput {
             t_next: clock.time(k + 1),
@@ -976,7 +980,7 @@ pub(crate) fn run<S: Stepper>(
                     work.q_th[i] = q[i] + work.u_th[i] * (th * h);
                 }
                 let k_blocks = sc.bodies.iter().map(|b| &b.stiffness);
-                Scheme::apply_blocks_into(k_blocks, &work.q_th, &mut work.kq_th);
+                Scheme::apply_blocks_into(&sc.dofs, k_blocks, &work.q_th, &mut work.kq_th);
             }
             let kq = (&work.kq_th, yield_body.as_slice());
             el.book(h, &work.u_mid, kq, &mut el_force, nb);

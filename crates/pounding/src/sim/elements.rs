@@ -31,6 +31,7 @@
 //! work is `−Σ h ū·(R̄ − R̄_b)` (their stored energy plus, with yield, their plastic work).
 
 use super::contact::{Pose, State};
+use super::dofs::Dofs;
 use super::model::SegmentBody;
 use crate::element::bearing::{BearingState, BilinearBearing};
 use crate::element::restrainer::{RestrainerElement, RestrainerResponse};
@@ -59,9 +60,10 @@ pub(crate) struct StepForce {
 }
 
 impl StepForce {
-    /// Zeroed vectors for a bridge of `n_bodies` segments.
-    pub fn new(n_bodies: usize) -> Self {
-        let z = || State::zeros(3 * n_bodies);
+    /// Zeroed vectors for a bridge of the segments of `dofs`.
+    pub fn new(dofs: &Dofs) -> Self {
+        let n_bodies = dofs.n_bodies();
+        let z = || State::zeros(dofs.len());
         StepForce {
             r: z(),
             rb: z(),
@@ -127,6 +129,8 @@ pub(crate) struct Elements {
     pub w_bearings: Vec<Real>,
     /// Work done on the restrainers.
     pub w_cables: Real,
+    /// The DOF map of the segments they act on.
+    pub dofs: Dofs,
 }
 
 impl Elements {
@@ -163,7 +167,7 @@ impl Elements {
         f.r1.copy_from(&f.rb1);
         if !self.cables.is_empty() {
             self.add_cable_forces(&mut f.r0, pose, bodies);
-            f.pose_pred.set(bodies, f.pred.as_slice());
+            f.pose_pred.set(bodies, &self.dofs, f.pred.as_slice());
             self.add_cable_forces(&mut f.r1, &f.pose_pred, bodies);
         }
         // (1−θ) a + θ b: for θ = ½ the same bits as (a + b)·½ (scaling by ½ is exact)
@@ -179,16 +183,15 @@ impl Elements {
         r.fill(0.0);
         for b in &self.bearings {
             let u_p = if trial {
-                let u = deformation(q, b.body, &b.arm);
+                let u = deformation(&self.dofs, q, b.body, &b.arm);
                 b.law.response(&u, &b.state).trial.u_p
             } else {
                 b.state.u_p
             };
             let fp = (1.0 - b.law.b()) * b.law.k0() * u_p;
-            let o = 3 * b.body;
-            r[o] += fp.x;
-            r[o + 1] += fp.y;
-            r[o + 2] += -b.arm.y * fp.x + b.arm.x * fp.y;
+            let m = -b.arm.y * fp.x + b.arm.x * fp.y;
+            self.dofs
+                .add_plan(b.body, r.as_mut_slice(), [fp.x, fp.y, m]);
         }
     }
 
@@ -205,9 +208,8 @@ impl Elements {
             let n = d / len;
             for (j, p, g, s) in [(c.a.0, pa, ga, f), (c.b.0, pb, gb, -f)] {
                 let fv = n * s;
-                r[3 * j] += fv.x;
-                r[3 * j + 1] += fv.y;
-                r[3 * j + 2] += cross(&(p - g), &fv);
+                let m = cross(&(p - g), &fv);
+                self.dofs.add_plan(j, r.as_mut_slice(), [fv.x, fv.y, m]);
             }
         }
     }
@@ -234,8 +236,10 @@ impl Elements {
             if !yielding[j] {
                 continue;
             }
-            let s: Real = (0..3)
-                .map(|i| u_mid[3 * j + i] * (kq_th[3 * j + i] - rb[3 * j + i]))
+            let s: Real = self
+                .dofs
+                .range(j)
+                .map(|i| u_mid[i] * (kq_th[i] - rb[i]))
                 .sum();
             *w += h * s;
         }
@@ -248,7 +252,7 @@ impl Elements {
     /// Commits the return mappings at the new state `q` (`pose`: the pose at `q`).
     pub fn commit(&mut self, q: &State, pose: &Pose, bodies: &[SegmentBody]) {
         for b in &mut self.bearings {
-            let u = deformation(q, b.body, &b.arm);
+            let u = deformation(&self.dofs, q, b.body, &b.arm);
             b.state = b.law.response(&u, &b.state).trial;
         }
         for i in 0..self.cables.len() {
@@ -271,8 +275,8 @@ impl Elements {
 }
 
 /// Linearised deformation `u = (x − θ r_y, y + θ r_x)` of a bearing with arm `r` on `body`.
-pub(crate) fn deformation(q: &State, body: usize, r: &Vector) -> Vector {
-    let (x, y, th) = (q[3 * body], q[3 * body + 1], q[3 * body + 2]);
+pub(crate) fn deformation(dofs: &Dofs, q: &State, body: usize, r: &Vector) -> Vector {
+    let [x, y, th] = dofs.plan_of(body, q.as_slice());
     Vector::new(x - th * r.y, y + th * r.x)
 }
 

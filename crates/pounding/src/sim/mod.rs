@@ -62,6 +62,7 @@ pub mod batch;
 pub mod bridge;
 pub mod compliance;
 pub mod contact;
+pub mod dofs;
 mod driver;
 mod elements;
 mod integrate;
@@ -472,6 +473,7 @@ impl SimModel {
         let mut damping = Matrix6::zeros();
         let mut frequencies = [[0.0; 3]; 2];
         let mut rayleigh = [(0.0, 0.0); 2];
+        let dofs = dofs::Dofs::plan_rigid(2);
         for (j, bs) in [&self.bearings1, &self.bearings2].into_iter().enumerate() {
             let mp = bodies[j].mass;
             let mj = Matrix3::from_diagonal(&nalgebra::Vector3::new(mp.mass, mp.mass, mp.inertia));
@@ -496,7 +498,7 @@ impl SimModel {
                     )
                 })?;
             let (cj, a0, a1) = self.damping_of(&mj, &kj, a0, a1);
-            let o = 3 * j;
+            let o = dofs.start(j);
             mass.fixed_view_mut::<3, 3>(o, o).copy_from(&mj);
             stiffness.fixed_view_mut::<3, 3>(o, o).copy_from(&kj);
             damping.fixed_view_mut::<3, 3>(o, o).copy_from(&cj);

@@ -101,7 +101,7 @@ impl Observer for BearingForces {
         for (i, bs) in s.bridge.bearings.iter().enumerate() {
             let g = s.bridge.bodies[i].centroid;
             for (j, b) in bs.iter().enumerate() {
-                let u = super::elements::deformation(s.q, i, &(b.point - g));
+                let u = super::elements::deformation(&s.bridge.dofs, s.q, i, &(b.point - g));
                 let f = match self.yielding[i][j] {
                     Some(e) => {
                         let y = &s.elements.bearings[e];

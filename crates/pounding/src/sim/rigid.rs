@@ -157,7 +157,7 @@ impl RigidStepper {
             for s in jf.sel.iter().flatten() {
                 let c = jf.cands[*s];
                 let (wn, wt) = c.force_directions(pose, jg);
-                if c.gap + h * dot_dir(&wn, u) <= 0.0 {
+                if c.gap + h * dot_dir(&wn, u, &br.dofs) <= 0.0 {
                     active.push(ActiveContact {
                         contact: SimContact::Joint(c.case),
                         site: k,
@@ -181,7 +181,7 @@ impl RigidStepper {
                     first: (j, [tn.x, tn.y, cross(&r, &tn)]),
                     second: None,
                 };
-                if (pc - ab.point).dot(&n) + h * dot_dir(&wn, u) <= 0.0 {
+                if (pc - ab.point).dot(&n) + h * dot_dir(&wn, u, &br.dofs) <= 0.0 {
                     let contact = SimContact::Abutment {
                         deck: ab.side + 1,
                         corner: k,
@@ -202,14 +202,13 @@ impl RigidStepper {
     /// `W`, `Ŵ⁻¹ W`, `G` and the velocities of the active contacts.
     fn assemble(inp: &StepInput, active: &[ActiveContact]) -> Assembled {
         let (u, u_free, sc) = (inp.u, inp.u_free, inp.scheme);
-        let nb = sc.n_bodies();
         let n_act = active.len();
         let dirs: Vec<&Direction> = active
             .iter()
             .map(|a| &a.wn)
             .chain(active.iter().map(|a| &a.wt))
             .collect();
-        let wcols: Vec<State> = dirs.iter().map(|d| d.dense(nb)).collect();
+        let wcols: Vec<State> = dirs.iter().map(|d| d.dense(&sc.dofs)).collect();
         let wiw: Vec<State> = wcols.iter().map(|w| inp.winv.mul(w)).collect();
         let nc = 2 * n_act;
         let g = (0..nc)

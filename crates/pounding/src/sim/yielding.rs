@@ -154,8 +154,8 @@ impl Implicit {
         j: usize,
         x: &Vector3<Real>,
     ) -> Vector3<Real> {
-        let th = sc.th;
-        Vector3::from_fn(|i, _| q[3 * j + i] + (u[3 * j + i] * (1.0 - th) + x[i] * th) * sc.h)
+        let (th, o) = (sc.th, sc.dofs.start(j));
+        Vector3::from_fn(|i, _| q[o + i] + (u[o + i] * (1.0 - th) + x[i] * th) * sc.h)
     }
 
     /// Newton on `g(x) = Ŵ (x − u_free) − hθ (R̃(q⁺(x)) − R̃_pred) − Π = 0` from `x`; returns
@@ -293,8 +293,8 @@ impl Implicit {
         }
         for (g, (j, idx)) in self.groups.iter().enumerate() {
             let j = *j;
-            let base: Vector3<Real> = u_free.fixed_rows::<3>(3 * j).into_owned();
-            let r_pred: Vector3<Real> = f.rb1.fixed_rows::<3>(3 * j).into_owned();
+            let base: Vector3<Real> = u_free.fixed_rows::<3>(sc.dofs.start(j)).into_owned();
+            let r_pred: Vector3<Real> = f.rb1.fixed_rows::<3>(sc.dofs.start(j)).into_owned();
             let (x, r, jac, wt, ok) = Self::newton(
                 sc,
                 bearings,
@@ -310,7 +310,7 @@ impl Implicit {
             if !ok {
                 self.failures += 1;
             }
-            u_free.fixed_rows_mut::<3>(3 * j).copy_from(&x);
+            u_free.fixed_rows_mut::<3>(sc.dofs.start(j)).copy_from(&x);
             self.ub[g] = base;
             self.xf[g] = x;
             self.rf[g] = r;
@@ -348,8 +348,8 @@ impl Implicit {
         let mut d_contact = 0.0;
         for (g, (j, idx)) in self.groups.iter().enumerate() {
             let j = *j;
-            let x_new: Vector3<Real> = u_new.fixed_rows::<3>(3 * j).into_owned();
-            let r_pred: Vector3<Real> = f.rb1.fixed_rows::<3>(3 * j).into_owned();
+            let x_new: Vector3<Real> = u_new.fixed_rows::<3>(sc.dofs.start(j)).into_owned();
+            let r_pred: Vector3<Real> = f.rb1.fixed_rows::<3>(sc.dofs.start(j)).into_owned();
             let r_end = if x_new == self.xf[g] {
                 self.rf[g]
             } else {
@@ -370,14 +370,14 @@ impl Implicit {
                     }
                     corrected = true;
                     d_contact -= 0.5 * pi.dot(&(x - x_new));
-                    u_new.fixed_rows_mut::<3>(3 * j).copy_from(&x);
+                    u_new.fixed_rows_mut::<3>(sc.dofs.start(j)).copy_from(&x);
                     r
                 }
             };
             let d = (r_end - r_pred) * sc.th;
-            for i in 0..3 {
-                f.rb[3 * j + i] += d[i];
-                f.r[3 * j + i] += d[i];
+            for (k, i) in sc.dofs.range(j).enumerate() {
+                f.rb[i] += d[k];
+                f.r[i] += d[k];
             }
         }
         if corrected {

@@ -28,6 +28,7 @@ fn memory_estimate_counts_the_rows_and_bytes_a_run_keeps() {
             steps: _,
             dt: _,
             n_segments: _,
+            dofs: _,
             t,
             q,
             u,

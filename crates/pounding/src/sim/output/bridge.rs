@@ -60,7 +60,8 @@ pub fn bridge_history_csv(setup: &BridgeSetup, sol: &BridgeSolution) -> String {
     );
     let mut s = head.join(",");
     s.push('\n');
-    let deg = |k: usize, v: Real| if k % 3 == 2 { v * DEG } else { v };
+    let rot = sol.dofs.rotations();
+    let deg = |k: usize, v: Real| if rot[k] { v * DEG } else { v };
     let mut row: Vec<Real> = Vec::with_capacity(head.len());
     for (r, &t) in sol.t.iter().enumerate() {
         let a = setup
@@ -69,13 +70,12 @@ pub fn bridge_history_csv(setup: &BridgeSetup, sol: &BridgeSolution) -> String {
             .accel(crate::sim::solver_time(t, sol.dt));
         row.clear();
         row.extend([t, a.x, a.y]);
-        let q = &sol.q[3 * n * r..3 * n * (r + 1)];
-        let u = &sol.u[3 * n * r..3 * n * (r + 1)];
+        let (q, u) = (sol.q_row(r), sol.u_row(r));
         row.extend(q.iter().enumerate().map(|(k, v)| deg(k, *v)));
         row.extend(u.iter().enumerate().map(|(k, v)| deg(k, *v)));
-        row.extend(&sol.end_gaps[2 * nj * r..2 * nj * (r + 1)]);
+        row.extend(sol.end_gaps_row(r));
         if forces {
-            let f = &sol.contact_force[2 * nj * r..2 * nj * (r + 1)];
+            let f = sol.contact_force_row(r);
             row.extend(f.chunks(2).map(|c| c[0] + c[1]));
         }
         for &side in &ab {

@@ -67,7 +67,6 @@ pub type CornerPaths = Vec<[Vec<Vector>; 4]>;
 /// [`CornerPaths`] of a run of `model`.
 pub fn corner_paths(model: &BridgeModel, sol: &BridgeSolution, exaggeration: Real) -> CornerPaths {
     let bodies = model.layout();
-    let n = sol.n_segments;
     bodies
         .iter()
         .enumerate()
@@ -79,11 +78,10 @@ pub fn corner_paths(model: &BridgeModel, sol: &BridgeSolution, exaggeration: Rea
                 b.end.corners[1],
             ];
             c0.map(|p0| {
-                sol.q
-                    .chunks_exact(3 * n)
+                sol.q_rows()
                     .map(|q| {
-                        let d = Vector::new(q[3 * i], q[3 * i + 1]);
-                        let p = b.place(&p0, &d, q[3 * i + 2].sin_cos());
+                        let [x, y, th] = sol.dofs.plan_of(i, q);
+                        let p = b.place(&p0, &Vector::new(x, y), th.sin_cos());
                         p0 + (p - p0) * exaggeration
                     })
                     .collect()
@@ -114,9 +112,11 @@ pub fn segment_displacements(sol: &BridgeSolution) -> Vec<Vec<Real>> {
     let n = sol.n_segments;
     (0..n)
         .map(|i| {
-            sol.q
-                .chunks_exact(3 * n)
-                .map(|q| q[3 * i].hypot(q[3 * i + 1]))
+            sol.q_rows()
+                .map(|q| {
+                    let [x, y, _] = sol.dofs.plan_of(i, q);
+                    x.hypot(y)
+                })
                 .collect()
         })
         .collect()

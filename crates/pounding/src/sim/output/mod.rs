@@ -97,6 +97,8 @@ pub fn history_csv(problem: &SimProblem, sol: &BridgeSolution) -> String {
     }
     s.push('\n');
     let mut row: Vec<String> = Vec::with_capacity(32);
+    let rot = sol.dofs.rotations();
+    let deg = |k: usize, v: Real| if rot[k] { v * DEG } else { v };
     for i in 0..sol.rows() {
         row.clear();
         let t = sol.t[i];
@@ -105,10 +107,10 @@ pub fn history_csv(problem: &SimProblem, sol: &BridgeSolution) -> String {
         row.push(float_token(a.x));
         row.push(float_token(a.y));
         for (k, v) in sol.q_row(i).iter().enumerate() {
-            row.push(float_token(if k % 3 == 2 { v * DEG } else { *v }));
+            row.push(float_token(deg(k, *v)));
         }
         for (k, v) in sol.u_row(i).iter().enumerate() {
-            row.push(float_token(if k % 3 == 2 { v * DEG } else { *v }));
+            row.push(float_token(deg(k, *v)));
         }
         row.extend(sol.gaps[4 * i..4 * i + 4].iter().map(|&g| float_token(g)));
         row.extend(sol.end_gaps_row(i).iter().map(|&g| float_token(g)));

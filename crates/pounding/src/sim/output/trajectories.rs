@@ -75,17 +75,18 @@ pub fn bridge_trajectories_json(setup: &BridgeSetup, sol: &BridgeSolution) -> St
     let _ = writeln!(s, "\"joint_gaps\":[{}],", gaps.join(","));
     s.push_str("\"frames\":[\n");
     let mut first = true;
+    let rot = sol.dofs.rotations();
     for r in (0..rows).step_by(stride) {
         let t = sol.t[r];
         let a = setup
             .problem
             .ground
             .accel(crate::sim::solver_time(t, sol.dt));
-        let q = &sol.q[3 * n * r..3 * n * (r + 1)];
-        let qs: Vec<String> = q
+        let qs: Vec<String> = sol
+            .q_row(r)
             .iter()
             .enumerate()
-            .map(|(k, v)| num(if k % 3 == 2 { v * DEG } else { *v }))
+            .map(|(k, v)| num(if rot[k] { v * DEG } else { *v }))
             .collect();
         let _ = write!(
             s,
