@@ -1460,10 +1460,10 @@ pub(crate) fn solution(
         .map(|i| {
             let [x, y, _] = br.dofs.plan_of(i, r.final_q.as_slice());
             SegmentSummary {
-                peak_displacement: peaks.disp[i],
+                peak_displacement: peaks.disp[i].sqrt(),
                 final_displacement: (x * x + y * y).sqrt(),
                 peak_rotation: peaks.rot[i],
-                peak_bearing_deformation: peaks.bearing[i],
+                peak_bearing_deformation: peaks.bearing[i].sqrt(),
                 hysteretic_energy: r.elements.w_bearings.get(i).copied().unwrap_or(0.0)
                     - correction[i],
                 frequencies: sc.bodies[i].frequencies,

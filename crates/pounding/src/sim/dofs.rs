@@ -122,7 +122,8 @@ impl Dofs {
     pub fn plan_of(&self, b: usize, v: &[Real]) -> [Real; 3] {
         let s = self.start[b];
         debug_assert_eq!(self.kinds[b], BodyKind::PlanRigid);
-        [v[s], v[s + 1], v[s + 2]]
+        let x = &v[s..s + 3];
+        [x[0], x[1], x[2]]
     }
 
     /// Adds the plan wrench `(f_x, f_y, m)` on body `b` to the generalised force `f`.

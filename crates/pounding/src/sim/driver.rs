@@ -591,9 +591,11 @@ pub(crate) struct Peaks {
     pub force: Vec<Option<Real>>,
     /// Per abutment side: the largest total normal force (compliance laws).
     pub abut_force: [Option<Real>; 2],
-    /// Per segment: `max_t |(x, y)|`.
+    /// Per segment: `max_t |(x, y)|²` (squared: the root of the largest square is the largest
+    /// root, exactly, and costs one root per run instead of one per step).
     pub disp: Vec<Real>,
-    /// Per segment: the largest linearised bearing deformation (0 when not monitored).
+    /// Per segment: the square of the largest linearised bearing deformation (0 when not
+    /// monitored).
     pub bearing: Vec<Real>,
 }
 
@@ -630,18 +632,18 @@ impl Peaks {
     /// deformation `u_b = (x − θ r_y, y + θ r_x)`, `r = b − G⁰`).
     fn observe_segments(&mut self, q: &State, br: &Bridge) {
         let q = q.as_slice();
-        for (j, d) in self.disp.iter_mut().enumerate() {
-            let [x, y, _] = br.dofs.plan_of(j, q);
-            *d = d.max((x * x + y * y).sqrt());
-        }
-        for (j, pts) in br.bearings.iter().enumerate() {
+        let segments = self.disp.iter_mut().zip(self.bearing.iter_mut());
+        for (j, ((d, peak), pts)) in segments.zip(&br.bearings).enumerate() {
             let [x, y, th] = br.dofs.plan_of(j, q);
+            *d = d.max(x * x + y * y);
             let g = br.bodies[j].centroid;
+            let mut m = *peak;
             for b in pts {
                 let r = b.point - g;
                 let (ux, uy) = (x - th * r.y, y + th * r.x);
-                self.bearing[j] = self.bearing[j].max((ux * ux + uy * uy).sqrt());
+                m = m.max(ux * ux + uy * uy);
             }
+            *peak = m;
         }
     }
 
@@ -815,6 +817,21 @@ pub(crate) struct Trace {
 }
 
 impl Trace {
+    /// Room for `rows` rows of a system of `n_dofs` coordinates and `n_joints` joints (the
+    /// front ends' memory guard has checked the size; exact room spares the copies and the
+    /// doubled pages of growing vectors).
+    fn reserve(&mut self, rows: usize, n_dofs: usize, n_joints: usize) {
+        let per = |k: usize| rows.saturating_mul(k);
+        self.t.reserve(rows);
+        self.q.reserve(per(n_dofs));
+        self.u.reserve(per(n_dofs));
+        self.gaps.reserve(per(4 * n_joints));
+        self.end_gaps.reserve(per(2 * n_joints));
+        self.slip.reserve(per(n_joints));
+        self.energy.reserve(rows);
+        self.abutment_gaps.reserve(rows);
+    }
+
     /// Appends the state at `t`.
     #[allow(clippy::too_many_arguments)] // one argument per recorded series
     fn record(
@@ -883,8 +900,10 @@ pub(crate) fn run<S: Stepper>(
     let mut peaks = Peaks::new(bridge);
     let mut trace = Trace::default();
     let rows = super::options::history_rows(sc.n_steps, settings.history_stride);
+    let rows = usize::try_from(rows).unwrap_or(0);
+    trace.reserve(rows, q.len(), bridge.joints.len());
     for o in &mut observers {
-        o.reserve(usize::try_from(rows).unwrap_or(0));
+        o.reserve(rows);
     }
     let mut log = ImpactLog::default();
     let mut status = SimStatus::Completed;
