@@ -12,7 +12,7 @@ use pounding::ground_motion::AccelUnits;
 use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
 use pounding::sim::output::{
-    SIM_OUTPUTS, describe_contact, history_csv, impacts_csv, summary_json_text,
+    History, SIM_OUTPUTS, describe_contact, impacts_csv, summary_json_text,
 };
 use pounding::sim::scenario::{DEFAULT_SCENARIO_TOML, ParamKey, Scenario, Section};
 use pounding::sim::simulate;
@@ -230,7 +230,9 @@ pub fn run(args: Args) -> Result<ExitCode> {
         write_atomic(&out.join(name), bytes)
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
-    wr("history.csv", history_csv(&setup.problem, &sol).as_bytes())?;
+    let abutments = setup.problem.model.abutments.map(|a| a.is_some());
+    let history = History::two_decks(&sol, &setup.problem.ground, abutments);
+    wr("history.csv", history.csv().as_bytes())?;
     wr(
         "impacts.csv",
         impacts_csv(&setup.problem.model, &sol).as_bytes(),

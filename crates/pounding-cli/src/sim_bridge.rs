@@ -9,7 +9,7 @@ use anyhow::{Context, Result, anyhow};
 use pounding::output::{bounded, float_token, write_atomic};
 use pounding::sim::SimStatus;
 use pounding::sim::output::{
-    bridge_history_csv, bridge_impacts_csv, bridge_summary_json_text, bridge_trajectories_json,
+    History, bridge_impacts_csv, bridge_summary_json_text, bridge_trajectories_json,
 };
 use pounding::sim::scenario::Scenario;
 use serde_json::json;
@@ -47,7 +47,9 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
         write_atomic(&out.join(name), bytes)
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
-    wr("history.csv", bridge_history_csv(&setup, &sol).as_bytes())?;
+    let abutments = setup.problem.model.abutments.map(|a| a.is_some());
+    let history = History::bridge(&sol, &setup.problem.ground, abutments);
+    wr("history.csv", history.csv().as_bytes())?;
     wr(
         "impacts.csv",
         bridge_impacts_csv(&setup.problem.model, &sol).as_bytes(),

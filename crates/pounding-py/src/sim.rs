@@ -102,6 +102,20 @@ impl Run {
             Run::TwoDecks(_, r) | Run::Bridge(_, r) => r,
         }
     }
+
+    /// `history.csv` in the scenario's layout.
+    fn history(&self) -> so::History<'_> {
+        match self {
+            Run::TwoDecks(s, r) => {
+                let ab = s.problem.model.abutments.map(|a| a.is_some());
+                so::History::two_decks(r, &s.problem.ground, ab)
+            }
+            Run::Bridge(s, r) => {
+                let ab = s.problem.model.abutments.map(|a| a.is_some());
+                so::History::bridge(r, &s.problem.ground, ab)
+            }
+        }
+    }
 }
 
 /// The result of one simulation, kept in Rust: the summary, tables and histories are made on
@@ -109,31 +123,6 @@ impl Run {
 #[pyclass(module = "pounding._core", frozen)]
 pub struct SimRun {
     run: Run,
-}
-
-/// Parses CSV text of numbers (`nan`, `inf`, empty = NaN) into the header's names and a
-/// `(rows, columns)` float64 array; `None` if a field is not a number.
-fn numeric_table(text: &str) -> Option<(Vec<String>, usize, Vec<f64>)> {
-    let mut lines = text.lines();
-    let names: Vec<String> = lines.next()?.split(',').map(str::to_string).collect();
-    let mut data = Vec::with_capacity(text.len() / 12);
-    let mut rows = 0;
-    for l in lines {
-        let mut n = 0;
-        for tok in l.split(',') {
-            data.push(if tok.is_empty() {
-                f64::NAN
-            } else {
-                tok.parse().ok()?
-            });
-            n += 1;
-        }
-        if n != names.len() {
-            return None;
-        }
-        rows += 1;
-    }
-    Some((names, rows, data))
 }
 
 #[pymethods]
@@ -154,18 +143,14 @@ impl SimRun {
     }
     /// The text of `history.csv`.
     fn history_csv(&self) -> String {
-        match &self.run {
-            Run::TwoDecks(s, r) => so::history_csv(&s.problem, r),
-            Run::Bridge(s, r) => so::bridge_history_csv(s, r),
-        }
+        self.run.history().csv()
     }
     /// `history.csv` as `(column names, float64 array of shape (rows, columns))`: the same
-    /// numbers (shortest round-trip text parses back to the same bits).
+    /// numbers, handed over without text in between.
     fn history<'py>(&self, py: Python<'py>) -> PyResult<(Vec<String>, Bound<'py, PyArray2<f64>>)> {
-        let text = self.history_csv();
-        let (names, rows, data) = crate::heavy(py, || numeric_table(&text))?
-            .ok_or_else(|| crate::SolverError::new_err("history.csv holds a non-numeric field"))?;
-        let a = numpy::ndarray::Array2::from_shape_vec((rows, names.len()), data)
+        let t = self.run.history().table();
+        let names: Vec<String> = t.columns.iter().map(|c| c.header()).collect();
+        let a = numpy::ndarray::Array2::from_shape_vec((t.rows(), names.len()), t.values)
             .map_err(|e| crate::SolverError::new_err(e.to_string()))?;
         Ok((names, PyArray2::from_owned_array(py, a)))
     }

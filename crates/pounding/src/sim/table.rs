@@ -90,21 +90,39 @@ impl Table {
 
     /// The CSV text: the header, then one line per row of shortest round-trip floats.
     pub fn csv(&self) -> String {
-        let head: Vec<String> = self.columns.iter().map(Column::header).collect();
-        let mut s = String::with_capacity(self.values.len() * 20 + 64);
-        s.push_str(&head.join(","));
-        s.push('\n');
-        for r in 0..self.rows() {
-            for (i, v) in self.row(r).iter().enumerate() {
-                if i > 0 {
-                    s.push(',');
-                }
-                push_float_token(&mut s, *v);
-            }
-            s.push('\n');
-        }
-        s
+        csv_rows(&self.columns, self.rows(), |r, out| {
+            out.extend_from_slice(self.row(r))
+        })
     }
+}
+
+/// The one CSV writer of the tables of a run: the header cells of `columns`, then `rows` lines,
+/// line `r` the values `row(r, out)` appends to `out` (one per column), as shortest round-trip
+/// floats ([`crate::output::float_token`]). A writer that derives its rows (`history.csv`)
+/// streams them here without holding them all.
+pub fn csv_rows(
+    columns: &[Column],
+    rows: usize,
+    mut row: impl FnMut(usize, &mut Vec<Real>),
+) -> String {
+    let head: Vec<String> = columns.iter().map(Column::header).collect();
+    let mut s = String::with_capacity(rows * columns.len() * 20 + 64);
+    s.push_str(&head.join(","));
+    s.push('\n');
+    let mut line = Vec::with_capacity(columns.len());
+    for r in 0..rows {
+        line.clear();
+        row(r, &mut line);
+        debug_assert_eq!(line.len(), columns.len());
+        for (i, v) in line.iter().enumerate() {
+            if i > 0 {
+                s.push(',');
+            }
+            push_float_token(&mut s, *v);
+        }
+        s.push('\n');
+    }
+    s
 }
 
 #[cfg(test)]

@@ -3,8 +3,7 @@
 //! shape of the written files.
 
 use pounding::sim::output::{
-    BATCH_HEADER, COMPARE_HEADER, batch_csv, compare_csv, history_csv, impacts_csv,
-    summary_json_text,
+    BATCH_HEADER, COMPARE_HEADER, History, batch_csv, compare_csv, impacts_csv, summary_json_text,
 };
 use pounding::sim::scenario::{
     DEFAULT_SCENARIO_TOML, LAW_NAMES, ParamKey, Scenario, ScenarioError, Section,
@@ -242,7 +241,8 @@ fn writers_rows_match_their_headers() {
     let text = "[time]\nduration = 0.3\nhistory_every = 7\n[abutments]\ngap1 = 0.05\n";
     let setup = Scenario::from_toml(text, "w").unwrap().build().unwrap();
     let sol = simulate(&setup.problem, &setup.settings).unwrap();
-    let h = history_csv(&setup.problem, &sol);
+    let ab = setup.problem.model.abutments.map(|a| a.is_some());
+    let h = History::two_decks(&sol, &setup.problem.ground, ab).csv();
     let mut lines = h.lines();
     let n = lines.next().unwrap().split(',').count();
     assert!(h.lines().next().unwrap().ends_with(",abutment_gap1_m"));

@@ -4,9 +4,8 @@
 
 use super::bridge::{BridgeSolution, SeatSummary};
 use super::scenario::SimSetup;
-use super::{JointContact, SimModel, SimProblem};
+use super::{JointContact, SimModel};
 
-use crate::geometry::ContactCase;
 use crate::ground_motion::Record;
 use crate::math::Real;
 use crate::output::{float_token, json_float};
@@ -18,12 +17,13 @@ mod bridge;
 mod bridge_plan;
 mod compare;
 mod compare_bridge;
+mod history;
 mod input_warnings;
 mod trajectories;
 pub use batch::{BATCH_HEADER, BATCH_TAIL, batch_csv, bridge_batch_csv, bridge_batch_header};
 pub use bridge::{
-    bridge_history_csv, bridge_impacts_csv, bridge_run_warnings, bridge_summary_json,
-    bridge_summary_json_text, governing_seat_line,
+    bridge_impacts_csv, bridge_run_warnings, bridge_summary_json, bridge_summary_json_text,
+    governing_seat_line,
 };
 pub use bridge_plan::{
     BridgePlan, CornerPaths, bridge_plan, corner_paths, joint_openings, plan_exaggeration,
@@ -34,6 +34,7 @@ pub use compare_bridge::{
     BRIDGE_COMPARE_HEADER, BRIDGE_COMPARE_OUTPUTS, BRIDGE_COMPARE_SITES_HEADER, BridgeCompareRun,
     bridge_compare_csv, bridge_compare_sites_csv, bridge_compare_table,
 };
+pub use history::History;
 pub use input_warnings::{InputWarning, input_warnings, warning_sentence};
 pub use trajectories::{TRAJECTORY_MAX_FRAMES, bridge_trajectories_json, trajectory_stride};
 
@@ -66,68 +67,6 @@ pub const SIM_OUTPUTS: &[&str] = &[
     "report.html",
     "trajectories.json",
 ];
-
-/// `history.csv`: one row per stored step (every `history_stride`-th) — time, ground
-/// acceleration, displacements and velocities of both decks (rotations in degrees), the gaps of
-/// the corner contacts and joint ends, slip, the energy terms, and (compliance laws) the joint
-/// forces and (with abutments) the abutment gaps.
-pub fn history_csv(problem: &SimProblem, sol: &BridgeSolution) -> String {
-    let mut s = String::with_capacity(sol.rows() * 400);
-    s.push_str(
-        "t_s,ag_x_mps2,ag_y_mps2,x1_m,y1_m,theta1_deg,x2_m,y2_m,theta2_deg,\
-         vx1_mps,vy1_mps,omega1_degps,vx2_mps,vy2_mps,omega2_degps,",
-    );
-    for c in ContactCase::ALL {
-        s.push_str(&format!("gap_{}_m,", c.name()));
-    }
-    s.push_str(
-        "joint_gap_xplus_m,joint_gap_xminus_m,slip_m,\
-         input_energy_J,kinetic_energy_J,strain_energy_J,viscous_dissipation_J,contact_dissipation_J",
-    );
-    let forces = !sol.contact_force.is_empty();
-    if forces {
-        s.push_str(",contact_force_xplus_N,contact_force_xminus_N");
-    }
-    // abutment gap columns only when there are abutments (the default's file is unchanged)
-    let abut: Vec<usize> = (0..2)
-        .filter(|&j| problem.model.abutments[j].is_some())
-        .collect();
-    for j in &abut {
-        s.push_str(&format!(",abutment_gap{}_m", j + 1));
-    }
-    s.push('\n');
-    let mut row: Vec<String> = Vec::with_capacity(32);
-    let rot = sol.dofs.rotations();
-    let deg = |k: usize, v: Real| if rot[k] { v * DEG } else { v };
-    for i in 0..sol.rows() {
-        row.clear();
-        let t = sol.t[i];
-        let a = problem.ground.accel(crate::sim::solver_time(t, sol.dt));
-        row.push(float_token(t));
-        row.push(float_token(a.x));
-        row.push(float_token(a.y));
-        for (k, v) in sol.q_row(i).iter().enumerate() {
-            row.push(float_token(deg(k, *v)));
-        }
-        for (k, v) in sol.u_row(i).iter().enumerate() {
-            row.push(float_token(deg(k, *v)));
-        }
-        row.extend(sol.gaps[4 * i..4 * i + 4].iter().map(|&g| float_token(g)));
-        row.extend(sol.end_gaps_row(i).iter().map(|&g| float_token(g)));
-        row.push(float_token(sol.slip[i]));
-        let e = &sol.energy[i];
-        for v in [e.input, e.kinetic, e.potential, e.viscous, e.contact] {
-            row.push(float_token(v));
-        }
-        row.extend(sol.contact_force_row(i).iter().map(|&f| float_token(f)));
-        for &j in &abut {
-            row.push(float_token(sol.abutment_gaps[i][j]));
-        }
-        s.push_str(&row.join(","));
-        s.push('\n');
-    }
-    s
-}
 
 /// The two-deck name of a seated end of the two-deck bridge ([`crate::sim::SEAT_ENDS`]): deck `j` is segment
 /// `j`; its end on the joint is `deck<j>-joint`, the other `deck<j>-far`.

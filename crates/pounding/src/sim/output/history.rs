@@ -1,0 +1,227 @@
+//! `history.csv`: the run's histories as one [`Table`]-shaped view, written by the one CSV writer
+//! ([`table::csv_rows`]) and handed to Python as numbers (no text in between).
+//!
+//! One solution ([`BridgeSolution`]) has two layouts: a bridge's (`[[segment]]` files; per segment
+//! `x<i>, y<i>, θ<i>` and their rates, two end gaps per joint, joint forces, abutment gaps, six
+//! energy terms) and the two-deck model's (its file's columns: the four candidate gaps, the two
+//! joint end gaps, the slip, five energy terms, end forces, `abutment_gap<j>`). A layout is a list
+//! of columns, each naming the series of the solution it reads ([`Series`]); one loop writes
+//! every layout.
+
+use super::DEG;
+use crate::geometry::ContactCase;
+use crate::ground_motion::GroundMotion;
+use crate::math::Real;
+use crate::sim::bridge::{ABUTMENT_SIDES, BridgeSolution};
+use crate::sim::table::{self, Column, Table};
+
+/// What one column of the history reads from the solution at a kept row.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Series {
+    /// The time.
+    Time,
+    /// The ground acceleration the run used (x: 0, y: 1).
+    Ground(usize),
+    /// `q[k]` (rotations in degrees).
+    Q(usize),
+    /// `u[k]` (rotations in degrees).
+    U(usize),
+    /// Candidate gap `k` (4 per joint).
+    CandidateGap(usize),
+    /// End gap `k` (2 per joint).
+    EndGap(usize),
+    /// Slip of joint `k`.
+    Slip(usize),
+    /// Energy term (input, kinetic, strain, viscous, contact, elements).
+    Energy(usize),
+    /// Normal force of end `k` (2 per joint).
+    EndForce(usize),
+    /// Total normal force of joint `k`.
+    JointForce(usize),
+    /// The smaller corner gap at the abutment of a side.
+    AbutmentGap(usize),
+}
+
+/// The energy terms in column order.
+const ENERGY: [&str; 6] = [
+    "input_energy",
+    "kinetic_energy",
+    "strain_energy",
+    "viscous_dissipation",
+    "contact_dissipation",
+    "element_work",
+];
+
+/// A run's `history.csv`: its columns and where each reads.
+pub struct History<'a> {
+    sol: &'a BridgeSolution,
+    ground: &'a GroundMotion,
+    columns: Vec<Column>,
+    series: Vec<Series>,
+}
+
+impl<'a> History<'a> {
+    /// The bridge layout; `abutments[s]`: the abutment of side `s` is present.
+    pub fn bridge(sol: &'a BridgeSolution, ground: &'a GroundMotion, abutments: [bool; 2]) -> Self {
+        let mut h = Self::head(sol, ground);
+        let n = sol.n_segments;
+        let nj = n.saturating_sub(1);
+        h.states(n);
+        for k in 0..nj {
+            for (e, c) in ["c0", "c1"].iter().enumerate() {
+                h.push(
+                    format!("joint{}_gap_{c}", k + 1),
+                    "m",
+                    Series::EndGap(2 * k + e),
+                );
+            }
+        }
+        if !sol.contact_force.is_empty() {
+            for k in 0..nj {
+                h.push(format!("joint{}_force", k + 1), "N", Series::JointForce(k));
+            }
+        }
+        for side in (0..2).filter(|&s| abutments[s]) {
+            let name = format!("abutment_{}_gap", ABUTMENT_SIDES[side]);
+            h.push(name, "m", Series::AbutmentGap(side));
+        }
+        for (i, e) in ENERGY.iter().enumerate() {
+            h.push(*e, "J", Series::Energy(i));
+        }
+        h
+    }
+
+    /// The two-deck model's layout (the bridge of two segments; `abutments[j]`: deck `j + 1`
+    /// has an abutment).
+    pub fn two_decks(
+        sol: &'a BridgeSolution,
+        ground: &'a GroundMotion,
+        abutments: [bool; 2],
+    ) -> Self {
+        let mut h = Self::head(sol, ground);
+        h.states(2);
+        for (k, c) in ContactCase::ALL.iter().enumerate() {
+            h.push(format!("gap_{}", c.name()), "m", Series::CandidateGap(k));
+        }
+        h.push("joint_gap_xplus", "m", Series::EndGap(0));
+        h.push("joint_gap_xminus", "m", Series::EndGap(1));
+        h.push("slip", "m", Series::Slip(0));
+        for (i, e) in ENERGY[..5].iter().enumerate() {
+            h.push(*e, "J", Series::Energy(i));
+        }
+        if !sol.contact_force.is_empty() {
+            h.push("contact_force_xplus", "N", Series::EndForce(0));
+            h.push("contact_force_xminus", "N", Series::EndForce(1));
+        }
+        // abutment gap columns only when there are abutments (the default's file is unchanged)
+        for j in (0..2).filter(|&j| abutments[j]) {
+            h.push(
+                format!("abutment_gap{}", j + 1),
+                "m",
+                Series::AbutmentGap(j),
+            );
+        }
+        h
+    }
+
+    /// The time and ground-acceleration columns.
+    fn head(sol: &'a BridgeSolution, ground: &'a GroundMotion) -> Self {
+        let mut h = History {
+            sol,
+            ground,
+            columns: Vec::new(),
+            series: Vec::new(),
+        };
+        h.push("t", "s", Series::Time);
+        h.push("ag_x", "mps2", Series::Ground(0));
+        h.push("ag_y", "mps2", Series::Ground(1));
+        h
+    }
+
+    /// `x<i>, y<i>, θ<i>` of every segment, then their rates (1-based names).
+    fn states(&mut self, n: usize) {
+        for (rates, names) in [
+            (false, [("x", "m"), ("y", "m"), ("theta", "deg")]),
+            (true, [("vx", "mps"), ("vy", "mps"), ("omega", "degps")]),
+        ] {
+            for i in 0..n {
+                for (c, (name, unit)) in names.iter().enumerate() {
+                    let k = self.sol.dofs.start(i) + c;
+                    let s = if rates { Series::U(k) } else { Series::Q(k) };
+                    self.push(format!("{name}{}", i + 1), unit, s);
+                }
+            }
+        }
+    }
+
+    fn push(&mut self, name: impl Into<String>, unit: &'static str, s: Series) {
+        self.columns.push(Column::new(name, unit));
+        self.series.push(s);
+    }
+
+    /// The columns.
+    pub fn columns(&self) -> &[Column] {
+        &self.columns
+    }
+
+    /// Appends row `r` to `out`.
+    fn row(&self, r: usize, rot: &[bool], out: &mut Vec<Real>) {
+        let sol = self.sol;
+        let t = sol.t[r];
+        // the accelerations the run used, not a re-interpolation at the rounded time
+        let a = self.ground.accel(crate::sim::solver_time(t, sol.dt));
+        let deg = |k: usize, v: Real| if rot[k] { v * DEG } else { v };
+        let nj = sol.n_segments.saturating_sub(1);
+        for s in &self.series {
+            out.push(match *s {
+                Series::Time => t,
+                Series::Ground(0) => a.x,
+                Series::Ground(_) => a.y,
+                Series::Q(k) => deg(k, sol.q_row(r)[k]),
+                Series::U(k) => deg(k, sol.u_row(r)[k]),
+                Series::CandidateGap(k) => sol.gaps[4 * nj * r + k],
+                Series::EndGap(k) => sol.end_gaps_row(r)[k],
+                Series::Slip(k) => sol.slip[nj * r + k],
+                Series::Energy(i) => {
+                    let e = &sol.energy[r];
+                    [
+                        e.input,
+                        e.kinetic,
+                        e.potential,
+                        e.viscous,
+                        e.contact,
+                        e.elements,
+                    ][i]
+                }
+                Series::EndForce(k) => sol.contact_force_row(r)[k],
+                Series::JointForce(k) => {
+                    let f = sol.contact_force_row(r);
+                    f[2 * k] + f[2 * k + 1]
+                }
+                Series::AbutmentGap(side) => sol.abutment_gaps[r][side],
+            });
+        }
+    }
+
+    /// The CSV text of `history.csv`.
+    pub fn csv(&self) -> String {
+        let rot = self.sol.dofs.rotations();
+        table::csv_rows(&self.columns, self.sol.rows(), |r, out| {
+            self.row(r, &rot, out)
+        })
+    }
+
+    /// The history as a [`Table`] named `history` (the same numbers as [`Self::csv`]).
+    pub fn table(&self) -> Table {
+        let rot = self.sol.dofs.rotations();
+        let mut values = Vec::with_capacity(self.sol.rows() * self.columns.len());
+        for r in 0..self.sol.rows() {
+            self.row(r, &rot, &mut values);
+        }
+        Table {
+            name: "history",
+            columns: self.columns.clone(),
+            values,
+        }
+    }
+}
