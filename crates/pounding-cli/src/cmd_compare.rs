@@ -185,7 +185,8 @@ fn run_laws(laws: &[String], setups: &[SimSetup]) -> Result<Vec<Run>> {
         let t = Instant::now();
         let sol = simulate(&s.problem, &s.settings).map_err(|e| anyhow!("law {l:?}: {e}"))?;
         let secs = t.elapsed().as_secs_f64();
-        let energy = pounding::sim::output::run_warnings(&sol);
+        let energy =
+            pounding::sim::output::run_warnings(pounding::sim::output::Layout::TwoDecks, &sol);
         if !energy.is_empty() || sol.time_step_advice.as_ref().is_some_and(|a| !a.adequate) {
             eprintln!("law {l}:");
         }

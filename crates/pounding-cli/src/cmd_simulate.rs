@@ -12,7 +12,7 @@ use pounding::ground_motion::AccelUnits;
 use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
 use pounding::sim::output::{
-    History, SIM_OUTPUTS, describe_contact, impacts_csv, summary_json_text,
+    History, Layout, SIM_OUTPUTS, describe_contact, impacts_csv, summary_json_text,
 };
 use pounding::sim::scenario::{DEFAULT_SCENARIO_TOML, ParamKey, Scenario, Section};
 use pounding::sim::simulate;
@@ -220,7 +220,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
         &setup.problem.ground,
         sol.dt,
         sol.time_step_advice.as_ref(),
-        &pounding::sim::output::run_warnings(&sol),
+        &pounding::sim::output::run_warnings(Layout::TwoDecks, &sol),
     );
 
     let out = &args.out;
@@ -231,11 +231,16 @@ pub fn run(args: Args) -> Result<ExitCode> {
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
     let abutments = setup.problem.model.abutments.map(|a| a.is_some());
-    let history = History::two_decks(&sol, &setup.problem.ground, abutments);
+    let history = History::new(Layout::TwoDecks, &sol, &setup.problem.ground, abutments);
     wr("history.csv", history.csv().as_bytes())?;
     wr(
         "impacts.csv",
-        impacts_csv(&setup.problem.model, &sol).as_bytes(),
+        impacts_csv(
+            Layout::TwoDecks,
+            &pounding::sim::bridge::BridgeModel::from_pair(&setup.problem.model),
+            &sol,
+        )
+        .as_bytes(),
     )?;
     let summary = summary_json_text(&setup, &sol);
     wr("summary.json", summary.as_bytes())?;

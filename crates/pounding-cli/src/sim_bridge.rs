@@ -9,7 +9,7 @@ use anyhow::{Context, Result, anyhow};
 use pounding::output::{bounded, float_token, write_atomic};
 use pounding::sim::SimStatus;
 use pounding::sim::output::{
-    History, bridge_impacts_csv, bridge_summary_json_text, bridge_trajectories_json,
+    History, Layout, bridge_summary_json_text, bridge_trajectories_json, impacts_csv,
 };
 use pounding::sim::scenario::Scenario;
 use serde_json::json;
@@ -38,7 +38,7 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
         &setup.problem.ground,
         sol.dt,
         sol.time_step_advice.as_ref(),
-        &pounding::sim::output::bridge_run_warnings(&sol),
+        &pounding::sim::output::run_warnings(Layout::Bridge, &sol),
     );
     let out = &args.out;
     let _lock = lock_and_clear(out)?;
@@ -48,11 +48,11 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
     let abutments = setup.problem.model.abutments.map(|a| a.is_some());
-    let history = History::bridge(&sol, &setup.problem.ground, abutments);
+    let history = History::new(Layout::Bridge, &sol, &setup.problem.ground, abutments);
     wr("history.csv", history.csv().as_bytes())?;
     wr(
         "impacts.csv",
-        bridge_impacts_csv(&setup.problem.model, &sol).as_bytes(),
+        impacts_csv(Layout::Bridge, &setup.problem.model, &sol).as_bytes(),
     )?;
     let summary = bridge_summary_json_text(&setup, &sol);
     wr("summary.json", summary.as_bytes())?;

@@ -108,11 +108,11 @@ impl Run {
         match self {
             Run::TwoDecks(s, r) => {
                 let ab = s.problem.model.abutments.map(|a| a.is_some());
-                so::History::two_decks(r, &s.problem.ground, ab)
+                so::History::new(so::Layout::TwoDecks, r, &s.problem.ground, ab)
             }
             Run::Bridge(s, r) => {
                 let ab = s.problem.model.abutments.map(|a| a.is_some());
-                so::History::bridge(r, &s.problem.ground, ab)
+                so::History::new(so::Layout::Bridge, r, &s.problem.ground, ab)
             }
         }
     }
@@ -137,8 +137,11 @@ impl SimRun {
     /// The text of `impacts.csv`.
     fn impacts_csv(&self) -> String {
         match &self.run {
-            Run::TwoDecks(s, r) => so::impacts_csv(&s.problem.model, r),
-            Run::Bridge(s, r) => so::bridge_impacts_csv(&s.problem.model, r),
+            Run::TwoDecks(s, r) => {
+                let model = pounding::sim::bridge::BridgeModel::from_pair(&s.problem.model);
+                so::impacts_csv(so::Layout::TwoDecks, &model, r)
+            }
+            Run::Bridge(s, r) => so::impacts_csv(so::Layout::Bridge, &s.problem.model, r),
         }
     }
     /// The text of `history.csv`.
@@ -186,8 +189,8 @@ impl SimRun {
     /// The CLI's warnings of the run (energy created at a contact, a time step too coarse).
     fn warnings(&self) -> Vec<String> {
         let w = match &self.run {
-            Run::TwoDecks(_, r) => so::run_warnings(r),
-            Run::Bridge(_, r) => so::bridge_run_warnings(r),
+            Run::TwoDecks(_, r) => so::run_warnings(so::Layout::TwoDecks, r),
+            Run::Bridge(_, r) => so::run_warnings(so::Layout::Bridge, r),
         };
         let sol = self.run.solution();
         let (advice, dt) = (sol.time_step_advice.as_ref(), sol.dt);

@@ -92,7 +92,8 @@ pub(super) fn run(
             }
         };
         if let (Ok((sol, _)), Ok(s)) = (&outcome, s) {
-            let energy = pounding::sim::output::bridge_run_warnings(sol);
+            let energy =
+                pounding::sim::output::run_warnings(pounding::sim::output::Layout::Bridge, sol);
             if !energy.is_empty() || sol.time_step_advice.is_some_and(|a| !a.adequate) {
                 eprintln!("law {l}:");
             }

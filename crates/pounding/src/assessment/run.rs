@@ -184,7 +184,11 @@ pub fn run_all(
                     let advice = sol.time_step_advice.as_ref();
                     let warnings = crate::sim::output::input_warnings(&p.ground, sol.dt, advice)
                         .len()
-                        + crate::sim::output::bridge_run_warnings(&sol).len();
+                        + crate::sim::output::run_warnings(
+                            crate::sim::output::Layout::Bridge,
+                            &sol,
+                        )
+                        .len();
                     (format!("{:?}", sol.status), String::new(), lim, warnings)
                 }
             };

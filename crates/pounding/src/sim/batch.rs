@@ -163,7 +163,8 @@ impl BatchProblem for SimProblem {
         let p = run_problem(self, r, scale);
         let pga = r.pga() * p.ground.scale_y.abs();
         let out = simulate(&p, st).map(|sol| {
-            let w = crate::sim::output::run_warnings(&sol).len();
+            let w =
+                crate::sim::output::run_warnings(crate::sim::output::Layout::TwoDecks, &sol).len();
             counted(BatchOutcome::from(sol), &p.ground, w)
         });
         (pga, out)
@@ -182,7 +183,8 @@ impl BatchProblem for BridgeProblem {
     ) -> (Real, Result<BatchOutcome, SimError>) {
         let p = run_bridge_problem(self, r, scale);
         let out = simulate_bridge(&p, st).map(|sol| {
-            let w = crate::sim::output::bridge_run_warnings(&sol).len();
+            let w =
+                crate::sim::output::run_warnings(crate::sim::output::Layout::Bridge, &sol).len();
             counted(BatchOutcome::from(sol), &p.ground, w)
         });
         (r.pga() * p.ground.scale_y.abs(), out)

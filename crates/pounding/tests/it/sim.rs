@@ -461,7 +461,7 @@ fn isolated_impact_law(
 fn energy_created_at_a_contact_is_a_warning() {
     use pounding::contact::force_directions;
     use pounding::geometry::{ContactCase, SigmaMode};
-    use pounding::sim::output::run_warnings;
+    use pounding::sim::output::{Layout, run_warnings};
     let arr = SArrangement {
         deck1: unit_deck(100.0, 60.0),
         deck2: unit_deck(100.0, 60.0),
@@ -480,7 +480,7 @@ fn energy_created_at_a_contact_is_a_warning() {
     let vx = (w.w_t[1] - r * w.w_n[1]) / (w.w_t[0] - r * w.w_n[0]);
     let (_, sol, dt_ref) = isolated_impact_law(vx, 1e-4, 1.0, 1.0);
     assert!(dt_ref > 0.0, "the closed form gains energy: {dt_ref}");
-    let warn = run_warnings(&sol);
+    let warn = run_warnings(Layout::TwoDecks, &sol);
     assert_eq!(warn.len(), 1, "{warn:?}");
     assert_eq!(warn[0].kind, "contact_energy_created");
     assert_eq!(warn[0].contact, "deck1-inner");
@@ -495,7 +495,7 @@ fn energy_created_at_a_contact_is_a_warning() {
     );
     let (_, lossy, dt_loss) = isolated_impact_law(vx, 1e-4, 1.0, 0.5);
     assert!(dt_loss < 0.0);
-    assert!(run_warnings(&lossy).is_empty());
+    assert!(run_warnings(Layout::TwoDecks, &lossy).is_empty());
 }
 
 #[test]

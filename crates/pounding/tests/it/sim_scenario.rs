@@ -3,7 +3,8 @@
 //! shape of the written files.
 
 use pounding::sim::output::{
-    BATCH_HEADER, COMPARE_HEADER, History, batch_csv, compare_csv, impacts_csv, summary_json_text,
+    BATCH_HEADER, COMPARE_HEADER, History, Layout, batch_csv, compare_csv, impacts_csv,
+    summary_json_text,
 };
 use pounding::sim::scenario::{
     DEFAULT_SCENARIO_TOML, LAW_NAMES, ParamKey, Scenario, ScenarioError, Section,
@@ -242,13 +243,14 @@ fn writers_rows_match_their_headers() {
     let setup = Scenario::from_toml(text, "w").unwrap().build().unwrap();
     let sol = simulate(&setup.problem, &setup.settings).unwrap();
     let ab = setup.problem.model.abutments.map(|a| a.is_some());
-    let h = History::two_decks(&sol, &setup.problem.ground, ab).csv();
+    let h = History::new(Layout::TwoDecks, &sol, &setup.problem.ground, ab).csv();
     let mut lines = h.lines();
     let n = lines.next().unwrap().split(',').count();
     assert!(h.lines().next().unwrap().ends_with(",abutment_gap1_m"));
     assert_eq!(h.lines().count(), sol.t.len() + 1);
     assert!(lines.all(|l| l.split(',').count() == n));
-    let i = impacts_csv(&setup.problem.model, &sol);
+    let pair = pounding::sim::bridge::BridgeModel::from_pair(&setup.problem.model);
+    let i = impacts_csv(Layout::TwoDecks, &pair, &sol);
     assert_eq!(i.lines().count(), sol.impacts.len() + 1);
     let j = summary_json_text(&setup, &sol);
     assert!(j.ends_with("}\n"));

@@ -1,107 +1,13 @@
 //! The files of a bridge run (`[[segment]]` scenarios): `history.csv`, `impacts.csv` and
 //! `summary.json` with per-joint, per-abutment and per-segment entries in bridge order.
 
+use super::impacts::{site_kinds, site_restitution};
 use super::{DEG, describe_contact};
 use crate::math::Real;
-use crate::output::{float_token, json_float};
-use crate::sim::bridge::BridgeModel;
-use crate::sim::bridge::{ABUTMENT_SIDES, BridgeSolution};
+use crate::output::json_float;
+use crate::sim::bridge::BridgeSolution;
 use crate::sim::scenario::BridgeSetup;
-use crate::sim::{ImpactRecord, JointContact, SimContact};
 use serde_json::{Value, json};
-
-/// Where a contact is: `joint<k>` (1-based) or `abutment-start` / `abutment-end`.
-fn site_name(c: &SimContact, site: usize) -> String {
-    match c {
-        SimContact::Joint(_) => format!("joint{}", site + 1),
-        SimContact::Abutment { .. } => format!("abutment-{}", ABUTMENT_SIDES[site]),
-    }
-}
-
-/// The contact's corner within its site: the joint candidate (`deck1-inner` … with segment `k`
-/// as deck 1) or the abutment corner `c0` / `c1` of the segment's outer face.
-fn corner_name(c: &SimContact) -> &'static str {
-    match c {
-        SimContact::Joint(case) => case.name(),
-        SimContact::Abutment { corner: 0, .. } => "c0",
-        SimContact::Abutment { .. } => "c1",
-    }
-}
-
-/// The restitution coefficient `ε_N` of the site of an impact record.
-fn site_restitution(m: &BridgeModel, r: &ImpactRecord) -> Real {
-    match r.contact {
-        SimContact::Joint(_) => m.joints.get(r.site).map_or(Real::NAN, |j| j.restitution),
-        SimContact::Abutment { .. } => m.abutments[r.site].map_or(Real::NAN, |a| a.restitution),
-    }
-}
-
-/// Whether some contact site of the bridge is rigid, and whether some has a compliance law
-/// (a bridge without any site counts as rigid).
-fn site_kinds(m: &BridgeModel) -> (bool, bool) {
-    let contacts = m
-        .joints
-        .iter()
-        .map(|j| j.contact)
-        .chain(m.abutments.iter().flatten().map(|a| a.contact));
-    let (mut rigid, mut compliant) = (false, false);
-    for c in contacts {
-        match c {
-            JointContact::Rigid => rigid = true,
-            JointContact::Compliance(_) => compliant = true,
-        }
-    }
-    (rigid || !compliant, compliant)
-}
-
-/// The bridge run's warnings ([`super::energy_warnings`], contacts named `site/contact` as the
-/// `site` and `contact` columns of `impacts.csv`).
-pub fn bridge_run_warnings(sol: &BridgeSolution) -> Vec<super::RunWarning> {
-    let rigid = sol.time_step_advice.is_none() && sol.impacts.iter().all(|r| r.pulse.is_none());
-    super::energy_warnings(&sol.impacts, rigid, |r| {
-        format!(
-            "{}/{}",
-            site_name(&r.contact, r.site),
-            corner_name(&r.contact)
-        )
-    })
-}
-
-/// `impacts.csv` of a bridge: one row per impacting contact (as the two-deck file, with the
-/// site and the corner in separate columns), then [`super::PULSE_COLUMNS`] (compliance laws)
-/// or [`super::ESTIMATE_COLUMNS`] (rigid law, with each site's `ε_N`).
-pub fn bridge_impacts_csv(model: &BridgeModel, sol: &BridgeSolution) -> String {
-    let (rigid, compliant) = site_kinds(model);
-    let columns = match (rigid, compliant) {
-        (true, false) => super::ESTIMATE_COLUMNS.to_string(),
-        (false, true) => super::PULSE_COLUMNS.to_string(),
-        _ => format!("{},{}", super::PULSE_COLUMNS, super::ESTIMATE_COLUMNS),
-    };
-    let mut s = format!(
-        "impact,t_s,site,contact,mode,gamma_n_pre_mps,gamma_t_pre_mps,gamma_n_post_mps,\
-         gamma_t_post_mps,impulse_n_Ns,impulse_t_Ns,energy_dissipated_J,{columns}\n"
-    );
-    for r in &sol.impacts {
-        let f = super::impact_numbers(r);
-        let eps = site_restitution(model, r);
-        let p = match (rigid, compliant) {
-            (true, false) => super::pulse_cells(r, true, eps),
-            (false, true) => super::pulse_cells(r, false, eps),
-            // a mixed bridge: the pulse of a compliance record, the estimate of a rigid one
-            _ if r.pulse.is_some() => format!("{},nan,nan", super::pulse_cells(r, false, eps)),
-            _ => format!("nan,nan,nan,{}", super::pulse_cells(r, true, eps)),
-        };
-        s.push_str(&format!(
-            "{},{},{},{},{},{f},{p}\n",
-            r.impact,
-            float_token(r.time),
-            site_name(&r.contact, r.site),
-            corner_name(&r.contact),
-            r.mode.name(),
-        ));
-    }
-    s
-}
 
 fn opt(v: Option<Real>) -> Value {
     v.map_or(Value::Null, json_float)
@@ -218,7 +124,11 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
         super::input_warnings(&setup.problem.ground, sol.dt, sol.time_step_advice.as_ref())
             .into_iter()
             .map(|w| w.json)
-            .chain(bridge_run_warnings(sol).iter().map(super::RunWarning::json))
+            .chain(
+                super::run_warnings(super::Layout::Bridge, sol)
+                    .iter()
+                    .map(super::RunWarning::json),
+            )
             .collect();
     if rigid {
         // the rigid sites' impacts (a compliance record has its measured pulse instead)

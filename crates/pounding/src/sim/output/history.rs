@@ -8,7 +8,7 @@
 //! of columns, each naming the series of the solution it reads ([`Series`]); one loop writes
 //! every layout.
 
-use super::DEG;
+use super::{DEG, Layout};
 use crate::geometry::ContactCase;
 use crate::ground_motion::GroundMotion;
 use crate::math::Real;
@@ -61,8 +61,22 @@ pub struct History<'a> {
 }
 
 impl<'a> History<'a> {
-    /// The bridge layout; `abutments[s]`: the abutment of side `s` is present.
-    pub fn bridge(sol: &'a BridgeSolution, ground: &'a GroundMotion, abutments: [bool; 2]) -> Self {
+    /// The history of `sol` in `layout`, with the ground motion the run used;
+    /// `abutments[s]`: the abutment of side `s` (the two-deck model: of deck `s + 1`) is present.
+    pub fn new(
+        layout: Layout,
+        sol: &'a BridgeSolution,
+        ground: &'a GroundMotion,
+        abutments: [bool; 2],
+    ) -> Self {
+        match layout {
+            Layout::Bridge => Self::bridge(sol, ground, abutments),
+            Layout::TwoDecks => Self::two_decks(sol, ground, abutments),
+        }
+    }
+
+    /// The bridge layout.
+    fn bridge(sol: &'a BridgeSolution, ground: &'a GroundMotion, abutments: [bool; 2]) -> Self {
         let mut h = Self::head(sol, ground);
         let n = sol.n_segments;
         let nj = n.saturating_sub(1);
@@ -91,13 +105,8 @@ impl<'a> History<'a> {
         h
     }
 
-    /// The two-deck model's layout (the bridge of two segments; `abutments[j]`: deck `j + 1`
-    /// has an abutment).
-    pub fn two_decks(
-        sol: &'a BridgeSolution,
-        ground: &'a GroundMotion,
-        abutments: [bool; 2],
-    ) -> Self {
+    /// The two-deck model's layout (the bridge of two segments).
+    fn two_decks(sol: &'a BridgeSolution, ground: &'a GroundMotion, abutments: [bool; 2]) -> Self {
         let mut h = Self::head(sol, ground);
         h.states(2);
         for (k, c) in ContactCase::ALL.iter().enumerate() {

@@ -18,13 +18,11 @@ mod bridge_plan;
 mod compare;
 mod compare_bridge;
 mod history;
+mod impacts;
 mod input_warnings;
 mod trajectories;
 pub use batch::{BATCH_HEADER, BATCH_TAIL, batch_csv, bridge_batch_csv, bridge_batch_header};
-pub use bridge::{
-    bridge_impacts_csv, bridge_run_warnings, bridge_summary_json, bridge_summary_json_text,
-    governing_seat_line,
-};
+pub use bridge::{bridge_summary_json, bridge_summary_json_text, governing_seat_line};
 pub use bridge_plan::{
     BridgePlan, CornerPaths, bridge_plan, corner_paths, joint_openings, plan_exaggeration,
     segment_displacements,
@@ -35,10 +33,22 @@ pub use compare_bridge::{
     bridge_compare_csv, bridge_compare_sites_csv, bridge_compare_table,
 };
 pub use history::History;
+pub use impacts::{impacts_csv, run_warnings};
 pub use input_warnings::{InputWarning, input_warnings, warning_sentence};
 pub use trajectories::{TRAJECTORY_MAX_FRAMES, bridge_trajectories_json, trajectory_stride};
 
 /// Degrees per radian.
+/// How a run's files name its parts: a bridge's layout (`[[segment]]` scenarios: segments,
+/// joints and abutments by number and side) or the two-deck model's (its files' own columns and
+/// names: `x1`, `deck1-inner`, `abutment_gap2`, …). One solution, one writer per file, two layouts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Layout {
+    /// The two-deck model's files.
+    TwoDecks,
+    /// A bridge's files.
+    Bridge,
+}
+
 pub(crate) const DEG: Real = 180.0 / std::f64::consts::PI;
 
 /// Every file `simulate` writes (single run and batch). A run into a directory first removes all
@@ -166,35 +176,6 @@ pub(crate) fn peak_estimate_json<'a>(
         .map_or(serde_json::Value::Null, json_float)
 }
 
-/// `impacts.csv`: one row per impacting contact (time, contact, mode, relative velocities before
-/// and after, impulses, dissipated energy), then [`PULSE_COLUMNS`] (compliance law) or
-/// [`ESTIMATE_COLUMNS`] (rigid law).
-pub fn impacts_csv(model: &SimModel, sol: &BridgeSolution) -> String {
-    let rigid = matches!(model.contact, JointContact::Rigid);
-    let mut s = format!(
-        "impact,t_s,contact,mode,gamma_n_pre_mps,gamma_t_pre_mps,gamma_n_post_mps,gamma_t_post_mps,\
-         impulse_n_Ns,impulse_t_Ns,energy_dissipated_J,{}\n",
-        if rigid {
-            ESTIMATE_COLUMNS
-        } else {
-            PULSE_COLUMNS
-        }
-    );
-    for r in &sol.impacts {
-        let f = impact_numbers(r);
-        s.push_str(&format!(
-            "{},{},{},{},{},{}\n",
-            r.impact,
-            float_token(r.time),
-            r.contact.name(),
-            r.mode.name(),
-            f,
-            pulse_cells(r, rigid, model.restitution)
-        ));
-    }
-    s
-}
-
 /// Relative tolerance of [`energy_warnings`] for the rigid law: energy created at a contact
 /// counts when it exceeds `1e-6 (|P_N γ_N⁻| + |P_T γ_T⁻|)` of that contact (the energy scale the
 /// impulse exchanges), far above rounding (≈ 1e-16 of it) and below any physical creation by
@@ -294,12 +275,6 @@ pub fn warnings_message(w: &[RunWarning]) -> Option<String> {
     ))
 }
 
-/// The two-deck run's warnings ([`energy_warnings`], contacts named as in `impacts.csv`).
-pub fn run_warnings(sol: &BridgeSolution) -> Vec<RunWarning> {
-    let rigid = sol.time_step_advice.is_none() && sol.impacts.iter().all(|r| r.pulse.is_none());
-    energy_warnings(&sol.impacts, rigid, |r| r.contact.name().to_string())
-}
-
 /// The `summary.json` value: peaks, unseating, energies, status and counters, the ground motion
 /// and the model (keys for straight/skewed decks, abutments and compliance laws only when used).
 pub fn summary_json(setup: &SimSetup, sol: &BridgeSolution) -> serde_json::Value {
@@ -391,7 +366,11 @@ pub fn summary_json(setup: &SimSetup, sol: &BridgeSolution) -> serde_json::Value
     out["warnings"] = input_warnings(&setup.problem.ground, sol.dt, sol.time_step_advice.as_ref())
         .into_iter()
         .map(|w| w.json)
-        .chain(run_warnings(sol).iter().map(RunWarning::json))
+        .chain(
+            run_warnings(Layout::TwoDecks, sol)
+                .iter()
+                .map(RunWarning::json),
+        )
         .collect();
     if matches!(m.contact, JointContact::Rigid) {
         out["peak_force_estimate_n"] =
