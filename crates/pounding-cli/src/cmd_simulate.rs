@@ -172,6 +172,7 @@ pub(crate) fn write_report(
     candidates: &[&'static str],
     files: &[&'static str],
     animation: Option<&str>,
+    tables: &[pounding::sim::table::Table],
 ) -> Result<()> {
     let input = crate::sim_report::ReportInput {
         what,
@@ -184,6 +185,7 @@ pub(crate) fn write_report(
             .collect(),
         files,
         animation,
+        tables,
     };
     let html = crate::sim_report::report_html(&input, summary_json);
     let p = args.out.join("report.html");
@@ -263,6 +265,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
             "joint_slip.csv",
         ],
         None,
+        &sol.tables,
     )?;
     let write_secs = t_write.elapsed().as_secs_f64();
     let timing = json!({

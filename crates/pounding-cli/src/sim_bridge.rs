@@ -80,6 +80,7 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
             "joint_slip.csv",
         ],
         Some(&traj),
+        &sol.tables,
     )?;
     let timing = json!({
         "simulate_s": sim_secs,

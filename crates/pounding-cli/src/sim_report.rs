@@ -9,6 +9,7 @@
 //! with the same value.
 
 use crate::report::{CSS, esc};
+use pounding::sim::table::Table;
 use serde_json::Value;
 use std::fmt::Write;
 
@@ -27,6 +28,8 @@ pub struct ReportInput<'a> {
     /// The trajectories JSON of a bridge run: the page then shows the plan animation
     /// ([`crate::sim_anim`]).
     pub animation: Option<&'a str>,
+    /// The run's tables (`bearings`, `restrainers`, `joint_slip`): their peaks are shown.
+    pub tables: &'a [Table],
 }
 
 /// The page, from the run's `summary.json` text.
@@ -71,8 +74,8 @@ pub fn report_html(input: &ReportInput, summary_json: &str) -> String {
     let _ = writeln!(
         h,
         "<nav><a href=\"#warnings\">Warnings</a>{}<a href=\"#ground\">Ground motion</a><a \
-         href=\"#summary\">Summary</a><a href=\"#figures\">Figures</a><a \
-         href=\"#model\">Model</a></nav>",
+         href=\"#summary\">Summary</a><a href=\"#tables\">Force histories</a><a \
+         href=\"#figures\">Figures</a><a href=\"#model\">Model</a></nav>",
         if input.animation.is_some() {
             "<a href=\"#animation\">Animation</a>"
         } else {
@@ -92,6 +95,7 @@ pub fn report_html(input: &ReportInput, summary_json: &str) -> String {
         m.remove("warnings");
     }
     object_tables(&mut h, &top);
+    tables_section(&mut h, input.tables);
     let _ = writeln!(h, "<h2 id=\"figures\">Figures</h2>");
     if input.figures.is_empty() {
         h.push_str("<p>No figures.</p>\n");
@@ -146,20 +150,27 @@ fn warnings(h: &mut String, summary: &Value) {
 /// A number with 6 significant digits (integers as they are).
 fn sig6(n: &serde_json::Number) -> String {
     match n.as_f64() {
-        Some(x) if !n.is_i64() && !n.is_u64() && x != 0.0 && x.is_finite() => {
-            let e = x.abs().log10().floor() as i32;
-            if (-3..7).contains(&e) {
-                let t = format!("{x:.*}", (5 - e).max(0) as usize);
-                if t.contains('.') {
-                    t.trim_end_matches('0').trim_end_matches('.').to_string()
-                } else {
-                    t
-                }
-            } else {
-                format!("{x:.5e}")
-            }
-        }
+        Some(x) if !n.is_i64() && !n.is_u64() && x != 0.0 && x.is_finite() => sig6_of(x),
         _ => n.to_string(),
+    }
+}
+
+/// `x` to 6 significant digits (positional from 1e-3 to 1e7, else exponent form); `0`, `nan`,
+/// `inf` as the shortest float token.
+fn sig6_of(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return pounding::output::float_token(x);
+    }
+    let e = x.abs().log10().floor() as i32;
+    if (-3..7).contains(&e) {
+        let t = format!("{x:.*}", (5 - e).max(0) as usize);
+        if t.contains('.') {
+            t.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            t
+        }
+    } else {
+        format!("{x:.5e}")
     }
 }
 
@@ -262,4 +273,127 @@ fn array_table(h: &mut String, rows: &[Value], names: &[&str]) {
         h.push_str("</tr>\n");
     }
     h.push_str("</table></div>\n");
+}
+
+/// The peaks of the run's tables: per table (linked to its CSV) one row per element (the column
+/// name up to its last `_`: `segment1_bearing2`, `joint1_restrainer1`, `joint1`) and one column
+/// per quantity (`ux`, `fx`, `elongation`, …): the largest `|value|` over the kept steps and
+/// when it was first reached.
+fn tables_section(h: &mut String, tables: &[Table]) {
+    let _ = writeln!(h, "<h2 id=\"tables\">Force histories</h2>");
+    if tables.is_empty() {
+        h.push_str("<p>No force histories.</p>\n");
+    }
+    for t in tables {
+        let file = t.file_name();
+        let _ = writeln!(
+            h,
+            "<h3>{}</h3>\n<p><a href=\"{1}\">{1}</a>: {2} rows × {3} columns. Largest |value| of \
+             each quantity and the time [s] it was first reached.</p>",
+            esc(t.name),
+            esc(&file),
+            t.rows(),
+            t.columns.len()
+        );
+        // (element, [(quantity with unit, column)])
+        let mut groups: Vec<(&str, Vec<(String, usize)>)> = Vec::new();
+        let mut quantities: Vec<String> = Vec::new();
+        for (c, col) in t.columns.iter().enumerate().skip(1) {
+            let (element, q) = col.name.rsplit_once('_').unwrap_or(("", col.name.as_str()));
+            let q = if col.unit.is_empty() {
+                q.to_string()
+            } else {
+                format!("{q} [{}]", col.unit)
+            };
+            if !quantities.contains(&q) {
+                quantities.push(q.clone());
+            }
+            match groups.iter_mut().find(|(e, _)| *e == element) {
+                Some((_, cols)) => cols.push((q, c)),
+                None => groups.push((element, vec![(q, c)])),
+            }
+        }
+        if groups.is_empty() {
+            h.push_str("<p>No elements of this kind in the model.</p>\n");
+            continue;
+        }
+        h.push_str("<div class=\"scroll\"><table>\n<tr><th class=\"l\">element</th>");
+        for q in &quantities {
+            let _ = write!(h, "<th>{}</th>", esc(q));
+        }
+        h.push_str("</tr>\n");
+        for (element, cols) in &groups {
+            let _ = write!(h, "<tr><td class=\"l\">{}</td>", esc(element));
+            for q in &quantities {
+                let cell = cols.iter().find(|(name, _)| name == q).map_or_else(
+                    || "–".to_string(),
+                    |&(_, c)| {
+                        let (peak, at) = column_peak(t, c);
+                        format!("{} ({})", sig6_of(peak), sig6_of(at))
+                    },
+                );
+                let _ = write!(h, "<td>{}</td>", esc(&cell));
+            }
+            h.push_str("</tr>\n");
+        }
+        h.push_str("</table></div>\n");
+    }
+}
+
+/// The largest `|value|` of column `c` of `t` and the time (column 0) it was first reached
+/// (NaN values are skipped; `(NaN, NaN)` for a column without a number).
+fn column_peak(t: &Table, c: usize) -> (f64, f64) {
+    let mut best = (f64::NAN, f64::NAN);
+    for r in 0..t.rows() {
+        let row = t.row(r);
+        let v = row[c].abs();
+        if !v.is_nan() && (best.0.is_nan() || v > best.0) {
+            best = (v, row[0]);
+        }
+    }
+    best
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use pounding::sim::table::Column;
+
+    /// Elements and quantities are split at the last `_`; each cell is the largest |value| and
+    /// the first time it was reached; NaN values are skipped; a table without element columns
+    /// says so.
+    #[test]
+    fn force_history_peaks_are_the_largest_magnitudes_and_their_times() {
+        let mut t = Table::with_time(
+            "bearings",
+            vec![
+                Column::new("segment1_bearing1_fx", "N"),
+                Column::new("segment1_bearing1_ux", "m"),
+                Column::new("segment2_bearing1_fx", "N"),
+            ],
+        );
+        t.values.extend([0.0, 1.0, 0.5, f64::NAN]);
+        t.values.extend([0.1, -3.0, 0.25, 2.0]);
+        t.values.extend([0.2, 3.0, -0.75, 1.0]);
+        assert_eq!(column_peak(&t, 1), (3.0, 0.1));
+        assert_eq!(column_peak(&t, 2), (0.75, 0.2));
+        assert_eq!(column_peak(&t, 3), (2.0, 0.1));
+        let mut h = String::new();
+        let empty = Table::with_time("restrainers", vec![]);
+        tables_section(&mut h, &[t, empty]);
+        assert!(h.contains("<th>fx [N]</th><th>ux [m]</th>"), "{h}");
+        assert!(
+            h.contains("<td class=\"l\">segment1_bearing1</td><td>3 (0.1)</td><td>0.75 (0.2)</td>"),
+            "{h}"
+        );
+        assert!(
+            h.contains("<td class=\"l\">segment2_bearing1</td><td>2 (0.1)</td><td>–</td>"),
+            "{h}"
+        );
+        assert!(
+            h.contains("<a href=\"restrainers.csv\">restrainers.csv</a>: 0 rows"),
+            "{h}"
+        );
+        assert!(h.contains("No elements of this kind in the model."), "{h}");
+    }
 }

@@ -61,6 +61,30 @@ pub fn to_json_pretty<T: Serialize>(report: &T) -> Result<String, serde_json::Er
 pub(super) const SPLIT_NOT_UNIQUE: &str = "  tangential split: NOT unique (the same velocities allow \
      other splits); the split of smallest norm is reported";
 
+/// The summary lines of the corner contacts of an impact (`label` before each corner's name,
+/// e.g. `deck 1 `), then [`SPLIT_NOT_UNIQUE`] when the friction split is not unique.
+pub(super) fn corner_lines(
+    label: &str,
+    contacts: &[CornerContactReport],
+    split_unique: bool,
+    lines: &mut Vec<String>,
+) {
+    for c in contacts {
+        lines.push(format!(
+            "  {label}{} corner: {}  Λ_N = {} N s  Λ_T = {} N s  γ_N: {} → {} m/s",
+            c.corner,
+            c.mode,
+            readable(c.normal_impulse),
+            readable(c.tangential_impulse),
+            readable(c.gamma_n_pre),
+            readable(c.gamma_n_post)
+        ));
+    }
+    if !split_unique {
+        lines.push(SPLIT_NOT_UNIQUE.to_string());
+    }
+}
+
 pub(super) fn xy(v: &Vector) -> [f64; 2] {
     [v.x, v.y]
 }

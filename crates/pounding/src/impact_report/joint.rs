@@ -211,20 +211,12 @@ impl JointReport {
                 readable(d.omega)
             ));
         }
-        for c in &self.contacts {
-            lines.push(format!(
-                "  deck 1 {} corner: {}  Λ_N = {} N s  Λ_T = {} N s  γ_N: {} → {} m/s",
-                c.corner,
-                c.mode,
-                readable(c.normal_impulse),
-                readable(c.tangential_impulse),
-                readable(c.gamma_n_pre),
-                readable(c.gamma_n_post)
-            ));
-        }
-        if !self.tangential_split_unique {
-            lines.push(super::common::SPLIT_NOT_UNIQUE.to_string());
-        }
+        super::common::corner_lines(
+            "deck 1 ",
+            &self.contacts,
+            self.tangential_split_unique,
+            &mut lines,
+        );
         lines.push(format!(
             "  kinetic energy: {} J → {} J",
             readable(self.energy.before),

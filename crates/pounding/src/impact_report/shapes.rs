@@ -644,20 +644,7 @@ impl BothCornersReport {
             "Both corners strike after a longitudinal approach at {} m/s: {}",
             self.speed, self.status
         ));
-        for c in &self.contacts {
-            lines.push(format!(
-                "  {} corner: {}  Λ_N = {} N s  Λ_T = {} N s  γ_N: {} → {} m/s",
-                c.corner,
-                c.mode,
-                readable(c.normal_impulse),
-                readable(c.tangential_impulse),
-                readable(c.gamma_n_pre),
-                readable(c.gamma_n_post)
-            ));
-        }
-        if !self.tangential_split_unique {
-            lines.push(super::common::SPLIT_NOT_UNIQUE.to_string());
-        }
+        super::common::corner_lines("", &self.contacts, self.tangential_split_unique, lines);
         lines.push(format!(
             "  v⁺ = ({}, {}) m/s, ω⁺ = {} rad/s; kinetic energy {} J → {} J",
             readable(self.post.velocity[0]),
