@@ -42,6 +42,7 @@ use super::dofs::Dofs;
 use super::driver::{self, AbutmentFace, BodySystem, Bridge, SeatEnd, SeatSupport};
 use super::integrate::SiteKinds;
 use super::model::{EndFace, SegmentBody, deck_frequencies, rayleigh_coefficients};
+use super::support::{Attachment, Support};
 use super::{
     Bearing, DampingModel, Energy, ImpactRecord, JointContact, SimContact, SimError, SimSettings,
     SimStatus,
@@ -612,14 +613,15 @@ impl BridgeModel {
             .enumerate()
             .map(|(k, j)| JointGeom::new(&bodies, k, j.gap))
             .collect();
+        let supports = Support::of_bridge(self.abutments.map(|a| a.is_some()));
         let abutments = self
             .abutments
             .iter()
             .enumerate()
             .filter_map(|(side, a)| {
-                a.map(|a| {
-                    AbutmentFace::new(&bodies, if side == 0 { 0 } else { n - 1 }, side, a.gap)
-                })
+                let a = a.as_ref()?;
+                let body = if side == 0 { 0 } else { n - 1 };
+                Some(AbutmentFace::new(&bodies, (body, side), a.gap))
             })
             .collect();
         let mut seats = Vec::with_capacity(2 * n);
@@ -662,6 +664,7 @@ impl BridgeModel {
         let elements = self.elements(&bodies, &dofs);
         Bridge {
             dofs,
+            supports,
             bodies,
             joints,
             abutments,
@@ -670,9 +673,11 @@ impl BridgeModel {
                 .bearing_points()
                 .into_iter()
                 .zip(&self.segments)
-                .map(|(points, s)| {
+                .enumerate()
+                .map(|(i, (points, s))| {
                     let at = |(p, b): (Vector, &Bearing)| driver::BearingAt {
-                        point: p,
+                        top: Attachment::Body(i, p),
+                        bottom: Attachment::Support(Support::GROUND, p),
                         stiffness: b.stiffness,
                     };
                     points.into_iter().zip(&s.bearings).map(at).collect()
@@ -768,8 +773,8 @@ impl BridgeModel {
                 let [pa, pb] = restrainer_anchors(bodies, k, r);
                 el.cables.push(super::elements::Cable {
                     joint: k,
-                    a: (k, pa),
-                    b: (k + 1, pb),
+                    a: Attachment::Body(k, pa),
+                    b: Attachment::Body(k + 1, pb),
                     length: (pb - pa).norm(),
                     element: RestrainerElement::new(law),
                 });

@@ -29,6 +29,7 @@ use super::contact::{JointFrame, JointGeom, Pose, State, candidates};
 use super::dofs::{Dofs, PlanDof};
 use super::model::SegmentBody;
 use super::observer::{Observer, Snapshot};
+use super::support::Attachment;
 use super::table::Table;
 use super::{
     Energy, ImpactRecord, SimError, SimProblem, SimSettings, SimStatus, balance_error,
@@ -340,8 +341,8 @@ pub(crate) struct AbutmentFace {
 }
 
 impl AbutmentFace {
-    /// The abutment at `gap` beyond `side` (0: start, 1: end) of `body`.
-    pub fn new(bodies: &[SegmentBody], body: usize, side: usize, gap: Real) -> Self {
+    /// The abutment at `gap` beyond `side` (0: start, 1: end) of `body`, support `support`.
+    pub fn new(bodies: &[SegmentBody], (body, side): (usize, usize), gap: Real) -> Self {
         let face = if side == 0 {
             &bodies[body].start
         } else {
@@ -391,10 +392,21 @@ pub(crate) struct SeatEnd {
 /// A bearing under a segment: its point (global reference pose) and its (initial) stiffness.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct BearingAt {
-    /// The point \[m\].
-    pub point: Vector,
+    /// Its top: a point of the segment it carries.
+    pub top: Attachment,
+    /// Its bottom: a point of the support under it ([`Bridge::supports`]; the ground).
+    pub bottom: Attachment,
     /// Stiffness in each plan direction \[N/m\].
     pub stiffness: Real,
+}
+
+impl BearingAt {
+    /// The linearised deformation `u_top − u_bottom` at `q` ([`Attachment::linear_displacement`]).
+    #[inline]
+    pub fn deformation(&self, dofs: &Dofs, q: &[Real], bodies: &[SegmentBody]) -> Vector {
+        self.top.linear_displacement(dofs, q, bodies)
+            - self.bottom.linear_displacement(dofs, q, bodies)
+    }
 }
 
 /// The bridge as lists: segments, joints, abutments, seated ends.
@@ -407,6 +419,8 @@ pub(crate) struct Bridge {
     pub abutments: Vec<AbutmentFace>,
     /// Seated ends, in the order of the seat outputs.
     pub seats: Vec<SeatEnd>,
+    /// The supports: the ground (0), then the present abutments ([`super::support`]).
+    pub supports: Vec<super::support::Support>,
     /// Where each segment's coordinates sit in `q` and `u`.
     pub dofs: Dofs,
     /// The bearings of each segment.
@@ -634,14 +648,12 @@ impl Peaks {
         let q = q.as_slice();
         let segments = self.disp.iter_mut().zip(self.bearing.iter_mut());
         for (j, ((d, peak), pts)) in segments.zip(&br.bearings).enumerate() {
-            let [x, y, th] = br.dofs.plan_of(j, q);
+            let [x, y, _] = br.dofs.plan_of(j, q);
             *d = d.max(x * x + y * y);
-            let g = br.bodies[j].centroid;
             let mut m = *peak;
             for b in pts {
-                let r = b.point - g;
-                let (ux, uy) = (x - th * r.y, y + th * r.x);
-                m = m.max(ux * ux + uy * uy);
+                let u = b.deformation(&br.dofs, q, &br.bodies);
+                m = m.max(u.x * u.x + u.y * u.y);
             }
             *peak = m;
         }

@@ -33,6 +33,7 @@
 use super::contact::{Pose, State};
 use super::dofs::Dofs;
 use super::model::SegmentBody;
+use super::support::Attachment;
 use crate::element::bearing::{BearingState, BilinearBearing};
 use crate::element::restrainer::{RestrainerElement, RestrainerResponse};
 use crate::math::{Real, Vector, cross};
@@ -97,15 +98,16 @@ pub(crate) struct YieldingBearing {
     pub state: BearingState,
 }
 
-/// One restrainer across a joint.
+/// One restrainer: a tension-only cable between two attachments (today across a joint, from
+/// segment `k` to segment `k + 1`; an end on a support stays put, [`super::support`]).
 #[derive(Debug, Clone)]
 pub(crate) struct Cable {
     /// The joint it crosses.
     pub joint: usize,
-    /// First segment and its anchor (reference pose, global).
-    pub a: (usize, Vector),
-    /// Second segment and its anchor.
-    pub b: (usize, Vector),
+    /// First anchor (reference pose, global).
+    pub a: Attachment,
+    /// Second anchor.
+    pub b: Attachment,
     /// Reference length `L_0 = |P_b⁰ − P_a⁰|`.
     pub length: Real,
     /// The cable.
@@ -206,7 +208,9 @@ impl Elements {
                 continue;
             }
             let n = d / len;
-            for (j, p, g, s) in [(c.a.0, pa, ga, f), (c.b.0, pb, gb, -f)] {
+            for (end, p, g, s) in [(c.a, pa, ga, f), (c.b, pb, gb, -f)] {
+                // an end on a support takes its force into the support
+                let Some(j) = end.body() else { continue };
                 let fv = n * s;
                 let m = cross(&(p - g), &fv);
                 self.dofs.add_plan(j, r.as_mut_slice(), [fv.x, fv.y, m]);
@@ -280,15 +284,12 @@ pub(crate) fn deformation(dofs: &Dofs, q: &State, body: usize, r: &Vector) -> Ve
     Vector::new(x - th * r.y, y + th * r.x)
 }
 
-/// The cable's anchors and the two current centroids in `pose`.
+/// The cable's anchors and the current centroids of their bodies in `pose`.
 fn cable_points(
     c: &Cable,
     pose: &Pose,
     bodies: &[SegmentBody],
 ) -> (Vector, Vector, Vector, Vector) {
-    let (pa, pb) = (
-        pose.place(bodies, c.a.0, &c.a.1),
-        pose.place(bodies, c.b.0, &c.b.1),
-    );
-    (pa, pb, pose.g[c.a.0], pose.g[c.b.0])
+    let ((pa, ga), (pb, gb)) = (c.a.place(pose, bodies), c.b.place(pose, bodies));
+    (pa, pb, ga, gb)
 }

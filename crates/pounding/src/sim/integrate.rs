@@ -29,6 +29,8 @@ pub(crate) fn integrate(
     settings: &SimSettings,
 ) -> Result<(driver::RunResult, driver::Scheme, SiteKinds), SimError> {
     let kinds = model.contact_kinds()?;
+    // relative coordinates: every support moves with the one ground motion (support.rs)
+    super::support::check_uniform(&bridge.supports)?;
     model.check_time_step(settings.dt)?;
     let systems = model.body_systems()?;
     let scheme = driver::Scheme::new(ground, settings, systems)?;

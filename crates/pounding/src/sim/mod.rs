@@ -73,6 +73,7 @@ pub mod options;
 pub mod output;
 mod rigid;
 pub mod scenario;
+mod support;
 pub mod table;
 mod yielding;
 

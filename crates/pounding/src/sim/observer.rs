@@ -99,9 +99,8 @@ impl Observer for BearingForces {
         let v = &mut self.table.values;
         v.push(s.t);
         for (i, bs) in s.bridge.bearings.iter().enumerate() {
-            let g = s.bridge.bodies[i].centroid;
             for (j, b) in bs.iter().enumerate() {
-                let u = super::elements::deformation(&s.bridge.dofs, s.q, i, &(b.point - g));
+                let u = b.deformation(&s.bridge.dofs, s.q.as_slice(), &s.bridge.bodies);
                 let f = match self.yielding[i][j] {
                     Some(e) => {
                         let y = &s.elements.bearings[e];
