@@ -171,8 +171,7 @@ pub(crate) fn write_report(
     summary_json: &str,
     candidates: &[&'static str],
     files: &[&'static str],
-    animation: Option<&str>,
-    tables: &[pounding::sim::table::Table],
+    (animation, tables): (Option<&str>, &[pounding::sim::table::Table]),
 ) -> Result<()> {
     let input = crate::sim_report::ReportInput {
         what,
@@ -264,8 +263,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
             "restrainers.csv",
             "joint_slip.csv",
         ],
-        None,
-        &sol.tables,
+        (None, &sol.tables),
     )?;
     let write_secs = t_write.elapsed().as_secs_f64();
     let timing = json!({

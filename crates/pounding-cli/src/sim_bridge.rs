@@ -79,8 +79,7 @@ pub fn run(args: &Args, sc: Scenario, t_start: Instant) -> Result<ExitCode> {
             "restrainers.csv",
             "joint_slip.csv",
         ],
-        Some(&traj),
-        &sol.tables,
+        (Some(&traj), &sol.tables),
     )?;
     let timing = json!({
         "simulate_s": sim_secs,
