@@ -611,6 +611,9 @@ pub(crate) struct Peaks {
     /// Per segment: the square of the largest linearised bearing deformation (0 when not
     /// monitored).
     pub bearing: Vec<Real>,
+    /// Per segment and bearing: the arm `r = p − G⁰` of a bearing from the segment to a support
+    /// (the fast path of the bearing monitor), else the bearing.
+    arms: Vec<Vec<Result<Vector, BearingAt>>>,
 }
 
 /// What [`Peaks::observe`] measured for the history (reused from step to step).
@@ -639,6 +642,21 @@ impl Peaks {
             abut_force: [None, None],
             disp: vec![0.0; br.bodies.len()],
             bearing: vec![0.0; br.bodies.len()],
+            arms: br
+                .bearings
+                .iter()
+                .enumerate()
+                .map(|(j, bs)| {
+                    bs.iter()
+                        .map(|b| match (b.top, b.bottom) {
+                            (Attachment::Body(i, p), Attachment::Support(..)) if i == j => {
+                                Ok(p - br.bodies[j].centroid)
+                            }
+                            _ => Err(*b),
+                        })
+                        .collect()
+                })
+                .collect(),
         }
     }
 
@@ -647,12 +665,16 @@ impl Peaks {
     fn observe_segments(&mut self, q: &State, br: &Bridge) {
         let q = q.as_slice();
         let segments = self.disp.iter_mut().zip(self.bearing.iter_mut());
-        for (j, ((d, peak), pts)) in segments.zip(&br.bearings).enumerate() {
-            let [x, y, _] = br.dofs.plan_of(j, q);
+        for (j, ((d, peak), pts)) in segments.zip(&self.arms).enumerate() {
+            let [x, y, th] = br.dofs.plan_of(j, q);
             *d = d.max(x * x + y * y);
             let mut m = *peak;
             for b in pts {
-                let u = b.deformation(&br.dofs, q, &br.bodies);
+                // a bearing from segment j to a support: its deformation from the arm directly
+                let u = match b {
+                    Ok(r) => Vector::new(x - th * r.y, y + th * r.x),
+                    Err(b) => b.deformation(&br.dofs, q, &br.bodies),
+                };
                 m = m.max(u.x * u.x + u.y * u.y);
             }
             *peak = m;
