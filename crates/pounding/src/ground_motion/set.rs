@@ -515,6 +515,10 @@ fn entry(cx: &Ctx, i: usize, r: &Entry, cache: &mut Cache) -> Result<SetRecord, 
     if !problems.is_empty() {
         return Err(problems);
     }
+    // a `units` that applies to no component of the entry would be silently ignored: refused;
+    // in a pair it applies to the members that take units (a text file beside a built-in or
+    // an .AT2 record with units in its header)
+    let mut not_applying: Vec<String> = Vec::new();
     let mut read = |key: &str, s: &Val<String>| -> Option<Record> {
         let k = (
             s.v.clone(),
@@ -534,16 +538,26 @@ fn entry(cx: &Ctx, i: usize, r: &Entry, cache: &mut Cache) -> Result<SetRecord, 
                 ))
             })
             .ok()?;
-        if let Some(u) = &r.units
+        if r.units.is_some()
             && let Some(why) = units_do_not_apply(key, &s.v, &rec)
         {
-            problems.push(format!("{}: {why}", cx.at(i, "units", u.at)));
-            return None;
+            not_applying.push(why);
         }
         Some(rec)
     };
     let x = read("x", &r.x);
     let y = r.y.as_ref().map(|y| (y, read("y", y)));
+    let components = 1 + usize::from(r.y.is_some());
+    if let Some(u) = &r.units
+        && not_applying.len() == components
+    {
+        problems.push(format!(
+            "{}: {}",
+            cx.at(i, "units", u.at),
+            not_applying.join("; and ")
+        ));
+        return Err(problems);
+    }
     let (Some(x), y) = (x, y) else {
         return Err(problems);
     };

@@ -406,6 +406,25 @@ fn units_for_a_record_with_its_own_units_are_refused_not_ignored() {
         );
         assert!(e.contains("AT2") || e.contains("built-in"), "{name}: {e}");
     }
+    // in a pair, `units` applies to the member that takes units: a text file beside a built-in
+    // record is read in them (hostile campaign of issue 30: this was refused), the built-in keeps
+    // its own
+    std::fs::write(d.join("rec.csv"), "t,a\n0,0\n0.01,0.5\n0.02,-0.25\n").unwrap();
+    let pair = load(
+        &d,
+        "pair.csv",
+        "id,x,y,units\nP,builtin:ELC180,rec.csv,m/s2\nQ,builtin:ELC180,rec.csv,\n",
+    );
+    let (p, q) = (&pair.records[0], &pair.records[1]);
+    let (py, qy) = (p.y.as_ref().unwrap(), q.y.as_ref().unwrap());
+    assert!(py.units().contains("m/s2"), "{}", py.units());
+    assert_eq!(py.values()[1], 0.5);
+    assert!((qy.values()[1] / py.values()[1] - 9.80665).abs() < 1e-12);
+    assert_eq!(
+        p.x.values(),
+        q.x.values(),
+        "the built-in keeps its own units"
+    );
     // an .AT2 whose header names no units takes the given units (m/s2: values as written)
     let s = load(&d, "ok.csv", "id,x,units\nA,none.AT2,m/s2\nB,none.AT2,\n");
     let (a, b) = (&s.records[0].x, &s.records[1].x);
