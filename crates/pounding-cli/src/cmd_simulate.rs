@@ -7,16 +7,12 @@
 //! and PNG plots into the output directory. Every input is validated before anything is written.
 //! With `--records` it runs a batch instead ([`sim_batch`]).
 
-use anyhow::{Context, Result, anyhow};
+use anyhow::{Context, Result};
 use pounding::ground_motion::AccelUnits;
 use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
-use pounding::sim::output::{
-    History, Layout, SIM_OUTPUTS, describe_contact, impacts_csv, summary_json_text,
-};
+use pounding::sim::output::SIM_OUTPUTS;
 use pounding::sim::scenario::{DEFAULT_SCENARIO_TOML, ParamKey, Scenario, Section};
-use pounding::sim::simulate;
-use serde_json::json;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
@@ -27,8 +23,8 @@ pub(crate) mod sim_plots;
 #[path = "sim_batch.rs"]
 pub(crate) mod sim_batch;
 
-#[path = "sim_bridge.rs"]
-mod sim_bridge;
+#[path = "sim_run.rs"]
+mod sim_run;
 
 #[path = "sim_records.rs"]
 pub(crate) mod sim_records;
@@ -200,125 +196,27 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let t_start = Instant::now();
     sim_records::check_flags(&args)?;
     let sc = load_scenario(args.scenario.as_deref())?;
-    if sc.is_bridge() {
-        return sim_bridge::run(&args, sc, t_start);
-    }
     let (origin, text) = (sc.origin().to_string(), sc.text().to_string());
+    let bridge = sc.is_bridge();
+    if bridge {
+        pounding::assessment::FragilitySettings::check_if_present(&text, &origin)?;
+    }
     let sc = with_flags(sc, &args);
-    let reading = sc.override_reading(args.csv_units)?;
-    let mut setup = sc.build()?;
-    if !args.records.is_empty() {
-        return sim_batch::run(&args, &setup.problem, &setup.settings, &reading, t_start);
+    if bridge && !args.records.is_empty() {
+        let reading = sc.override_reading(args.csv_units)?;
+        let setup = sc.build_bridge()?;
+        return sim_batch::run_bridge(&args, &setup, &reading, t_start);
     }
-    sim_records::print_components(&setup.problem.ground);
-    pounding::output::check_output_dir_free(&args.out)?;
-    note_rounded_duration(&setup.settings);
-    setup.settings.progress = time_estimate();
-    let t_sim = Instant::now();
-    let sol = simulate(&setup.problem, &setup.settings).map_err(|e| anyhow!("{e}"))?;
-    let sim_secs = t_sim.elapsed().as_secs_f64();
-    print_run_warnings(
-        &setup.problem.ground,
-        sol.dt,
-        sol.time_step_advice.as_ref(),
-        &pounding::sim::output::run_warnings(Layout::TwoDecks, &sol),
-    );
-
-    let out = &args.out;
-    let _lock = lock_and_clear(out)?;
-    let t_write = Instant::now();
-    let wr = |name: &str, bytes: &[u8]| {
-        write_atomic(&out.join(name), bytes)
-            .with_context(|| format!("cannot write {}", out.join(name).display()))
-    };
-    let abutments = setup.problem.model.abutments.map(|a| a.is_some());
-    let history = History::new(Layout::TwoDecks, &sol, &setup.problem.ground, abutments);
-    wr("history.csv", history.csv().as_bytes())?;
-    wr(
-        "impacts.csv",
-        impacts_csv(
-            Layout::TwoDecks,
-            &pounding::sim::bridge::BridgeModel::from_pair(&setup.problem.model),
-            &sol,
-        )
-        .as_bytes(),
-    )?;
-    let summary = summary_json_text(&setup, &sol);
-    wr("summary.json", summary.as_bytes())?;
-    for t in &sol.tables {
-        wr(&t.file_name(), t.csv().as_bytes())?;
+    if !bridge {
+        // the two-deck form checks the units flag against its records before it is built
+        let reading = sc.override_reading(args.csv_units)?;
+        if !args.records.is_empty() {
+            let setup = sc.build()?;
+            return sim_batch::run(&args, &setup.problem, &setup.settings, &reading, t_start);
+        }
     }
-    sim_plots::write_all(out, &setup.problem, &sol).map_err(|e| anyhow!("plotting: {e}"))?;
-    write_report(
-        &args,
-        "two decks".into(),
-        (&origin, &text),
-        &summary,
-        sim_plots::FIGURES,
-        &[
-            "summary.json",
-            "history.csv",
-            "impacts.csv",
-            "bearings.csv",
-            "restrainers.csv",
-            "joint_slip.csv",
-        ],
-        (None, &sol.tables),
-    )?;
-    let write_secs = t_write.elapsed().as_secs_f64();
-    let timing = json!({
-        "simulate_s": sim_secs,
-        "write_s": write_secs,
-        "wall_time_s": t_start.elapsed().as_secs_f64(),
-        "steps": sol.steps,
-    });
-    wr(
-        "timing.json",
-        (serde_json::to_string_pretty(&timing)? + "\n").as_bytes(),
-    )?;
-    let s = &sol.summary;
-    eprintln!(
-        "simulated {} s in {} steps ({:.1} ms): {} impacts, peak closing {} m, opening {} m, \
-         seat displacement {} m{}, energy balance error {:.1e}; outputs in {}",
-        float_token(pounding::sim::step_time(sol.steps, sol.dt)),
-        sol.steps,
-        sim_secs * 1e3,
-        s.impacts,
-        pounding::output::bounded(s.joints[0].peak_closing, 4),
-        pounding::output::bounded(s.joints[0].peak_opening, 4),
-        pounding::output::bounded(s.peak_seat_displacement, 4),
-        match s.unseating_time {
-            Some(t) => format!(" (UNSEATED at {} s)", pounding::output::bounded(t, 3)),
-            None => String::new(),
-        },
-        s.energy_balance_error,
-        out.display()
-    );
-    if let Some(f) = s.joints[0].peak_contact_force {
-        eprintln!(
-            "contact law {}: peak contact force {} MN, peak penetration {} mm",
-            describe_contact(&setup.problem.model.contact)["law"],
-            pounding::output::bounded(f / 1e6, 4),
-            pounding::output::bounded(s.peak_penetration * 1e3, 4)
-        );
-    }
-    if sol.status != pounding::sim::SimStatus::Completed {
-        // outputs are written (they show where the run went wrong), but the run did not succeed
-        let hint = match sol.status {
-            pounding::sim::SimStatus::CompletedWithLcpFailures => "summary.json (lcp_failures)",
-            _ => "summary.json (energies, peaks)",
-        };
-        eprintln!(
-            "error: simulation status {:?} after {} s ({} steps): the results are not trustworthy; \
-             see {hint} and history.csv in {}",
-            sol.status,
-            float_token(pounding::sim::step_time(sol.steps, sol.dt)),
-            sol.steps,
-            out.display()
-        );
-        return Ok(ExitCode::from(1));
-    }
-    Ok(ExitCode::SUCCESS)
+    let setup = sc.build_setup()?;
+    sim_run::run(&args, setup, (&origin, &text), t_start)
 }
 
 /// Locks the output directory `out` (creating it) and removes the earlier run's [`SIM_OUTPUTS`].

@@ -12,10 +12,8 @@ use pounding::sim::batch::{
 };
 use pounding::sim::bridge::BridgeSolution;
 use pounding::sim::output as so;
-use pounding::sim::scenario::{
-    BridgeSetup, DEFAULT_SCENARIO_TOML, ParamKey, Scenario, Section, SimSetup,
-};
-use pounding::sim::{SimSettings, SimStatus, simulate};
+use pounding::sim::scenario::{DEFAULT_SCENARIO_TOML, ParamKey, Scenario, Section, Setup};
+use pounding::sim::{SimSettings, SimStatus};
 use pyo3::prelude::*;
 use std::path::{Path, PathBuf};
 
@@ -89,33 +87,10 @@ impl Flags {
     }
 }
 
-/// A run: the scenario as read (the two-deck form or a bridge's, which name the files' columns)
-/// and the one solution type of both.
-enum Run {
-    TwoDecks(Box<SimSetup>, Box<BridgeSolution>),
-    Bridge(Box<BridgeSetup>, Box<BridgeSolution>),
-}
-
-impl Run {
-    fn solution(&self) -> &BridgeSolution {
-        match self {
-            Run::TwoDecks(_, r) | Run::Bridge(_, r) => r,
-        }
-    }
-
-    /// `history.csv` in the scenario's layout.
-    fn history(&self) -> so::History<'_> {
-        match self {
-            Run::TwoDecks(s, r) => {
-                let ab = s.problem.model.abutments.map(|a| a.is_some());
-                so::History::new(so::Layout::TwoDecks, r, &s.problem.ground, ab)
-            }
-            Run::Bridge(s, r) => {
-                let ab = s.problem.model.abutments.map(|a| a.is_some());
-                so::History::new(so::Layout::Bridge, r, &s.problem.ground, ab)
-            }
-        }
-    }
+/// A run: the scenario as built (either form: it names the files' columns) and its solution.
+struct Run {
+    setup: Setup,
+    sol: BridgeSolution,
 }
 
 /// The result of one simulation, kept in Rust: the summary, tables and histories are made on
@@ -129,29 +104,20 @@ pub struct SimRun {
 impl SimRun {
     /// The text of `summary.json`, as the CLI writes it.
     fn summary_json(&self) -> String {
-        match &self.run {
-            Run::TwoDecks(s, r) => so::summary_json_text(s, r),
-            Run::Bridge(s, r) => so::bridge_summary_json_text(s, r),
-        }
+        self.run.setup.summary_json_text(&self.run.sol)
     }
     /// The text of `impacts.csv`.
     fn impacts_csv(&self) -> String {
-        match &self.run {
-            Run::TwoDecks(s, r) => {
-                let model = pounding::sim::bridge::BridgeModel::from_pair(&s.problem.model);
-                so::impacts_csv(so::Layout::TwoDecks, &model, r)
-            }
-            Run::Bridge(s, r) => so::impacts_csv(so::Layout::Bridge, &s.problem.model, r),
-        }
+        self.run.setup.impacts_csv(&self.run.sol)
     }
     /// The text of `history.csv`.
     fn history_csv(&self) -> String {
-        self.run.history().csv()
+        self.run.setup.history(&self.run.sol).csv()
     }
     /// `history.csv` as `(column names, float64 array of shape (rows, columns))`: the same
     /// numbers, handed over without text in between.
     fn history<'py>(&self, py: Python<'py>) -> PyResult<(Vec<String>, Bound<'py, PyArray2<f64>>)> {
-        let t = self.run.history().table();
+        let t = self.run.setup.history(&self.run.sol).table();
         let names: Vec<String> = t.columns.iter().map(|c| c.header()).collect();
         let a = numpy::ndarray::Array2::from_shape_vec((t.rows(), names.len()), t.values)
             .map_err(|e| crate::SolverError::new_err(e.to_string()))?;
@@ -166,7 +132,7 @@ impl SimRun {
         py: Python<'py>,
     ) -> PyResult<Vec<(String, Vec<String>, Bound<'py, PyArray2<f64>>)>> {
         self.run
-            .solution()
+            .sol
             .tables
             .iter()
             .map(|t| {
@@ -183,16 +149,13 @@ impl SimRun {
     /// How the run ended (`Completed`, `Diverged`, ... as in summary.json).
     #[getter]
     fn status(&self) -> String {
-        let s: SimStatus = self.run.solution().status;
+        let s: SimStatus = self.run.sol.status;
         format!("{s:?}")
     }
     /// The CLI's warnings of the run (energy created at a contact, a time step too coarse).
     fn warnings(&self) -> Vec<String> {
-        let w = match &self.run {
-            Run::TwoDecks(_, r) => so::run_warnings(so::Layout::TwoDecks, r),
-            Run::Bridge(_, r) => so::run_warnings(so::Layout::Bridge, r),
-        };
-        let sol = self.run.solution();
+        let w = self.run.setup.run_warnings(&self.run.sol);
+        let sol = &self.run.sol;
         let (advice, dt) = (sol.time_step_advice.as_ref(), sol.dt);
         let mut out: Vec<String> = so::warnings_message(&w).into_iter().collect();
         if let Some(a) = advice.filter(|a| !a.adequate) {
@@ -252,17 +215,13 @@ fn simulate_run(
         None => None,
     };
     let s = scale.unwrap_or(1.0);
-    let run = if sc.is_bridge() {
+    let setup = if sc.is_bridge() {
         let mut setup = sc.build_bridge().map_err(value_error)?;
         if let Some(r) = &rec {
             setup.problem = run_bridge_problem(&setup.problem, r, s);
             setup.records = [r.name.clone(), "none".into()];
         }
-        let (setup, sol) = crate::interruptible(py, move || {
-            let sol = setup.run();
-            (setup, sol)
-        })?;
-        Run::Bridge(Box::new(setup), Box::new(sol.map_err(value_error)?))
+        Setup::Bridge(Box::new(setup))
     } else {
         sc.override_reading(csv_units).map_err(value_error)?;
         let mut setup = sc.build().map_err(value_error)?;
@@ -270,13 +229,16 @@ fn simulate_run(
             setup.problem = run_problem(&setup.problem, r, s);
             setup.records = [r.name.clone(), "none".into()];
         }
-        let (setup, sol) = crate::interruptible(py, move || {
-            let sol = simulate(&setup.problem, &setup.settings);
-            (setup, sol)
-        })?;
-        Run::TwoDecks(Box::new(setup), Box::new(sol.map_err(value_error)?))
+        Setup::TwoDecks(Box::new(setup))
     };
-    Ok(SimRun { run })
+    let (setup, sol) = crate::interruptible(py, move || {
+        let sol = setup.run();
+        (setup, sol)
+    })?;
+    let sol = sol.map_err(value_error)?;
+    Ok(SimRun {
+        run: Run { setup, sol },
+    })
 }
 
 /// Runs a batch: every record (a path, or samples `(name, values, dt)`) at every scale, in

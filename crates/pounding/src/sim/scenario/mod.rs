@@ -20,6 +20,7 @@ mod contact;
 mod error;
 mod ground;
 mod sections;
+mod setup;
 mod site_contact;
 
 pub use bridge::BridgeSetup;
@@ -29,6 +30,7 @@ pub use contact::{
 };
 pub use error::{KeyRef, ParamKey, ScenarioError, Section};
 pub use sections::DEFAULT_SCENARIO_TOML;
+pub use setup::Setup;
 
 use super::{SimProblem, SimSettings};
 use crate::ground_motion::AccelUnits;

@@ -1,0 +1,173 @@
+//! One run of `pounding simulate`, of either scenario form (two decks or a bridge of
+//! `[[segment]]`s; [`pounding::sim::scenario::Setup`]): runs it with the library, writes
+//! `history.csv`, `impacts.csv`, `summary.json`, the force tables, the figures (the two-deck
+//! model's [`super::sim_plots`], a bridge's [`crate::plots::bridge`] and its
+//! `trajectories.json`), `report.html` and `timing.json` (last), and prints a summary.
+
+use super::{Args, lock_and_clear};
+use anyhow::{Context, Result, anyhow};
+use pounding::output::{bounded, float_token, write_atomic};
+use pounding::sim::SimStatus;
+use pounding::sim::bridge::BridgeSolution;
+use pounding::sim::output::{bridge_trajectories_json, describe_contact};
+use pounding::sim::scenario::Setup;
+use serde_json::json;
+use std::path::Path;
+use std::process::ExitCode;
+use std::time::Instant;
+
+/// Runs `setup` (single run) and writes its files; `scenario` is its name and text.
+pub fn run(
+    args: &Args,
+    mut setup: Setup,
+    scenario: (&str, &str),
+    t_start: Instant,
+) -> Result<ExitCode> {
+    super::sim_records::print_components(setup.ground());
+    pounding::output::check_output_dir_free(&args.out)?;
+    super::note_rounded_duration(setup.settings());
+    setup.settings_mut().progress = super::time_estimate();
+    let t_sim = Instant::now();
+    let sol = setup.run().map_err(|e| anyhow!("{e}"))?;
+    let sim_secs = t_sim.elapsed().as_secs_f64();
+    super::print_run_warnings(
+        setup.ground(),
+        sol.dt,
+        sol.time_step_advice.as_ref(),
+        &setup.run_warnings(&sol),
+    );
+    let out = &args.out;
+    let _lock = lock_and_clear(out)?;
+    let t_write = Instant::now();
+    let wr = |name: &str, bytes: &[u8]| {
+        write_atomic(&out.join(name), bytes)
+            .with_context(|| format!("cannot write {}", out.join(name).display()))
+    };
+    wr("history.csv", setup.history(&sol).csv().as_bytes())?;
+    wr("impacts.csv", setup.impacts_csv(&sol).as_bytes())?;
+    let summary = setup.summary_json_text(&sol);
+    wr("summary.json", summary.as_bytes())?;
+    for t in &sol.tables {
+        wr(&t.file_name(), t.csv().as_bytes())?;
+    }
+    let mut files = vec!["summary.json", "history.csv", "impacts.csv"];
+    let (what, figures, animation) = match &setup {
+        Setup::TwoDecks(s) => {
+            super::sim_plots::write_all(out, &s.problem, &sol)
+                .map_err(|e| anyhow!("plotting: {e}"))?;
+            ("two decks".to_string(), super::sim_plots::FIGURES, None)
+        }
+        Setup::Bridge(s) => {
+            let traj = bridge_trajectories_json(s, &sol);
+            wr("trajectories.json", traj.as_bytes())?;
+            files.push("trajectories.json");
+            crate::plots::bridge::write_all(out, &s.problem.model, &sol)
+                .map_err(|e| anyhow!("plotting: {e}"))?;
+            let n = sol.n_segments;
+            let what = format!("a bridge of {n} segment{}", if n == 1 { "" } else { "s" });
+            (what, crate::plots::bridge::FIGURES, Some(traj))
+        }
+    };
+    files.extend(["bearings.csv", "restrainers.csv", "joint_slip.csv"]);
+    super::write_report(
+        args,
+        what,
+        scenario,
+        &summary,
+        figures,
+        &files,
+        (animation.as_deref(), &sol.tables),
+    )?;
+    let timing = json!({
+        "simulate_s": sim_secs,
+        "write_s": t_write.elapsed().as_secs_f64(),
+        "wall_time_s": t_start.elapsed().as_secs_f64(),
+        "steps": sol.steps,
+    });
+    wr(
+        "timing.json",
+        (serde_json::to_string_pretty(&timing)? + "\n").as_bytes(),
+    )?;
+    print_summary(&setup, &sol, sim_secs, out);
+    if sol.status != SimStatus::Completed {
+        // outputs are written (they show where the run went wrong), but the run did not succeed
+        let hint = match sol.status {
+            SimStatus::CompletedWithLcpFailures => "summary.json (lcp_failures)",
+            _ => "summary.json (energies, peaks)",
+        };
+        eprintln!(
+            "error: simulation status {:?} after {} s ({} steps): the results are not trustworthy; \
+             see {hint} and history.csv in {}",
+            sol.status,
+            float_token(pounding::sim::step_time(sol.steps, sol.dt)),
+            sol.steps,
+            out.display()
+        );
+        return Ok(ExitCode::from(1));
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The summary lines on stderr: the two-deck model's joint, or every joint of a bridge and its
+/// governing seat.
+fn print_summary(setup: &Setup, sol: &BridgeSolution, sim_secs: f64, out: &Path) {
+    let s = &sol.summary;
+    let duration = float_token(pounding::sim::step_time(sol.steps, sol.dt));
+    match setup {
+        Setup::TwoDecks(pair) => {
+            eprintln!(
+                "simulated {duration} s in {} steps ({:.1} ms): {} impacts, peak closing {} m, \
+                 opening {} m, seat displacement {} m{}, energy balance error {:.1e}; outputs in {}",
+                sol.steps,
+                sim_secs * 1e3,
+                s.impacts,
+                bounded(s.joints[0].peak_closing, 4),
+                bounded(s.joints[0].peak_opening, 4),
+                bounded(s.peak_seat_displacement, 4),
+                match s.unseating_time {
+                    Some(t) => format!(" (UNSEATED at {} s)", bounded(t, 3)),
+                    None => String::new(),
+                },
+                s.energy_balance_error,
+                out.display()
+            );
+            if let Some(f) = s.joints[0].peak_contact_force {
+                eprintln!(
+                    "contact law {}: peak contact force {} MN, peak penetration {} mm",
+                    describe_contact(&pair.problem.model.contact)["law"],
+                    bounded(f / 1e6, 4),
+                    bounded(s.peak_penetration * 1e3, 4)
+                );
+            }
+        }
+        Setup::Bridge(_) => {
+            let joints: Vec<String> = s
+                .joints
+                .iter()
+                .map(|j| format!("{} (closing {} m)", j.impacts, bounded(j.peak_closing, 4)))
+                .collect();
+            eprintln!(
+                "simulated a bridge of {} segments for {duration} s in {} steps ({:.1} ms): {} \
+                 impacts; per joint: {}; energy balance error {:.1e}{}; outputs in {}",
+                sol.n_segments,
+                sol.steps,
+                sim_secs * 1e3,
+                s.impacts,
+                if joints.is_empty() {
+                    "none".into()
+                } else {
+                    joints.join(", ")
+                },
+                s.energy_balance_error,
+                match (&s.unseated_end, s.unseating_time) {
+                    (Some(e), Some(t)) => format!(" (UNSEATED: {e} at {t:.3} s)"),
+                    _ => String::new(),
+                },
+                out.display()
+            );
+            if let Some(g) = pounding::sim::output::governing_seat_line(s) {
+                eprintln!("governing seat: {g}");
+            }
+        }
+    }
+}

@@ -1,0 +1,113 @@
+//! A built scenario of either form, ready to run: the two-deck model's (`[decks]` …) or a
+//! bridge's (`[[segment]]` …). Both run as a bridge to the one [`BridgeSolution`]; the form only
+//! decides the files' [`Layout`] and the two-deck summary's own keys. Front ends hold a [`Setup`]
+//! and never branch on the form to run or to write.
+
+use super::{BridgeSetup, Scenario, ScenarioError, SimSetup};
+use crate::ground_motion::GroundMotion;
+use crate::sim::bridge::{BridgeModel, BridgeSolution};
+use crate::sim::output::{self, History, Layout, RunWarning};
+use crate::sim::{SimError, SimSettings};
+use std::borrow::Cow;
+
+/// A scenario built for one run.
+#[derive(Debug, Clone)]
+pub enum Setup {
+    /// The two-deck model (the bridge of two segments [`BridgeModel::from_pair`]).
+    TwoDecks(Box<SimSetup>),
+    /// A bridge of `[[segment]]`s.
+    Bridge(Box<BridgeSetup>),
+}
+
+impl Scenario {
+    /// Builds the scenario in its form ([`Scenario::is_bridge`]): [`Scenario::build_bridge`] or
+    /// [`Scenario::build`].
+    pub fn build_setup(&self) -> Result<Setup, ScenarioError> {
+        Ok(if self.is_bridge() {
+            Setup::Bridge(Box::new(self.build_bridge()?))
+        } else {
+            Setup::TwoDecks(Box::new(self.build()?))
+        })
+    }
+}
+
+impl Setup {
+    /// The layout of its files.
+    pub fn layout(&self) -> Layout {
+        match self {
+            Setup::TwoDecks(_) => Layout::TwoDecks,
+            Setup::Bridge(_) => Layout::Bridge,
+        }
+    }
+
+    /// The run's settings.
+    pub fn settings(&self) -> &SimSettings {
+        match self {
+            Setup::TwoDecks(s) => &s.settings,
+            Setup::Bridge(s) => &s.settings,
+        }
+    }
+
+    /// The run's settings, to change (progress callback, …).
+    pub fn settings_mut(&mut self) -> &mut SimSettings {
+        match self {
+            Setup::TwoDecks(s) => &mut s.settings,
+            Setup::Bridge(s) => &mut s.settings,
+        }
+    }
+
+    /// The ground motion.
+    pub fn ground(&self) -> &GroundMotion {
+        match self {
+            Setup::TwoDecks(s) => &s.problem.ground,
+            Setup::Bridge(s) => &s.problem.ground,
+        }
+    }
+
+    /// The bridge that runs (the two-deck model's two-segment bridge).
+    pub fn model(&self) -> Cow<'_, BridgeModel> {
+        match self {
+            Setup::TwoDecks(s) => Cow::Owned(BridgeModel::from_pair(&s.problem.model)),
+            Setup::Bridge(s) => Cow::Borrowed(&s.problem.model),
+        }
+    }
+
+    /// Whether the abutment of each side (the two-deck model: of each deck) is present.
+    pub fn abutments(&self) -> [bool; 2] {
+        match self {
+            Setup::TwoDecks(s) => s.problem.model.abutments.map(|a| a.is_some()),
+            Setup::Bridge(s) => s.problem.model.abutments.map(|a| a.is_some()),
+        }
+    }
+
+    /// Runs it.
+    pub fn run(&self) -> Result<BridgeSolution, SimError> {
+        match self {
+            Setup::TwoDecks(s) => crate::sim::simulate(&s.problem, &s.settings),
+            Setup::Bridge(s) => s.run(),
+        }
+    }
+
+    /// `history.csv` of a run of it.
+    pub fn history<'a>(&'a self, sol: &'a BridgeSolution) -> History<'a> {
+        History::new(self.layout(), sol, self.ground(), self.abutments())
+    }
+
+    /// `impacts.csv` of a run of it.
+    pub fn impacts_csv(&self, sol: &BridgeSolution) -> String {
+        output::impacts_csv(self.layout(), &self.model(), sol)
+    }
+
+    /// The warnings of a run of it about its impacts ([`output::run_warnings`]).
+    pub fn run_warnings(&self, sol: &BridgeSolution) -> Vec<RunWarning> {
+        output::run_warnings(self.layout(), sol)
+    }
+
+    /// `summary.json` of a run of it, as written.
+    pub fn summary_json_text(&self, sol: &BridgeSolution) -> String {
+        match self {
+            Setup::TwoDecks(s) => output::summary_json_text(s, sol),
+            Setup::Bridge(s) => output::bridge_summary_json_text(s, sol),
+        }
+    }
+}
