@@ -166,7 +166,7 @@ pub(crate) fn write_report(
     scenario: (&str, &str),
     summary_json: &str,
     candidates: &[&'static str],
-    files: &[&'static str],
+    files: &[&str],
     (animation, tables): (Option<&str>, &[pounding::sim::table::Table]),
 ) -> Result<()> {
     let input = crate::sim_report::ReportInput {

@@ -50,7 +50,9 @@ pub fn run(
     for t in &sol.tables {
         wr(&t.file_name(), t.csv().as_bytes())?;
     }
-    let mut files = vec!["summary.json", "history.csv", "impacts.csv"];
+    let mut files: Vec<String> = ["summary.json", "history.csv", "impacts.csv"]
+        .map(String::from)
+        .into();
     let (what, figures, animation) = match &setup {
         Setup::TwoDecks(s) => {
             super::sim_plots::write_all(out, &s.problem, &sol)
@@ -60,7 +62,7 @@ pub fn run(
         Setup::Bridge(s) => {
             let traj = bridge_trajectories_json(s, &sol);
             wr("trajectories.json", traj.as_bytes())?;
-            files.push("trajectories.json");
+            files.push("trajectories.json".into());
             crate::plots::bridge::write_all(out, &s.problem.model, &sol)
                 .map_err(|e| anyhow!("plotting: {e}"))?;
             let n = sol.n_segments;
@@ -68,7 +70,9 @@ pub fn run(
             (what, crate::plots::bridge::FIGURES, Some(traj))
         }
     };
-    files.extend(["bearings.csv", "restrainers.csv", "joint_slip.csv"]);
+    // every table of the run, as written above
+    files.extend(sol.tables.iter().map(|t| t.file_name()));
+    let files: Vec<&str> = files.iter().map(String::as_str).collect();
     super::write_report(
         args,
         what,

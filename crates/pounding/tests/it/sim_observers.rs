@@ -201,6 +201,14 @@ fn the_two_deck_model_records_the_same_tables() {
     let sol = simulate(&problem, &settings).unwrap();
     let names: Vec<&str> = sol.tables.iter().map(|t| t.name).collect();
     assert_eq!(names, ["bearings", "restrainers", "joint_slip"]);
+    // a run into a directory clears every earlier output: each table's file is in that list
+    for t in &sol.tables {
+        let f = t.file_name();
+        assert!(
+            pounding::sim::output::SIM_OUTPUTS.contains(&f.as_str()),
+            "{f} is not in SIM_OUTPUTS"
+        );
+    }
     let b = table(&sol.tables, "bearings");
     assert_eq!(b.rows(), sol.t.len());
     assert_eq!(b.columns[1].header(), "segment1_bearing1_ux_m");
