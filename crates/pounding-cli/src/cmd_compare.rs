@@ -183,7 +183,12 @@ fn run_laws(laws: &[String], setups: &[SimSetup]) -> Result<Vec<Run>> {
     let mut runs = Vec::new();
     for (l, s) in laws.iter().zip(setups) {
         let t = Instant::now();
-        let sol = simulate(&s.problem, &s.settings).map_err(|e| anyhow!("law {l:?}: {e}"))?;
+        // a long law says how long it will take, as a single run does
+        let settings = pounding::sim::SimSettings {
+            progress: cmd_simulate::time_estimate(),
+            ..s.settings.clone()
+        };
+        let sol = simulate(&s.problem, &settings).map_err(|e| anyhow!("law {l:?}: {e}"))?;
         let secs = t.elapsed().as_secs_f64();
         let energy =
             pounding::sim::output::run_warnings(pounding::sim::output::Layout::TwoDecks, &sol);

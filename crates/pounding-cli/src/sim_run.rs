@@ -145,11 +145,18 @@ fn print_summary(setup: &Setup, sol: &BridgeSolution, sim_secs: f64, out: &Path)
             }
         }
         Setup::Bridge(_) => {
-            let joints: Vec<String> = s
+            // at most the first 8 joints on the line (a 200-segment bridge's 199 joints are in
+            // summary.json)
+            const SHOWN: usize = 8;
+            let mut joints: Vec<String> = s
                 .joints
                 .iter()
+                .take(SHOWN)
                 .map(|j| format!("{} (closing {} m)", j.impacts, bounded(j.peak_closing, 4)))
                 .collect();
+            if s.joints.len() > SHOWN {
+                joints.push(format!("… {} more in summary.json", s.joints.len() - SHOWN));
+            }
             eprintln!(
                 "simulated a bridge of {} segments for {duration} s in {} steps ({:.1} ms): {} \
                  impacts; per joint: {}; energy balance error {:.1e}{}; outputs in {}",

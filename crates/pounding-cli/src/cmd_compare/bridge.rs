@@ -86,6 +86,9 @@ pub(super) fn run(
             Err(why) => Err(why.clone()),
             Ok(s) => {
                 let t = Instant::now();
+                // a long law says how long it will take, as a single run does
+                let mut s = s.clone();
+                s.settings.progress = crate::cmd_simulate::time_estimate();
                 s.run()
                     .map(|sol| (sol, t.elapsed().as_secs_f64()))
                     .map_err(|e| e.to_string())

@@ -466,3 +466,27 @@ fn mixed_sites_run_from_the_command_line() {
             .all(|l| l.split(',').nth(f) == Some("nan"))
     );
 }
+
+/// A long bridge's summary line names the first 8 joints and says where the others are (a
+/// 200-segment bridge printed all 199 on one line).
+#[test]
+fn a_long_bridge_summary_line_names_the_first_joints_only() {
+    let mut text = String::from("[bridge]\ndamping = \"dashpots\"\ngap = 0.02\n");
+    for _ in 0..11 {
+        text.push_str(
+            "[[segment]]\nshape = \"straight\"\nL = 30.0\nmass = 1.0e6\nperiod_s = 1.0\n",
+        );
+    }
+    text.push_str(
+        "[ground_motion]\nrecord_y = \"builtin:ELC180\"\nrecord_x = \"none\"\n[time]\ndt = 1e-3\n\
+         duration = 0.2\n",
+    );
+    let (code, err, out) = simulate("long", &text);
+    assert_eq!(code, Some(0), "{err}");
+    let line = err.lines().find(|l| l.contains("per joint:")).unwrap();
+    assert_eq!(line.matches("(closing").count(), 8, "{line}");
+    assert!(line.contains("… 2 more in summary.json"), "{line}");
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(s["joints"].as_array().unwrap().len(), 10);
+}
