@@ -202,18 +202,14 @@ pub fn run(args: Args) -> Result<ExitCode> {
         pounding::assessment::FragilitySettings::check_if_present(&text, &origin)?;
     }
     let sc = with_flags(sc, &args);
-    if bridge && !args.records.is_empty() {
+    if !args.records.is_empty() {
         let reading = sc.override_reading(args.csv_units)?;
-        let setup = sc.build_bridge()?;
-        return sim_batch::run_bridge(&args, &setup, &reading, t_start);
+        let setup = sc.build_setup()?;
+        return sim_batch::run(&args, &setup, &reading, t_start);
     }
     if !bridge {
         // the two-deck form checks the units flag against its records before it is built
-        let reading = sc.override_reading(args.csv_units)?;
-        if !args.records.is_empty() {
-            let setup = sc.build()?;
-            return sim_batch::run(&args, &setup.problem, &setup.settings, &reading, t_start);
-        }
+        sc.override_reading(args.csv_units)?;
     }
     let setup = sc.build_setup()?;
     sim_run::run(&args, setup, (&origin, &text), t_start)

@@ -17,9 +17,9 @@ use pounding::math::Real;
 use pounding::output::write_atomic;
 use pounding::shard::Shard;
 use pounding::sim::batch::{BatchOutcome, BatchProblem, BatchRecord, BatchRow, run_batch};
-use pounding::sim::output::{batch_csv, bridge_batch_csv};
-use pounding::sim::scenario::BridgeSetup;
-use pounding::sim::{SimProblem, SimSettings, SimStatus};
+use pounding::sim::output::batch_csv;
+use pounding::sim::scenario::Setup;
+use pounding::sim::{SimSettings, SimStatus};
 use serde_json::json;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -136,23 +136,37 @@ fn write_outputs(
     )
 }
 
-/// Runs the batch (after the scenario has been built and validated).
+/// Runs the batch of a scenario of either form (after it has been built for a batch and
+/// validated): every (record, scale) run, `batch.csv` in the form's layout, `batch.png` with the
+/// largest response over the joints and segments against PGA and the smallest seat length of the
+/// bridge dashed, `timing.json`; the exit code.
 pub fn run(
     args: &Args,
-    base: &SimProblem,
-    settings: &SimSettings,
+    setup: &Setup,
     reading: &ReadOptions,
     t_start: Instant,
 ) -> Result<ExitCode> {
     let plan = plan(args, reading)?;
-    let (rows, runs_secs) = execute(&plan, base, settings)?;
+    let (rows, runs_secs) = execute(&plan, setup, setup.settings())?;
     let curves = curves(&plan.records, &rows);
+    let model = setup.model();
+    let seat = model
+        .joints
+        .iter()
+        .map(|j| j.seat_length)
+        .chain(
+            model
+                .abutments
+                .iter()
+                .map(|a| a.map_or(model.outer_seat_length, |a| a.seat_length)),
+        )
+        .fold(Real::INFINITY, Real::min);
     write_outputs(
         args,
         &plan,
-        &batch_csv(&rows),
+        &batch_csv(setup.layout(), model.segments.len(), &rows),
         &curves,
-        base.model.seat_length,
+        seat,
         (rows.len(), runs_secs, t_start),
     )?;
     Ok(report(&rows, runs_secs, &args.out))
@@ -199,43 +213,6 @@ fn execute<P: BatchProblem>(
         .map_err(|e| anyhow!("{e}"))?;
     plan.pb.finish_and_clear();
     Ok((rows, t_runs.elapsed().as_secs_f64()))
-}
-
-/// Runs the batch of a bridge (after the scenario has been built for a batch and validated):
-/// the same runs, flags, files and exit codes as the two-deck batch; `batch.csv` has the
-/// bridge's columns ([`bridge_batch_csv`]) and `batch.png` shows the largest response over the
-/// joints and segments, with the smallest seat length of the bridge dashed.
-pub fn run_bridge(
-    args: &Args,
-    setup: &BridgeSetup,
-    reading: &ReadOptions,
-    t_start: Instant,
-) -> Result<ExitCode> {
-    let plan = plan(args, reading)?;
-    let base = &setup.problem;
-    let (rows, runs_secs) = execute(&plan, base, &setup.settings)?;
-    let curves = curves(&plan.records, &rows);
-    let model = &base.model;
-    let seat = model
-        .joints
-        .iter()
-        .map(|j| j.seat_length)
-        .chain(
-            model
-                .abutments
-                .iter()
-                .map(|a| a.map_or(model.outer_seat_length, |a| a.seat_length)),
-        )
-        .fold(Real::INFINITY, Real::min);
-    write_outputs(
-        args,
-        &plan,
-        &bridge_batch_csv(model.segments.len(), &rows),
-        &curves,
-        seat,
-        (rows.len(), runs_secs, t_start),
-    )?;
-    Ok(report(&rows, runs_secs, &args.out))
 }
 
 /// The curves of `batch.png`: per record, the peak responses of its completed runs against PGA

@@ -293,11 +293,11 @@ fn batch_run(
         let setup = sc.build_bridge().map_err(value_error)?;
         let n = setup.problem.model.segments.len();
         let rows = batch_rows(py, pool, setup.problem, setup.settings, list, scales)?;
-        Ok(so::bridge_batch_csv(n, &rows))
+        Ok(so::batch_csv(so::Layout::Bridge, n, &rows))
     } else {
         let setup = sc.build().map_err(value_error)?;
         let rows = batch_rows(py, pool, setup.problem, setup.settings, list, scales)?;
-        Ok(so::batch_csv(&rows))
+        Ok(so::batch_csv(so::Layout::TwoDecks, 2, &rows))
     }
 }
 

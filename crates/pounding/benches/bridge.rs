@@ -8,7 +8,7 @@
 //!   target ≥ 30 runs/s, i.e. < 267 ms per batch of 8.
 
 use pounding::ground_motion::el_centro_1940;
-use pounding::sim::batch::{BatchRecord, BatchShard, run_bridge_batch};
+use pounding::sim::batch::{BatchRecord, BatchShard, run_batch};
 use pounding::sim::scenario::{BridgeSetup, Scenario};
 use std::path::Path;
 
@@ -94,7 +94,7 @@ fn batch_curved_five_8_runs_2_threads(bencher: divan::Bencher) {
     bencher.bench(|| {
         let rows = pool
             .install(|| {
-                run_bridge_batch(
+                run_batch(
                     &setup.problem,
                     &setup.settings,
                     &records,

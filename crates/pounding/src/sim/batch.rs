@@ -13,8 +13,9 @@
 //! `i mod N = K − 1`, so the union of the rows of all `N` shards, sorted by `i`, is the unsharded
 //! result.
 //!
-//! Bridges of `N` segments ([`crate::sim::bridge`]) run the same way ([`run_bridge_batch`],
-//! [`run_bridge_problem`]): the same runs, row order and shards.
+//! Bridges of `N` segments ([`crate::sim::bridge`]) run the same way ([`run_batch`] over a
+//! [`BridgeProblem`], [`run_bridge_problem`]; or over a [`crate::sim::scenario::Setup`] of
+//! either form): the same runs, row order and shards.
 //!
 //! A record that could not be read does not stop the batch: its rows carry the error
 //! ([`BatchRow::outcome`]) and every other run is still done.
@@ -202,7 +203,7 @@ fn counted(mut o: BatchOutcome, ground: &GroundMotion, impact_warnings: usize) -
 /// Runs every `(record, scale)` pair of `shard` in parallel on the current rayon pool and returns
 /// the rows in increasing global index (module docs). `progress(1)` is called after each run.
 /// The base is a two-deck [`SimProblem`] or a bridge's [`BridgeProblem`] (each row equal to [`simulate_bridge`] on
-/// [`run_bridge_problem`] bit for bit; also reachable as [`run_bridge_batch`]).
+/// [`run_bridge_problem`] bit for bit; ).
 ///
 /// Errors (bad input for the whole batch: the model, the settings, the lists) are returned before
 /// any run starts; per-run problems are in [`BatchRow::outcome`]. The settings' history stride
@@ -221,10 +222,6 @@ pub fn run_batch<P: BatchProblem>(
         base.run_one(r, scale, &settings)
     }))
 }
-
-/// [`run_batch`] for a bridge ([`crate::sim::bridge`]): the same runs, order and shards as the
-/// two-deck batch.
-pub use self::run_batch as run_bridge_batch;
 
 /// Checks the lists and the settings of a batch; the settings of its runs keep no history (the
 /// summary does not depend on it).

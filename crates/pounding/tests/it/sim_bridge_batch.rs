@@ -5,8 +5,8 @@
 use pounding::ground_motion::{AccelUnits, Record};
 use pounding::output::float_token;
 use pounding::sim::SimStatus;
-use pounding::sim::batch::{BatchRecord, BatchRow, BatchShard, run_bridge_batch};
-use pounding::sim::output::{bridge_batch_csv, bridge_batch_header};
+use pounding::sim::batch::{BatchRecord, BatchRow, BatchShard, run_batch};
+use pounding::sim::output::{Layout, batch_csv, bridge_batch_header};
 use pounding::sim::scenario::Scenario;
 use std::path::PathBuf;
 
@@ -95,7 +95,7 @@ fn run(paths: &[PathBuf], threads: usize, shard: BatchShard) -> Vec<BatchRow> {
         .unwrap();
     let recs = batch_records(paths);
     pool.install(|| {
-        run_bridge_batch(
+        run_batch(
             &setup.problem,
             &setup.settings,
             &recs,
@@ -112,7 +112,7 @@ fn every_bridge_batch_row_equals_the_single_run_of_its_record_and_scale() {
     let (_dir, paths) = record_files("equal");
     let rows = run(&paths, 2, BatchShard::ALL);
     assert_eq!(rows.len(), 9);
-    let csv = bridge_batch_csv(3, &rows);
+    let csv = batch_csv(Layout::Bridge, 3, &rows);
     let head: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
     assert_eq!(head.join(","), bridge_batch_header(3));
     let col = |name: &str| head.iter().position(|h| *h == name).unwrap();
@@ -219,7 +219,7 @@ fn an_unreadable_record_fails_only_its_rows_and_bad_lists_are_errors() {
     let (_dir, mut paths) = record_files("bad");
     paths.insert(1, paths[0].with_file_name("missing.csv"));
     let rows = run(&paths, 2, BatchShard::ALL);
-    let csv = bridge_batch_csv(3, &rows);
+    let csv = batch_csv(Layout::Bridge, 3, &rows);
     for (i, (r, line)) in rows.iter().zip(csv.lines().skip(1)).enumerate() {
         let cells: Vec<&str> = line.split(',').collect();
         if i / 3 == 1 {
@@ -238,7 +238,7 @@ fn an_unreadable_record_fails_only_its_rows_and_bad_lists_are_errors() {
         .unwrap();
     let recs = batch_records(&paths[..1]);
     let go = |recs: &[BatchRecord], scales: &[f64]| {
-        run_bridge_batch(
+        run_batch(
             &setup.problem,
             &setup.settings,
             recs,

@@ -141,7 +141,7 @@ fn rigid_peak_force_estimate_against_a_hertz_compliance_run() {
 #[test]
 fn batch_csv_appends_force_time_step_and_newton_columns() {
     use pounding::sim::batch::{BatchOutcome, BatchRow};
-    use pounding::sim::output::{BATCH_HEADER, BATCH_TAIL, batch_csv};
+    use pounding::sim::output::{BATCH_HEADER, BATCH_TAIL, Layout, batch_csv};
     let head: Vec<&str> = BATCH_HEADER.split(',').collect();
     assert_eq!(head.last(), Some(&"error"));
     assert!(BATCH_HEADER.ends_with(&format!(",lcp_failures,{BATCH_TAIL},error")));
@@ -161,7 +161,7 @@ fn batch_csv_appends_force_time_step_and_newton_columns() {
         pga: 1.0,
         outcome: Ok(BatchOutcome::from(sol.clone())),
     };
-    let csv = batch_csv(&[row(0, &comp), row(1, &rigid)]);
+    let csv = batch_csv(Layout::TwoDecks, 2, &[row(0, &comp), row(1, &rigid)]);
     let col = |line: &str, name: &str| -> String {
         let i = head.iter().position(|h| *h == name).unwrap();
         line.split(',').nth(i).unwrap().to_string()

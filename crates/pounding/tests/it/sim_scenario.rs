@@ -262,5 +262,8 @@ fn writers_rows_match_their_headers() {
         c.lines().nth(1).unwrap().split(',').count(),
         COMPARE_HEADER.split(',').count()
     );
-    assert_eq!(batch_csv(&[]), format!("{BATCH_HEADER}\n"));
+    assert_eq!(
+        batch_csv(Layout::TwoDecks, 2, &[]),
+        format!("{BATCH_HEADER}\n")
+    );
 }

@@ -54,7 +54,7 @@ fn tail_cells(
 
 /// `batch.csv`: [`BATCH_HEADER`], then one row per run (a run that failed has `status = error`
 /// and its message in `error`), with the [`BATCH_TAIL`] columns appended after `error`.
-pub fn batch_csv(rows: &[BatchRow]) -> String {
+fn two_deck_batch_csv(rows: &[BatchRow]) -> String {
     rows_csv(BATCH_HEADER, rows, |o, c| {
         let m = &o.summary;
         let joint = &m.joints[0];
@@ -288,6 +288,16 @@ fn bridge_cells(o: &BatchOutcome, c: &mut Vec<String>) {
 /// (an abutment the bridge does not have, the contact force of the rigid law, a joint without a
 /// restrainer, no unseating, no joint at all for one segment) are empty fields; a value that is
 /// not a number is `nan` (the project's CSV tokens, [`float_token`]).
-pub fn bridge_batch_csv(n_segments: usize, rows: &[BatchRow]) -> String {
+fn bridge_batch_csv(n_segments: usize, rows: &[BatchRow]) -> String {
     rows_csv(&bridge_batch_header(n_segments), rows, bridge_cells)
+}
+
+/// `batch.csv` of a batch in `layout`: the two-deck model's columns ([`BATCH_HEADER`]) or a
+/// bridge's of `n_segments` segments ([`bridge_batch_header`]); one row per run (a run that
+/// failed has `status = error` and its message in `error`).
+pub fn batch_csv(layout: super::Layout, n_segments: usize, rows: &[BatchRow]) -> String {
+    match layout {
+        super::Layout::TwoDecks => two_deck_batch_csv(rows),
+        super::Layout::Bridge => bridge_batch_csv(n_segments, rows),
+    }
 }

@@ -21,7 +21,7 @@ mod history;
 mod impacts;
 mod input_warnings;
 mod trajectories;
-pub use batch::{BATCH_HEADER, BATCH_TAIL, batch_csv, bridge_batch_csv, bridge_batch_header};
+pub use batch::{BATCH_HEADER, BATCH_TAIL, batch_csv, bridge_batch_header};
 pub use bridge::{bridge_summary_json, bridge_summary_json_text, governing_seat_line};
 pub use bridge_plan::{
     BridgePlan, CornerPaths, bridge_plan, corner_paths, joint_openings, plan_exaggeration,

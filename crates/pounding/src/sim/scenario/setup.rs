@@ -111,3 +111,27 @@ impl Setup {
         }
     }
 }
+
+impl crate::sim::batch::BatchProblem for Setup {
+    fn check(&self) -> Result<(), SimError> {
+        match self {
+            Setup::TwoDecks(s) => s.problem.check(),
+            Setup::Bridge(s) => s.problem.check(),
+        }
+    }
+
+    fn run_one(
+        &self,
+        record: &crate::ground_motion::Record,
+        scale: crate::math::Real,
+        settings: &SimSettings,
+    ) -> (
+        crate::math::Real,
+        Result<crate::sim::batch::BatchOutcome, SimError>,
+    ) {
+        match self {
+            Setup::TwoDecks(s) => s.problem.run_one(record, scale, settings),
+            Setup::Bridge(s) => s.problem.run_one(record, scale, settings),
+        }
+    }
+}
