@@ -1,5 +1,6 @@
-//! The plan-view animation section of `report.html` of a bridge run: the trajectories JSON
-//! ([`pounding::sim::output::bridge_trajectories_json`]) embedded in the page and a small script
+//! The plan-view animation section of `report.html` of a run (a bridge, or the two-deck model's
+//! two-segment bridge): the trajectories JSON
+//! ([`pounding::sim::output::trajectories_json`]) embedded in the page and a small script
 //! (no library, no network) that draws the segments to scale at their displaced positions, with
 //! a time slider, play/pause and speed, a displacement magnification (true scale one click
 //! away), click-to-zoom, the ground-motion trace with a cursor, impacts flashed at their site

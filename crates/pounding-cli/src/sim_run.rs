@@ -9,7 +9,7 @@ use anyhow::{Context, Result, anyhow};
 use pounding::output::{bounded, float_token, write_atomic};
 use pounding::sim::SimStatus;
 use pounding::sim::bridge::BridgeSolution;
-use pounding::sim::output::{bridge_trajectories_json, describe_contact};
+use pounding::sim::output::describe_contact;
 use pounding::sim::scenario::Setup;
 use serde_json::json;
 use std::path::Path;
@@ -53,21 +53,22 @@ pub fn run(
     let mut files: Vec<String> = ["summary.json", "history.csv", "impacts.csv"]
         .map(String::from)
         .into();
-    let (what, figures, animation) = match &setup {
+    // the plan animation of either form (the two-deck model's is its two-segment bridge)
+    let traj = setup.trajectories_json(&sol);
+    wr("trajectories.json", traj.as_bytes())?;
+    files.push("trajectories.json".into());
+    let (what, figures) = match &setup {
         Setup::TwoDecks(s) => {
             super::sim_plots::write_all(out, &s.problem, &sol)
                 .map_err(|e| anyhow!("plotting: {e}"))?;
-            ("two decks".to_string(), super::sim_plots::FIGURES, None)
+            ("two decks".to_string(), super::sim_plots::FIGURES)
         }
         Setup::Bridge(s) => {
-            let traj = bridge_trajectories_json(s, &sol);
-            wr("trajectories.json", traj.as_bytes())?;
-            files.push("trajectories.json".into());
             crate::plots::bridge::write_all(out, &s.problem.model, &sol)
                 .map_err(|e| anyhow!("plotting: {e}"))?;
             let n = sol.n_segments;
             let what = format!("a bridge of {n} segment{}", if n == 1 { "" } else { "s" });
-            (what, crate::plots::bridge::FIGURES, Some(traj))
+            (what, crate::plots::bridge::FIGURES)
         }
     };
     // every table of the run, as written above
@@ -80,7 +81,7 @@ pub fn run(
         &summary,
         figures,
         &files,
-        (animation.as_deref(), &sol.tables),
+        (Some(&traj), &sol.tables),
     )?;
     let timing = json!({
         "simulate_s": sim_secs,

@@ -40,7 +40,34 @@ fn two_deck_report_shows_the_run() {
         html.contains("--dt 0.0001 --duration 4 --law hertz-damp"),
         "flags missing"
     );
-    assert!(!html.contains("<script"));
+    // the plan animation of the two decks (their two-segment bridge) and its data
+    assert!(html.contains("id=\"an-plan\""), "no plan animation");
+    let traj: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("trajectories.json")).unwrap()).unwrap();
+    assert_eq!(traj["segments"], 2);
+    // each frame's q is the history row at its time (x1, y1, theta1, x2, y2, theta2)
+    let hist = std::fs::read_to_string(out.join("history.csv")).unwrap();
+    let rows: Vec<Vec<f64>> = hist
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|c| c.parse().unwrap()).collect())
+        .collect();
+    let frames = traj["frames"].as_array().unwrap();
+    let stride = traj["stride"].as_u64().unwrap() as usize;
+    for (k, f) in frames.iter().enumerate().step_by(97) {
+        let row = &rows[k * stride];
+        assert_eq!(f["t"].as_f64().unwrap(), row[0]);
+        let q: Vec<f64> = f["q"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_f64().unwrap())
+            .collect();
+        // serde_json reads floats to within an ulp (as the trajectories test of the library)
+        for (a, b) in q.iter().zip(&row[3..9]) {
+            assert!((a - b).abs() <= 1e-15 * b.abs(), "frame {k}: {a} vs {b}");
+        }
+    }
     let summary: serde_json::Value =
         serde_json::from_slice(&std::fs::read(out.join("summary.json")).unwrap()).unwrap();
     for (k, v) in summary.as_object().unwrap() {

@@ -1,10 +1,10 @@
-//! `trajectories.json` of a bridge run (`pounding::sim::output::bridge_trajectories_json`):
+//! `trajectories.json` of a bridge run (`pounding::sim::output::trajectories_json`):
 //! valid JSON; at most `TRAJECTORY_MAX_FRAMES` frames, every `stride`-th kept row with its time
 //! and `x_i, y_i, θ_i` (degrees) to the last bit or two (serde_json's reading of a
 //! shortest round-trip number is not always correctly rounded); the plan of `bridge_plan`; every impact.
 
 use pounding::sim::output::{
-    TRAJECTORY_MAX_FRAMES, bridge_plan, bridge_trajectories_json, trajectory_stride,
+    TRAJECTORY_MAX_FRAMES, bridge_plan, trajectories_json, trajectory_stride,
 };
 use pounding::sim::scenario::Scenario;
 use serde_json::Value;
@@ -24,7 +24,12 @@ fn trajectories_hold_decimated_history_rows_exactly() {
         .build_bridge()
         .unwrap();
     let sol = setup.run().unwrap();
-    let j: Value = serde_json::from_str(&bridge_trajectories_json(&setup, &sol)).unwrap();
+    let j: Value = serde_json::from_str(&trajectories_json(
+        &setup.problem.model,
+        &setup.problem.ground,
+        &sol,
+    ))
+    .unwrap();
     let rows = sol.t.len();
     let stride = j["stride"].as_u64().unwrap() as usize;
     assert_eq!(stride, trajectory_stride(rows));

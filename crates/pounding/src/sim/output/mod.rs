@@ -35,7 +35,7 @@ pub use compare_bridge::{
 pub use history::History;
 pub use impacts::{impacts_csv, run_warnings};
 pub use input_warnings::{InputWarning, input_warnings, warning_sentence};
-pub use trajectories::{TRAJECTORY_MAX_FRAMES, bridge_trajectories_json, trajectory_stride};
+pub use trajectories::{TRAJECTORY_MAX_FRAMES, trajectories_json, trajectory_stride};
 
 /// Degrees per radian.
 /// How a run's files name its parts: a bridge's layout (`[[segment]]` scenarios: segments,

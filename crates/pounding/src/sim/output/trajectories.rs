@@ -12,11 +12,11 @@
 //! and a drawing magnified `f` times shows `p⁰ + f (p(t) − p⁰)`.
 
 use super::{DEG, joint_openings};
+use crate::ground_motion::GroundMotion;
 use crate::math::{Real, Vector};
 use crate::output::json_float;
 use crate::sim::SimContact;
-use crate::sim::bridge::BridgeSolution;
-use crate::sim::scenario::BridgeSetup;
+use crate::sim::bridge::{BridgeModel, BridgeSolution};
 use std::fmt::Write;
 
 /// Most frames a `trajectories.json` holds (a 20-segment run then stays near 2.5 MB).
@@ -37,9 +37,13 @@ pub fn trajectory_stride(rows: usize) -> usize {
     rows.div_ceil(TRAJECTORY_MAX_FRAMES).max(1)
 }
 
-/// `trajectories.json` of a bridge run (module doc), one line per frame.
-pub fn bridge_trajectories_json(setup: &BridgeSetup, sol: &BridgeSolution) -> String {
-    let model = &setup.problem.model;
+/// `trajectories.json` of a run of the bridge `model` under `ground` (module doc; the two-deck
+/// model's is its two-segment bridge), one line per frame.
+pub fn trajectories_json(
+    model: &BridgeModel,
+    ground: &GroundMotion,
+    sol: &BridgeSolution,
+) -> String {
     let n = sol.n_segments;
     let rows = sol.t.len();
     let stride = trajectory_stride(rows);
@@ -78,10 +82,7 @@ pub fn bridge_trajectories_json(setup: &BridgeSetup, sol: &BridgeSolution) -> St
     let rot = sol.dofs.rotations();
     for r in (0..rows).step_by(stride) {
         let t = sol.t[r];
-        let a = setup
-            .problem
-            .ground
-            .accel(crate::sim::solver_time(t, sol.dt));
+        let a = ground.accel(crate::sim::solver_time(t, sol.dt));
         let qs: Vec<String> = sol
             .q_row(r)
             .iter()
@@ -120,16 +121,16 @@ pub fn bridge_trajectories_json(setup: &BridgeSetup, sol: &BridgeSolution) -> St
         })
         .collect();
     s.push_str(&imp.join(",\n"));
-    let _ = writeln!(s, "\n],\n\"events\":{}}}", events(setup, sol));
+    let _ = writeln!(s, "\n],\n\"events\":{}}}", events(model, sol));
     s
 }
 
 /// The governing event times: first impact, peak closing (smallest joint opening), the peak of
 /// the governing seat ratio ([`crate::sim::bridge::BridgeSummary::governing_seat`]), unseating.
-fn events(setup: &BridgeSetup, sol: &BridgeSolution) -> String {
+fn events(model: &BridgeModel, sol: &BridgeSolution) -> String {
     let first = sol.impacts.first().map(|i| i.time);
     let mut peak: Option<(Real, Real)> = None;
-    for op in joint_openings(&setup.problem.model, sol) {
+    for op in joint_openings(model, sol) {
         for (r, v) in op.iter().enumerate() {
             if v.is_finite() && peak.is_none_or(|(_, b)| *v < b) {
                 peak = Some((sol.t[r], *v));

@@ -103,6 +103,11 @@ impl Setup {
         output::run_warnings(self.layout(), sol)
     }
 
+    /// `trajectories.json` of a run of it (the plan animation's data).
+    pub fn trajectories_json(&self, sol: &BridgeSolution) -> String {
+        output::trajectories_json(&self.model(), self.ground(), sol)
+    }
+
     /// `summary.json` of a run of it, as written.
     pub fn summary_json_text(&self, sol: &BridgeSolution) -> String {
         match self {
