@@ -29,8 +29,9 @@
     return [p[0] + state.mag * (x - p[0]), p[1] + state.mag * (y - p[1])];
   }
   function view() {
-    var pad = 0.06 * ext + 1e-9, v = state.zoom || { cx: (x0 + x1) / 2, cy: (y0 + y1) / 2, w: ext + 2 * pad };
-    var k = Math.min(cv.width / v.w, cv.height / (v.w * cv.height / cv.width));
+    // the whole plan fits both ways (a curved plan can be as wide as it is long); a zoom fits its width
+    var pad = 0.06 * ext + 1e-9, v = state.zoom || { cx: (x0 + x1) / 2, cy: (y0 + y1) / 2, w: x1 - x0 + 2 * pad, h: y1 - y0 + 2 * pad };
+    var k = v.h ? Math.min(cv.width / v.w, cv.height / v.h) : cv.width / v.w;
     return function (p) { p = R(p); return [cv.width / 2 + k * (p[0] - v.cx), cv.height / 2 - k * (p[1] - v.cy)]; };
   }
   function draw() {
