@@ -9,8 +9,9 @@
 //! (total joint force of the compliance laws), each with a full-duration panel and a zoom around
 //! the largest contact event.
 //!
-//! A bridge file (`[[segment]]` tables) is compared by [`bridge`]: each law replaces the law at
-//! every joint and abutment; a law that cannot run on the bridge is skipped with its reason.
+//! A bridge file (`[[segment]]` tables) runs the same way (one [`Setup`] per law, one loop): each
+//! law replaces the law at every joint and abutment; a law that cannot run on the bridge is
+//! skipped with its reason; its files are written by [`bridge`].
 
 mod bridge;
 mod plots;
@@ -21,8 +22,7 @@ use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
 use pounding::sim::bridge::BridgeSolution;
 use pounding::sim::output::{COMPARE_OUTPUTS, compare_csv, compare_table};
-use pounding::sim::scenario::{Scenario, SimSetup};
-use pounding::sim::simulate;
+use pounding::sim::scenario::{Scenario, Setup};
 use serde_json::json;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -50,12 +50,18 @@ pub struct Args {
     pub out: PathBuf,
 }
 
-/// One law's run.
+/// One law: its run and wall time, or why it was skipped (a bridge only: a law that cannot
+/// run on it).
 struct Run {
     law: String,
-    sol: BridgeSolution,
+    outcome: Result<(BridgeSolution, f64), String>,
+}
+
+/// A law that ran (the two-deck outputs: every law runs).
+pub(crate) struct Ran<'a> {
+    law: &'a str,
+    sol: &'a BridgeSolution,
     secs: f64,
-    gap0: Real,
 }
 
 /// Runs `pounding compare`: checks `--laws` and `--dt`, builds and validates every law's run
@@ -73,21 +79,47 @@ pub fn run(args: Args) -> Result<ExitCode> {
         // the scenario's own checks (step within the run, step count, restrainers) apply to it
         base = base.with_dt(dt);
     }
-    if base.is_bridge() {
-        return bridge::run(&args, &laws, base, t_start);
-    }
+    let bridge = base.is_bridge();
     let setups = build_setups(&laws, base)?;
-    if let Some(s) = setups.first() {
-        crate::cmd_simulate::sim_records::print_components(&s.problem.ground);
+    if let Some(Ok(s)) = setups.iter().find(|s| s.is_ok()) {
+        crate::cmd_simulate::sim_records::print_components(s.ground());
     }
     pounding::output::check_output_dir_free(&args.out)?;
-    let runs = run_laws(&laws, &setups)?;
-    write_outputs(&args.out, &runs, t_start)?;
+    let runs = run_laws(&laws, &setups);
+    // the two-deck model runs every law or none (a bridge skips a law it refuses)
+    if let (false, Some(Err(why))) = (bridge, runs.iter().map(|r| &r.outcome).find(|o| o.is_err()))
+    {
+        bail!("{why}");
+    }
+    if bridge {
+        bridge::write_outputs(&args.out, &runs, t_start)?;
+    } else {
+        let ran: Vec<Ran> = runs
+            .iter()
+            .filter_map(|r| {
+                let (sol, secs) = r.outcome.as_ref().ok()?;
+                Some(Ran {
+                    law: &r.law,
+                    sol,
+                    secs: *secs,
+                })
+            })
+            .collect();
+        let gap0 = match setups.iter().flatten().next() {
+            Some(Setup::TwoDecks(s)) => s.problem.model.gap,
+            _ => 0.0,
+        };
+        write_outputs(&args.out, &ran, gap0, t_start)?;
+    }
     // Like `simulate`: a law whose run did not complete is written, then reported with exit 1.
     let bad: Vec<String> = runs
         .iter()
-        .filter(|r| r.sol.status != pounding::sim::SimStatus::Completed)
-        .map(|r| format!("{} ({:?})", r.law, r.sol.status))
+        .filter_map(|r| match &r.outcome {
+            Ok((sol, _)) if sol.status != pounding::sim::SimStatus::Completed => {
+                Some(format!("{} ({:?})", r.law, sol.status))
+            }
+            _ => None,
+        })
         .collect();
     if !bad.is_empty() {
         eprintln!(
@@ -129,29 +161,46 @@ fn parse_laws(given: &[String]) -> Result<Vec<String>> {
 /// the plots), with the rules of `simulate` (a step no longer than the run, not too many steps)
 /// and the memory of all histories together within the limit. A `[contact]` key that no law of
 /// `laws` reads is refused first (`Scenario::check_contact_keys` after `with_compared_laws`).
-fn build_setups(laws: &[String], base: Scenario) -> Result<Vec<SimSetup>> {
+/// A law that cannot be built is an error for the two-deck model; on a bridge it is skipped with
+/// its reason (its sites may refuse it: a time step too coarse for its stiffness, a calibration
+/// it lacks), unless every law is.
+fn build_setups(laws: &[String], base: Scenario) -> Result<Vec<Result<Setup, String>>> {
+    let bridge = base.is_bridge();
     let base = base.with_compared_laws(laws);
     base.check_contact_keys()?;
     let mut setups = Vec::new();
-    let mut sizes = Vec::new();
     for l in laws {
-        let s = base
-            .clone()
-            .with_law(l)
-            .build()
-            .with_context(|| format!("contact law {l:?}"))?;
-        let d = s
-            .settings
-            .duration
-            .unwrap_or_else(|| s.problem.ground.end_time());
-        let n = s.settings.step_count(d).map_err(|e| anyhow!("{e}"))?;
-        sizes.push((n, 2));
-        setups.push(s);
+        setups.push(match base.clone().with_law(l).build_setup() {
+            Ok(s) => Ok(s),
+            Err(e) if bridge => Err(e.to_string()),
+            Err(e) => return Err(anyhow::Error::new(e).context(format!("contact law {l:?}"))),
+        });
     }
-    let dt = setups.first().map_or(1e-3, |s| s.settings.dt);
+    if let Some(Err(first)) = setups.first()
+        && setups.iter().all(Result::is_err)
+    {
+        bail!("no law of --laws can run on this bridge: {first}");
+    }
+    let mut sizes = Vec::new();
+    for s in setups.iter().flatten() {
+        let d = s
+            .settings()
+            .duration
+            .unwrap_or_else(|| s.ground().end_time());
+        let n = match s {
+            Setup::TwoDecks(_) => s.settings().step_count(d).map_err(|e| anyhow!("{e}"))?,
+            Setup::Bridge(_) => s.settings().step_count(d).unwrap_or(usize::MAX),
+        };
+        sizes.push((n, s.model().segments.len()));
+    }
+    let dt = setups
+        .iter()
+        .flatten()
+        .next()
+        .map_or(1e-3, |s| s.settings().dt);
     let stride = fitted_stride(&sizes, dt)?;
-    for s in &mut setups {
-        s.settings.history_stride = stride;
+    for s in setups.iter_mut().flatten() {
+        s.settings_mut().history_stride = stride;
     }
     Ok(setups)
 }
@@ -178,62 +227,68 @@ pub(crate) fn plot_stride(dt: Real) -> usize {
     ((5e-4 / dt).floor() as usize).max(1)
 }
 
-/// Runs every law in turn, reporting each on stderr (steps, time, status, time-step warnings).
-fn run_laws(laws: &[String], setups: &[SimSetup]) -> Result<Vec<Run>> {
+/// Runs every law in turn, reporting each on stderr (steps, time, status, time-step warnings,
+/// or why it was skipped).
+fn run_laws(laws: &[String], setups: &[Result<Setup, String>]) -> Vec<Run> {
     let mut runs = Vec::new();
     for (l, s) in laws.iter().zip(setups) {
-        let t = Instant::now();
-        // a long law says how long it will take, as a single run does
-        let settings = pounding::sim::SimSettings {
-            progress: cmd_simulate::time_estimate(),
-            ..s.settings.clone()
+        let outcome = match s {
+            Err(why) => Err(why.clone()),
+            Ok(s) => {
+                let t = Instant::now();
+                // a long law says how long it will take, as a single run does
+                let mut s = s.clone();
+                s.settings_mut().progress = cmd_simulate::time_estimate();
+                s.run()
+                    .map(|sol| (sol, t.elapsed().as_secs_f64()))
+                    .map_err(|e| format!("law {l:?}: {e}"))
+            }
         };
-        let sol = simulate(&s.problem, &settings).map_err(|e| anyhow!("law {l:?}: {e}"))?;
-        let secs = t.elapsed().as_secs_f64();
-        let energy =
-            pounding::sim::output::run_warnings(pounding::sim::output::Layout::TwoDecks, &sol);
-        if !energy.is_empty() || sol.time_step_advice.as_ref().is_some_and(|a| !a.adequate) {
-            eprintln!("law {l}:");
+        if let (Ok((sol, _)), Ok(s)) = (&outcome, s) {
+            let energy = s.run_warnings(sol);
+            if !energy.is_empty() || sol.time_step_advice.is_some_and(|a| !a.adequate) {
+                eprintln!("law {l}:");
+            }
+            cmd_simulate::print_run_warnings(
+                s.ground(),
+                sol.dt,
+                sol.time_step_advice.as_ref(),
+                &energy,
+            );
         }
-        cmd_simulate::print_run_warnings(
-            &s.problem.ground,
-            sol.dt,
-            sol.time_step_advice.as_ref(),
-            &energy,
-        );
-        eprintln!(
-            "{l}: {} steps in {:.1} ms ({:?})",
-            sol.steps,
-            secs * 1e3,
-            sol.status
-        );
+        match &outcome {
+            Ok((sol, secs)) => eprintln!(
+                "{l}: {} steps in {:.1} ms ({:?})",
+                sol.steps,
+                secs * 1e3,
+                sol.status
+            ),
+            Err(why) => eprintln!("skipped law {l}: {why}"),
+        }
         runs.push(Run {
             law: l.clone(),
-            sol,
-            secs,
-            gap0: s.problem.model.gap,
+            outcome,
         });
     }
-    Ok(runs)
+    runs
 }
 
 /// Writes `compare.csv`, the table on stdout, the plots and `timing.json` into the locked `out`.
-fn write_outputs(out: &Path, runs: &[Run], t_start: Instant) -> Result<()> {
+fn write_outputs(out: &Path, runs: &[Ran], gap0: Real, t_start: Instant) -> Result<()> {
     let lock = pounding::output::lock_output_dir(out)?;
     pounding::output::remove_previous_outputs(&lock, COMPARE_OUTPUTS)?;
-    let rows: Vec<(&str, &BridgeSolution)> =
-        runs.iter().map(|r| (r.law.as_str(), &r.sol)).collect();
+    let rows: Vec<(&str, &BridgeSolution)> = runs.iter().map(|r| (r.law, r.sol)).collect();
     let wr = |name: &str, bytes: &[u8]| {
         write_atomic(&out.join(name), bytes)
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
     wr("compare.csv", compare_csv(&rows).as_bytes())?;
     print!("{}", compare_table(&rows));
-    plots::plots(out, runs).map_err(|e| anyhow!("plotting: {e}"))?;
+    plots::plots(out, runs, gap0).map_err(|e| anyhow!("plotting: {e}"))?;
     let mut timing = serde_json::Map::new();
     for r in runs {
         timing.insert(
-            r.law.clone(),
+            r.law.to_string(),
             json!({"simulate_s": r.secs, "steps": r.sol.steps}),
         );
     }

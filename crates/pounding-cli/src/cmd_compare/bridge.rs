@@ -1,4 +1,5 @@
-//! `pounding compare` on a bridge of `[[segment]]`s: each law of `--laws` replaces the law at
+//! The outputs of `pounding compare` on a bridge of `[[segment]]`s (the runs are the command's,
+//! [`super::run`], for either form): each law of `--laws` replaces the law at
 //! every joint and abutment (the other keys of the site tables and of `[contact]` apply when the
 //! law reads them; a key that no compared law reads is refused first, exit 2). A law that
 //! cannot run on this bridge (its build or the model refuses it, e.g. a time step too coarse
@@ -11,140 +12,22 @@
 //! gap when the bridge has no joint) and `timing.json` (last). Exit 1 when a law that ran did
 //! not complete.
 
-use super::Args;
+use super::Run;
 use super::plots::{R, panel};
-use anyhow::{Context, Result, anyhow, bail};
+use anyhow::{Context, Result, anyhow};
 use pounding::math::Real;
 use pounding::output::write_atomic;
-use pounding::sim::SimStatus;
 use pounding::sim::bridge::BridgeSolution;
 use pounding::sim::output::{
     BRIDGE_COMPARE_OUTPUTS, BridgeCompareRun, COMPARE_OUTPUTS, bridge_compare_csv,
     bridge_compare_sites_csv, bridge_compare_table,
 };
-use pounding::sim::scenario::{BridgeSetup, Scenario};
 use serde_json::json;
 use std::path::Path;
-use std::process::ExitCode;
 use std::time::Instant;
 
-/// One law: its run and wall time, or why it was skipped.
-struct Run {
-    law: String,
-    outcome: Result<(BridgeSolution, f64), String>,
-}
-
-/// Runs the comparison of a bridge scenario `base` (see the module doc).
-pub(super) fn run(
-    args: &Args,
-    laws: &[String],
-    base: Scenario,
-    t_start: Instant,
-) -> Result<ExitCode> {
-    let base = base.with_compared_laws(laws);
-    base.check_contact_keys()?;
-    let mut setups: Vec<Result<BridgeSetup, String>> = Vec::new();
-    for l in laws {
-        setups.push(match base.clone().with_law(l).build_bridge() {
-            Ok(s) => Ok(s),
-            Err(e) => Err(e.to_string()),
-        });
-    }
-    if let Some(Err(first)) = setups.first()
-        && setups.iter().all(Result::is_err)
-    {
-        bail!("no law of --laws can run on this bridge: {first}");
-    }
-    let sizes: Vec<(usize, usize)> = setups
-        .iter()
-        .flatten()
-        .map(|s| {
-            let d = s
-                .settings
-                .duration
-                .unwrap_or_else(|| s.problem.ground.end_time());
-            let n = s.settings.step_count(d).unwrap_or(usize::MAX);
-            (n, s.problem.model.segments.len())
-        })
-        .collect();
-    let dt = setups
-        .iter()
-        .flatten()
-        .next()
-        .map_or(1e-3, |s| s.settings.dt);
-    let stride = super::fitted_stride(&sizes, dt)?;
-    for s in setups.iter_mut().flatten() {
-        s.settings.history_stride = stride;
-    }
-    if let Some(Ok(s)) = setups.iter().find(|s| s.is_ok()) {
-        crate::cmd_simulate::sim_records::print_components(&s.problem.ground);
-    }
-    pounding::output::check_output_dir_free(&args.out)?;
-    let mut runs = Vec::new();
-    for (l, s) in laws.iter().zip(&setups) {
-        let outcome = match s {
-            Err(why) => Err(why.clone()),
-            Ok(s) => {
-                let t = Instant::now();
-                // a long law says how long it will take, as a single run does
-                let mut s = s.clone();
-                s.settings.progress = crate::cmd_simulate::time_estimate();
-                s.run()
-                    .map(|sol| (sol, t.elapsed().as_secs_f64()))
-                    .map_err(|e| e.to_string())
-            }
-        };
-        if let (Ok((sol, _)), Ok(s)) = (&outcome, s) {
-            let energy =
-                pounding::sim::output::run_warnings(pounding::sim::output::Layout::Bridge, sol);
-            if !energy.is_empty() || sol.time_step_advice.is_some_and(|a| !a.adequate) {
-                eprintln!("law {l}:");
-            }
-            crate::cmd_simulate::print_run_warnings(
-                &s.problem.ground,
-                sol.dt,
-                sol.time_step_advice.as_ref(),
-                &energy,
-            );
-        }
-        match &outcome {
-            Ok((sol, secs)) => eprintln!(
-                "{l}: {} steps in {:.1} ms ({:?})",
-                sol.steps,
-                secs * 1e3,
-                sol.status
-            ),
-            Err(why) => eprintln!("skipped law {l}: {why}"),
-        }
-        runs.push(Run {
-            law: l.clone(),
-            outcome,
-        });
-    }
-    write_outputs(&args.out, &runs, t_start)?;
-    let bad: Vec<String> = runs
-        .iter()
-        .filter_map(|r| match &r.outcome {
-            Ok((sol, _)) if sol.status != SimStatus::Completed => {
-                Some(format!("{} ({:?})", r.law, sol.status))
-            }
-            _ => None,
-        })
-        .collect();
-    if !bad.is_empty() {
-        eprintln!(
-            "error: {} laws ended with a status other than Completed: {}; their results are not \
-             trustworthy (see compare.csv, column status)",
-            bad.len(),
-            bad.join(", ")
-        );
-        return Ok(ExitCode::FAILURE);
-    }
-    Ok(ExitCode::SUCCESS)
-}
-
 /// Writes the CSV files, the table, the plot and `timing.json` into the locked `out`.
-fn write_outputs(out: &Path, runs: &[Run], t_start: Instant) -> Result<()> {
+pub(super) fn write_outputs(out: &Path, runs: &[Run], t_start: Instant) -> Result<()> {
     let lock = pounding::output::lock_output_dir(out)?;
     pounding::output::remove_previous_outputs(&lock, BRIDGE_COMPARE_OUTPUTS)?;
     pounding::output::remove_previous_outputs(&lock, COMPARE_OUTPUTS)?;

@@ -2,7 +2,7 @@
 //! ends) and `contact_force.png` (total joint force of the compliance laws), each with a
 //! full-duration panel and a zoom around the largest contact event.
 
-use super::Run;
+use super::Ran as Run;
 use crate::plot_style::{
     BLUE, DARK, DrawResult, FAMILY, GREEN, ORANGE, PURPLE, RED, e, register, save_white_png,
     series_legend,
@@ -177,7 +177,7 @@ fn save(out: &Path, name: &str, draw: impl Fn(&DrawingArea<BitMapBackend, Shift>
 }
 
 /// Draws both plots of `runs` into `out`.
-pub(super) fn plots(out: &Path, runs: &[Run]) -> R {
+pub(super) fn plots(out: &Path, runs: &[Run], gap0: Real) -> R {
     register();
     let t_end = runs
         .iter()
@@ -185,7 +185,7 @@ pub(super) fn plots(out: &Path, runs: &[Run]) -> R {
         .fold(0.0, Real::max)
         .max(1e-9);
     let zoom = zoom_window(runs);
-    let all: Vec<(&str, (Pts, Pts))> = runs.iter().map(|r| (r.law.as_str(), series(r))).collect();
+    let all: Vec<(&str, (Pts, Pts))> = runs.iter().map(|r| (r.law, series(r))).collect();
     let gaps: Vec<(&str, Vec<(Real, Real)>)> =
         all.iter().map(|(l, (g, _))| (*l, g.clone())).collect();
     let forces: Vec<(&str, Vec<(Real, Real)>)> = all
@@ -193,7 +193,6 @@ pub(super) fn plots(out: &Path, runs: &[Run]) -> R {
         .filter(|(_, (_, f))| !f.is_empty())
         .map(|(l, (_, f))| (*l, f.clone()))
         .collect();
-    let gap0 = runs.first().map_or(0.0, |r| r.gap0);
     save(out, "joint_gap.png", |root| {
         let (a, b) = root.split_vertically(450);
         panel(
