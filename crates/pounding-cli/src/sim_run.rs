@@ -47,7 +47,8 @@ pub fn run(
     wr("impacts.csv", setup.impacts_csv(&sol).as_bytes())?;
     let summary = setup.summary_json_text(&sol);
     wr("summary.json", summary.as_bytes())?;
-    for t in &sol.tables {
+    let tables = sol.tables();
+    for t in &tables {
         wr(&t.file_name(), t.csv().as_bytes())?;
     }
     let mut files: Vec<String> = ["summary.json", "history.csv", "impacts.csv"]
@@ -72,7 +73,7 @@ pub fn run(
         }
     };
     // every table of the run, as written above
-    files.extend(sol.tables.iter().map(|t| t.file_name()));
+    files.extend(tables.iter().map(|t| t.file_name()));
     let files: Vec<&str> = files.iter().map(String::as_str).collect();
     super::write_report(
         args,
@@ -81,7 +82,7 @@ pub fn run(
         &summary,
         figures,
         &files,
-        (Some(&traj), &sol.tables),
+        (Some(&traj), &tables),
     )?;
     let timing = json!({
         "simulate_s": sim_secs,

@@ -133,13 +133,13 @@ impl SimRun {
     ) -> PyResult<Vec<(String, Vec<String>, Bound<'py, PyArray2<f64>>)>> {
         self.run
             .sol
-            .tables
-            .iter()
+            .tables()
+            .into_iter()
             .map(|t| {
                 let heads: Vec<String> = t.columns.iter().map(|c| c.header()).collect();
                 let a = numpy::ndarray::Array2::from_shape_vec(
                     (t.rows(), heads.len()),
-                    t.values.clone(),
+                    t.values,
                 )
                 .map_err(|e| crate::SolverError::new_err(e.to_string()))?;
                 Ok((t.name.to_string(), heads, PyArray2::from_owned_array(py, a)))

@@ -1257,9 +1257,9 @@ pub struct BridgeSolution {
     pub closure_steps: usize,
     /// Time-step adequacy of the compliance law.
     pub time_step_advice: Option<TimeStepAdvice>,
-    /// The observers' tables at the history steps: `bearings`, `restrainers`, `joint_slip`
-    /// ([`super::table::Table`]; written as `<name>.csv`).
-    pub tables: Vec<super::table::Table>,
+    /// The observers' tables at the history steps — `bearings`, `restrainers`, `joint_slip` —,
+    /// recorded or derived from the histories when asked for ([`Self::tables`]).
+    pub table_sources: Vec<super::table::TableSource>,
 }
 
 impl BridgeSolution {
@@ -1300,6 +1300,16 @@ impl BridgeSolution {
     pub fn contact_force_row(&self, r: usize) -> &[Real] {
         let n = 2 * self.n_segments.saturating_sub(1);
         self.contact_force.get(n * r..n * (r + 1)).unwrap_or(&[])
+    }
+
+    /// The observers' tables ([`super::table::Table`]; written as `<name>.csv`), in order:
+    /// `bearings` (derived here from `q` and the recorded plastic displacements of yielding
+    /// bearings), `restrainers`, `joint_slip`.
+    pub fn tables(&self) -> Vec<super::table::Table> {
+        self.table_sources
+            .iter()
+            .map(|s| s.table(&self.t, &self.q, &self.dofs))
+            .collect()
     }
 
     /// Impacting contacts at the abutments.
@@ -1551,6 +1561,6 @@ pub(crate) fn solution(
         newton_failures: r.stats.newton_failures,
         closure_steps: r.stats.closure_steps,
         time_step_advice: r.stats.time_step_advice,
-        tables: r.tables,
+        table_sources: r.tables,
     }
 }

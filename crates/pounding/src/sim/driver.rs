@@ -30,7 +30,7 @@ use super::dofs::{Dofs, PlanDof};
 use super::model::SegmentBody;
 use super::observer::{Observer, Snapshot};
 use super::support::Attachment;
-use super::table::Table;
+use super::table::TableSource;
 use super::{
     Energy, ImpactRecord, SimError, SimProblem, SimSettings, SimStatus, balance_error,
     energies_finite, max_nan,
@@ -401,6 +401,15 @@ pub(crate) struct BearingAt {
 }
 
 impl BearingAt {
+    /// The arm `r = p − G⁰` of a bearing from a segment to a support (the segment's point from
+    /// its reference centroid); `(0, 0)` for another kind of link.
+    pub fn arm(&self, bodies: &[SegmentBody]) -> Vector {
+        match (self.top, self.bottom) {
+            (Attachment::Body(i, p), Attachment::Support(..)) => p - bodies[i].centroid,
+            _ => Vector::zeros(),
+        }
+    }
+
     /// The linearised deformation `u_top − u_bottom` at `q` ([`Attachment::linear_displacement`]).
     #[inline]
     pub fn deformation(&self, dofs: &Dofs, q: &[Real], bodies: &[SegmentBody]) -> Vector {
@@ -907,8 +916,8 @@ pub(crate) struct RunResult {
     pub energy_balance_error: Real,
     pub final_energy: Energy,
     pub max_input_energy: Real,
-    /// The observers' tables.
-    pub tables: Vec<Table>,
+    /// The observers' tables (or what they are derived from).
+    pub tables: Vec<TableSource>,
 }
 
 /// Runs the time loop with `stepper` from `(q0, u0)` (module doc).
@@ -973,7 +982,6 @@ pub(crate) fn run<S: Stepper>(
             trace.record(t, &q, &frame, &u, &obs, energy, forces.map(|f| &f[..nj]));
             let snapshot = Snapshot {
                 t,
-                q: &q,
                 frame: &frame,
                 bridge,
                 elements: &el,
@@ -1080,7 +1088,7 @@ pub(crate) fn run<S: Stepper>(
         final_energy,
         max_input_energy: ledger.max_in,
         log,
-        tables: observers.into_iter().map(|o| o.into_table()).collect(),
+        tables: observers.into_iter().map(|o| o.into_source()).collect(),
     }
 }
 
@@ -1170,7 +1178,7 @@ mod tests {
                 format!(
                     "{:?}",
                     (&s.t, &s.q, &s.u, &s.gaps, &s.end_gaps, &s.slip, &s.energy)
-                ) + &format!("{:?}", (&s.contact_force, &s.abutment_gaps, &s.tables))
+                ) + &format!("{:?}", (&s.contact_force, &s.abutment_gaps, s.tables()))
             };
             assert!(history(&r) == history(&c), "the histories differ");
             assert!(r.t.len() == 6001 && r.summary.joints[0].peak_opening > 0.0);

@@ -1,7 +1,10 @@
 //! Observers: what a run records besides its state, one [`Table`] each.
 //!
 //! The driver owns the loop; at every kept step (the `history.csv` rows) it hands each observer
-//! a [`Snapshot`] of the committed state, and at the end it returns their tables in order. A new
+//! a [`Snapshot`] of the committed state, and at the end it returns what each kept, in order: a
+//! recorded table, or what its table is derived from when asked for ([`TableSource`]: the
+//! bearings' table is a function of the kept `q` rows and of the yielding bearings' plastic
+//! displacements, the only part recorded). A new
 //! output is one type here implementing [`Observer`] and one line in [`standard`]; the CLI and
 //! Python write or convert every table without knowing it.
 //!
@@ -16,18 +19,16 @@
 //! - [`JointSlip`] (`joint_slip.csv`): each joint's tangential slip, as the two-deck
 //!   `history.csv` reports it.
 
-use super::contact::State;
+use super::dofs::Dofs;
 use super::driver::{Bridge, Frame};
 use super::elements::Elements;
 use super::table::{Column, Table};
-use crate::math::Real;
+use crate::math::{Real, Vector};
 
 /// The committed state at a kept step, as the observers see it.
 pub(crate) struct Snapshot<'a> {
     /// Time \[s\].
     pub t: Real,
-    /// Displacements relative to the ground.
-    pub q: &'a State,
     /// The geometry at `q`.
     pub frame: &'a Frame,
     /// The bridge.
@@ -42,8 +43,8 @@ pub(crate) struct Snapshot<'a> {
 pub(crate) trait Observer: Send {
     /// Appends the row of `s` (its time first).
     fn observe(&mut self, s: &Snapshot<'_>);
-    /// The table recorded.
-    fn into_table(self: Box<Self>) -> Table;
+    /// The table recorded, or what it is derived from.
+    fn into_source(self: Box<Self>) -> TableSource;
     /// Room for `rows` rows (the run's kept steps), so that recording never reallocates.
     fn reserve(&mut self, rows: usize);
 }
@@ -57,11 +58,11 @@ pub(crate) fn standard(bridge: &Bridge) -> Vec<Box<dyn Observer>> {
     ]
 }
 
-/// Per bearing: deformation and force on its segment (module doc).
+/// Per bearing: deformation and force on its segment (module doc). Derived from the run's `q`
+/// when the table is asked for ([`BearingsTable`]); the run records only what `q` does not
+/// hold, the committed plastic displacement of each yielding bearing.
 pub(crate) struct BearingForces {
-    table: Table,
-    /// Per segment and bearing: the index of its yielding element, if any.
-    yielding: Vec<Vec<Option<usize>>>,
+    recipe: BearingsTable,
 }
 
 impl BearingForces {
@@ -72,50 +73,131 @@ impl BearingForces {
             .iter()
             .map(|b| vec![None; b.len()])
             .collect();
+        for (e, b) in bridge.elements.bearings.iter().enumerate() {
+            yielding[b.body][b.slot] = Some(e);
+        }
+        let mut bearings = Vec::new();
         for (i, bs) in bridge.bearings.iter().enumerate() {
-            for j in 0..bs.len() {
+            for (j, b) in bs.iter().enumerate() {
                 let p = format!("segment{}_bearing{}", i + 1, j + 1);
                 for (c, unit) in [("ux", "m"), ("uy", "m"), ("fx", "N"), ("fy", "N")] {
                     columns.push(Column::new(format!("{p}_{c}"), unit));
                 }
+                bearings.push(BearingRecipe {
+                    segment: i,
+                    arm: b.arm(&bridge.bodies),
+                    stiffness: b.stiffness,
+                    yielding: yielding[i][j].map(|e| {
+                        let law = &bridge.elements.bearings[e].law;
+                        (e, law.k0(), law.b())
+                    }),
+                });
             }
         }
-        for (e, b) in bridge.elements.bearings.iter().enumerate() {
-            yielding[b.body][b.slot] = Some(e);
-        }
+        let n_yielding = bridge.elements.bearings.len();
         BearingForces {
-            table: Table::with_time("bearings", columns),
-            yielding,
+            recipe: BearingsTable {
+                columns,
+                bearings,
+                n_yielding,
+                plastic: Vec::new(),
+            },
         }
     }
 }
 
 impl Observer for BearingForces {
     fn reserve(&mut self, rows: usize) {
-        self.table.reserve_rows(rows);
+        let r = &mut self.recipe;
+        r.plastic.reserve(rows.saturating_mul(2 * r.n_yielding));
     }
 
     fn observe(&mut self, s: &Snapshot<'_>) {
-        let v = &mut self.table.values;
-        v.push(s.t);
-        for (i, bs) in s.bridge.bearings.iter().enumerate() {
-            for (j, b) in bs.iter().enumerate() {
-                let u = b.deformation(&s.bridge.dofs, s.q.as_slice(), &s.bridge.bodies);
-                let f = match self.yielding[i][j] {
-                    Some(e) => {
-                        let y = &s.elements.bearings[e];
-                        let k0 = y.law.k0();
-                        -(u * k0 - y.state.u_p * ((1.0 - y.law.b()) * k0))
-                    }
-                    None => -u * b.stiffness,
-                };
-                v.extend([u.x, u.y, f.x, f.y]);
-            }
+        for y in &s.elements.bearings {
+            self.recipe.plastic.extend([y.state.u_p.x, y.state.u_p.y]);
         }
     }
 
-    fn into_table(self: Box<Self>) -> Table {
-        self.table
+    fn into_source(self: Box<Self>) -> TableSource {
+        TableSource::Bearings(self.recipe)
+    }
+}
+
+/// One bearing of [`BearingsTable`]: a bearing from a segment to the ground (its arm from the
+/// segment's centroid, its stiffness) and its yielding element (index, `k₀`, `b`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BearingRecipe {
+    segment: usize,
+    arm: Vector,
+    stiffness: Real,
+    yielding: Option<(usize, Real, Real)>,
+}
+
+/// `bearings.csv` derived from a run's `q` rows and the recorded plastic displacements of its
+/// yielding bearings (module doc's formulas, the same operations as at the kept step).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BearingsTable {
+    columns: Vec<Column>,
+    bearings: Vec<BearingRecipe>,
+    /// Yielding bearings of the bridge.
+    n_yielding: usize,
+    /// Per kept row: `u_p` of every yielding bearing.
+    plastic: Vec<Real>,
+}
+
+impl BearingsTable {
+    /// The table over the kept rows `t` (with `q` rows laid out by `dofs`).
+    fn table(&self, t: &[Real], q: &[Real], dofs: &Dofs) -> Table {
+        let mut out = Table::with_time("bearings", self.columns.clone());
+        let n = dofs.len();
+        out.values.reserve(t.len() * (1 + self.columns.len()));
+        for (r, &tr) in t.iter().enumerate() {
+            let qr = &q[n * r..n * (r + 1)];
+            let plastic = &self.plastic[2 * self.n_yielding * r..2 * self.n_yielding * (r + 1)];
+            out.values.push(tr);
+            for b in &self.bearings {
+                // (x − θ r_y, y + θ r_x) of the segment's point; the ground does not move
+                let [x, y, th] = dofs.plan_of(b.segment, qr);
+                let u = Vector::new(x - th * b.arm.y, y + th * b.arm.x);
+                let f = match b.yielding {
+                    Some((e, k0, hardening)) => {
+                        let u_p = Vector::new(plastic[2 * e], plastic[2 * e + 1]);
+                        -(u * k0 - u_p * ((1.0 - hardening) * k0))
+                    }
+                    None => -u * b.stiffness,
+                };
+                out.values.extend([u.x, u.y, f.x, f.y]);
+            }
+        }
+        out
+    }
+}
+
+/// What a run keeps of one observer: its recorded table, or what the table is derived from when
+/// asked for (`BridgeSolution::tables`).
+#[derive(Debug, Clone, PartialEq)]
+pub enum TableSource {
+    /// Recorded at every kept step.
+    Recorded(Table),
+    /// `bearings.csv`, from the `q` rows.
+    Bearings(BearingsTable),
+}
+
+impl TableSource {
+    /// The table, over the run's kept rows `t` and `q` (laid out by `dofs`).
+    pub fn table(&self, t: &[Real], q: &[Real], dofs: &Dofs) -> Table {
+        match self {
+            TableSource::Recorded(table) => table.clone(),
+            TableSource::Bearings(b) => b.table(t, q, dofs),
+        }
+    }
+
+    /// How many values it holds (the memory it keeps during and after the run).
+    pub fn kept_values(&self) -> usize {
+        match self {
+            TableSource::Recorded(table) => table.values.len(),
+            TableSource::Bearings(b) => b.plastic.len(),
+        }
     }
 }
 
@@ -154,8 +236,8 @@ impl Observer for RestrainerForces {
         }
     }
 
-    fn into_table(self: Box<Self>) -> Table {
-        self.table
+    fn into_source(self: Box<Self>) -> TableSource {
+        TableSource::Recorded(self.table)
     }
 }
 
@@ -185,7 +267,7 @@ impl Observer for JointSlip {
         self.table.values.extend_from_slice(s.slip);
     }
 
-    fn into_table(self: Box<Self>) -> Table {
-        self.table
+    fn into_source(self: Box<Self>) -> TableSource {
+        TableSource::Recorded(self.table)
     }
 }

@@ -9,6 +9,8 @@
 use crate::math::Real;
 use crate::output::push_float_token;
 
+pub use super::observer::{BearingRecipe, BearingsTable, TableSource};
+
 /// One column: its name and its unit (`m`, `N`, `s`, `deg`, …; empty: dimensionless).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Column {

@@ -46,7 +46,7 @@ fn memory_estimate_counts_the_rows_and_bytes_a_run_keeps() {
             newton_failures: _,
             closure_steps: _,
             time_step_advice: _,
-            tables,
+            table_sources,
         } = &sol;
         let rows = t.len();
         assert_eq!(
@@ -62,7 +62,7 @@ fn memory_estimate_counts_the_rows_and_bytes_a_run_keeps() {
             + slip.len()
             + contact_force.len()
             + 2 * abutment_gaps.len()
-            + tables.iter().map(|t| t.values.len()).sum::<usize>();
+            + table_sources.iter().map(|t| t.kept_values()).sum::<usize>();
         let bytes = 8 * reals + size_of_val(&energy[0]) * energy.len();
         assert!(contact_force.is_empty());
         // the estimate counts the kept row twice (a growing vector may hold twice its length)

@@ -43,14 +43,14 @@ fn run(model: BridgeModel, duration: f64) -> (BridgeProblem, BridgeSolution, Sim
     (problem, sol, settings)
 }
 
-fn table<'a>(sol: &'a [Table], name: &str) -> &'a Table {
-    sol.iter().find(|t| t.name == name).unwrap()
+fn table(tables: Vec<Table>, name: &str) -> Table {
+    tables.into_iter().find(|t| t.name == name).unwrap()
 }
 
 #[test]
 fn bearing_forces_are_minus_k_times_their_own_deformation() {
     let (p, sol, _) = run(one_segment(None), 3.0);
-    let b = table(&sol.tables, "bearings");
+    let b = table(sol.tables(), "bearings");
     assert_eq!(b.rows(), sol.t.len());
     assert_eq!(b.columns.len(), 1 + 4 * 4);
     let points = p.model.bearing_points();
@@ -86,7 +86,7 @@ fn bearing_forces_are_minus_k_times_their_own_deformation() {
 /// `m (u_{k+1} − u_k)/h + m ā_g` against the trapezoidal mean of the bearings' forces, and the
 /// same for the moment about the centroid, over every step.
 fn assert_momentum_balance(p: &BridgeProblem, sol: &BridgeSolution, h: f64) -> f64 {
-    let b = table(&sol.tables, "bearings");
+    let b = table(sol.tables(), "bearings");
     let body = &p.model.layout()[0];
     let (m, inertia, g) = (body.mass.mass, body.mass.inertia, body.centroid);
     let arms: Vec<_> = p.model.bearing_points()[0]
@@ -130,7 +130,7 @@ fn the_tables_forces_balance_mass_times_absolute_acceleration() {
     assert!(err < 1e-9, "linear bearings: relative residual {err:e}");
     // yielding bearings (solved implicitly at the end of each step): the same balance
     let (p, sol, s) = run(one_segment(Some(BearingYield { fy: 2.0e5, b: 0.05 })), 4.0);
-    let b = table(&sol.tables, "bearings");
+    let b = table(sol.tables(), "bearings");
     let peak_f = (0..b.rows())
         .flat_map(|r| (0..4).map(move |j| (r, j)))
         .map(|(r, j)| b.row(r)[3 + 4 * j].hypot(b.row(r)[4 + 4 * j]))
@@ -164,7 +164,7 @@ fn restrainer_table_gives_the_cable_law_of_its_elongation() {
         damping_model: DampingModel::Rayleigh,
     };
     let (_, sol, _) = run(model, 6.0);
-    let t = table(&sol.tables, "restrainers");
+    let t = table(sol.tables(), "restrainers");
     let heads: Vec<String> = t.columns.iter().map(|c| c.header()).collect();
     assert_eq!(
         heads,
@@ -185,7 +185,7 @@ fn restrainer_table_gives_the_cable_law_of_its_elongation() {
         engaged += usize::from(f > 0.0);
     }
     assert!(engaged > 10, "the restrainer must engage");
-    let slip = table(&sol.tables, "joint_slip");
+    let slip = table(sol.tables(), "joint_slip");
     assert_eq!(slip.columns.len(), 2);
     assert_eq!(slip.rows(), sol.t.len());
 }
@@ -199,20 +199,21 @@ fn the_two_deck_model_records_the_same_tables() {
         ..SimSettings::default()
     };
     let sol = simulate(&problem, &settings).unwrap();
-    let names: Vec<&str> = sol.tables.iter().map(|t| t.name).collect();
+    let tables = sol.tables();
+    let names: Vec<&str> = tables.iter().map(|t| t.name).collect();
     assert_eq!(names, ["bearings", "restrainers", "joint_slip"]);
     // a run into a directory clears every earlier output: each table's file is in that list
-    for t in &sol.tables {
+    for t in &tables {
         let f = t.file_name();
         assert!(
             pounding::sim::output::SIM_OUTPUTS.contains(&f.as_str()),
             "{f} is not in SIM_OUTPUTS"
         );
     }
-    let b = table(&sol.tables, "bearings");
+    let b = table(sol.tables(), "bearings");
     assert_eq!(b.rows(), sol.t.len());
     assert_eq!(b.columns[1].header(), "segment1_bearing1_ux_m");
-    let slip = table(&sol.tables, "joint_slip");
+    let slip = table(sol.tables(), "joint_slip");
     for (r, s) in sol.slip.iter().enumerate() {
         assert_eq!(slip.row(r)[1], *s);
     }
