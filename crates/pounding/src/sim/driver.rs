@@ -620,9 +620,9 @@ pub(crate) struct Peaks {
     /// Per segment: the square of the largest linearised bearing deformation (0 when not
     /// monitored).
     pub bearing: Vec<Real>,
-    /// Per segment and bearing: the arm `r = p − G⁰` of a bearing from the segment to a support
-    /// (the fast path of the bearing monitor), else the bearing.
-    arms: Vec<Vec<Result<Vector, BearingAt>>>,
+    /// Per segment: the arms `r = p − G⁰` of its bearings to a support (the fast path of the
+    /// bearing monitor), and its other bearings.
+    arms: Vec<(Vec<Vector>, Vec<BearingAt>)>,
 }
 
 /// What [`Peaks::observe`] measured for the history (reused from step to step).
@@ -656,14 +656,12 @@ impl Peaks {
                 .iter()
                 .enumerate()
                 .map(|(j, bs)| {
-                    bs.iter()
-                        .map(|b| match (b.top, b.bottom) {
-                            (Attachment::Body(i, p), Attachment::Support(..)) if i == j => {
-                                Ok(p - br.bodies[j].centroid)
-                            }
-                            _ => Err(*b),
-                        })
-                        .collect()
+                    let ground = |b: &&BearingAt| {
+                        matches!((b.top, b.bottom), (Attachment::Body(i, _), Attachment::Support(..)) if i == j)
+                    };
+                    let arms = bs.iter().filter(ground).map(|b| b.arm(&br.bodies)).collect();
+                    let others = bs.iter().filter(|b| !ground(b)).copied().collect();
+                    (arms, others)
                 })
                 .collect(),
         }
@@ -678,12 +676,14 @@ impl Peaks {
             let [x, y, th] = br.dofs.plan_of(j, q);
             *d = d.max(x * x + y * y);
             let mut m = *peak;
-            for b in pts {
-                // a bearing from segment j to a support: its deformation from the arm directly
-                let u = match b {
-                    Ok(r) => Vector::new(x - th * r.y, y + th * r.x),
-                    Err(b) => b.deformation(&br.dofs, q, &br.bodies),
-                };
+            let (arms, others) = pts;
+            // the bearings from segment j to a support: their deformation from the arm directly
+            for r in arms {
+                let (ux, uy) = (x - th * r.y, y + th * r.x);
+                m = m.max(ux * ux + uy * uy);
+            }
+            for b in others {
+                let u = b.deformation(&br.dofs, q, &br.bodies);
                 m = m.max(u.x * u.x + u.y * u.y);
             }
             *peak = m;
