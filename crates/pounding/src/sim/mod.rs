@@ -73,6 +73,7 @@ pub mod options;
 pub mod output;
 mod rigid;
 pub mod scenario;
+mod solution;
 mod support;
 pub mod table;
 mod yielding;
@@ -822,7 +823,7 @@ pub fn simulate(
     let initial = (problem.q0.as_slice(), problem.u0.as_slice());
     let (result, scheme, kinds) =
         integrate::integrate(&model, &view, &problem.ground, initial, settings)?;
-    Ok(bridge::solution(result, &scheme, &view, &model, &kinds))
+    Ok(solution::solution(result, &scheme, &view, &model, &kinds))
 }
 
 /// The time `t_k = k·dt` of step `k` as the decimal the user expects: for a step with a short
