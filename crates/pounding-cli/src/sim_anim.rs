@@ -4,7 +4,9 @@
 //! (no library, no network) that draws the segments to scale at their displaced positions, with
 //! a time slider, play/pause and speed, a displacement magnification (true scale one click
 //! away), click-to-zoom, the ground-motion trace with a cursor, impacts flashed at their site
-//! with their impulse or peak force, and jump-to buttons for the governing events.
+//! with their impulse or peak force, each seated end's seat edge coloured by its seat ratio
+//! (with the remaining seat written when zoomed), restrainers coloured by their tension, the
+//! bearings' ground points, and jump-to buttons for the governing events.
 
 use std::fmt::Write;
 
@@ -18,7 +20,10 @@ pub fn section(traj: &str) -> String {
         "<h2 id=\"animation\">Plan animation</h2>\n<p>The segments at their displaced positions \
          (dashed: at rest), displacements magnified by the factor shown; click the plan to zoom \
          on a joint, double-click to reset. Impacts flash red at their site with their impulse \
-         (rigid law) or peak force. The data is <a href=\"trajectories.json\">trajectories.json</a> \
+         (rigid law) or peak force. A dashed line at each seated end marks its seat edge (where the \
+         magnified face stands when the end leaves its seat: green below half the seat, orange \
+         above, red unseated; zoom to read the seat left); restrainers are grey while slack, \
+         orange to red with tension; grey squares are the bearings. The data is <a href=\"trajectories.json\">trajectories.json</a> \
          (decimated to at most 2000 frames).</p>\n<div id=\"an-controls\"><button \
          id=\"an-play\">Play</button> <select id=\"an-speed\"><option value=\"0.1\">0.1×</option>\
          <option value=\"0.25\">0.25×</option><option value=\"1\" selected>1×</option><option \

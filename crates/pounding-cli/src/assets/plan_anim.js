@@ -23,11 +23,25 @@
   if (peak > 0) { var want = 0.04 * ext / peak; if (want > 1) { var d = Math.pow(10, Math.floor(Math.log10(want))); auto = [5, 2, 1].map(function (m) { return m * d; }).filter(function (v) { return v <= want; })[0] || 1; } }
   state.mag = auto; mg.value = auto;
   function place(i, p, q) {
+    var x = trueAt(i, p, q);
+    return [p[0] + state.mag * (x[0] - p[0]), p[1] + state.mag * (x[1] - p[1])];
+  }
+  // true (unmagnified) position of point p of segment i
+  function trueAt(i, p, q) {
     var c = D.centroids[i], th = q[3 * i + 2] * Math.PI / 180, s = Math.sin(th), co = Math.cos(th);
     var rx = p[0] - c[0], ry = p[1] - c[1];
-    var x = c[0] + q[3 * i] + co * rx - s * ry, y = c[1] + q[3 * i + 1] + s * rx + co * ry;
-    return [p[0] + state.mag * (x - p[0]), p[1] + state.mag * (y - p[1])];
+    return [c[0] + q[3 * i] + co * rx - s * ry, c[1] + q[3 * i + 1] + s * rx + co * ry];
   }
+  // each seated end's displacement off its seat: max over its two corners of (p - p0).n_in
+  function seatState(q) {
+    return (D.seats || []).map(function (e) {
+      var d = -Infinity;
+      e.corners.forEach(function (p) { var x = trueAt(e.segment, p, q); d = Math.max(d, (x[0] - p[0]) * e.inward[0] + (x[1] - p[1]) * e.inward[1]); });
+      return { end: e.end, support: e.support, displacement: d, remaining: e.length - d, ratio: d / e.length };
+    });
+  }
+  var rfPeak = 0;
+  (D.restrainers || []).forEach(function (r) { if (r.peak_force) rfPeak = Math.max(rfPeak, r.peak_force); });
   function view() {
     // the whole plan fits both ways (a curved plan can be as wide as it is long); a zoom fits its width
     var pad = 0.06 * ext + 1e-9, v = state.zoom || { cx: (x0 + x1) / 2, cy: (y0 + y1) / 2, w: x1 - x0 + 2 * pad, h: y1 - y0 + 2 * pad };
@@ -45,6 +59,9 @@
     // abutment faces
     g.strokeStyle = '#000'; g.lineWidth = 3;
     D.abutment_faces.forEach(function (fc) { if (!fc) return; var a = T(fc[0]), b = T(fc[1]); g.beginPath(); g.moveTo(a[0], a[1]); g.lineTo(b[0], b[1]); g.stroke(); });
+    // bearings: their ground points (fixed)
+    g.fillStyle = '#777';
+    (D.bearings || []).forEach(function (p) { var s = T(p); g.fillRect(s[0] - 2, s[1] - 2, 4, 4); });
     g.lineWidth = 1.5;
     var drawn = [];
     D.outlines.forEach(function (o, i) {
@@ -54,6 +71,32 @@
       var c = place(i, D.centroids[i], q);
       drawn.push({ x: q[3 * i], y: q[3 * i + 1], theta_deg: q[3 * i + 2], centroid: c });
     });
+    // seats: each end's seat edge, where its face would stand when it unseats (at the magnified
+    // scale: the face's rest position moved by magnification × seat length inward), coloured by
+    // the current ratio; the remaining seat written when zoomed (or unseated)
+    var seats = seatState(q);
+    (D.seats || []).forEach(function (e, j) {
+      var st = seats[j], k = state.mag * e.length;
+      var a = T([e.corners[0][0] + k * e.inward[0], e.corners[0][1] + k * e.inward[1]]);
+      var b = T([e.corners[1][0] + k * e.inward[0], e.corners[1][1] + k * e.inward[1]]);
+      g.strokeStyle = st.ratio >= 1 ? '#d00' : st.ratio >= 0.5 ? '#e80' : '#2a2';
+      g.lineWidth = 2; g.setLineDash([6, 3]); g.beginPath(); g.moveTo(a[0], a[1]); g.lineTo(b[0], b[1]); g.stroke(); g.setLineDash([]);
+      if (state.zoom || st.ratio >= 1) {
+        g.fillStyle = g.strokeStyle; g.font = '11px sans-serif';
+        g.fillText(e.end + ': ' + (st.remaining >= 0 ? st.remaining.toFixed(3) + ' m of seat left' : 'UNSEATED'), (a[0] + b[0]) / 2 + 4, (a[1] + b[1]) / 2);
+      }
+    });
+    // restrainers: a line between the anchors, grey while slack, orange to red with tension
+    var rs = [];
+    (D.restrainers || []).forEach(function (r, j) {
+      var fr = f.rf ? f.rf[j] : 0, pa = T(place(r.a, r.pa, q)), pb = T(place(r.b, r.pb, q));
+      var x = rfPeak > 0 ? Math.min(1, Math.max(0, fr / rfPeak)) : 0;
+      g.strokeStyle = fr > 0 ? 'rgb(' + Math.round(240 - 40 * x) + ',' + Math.round(160 * (1 - x)) + ',0)' : '#999';
+      g.lineWidth = 1 + 3 * x; g.beginPath(); g.moveTo(pa[0], pa[1]); g.lineTo(pb[0], pb[1]); g.stroke();
+      g.fillStyle = g.strokeStyle; g.beginPath(); g.arc((pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2, 3 + 3 * x, 0, 2 * Math.PI); g.fill();
+      rs.push({ joint: r.joint, force: fr, a: place(r.a, r.pa, q), b: place(r.b, r.pb, q) });
+    });
+    g.lineWidth = 1;
     // impacts within half a frame spacing (at least one frame) of this time
     var dt = F.length > 1 ? (F[F.length - 1].t - F[0].t) / (F.length - 1) : 0;
     var win = Math.max(dt * D.stride, dt) * 1.5, marks = [];
@@ -69,7 +112,7 @@
       g.fillStyle = '#900'; g.font = '12px sans-serif';
       g.fillText(im.peak_force === null ? 'P=' + im.impulse_n.toPrecision(3) + ' N s' : 'F=' + im.peak_force.toPrecision(3) + ' N', s[0] + 10, s[1] - 10);
     });
-    state.drawn = drawn; state.markers = marks;
+    state.drawn = drawn; state.markers = marks; state.seats = seats; state.restrainers = rs;
     g.fillStyle = '#000'; g.font = '13px sans-serif';
     g.fillText('t = ' + f.t.toFixed(3) + ' s   displacements × ' + state.mag + (state.zoom ? '   (zoomed: double-click to reset)' : '   (click to zoom)') + (rot ? '   plan turned 90° (x up)' : ''), 8, 16);
     $('an-time').textContent = f.t.toFixed(3) + ' s';

@@ -4,6 +4,10 @@
 //! state. At each, the drawn displacements `x_i, y_i, θ_i` equal `history.csv`'s row at that
 //! time and each drawn centroid is `G⁰ + f d` for the shown magnification `f`; at the first
 //! impact a marker is drawn at that impact's joint (nearest joint of the plan) with its time.
+//! The bridge has restrainers: at each of the three frames every drawn restrainer tension equals
+//! `restrainers.csv`'s row, and every seated end's drawn seat displacement equals the one
+//! computed here from `history.csv`'s row and the end's corners (and stays within the run's
+//! peak for that end).
 //! No console message may appear. Skipped (reason printed) without Chromium, as
 //! [`crate::reports_browser`].
 
@@ -35,8 +39,20 @@ fn plan_animation_draws_history_positions_and_impacts() {
     };
     let work = scratch_dir("browser", "anim");
     let out = work.join("viaduct");
-    let example =
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/viaduct-rigid-1d.toml");
+    let source = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/viaduct-rigid-1d.toml");
+    // the example with restrainers at both joints
+    let text = std::fs::read_to_string(&source).unwrap();
+    assert!(text.contains("\nseat_length = 0.4\n"));
+    let example = work.join("viaduct-restrained.toml");
+    std::fs::write(
+        &example,
+        text.replacen(
+            "\nseat_length = 0.4\n",
+            "\nseat_length = 0.4\nrestrainer_k = 5.0e7\nrestrainer_slack = 0.01\n",
+            1,
+        ),
+    )
+    .unwrap();
     let o = pounding()
         .args([
             "simulate",
@@ -77,7 +93,8 @@ fn plan_animation_draws_history_positions_and_impacts() {
              var s = this.contentDocument.getElementById('an-t'); s.value = k;\
              s.dispatchEvent(new Event('input'));\
              res.push({{frame: A.state.frame, t: A.data.frames[A.state.frame].t, mag: A.state.mag,\
-             drawn: A.state.drawn, markers: A.state.markers}}); }}, this);\
+             drawn: A.state.drawn, markers: A.state.markers, seats: A.state.seats,\
+             restrainers: A.state.restrainers}}); }}, this);\
              r.textContent = 'PROBE ' + JSON.stringify(res) + ' END';\
              }} catch (e) {{ r.textContent = 'PROBE error ' + e + ' END'; }} }};</script></body></html>",
             file_url(&out.join("report.html"))
@@ -143,6 +160,66 @@ fn plan_animation_draws_history_positions_and_impacts() {
             }
         }
     }
+    // Restrainer tensions and seat displacements at the three frames.
+    let (rhead, rrows) = csv(&out.join("restrainers.csv"));
+    let force_cols: Vec<usize> = (0..rhead.len())
+        .filter(|&c| rhead[c].ends_with("_force_N"))
+        .collect();
+    assert_eq!(force_cols.len(), 2, "{rhead:?}");
+    let mut engaged = false;
+    for st in states {
+        let t = st["t"].as_f64().unwrap();
+        let row = rows.iter().find(|r| close(r[0], t)).unwrap();
+        let rrow = rrows.iter().find(|r| close(r[0], t)).unwrap();
+        let drawn = st["restrainers"].as_array().unwrap();
+        assert_eq!(drawn.len(), force_cols.len());
+        for (d, &c) in drawn.iter().zip(&force_cols) {
+            let f = d["force"].as_f64().unwrap();
+            assert!(
+                close(f, rrow[c]),
+                "t {t}: restrainer force {f} vs {}",
+                rrow[c]
+            );
+            engaged |= f > 0.0;
+        }
+        let seats = st["seats"].as_array().unwrap();
+        let spec = traj["seats"].as_array().unwrap();
+        assert_eq!(seats.len(), 2 * n);
+        for (e, d) in spec.iter().zip(seats) {
+            let i = e["segment"].as_u64().unwrap() as usize;
+            let g = &traj["centroids"][i];
+            let (gx, gy) = (g[0].as_f64().unwrap(), g[1].as_f64().unwrap());
+            let (x, y, th) = (row[3 + 3 * i], row[4 + 3 * i], row[5 + 3 * i].to_radians());
+            let nin = [0, 1].map(|a| e["inward"][a].as_f64().unwrap());
+            let want = e["corners"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|p| {
+                    let (px, py) = (p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
+                    let (rx, ry) = (px - gx, py - gy);
+                    let dx = x + th.cos() * rx - th.sin() * ry - rx;
+                    let dy = y + th.sin() * rx + th.cos() * ry - ry;
+                    dx * nin[0] + dy * nin[1]
+                })
+                .fold(f64::NEG_INFINITY, f64::max);
+            let got = d["displacement"].as_f64().unwrap();
+            assert!(
+                (got - want).abs() <= 1e-9,
+                "t {t} {}: seat displacement {got} vs {want}",
+                e["end"]
+            );
+            let length = e["length"].as_f64().unwrap();
+            let peak = e["peak_ratio"].as_f64().unwrap() * length;
+            assert!(
+                got <= peak + 1e-12,
+                "{}: {got} above the run's peak {peak}",
+                e["end"]
+            );
+            assert!(close(d["remaining"].as_f64().unwrap(), length - got));
+        }
+    }
+    assert!(engaged, "no restrainer in tension at the probed frames");
     // The first impact: a marker with its time at its joint.
     let st = &states[1];
     let marks = st["markers"].as_array().unwrap();

@@ -332,7 +332,7 @@ fn joint_summaries(
 }
 
 /// `segment<i>-start` / `segment<i>-end` (1-based) of a seated end.
-fn seat_name(seat: &SeatEnd) -> String {
+pub(crate) fn seat_name(seat: &SeatEnd) -> String {
     let face = if seat.at_end { "end" } else { "start" };
     format!("segment{}-{face}", seat.body + 1)
 }

@@ -10,6 +10,13 @@
 //! `p(t) = G⁰ᵢ + d + Rot(θ)(p⁰ − G⁰ᵢ)`, `d = (x_i, y_i)`,
 //!
 //! and a drawing magnified `f` times shows `p⁰ + f (p(t) − p⁰)`.
+//!
+//! Beside the plan it holds the seated ends (`seats`: name, segment, support, seat length, the
+//! face's corners and inward normal at rest, the run's peak ratio), so that a reader can show
+//! each end's remaining seat `L − max_c (p_c(t) − p_c⁰)·n_in` at any frame (the seat displacement
+//! the run monitors), the bearings' ground points (`bearings`), and the restrainers (`restrainers`:
+//! joint, the two anchors at rest, the peak force) with their tension in every frame (`rf`, N;
+//! present when the bridge has restrainers).
 
 use super::{DEG, joint_openings};
 use crate::ground_motion::GroundMotion;
@@ -17,6 +24,7 @@ use crate::math::{Real, Vector};
 use crate::output::json_float;
 use crate::sim::SimContact;
 use crate::sim::bridge::{BridgeModel, BridgeSolution};
+use crate::sim::support::Attachment;
 use std::fmt::Write;
 
 /// Most frames a `trajectories.json` holds (a 20-segment run then stays near 2.5 MB).
@@ -77,6 +85,9 @@ pub fn trajectories_json(
     let _ = writeln!(s, "\"abutment_faces\":[{}],", faces.join(","));
     let gaps: Vec<String> = model.joints.iter().map(|j| num(j.gap)).collect();
     let _ = writeln!(s, "\"joint_gaps\":[{}],", gaps.join(","));
+    let bridge = model.bridge();
+    write_links(&mut s, &bridge, sol);
+    let forces = restrainer_forces(sol);
     s.push_str("\"frames\":[\n");
     let mut first = true;
     let rot = sol.dofs.rotations();
@@ -91,13 +102,19 @@ pub fn trajectories_json(
             .collect();
         let _ = write!(
             s,
-            "{}{{\"t\":{},\"ag\":[{},{}],\"q\":[{}]}}",
+            "{}{{\"t\":{},\"ag\":[{},{}],\"q\":[{}]",
             if first { "" } else { ",\n" },
             num(t),
             num(a.x),
             num(a.y),
             qs.join(",")
         );
+        if let Some((table, cols)) = &forces {
+            let row = table.row(r);
+            let rf: Vec<String> = cols.iter().map(|&c| num(row[c])).collect();
+            let _ = write!(s, ",\"rf\":[{}]", rf.join(","));
+        }
+        s.push('}');
         first = false;
     }
     s.push_str("\n],\n\"impacts\":[\n");
@@ -123,6 +140,74 @@ pub fn trajectories_json(
     s.push_str(&imp.join(",\n"));
     let _ = writeln!(s, "\n],\n\"events\":{}}}", events(model, sol));
     s
+}
+
+/// The seats, bearings and restrainers of the bridge (module doc), each key on its own line.
+fn write_links(s: &mut String, bridge: &crate::sim::driver::Bridge, sol: &BridgeSolution) {
+    let seats: Vec<String> = bridge
+        .seats
+        .iter()
+        .map(|e| {
+            let name = crate::sim::solution::seat_name(e);
+            let summary = sol.summary.seats.iter().find(|x| x.end == name);
+            format!(
+                "{{\"end\":\"{name}\",\"segment\":{},\"support\":\"{}\",\"length\":{},\
+                 \"corners\":[{},{}],\"inward\":{},\"peak_ratio\":{}}}",
+                e.body,
+                summary.map_or("", |x| x.support.as_str()),
+                num(e.length),
+                pt(&e.corners[0]),
+                pt(&e.corners[1]),
+                pt(&e.inward),
+                summary.map_or("null".into(), |x| num(x.ratio))
+            )
+        })
+        .collect();
+    let _ = writeln!(s, "\"seats\":[{}],", seats.join(","));
+    let bearings: Vec<String> = bridge
+        .bearings
+        .iter()
+        .flatten()
+        .filter_map(|b| match b.top {
+            Attachment::Body(_, p) => Some(pt(&p)),
+            Attachment::Support(..) => None,
+        })
+        .collect();
+    let _ = writeln!(s, "\"bearings\":[{}],", bearings.join(","));
+    let peaks = &sol.summary.joints;
+    let cables: Vec<String> = bridge
+        .elements
+        .cables
+        .iter()
+        .filter_map(|c| match (c.a, c.b) {
+            (Attachment::Body(a, pa), Attachment::Body(b, pb)) => Some(format!(
+                "{{\"joint\":{},\"a\":{a},\"pa\":{},\"b\":{b},\"pb\":{},\"peak_force\":{}}}",
+                c.joint,
+                pt(&pa),
+                pt(&pb),
+                peaks
+                    .get(c.joint)
+                    .and_then(|j| j.restrainer_peak_force)
+                    .map_or("null".into(), num)
+            )),
+            _ => None,
+        })
+        .collect();
+    let _ = writeln!(s, "\"restrainers\":[{}],", cables.join(","));
+}
+
+/// The recorded `restrainers` table and the indices of its force columns (`None` without a
+/// restrainer).
+fn restrainer_forces(sol: &BridgeSolution) -> Option<(&crate::sim::table::Table, Vec<usize>)> {
+    sol.table_sources.iter().find_map(|src| match src {
+        crate::sim::table::TableSource::Recorded(t) if t.name == "restrainers" => {
+            let cols: Vec<usize> = (0..t.columns.len())
+                .filter(|&c| t.columns[c].name.ends_with("_force"))
+                .collect();
+            (!cols.is_empty()).then_some((t, cols))
+        }
+        _ => None,
+    })
 }
 
 /// The governing event times: first impact, peak closing (smallest joint opening), the peak of
