@@ -208,13 +208,21 @@ impl Candidate {
 
     /// `(w_N, w_T)` of this candidate at `joint` (spec §6).
     pub fn force_directions(&self, pose: &Pose, joint: &JointGeom) -> (Direction, Direction) {
+        (
+            self.direction(pose, joint, self.normal),
+            self.direction(pose, joint, self.tangent),
+        )
+    }
+
+    /// The generalised direction of a force along the unit vector `v` at this candidate's
+    /// point: `+v` on segment `a`, `−v` on segment `b`, with their moments about the centroids.
+    pub fn direction(&self, pose: &Pose, joint: &JointGeom, v: Vector) -> Direction {
         let r1 = self.point - pose.g[joint.a];
         let r2 = self.point - pose.g[joint.b];
-        let dir = |v: Vector| Direction {
+        Direction {
             first: (joint.a, [v.x, v.y, cross(&r1, &v)]),
             second: Some((joint.b, [-v.x, -v.y, -cross(&r2, &v)])),
-        };
-        (dir(self.normal), dir(self.tangent))
+        }
     }
 }
 

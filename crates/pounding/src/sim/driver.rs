@@ -602,8 +602,14 @@ pub(crate) struct Peaks {
     pub seat: Vec<Real>,
     /// Per seated end: the time of [`Self::seat`] (the first time it was reached).
     pub seat_time: Vec<Real>,
-    /// Per seated end: the seat displacement at the last observed step (the residual).
+    /// Per seated end: the seat displacement at the last observed step (the residual; set by
+    /// [`Self::finish`]).
     pub seat_last: Vec<Real>,
+    /// Per seated end: `(max_c |c − G⁰|, max_c (|c| + |G⁰|))` over its corners: the reach of
+    /// the seat bound and the scale of its rounding.
+    seat_reach: Vec<(Real, Real)>,
+    /// The last observed `q`.
+    last_q: Vec<Real>,
     /// First unseating: time and seated-end index.
     pub unseat: Option<(Real, usize)>,
     /// Largest penetration of any joint (or contact deformation of the law).
@@ -621,8 +627,8 @@ pub(crate) struct Peaks {
     /// monitored).
     pub bearing: Vec<Real>,
     /// Per segment: the arms `r = p − G⁰` of its bearings to a support (the fast path of the
-    /// bearing monitor), and its other bearings.
-    arms: Vec<(Vec<Vector>, Vec<BearingAt>)>,
+    /// bearing monitor) with the largest `|r|`, and its other bearings.
+    arms: Vec<(Vec<Vector>, Real, Vec<BearingAt>)>,
 }
 
 /// What [`Peaks::observe`] measured for the history (reused from step to step).
@@ -644,6 +650,17 @@ impl Peaks {
             seat: vec![Real::NEG_INFINITY; br.seats.len()],
             seat_time: vec![0.0; br.seats.len()],
             seat_last: vec![Real::NAN; br.seats.len()],
+            seat_reach: br
+                .seats
+                .iter()
+                .map(|e| {
+                    let g0 = br.bodies[e.body].centroid;
+                    let reach = e.corners.iter().map(|c| (c - g0).norm());
+                    let scale = e.corners.iter().map(|c| c.norm() + g0.norm());
+                    (reach.fold(0.0, Real::max), scale.fold(0.0, Real::max))
+                })
+                .collect(),
+            last_q: Vec::new(),
             unseat: None,
             pen: 0.0,
             abut: [None, None],
@@ -659,34 +676,66 @@ impl Peaks {
                     let ground = |b: &&BearingAt| {
                         matches!((b.top, b.bottom), (Attachment::Body(i, _), Attachment::Support(..)) if i == j)
                     };
-                    let arms = bs.iter().filter(ground).map(|b| b.arm(&br.bodies)).collect();
+                    let arms: Vec<Vector> =
+                        bs.iter().filter(ground).map(|b| b.arm(&br.bodies)).collect();
+                    let reach = arms.iter().map(|r| r.norm()).fold(0.0, Real::max);
                     let others = bs.iter().filter(|b| !ground(b)).copied().collect();
-                    (arms, others)
+                    (arms, reach, others)
                 })
                 .collect(),
         }
     }
 
     /// The per-segment monitors of the bridge model (displacement magnitude, bearing
-    /// deformation `u_b = (x − θ r_y, y + θ r_x)`, `r = b − G⁰`).
+    /// deformation `u_b = (x − θ r_y, y + θ r_x)`, `r = b − G⁰`). The bearings to a support are
+    /// skipped in a step where `|u_b| ≤ |(x, y)| + |θ| max_b |r_b|` (with a relative margin of
+    /// 1e-12 for rounding) cannot exceed the peak so far: the peak is the same, in far fewer
+    /// operations once it has grown.
     fn observe_segments(&mut self, q: &State, br: &Bridge) {
         let q = q.as_slice();
         let segments = self.disp.iter_mut().zip(self.bearing.iter_mut());
         for (j, ((d, peak), pts)) in segments.zip(&self.arms).enumerate() {
             let [x, y, th] = br.dofs.plan_of(j, q);
-            *d = d.max(x * x + y * y);
+            let d2 = x * x + y * y;
+            *d = d.max(d2);
             let mut m = *peak;
-            let (arms, others) = pts;
+            let (arms, reach, others) = pts;
+            let bound = d2.sqrt() + th.abs() * reach;
             // the bearings from segment j to a support: their deformation from the arm directly
-            for r in arms {
-                let (ux, uy) = (x - th * r.y, y + th * r.x);
-                m = m.max(ux * ux + uy * uy);
+            let below = bound * bound * (1.0 + 1e-12) <= m; // false for a NaN state
+            if !below {
+                for r in arms {
+                    let (ux, uy) = (x - th * r.y, y + th * r.x);
+                    m = m.max(ux * ux + uy * uy);
+                }
             }
             for b in others {
                 let u = b.deformation(&br.dofs, q, &br.bodies);
                 m = m.max(u.x * u.x + u.y * u.y);
             }
             *peak = m;
+        }
+    }
+
+    /// The displacement of a seated end off its seat: the larger over its two corners of
+    /// `(p − p⁰)·n_in`.
+    fn seat_displacement(s_end: &SeatEnd, pose: &Pose, bodies: &[SegmentBody]) -> Real {
+        s_end
+            .corners
+            .iter()
+            .map(|p| (pose.place(bodies, s_end.body, p) - p).dot(&s_end.inward))
+            .fold(Real::NEG_INFINITY, Real::max)
+    }
+
+    /// The seat displacements at the last observed step (the residuals).
+    pub fn finish(&mut self, br: &Bridge) {
+        if self.last_q.is_empty() {
+            return;
+        }
+        let q = State::from_column_slice(&self.last_q);
+        let frame = br.frame(&q);
+        for (e, s_end) in br.seats.iter().enumerate() {
+            self.seat_last[e] = Self::seat_displacement(s_end, &frame.pose, &br.bodies);
         }
     }
 
@@ -735,17 +784,24 @@ impl Peaks {
         for (j, r) in self.rot.iter_mut().enumerate() {
             *r = r.max(q[br.dofs.plan(j, PlanDof::Theta)].abs());
         }
+        self.last_q.clear();
+        self.last_q.extend_from_slice(q.as_slice());
         for (e, s_end) in br.seats.iter().enumerate() {
-            let s = s_end
-                .corners
-                .iter()
-                .map(|p| (pose.place(bodies, s_end.body, p) - p).dot(&s_end.inward))
-                .fold(Real::NEG_INFINITY, Real::max);
+            // skipped where it cannot exceed the peak so far (nor, then, the seat): the corners'
+            // displacement along n is at most d·n + |θ| |c − G⁰|, plus rounding
+            let [x, y, th] = br.dofs.plan_of(s_end.body, q.as_slice());
+            let (reach, scale) = self.seat_reach[e];
+            let dn = x * s_end.inward.x + y * s_end.inward.y;
+            let spin = th.abs() * reach;
+            let bound = dn + spin + 1e-12 * (dn.abs() + spin + scale);
+            if bound < self.seat[e] {
+                continue;
+            }
+            let s = Self::seat_displacement(s_end, pose, bodies);
             if s > self.seat[e] {
                 self.seat_time[e] = t;
             }
             self.seat[e] = self.seat[e].max(s);
-            self.seat_last[e] = s;
             if self.unseat.is_none() && s > s_end.length {
                 self.unseat = Some((t, e));
             }
@@ -772,6 +828,8 @@ struct Ledger {
     d_visc: Real,
     max_in: Real,
     max_bal: Real,
+    /// The step whose load `F_k` the work buffer `f1` holds (the previous step's `F_{k+1}`).
+    loaded: Option<usize>,
 }
 
 impl Ledger {
@@ -782,6 +840,7 @@ impl Ledger {
             d_visc: 0.0,
             max_in: e0.abs(),
             max_bal: 0.0,
+            loaded: None,
         }
     }
 
@@ -824,8 +883,13 @@ impl Ledger {
     /// `w.u_mid`.
     fn advance(&mut self, sc: &Scheme, k: usize, u: &State, u_new: &State, w: &mut Work) {
         let th = sc.th;
-        sc.load(&sc.ag[k], &mut w.f0);
+        if self.loaded == Some(k) {
+            std::mem::swap(&mut w.f0, &mut w.f1);
+        } else {
+            sc.load(&sc.ag[k], &mut w.f0);
+        }
         sc.load(&sc.ag[k + 1], &mut w.f1);
+        self.loaded = Some(k + 1);
         for i in 0..u.len() {
             w.u_th[i] = u[i] * (1.0 - th) + u_new[i] * th;
             w.u_mid[i] = (u[i] + u_new[i]) * 0.5;
@@ -1060,6 +1124,7 @@ pub(crate) fn run<S: Stepper>(
             break;
         }
     }
+    peaks.finish(bridge);
     let mut stats = stepper.finish(&mut log);
     stats.newton_failures += yielding.failures;
     stats.bearing_corrections = yielding.corrections;

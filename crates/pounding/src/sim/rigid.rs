@@ -155,15 +155,16 @@ impl RigidStepper {
                 continue;
             }
             for s in jf.sel.iter().flatten() {
-                let c = jf.cands[*s];
-                let (wn, wt) = c.force_directions(pose, jg);
+                let c = &jf.cands[*s];
+                // the tangent direction only for an active contact
+                let wn = c.direction(pose, jg, c.normal);
                 if c.gap + h * dot_dir(&wn, u, &br.dofs) <= 0.0 {
                     active.push(ActiveContact {
                         contact: SimContact::Joint(c.case),
                         site: k,
                         law: self.joint_laws[k],
                         wn,
-                        wt,
+                        wt: c.direction(pose, jg, c.tangent),
                     });
                 }
             }
@@ -177,11 +178,11 @@ impl RigidStepper {
                     first: (j, [n.x, n.y, cross(&r, &n)]),
                     second: None,
                 };
-                let wt = Direction {
-                    first: (j, [tn.x, tn.y, cross(&r, &tn)]),
-                    second: None,
-                };
                 if (pc - ab.point).dot(&n) + h * dot_dir(&wn, u, &br.dofs) <= 0.0 {
+                    let wt = Direction {
+                        first: (j, [tn.x, tn.y, cross(&r, &tn)]),
+                        second: None,
+                    };
                     let contact = SimContact::Abutment {
                         deck: ab.side + 1,
                         corner: k,
