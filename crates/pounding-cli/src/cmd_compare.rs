@@ -20,6 +20,7 @@ use crate::cmd_simulate;
 use anyhow::{Context, Result, anyhow, bail};
 use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
+use pounding::sim::Problem;
 use pounding::sim::bridge::BridgeSolution;
 use pounding::sim::output::{COMPARE_OUTPUTS, compare_csv, compare_table};
 use pounding::sim::scenario::{Scenario, Setup};

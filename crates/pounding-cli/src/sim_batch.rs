@@ -16,7 +16,8 @@ use pounding::ground_motion::{ComponentInfo, G0, ReadOptions, Record};
 use pounding::math::Real;
 use pounding::output::write_atomic;
 use pounding::shard::Shard;
-use pounding::sim::batch::{BatchOutcome, BatchProblem, BatchRecord, BatchRow, run_batch};
+use pounding::sim::Problem;
+use pounding::sim::batch::{BatchOutcome, BatchRecord, BatchRow, run_batch};
 use pounding::sim::output::batch_csv;
 use pounding::sim::scenario::Setup;
 use pounding::sim::{SimSettings, SimStatus};
@@ -174,7 +175,7 @@ pub fn run(
 
 /// Runs the plan's batch of `base` on its pool with its progress bar: the rows and the seconds
 /// the runs took.
-fn execute<P: BatchProblem>(
+fn execute<P: Problem>(
     plan: &Plan,
     base: &P,
     settings: &SimSettings,

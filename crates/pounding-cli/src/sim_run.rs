@@ -7,6 +7,7 @@
 use super::{Args, lock_and_clear};
 use anyhow::{Context, Result, anyhow};
 use pounding::output::{bounded, float_token, write_atomic};
+use pounding::sim::Problem;
 use pounding::sim::SimStatus;
 use pounding::sim::bridge::BridgeSolution;
 use pounding::sim::output::describe_contact;

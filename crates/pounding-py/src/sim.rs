@@ -7,9 +7,8 @@ use numpy::PyArray2;
 use pounding::ground_motion::{AccelUnits, ReadOptions, Record};
 use pounding::output::float_token;
 use pounding::shard::Shard;
-use pounding::sim::batch::{
-    BatchProblem, BatchRecord, BatchRow, run_batch, run_bridge_problem, run_problem,
-};
+use pounding::sim::Problem;
+use pounding::sim::batch::{BatchRecord, BatchRow, run_batch, run_problem};
 use pounding::sim::bridge::BridgeSolution;
 use pounding::sim::output as so;
 use pounding::sim::scenario::{DEFAULT_SCENARIO_TOML, ParamKey, Scenario, Section, Setup};
@@ -137,11 +136,8 @@ impl SimRun {
             .into_iter()
             .map(|t| {
                 let heads: Vec<String> = t.columns.iter().map(|c| c.header()).collect();
-                let a = numpy::ndarray::Array2::from_shape_vec(
-                    (t.rows(), heads.len()),
-                    t.values,
-                )
-                .map_err(|e| crate::SolverError::new_err(e.to_string()))?;
+                let a = numpy::ndarray::Array2::from_shape_vec((t.rows(), heads.len()), t.values)
+                    .map_err(|e| crate::SolverError::new_err(e.to_string()))?;
                 Ok((t.name.to_string(), heads, PyArray2::from_owned_array(py, a)))
             })
             .collect()
@@ -215,22 +211,14 @@ fn simulate_run(
         None => None,
     };
     let s = scale.unwrap_or(1.0);
-    let setup = if sc.is_bridge() {
-        let mut setup = sc.build_bridge().map_err(value_error)?;
-        if let Some(r) = &rec {
-            setup.problem = run_bridge_problem(&setup.problem, r, s);
-            setup.records = [r.name.clone(), "none".into()];
-        }
-        Setup::Bridge(Box::new(setup))
-    } else {
+    if !sc.is_bridge() {
         sc.override_reading(csv_units).map_err(value_error)?;
-        let mut setup = sc.build().map_err(value_error)?;
-        if let Some(r) = &rec {
-            setup.problem = run_problem(&setup.problem, r, s);
-            setup.records = [r.name.clone(), "none".into()];
-        }
-        Setup::TwoDecks(Box::new(setup))
-    };
+    }
+    let mut setup = sc.build_setup().map_err(value_error)?;
+    if let Some(r) = &rec {
+        setup = run_problem(&setup, r, s);
+        *setup.records_mut() = [r.name.clone(), "none".into()];
+    }
     let (setup, sol) = crate::interruptible(py, move || {
         let sol = setup.run();
         (setup, sol)
@@ -289,16 +277,11 @@ fn batch_run(
         });
     }
     let pool = crate::pool(threads)?;
-    if sc.is_bridge() {
-        let setup = sc.build_bridge().map_err(value_error)?;
-        let n = setup.problem.model.segments.len();
-        let rows = batch_rows(py, pool, setup.problem, setup.settings, list, scales)?;
-        Ok(so::batch_csv(so::Layout::Bridge, n, &rows))
-    } else {
-        let setup = sc.build().map_err(value_error)?;
-        let rows = batch_rows(py, pool, setup.problem, setup.settings, list, scales)?;
-        Ok(so::batch_csv(so::Layout::TwoDecks, 2, &rows))
-    }
+    let setup = sc.build_setup().map_err(value_error)?;
+    let (layout, n) = (setup.layout(), setup.model().segments.len());
+    let settings = setup.settings().clone();
+    let rows = batch_rows(py, pool, setup, settings, list, scales)?;
+    Ok(so::batch_csv(layout, n, &rows))
 }
 
 /// Runs every record of `list` at every scale on `problem` (two decks or a bridge) in `pool`, off
@@ -312,7 +295,7 @@ fn batch_rows<P>(
     scales: Vec<f64>,
 ) -> PyResult<Vec<BatchRow>>
 where
-    P: BatchProblem + Send + 'static,
+    P: pounding::sim::Problem + Send + 'static,
 {
     crate::interruptible(py, move || {
         pool.install(|| run_batch(&problem, &settings, &list, &scales, Shard::ALL, &|_| {}))

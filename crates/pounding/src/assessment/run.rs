@@ -9,7 +9,8 @@ use crate::ground_motion::GroundMotion;
 use crate::ground_motion::set::RecordSet;
 use crate::math::Real;
 use crate::output::{csv_field, float_token};
-use crate::sim::bridge::{BridgeProblem, simulate_bridge};
+use crate::sim::bridge::BridgeProblem;
+use crate::sim::simulate;
 use crate::sim::{SimSettings, SimStatus};
 use rayon::prelude::*;
 
@@ -162,7 +163,7 @@ pub fn run_all(
                 q0: base.q0.clone(),
                 u0: base.u0.clone(),
             };
-            let (status, error, lim, warnings) = match simulate_bridge(&p, &settings) {
+            let (status, error, lim, warnings) = match simulate(&p, &settings) {
                 Err(err) => (
                     "error".to_string(),
                     err.to_string(),

@@ -13,15 +13,16 @@
 //! `i mod N = K − 1`, so the union of the rows of all `N` shards, sorted by `i`, is the unsharded
 //! result.
 //!
-//! Bridges of `N` segments ([`crate::sim::bridge`]) run the same way ([`run_batch`] over a
-//! [`BridgeProblem`], [`run_bridge_problem`]; or over a [`crate::sim::scenario::Setup`] of
-//! either form): the same runs, row order and shards.
+//! Any [`Problem`] runs this way: a bridge of `N` segments ([`crate::sim::bridge::BridgeProblem`]),
+//! the two-deck preset ([`crate::sim::SimProblem`]) or a [`crate::sim::scenario::Setup`] of
+//! either form: the same runs, row order and shards.
 //!
 //! A record that could not be read does not stop the batch: its rows carry the error
 //! ([`BatchRow::outcome`]) and every other run is still done.
 
-use super::bridge::{BridgeProblem, BridgeSolution, BridgeSummary, simulate_bridge};
-use super::{SimError, SimProblem, SimSettings, SimStatus, simulate};
+use super::bridge::{BridgeSolution, BridgeSummary};
+use super::problem::{Problem, simulate};
+use super::{SimError, SimSettings, SimStatus};
 use crate::ground_motion::{GroundMotion, Record};
 use crate::math::Real;
 use rayon::prelude::*;
@@ -100,13 +101,8 @@ fn run_ground(ground: &GroundMotion, record: &Record, scale: Real) -> GroundMoti
 
 /// The problem of one run: `base` with `record` as its only component along `Rot(α) ŷ`, scale
 /// factors multiplied by `scale` (the single run `pounding simulate --record R --scale S`).
-pub fn run_problem(base: &SimProblem, record: &Record, scale: Real) -> SimProblem {
-    SimProblem {
-        model: base.model.clone(),
-        ground: run_ground(&base.ground, record, scale),
-        q0: base.q0,
-        u0: base.u0,
-    }
+pub fn run_problem<P: Problem>(base: &P, record: &Record, scale: Real) -> P {
+    base.with_ground(run_ground(base.ground(), record, scale))
 }
 
 /// Checks the batch lists: at least one record and one scale, every scale finite.
@@ -137,59 +133,20 @@ pub fn validate_lists(records: &[BatchRecord], scales: &[Real]) -> Result<(), Si
     Ok(())
 }
 
-/// A base problem a batch can run under each `(record, scale)`: the two-deck [`SimProblem`]
-/// or a bridge's [`BridgeProblem`].
-pub trait BatchProblem: Sync {
-    /// Checks the model once, before any run.
-    fn check(&self) -> Result<(), SimError>;
-    /// Runs the problem under `record` scaled by `scale`: `(PGA [m/s²], outcome)`.
-    fn run_one(
-        &self,
-        record: &Record,
-        scale: Real,
-        settings: &SimSettings,
-    ) -> (Real, Result<BatchOutcome, SimError>);
-}
-
-impl BatchProblem for SimProblem {
-    fn check(&self) -> Result<(), SimError> {
-        self.model.linear_system().map(|_| ())
-    }
-    fn run_one(
-        &self,
-        r: &Record,
-        scale: Real,
-        st: &SimSettings,
-    ) -> (Real, Result<BatchOutcome, SimError>) {
-        let p = run_problem(self, r, scale);
-        let pga = r.pga() * p.ground.scale_y.abs();
-        let out = simulate(&p, st).map(|sol| {
-            let w =
-                crate::sim::output::run_warnings(crate::sim::output::Layout::TwoDecks, &sol).len();
-            counted(BatchOutcome::from(sol), &p.ground, w)
-        });
-        (pga, out)
-    }
-}
-
-impl BatchProblem for BridgeProblem {
-    fn check(&self) -> Result<(), SimError> {
-        self.model.validate()
-    }
-    fn run_one(
-        &self,
-        r: &Record,
-        scale: Real,
-        st: &SimSettings,
-    ) -> (Real, Result<BatchOutcome, SimError>) {
-        let p = run_bridge_problem(self, r, scale);
-        let out = simulate_bridge(&p, st).map(|sol| {
-            let w =
-                crate::sim::output::run_warnings(crate::sim::output::Layout::Bridge, &sol).len();
-            counted(BatchOutcome::from(sol), &p.ground, w)
-        });
-        (r.pga() * p.ground.scale_y.abs(), out)
-    }
+/// One run of a batch: `base` under `record` scaled by `scale` → `(PGA [m/s²], outcome)`.
+fn run_one<P: Problem>(
+    base: &P,
+    record: &Record,
+    scale: Real,
+    settings: &SimSettings,
+) -> (Real, Result<BatchOutcome, SimError>) {
+    let p = run_problem(base, record, scale);
+    let pga = record.pga() * p.ground().scale_y.abs();
+    let out = simulate(&p, settings).map(|sol| {
+        let w = crate::sim::output::run_warnings(p.layout(), &sol).len();
+        counted(BatchOutcome::from(sol), p.ground(), w)
+    });
+    (pga, out)
 }
 
 /// `o` with its [`BatchOutcome::warnings`]: the input warnings of a run on `ground`
@@ -202,13 +159,12 @@ fn counted(mut o: BatchOutcome, ground: &GroundMotion, impact_warnings: usize) -
 
 /// Runs every `(record, scale)` pair of `shard` in parallel on the current rayon pool and returns
 /// the rows in increasing global index (module docs). `progress(1)` is called after each run.
-/// The base is a two-deck [`SimProblem`] or a bridge's [`BridgeProblem`] (each row equal to [`simulate_bridge`] on
-/// [`run_bridge_problem`] bit for bit; ).
+/// Each row equals [`simulate`] of [`run_problem`] bit for bit.
 ///
 /// Errors (bad input for the whole batch: the model, the settings, the lists) are returned before
 /// any run starts; per-run problems are in [`BatchRow::outcome`]. The settings' history stride
 /// is ignored (no history is kept; the summary does not depend on it).
-pub fn run_batch<P: BatchProblem>(
+pub fn run_batch<P: Problem>(
     base: &P,
     settings: &SimSettings,
     records: &[BatchRecord],
@@ -217,9 +173,9 @@ pub fn run_batch<P: BatchProblem>(
     progress: &(dyn Fn(usize) + Sync),
 ) -> Result<Vec<BatchRow>, SimError> {
     let settings = batch_settings(records, scales, settings)?;
-    base.check()?;
+    base.check_model()?;
     Ok(run_pairs(records, scales, shard, progress, &|r, scale| {
-        base.run_one(r, scale, &settings)
+        run_one(base, r, scale, &settings)
     }))
 }
 
@@ -296,17 +252,5 @@ impl From<BridgeSolution> for BatchOutcome {
             time_step_advice: s.time_step_advice,
             warnings: 0,
         }
-    }
-}
-
-/// The bridge problem of one run: `base` with `record` as its only component along `Rot(α) ŷ`,
-/// scale factors multiplied by `scale` (the single run `pounding simulate bridge.toml --record R
-/// --scale S`, as [`run_problem`] for two decks).
-pub fn run_bridge_problem(base: &BridgeProblem, record: &Record, scale: Real) -> BridgeProblem {
-    BridgeProblem {
-        model: base.model.clone(),
-        ground: run_ground(&base.ground, record, scale),
-        q0: base.q0.clone(),
-        u0: base.u0.clone(),
     }
 }

@@ -46,7 +46,7 @@ use super::dofs::Dofs;
 use super::driver::{self, AbutmentFace, BodySystem, Bridge, SeatEnd, SeatSupport};
 use super::model::{EndFace, SegmentBody, deck_frequencies, rayleigh_coefficients};
 use super::support::{Attachment, Support};
-use super::{Bearing, DampingModel, JointContact, SimError, SimSettings};
+use super::{Bearing, DampingModel, JointContact, SimError};
 use crate::geometry::MassProperties;
 use crate::ground_motion::GroundMotion;
 use crate::math::{Real, Vector, cross};
@@ -1078,40 +1078,4 @@ impl BridgeProblem {
             u0: vec![0.0; n],
         }
     }
-}
-
-/// Runs a bridge (module doc; the scheme of [`super::simulate`]).
-///
-/// Bad input → [`SimError`]; numerical trouble → [`BridgeSolution::status`].
-pub fn simulate_bridge(
-    problem: &BridgeProblem,
-    settings: &SimSettings,
-) -> Result<BridgeSolution, SimError> {
-    let model = &problem.model;
-    settings.validate()?;
-    problem.ground.validate()?;
-    model.validate()?;
-    let n = model.dofs().len();
-    for (name, v) in [("q0", &problem.q0), ("u0", &problem.u0)] {
-        if v.len() != n {
-            return Err(SimError::InvalidArgument {
-                name: name.into(),
-                reason: format!("must have {n} entries (3 per segment), found {}", v.len()),
-            });
-        }
-        if let Some((i, x)) = v.iter().enumerate().find(|(_, x)| !x.is_finite()) {
-            return Err(SimError::invalid(
-                format!("{name}[{i}]"),
-                *x,
-                "must be finite",
-            ));
-        }
-    }
-    let bridge = model.bridge();
-    let initial = (problem.q0.as_slice(), problem.u0.as_slice());
-    let (result, scheme, kinds) =
-        super::integrate::integrate(model, &bridge, &problem.ground, initial, settings)?;
-    Ok(super::solution::solution(
-        result, &scheme, &bridge, model, &kinds,
-    ))
 }

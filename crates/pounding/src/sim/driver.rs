@@ -32,32 +32,12 @@ use super::observer::{Observer, Snapshot};
 use super::support::Attachment;
 use super::table::TableSource;
 use super::{
-    Energy, ImpactRecord, SimError, SimProblem, SimSettings, SimStatus, balance_error,
-    energies_finite, max_nan,
+    Energy, ImpactRecord, SimError, SimSettings, SimStatus, balance_error, energies_finite, max_nan,
 };
 use crate::contact_law::timestep::TimeStepAdvice;
 use crate::ground_motion::GroundMotion;
 use crate::math::{Real, Vector};
 use nalgebra::{DMatrix, Matrix3, Matrix3x2, Vector2, Vector3};
-
-/// Validates the settings, the ground motion, the two-deck model (its linear system) and the
-/// initial state, naming the two-deck keys in the errors.
-pub(crate) fn checked_pair(problem: &SimProblem, settings: &SimSettings) -> Result<(), SimError> {
-    settings.validate()?;
-    problem.ground.validate()?;
-    problem.model.linear_system()?;
-    for (i, v) in problem.q0.iter().chain(problem.u0.iter()).enumerate() {
-        if !v.is_finite() {
-            let name = if i < 6 {
-                format!("q0[{i}]")
-            } else {
-                format!("u0[{}]", i - 6)
-            };
-            return Err(SimError::invalid(name, *v, "must be finite"));
-        }
-    }
-    Ok(())
-}
 
 /// The linear structure of one segment in `(u_x, u_y, θ)`: its mass, bearing stiffness and
 /// damping blocks (`M`, `K`, `C` of the bridge are block diagonal: bearings and dashpots tie a

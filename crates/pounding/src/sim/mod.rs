@@ -71,6 +71,7 @@ pub mod model;
 mod observer;
 pub mod options;
 pub mod output;
+pub mod problem;
 mod rigid;
 pub mod scenario;
 mod solution;
@@ -91,6 +92,7 @@ use thiserror::Error;
 
 pub use model::Bearing;
 pub use options::{ComplianceContact, DampingModel, JointContact};
+pub use problem::{Problem, simulate};
 
 /// Bad simulation input (numerical trouble is reported in [`SimStatus`] instead).
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -748,7 +750,7 @@ pub struct Energy {
     pub elements: Real,
 }
 
-/// The four deck ends checked for unseating, in this order.
+/// The two-deck names of the four seated ends ([`output::pair_seat_name`]).
 pub const SEAT_ENDS: [&str; 4] = ["deck1-joint", "deck1-far", "deck2-joint", "deck2-far"];
 
 /// How the run ended.
@@ -801,29 +803,6 @@ pub(crate) fn balance_error(max_bal: Real, max_in: Real) -> Real {
 #[inline]
 pub(crate) fn energies_finite(e: &[Real]) -> bool {
     e.iter().all(|x| x.is_finite())
-}
-
-/// Runs the two-deck model (see the module documentation for the model and the scheme): it is
-/// the bridge of two segments [`bridge::BridgeModel::from_pair`], integrated by
-/// [`bridge::simulate_bridge`]'s driver and steppers, with the same result; deck `j` is segment
-/// `j`, the joint is joint 1. Only its seat order is its own: each deck's joint end before its far
-/// end ([`SEAT_ENDS`]; the first of two ends that unseat in the same step is reported).
-///
-/// Bad input → [`SimError`] (named with the two-deck keys); numerical trouble →
-/// [`bridge::BridgeSolution::status`].
-pub fn simulate(
-    problem: &SimProblem,
-    settings: &SimSettings,
-) -> Result<bridge::BridgeSolution, SimError> {
-    driver::checked_pair(problem, settings)?;
-    let model = bridge::BridgeModel::from_pair(&problem.model);
-    let mut view = model.bridge();
-    // the bridge orders each segment's seats start, end; deck 1's start is its far end
-    view.seats.swap(0, 1);
-    let initial = (problem.q0.as_slice(), problem.u0.as_slice());
-    let (result, scheme, kinds) =
-        integrate::integrate(&model, &view, &problem.ground, initial, settings)?;
-    Ok(solution::solution(result, &scheme, &view, &model, &kinds))
 }
 
 /// The time `t_k = k·dt` of step `k` as the decimal the user expects: for a step with a short

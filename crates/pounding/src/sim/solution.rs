@@ -135,7 +135,7 @@ pub struct BridgeSummary {
     pub restrainer_work: Real,
 }
 
-/// Result of [`super::bridge::simulate_bridge`] and of [`super::simulate`].
+/// Result of [`super::bridge::simulate`] and of [`super::simulate`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct BridgeSolution {
     /// Outcome.

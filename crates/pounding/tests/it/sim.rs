@@ -701,21 +701,22 @@ fn unseating_time_of_a_deck_pulling_away_from_the_joint() {
     let sol = simulate(&p, &s).unwrap();
     let sm = &sol.summary;
     assert!(sm.unseated);
-    // deck 1's joint end is segment 1's end (the two-deck model's seats: joint end first)
+    // deck 1's joint end is segment 1's end (the seats in bridge order: start, end per segment)
     assert_eq!(
         sm.unseated_end.as_deref(),
         Some("segment1-end"),
         "deck1-joint"
     );
-    assert_eq!(sm.seats[0].end, "segment1-end");
+    assert_eq!(sm.seats[1].end, "segment1-end");
+    assert_eq!(sm.seats[0].end, "segment1-start");
     let t = sm.unseating_time.unwrap();
     assert!(
         t >= 0.0123 / v - 1e-9 && t <= 0.0123 / v + 1e-4 + 1e-9,
         "{t}"
     );
-    assert!((sm.seats[0].peak_displacement - v * 0.05).abs() < 1e-12);
+    assert!((sm.seats[1].peak_displacement - v * 0.05).abs() < 1e-12);
     assert!(
-        (sm.seats[1].peak_displacement - 0.0).abs() < 1e-15,
+        (sm.seats[0].peak_displacement - 0.0).abs() < 1e-15,
         "far end moves onto its seat"
     );
     assert_eq!(sm.seats[2].peak_displacement, 0.0);

@@ -4,9 +4,7 @@
 
 use pounding::ground_motion::{GroundMotion, el_centro_1940};
 use pounding::shape::{DeckShape, StraightDeck};
-use pounding::sim::bridge::{
-    BridgeAbutment, BridgeModel, BridgeProblem, Joint, Segment, simulate_bridge,
-};
+use pounding::sim::bridge::{BridgeAbutment, BridgeModel, BridgeProblem, Joint, Segment};
 use pounding::sim::{
     DampingModel, JointContact, SimAbutment, SimContact, SimModel, SimProblem, SimSettings,
     simulate,
@@ -85,7 +83,7 @@ fn two_segment_bridge_reproduces_the_two_deck_model() {
         };
         let pair = simulate(&SimProblem::at_rest(m.clone(), el_centro_1940()), &settings).unwrap();
         let bp = BridgeProblem::at_rest(BridgeModel::from_pair(&m), el_centro_1940());
-        let br = simulate_bridge(&bp, &settings).unwrap();
+        let br = simulate(&bp, &settings).unwrap();
         assert_eq!(pair.status, br.status);
         assert!(pair.summary.impacts > 3, "the run must pound");
         assert_eq!(pair.summary.impacts, br.summary.impacts);
@@ -146,7 +144,7 @@ fn one_segment_between_two_abutments_bounces_as_the_closed_form() {
         duration: Some(1.0),
         ..SimSettings::default()
     };
-    let sol = simulate_bridge(&p, &settings).unwrap();
+    let sol = simulate(&p, &settings).unwrap();
     // closed-form impact times within 1 s
     let mut times = vec![ge / v];
     let mut speed = v * eps;
@@ -199,7 +197,7 @@ fn three_segment_cradle_passes_the_momentum_down_the_chain() {
         duration: Some(0.5),
         ..SimSettings::default()
     };
-    let sol = simulate_bridge(&p, &settings).unwrap();
+    let sol = simulate(&p, &settings).unwrap();
     let s = &sol.summary;
     assert_eq!(s.joints[0].impacts, 1);
     assert_eq!(s.joints[1].impacts, 1);
@@ -222,7 +220,7 @@ fn three_segment_cradle_passes_the_momentum_down_the_chain() {
 fn bad_bridges_are_errors_naming_the_key() {
     let err = |m: BridgeModel| {
         let p = BridgeProblem::at_rest(m, GroundMotion::none());
-        simulate_bridge(&p, &SimSettings::default())
+        simulate(&p, &SimSettings::default())
             .unwrap_err()
             .to_string()
     };
@@ -272,7 +270,7 @@ fn the_unseating_ratio_reads_each_end_against_its_own_seat() {
         m.joints[0].seat_length = 1e3;
         m.joints[1].seat_length = 1e3;
         let bp = BridgeProblem::at_rest(m, el_centro_1940());
-        simulate_bridge(&bp, &settings).unwrap().summary
+        simulate(&bp, &settings).unwrap().summary
     };
     let long = run(10.0);
     assert!(!long.unseated);

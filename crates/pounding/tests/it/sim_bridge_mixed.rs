@@ -2,8 +2,9 @@
 //! three-segment viaduct with rigid joints and compliance-law abutments runs, its energy balance
 //! closes, and as the abutments stiffen it tends to the all-rigid run.
 
-use pounding::sim::bridge::{BridgeSolution, simulate_bridge};
+use pounding::sim::bridge::BridgeSolution;
 use pounding::sim::scenario::{BridgeSetup, Scenario};
+use pounding::sim::simulate;
 use pounding::sim::{SimContact, SimStatus};
 
 /// `examples/viaduct-rigid-1d.toml` with `abut` appended (each abutment's `contact` table),
@@ -23,7 +24,7 @@ fn viaduct(abut: &str, duration: f64) -> BridgeSetup {
 }
 
 fn run(setup: &BridgeSetup) -> BridgeSolution {
-    simulate_bridge(&setup.problem, &setup.settings).unwrap()
+    simulate(&setup.problem, &setup.settings).unwrap()
 }
 
 /// The contact tables of both abutments with the law text `law`.

@@ -6,8 +6,9 @@ use pounding::ground_motion::el_centro_1940;
 use pounding::math::Vector;
 use pounding::shape::{Deck, DeckShape, SkewedDeck, StraightDeck};
 use pounding::sim::bridge::{
-    BridgeAbutment, BridgeModel, BridgeProblem, Joint, RestrainerSpec, Segment, simulate_bridge,
+    BridgeAbutment, BridgeModel, BridgeProblem, Joint, RestrainerSpec, Segment,
 };
+use pounding::sim::simulate;
 use pounding::sim::{Bearing, DampingModel, JointContact, SimError, SimSettings};
 
 const W: f64 = 10.0;
@@ -140,9 +141,8 @@ fn corner_bearing_points_reproduce_the_default_corner_bearings() {
         duration: Some(10.0),
         ..SimSettings::default()
     };
-    let run = |m: BridgeModel| {
-        simulate_bridge(&BridgeProblem::at_rest(m, el_centro_1940()), &settings).unwrap()
-    };
+    let run =
+        |m: BridgeModel| simulate(&BridgeProblem::at_rest(m, el_centro_1940()), &settings).unwrap();
     let (a, b) = (run(build(false)), run(build(true)));
     assert!(a.summary.impacts > 3, "the run must pound");
     assert_eq!(a.summary.impacts, b.summary.impacts);
@@ -185,7 +185,7 @@ fn bearings_on_the_axis_give_the_closed_form_frequencies() {
         duration: Some(0.5),
         ..SimSettings::default()
     };
-    let sol = simulate_bridge(&BridgeProblem::at_rest(m, el_centro_1940()), &settings).unwrap();
+    let sol = simulate(&BridgeProblem::at_rest(m, el_centro_1940()), &settings).unwrap();
     let w_t = (2.0 * k / mp.mass).sqrt();
     let w_r = (2.0 * k * (l / 2.0) * (l / 2.0) / mp.inertia).sqrt();
     let i_box = mp.mass * (l * l + W * W) / 12.0;
@@ -223,7 +223,7 @@ fn restrained(cables: &[RestrainerSpec]) -> pounding::sim::bridge::BridgeSolutio
         duration: Some(15.0),
         ..SimSettings::default()
     };
-    simulate_bridge(&BridgeProblem::at_rest(m, g), &settings).unwrap()
+    simulate(&BridgeProblem::at_rest(m, g), &settings).unwrap()
 }
 
 /// Two cables of stiffness k/2 at ±3 m across each joint of a straight chain shaken along its

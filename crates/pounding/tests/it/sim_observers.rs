@@ -7,7 +7,6 @@ use pounding::ground_motion::el_centro_1940;
 use pounding::shape::{DeckShape, StraightDeck};
 use pounding::sim::bridge::{
     BearingYield, BridgeModel, BridgeProblem, BridgeSolution, Joint, RestrainerSpec, Segment,
-    simulate_bridge,
 };
 use pounding::sim::table::Table;
 use pounding::sim::{DampingModel, JointContact, SimModel, SimProblem, SimSettings, simulate};
@@ -39,7 +38,7 @@ fn run(model: BridgeModel, duration: f64) -> (BridgeProblem, BridgeSolution, Sim
         dt: 1e-3,
         ..SimSettings::default()
     };
-    let sol = simulate_bridge(&problem, &settings).unwrap();
+    let sol = simulate(&problem, &settings).unwrap();
     (problem, sol, settings)
 }
 

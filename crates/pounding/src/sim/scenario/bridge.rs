@@ -58,9 +58,8 @@ use crate::output::float_token;
 use crate::shape::{Deck, DeckShape, SkewedDeck, StraightDeck};
 use crate::sim::bridge::{
     BearingYield, BridgeAbutment, BridgeModel, BridgeProblem, Joint, RestrainerSpec, Segment,
-    simulate_bridge,
 };
-use crate::sim::{DampingModel, JointContact, SimSettings};
+use crate::sim::{DampingModel, JointContact, SimSettings, simulate};
 use crate::toml_schema::{Table, line_col};
 use serde::Deserialize;
 use toml::Spanned;
@@ -167,7 +166,7 @@ struct AbutmentSec {
 }
 
 /// What [`Scenario::build_bridge`] returns: the problem and settings of
-/// [`crate::sim::bridge::simulate_bridge`] and what the records were.
+/// [`crate::sim::bridge::simulate`] and what the records were.
 #[derive(Debug, Clone)]
 pub struct BridgeSetup {
     /// The bridge, its ground motion, at rest.
@@ -183,7 +182,7 @@ pub struct BridgeSetup {
 impl BridgeSetup {
     /// Runs it.
     pub fn run(&self) -> Result<crate::sim::bridge::BridgeSolution, crate::sim::SimError> {
-        simulate_bridge(&self.problem, &self.settings)
+        simulate(&self.problem, &self.settings)
     }
 }
 

@@ -5,9 +5,10 @@
 
 use super::{BridgeSetup, Scenario, ScenarioError, SimSetup};
 use crate::ground_motion::GroundMotion;
+use crate::math::Real;
 use crate::sim::bridge::{BridgeModel, BridgeSolution};
 use crate::sim::output::{self, History, Layout, RunWarning};
-use crate::sim::{SimError, SimSettings};
+use crate::sim::{Problem, SimError, SimSettings};
 use std::borrow::Cow;
 
 /// A scenario built for one run.
@@ -32,14 +33,6 @@ impl Scenario {
 }
 
 impl Setup {
-    /// The layout of its files.
-    pub fn layout(&self) -> Layout {
-        match self {
-            Setup::TwoDecks(_) => Layout::TwoDecks,
-            Setup::Bridge(_) => Layout::Bridge,
-        }
-    }
-
     /// The run's settings.
     pub fn settings(&self) -> &SimSettings {
         match self {
@@ -56,19 +49,11 @@ impl Setup {
         }
     }
 
-    /// The ground motion.
-    pub fn ground(&self) -> &GroundMotion {
+    /// The names of the records it runs (`[y, x]`, `"none"` for an absent component).
+    pub fn records_mut(&mut self) -> &mut [String; 2] {
         match self {
-            Setup::TwoDecks(s) => &s.problem.ground,
-            Setup::Bridge(s) => &s.problem.ground,
-        }
-    }
-
-    /// The bridge that runs (the two-deck model's two-segment bridge).
-    pub fn model(&self) -> Cow<'_, BridgeModel> {
-        match self {
-            Setup::TwoDecks(s) => Cow::Owned(BridgeModel::from_pair(&s.problem.model)),
-            Setup::Bridge(s) => Cow::Borrowed(&s.problem.model),
+            Setup::TwoDecks(s) => &mut s.records,
+            Setup::Bridge(s) => &mut s.records,
         }
     }
 
@@ -80,12 +65,9 @@ impl Setup {
         }
     }
 
-    /// Runs it.
+    /// Runs it with its settings ([`crate::sim::simulate`]).
     pub fn run(&self) -> Result<BridgeSolution, SimError> {
-        match self {
-            Setup::TwoDecks(s) => crate::sim::simulate(&s.problem, &s.settings),
-            Setup::Bridge(s) => s.run(),
-        }
+        crate::sim::simulate(self, self.settings())
     }
 
     /// `history.csv` of a run of it.
@@ -117,26 +99,50 @@ impl Setup {
     }
 }
 
-impl crate::sim::batch::BatchProblem for Setup {
-    fn check(&self) -> Result<(), SimError> {
+/// Delegates to the problem of its form (a batch over a setup runs its problem).
+impl Problem for Setup {
+    fn model(&self) -> Cow<'_, BridgeModel> {
         match self {
-            Setup::TwoDecks(s) => s.problem.check(),
-            Setup::Bridge(s) => s.problem.check(),
+            Setup::TwoDecks(s) => s.problem.model(),
+            Setup::Bridge(s) => s.problem.model(),
         }
     }
-
-    fn run_one(
-        &self,
-        record: &crate::ground_motion::Record,
-        scale: crate::math::Real,
-        settings: &SimSettings,
-    ) -> (
-        crate::math::Real,
-        Result<crate::sim::batch::BatchOutcome, SimError>,
-    ) {
+    fn ground(&self) -> &GroundMotion {
         match self {
-            Setup::TwoDecks(s) => s.problem.run_one(record, scale, settings),
-            Setup::Bridge(s) => s.problem.run_one(record, scale, settings),
+            Setup::TwoDecks(s) => &s.problem.ground,
+            Setup::Bridge(s) => &s.problem.ground,
+        }
+    }
+    fn initial(&self) -> (&[Real], &[Real]) {
+        match self {
+            Setup::TwoDecks(s) => s.problem.initial(),
+            Setup::Bridge(s) => s.problem.initial(),
+        }
+    }
+    fn check_model(&self) -> Result<(), SimError> {
+        match self {
+            Setup::TwoDecks(s) => s.problem.check_model(),
+            Setup::Bridge(s) => s.problem.check_model(),
+        }
+    }
+    fn check_initial(&self) -> Result<(), SimError> {
+        match self {
+            Setup::TwoDecks(s) => s.problem.check_initial(),
+            Setup::Bridge(s) => s.problem.check_initial(),
+        }
+    }
+    fn with_ground(&self, ground: GroundMotion) -> Self {
+        let mut out = self.clone();
+        match &mut out {
+            Setup::TwoDecks(s) => s.problem.ground = ground,
+            Setup::Bridge(s) => s.problem.ground = ground,
+        }
+        out
+    }
+    fn layout(&self) -> Layout {
+        match self {
+            Setup::TwoDecks(_) => Layout::TwoDecks,
+            Setup::Bridge(_) => Layout::Bridge,
         }
     }
 }
