@@ -4,9 +4,9 @@
 //! (no library, no network) that draws the segments to scale at their displaced positions, with
 //! a time slider, play/pause and speed, a displacement magnification (true scale one click
 //! away), click-to-zoom, the ground-motion trace with a cursor, impacts flashed at their site
-//! with their impulse or peak force, each seated end's seat edge coloured by its seat ratio
-//! (with the remaining seat written when zoomed), restrainers coloured by their tension, the
-//! bearings' ground points, and jump-to buttons for the governing events.
+//! with their impulse or peak force, each seated end's seat gauge (the seat left, written when
+//! zoomed; red once unseated), restrainers coloured by their tension, the bearings' ground points,
+//! and jump-to buttons for the governing events. Displacements and gaps are magnified alike.
 
 use std::fmt::Write;
 
@@ -18,13 +18,14 @@ pub fn section(traj: &str) -> String {
     let mut h = String::with_capacity(traj.len() + SCRIPT.len() + 2048);
     h.push_str(
         "<h2 id=\"animation\">Plan animation</h2>\n<p>The segments at their displaced positions \
-         (dashed: at rest), displacements magnified by the factor shown; click the plan to zoom \
-         on a joint, double-click to reset. Impacts flash red at their site with their impulse \
-         (rigid law) or peak force. A dashed line at each seated end marks its seat edge (where the \
-         magnified face stands when the end leaves its seat: green below half the seat, orange \
-         above, red unseated; zoom to read the seat left); restrainers are grey while slack, \
-         orange to red with tension; grey squares are the bearings. The data is <a href=\"trajectories.json\">trajectories.json</a> \
-         (decimated to at most 2000 frames).</p>\n<div id=\"an-controls\"><button \
+         (dashed: at rest); displacements and the joint and abutment gaps are magnified by the \
+         factor shown, so that a closed joint is drawn closed. Click the plan to zoom 4× around \
+         the point, double-click to reset. Impacts flash red at their site with their impulse \
+         (rigid law) or peak force, summed over their contacts. At each seated end a gauge \
+         shows the seat left (green above half the seat, orange below, red once the end has \
+         unseated; zoom to read it in metres); restrainers are grey while slack, orange to red \
+         with tension; grey squares are the bearings. The data is <a \
+         href=\"trajectories.json\">trajectories.json</a> (decimated to at most 2000 frames).</p>\n<div id=\"an-controls\"><button \
          id=\"an-play\">Play</button> <select id=\"an-speed\"><option value=\"0.1\">0.1×</option>\
          <option value=\"0.25\">0.25×</option><option value=\"1\" selected>1×</option><option \
          value=\"4\">4×</option></select> <input id=\"an-t\" type=\"range\" min=\"0\" max=\"0\" \

@@ -2,7 +2,9 @@
 //! bridge: the page is opened offline in Chromium inside a probe page that moves the time slider
 //! to three frames (a quarter of the run, the first impact, the end) and reads the player's
 //! state. At each, the drawn displacements `x_i, y_i, θ_i` equal `history.csv`'s row at that
-//! time and each drawn centroid is `G⁰ + f d` for the shown magnification `f`; at the first
+//! time and each drawn centroid is `G⁰ + o_i + f d` for the shown magnification `f`, with the
+//! gap offsets `o_{k+1} − o_k = (f − 1)(S_{k+1} − E_k)` (the joints' gaps magnified as the
+//! displacements); at the first
 //! impact a marker is drawn at that impact's joint (nearest joint of the plan) with its time.
 //! The bridge has restrainers: at each of the three frames every drawn restrainer tension equals
 //! `restrainers.csv`'s row, and every seated end's drawn seat displacement equals the one
@@ -74,6 +76,16 @@ fn plan_animation_draws_history_positions_and_impacts() {
         .split(',')
         .collect();
     let t_imp: f64 = first[1].parse().unwrap();
+    // its total normal impulse over its contacts (the rows of the same impact and site)
+    let head: Vec<&str> = impacts.lines().next().unwrap().split(',').collect();
+    let col = head.iter().position(|h| *h == "impulse_n_Ns").unwrap();
+    let impulse: f64 = impacts
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect::<Vec<_>>())
+        .filter(|r| r[0] == first[0] && r[2] == first[2])
+        .map(|r| r[col].parse::<f64>().unwrap())
+        .sum();
     let joint: usize = first[2]
         .strip_prefix("joint")
         .unwrap()
@@ -94,7 +106,7 @@ fn plan_animation_draws_history_positions_and_impacts() {
              s.dispatchEvent(new Event('input'));\
              res.push({{frame: A.state.frame, t: A.data.frames[A.state.frame].t, mag: A.state.mag,\
              drawn: A.state.drawn, markers: A.state.markers, seats: A.state.seats,\
-             restrainers: A.state.restrainers}}); }}, this);\
+             restrainers: A.state.restrainers, offsets: A.state.offsets}}); }}, this);\
              r.textContent = 'PROBE ' + JSON.stringify(res) + ' END';\
              }} catch (e) {{ r.textContent = 'PROBE error ' + e + ' END'; }} }};</script></body></html>",
             file_url(&out.join("report.html"))
@@ -138,6 +150,21 @@ fn plan_animation_draws_history_positions_and_impacts() {
         let drawn = st["drawn"].as_array().unwrap();
         assert_eq!(drawn.len(), n);
         let mag = st["mag"].as_f64().unwrap();
+        let off = |i: usize, c: usize| st["offsets"][i][c].as_f64().unwrap();
+        let corner = |s: usize, j: usize, a: usize| traj["corners"][s][j][a].as_f64().unwrap();
+        for k in 0..n - 1 {
+            for c in 0..2 {
+                let s_next = (corner(k + 1, 0, c) + corner(k + 1, 1, c)) / 2.0;
+                let e = (corner(k, 2, c) + corner(k, 3, c)) / 2.0;
+                let want = (mag - 1.0) * (s_next - e);
+                let got = off(k + 1, c) - off(k, c);
+                assert!(
+                    (got - want).abs() <= 1e-9 * (1.0 + want.abs()),
+                    "gap offset of joint {}: {got} vs {want}",
+                    k + 1
+                );
+            }
+        }
         for (i, d) in drawn.iter().enumerate() {
             let want = [row[3 + 3 * i], row[4 + 3 * i], row[5 + 3 * i]];
             let got = ["x", "y", "theta_deg"].map(|k| d[k].as_f64().unwrap());
@@ -150,7 +177,7 @@ fn plan_animation_draws_history_positions_and_impacts() {
             }
             let g0 = &traj["centroids"][i];
             for c in 0..2 {
-                let g = g0[c].as_f64().unwrap() + mag * want[c];
+                let g = g0[c].as_f64().unwrap() + off(i, c) + mag * want[c];
                 let shown = d["centroid"][c].as_f64().unwrap();
                 assert!(
                     close(shown, g),
@@ -228,6 +255,11 @@ fn plan_animation_draws_history_positions_and_impacts() {
         .find(|m| m["site_kind"] == "joint" && close(m["t"].as_f64().unwrap(), t_imp))
         .unwrap_or_else(|| panic!("no marker of the impact at {t_imp}: {marks:?}"));
     assert_eq!(m["site"].as_u64(), Some(joint as u64));
+    let shown = m["impulse_n"].as_f64().unwrap();
+    assert!(
+        (shown - impulse).abs() <= 1e-9 * impulse,
+        "marker impulse {shown} vs the impact's total {impulse}"
+    );
     // Nearest joint (midpoint of segment k's end face and k+1's start face, at rest) to the marker.
     let (mx, my) = (m["x"].as_f64().unwrap(), m["y"].as_f64().unwrap());
     let c = &traj["corners"];

