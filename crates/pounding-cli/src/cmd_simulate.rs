@@ -201,6 +201,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
     if bridge {
         pounding::assessment::FragilitySettings::check_if_present(&text, &origin)?;
     }
+    pounding::assessment::CodeCheckInput::check_if_present(&text, &origin)?;
     let sc = with_flags(sc, &args);
     if !args.records.is_empty() {
         let reading = sc.override_reading(args.csv_units)?;
