@@ -1,0 +1,137 @@
+//! `pounding check`: the printed table, the files written, exit codes, and `[code_check]` errors
+//! naming the file, the key and the line.
+
+use crate::{run_capture, scratch_with};
+
+const CURVED_5: &str = include_str!("../../../../examples/viaduct-curved-5.toml");
+
+fn with_check(table: &str) -> String {
+    CURVED_5.replace(
+        "[ground_motion]",
+        &format!("[code_check]\n{table}\n[ground_motion]"),
+    )
+}
+
+/// The line of the first key of `[code_check]` in [`with_check`]'s text.
+fn first_key_line() -> usize {
+    with_check("")
+        .lines()
+        .position(|l| l == "[code_check]")
+        .unwrap()
+        + 2
+}
+
+#[test]
+fn check_prints_the_table_and_writes_its_files() {
+    let table = "ground = \"C\"\na_gr_ms2 = 3.0\ndisplacement_m = 0.12\npier_height_m = 8.0\n";
+    let d = scratch_with("check", "files", &[("s.toml", &with_check(table))]);
+    let out = d.join("out");
+    let (code, stdout, stderr) = run_capture(&[
+        "check",
+        d.join("s.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, Some(0), "{stderr}");
+    for i in 1..=5 {
+        for end in ["start", "end"] {
+            assert!(stdout.contains(&format!("segment{i}-{end}")), "{stdout}");
+        }
+    }
+    for col in [
+        "EC8",
+        "LRFD",
+        "Guide",
+        "Caltr",
+        "JRA",
+        "governs",
+        "margin",
+        "Joint gaps",
+    ] {
+        assert!(stdout.contains(col), "{col}: {stdout}");
+    }
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("check.json")).unwrap()).unwrap();
+    let csv = std::fs::read_to_string(out.join("check.csv")).unwrap();
+    let gaps = std::fs::read_to_string(out.join("check_gaps.csv")).unwrap();
+    let rows: Vec<Vec<&str>> = csv.lines().map(|l| l.split(',').collect()).collect();
+    let head = &rows[0];
+    let col = |name: &str| head.iter().position(|h| *h == name).unwrap();
+    assert_eq!(rows.len(), 11);
+    assert_eq!(gaps.lines().count(), 5);
+    let ends = json["ends"].as_array().unwrap();
+    let mut fails = 0;
+    for (row, e) in rows[1..].iter().zip(ends) {
+        assert_eq!(row[col("end")], e["end"].as_str().unwrap());
+        let governing: f64 = row[col("governing_m")].parse().unwrap();
+        assert_eq!(governing, e["governing_m"].as_f64().unwrap());
+        // the governing requirement is the largest code's, the margin the provided seat minus it
+        let codes = [
+            "ec8_m",
+            "aashto_lrfd_m",
+            "aashto_guide_m",
+            "caltrans_m",
+            "jra_m",
+        ];
+        let max = codes
+            .iter()
+            .map(|c| row[col(c)].parse::<f64>().unwrap())
+            .fold(f64::MIN, f64::max);
+        assert_eq!(governing, max);
+        let seat: f64 = row[col("seat_length_m")].parse().unwrap();
+        let margin: f64 = row[col("margin_m")].parse().unwrap();
+        assert!((margin - (seat - max)).abs() < 1e-12);
+        let verdict = if margin >= 0.0 { "PASS" } else { "FAIL" };
+        assert_eq!(row[col("verdict")], verdict);
+        fails += usize::from(verdict == "FAIL");
+        // and the printed row says the same
+        let line = stdout.lines().find(|l| l.starts_with(row[0])).unwrap();
+        assert!(line.ends_with(verdict), "{line}");
+    }
+    assert_eq!(json["failing_ends"].as_u64(), Some(fails as u64));
+    if fails > 0 {
+        assert_eq!(json["verdict"], "FAIL");
+        assert!(stdout.contains("The check ran (exit 0)"), "{stdout}");
+    }
+    // the inputs the file did not set are listed as defaults
+    let defaults = json["inputs"]["at_default"].as_array().unwrap();
+    assert!(defaults.iter().any(|k| k == "aashto_zone"));
+    assert!(!defaults.iter().any(|k| k == "ground"));
+}
+
+#[test]
+fn check_of_a_bad_value_names_file_key_and_line() {
+    let d = scratch_with(
+        "check",
+        "bad",
+        &[("s.toml", &with_check("importance_class = 7"))],
+    );
+    let (code, stdout, stderr) = run_capture(&["check", d.join("s.toml").to_str().unwrap()]);
+    assert_eq!(code, Some(2), "{stdout}");
+    assert!(stderr.contains("code_check.importance_class"), "{stderr}");
+    assert!(
+        stderr.contains(&format!("s.toml:{}", first_key_line())),
+        "{stderr}"
+    );
+    // simulate refuses it too, before running
+    let (code, _, stderr) = run_capture(&["simulate", d.join("s.toml").to_str().unwrap()]);
+    assert_eq!(code, Some(2));
+    assert!(stderr.contains("code_check.importance_class"), "{stderr}");
+}
+
+#[test]
+fn check_refuses_an_unknown_key_with_its_line() {
+    let d = scratch_with(
+        "check",
+        "unknown",
+        &[("s.toml", &with_check("ground_type = \"A\""))],
+    );
+    let (code, _, stderr) = run_capture(&["check", d.join("s.toml").to_str().unwrap()]);
+    assert_eq!(code, Some(2));
+    assert!(stderr.contains("s.toml"), "{stderr}");
+    assert!(
+        stderr.contains(&format!("line {}", first_key_line())),
+        "{stderr}"
+    );
+    assert!(stderr.contains("ground_type"), "{stderr}");
+}
