@@ -135,3 +135,37 @@ fn check_refuses_an_unknown_key_with_its_line() {
     );
     assert!(stderr.contains("ground_type"), "{stderr}");
 }
+
+/// The guide's example run prints what the guide shows (its rows are copied from a run).
+#[test]
+fn the_guide_example_is_what_the_command_prints() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let guide = std::fs::read_to_string(root.join("docs/guide/check.md")).unwrap();
+    let (code, stdout, stderr) = run_capture(&[
+        "check",
+        root.join("examples/viaduct-curved-5-check.toml")
+            .to_str()
+            .unwrap(),
+    ]);
+    assert_eq!(code, Some(0), "{stderr}");
+    let block = guide
+        .split("```text\n")
+        .nth(1)
+        .unwrap()
+        .split("```")
+        .next()
+        .unwrap();
+    let shown: Vec<&str> = block
+        .lines()
+        .filter(|l| {
+            l.starts_with("segment") || l.starts_with("joint1 ") || l.starts_with("Verdict")
+        })
+        .collect();
+    assert!(shown.len() >= 4, "{shown:?}");
+    for l in shown {
+        assert!(
+            stdout.lines().any(|o| o == l),
+            "guide line not printed: {l}\n{stdout}"
+        );
+    }
+}
