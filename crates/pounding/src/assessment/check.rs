@@ -283,13 +283,10 @@ impl GapCheck {
     }
 }
 
+/// A formula's refusal of a value derived from the model (the `[code_check]` values are checked
+/// when read): the scenario and the formula's message.
 fn code_error(e: CodeCheckError, origin: &str) -> AssessmentError {
-    AssessmentError::Key {
-        message: e.to_string(),
-        key: "code_check".into(),
-        origin: origin.to_string(),
-        line: None,
-    }
+    AssessmentError::Model(format!("{origin}: code check: {e}"))
 }
 
 /// Checks `model` with `input` (from `origin`'s `[code_check]`): see the module doc.

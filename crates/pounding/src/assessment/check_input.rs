@@ -148,6 +148,37 @@ struct Sec {
     jra_ground: Sp<String>,
 }
 
+impl Sec {
+    /// The keys written (in [`DEFAULTS`] order).
+    fn given(&self) -> Vec<&'static str> {
+        let set = [
+            self.ground.is_some(),
+            self.a_gr_ms2.is_some(),
+            self.spectrum_type.is_some(),
+            self.importance_class.is_some(),
+            self.near_fault_factor.is_some(),
+            self.l_m_m.is_some(),
+            self.l_eff_m.is_some(),
+            self.displacement_m.is_some(),
+            self.period_s.is_some(),
+            self.damping.is_some(),
+            self.pier_height_m.is_some(),
+            self.aashto_zone.is_some(),
+            self.a_s.is_some(),
+            self.sdc.is_some(),
+            self.delta_ps_m.is_some(),
+            self.delta_crsh_m.is_some(),
+            self.delta_temp_m.is_some(),
+            self.jra_ground.is_some(),
+        ];
+        DEFAULTS
+            .iter()
+            .zip(set)
+            .filter_map(|((k, _), s)| s.then_some(*k))
+            .collect()
+    }
+}
+
 impl CodeCheckInput {
     /// Whether the scenario `text` has a `[code_check]` table (`false` for text that is not
     /// TOML: the scenario reader reports that).
@@ -274,11 +305,7 @@ impl CodeCheckInput {
             })
             .transpose()?;
         let (aashto_zone, a_s, sdc, caltrans, jra_ground) = Self::read_us_jra(cx, s)?;
-        let given = DEFAULTS
-            .iter()
-            .map(|(k, _)| *k)
-            .filter(|k| cx.text_sets(k))
-            .collect();
+        let given = s.given();
         Ok(Self {
             ground,
             a_gr,

@@ -134,10 +134,3 @@ impl Cx<'_> {
         }
     }
 }
-
-impl Cx<'_> {
-    /// Whether `[code_check]` sets `key` (the table's own lines, comments excluded).
-    pub(super) fn text_sets(&self, key: &str) -> bool {
-        crate::toml_schema::line_of_key(self.text, "code_check", key).is_some()
-    }
-}

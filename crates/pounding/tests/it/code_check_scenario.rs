@@ -264,3 +264,37 @@ fn code_check_errors_name_key_and_line() {
     // the simulate reader accepts the table (checked by the assessment reader)
     assert!(Scenario::from_toml(&with_check("ground = \"A\""), "s.toml").is_ok());
 }
+
+/// Every key of `DEFAULTS` is accepted and recorded as given (also in an inline table), and
+/// the guide's key table lists each of them.
+#[test]
+fn every_default_key_is_accepted_and_documented() {
+    use pounding::assessment::check_input::DEFAULTS;
+    let all = "ground = \"B\", a_gr_ms2 = 1.0, spectrum_type = 2, importance_class = 3, \
+               near_fault_factor = 1.2, l_m_m = 0.5, l_eff_m = 20.0, displacement_m = 0.1, \
+               period_s = 1.0, damping = 0.02, pier_height_m = [5, 6, 7, 8, 9], aashto_zone = 1, \
+               a_s = 0.04, sdc = \"A\", delta_ps_m = 0.01, delta_crsh_m = 0.02, \
+               delta_temp_m = 0.03, jra_ground = \"I\"";
+    // an inline table, before the first table header
+    let text = format!("code_check = {{ {all} }}\n{CURVED_5}");
+    let input = CodeCheckInput::from_scenario(&text, "s.toml").unwrap();
+    let keys: Vec<&str> = DEFAULTS.iter().map(|(k, _)| *k).collect();
+    assert_eq!(input.given, keys);
+    assert!(input.defaulted().is_empty());
+    let r = check_scenario(&scenario(&text)).unwrap();
+    assert!(
+        r.ends
+            .iter()
+            .all(|e| e.codes.iter().all(|(_, q)| q.value().is_some()))
+    );
+    let guide = include_str!("../../../../docs/guide/check.md");
+    for k in keys {
+        assert!(
+            guide.lines().any(|l| l.starts_with("| `")
+                && l.split(" | ")
+                    .next()
+                    .is_some_and(|c| c.contains(&format!("`{k}`")))),
+            "{k}"
+        );
+    }
+}
