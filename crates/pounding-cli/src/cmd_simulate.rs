@@ -167,7 +167,7 @@ pub(crate) fn write_report(
     summary_json: &str,
     candidates: &[&'static str],
     files: &[&str],
-    (animation, tables): (Option<&str>, &[pounding::sim::table::Table]),
+    (animation, tables, code_check): (Option<&str>, &[pounding::sim::table::Table], Option<String>),
 ) -> Result<()> {
     let input = crate::sim_report::ReportInput {
         what,
@@ -181,6 +181,7 @@ pub(crate) fn write_report(
         files,
         animation,
         tables,
+        code_check,
     };
     let html = crate::sim_report::report_html(&input, summary_json);
     let p = args.out.join("report.html");

@@ -23,6 +23,7 @@ mod report;
 mod report_pages;
 mod sim_anim;
 mod sim_report;
+mod sim_report_check;
 
 /// Nonsmooth rigid-impact analysis of pounding between bridge deck segments.
 #[derive(Parser)]

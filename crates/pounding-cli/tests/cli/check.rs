@@ -169,3 +169,80 @@ fn the_guide_example_is_what_the_command_prints() {
         );
     }
 }
+
+/// `simulate` of a bridge with `[code_check]`: report.html has the code-check table, each end's
+/// simulated peak there is summary.json's, and its code seats are `pounding check`'s.
+#[test]
+fn simulate_report_puts_code_seats_beside_the_run() {
+    let table = "ground = \"C\"\na_gr_ms2 = 3.0\ndisplacement_m = 0.01\n";
+    let d = scratch_with("check", "report", &[("s.toml", &with_check(table))]);
+    let (out, chk) = (d.join("out"), d.join("chk"));
+    let s = d.join("s.toml");
+    let (code, _, stderr) = run_capture(&[
+        "simulate",
+        s.to_str().unwrap(),
+        "--duration",
+        "3",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, Some(0), "{stderr}");
+    let (code, _, _) = run_capture(&["check", s.to_str().unwrap(), "--out", chk.to_str().unwrap()]);
+    assert_eq!(code, Some(0));
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let check: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(chk.join("check.json")).unwrap()).unwrap();
+    let section = html
+        .split("<h2 id=\"code-check\">")
+        .nth(1)
+        .expect("code-check section");
+    let section = section.split("</table>").next().unwrap();
+    let mut beyond = 0;
+    for seat in summary["seats"].as_array().unwrap() {
+        let end = seat["end"].as_str().unwrap();
+        let row = section
+            .split("<tr>")
+            .find(|r| r.starts_with(&format!("<td>{end}</td>")))
+            .unwrap_or_else(|| panic!("{end}"));
+        let cells: Vec<&str> = row
+            .split("<td>")
+            .skip(1)
+            .map(|c| c.split("</td>").next().unwrap())
+            .collect();
+        let peak = seat["peak_seat_displacement_m"].as_f64().unwrap();
+        assert_eq!(cells[10], format!("{peak:.3}"), "{end}");
+        let e = check["ends"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|e| e["end"] == end)
+            .unwrap();
+        assert_eq!(
+            cells[3],
+            format!("{:.3}", e["required_m"]["ec8"].as_f64().unwrap())
+        );
+        let over = peak > 0.01;
+        assert_eq!(cells[14].contains("exceeds"), over, "{end}: {row}");
+        beyond += usize::from(over);
+    }
+    assert_eq!(
+        html.contains("the simulated peak seat displacement exceeds"),
+        beyond > 0
+    );
+    // without [code_check] there is no such section
+    let d2 = scratch_with("check", "plain", &[("s.toml", CURVED_5)]);
+    let out2 = d2.join("out");
+    let (code, _, _) = run_capture(&[
+        "simulate",
+        d2.join("s.toml").to_str().unwrap(),
+        "--duration",
+        "1",
+        "--out",
+        out2.to_str().unwrap(),
+    ]);
+    assert_eq!(code, Some(0));
+    let html = std::fs::read_to_string(out2.join("report.html")).unwrap();
+    assert!(!html.contains("code-check"));
+}

@@ -35,6 +35,7 @@
 pub mod check;
 mod check_codes;
 pub mod check_input;
+pub mod check_run;
 mod check_values;
 pub mod check_write;
 pub mod code_check;
