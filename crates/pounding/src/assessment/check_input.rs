@@ -292,18 +292,12 @@ impl CodeCheckInput {
                 per("period_s", &s.period_s, 20.0, true)?.unwrap_or(PerSegment::All(1.0)),
             ),
         };
-        let damping = s
-            .damping
-            .as_ref()
-            .map(|v| {
-                cx.num(
-                    "damping",
-                    v,
-                    |x| (0.0..1.0).contains(&x),
-                    "must be in [0, 1) (a fraction of critical)",
-                )
-            })
-            .transpose()?;
+        let damping = cx.opt_num(
+            "damping",
+            &s.damping,
+            |x| (0.0..1.0).contains(&x),
+            "must be in [0, 1) (a fraction of critical)",
+        )?;
         let (aashto_zone, a_s, sdc, caltrans, jra_ground) = Self::read_us_jra(cx, s)?;
         let given = s.given();
         Ok(Self {

@@ -47,6 +47,16 @@ impl Cx<'_> {
             ))
         }
     }
+    /// An optional number, checked as [`Cx::num`] when given.
+    pub(super) fn opt_num(
+        &self,
+        key: &str,
+        v: &Sp<Real>,
+        ok: impl Fn(Real) -> bool,
+        what: &str,
+    ) -> Result<Option<Real>, AssessmentError> {
+        v.as_ref().map(|v| self.num(key, v, &ok, what)).transpose()
+    }
     /// A length in metres in `[0, 1e4]` (a code's displacement or height is never beyond).
     pub(super) fn length(&self, key: &str, v: &Sp<Real>) -> Result<Option<Real>, AssessmentError> {
         v.as_ref()
