@@ -167,7 +167,7 @@ pub(crate) fn write_report(
     summary_json: &str,
     candidates: &[&'static str],
     files: &[&str],
-    (animation, tables): (Option<&str>, &[pounding::sim::table::Table]),
+    (animation, tables, code_check): (Option<&str>, &[pounding::sim::table::Table], Option<String>),
 ) -> Result<()> {
     let input = crate::sim_report::ReportInput {
         what,
@@ -181,6 +181,7 @@ pub(crate) fn write_report(
         files,
         animation,
         tables,
+        code_check,
     };
     let html = crate::sim_report::report_html(&input, summary_json);
     let p = args.out.join("report.html");
@@ -201,6 +202,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
     if bridge {
         pounding::assessment::FragilitySettings::check_if_present(&text, &origin)?;
     }
+    pounding::assessment::CodeCheckInput::check_if_present(&text, &origin)?;
     let sc = with_flags(sc, &args);
     if !args.records.is_empty() {
         let reading = sc.override_reading(args.csv_units)?;

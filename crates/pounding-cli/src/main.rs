@@ -5,6 +5,7 @@
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
+mod cmd_check;
 mod cmd_compare;
 mod cmd_fragility;
 mod cmd_impact;
@@ -22,6 +23,7 @@ mod report;
 mod report_pages;
 mod sim_anim;
 mod sim_report;
+mod sim_report_check;
 
 /// Nonsmooth rigid-impact analysis of pounding between bridge deck segments.
 #[derive(Parser)]
@@ -49,6 +51,8 @@ enum Command {
     Motion(cmd_motion::Args),
     /// Fragility study of a bridge: a record set at IM stripes, limit states, fitted lognormal curves.
     Fragility(cmd_fragility::Args),
+    /// Code check of seat lengths (EC8-2, AASHTO LRFD and Guide Spec, Caltrans, JRA) and joint gaps (SRSS, DDC) of a scenario.
+    Check(cmd_check::Args),
 }
 
 /// The message of a panic raised by `print!`/`eprint!` when standard output or error cannot be
@@ -72,6 +76,7 @@ fn run(cli: Cli) -> ExitCode {
         Command::Spectrum(a) => cmd_spectrum::run(a),
         Command::Motion(a) => cmd_motion::run(a),
         Command::Fragility(a) => cmd_fragility::run(a),
+        Command::Check(a) => cmd_check::run(a),
     };
     match result {
         Ok(code) => code,

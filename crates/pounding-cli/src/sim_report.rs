@@ -30,6 +30,8 @@ pub struct ReportInput<'a> {
     pub animation: Option<&'a str>,
     /// The run's tables (`bearings`, `restrainers`, `joint_slip`): their peaks are shown.
     pub tables: &'a [Table],
+    /// The code-check section of a bridge with `[code_check]` ([`crate::sim_report_check`]).
+    pub code_check: Option<String>,
 }
 
 /// The page, from the run's `summary.json` text.
@@ -73,9 +75,13 @@ pub fn report_html(input: &ReportInput, summary_json: &str) -> String {
     );
     let _ = writeln!(
         h,
-        "<nav><a href=\"#warnings\">Warnings</a>{}<a href=\"#ground\">Ground motion</a><a \
+        "<nav><a href=\"#warnings\">Warnings</a>{}{}<a href=\"#ground\">Ground motion</a><a \
          href=\"#summary\">Summary</a><a href=\"#tables\">Force histories</a><a \
          href=\"#figures\">Figures</a><a href=\"#model\">Model</a></nav>",
+        match input.code_check {
+            Some(_) => "<a href=\"#code-check\">Code check</a>",
+            None => "",
+        },
         if input.animation.is_some() {
             "<a href=\"#animation\">Animation</a>"
         } else {
@@ -83,6 +89,7 @@ pub fn report_html(input: &ReportInput, summary_json: &str) -> String {
         }
     );
     warnings(&mut h, &summary);
+    h.push_str(input.code_check.as_deref().unwrap_or_default());
     if let Some(traj) = input.animation {
         h.push_str(&crate::sim_anim::section(traj));
     }

@@ -73,6 +73,13 @@ pub fn run(
             (what, crate::plots::bridge::FIGURES)
         }
     };
+    // a bridge with [code_check]: its code seats beside the run's seat demand
+    let code_check = match &setup {
+        Setup::Bridge(s) => {
+            crate::sim_report_check::section(&s.problem.model, scenario, &sol.summary.seats)
+        }
+        Setup::TwoDecks(_) => None,
+    };
     // every table of the run, as written above
     files.extend(tables.iter().map(|t| t.file_name()));
     let files: Vec<&str> = files.iter().map(String::as_str).collect();
@@ -83,7 +90,7 @@ pub fn run(
         &summary,
         figures,
         &files,
-        (Some(&traj), &tables),
+        (Some(&traj), &tables, code_check),
     )?;
     let timing = json!({
         "simulate_s": sim_secs,

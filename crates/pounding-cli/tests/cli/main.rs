@@ -57,7 +57,17 @@ fn help_lists_subcommands() {
     let out = pounding().arg("--help").output().unwrap();
     assert!(out.status.success());
     let s = String::from_utf8_lossy(&out.stdout);
-    for sub in ["lcp", "impact", "study", "simulate", "compare"] {
+    for sub in [
+        "lcp",
+        "impact",
+        "study",
+        "simulate",
+        "compare",
+        "spectrum",
+        "motion",
+        "fragility",
+        "check",
+    ] {
         assert!(s.contains(sub), "--help lacks {sub}: {s}");
     }
 }
@@ -65,6 +75,7 @@ fn help_lists_subcommands() {
 mod batch;
 mod bridge_batch;
 mod bridge_plots;
+mod check;
 mod compare;
 mod docs_links;
 mod errors_round3;

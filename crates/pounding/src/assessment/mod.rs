@@ -32,6 +32,12 @@
 //! status other than `Completed` is kept in `runs.csv` with its status, and its limit states
 //! are excluded (`None`) from the fit and counted.
 
+pub mod check;
+mod check_codes;
+pub mod check_input;
+pub mod check_run;
+mod check_values;
+pub mod check_write;
 pub mod code_check;
 pub mod im;
 pub mod limit;
@@ -44,6 +50,8 @@ pub mod settings;
 /// which the record has no spectral content).
 pub const MAX_SCALE_FACTOR: crate::math::Real = 100.0;
 
+pub use check::{CheckReport, check_bridge, check_scenario, seated_ends};
+pub use check_input::CodeCheckInput;
 pub use settings::{
     FragilitySettings, ImKind, LimitKind, LimitState, PairIm, PeriodChoice, Stripes,
 };

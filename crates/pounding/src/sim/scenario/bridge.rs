@@ -89,6 +89,10 @@ pub(crate) struct BridgeRaw {
     pub(crate) _fragility: serde::de::IgnoredAny,
     #[serde(default, rename = "limit_state")]
     pub(crate) _limit_state: serde::de::IgnoredAny,
+    /// `[code_check]`: read by `pounding check` ([`crate::assessment::check_input`]),
+    /// accepted and not used here.
+    #[serde(default, rename = "code_check")]
+    pub(crate) _code_check: serde::de::IgnoredAny,
 }
 
 #[derive(Deserialize, Default, Clone, Debug)]
