@@ -30,6 +30,7 @@ use super::check_codes::end_requirement;
 use super::check_input::{CodeCheckInput, PeriodInput};
 use super::code_check::{self as cc, CodeCheckError, SeatKind};
 use crate::math::Real;
+use crate::sim::Problem;
 use crate::sim::bridge::BridgeModel;
 
 /// A code of [`super::code_check`], in the table's column order.

@@ -7,6 +7,7 @@ use pounding::assessment::check::{CODES, Code, Requirement, check_scenario, seat
 use pounding::assessment::check_write::{check_csv, check_json};
 use pounding::assessment::code_check::{self as cc, AashtoZone, Ec8Seat, GroundType, SeatKind};
 use pounding::assessment::{AssessmentError, CodeCheckInput};
+use pounding::sim::Problem;
 use pounding::sim::scenario::Scenario;
 use std::f64::consts::PI;
 
