@@ -1,62 +1,115 @@
-//! Time integration of a bridge: the stepper of its contact sites in the one driver loop.
+//! Time integration of a bridge: an [`Integrator`] owns the loop over time of a whole run.
 //!
-//! Every joint and abutment is a contact site with its own law, rigid (an impact law, solved by
-//! the impact LCP of [`super::rigid`]) or compliance (a force law, solved by Newton's method in
-//! [`super::compliance`]). [`integrate`] takes the rigid stepper when every site is rigid, the
-//! compliance stepper when every site has a compliance law, and otherwise both, each restricted
-//! to its own sites and coupled per step ([`super::mixed`]). The two-deck model runs here too,
-//! as its bridge of two segments.
+//! The model (bodies, links, supports, contact sites with their laws) is the integrator's input
+//! ([`RunInput`]); the integrator decides how time advances. Today there is one:
+//! [`MoreauJean`], the θ-method time stepping of `driver.rs` (module doc of [`crate::sim`]),
+//! whose per-step contact treatment is a stepper chosen from the sites' kinds — every joint and
+//! abutment is a contact site with its own law, rigid (an impact law, solved by the impact LCP of
+//! [`super::rigid`]) or compliance (a force law, solved by Newton's method in
+//! [`super::compliance`]): the rigid stepper when every site is rigid, the compliance stepper when
+//! every site has a compliance law, and otherwise both, each restricted to its own sites and
+//! coupled per step ([`super::mixed`]).
+//!
+//! Another integrator (an event-driven one: smooth flow between events, root finding on the
+//! gaps, an impact LCP at each event) is another implementation of [`Integrator`] with its own
+//! loop, returning the same [`driver::RunResult`] from the same input, selected in
+//! [`integrate`]; the Moreau–Jean loop is not touched. The two-deck model runs here too, as its
+//! bridge of two segments.
 
 use super::bridge::{BridgeModel, abut_key, check, joint_key};
 use super::contact::State;
-use super::driver::{self, Bridge};
+use super::driver::{self, BodySystem, Bridge};
 use super::{JointContact, SimError, SimSettings, compliance, rigid};
 use crate::analytic::ImpactLaw;
 use crate::ground_motion::GroundMotion;
 use crate::math::Real;
 
-/// Integrates a validated `model` from the initial state of `problem` over the driver's view
-/// `bridge` of it ([`BridgeModel::bridge`], whose seat order a preset may change): the stepper of
-/// its contact sites in the one driver loop — the rigid one when every site is rigid, the
-/// compliance one when every site has a compliance law, else both coupled
-/// ([`super::mixed`]). Returns the run, its scheme and the kinds of the sites. The time step
-/// and the contact laws are checked here.
+/// What an integrator integrates: a validated model, the driver's view of it, the segments'
+/// linear systems, the kinds of its contact sites, the ground motion, the initial state and the
+/// settings.
+pub(crate) struct RunInput<'a> {
+    /// The bridge.
+    pub model: &'a BridgeModel,
+    /// Its lists (segments, joints, abutments, seats, elements, supports).
+    pub bridge: &'a Bridge,
+    /// Each segment's `M`, `K`, `C`.
+    pub systems: &'a [BodySystem],
+    /// Which sites are rigid and which compliant.
+    pub kinds: &'a SiteKinds,
+    /// The ground acceleration.
+    pub ground: &'a GroundMotion,
+    /// `(q(0), u(0))`.
+    pub initial: (&'a [Real], &'a [Real]),
+    /// Step, duration, θ, history stride, monitors.
+    pub settings: &'a SimSettings,
+}
+
+/// A time integrator of a whole run (module doc).
+pub(crate) trait Integrator {
+    /// Integrates the run from its initial state to its end (or to divergence).
+    fn integrate(&self, run: &RunInput<'_>) -> Result<driver::RunResult, SimError>;
+}
+
+/// Moreau–Jean time stepping (θ-method + a velocity-level contact step), the loop of
+/// `driver.rs`, with the stepper of the run's contact-site kinds.
+pub(crate) struct MoreauJean;
+
+impl Integrator for MoreauJean {
+    fn integrate(&self, run: &RunInput<'_>) -> Result<driver::RunResult, SimError> {
+        let (model, bridge, kinds, settings) = (run.model, run.bridge, run.kinds, run.settings);
+        let scheme = driver::Scheme::new(run.ground, settings, run.systems.to_vec())?;
+        let q0 = State::from_column_slice(run.initial.0);
+        let u0 = State::from_column_slice(run.initial.1);
+        let observers = super::observer::standard(bridge);
+        let (any_rigid, any_compliant) = (kinds.any(false), kinds.any(true));
+        let rigid = || model.rigid_stepper(kinds, settings);
+        let compliance = || model.compliance_stepper(kinds, bridge, &scheme, (&q0, &u0));
+        Ok(match (any_rigid, any_compliant) {
+            (_, false) => {
+                let mut stepper = rigid()?;
+                driver::run(q0, u0, settings, &scheme, bridge, &mut stepper, observers)
+            }
+            (false, true) => {
+                let mut stepper = compliance()?.0;
+                driver::run(q0, u0, settings, &scheme, bridge, &mut stepper, observers)
+            }
+            (true, true) => {
+                let (c, joint_site, abutment_site) = compliance()?;
+                let mut stepper =
+                    super::mixed::MixedStepper::new(rigid()?, c, joint_site, abutment_site);
+                driver::run(q0, u0, settings, &scheme, bridge, &mut stepper, observers)
+            }
+        })
+    }
+}
+
+/// Integrates a validated `model` from `initial` over the driver's view `bridge` of it
+/// ([`BridgeModel::bridge`]) with the run's integrator ([`MoreauJean`]). Returns the run, the
+/// segments' linear systems and the kinds of the sites. The contact laws, the supports' motion
+/// (uniform: relative coordinates) and the time step are checked here.
 pub(crate) fn integrate(
     model: &BridgeModel,
     bridge: &Bridge,
     ground: &GroundMotion,
-    (q0, u0): (&[Real], &[Real]),
+    initial: (&[Real], &[Real]),
     settings: &SimSettings,
-) -> Result<(driver::RunResult, driver::Scheme, SiteKinds), SimError> {
+) -> Result<(driver::RunResult, Vec<BodySystem>, SiteKinds), SimError> {
     let kinds = model.contact_kinds()?;
     // relative coordinates: every support moves with the one ground motion (support.rs)
     super::support::check_uniform(&bridge.supports)?;
     model.check_time_step(settings.dt)?;
     let systems = model.body_systems()?;
-    let scheme = driver::Scheme::new(ground, settings, systems)?;
-    let q0 = State::from_column_slice(q0);
-    let u0 = State::from_column_slice(u0);
-    let observers = super::observer::standard(bridge);
-    let (any_rigid, any_compliant) = (kinds.any(false), kinds.any(true));
-    let rigid = || model.rigid_stepper(&kinds, settings);
-    let compliance = || model.compliance_stepper(&kinds, bridge, &scheme, (&q0, &u0));
-    let result = match (any_rigid, any_compliant) {
-        (_, false) => {
-            let mut stepper = rigid()?;
-            driver::run(q0, u0, settings, &scheme, bridge, &mut stepper, observers)
-        }
-        (false, true) => {
-            let mut stepper = compliance()?.0;
-            driver::run(q0, u0, settings, &scheme, bridge, &mut stepper, observers)
-        }
-        (true, true) => {
-            let (c, joint_site, abutment_site) = compliance()?;
-            let mut stepper =
-                super::mixed::MixedStepper::new(rigid()?, c, joint_site, abutment_site);
-            driver::run(q0, u0, settings, &scheme, bridge, &mut stepper, observers)
-        }
+    let run = RunInput {
+        model,
+        bridge,
+        systems: &systems,
+        kinds: &kinds,
+        ground,
+        initial,
+        settings,
     };
-    Ok((result, scheme, kinds))
+    let result = MoreauJean.integrate(&run)?;
+    Ok((result, systems, kinds))
 }
 
 /// Which contact sites have a compliance law (`true`) and which are rigid (`false`).

@@ -50,10 +50,14 @@ pub fn simulate<P: Problem + ?Sized>(
     problem.check_initial()?;
     let model = problem.model();
     let view = model.bridge();
-    let (result, scheme, kinds) =
+    let (result, systems, kinds) =
         super::integrate::integrate(&model, &view, problem.ground(), problem.initial(), settings)?;
     Ok(super::solution::solution(
-        result, &scheme, &view, &model, &kinds,
+        result,
+        (&systems, settings.dt),
+        &view,
+        &model,
+        &kinds,
     ))
 }
 

@@ -340,7 +340,7 @@ pub(crate) fn seat_name(seat: &SeatEnd) -> String {
 /// Assembles the [`BridgeSolution`] of a run (its seats in the order of `br.seats`).
 pub(crate) fn solution(
     r: driver::RunResult,
-    sc: &driver::Scheme,
+    (systems, dt): (&[driver::BodySystem], Real),
     br: &Bridge,
     model: &BridgeModel,
     kinds: &SiteKinds,
@@ -376,8 +376,8 @@ pub(crate) fn solution(
                 peak_bearing_deformation: peaks.bearing[i].sqrt(),
                 hysteretic_energy: r.elements.w_bearings.get(i).copied().unwrap_or(0.0)
                     - correction[i],
-                frequencies: sc.bodies[i].frequencies,
-                rayleigh: sc.bodies[i].rayleigh,
+                frequencies: systems[i].frequencies,
+                rayleigh: systems[i].rayleigh,
             }
         })
         .collect();
@@ -436,7 +436,7 @@ pub(crate) fn solution(
     BridgeSolution {
         status: r.status,
         steps: r.steps,
-        dt: sc.h,
+        dt,
         n_segments: nb,
         dofs: br.dofs.clone(),
         t: tr.t,
