@@ -27,101 +27,12 @@
 
 use super::AssessmentError;
 use super::check_codes::end_requirement;
+pub use super::check_codes::{CODES, Code, Requirement, SeatedEnd};
 use super::check_input::{CodeCheckInput, PeriodInput};
 use super::code_check::{self as cc, CodeCheckError, SeatKind};
 use crate::math::Real;
 use crate::sim::Problem;
 use crate::sim::bridge::BridgeModel;
-
-/// A code of [`super::code_check`], in the table's column order.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Code {
-    /// EN 1998-2 §6.6.4.
-    Ec8,
-    /// AASHTO LRFD 4.7.4.4.
-    AashtoLrfd,
-    /// AASHTO Guide Specifications for LRFD Seismic Bridge Design §4.12.
-    AashtoGuide,
-    /// Caltrans Seismic Design Criteria 1.7.
-    Caltrans,
-    /// JRA Specifications for Highway Bridges Part V §16.2.
-    Jra,
-}
-
-/// Every code, in column order.
-pub const CODES: [Code; 5] = [
-    Code::Ec8,
-    Code::AashtoLrfd,
-    Code::AashtoGuide,
-    Code::Caltrans,
-    Code::Jra,
-];
-
-impl Code {
-    /// Column name: `ec8`, `aashto_lrfd`, `aashto_guide`, `caltrans`, `jra`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Code::Ec8 => "ec8",
-            Code::AashtoLrfd => "aashto_lrfd",
-            Code::AashtoGuide => "aashto_guide",
-            Code::Caltrans => "caltrans",
-            Code::Jra => "jra",
-        }
-    }
-    /// The code and clause, for people.
-    pub fn title(self) -> &'static str {
-        match self {
-            Code::Ec8 => "EN 1998-2 §6.6.4",
-            Code::AashtoLrfd => "AASHTO LRFD 4.7.4.4",
-            Code::AashtoGuide => "AASHTO Guide Spec §4.12",
-            Code::Caltrans => "Caltrans SDC 1.7",
-            Code::Jra => "JRA V §16.2",
-        }
-    }
-}
-
-/// A requirement of one code: a length, or why it was not evaluated.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Requirement {
-    /// The required length \[m\].
-    Required(Real),
-    /// Not evaluated: what is missing.
-    NotEvaluated(String),
-}
-
-impl Requirement {
-    /// The length, if evaluated.
-    pub fn value(&self) -> Option<Real> {
-        match self {
-            Requirement::Required(x) => Some(*x),
-            Requirement::NotEvaluated(_) => None,
-        }
-    }
-}
-
-/// A seated end and what the model says of it.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SeatedEnd {
-    /// `segment<i>-start` / `segment<i>-end` (1-based, as `summary.json`'s `seats[]`).
-    pub end: String,
-    /// The segment (0-based).
-    pub segment: usize,
-    /// What it sits on: `abutment-start`, `abutment-end`, `joint<k>` (1-based), `outer-start`,
-    /// `outer-end`.
-    pub support: String,
-    /// The joint (0-based) when it sits on one.
-    pub joint: Option<usize>,
-    /// Caltrans' kind of seat (an outer pier seat counts as a hinge seat).
-    pub kind: SeatKind,
-    /// The provided seat length \[m\].
-    pub seat_length: Real,
-    /// Deck length `L` to the adjacent joint or end of the bridge \[m\].
-    pub deck_length: Real,
-    /// Skew `θ` \[deg\].
-    pub skew_deg: Real,
-    /// Subtended angle `β` of a curved segment \[deg\].
-    pub subtended_deg: Option<Real>,
-}
 
 /// The seated ends of `model`, from the start: per segment its start end, then its end end.
 pub fn seated_ends(model: &BridgeModel) -> Vec<SeatedEnd> {

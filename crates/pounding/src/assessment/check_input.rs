@@ -9,6 +9,7 @@
 
 use super::AssessmentError;
 use super::check_values::Cx;
+pub use super::check_values::PerSegment;
 use super::code_check::{AashtoZone, GroundType, JraGround, Sdc, SpectrumType};
 use crate::math::Real;
 use crate::toml_schema::Table;
@@ -47,26 +48,6 @@ pub const DEFAULTS: &[(&str, &str)] = &[
     ("delta_temp_m", "0"),
     ("jra_ground", "\"III\" (the largest ε_G)"),
 ];
-
-/// A value given once for every segment or once per segment.
-#[derive(Debug, Clone, PartialEq)]
-pub enum PerSegment {
-    /// The same value at every segment.
-    All(Real),
-    /// One value per segment, from the start.
-    Each(Vec<Real>),
-}
-
-impl PerSegment {
-    /// The value of segment `i` (0-based); `None` past the list's end (refused by
-    /// [`CodeCheckInput::check_segments`]).
-    pub fn of(&self, i: usize) -> Option<Real> {
-        match self {
-            PerSegment::All(x) => Some(*x),
-            PerSegment::Each(v) => v.get(i).copied(),
-        }
-    }
-}
 
 /// The periods of the frames for the double-difference gap.
 #[derive(Debug, Clone, PartialEq)]

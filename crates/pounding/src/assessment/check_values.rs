@@ -2,11 +2,30 @@
 //! errors naming `code_check.KEY`, the file and the line.
 
 use super::AssessmentError;
-use super::check_input::PerSegment;
 use crate::math::Real;
 use crate::output::float_token;
 use crate::toml_schema::line_col;
 use toml::Spanned;
+
+/// A value given once for every segment or once per segment.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PerSegment {
+    /// The same value at every segment.
+    All(Real),
+    /// One value per segment, from the start.
+    Each(Vec<Real>),
+}
+
+impl PerSegment {
+    /// The value of segment `i` (0-based); `None` past the list's end (refused by
+    /// [`CodeCheckInput::check_segments`]).
+    pub fn of(&self, i: usize) -> Option<Real> {
+        match self {
+            PerSegment::All(x) => Some(*x),
+            PerSegment::Each(v) => v.get(i).copied(),
+        }
+    }
+}
 
 type Sp<T> = Option<Spanned<T>>;
 

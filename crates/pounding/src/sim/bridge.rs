@@ -43,9 +43,10 @@ pub use super::solution::{
 
 use super::contact::JointGeom;
 use super::dofs::Dofs;
-use super::driver::{self, AbutmentFace, BodySystem, Bridge, SeatEnd, SeatSupport};
 use super::model::{EndFace, SegmentBody, deck_frequencies, rayleigh_coefficients};
+use super::scheme::BodySystem;
 use super::support::{Attachment, Support};
+use super::view::{AbutmentFace, Bridge, SeatEnd, SeatSupport};
 use super::{Bearing, DampingModel, JointContact, SimError};
 use crate::geometry::MassProperties;
 use crate::ground_motion::GroundMotion;
@@ -674,7 +675,7 @@ impl BridgeModel {
                 .zip(&self.segments)
                 .enumerate()
                 .map(|(i, (points, s))| {
-                    let at = |(p, b): (Vector, &Bearing)| driver::BearingAt {
+                    let at = |(p, b): (Vector, &Bearing)| super::view::BearingAt {
                         top: Attachment::Body(i, p),
                         bottom: Attachment::Support(Support::GROUND, p),
                         stiffness: b.stiffness,

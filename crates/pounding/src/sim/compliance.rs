@@ -59,10 +59,10 @@
 //! [`super::bridge::BridgeSolution::time_step_advice`] (the CLI warns when it is not adequate).
 #![allow(clippy::needless_range_loop)]
 use super::contact::{JointGeom, Pose, State, candidates};
-use super::driver::{
-    Bridge, ImpactLog, Scheme, StepInput, StepOutput, Stepper, StepperStats, Winv,
-};
+use super::driver::{ImpactLog, StepInput, StepOutput, Stepper, StepperStats};
 use super::model::SegmentBody;
+use super::scheme::{Scheme, Winv};
+use super::view::Bridge;
 use super::{ImpactRecord, SimContact};
 use crate::analytic::SlipMode;
 use crate::contact_law::sharing::JointLaw;
@@ -194,7 +194,7 @@ pub(crate) struct ComplianceStepper {
     /// The DOF map of the segments.
     dofs: super::dofs::Dofs,
     joints: Vec<super::contact::JointGeom>,
-    abutments: Vec<super::driver::AbutmentFace>,
+    abutments: Vec<super::view::AbutmentFace>,
     /// Law of each site.
     sites: Vec<SiteLaw>,
     vr: Real,
@@ -226,7 +226,7 @@ impl ComplianceStepper {
         q0: &State,
         u0: &State,
         sites: Vec<SiteLaw>,
-        (joints, abutments): (Vec<JointGeom>, Vec<super::driver::AbutmentFace>),
+        (joints, abutments): (Vec<JointGeom>, Vec<super::view::AbutmentFace>),
         friction_velocity: Real,
         scheme: &Scheme,
         bridge: &Bridge,

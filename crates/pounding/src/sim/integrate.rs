@@ -18,7 +18,9 @@
 
 use super::bridge::{BridgeModel, abut_key, check, joint_key};
 use super::contact::State;
-use super::driver::{self, BodySystem, Bridge};
+use super::driver::{self};
+use super::scheme::BodySystem;
+use super::view::Bridge;
 use super::{JointContact, SimError, SimSettings, compliance, rigid};
 use crate::analytic::ImpactLaw;
 use crate::ground_motion::GroundMotion;
@@ -57,7 +59,7 @@ pub(crate) struct MoreauJean;
 impl Integrator for MoreauJean {
     fn integrate(&self, run: &RunInput<'_>) -> Result<driver::RunResult, SimError> {
         let (model, bridge, kinds, settings) = (run.model, run.bridge, run.kinds, run.settings);
-        let scheme = driver::Scheme::new(run.ground, settings, run.systems.to_vec())?;
+        let scheme = super::scheme::Scheme::new(run.ground, settings, run.systems.to_vec())?;
         let q0 = State::from_column_slice(run.initial.0);
         let u0 = State::from_column_slice(run.initial.1);
         let observers = super::observer::standard(bridge);
@@ -186,7 +188,7 @@ impl BridgeModel {
         &self,
         kinds: &SiteKinds,
         bridge: &Bridge,
-        scheme: &driver::Scheme,
+        scheme: &super::scheme::Scheme,
         (q0, u0): (&State, &State),
     ) -> Result<
         (

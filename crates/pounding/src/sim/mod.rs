@@ -74,9 +74,11 @@ pub mod output;
 pub mod problem;
 mod rigid;
 pub mod scenario;
+mod scheme;
 mod solution;
 mod support;
 pub mod table;
+mod view;
 mod yielding;
 
 use crate::analytic::SlipMode;

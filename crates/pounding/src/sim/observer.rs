@@ -20,9 +20,9 @@
 //!   `history.csv` reports it.
 
 use super::dofs::Dofs;
-use super::driver::{Bridge, Frame};
 use super::elements::Elements;
 use super::table::{Column, Table};
+use super::view::{Bridge, Frame};
 use crate::math::{Real, Vector};
 
 /// The committed state at a kept step, as the observers see it.

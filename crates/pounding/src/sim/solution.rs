@@ -4,8 +4,9 @@
 
 use super::bridge::{ABUTMENT_SIDES, BridgeModel};
 use super::dofs::Dofs;
-use super::driver::{self, Bridge, SeatEnd, SeatSupport};
+use super::driver::{self};
 use super::integrate::SiteKinds;
+use super::view::{Bridge, SeatEnd, SeatSupport};
 use super::{Energy, ImpactRecord, SimContact, SimStatus};
 use crate::contact_law::timestep::TimeStepAdvice;
 use crate::math::Real;
@@ -340,7 +341,7 @@ pub(crate) fn seat_name(seat: &SeatEnd) -> String {
 /// Assembles the [`BridgeSolution`] of a run (its seats in the order of `br.seats`).
 pub(crate) fn solution(
     r: driver::RunResult,
-    (systems, dt): (&[driver::BodySystem], Real),
+    (systems, dt): (&[super::scheme::BodySystem], Real),
     br: &Bridge,
     model: &BridgeModel,
     kinds: &SiteKinds,

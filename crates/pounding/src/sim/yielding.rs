@@ -28,7 +28,7 @@
 //! stays elastic gives `g = 0` at the first estimate: such steps keep their bits.
 //!
 //! # Contacts in the same step
-//! The contact stepper sees the tangent `Ŵ_t⁻¹` ([`super::driver::Winv`]), so its impulses move
+//! The contact stepper sees the tangent `Ŵ_t⁻¹` ([`super::scheme::Winv`]), so its impulses move
 //! each segment with its bearings on the branch they are on: the end force is the linearisation
 //! `R̃(q_f) + J (q⁺ − q_f)` about the contact-free end `q_f`, exact while no bearing changes
 //! branch (1-D flow). Where the impulse does change a branch (or turns the flow of a 2-D
@@ -42,8 +42,8 @@
 //! a convex set).
 
 use super::contact::State;
-use super::driver::Scheme;
 use super::elements::{StepForce, YieldingBearing};
+use super::scheme::Scheme;
 use crate::math::{Real, Vector};
 use nalgebra::{Matrix2x3, Matrix3, Vector3};
 

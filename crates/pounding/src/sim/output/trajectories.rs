@@ -209,7 +209,7 @@ fn ground_peaks(ground: &GroundMotion, sol: &BridgeSolution) -> [Real; 2] {
 }
 
 /// The seats, bearings and restrainers of the bridge (module doc), each key on its own line.
-fn write_links(s: &mut String, bridge: &crate::sim::driver::Bridge, sol: &BridgeSolution) {
+fn write_links(s: &mut String, bridge: &crate::sim::view::Bridge, sol: &BridgeSolution) {
     // each cable's largest tension over the kept rows of the restrainers table
     let cable_peaks: Vec<Real> = restrainer_forces(sol).map_or_else(Vec::new, |(t, cols)| {
         cols.iter()

@@ -1,0 +1,156 @@
+//! The driver's view of a bridge as lists: segments (bodies), joints, abutment faces, seated
+//! ends, bearings, supports, elements, and the geometry of one state ([`Frame`]). Built by
+//! `BridgeModel::bridge`; read by the driver, the steppers, the observers and the solution.
+
+use super::contact::{JointFrame, JointGeom, Pose, State, candidates};
+use super::dofs::Dofs;
+use super::model::SegmentBody;
+use super::support::Attachment;
+use crate::math::{Real, Vector};
+
+/// An abutment face (the ground) beyond the start face of the first segment or the end face of
+/// the last one ([`super::SimAbutment`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct AbutmentFace {
+    /// The segment (0-based) whose outer face meets it.
+    pub body: usize,
+    /// 0: the start abutment, 1: the end abutment.
+    pub side: usize,
+    /// The segment's face corners (reference pose).
+    pub corners: [Vector; 2],
+    /// Normal into the segment.
+    pub normal: Vector,
+    /// Tangent `perp(n)`.
+    pub tangent: Vector,
+    /// A point of the face (reference pose).
+    pub point: Vector,
+    /// Reference gap.
+    pub gap: Real,
+}
+
+impl AbutmentFace {
+    /// The abutment at `gap` beyond `side` (0: start, 1: end) of `body`, support `support`.
+    pub fn new(bodies: &[SegmentBody], (body, side): (usize, usize), gap: Real) -> Self {
+        let face = if side == 0 {
+            &bodies[body].start
+        } else {
+            &bodies[body].end
+        };
+        let n = face.inward;
+        AbutmentFace {
+            body,
+            side,
+            corners: face.corners,
+            normal: n,
+            tangent: Vector::new(-n.y, n.x),
+            point: face.mid - n * gap,
+            gap,
+        }
+    }
+}
+
+/// What a seated end rests on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum SeatSupport {
+    /// The abutment of a side (0 start, 1 end).
+    Abutment(usize),
+    /// Joint `k` (0-based, between segments `k` and `k + 1`).
+    Joint(usize),
+    /// An outer seat without abutment, of a side (0 start, 1 end).
+    Outer(usize),
+}
+
+/// A segment end resting on a seat.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct SeatEnd {
+    /// The segment.
+    pub body: usize,
+    /// The segment's end face (`false`: its start face).
+    pub at_end: bool,
+    /// What it rests on.
+    pub support: SeatSupport,
+    /// Its corners (reference pose).
+    pub corners: [Vector; 2],
+    /// Inward normal of the face.
+    pub inward: Vector,
+    /// Seat length.
+    pub length: Real,
+}
+
+/// A bearing under a segment: its point (global reference pose) and its (initial) stiffness.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct BearingAt {
+    /// Its top: a point of the segment it carries.
+    pub top: Attachment,
+    /// Its bottom: a point of the support under it ([`Bridge::supports`]; the ground).
+    pub bottom: Attachment,
+    /// Stiffness in each plan direction \[N/m\].
+    pub stiffness: Real,
+}
+
+impl BearingAt {
+    /// The arm `r = p − G⁰` of a bearing from a segment to a support (the segment's point from
+    /// its reference centroid); `(0, 0)` for another kind of link.
+    pub fn arm(&self, bodies: &[SegmentBody]) -> Vector {
+        match (self.top, self.bottom) {
+            (Attachment::Body(i, p), Attachment::Support(..)) => p - bodies[i].centroid,
+            _ => Vector::zeros(),
+        }
+    }
+
+    /// The linearised deformation `u_top − u_bottom` at `q` ([`Attachment::linear_displacement`]).
+    #[inline]
+    pub fn deformation(&self, dofs: &Dofs, q: &[Real], bodies: &[SegmentBody]) -> Vector {
+        self.top.linear_displacement(dofs, q, bodies)
+            - self.bottom.linear_displacement(dofs, q, bodies)
+    }
+}
+
+/// The bridge as lists: segments, joints, abutments, seated ends.
+pub(crate) struct Bridge {
+    /// Reference-pose segments.
+    pub bodies: Vec<SegmentBody>,
+    /// Joint `k` between segments `k` and `k + 1`.
+    pub joints: Vec<JointGeom>,
+    /// Abutment faces (only the present ones), start before end.
+    pub abutments: Vec<AbutmentFace>,
+    /// Seated ends, in the order of the seat outputs.
+    pub seats: Vec<SeatEnd>,
+    /// The supports: the ground (0), then the present abutments ([`super::support`]).
+    pub supports: Vec<super::support::Support>,
+    /// Where each segment's coordinates sit in `q` and `u`.
+    pub dofs: Dofs,
+    /// The bearings of each segment.
+    pub bearings: Vec<Vec<BearingAt>>,
+    /// Yielding bearings and restrainers in their initial state.
+    pub elements: super::elements::Elements,
+}
+
+impl Bridge {
+    /// The geometry at `q`.
+    pub fn frame(&self, q: &State) -> Frame {
+        let pose = Pose::new(&self.bodies, &self.dofs, q.as_slice());
+        let joints = self
+            .joints
+            .iter()
+            .map(|j| candidates(&self.bodies, &pose, j))
+            .collect();
+        Frame { pose, joints }
+    }
+
+    /// [`Self::frame`] at `q` into `frame` (a frame of this bridge), reusing its storage.
+    pub fn update_frame(&self, q: &State, frame: &mut Frame) {
+        frame.pose.set(&self.bodies, &self.dofs, q.as_slice());
+        for (jf, j) in frame.joints.iter_mut().zip(&self.joints) {
+            *jf = candidates(&self.bodies, &frame.pose, j);
+        }
+    }
+}
+
+/// The geometry of one state: pose and the candidates of every joint.
+pub(crate) struct Frame {
+    /// The pose.
+    pub pose: Pose,
+    /// Per joint: its candidates and the realised one of each end.
+    pub joints: Vec<JointFrame>,
+}
