@@ -4,7 +4,6 @@
 
 use pounding::sim::output::{
     BATCH_HEADER, COMPARE_HEADER, History, Layout, batch_csv, compare_csv, impacts_csv,
-    summary_json_text,
 };
 use pounding::sim::scenario::{
     DEFAULT_SCENARIO_TOML, LAW_NAMES, ParamKey, Scenario, ScenarioError, Section,
@@ -252,7 +251,8 @@ fn writers_rows_match_their_headers() {
     let pair = pounding::sim::bridge::BridgeModel::from_pair(&setup.problem.model);
     let i = impacts_csv(Layout::TwoDecks, &pair, &sol);
     assert_eq!(i.lines().count(), sol.impacts.len() + 1);
-    let j = summary_json_text(&setup, &sol);
+    let j =
+        pounding::sim::scenario::Setup::TwoDecks(Box::new(setup.clone())).summary_json_text(&sol);
     assert!(j.ends_with("}\n"));
     let v: serde_json::Value = serde_json::from_str(&j).unwrap();
     assert_eq!(v["steps"], sol.steps);

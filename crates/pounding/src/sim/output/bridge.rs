@@ -80,7 +80,7 @@ fn bridge_arrays(
 /// The `summary.json` of a bridge run: `joints`, `abutments` (`[start, end]`, `null` where
 /// absent) and `segments` arrays in bridge order, the whole-bridge figures, status, ground motion
 /// and model.
-pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
+pub(crate) fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
     let s = &sol.summary;
     let m = &setup.problem.model;
     let e = &s.final_energy;
@@ -152,7 +152,7 @@ pub fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
 }
 
 /// `summary.json` as written: pretty-printed with a final newline.
-pub fn bridge_summary_json_text(setup: &BridgeSetup, sol: &BridgeSolution) -> String {
+pub(crate) fn bridge_summary_json_text(setup: &BridgeSetup, sol: &BridgeSolution) -> String {
     let mut v = bridge_summary_json(setup, sol);
     crate::output::json_without_negative_zero(&mut v);
     let mut s = serde_json::to_string_pretty(&v).unwrap_or_default();

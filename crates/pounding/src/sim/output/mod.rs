@@ -22,7 +22,8 @@ mod impacts;
 mod input_warnings;
 mod trajectories;
 pub use batch::{BATCH_HEADER, BATCH_TAIL, batch_csv, bridge_batch_header};
-pub use bridge::{bridge_summary_json, bridge_summary_json_text, governing_seat_line};
+pub(crate) use bridge::bridge_summary_json_text;
+pub use bridge::governing_seat_line;
 pub use bridge_plan::{
     BridgePlan, CornerPaths, bridge_plan, corner_paths, joint_openings, plan_exaggeration,
     segment_displacements,
@@ -277,7 +278,7 @@ pub fn warnings_message(w: &[RunWarning]) -> Option<String> {
 
 /// The `summary.json` value: peaks, unseating, energies, status and counters, the ground motion
 /// and the model (keys for straight/skewed decks, abutments and compliance laws only when used).
-pub fn summary_json(setup: &SimSetup, sol: &BridgeSolution) -> serde_json::Value {
+pub(crate) fn pair_summary_json(setup: &SimSetup, sol: &BridgeSolution) -> serde_json::Value {
     let s = &sol.summary;
     let e = &s.final_energy;
     let m = &setup.problem.model;
@@ -443,9 +444,9 @@ pub(crate) fn add_run_keys(v: &mut serde_json::Value, r: &RunKeys) {
     v["lcp_failures"] = json!(r.lcp[2]);
 }
 
-/// `summary.json` as written: [`summary_json`] pretty-printed, with a final newline.
-pub fn summary_json_text(setup: &SimSetup, sol: &BridgeSolution) -> String {
-    let mut v = summary_json(setup, sol);
+/// `summary.json` as written: [`pair_summary_json`] pretty-printed, with a final newline.
+pub(crate) fn pair_summary_json_text(setup: &SimSetup, sol: &BridgeSolution) -> String {
+    let mut v = pair_summary_json(setup, sol);
     crate::output::json_without_negative_zero(&mut v);
     let mut s = serde_json::to_string_pretty(&v).unwrap_or_default();
     s.push('\n');

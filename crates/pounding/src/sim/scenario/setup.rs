@@ -93,7 +93,7 @@ impl Setup {
     /// `summary.json` of a run of it, as written.
     pub fn summary_json_text(&self, sol: &BridgeSolution) -> String {
         match self {
-            Setup::TwoDecks(s) => output::summary_json_text(s, sol),
+            Setup::TwoDecks(s) => output::pair_summary_json_text(s, sol),
             Setup::Bridge(s) => output::bridge_summary_json_text(s, sol),
         }
     }
