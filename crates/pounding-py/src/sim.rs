@@ -316,8 +316,30 @@ fn default_study_scenario() -> &'static str {
 }
 
 /// Registers the simulation functions.
+/// `pounding check`: the code check of a scenario's seats and joint gaps, as the texts of
+/// `check.json`, `check.csv`, `check_gaps.csv` and the printed table.
+#[pyfunction]
+#[pyo3(signature = (path=None, text=None, origin="scenario"))]
+fn check_run(
+    path: Option<&str>,
+    text: Option<String>,
+    origin: &str,
+) -> PyResult<(String, String, String, String)> {
+    use pounding::assessment::check_write::{check_csv, check_gaps_csv, check_json, check_text};
+    let sc = load(path, text, origin)?;
+    let report = pounding::assessment::check_scenario(&sc).map_err(value_error)?;
+    let o = sc.origin();
+    Ok((
+        check_json(&report, o),
+        check_csv(&report),
+        check_gaps_csv(&report),
+        check_text(&report, o),
+    ))
+}
+
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<SimRun>()?;
+    m.add_function(wrap_pyfunction!(check_run, m)?)?;
     m.add_function(wrap_pyfunction!(simulate_run, m)?)?;
     m.add_function(wrap_pyfunction!(batch_run, m)?)?;
     m.add_function(wrap_pyfunction!(default_simulate_scenario, m)?)?;

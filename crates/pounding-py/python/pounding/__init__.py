@@ -7,7 +7,8 @@ same numbers (bit for bit), numpy arrays and pandas tables instead of files.
 * :func:`impact` — one oblique frictional impact (bridge, joint, abutment or generic form);
 * :func:`study` — the parametric stick/slip study (``bounds.csv`` rows as a DataFrame);
 * :func:`simulate` — a seismic time history (``summary.json`` dict, numpy histories);
-* :func:`batch` — records × scales in parallel (``batch.csv`` rows).
+* :func:`batch` — records × scales in parallel (``batch.csv`` rows);
+* :func:`check` — the code check of seats and joint gaps (``pounding check``).
 
 Bad input raises ``ValueError`` with the CLI's message; :class:`SolverError` is raised where the
 CLI fails without a result. Numerical trouble is a *status* in the result, never an exception.
@@ -17,7 +18,7 @@ Heavy calls release the GIL.
 from . import lcp
 from ._core import SolverError, __version__
 from ._impact import ImpactResult, impact
-from ._sim import SimulationResult, batch, default_simulate_scenario, simulate
+from ._sim import SimulationResult, batch, check, default_simulate_scenario, simulate
 from ._study import StudyResult, default_study_scenario, study
 
 __all__ = [
@@ -30,6 +31,7 @@ __all__ = [
     "SimulationResult",
     "simulate",
     "batch",
+    "check",
     "default_simulate_scenario",
     "default_study_scenario",
     "__version__",

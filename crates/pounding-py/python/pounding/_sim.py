@@ -320,3 +320,28 @@ def default_simulate_scenario() -> str:
 
 
 __all__ = ["SimulationResult", "simulate", "batch", "default_simulate_scenario", "parse_csv"]
+
+
+def check(scenario: Any = None) -> Dict[str, Any]:
+    """The code check of a scenario's seats and joint gaps, as ``pounding check``.
+
+    Args:
+        scenario: a scenario file path, a TOML string or a dict with the file's keys (a bridge
+            of ``[[segment]]``s or a two-deck file), its inputs in ``[code_check]``.
+
+    Returns:
+        A dict: ``"report"`` (``json.load(check.json)``), ``"ends"`` and ``"gaps"`` (the rows of
+        ``check.csv`` and ``check_gaps.csv`` as DataFrames, or lists of dicts without pandas),
+        ``"text"`` (the table the CLI prints) and ``"files"`` (each file's exact text).
+
+    Raises:
+        ValueError: bad input, with the CLI's message (file, key, line).
+    """
+    j, ends, gaps, text = _core.check_run(**scenario_args(scenario, "simulate"))
+    return {
+        "report": json.loads(j),
+        "ends": csv_table(ends),
+        "gaps": csv_table(gaps),
+        "text": text,
+        "files": {"check.json": j, "check.csv": ends, "check_gaps.csv": gaps},
+    }
