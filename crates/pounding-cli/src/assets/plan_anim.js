@@ -68,6 +68,15 @@
     for (var k = 0; k < F.length; k++) if (seatState(F[k].q)[j].ratio >= 1) return Math.min(F[k].t, e.peak_time);
     return e.peak_time;
   });
+  // each frame's index by time (frames are in increasing time): the nearest frame to t
+  function frameAt(t) {
+    var lo = 0, hi = F.length - 1;
+    while (hi - lo > 1) { var m = (lo + hi) >> 1; if (F[m].t <= t) lo = m; else hi = m; }
+    return Math.abs(F[hi].t - t) < Math.abs(F[lo].t - t) ? hi : lo;
+  }
+  // every impact flashes in exactly one frame: its nearest (where its jump button lands)
+  var impactsAt = F.map(function () { return []; });
+  D.impacts.forEach(function (im) { impactsAt[frameAt(im.t)].push(im); });
   var rfPeak = 0;
   (D.restrainers || []).forEach(function (r) { if (r.peak_force) rfPeak = Math.max(rfPeak, r.peak_force); });
   function view() {
@@ -147,10 +156,9 @@
       rs.push({ joint: r.joint, force: fr, a: A, b: B });
     });
     g.lineWidth = 1;
-    // impacts within half a frame spacing of this time, one marker per site (the largest)
-    var win = spacing / 2 * (1 + 1e-9), bySite = {}, marks = [];
-    D.impacts.forEach(function (im) {
-      if (Math.abs(im.t - f.t) > win) return;
+    // the impacts whose nearest frame this is, one marker per site (the largest)
+    var bySite = {}, marks = [];
+    impactsAt[state.frame].forEach(function (im) {
       var key = im.site_kind + im.site, size = im.peak_force === null ? im.impulse_n : im.peak_force;
       var cur = bySite[key];
       if (cur && cur.size >= size) { cur.count++; return; }
@@ -188,29 +196,30 @@
     g.fillStyle = '#000'; g.font = '11px sans-serif';
     g.fillText('ground acceleration (red x, blue y; drawn at the frames), peak |a_x| ' + agPeak[0].toPrecision(3) + ', |a_y| ' + agPeak[1].toPrecision(3) + ' m/s² over every step', 4, 12);
   }
-  function setFrame(k) { state.frame = Math.max(0, Math.min(F.length - 1, k | 0)); sl.value = state.frame; draw(); }
-  function frameAt(t) { var b = 0; F.forEach(function (f, j) { if (Math.abs(f.t - t) < Math.abs(F[b].t - t)) b = j; }); return b; }
+  function setFrame(k) { state.frame = Math.max(0, Math.min(F.length - 1, k | 0)); sl.value = state.frame; state.playT = F[state.frame].t; draw(); }
   function setMag(v) { state.mag = v; mg.value = v; off = offsets(v); draw(); }
   sl.max = F.length - 1;
   sl.addEventListener('input', function () { setFrame(+sl.value); });
-  mg.addEventListener('change', function () { var v = +mg.value; if (mg.value !== '' && v > 0 && isFinite(v)) setMag(v); else mg.value = state.mag; });
+  mg.addEventListener('change', function () { var v = +mg.value; if (mg.value !== '' && v >= 1e-3 && v <= 1e6) setMag(v); else mg.value = state.mag; });
   $('an-true').addEventListener('click', function () { setMag(1); });
   $('an-auto').addEventListener('click', function () { setMag(auto); });
   $('an-speed').addEventListener('change', function () { state.speed = +$('an-speed').value; });
+  // play: the shown time advances at the chosen speed (accumulated, not reset to the frame's)
   var last = null;
   function tick(ts) {
     if (!state.playing) return;
     if (last !== null) {
-      var t = F[state.frame].t + (ts - last) / 1000 * state.speed, k = state.frame;
-      while (k < F.length - 1 && F[k + 1].t <= t) k++;
+      state.playT += (ts - last) / 1000 * state.speed;
+      var k = state.frame;
+      while (k < F.length - 1 && F[k + 1].t <= state.playT) k++;
       if (k === F.length - 1) state.playing = false;
-      if (k !== state.frame) setFrame(k);
+      if (k !== state.frame) { state.frame = k; sl.value = k; draw(); }
     }
     last = ts; if (state.playing) requestAnimationFrame(tick); else $('an-play').textContent = 'Play';
   }
   $('an-play').addEventListener('click', function () {
     state.playing = !state.playing; $('an-play').textContent = state.playing ? 'Pause' : 'Play';
-    if (state.playing) { if (state.frame === F.length - 1) setFrame(0); last = null; requestAnimationFrame(tick); }
+    if (state.playing) { if (state.frame === F.length - 1) setFrame(0); state.playT = F[state.frame].t; last = null; requestAnimationFrame(tick); }
   });
   // click: zoom 4× around the clicked point (again to zoom further); double-click: whole plan
   cv.addEventListener('click', function (e) {
@@ -223,7 +232,8 @@
   var ev = $('an-events'), names = { first_impact: 'first impact', peak_closing: 'peak closing', peak_seat_ratio: 'peak seat ratio', unseating: 'unseating' };
   Object.keys(names).forEach(function (k) {
     var t = D.events[k]; if (t === null || t === undefined) return;
-    var b = document.createElement('button'); b.textContent = names[k] + ' (' + t.toFixed(decimals) + ' s)';
+    var b = document.createElement('button');
+    b.textContent = names[k] + ' (' + (t > 0 && t < Math.pow(10, -decimals) ? t.toPrecision(3) : t.toFixed(decimals)) + ' s)';
     b.addEventListener('click', function () { setFrame(frameAt(t)); }); ev.appendChild(b);
   });
   window.poundingAnim = { state: state, data: D, setFrame: setFrame, frameAt: frameAt, setMag: setMag, offsets: offsets };

@@ -107,6 +107,13 @@ fn plan_animation_draws_history_positions_and_impacts() {
              res.push({{frame: A.state.frame, t: A.data.frames[A.state.frame].t, mag: A.state.mag,\
              drawn: A.state.drawn, markers: A.state.markers, seats: A.state.seats,\
              restrainers: A.state.restrainers, offsets: A.state.offsets}}); }}, this);\
+             var seen = 0; for (var k = 0; k < N; k++) {{ A.setFrame(k);\
+             A.state.markers.forEach(function (m) {{ seen += m.impacts; }}); }}\
+             var w = this.contentWindow, q = [], now = 0; w.requestAnimationFrame = function (cb) {{ q.push(cb); }};\
+             A.setFrame(0); var t0 = A.state.playT; this.contentDocument.getElementById('an-play').click();\
+             for (var i = 0; i < 60 && q.length; i++) {{ now += 1000 / 60; q.shift()(now); }}\
+             res.push({{seen: seen, impacts: A.data.impacts.length, played: A.state.playT - t0,\
+             shown: A.data.frames[A.state.frame].t - t0}});\
              r.textContent = 'PROBE ' + JSON.stringify(res) + ' END';\
              }} catch (e) {{ r.textContent = 'PROBE error ' + e + ' END'; }} }};</script></body></html>",
             file_url(&out.join("report.html"))
@@ -138,10 +145,26 @@ fn plan_animation_draws_history_positions_and_impacts() {
     let (head, rows) = csv(&out.join("history.csv"));
     let n = traj["segments"].as_u64().unwrap() as usize;
     assert_eq!(head[3], "x1_m");
-    let states = states.as_array().unwrap();
+    let mut states = states.as_array().unwrap().clone();
+    // every impact entry flashes in exactly one frame (its nearest); playing at 1× for one
+    // second of page time (60 animation frames) advances the shown time by one second
+    let play = states.pop().unwrap();
+    assert_eq!(
+        play["seen"], play["impacts"],
+        "impacts flashed over all frames"
+    );
+    let played = play["played"].as_f64().unwrap();
+    assert!((played - 59.0 / 60.0).abs() < 1e-9, "played {played} s");
+    let shown = play["shown"].as_f64().unwrap();
+    let spacing =
+        traj["frames"][1]["t"].as_f64().unwrap() - traj["frames"][0]["t"].as_f64().unwrap();
+    assert!(
+        shown <= played + 1e-12 && shown > played - spacing - 1e-12,
+        "shown {shown} s"
+    );
     assert_eq!(states.len(), 3);
     let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * (1.0 + a.abs().max(b.abs()));
-    for st in states {
+    for st in &states {
         let t = st["t"].as_f64().unwrap();
         let row = rows
             .iter()
@@ -194,7 +217,7 @@ fn plan_animation_draws_history_positions_and_impacts() {
         .collect();
     assert_eq!(force_cols.len(), 2, "{rhead:?}");
     let mut engaged = false;
-    for st in states {
+    for st in &states {
         let t = st["t"].as_f64().unwrap();
         let row = rows.iter().find(|r| close(r[0], t)).unwrap();
         let rrow = rrows.iter().find(|r| close(r[0], t)).unwrap();

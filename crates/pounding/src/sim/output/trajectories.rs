@@ -289,8 +289,9 @@ fn events(model: &BridgeModel, sol: &BridgeSolution) -> String {
     let mut peak: Option<(Real, Real)> = None;
     for op in joint_openings(model, sol) {
         for (r, v) in op.iter().enumerate() {
-            // a closing (opening below the gap) only
-            if v.is_finite() && *v < 0.0 && peak.is_none_or(|(_, b)| *v < b) {
+            // a closing (opening below the gap by more than a nanometre: the rest pose's
+            // gap computes to the gap within rounding) only
+            if v.is_finite() && *v < -1e-9 && peak.is_none_or(|(_, b)| *v < b) {
                 peak = Some((sol.t[r], *v));
             }
         }
