@@ -158,6 +158,15 @@ pub(crate) fn flag_list(args: &Args) -> Vec<String> {
     v
 }
 
+/// The report's sections beside `summary.json`: the trajectories JSON (plan animation), the
+/// tables, the code-check section, the verdict.
+pub(crate) type Sections<'a> = (
+    Option<&'a str>,
+    &'a [pounding::sim::table::Table],
+    Option<String>,
+    &'a [pounding::sim::output::VerdictLine],
+);
+
 /// Writes `report.html` ([`crate::sim_report`]) from the `summary.json` text of the run; the
 /// figures are those of `candidates` that the run drew.
 pub(crate) fn write_report(
@@ -167,8 +176,9 @@ pub(crate) fn write_report(
     summary_json: &str,
     candidates: &[&'static str],
     files: &[&str],
-    (animation, tables, code_check): (Option<&str>, &[pounding::sim::table::Table], Option<String>),
+    sections: Sections<'_>,
 ) -> Result<()> {
+    let (animation, tables, code_check, verdict) = sections;
     let input = crate::sim_report::ReportInput {
         what,
         scenario,
@@ -182,6 +192,7 @@ pub(crate) fn write_report(
         animation,
         tables,
         code_check,
+        verdict,
     };
     let html = crate::sim_report::report_html(&input, summary_json);
     let p = args.out.join("report.html");

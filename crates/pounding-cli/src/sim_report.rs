@@ -1,6 +1,8 @@
 //! `report.html` of `pounding simulate` (two decks or a bridge): one self-contained page (inline
 //! CSS, relative links only, no timestamps; scripts only in a bridge run's plan animation,
-//! [`crate::sim_anim`]) with the run's status, the model (the
+//! [`crate::sim_anim`]) with the run's status, its verdict first
+//! ([`pounding::sim::output::verdict`]: pounding, governing seat, rotation, unseating, status,
+//! warnings, code check), the model (the
 //! scenario as run and the command-line replacements), the ground motion, the warnings, the
 //! summary (the scalars of `summary.json` and one table per array: joints, abutments,
 //! segments) and every figure the run drew.
@@ -32,6 +34,55 @@ pub struct ReportInput<'a> {
     pub tables: &'a [Table],
     /// The code-check section of a bridge with `[code_check]` ([`crate::sim_report_check`]).
     pub code_check: Option<String>,
+    /// The run's answer in a few lines ([`pounding::sim::output::verdict`]), shown first.
+    pub verdict: &'a [pounding::sim::output::VerdictLine],
+}
+
+/// The verdict: one row per question the run answers, the alarming ones in red, then the number
+/// of warnings and whether a code check follows.
+fn verdict_section(h: &mut String, input: &ReportInput, summary: &Value) {
+    if input.verdict.is_empty() {
+        return;
+    }
+    h.push_str(
+        "<h2 id=\"verdict\">Verdict</h2>\n<table class=\"verdict\">\n<style>table.verdict \
+         td{text-align:left}</style>\n",
+    );
+    for l in input.verdict {
+        let _ = writeln!(
+            h,
+            "<tr><th>{}</th><td{}>{}</td></tr>",
+            esc(l.topic),
+            if l.alert {
+                " class=\"v-contradicted\""
+            } else {
+                ""
+            },
+            esc(&l.text)
+        );
+    }
+    let n = summary["warnings"].as_array().map_or(0, Vec::len);
+    let _ = writeln!(
+        h,
+        "<tr><th>warnings</th><td{}>{}</td></tr>",
+        if n > 0 {
+            " class=\"v-contradicted\""
+        } else {
+            ""
+        },
+        if n == 0 {
+            "None.".to_string()
+        } else {
+            format!("{n} (see <a href=\"#warnings\">Warnings</a>).")
+        }
+    );
+    if input.code_check.is_some() {
+        h.push_str(
+            "<tr><th>code check</th><td>The seats against the design codes: see <a \
+             href=\"#code-check\">Code check</a>.</td></tr>\n",
+        );
+    }
+    h.push_str("</table>\n");
 }
 
 /// The page, from the run's `summary.json` text.
@@ -73,9 +124,10 @@ pub fn report_html(input: &ReportInput, summary_json: &str) -> String {
          them in full.</p>",
         links.join(", ")
     );
+
     let _ = writeln!(
         h,
-        "<nav><a href=\"#warnings\">Warnings</a>{}{}<a href=\"#ground\">Ground motion</a><a \
+        "<nav><a href=\"#verdict\">Verdict</a><a href=\"#warnings\">Warnings</a>{}{}<a href=\"#ground\">Ground motion</a><a \
          href=\"#summary\">Summary</a><a href=\"#tables\">Force histories</a><a \
          href=\"#figures\">Figures</a><a href=\"#model\">Model</a></nav>",
         match input.code_check {
@@ -88,6 +140,7 @@ pub fn report_html(input: &ReportInput, summary_json: &str) -> String {
             ""
         }
     );
+    verdict_section(&mut h, input, &summary);
     warnings(&mut h, &summary);
     h.push_str(input.code_check.as_deref().unwrap_or_default());
     if let Some(traj) = input.animation {

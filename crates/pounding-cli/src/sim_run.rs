@@ -90,7 +90,12 @@ pub fn run(
         &summary,
         figures,
         &files,
-        (Some(&traj), &tables, code_check),
+        (
+            Some(&traj),
+            &tables,
+            code_check,
+            &pounding::sim::output::verdict(setup.layout(), &sol),
+        ),
     )?;
     let timing = json!({
         "simulate_s": sim_secs,

@@ -60,6 +60,7 @@ mod sim_outputs;
 mod sim_progress;
 mod sim_scenario;
 mod sim_shapes;
+mod sim_verdict;
 mod sim_yielding;
 mod spectrum;
 mod spectrum_fast;

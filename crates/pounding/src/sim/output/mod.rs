@@ -21,6 +21,7 @@ mod history;
 mod impacts;
 mod input_warnings;
 mod trajectories;
+mod verdict;
 pub use batch::{BATCH_HEADER, BATCH_TAIL, batch_csv, bridge_batch_header};
 pub(crate) use bridge::bridge_summary_json_text;
 pub use bridge::governing_seat_line;
@@ -37,6 +38,7 @@ pub use history::History;
 pub use impacts::{impacts_csv, run_warnings};
 pub use input_warnings::{InputWarning, input_warnings, warning_sentence};
 pub use trajectories::{TRAJECTORY_MAX_FRAMES, trajectories_json, trajectory_stride};
+pub use verdict::{VerdictLine, verdict};
 
 /// Degrees per radian.
 /// How a run's files name its parts: a bridge's layout (`[[segment]]` scenarios: segments,
