@@ -129,7 +129,9 @@
     (D.seats || []).forEach(function (e, j) {
       var st = seats[j], m = place(e.segment, mid(e.corners[0], e.corners[1]), q);
       var a = T(m), b = T(add(m, e.inward, 1)), len = Math.hypot(b[0] - a[0], b[1] - a[1]) || 1;
-      var ux = (b[0] - a[0]) / len, uy = (b[1] - a[1]) / len, L = 26;
+      // at most 26 px, and at most a quarter of the segment as drawn (many short segments)
+      var sa = T(startMid(e.segment)), sb = T(endMid(e.segment));
+      var ux = (b[0] - a[0]) / len, uy = (b[1] - a[1]) / len, L = Math.max(4, Math.min(26, 0.25 * Math.hypot(sb[0] - sa[0], sb[1] - sa[1])));
       var gone = unseatedAt[j] !== null && f.t >= unseatedAt[j];
       var frac = gone ? 0 : Math.max(0, Math.min(1, st.remaining / e.length));
       var col = gone || st.ratio >= 1 ? '#d00' : st.ratio >= 0.5 ? '#e80' : '#2a2';
@@ -145,14 +147,15 @@
         label(g, text, a[0] + ux * (L + 4), a[1] + uy * (L + 4) + (ux < 0 ? -6 : 12), ux < -0.5);
       }
     });
-    // restrainers: a line between the anchors, grey while slack, orange to red with tension
-    var rs = [];
+    // restrainers: a line between the anchors, grey while slack, orange to red with tension (the
+    // dot no wider than a sixth of a segment as drawn)
+    var rs = [], d0 = T(startMid(0)), d1 = T(endMid(0)), dotMax = Math.max(1.5, Math.hypot(d1[0] - d0[0], d1[1] - d0[1]) / 12);
     (D.restrainers || []).forEach(function (r, j) {
       var fr = f.rf ? f.rf[j] : 0, A = place(r.a, r.pa, q), B = place(r.b, r.pb, q), pa = T(A), pb = T(B);
       var x = rfPeak > 0 ? Math.min(1, Math.max(0, fr / rfPeak)) : 0;
       g.strokeStyle = fr > 0 ? 'rgb(' + Math.round(240 - 40 * x) + ',' + Math.round(160 * (1 - x)) + ',0)' : '#999';
       g.lineWidth = 1 + 3 * x; g.beginPath(); g.moveTo(pa[0], pa[1]); g.lineTo(pb[0], pb[1]); g.stroke();
-      g.fillStyle = g.strokeStyle; g.beginPath(); g.arc((pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2, 3 + 3 * x, 0, 2 * Math.PI); g.fill();
+      g.fillStyle = g.strokeStyle; g.beginPath(); g.arc((pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2, Math.min(3 + 3 * x, dotMax), 0, 2 * Math.PI); g.fill();
       rs.push({ joint: r.joint, force: fr, a: A, b: B });
     });
     g.lineWidth = 1;
