@@ -116,7 +116,11 @@ impl EndEval {
 fn gen_force(ends: &[EndEval]) -> State {
     let mut r = State::zeros(ends[0].wn.len());
     for e in ends {
-        r += &e.wn * e.f_n + &e.wt * e.f_t;
+        // in place, entry by entry: the same products and sums as `r += w_N f_N + w_T f_T`
+        // without its two temporary vectors
+        for ((ri, wn), wt) in r.iter_mut().zip(e.wn.iter()).zip(e.wt.iter()) {
+            *ri += wn * e.f_n + wt * e.f_t;
+        }
     }
     r
 }
@@ -394,7 +398,10 @@ impl ComplianceStepper {
         let n = un.len();
         let mut ev = self.eval_at(tr, &un);
         let mut r = self.resid(tr, &un, &ev);
-        let mut best = (r.amax(), un.clone(), ev.clone());
+        // the iterate with the smallest residual so far: the current one (`None`) until a worse
+        // one replaces it, and only then copied
+        let mut best_r = r.amax();
+        let mut best: Option<(State, Vec<EndEval>)> = None;
         // open contacts (no force now or before): the first guess is exact
         if r.amax() <= 1e-12 + 1e-10 * un.amax() {
             return (true, un, ev);
@@ -414,6 +421,11 @@ impl ComplianceStepper {
                 let ev_t = self.eval_at(tr, &trial);
                 let r_t = self.resid(tr, &trial, &ev_t);
                 if r_t.amax() <= r0 || step < 1e-3 {
+                    // not better than the best (NaN included): keep the best before moving on
+                    let better = r_t.amax() < best_r;
+                    if best.is_none() && !better {
+                        best = Some((un.clone(), ev.clone()));
+                    }
                     un = trial;
                     ev = ev_t;
                     r = r_t;
@@ -425,14 +437,18 @@ impl ComplianceStepper {
             if !accepted {
                 break;
             }
-            if r.amax() < best.0 {
-                best = (r.amax(), un.clone(), ev.clone());
+            if r.amax() < best_r {
+                best_r = r.amax();
+                best = None;
             }
             if (&du * step).amax() <= 1e-12 + 1e-10 * un.amax() {
                 return (true, un, ev);
             }
         }
-        (false, best.1, best.2)
+        match best {
+            Some((u, e)) => (false, u, e),
+            None => (false, un, ev),
+        }
     }
 
     /// Holds the ends in `held` with the unknown forces `lam` (closure step).
