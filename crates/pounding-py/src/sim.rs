@@ -267,7 +267,7 @@ fn batch_run(
         list.push(match (p, a) {
             (Some(p), _) => BatchRecord {
                 name: p.display().to_string(),
-                record: Record::from_path_with(&p, &reading).map_err(|e| e.to_string()),
+                record: Record::open_with(&p, &reading).map_err(|e| e.to_string()),
             },
             (None, Some(a)) => BatchRecord {
                 name: a.0.clone(),

@@ -41,6 +41,20 @@ def test_batch_equals_cli_batch_csv(cli, tmp_path):
     assert rows["index"].dtype == np.int64 and rows["pga_g"].dtype == np.float64
 
 
+def test_builtin_records_run_as_in_the_cli(cli, root, tmp_path):
+    # `builtin:` names are records in a batch too (they were read as file names); the rows are
+    # the CLI's, on a short bridge run
+    scen = root / "examples" / "viaduct-rigid-1d.toml"
+    names = ["builtin:ELC180", "builtin:ELC270"]
+    cli("simulate", scen, "--records", *names, "--scales", "0.5,1", "--duration", "2",
+        "--out", tmp_path / "o", check=False)
+    want = (tmp_path / "o" / "batch.csv").read_text()
+    got = batch_csv_text(str(scen), names, [None, None], [0.5, 1.0], duration=2.0)
+    assert got == want
+    rows = pounding.batch(str(scen), names, [0.5, 1.0], duration=2.0)
+    assert list(rows["status"]) == ["Completed"] * 4
+
+
 def test_unreadable_record_is_a_row_not_an_exception(tmp_path):
     rows = pounding.batch(None, [str(tmp_path / "missing.csv")], [1.0])
     assert rows["status"].tolist() == ["error"]
