@@ -55,10 +55,15 @@ def test_builtin_records_run_as_in_the_cli(cli, root, tmp_path):
     assert list(rows["status"]) == ["Completed"] * 4
 
 
-def test_unreadable_record_is_a_row_not_an_exception(tmp_path):
-    rows = pounding.batch(None, [str(tmp_path / "missing.csv")], [1.0])
+def test_an_unreadable_record_raises_unless_error_rows_are_asked_for(tmp_path):
+    missing = str(tmp_path / "missing.csv")
+    with pytest.raises(ValueError, match=r"record .*missing\.csv.*failed"):
+        pounding.batch(None, [missing], [1.0])
+    rows = pounding.batch(None, [missing], [1.0], errors="rows")
     assert rows["status"].tolist() == ["error"]
     assert "missing.csv" in rows["error"].iloc[0]
+    with pytest.raises(ValueError, match="errors must be"):
+        pounding.batch(None, [missing], [1.0], errors="ignore")
 
 
 def test_batch_bad_lists_raise():

@@ -242,6 +242,7 @@ def batch(
     csv_units: Optional[str] = None,
     record_dt: Optional[float] = None,
     threads: Optional[int] = None,
+    errors: str = "raise",
 ):
     """Run every record at every scale (an incremental dynamic analysis), in parallel.
 
@@ -250,8 +251,10 @@ def batch(
     ``scales[b]``. ``records`` is a list of paths (files, not directories) or
     ``(accelerations, dt[, name])`` tuples; a single path (str or ``os.PathLike``) or a single
     tuple is one record. ``scales`` is a list of numbers (a single number is one scale); an
-    empty ``records`` or ``scales`` raises ``ValueError``. A record that cannot be read gives rows with ``status == "error"`` and the message
-    in ``error`` (the other runs are done), as in the CLI.
+    empty ``records`` or ``scales`` raises ``ValueError``. A run that fails (a record that cannot
+    be read, an input error of that run) raises ``ValueError`` naming the record and the reason
+    (after the other runs are done); with ``errors="rows"`` it is a row with
+    ``status == "error"`` and the message in ``error`` instead, as in the CLI's ``batch.csv``.
 
     Returns:
         The rows of ``batch.csv`` (same columns, order and numbers): a ``pandas.DataFrame``, or a
@@ -260,7 +263,8 @@ def batch(
 
     Raises:
         ValueError: bad input for the whole batch (no records, no scales, a non-finite scale,
-            the scenario, ``record_dt`` with an array record).
+            the scenario, ``record_dt`` with an array record, an ``errors`` other than
+            ``"raise"``/``"rows"``); a failed run unless ``errors="rows"``.
         TypeError: a record that is neither a path nor a tuple, a complex/bool/masked array, a
             ``threads`` that is not an int.
         KeyboardInterrupt: Ctrl-C during the batch (raised at once).
@@ -287,9 +291,20 @@ def batch(
         paths.append(p)
         arrays.append(a)
     _no_record_dt_for_arrays(record_dt, arrays)
+    if errors not in ("raise", "rows"):
+        raise ValueError(f'errors must be "raise" or "rows", not {errors!r}')
     text = batch_csv_text(scenario, paths, arrays, scales, dt, duration, law, csv_units,
                           record_dt, threads)
-    return csv_table(text)
+    rows = csv_table(text)
+    if errors == "raise":
+        failed = [i for i, st in enumerate(rows["status"]) if st == "error"]
+        if failed:
+            i = failed[0]
+            raise ValueError(f"run {i} (record {rows['record'][i]}, scale "
+                             f"{float(rows['scale'][i])!r}) failed: {rows['error'][i]}"
+                             + (f" ({len(failed)} failed runs in all; errors=\"rows\" returns "
+                                f"them as rows)" if len(failed) > 1 else ""))
+    return rows
 
 
 def _no_record_dt_for_arrays(record_dt, arrays) -> None:
