@@ -46,6 +46,14 @@ pub struct Args {
     /// Override the scenario's time step `[time] dt` for every law, in seconds.
     #[arg(long, value_name = "DT", allow_hyphen_values = true)]
     pub dt: Option<f64>,
+    /// Multiply the scenario's ground-motion scale factors by S for every law (as `simulate
+    /// --scale`).
+    #[arg(long, value_name = "S", allow_hyphen_values = true)]
+    pub scale: Option<f64>,
+    /// Simulated duration in seconds for every law (as `simulate --duration`; default: the
+    /// scenario's `[time] duration`, else the record's length).
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true)]
+    pub duration: Option<f64>,
     /// Output directory.
     #[arg(long, value_name = "DIR", default_value = "out/compare")]
     pub out: PathBuf,
@@ -79,6 +87,13 @@ pub fn run(args: Args) -> Result<ExitCode> {
     if let Some(dt) = args.dt {
         // the scenario's own checks (step within the run, step count, restrainers) apply to it
         base = base.with_dt(dt);
+    }
+    // checked with the scenario, naming the flags, as for `simulate`
+    if let Some(x) = args.scale {
+        base = base.with_scale(x);
+    }
+    if let Some(d) = args.duration {
+        base = base.with_duration(d);
     }
     let bridge = base.is_bridge();
     let setups = build_setups(&laws, base)?;

@@ -281,3 +281,64 @@ fn bad_site_contact_tables_exit_2_naming_key_and_line() {
         Some(3.0e10)
     );
 }
+
+#[test]
+fn scale_and_duration_apply_to_every_law_as_in_simulate() {
+    // `compare --scale --duration` runs what `simulate --scale --duration` runs, for each law
+    let work = scratch_dir("bridge_compare", "scale");
+    let f = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/viaduct-rigid-1d.toml");
+    let f = f.to_str().unwrap();
+    let cmp = work.join("cmp");
+    let (code, _, err) = run_capture(&[
+        "compare",
+        f,
+        "--laws",
+        "rigid",
+        "--scale",
+        "2",
+        "--duration",
+        "3",
+        "--out",
+        cmp.to_str().unwrap(),
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    let sim = work.join("sim");
+    let (code, _, err) = run_capture(&[
+        "simulate",
+        f,
+        "--scale",
+        "2",
+        "--duration",
+        "3",
+        "--out",
+        sim.to_str().unwrap(),
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    let s: Value =
+        serde_json::from_str(&std::fs::read_to_string(sim.join("summary.json")).unwrap()).unwrap();
+    let rows = csv(&cmp.join("compare.csv"));
+    let col = |name: &str| rows[0].iter().position(|h| h == name).unwrap();
+    let row = &rows[1];
+    assert_eq!(row[col("law")], "rigid");
+    assert_eq!(row[col("steps")], s["steps"].to_string());
+    assert_eq!(row[col("impacts")], s["impacts"].to_string());
+    assert!(
+        s["impacts"].as_u64().unwrap() > 0,
+        "scaled ×2 the bridge pounds"
+    );
+    let seat: f64 = row[col("peak_seat_displacement_m")].parse().unwrap();
+    assert_eq!(seat, s["peak_seat_displacement_m"].as_f64().unwrap());
+    // a bad value names the flag and writes nothing
+    let bad = work.join("bad");
+    let (code, _, err) = run_capture(&[
+        "compare",
+        f,
+        "--scale",
+        "nan",
+        "--out",
+        bad.to_str().unwrap(),
+    ]);
+    assert_eq!(code, Some(2));
+    assert!(err.contains("--scale"), "{err}");
+    assert!(!bad.exists());
+}
