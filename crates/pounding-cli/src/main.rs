@@ -24,6 +24,7 @@ mod report_pages;
 mod sim_anim;
 mod sim_report;
 mod sim_report_check;
+mod sim_report_verdict;
 
 /// Nonsmooth rigid-impact analysis of pounding between bridge deck segments.
 #[derive(Parser)]

@@ -38,53 +38,6 @@ pub struct ReportInput<'a> {
     pub verdict: &'a [pounding::sim::output::VerdictLine],
 }
 
-/// The verdict: one row per question the run answers, the alarming ones in red, then the number
-/// of warnings and whether a code check follows.
-fn verdict_section(h: &mut String, input: &ReportInput, summary: &Value) {
-    if input.verdict.is_empty() {
-        return;
-    }
-    h.push_str(
-        "<h2 id=\"verdict\">Verdict</h2>\n<table class=\"verdict\">\n<style>table.verdict \
-         td{text-align:left}</style>\n",
-    );
-    for l in input.verdict {
-        let _ = writeln!(
-            h,
-            "<tr><th>{}</th><td{}>{}</td></tr>",
-            esc(l.topic),
-            if l.alert {
-                " class=\"v-contradicted\""
-            } else {
-                ""
-            },
-            esc(&l.text)
-        );
-    }
-    let n = summary["warnings"].as_array().map_or(0, Vec::len);
-    let _ = writeln!(
-        h,
-        "<tr><th>warnings</th><td{}>{}</td></tr>",
-        if n > 0 {
-            " class=\"v-contradicted\""
-        } else {
-            ""
-        },
-        if n == 0 {
-            "None.".to_string()
-        } else {
-            format!("{n} (see <a href=\"#warnings\">Warnings</a>).")
-        }
-    );
-    if input.code_check.is_some() {
-        h.push_str(
-            "<tr><th>code check</th><td>The seats against the design codes: see <a \
-             href=\"#code-check\">Code check</a>.</td></tr>\n",
-        );
-    }
-    h.push_str("</table>\n");
-}
-
 /// The page, from the run's `summary.json` text.
 pub fn report_html(input: &ReportInput, summary_json: &str) -> String {
     let summary: Value = serde_json::from_str(summary_json).unwrap_or(Value::Null);
@@ -140,7 +93,7 @@ pub fn report_html(input: &ReportInput, summary_json: &str) -> String {
             ""
         }
     );
-    verdict_section(&mut h, input, &summary);
+    crate::sim_report_verdict::section(&mut h, input, &summary);
     warnings(&mut h, &summary);
     h.push_str(input.code_check.as_deref().unwrap_or_default());
     if let Some(traj) = input.animation {

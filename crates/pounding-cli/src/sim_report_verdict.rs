@@ -1,0 +1,55 @@
+//! The Verdict section of `report.html` of `pounding simulate`: the run's answers
+//! ([`pounding::sim::output::verdict`]) as a table, the alarming ones in red, then the number of
+//! warnings and a pointer to the code check.
+
+use crate::report::esc;
+use crate::sim_report::ReportInput;
+use serde_json::Value;
+use std::fmt::Write;
+
+/// The verdict: one row per question the run answers, the alarming ones in red, then the number
+/// of warnings and whether a code check follows.
+pub fn section(h: &mut String, input: &ReportInput, summary: &Value) {
+    if input.verdict.is_empty() {
+        return;
+    }
+    h.push_str(
+        "<h2 id=\"verdict\">Verdict</h2>\n<table class=\"verdict\">\n<style>table.verdict \
+         td{text-align:left}</style>\n",
+    );
+    for l in input.verdict {
+        let _ = writeln!(
+            h,
+            "<tr><th>{}</th><td{}>{}</td></tr>",
+            esc(l.topic),
+            if l.alert {
+                " class=\"v-contradicted\""
+            } else {
+                ""
+            },
+            esc(&l.text)
+        );
+    }
+    let n = summary["warnings"].as_array().map_or(0, Vec::len);
+    let _ = writeln!(
+        h,
+        "<tr><th>warnings</th><td{}>{}</td></tr>",
+        if n > 0 {
+            " class=\"v-contradicted\""
+        } else {
+            ""
+        },
+        if n == 0 {
+            "None.".to_string()
+        } else {
+            format!("{n} (see <a href=\"#warnings\">Warnings</a>).")
+        }
+    );
+    if input.code_check.is_some() {
+        h.push_str(
+            "<tr><th>code check</th><td>The seats against the design codes: see <a \
+             href=\"#code-check\">Code check</a>.</td></tr>\n",
+        );
+    }
+    h.push_str("</table>\n");
+}
