@@ -6,13 +6,19 @@ mod impact;
 
 use std::process::Command;
 
-/// Reports a skipped test: `SKIPPED: reason` on stderr, and a line appended to
+/// Reports a skipped test: `SKIPPED <test>: reason` on stderr (shown by `cargo test`), and a line appended to
 /// `$POUNDING_SKIP_LOG` when set (`.ci/run` lists them; see `pounding/tests/it/common.rs`).
 pub fn skipped(reason: &str) {
-    eprintln!("SKIPPED: {reason}");
+    use std::io::Write;
+    let name = std::thread::current().name().unwrap_or("?").to_string();
+    // Written to the process's stderr directly, not through `eprintln!`: the test harness
+    // captures the macros' output of a passing test, so the note would be hidden; this way
+    // `cargo test` prints every skip where it happens.
+    let _ = writeln!(
+        std::io::stderr().lock(),
+        "SKIPPED pounding-cli/cli::{name}: {reason}"
+    );
     if let Some(log) = std::env::var_os("POUNDING_SKIP_LOG") {
-        use std::io::Write;
-        let name = std::thread::current().name().unwrap_or("?").to_string();
         if let Ok(mut f) = std::fs::OpenOptions::new()
             .create(true)
             .append(true)

@@ -21,14 +21,20 @@ pub fn shared_dir() -> Option<PathBuf> {
     }
 }
 
-/// Reports a skipped test (or skipped part of one): `SKIPPED: reason` on stderr, and one line
+/// Reports a skipped test (or skipped part of one): `SKIPPED <test>: reason` on stderr (shown by `cargo test`), and one line
 /// `test-name<TAB>reason` appended to the file `$POUNDING_SKIP_LOG` when set, so that `.ci/run`
-/// can list every skip in its summary (a passing test's stderr is hidden by the test harness).
+/// can list every skip in its summary.
 pub fn skipped(reason: &str) {
-    eprintln!("SKIPPED: {reason}");
+    use std::io::Write;
+    let name = std::thread::current().name().unwrap_or("?").to_string();
+    // Written to the process's stderr directly, not through `eprintln!`: the test harness
+    // captures the macros' output of a passing test, so the note would be hidden; this way
+    // `cargo test` prints every skip where it happens.
+    let _ = writeln!(
+        std::io::stderr().lock(),
+        "SKIPPED pounding/it::{name}: {reason}"
+    );
     if let Some(log) = std::env::var_os("POUNDING_SKIP_LOG") {
-        use std::io::Write;
-        let name = std::thread::current().name().unwrap_or("?").to_string();
         if let Ok(mut f) = std::fs::OpenOptions::new()
             .create(true)
             .append(true)
