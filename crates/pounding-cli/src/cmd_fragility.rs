@@ -197,7 +197,8 @@ pub fn run(args: Args) -> Result<ExitCode> {
     });
     pb.finish_and_clear();
     let runs_s = t_runs.elapsed().as_secs_f64();
-    let csv = runs_csv(&st.set, &plan, &st.limits, &rows);
+    let seat_ends = st.setup.problem.model.seat_end_names();
+    let csv = runs_csv(&st.set, &plan, &st.limits, &seat_ends, &rows);
     let excluded = rows.iter().filter(|r| !r.trusted()).count();
     let fits = pool.install(|| fit_all(&st, &plan, &rows))?;
     write_outputs(

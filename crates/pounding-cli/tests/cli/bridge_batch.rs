@@ -103,8 +103,12 @@ fn bridge_batch_bytes_do_not_depend_on_threads_and_shards_merge_to_them() {
     assert!(pos("abutment_end_peak_impulse_ns") < pos("segment1_peak_displacement_m"));
     // the appended columns (issue 12) come after the segments, `error` stays last
     assert_eq!(
-        pos("segment4_hysteretic_energy_j") + 1,
+        pos("segment4_end_seat_ratio") + 1,
         pos("peak_contact_force_n")
+    );
+    assert_eq!(
+        pos("peak_seat_displacement_m") + 1,
+        pos("governing_seat_end")
     );
     assert_eq!(pos("newton_failures") + 3, head.len());
     assert_eq!(pos("warnings") + 2, head.len());
@@ -174,6 +178,36 @@ fn bridge_batch_bytes_do_not_depend_on_threads_and_shards_merge_to_them() {
         let n: usize = w[2].parse().unwrap();
         assert_eq!(cell(w[0]), json_number(&js, w[1], n), "column {}", w[0]);
     }
+    // every seated end's ratio, and the governing end, as summary.json's seats[] has them
+    let mut largest = (String::new(), f64::NEG_INFINITY);
+    for i in 1..=4 {
+        for face in ["start", "end"] {
+            let end = format!("segment{i}-{face}");
+            let ratio = seat_ratio(&js, &end);
+            assert_eq!(
+                cell(&format!("segment{i}_{face}_seat_ratio")),
+                ratio,
+                "{end}"
+            );
+            if ratio > largest.1 {
+                largest = (end, ratio);
+            }
+        }
+    }
+    assert!(largest.1 > 0.0);
+    assert_eq!(r[pos("governing_seat_end")], largest.0);
+    assert_eq!(cell("governing_seat_ratio"), largest.1);
+}
+
+/// `seats[].ratio` of seated end `end` in pretty-printed `summary.json` text (the object's keys
+/// are sorted: `end` comes before `ratio`).
+fn seat_ratio(text: &str, end: &str) -> f64 {
+    let seats = text.find("\"seats\": [").expect("seats");
+    let at = seats
+        + text[seats..]
+            .find(&format!("\"end\": \"{end}\""))
+            .unwrap_or_else(|| panic!("no seat {end}"));
+    json_number(&text[at..], "ratio", 0)
 }
 
 /// The number after the `n`-th occurrence of `"key":` in pretty-printed JSON text.

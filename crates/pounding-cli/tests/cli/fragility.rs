@@ -121,11 +121,36 @@ fn fragility_end_to_end_counts_agree_and_bytes_do_not_depend_on_threads() {
             "seat_ratio",
             "impulse_exceeded",
             "impulse_ratio",
+            "governing_seat_end",
+            "governing_seat_ratio",
+            "seat_ratio_segment1_start",
+            "seat_ratio_segment1_end",
+            "seat_ratio_segment2_start",
+            "seat_ratio_segment2_end",
             "warnings",
             "error"
         ]
     );
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    // per run: the unseating limit state's ratio (the summary's largest seat ratio) is the
+    // governing end's, which is the largest of the per-end columns (12..16)
+    for r in &rows {
+        let f = |i: usize| r[i].parse::<f64>().unwrap();
+        let (mut at, mut max) = (0, f64::NEG_INFINITY);
+        for i in 12..16 {
+            if f(i) > max {
+                (at, max) = (i, f(i));
+            }
+        }
+        assert!(max > 0.0, "{r:?}");
+        assert_eq!(f(7), max, "{r:?}");
+        assert_eq!(f(11), max, "{r:?}");
+        assert_eq!(
+            r[10].replace('-', "_"),
+            head[at].trim_start_matches("seat_ratio_"),
+            "{r:?}"
+        );
+    }
     assert_eq!(rows.len(), 2 * 3);
     assert_eq!(rows[0][0], "NS");
     assert_eq!(rows[3][1], "270");

@@ -121,6 +121,12 @@ pub struct RunRow {
     pub warnings: usize,
     /// Per limit state: exceeded (`None`: excluded) and the ratio demand / capacity.
     pub limits: Vec<(Option<bool>, Real)>,
+    /// Per seated end, in the order of [`crate::sim::bridge::BridgeModel::seat_end_names`]: the peak seat
+    /// displacement over the end's own seat length (`summary.json` `seats[].ratio`); empty for a
+    /// run that is not trusted.
+    pub seats: Vec<Real>,
+    /// The governing seated end (the largest ratio; an index into `seats`).
+    pub governing_seat: Option<usize>,
 }
 
 impl RunRow {
@@ -163,6 +169,7 @@ pub fn run_all(
                 q0: base.q0.clone(),
                 u0: base.u0.clone(),
             };
+            let mut seats = (Vec::new(), None);
             let (status, error, lim, warnings) = match simulate(&p, &settings) {
                 Err(err) => (
                     "error".to_string(),
@@ -172,6 +179,13 @@ pub fn run_all(
                 ),
                 Ok(sol) => {
                     let ok = sol.status == SimStatus::Completed;
+                    if ok {
+                        let s = &sol.summary;
+                        seats = (
+                            s.seats.iter().map(|e| e.ratio).collect(),
+                            (s.governing_seat < s.seats.len()).then_some(s.governing_seat),
+                        );
+                    }
                     let lim = limits
                         .iter()
                         .map(|l| {
@@ -203,6 +217,8 @@ pub fn run_all(
                 error,
                 limits: lim,
                 warnings,
+                seats: seats.0,
+                governing_seat: seats.1,
             }
         })
         .collect()
@@ -211,9 +227,18 @@ pub fn run_all(
 /// `runs.csv`: `record`, the metadata columns (sorted names), `level_g` (stripes) or `scale`
 /// (IDA), `im_g`, `scale_factor`, `status`, then per limit state `<name>_exceeded` (`true`,
 /// `false`, empty when excluded) and `<name>_ratio` (demand / capacity; `nan` when excluded),
-/// `warnings` (the number of the run's warnings) and `error` last (the message of a failed
-/// run).
-pub fn runs_csv(set: &RecordSet, plan: &Plan, limits: &[BoundLimit], rows: &[RunRow]) -> String {
+/// `governing_seat_end` and `governing_seat_ratio` (the seated end of the largest ratio of peak
+/// seat displacement to its own seat length, and that ratio), per seated end
+/// `seat_ratio_<end>` (`seat_ratio_segment3_end`: [`crate::sim::bridge::BridgeModel::seat_end_names`] with `-` as
+/// `_`; these cells are empty for a run that is not trusted), `warnings` (the number of the
+/// run's warnings) and `error` last (the message of a failed run).
+pub fn runs_csv(
+    set: &RecordSet,
+    plan: &Plan,
+    limits: &[BoundLimit],
+    seat_ends: &[String],
+    rows: &[RunRow],
+) -> String {
     let meta = set.meta_keys();
     let mut head: Vec<String> = vec!["record".into()];
     head.extend(meta.iter().cloned());
@@ -226,6 +251,9 @@ pub fn runs_csv(set: &RecordSet, plan: &Plan, limits: &[BoundLimit], rows: &[Run
         head.push(format!("{}_exceeded", l.state.name));
         head.push(format!("{}_ratio", l.state.name));
     }
+    head.push("governing_seat_end".into());
+    head.push("governing_seat_ratio".into());
+    head.extend(seat_ends.iter().map(|e| seat_ratio_column(e)));
     head.push("warnings".into());
     head.push("error".into());
     let mut out = head.join(",") + "\n";
@@ -248,11 +276,26 @@ pub fn runs_csv(set: &RecordSet, plan: &Plan, limits: &[BoundLimit], rows: &[Run
             c.push(ex.map_or(String::new(), |b| b.to_string()));
             c.push(float_token(*ratio));
         }
+        match r.governing_seat {
+            Some(g) => {
+                c.push(seat_ends.get(g).cloned().unwrap_or_default());
+                c.push(float_token(r.seats[g]));
+            }
+            None => c.extend([String::new(), String::new()]),
+        }
+        c.extend(
+            (0..seat_ends.len()).map(|e| r.seats.get(e).map_or(String::new(), |x| float_token(*x))),
+        );
         c.push(r.warnings.to_string());
         c.push(csv_field(&r.error));
         out += &(c.join(",") + "\n");
     }
     out
+}
+
+/// The `runs.csv` column of seated end `end` (`segment3-end` → `seat_ratio_segment3_end`).
+pub fn seat_ratio_column(end: &str) -> String {
+    format!("seat_ratio_{}", end.replace('-', "_"))
 }
 
 /// `exceeded[entry][stripe]` of limit state `l` (`None` for excluded runs).

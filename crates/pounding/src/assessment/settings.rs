@@ -448,6 +448,15 @@ fn limit_state(cx: &Cx, i: usize, l: &Spanned<LimitSec>) -> Result<LimitState, A
                 .into(),
         ));
     }
+    if name == "governing_seat" {
+        return Err(cx.err(
+            key("name"),
+            &s.name,
+            "\"governing_seat\" would give the column governing_seat_ratio, which runs.csv already \
+             has (the governing seated end's ratio): choose another name"
+                .into(),
+        ));
+    }
     let given: Vec<(&str, &Spanned<Real>)> = [
         ("capacity_n", &s.capacity_n),
         ("capacity_ns", &s.capacity_ns),

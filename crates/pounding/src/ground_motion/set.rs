@@ -657,7 +657,7 @@ fn in_manifest(message: &str, csv: bool) -> String {
 
 /// The output columns of `runs.csv` that a metadata name must not repeat (a table reader would
 /// return one of the two columns silently).
-pub const RESERVED_COLUMNS: [&str; 8] = [
+pub const RESERVED_COLUMNS: [&str; 9] = [
     "record",
     "level_g",
     "scale",
@@ -666,6 +666,7 @@ pub const RESERVED_COLUMNS: [&str; 8] = [
     "status",
     "warnings",
     "error",
+    "governing_seat_end",
 ];
 
 /// Why metadata name `k` would clash with a `runs.csv` column, if it would: a fixed column
@@ -676,6 +677,12 @@ fn reserved_column(k: &str) -> Option<String> {
             "{k:?} is an output column of runs.csv (reserved: {})",
             RESERVED_COLUMNS.join(", ")
         ));
+    }
+    if k.starts_with("seat_ratio_") {
+        return Some(
+            "a name starting with seat_ratio_ is reserved for the per-end seat columns of runs.csv"
+                .into(),
+        );
     }
     ["_exceeded", "_ratio"]
         .iter()

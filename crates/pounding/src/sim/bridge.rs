@@ -602,8 +602,16 @@ impl BridgeModel {
         Ok(out)
     }
 
+    /// The names of the seated ends in the order of a run's seat outputs (`summary.json`
+    /// `seats[]`): per segment `segment<i>-start`, `segment<i>-end` (1-based), in bridge order.
+    pub fn seat_end_names(&self) -> Vec<String> {
+        (1..=self.segments.len())
+            .flat_map(|i| ["start", "end"].map(|f| format!("segment{i}-{f}")))
+            .collect()
+    }
+
     /// The driver's view of the bridge: segments, joints, abutments, seats (per segment
-    /// `[start, end]`).
+    /// `[start, end]`, named as [`Self::seat_end_names`]).
     pub(crate) fn bridge(&self) -> Bridge {
         let bodies = self.layout();
         let n = bodies.len();

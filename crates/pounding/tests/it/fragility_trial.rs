@@ -18,6 +18,8 @@ pub(crate) fn run(record: usize, stripe: usize, im: f64, ex: bool, ratio: f64) -
         error: String::new(),
         limits: vec![(Some(ex), ratio)],
         warnings: 0,
+        seats: Vec::new(),
+        governing_seat: None,
     }
 }
 

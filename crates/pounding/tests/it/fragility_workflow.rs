@@ -205,6 +205,11 @@ fn fragility_settings_errors_name_key_and_line() {
     assert!(e.contains("limit_state[1].limit_m"), "{e}");
     let e = settings_err(&FRAG.replace("name = \"impulse\"", "name = \"seat\""));
     assert!(e.contains("duplicate"), "{e}");
+    let e = settings_err(&FRAG.replace("name = \"impulse\"", "name = \"governing_seat\""));
+    assert!(
+        e.contains("limit_state[1].name") && e.contains("governing_seat_ratio"),
+        "{e}"
+    );
     // capacity_n on a rigid bridge: refused when bound to the model
     let text = format!("{BRIDGE}{}", FRAG.replace("capacity_ns", "capacity_n"));
     let f = FragilitySettings::from_scenario(&text, "s.toml").unwrap();
@@ -449,6 +454,8 @@ fn row(stripe: usize, im: f64, ex: Option<bool>, ratio: f64) -> RunRow {
         error: String::new(),
         limits: vec![(ex, ratio)],
         warnings: 0,
+        seats: Vec::new(),
+        governing_seat: None,
     }
 }
 

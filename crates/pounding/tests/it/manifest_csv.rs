@@ -235,6 +235,19 @@ pub const BAD: &[(&str, &str, &[&str])] = &[
         &["set.csv:1, column C", "ending in _ratio"],
     ),
     (
+        "per-end seat metadata",
+        "id,x,seat_ratio_segment1_end_x\nA,builtin:ELC180,1\n",
+        &["set.csv:1, column C", "starting with seat_ratio_"],
+    ),
+    (
+        "governing seat metadata",
+        "id,x,governing_seat_end\nA,builtin:ELC180,1\n",
+        &[
+            "set.csv:1, column C",
+            "\"governing_seat_end\" is an output column of runs.csv",
+        ],
+    ),
+    (
         "repeated column",
         "id,x,m,m\nA,builtin:ELC180,1,2\n",
         &["set.csv:1, column D", "repeats column C"],

@@ -133,11 +133,12 @@ fn rows_csv(
 
 /// The leading columns of a bridge's `batch.csv`: those of [`BATCH_HEADER`] that keep their
 /// meaning for a bridge (joint closing and opening: the largest over the joints; seat
-/// displacement: over all seated ends), with the dissipation of yielding bearings and the work
+/// displacement: over all seated ends; the governing seated end, the one of the largest ratio of
+/// its seat displacement to its own seat length, and that ratio after it), with the dissipation of yielding bearings and the work
 /// on restrainers added after the contact dissipation.
 const BRIDGE_BATCH_LEAD: &str = "index,record,scale,pga_g,pga_mps2,status,impacts,\
-impacting_contacts,peak_joint_closing_m,peak_joint_opening_m,peak_seat_displacement_m,unseated,\
-unseating_time_s,unseated_end,max_penetration_m,energy_balance_error,input_energy_J,\
+impacting_contacts,peak_joint_closing_m,peak_joint_opening_m,peak_seat_displacement_m,\
+governing_seat_end,governing_seat_ratio,unseated,unseating_time_s,unseated_end,max_penetration_m,energy_balance_error,input_energy_J,\
 viscous_dissipation_J,contact_dissipation_J,hysteretic_dissipation_J,restrainer_work_J,\
 duration_s,steps,lcp_solves,lcp_failures";
 
@@ -159,13 +160,16 @@ const BRIDGE_ABUTMENT_COLS: [&str; 4] = [
     "peak_contact_force_n",
     "peak_impulse_ns",
 ];
-/// Per-segment columns (after `segment<i>_`, `i` 1-based).
-const BRIDGE_SEGMENT_COLS: [&str; 5] = [
+/// Per-segment columns (after `segment<i>_`, `i` 1-based); the seat ratios are each end's
+/// peak seat displacement over its own seat length (`summary.json` `seats[].ratio`).
+const BRIDGE_SEGMENT_COLS: [&str; 7] = [
     "peak_displacement_m",
     "final_displacement_m",
     "peak_rotation_deg",
     "peak_bearing_deformation_m",
     "hysteretic_energy_j",
+    "start_seat_ratio",
+    "end_seat_ratio",
 ];
 
 /// Header of a bridge's `batch.csv` for a bridge of `n_segments` segments: the leading columns
@@ -219,6 +223,10 @@ fn bridge_cells(o: &BatchOutcome, c: &mut Vec<String>) {
         m.joints.iter().map(|j| j.peak_opening).collect(),
     )));
     c.push(float_token(m.peak_seat_displacement));
+    match m.seats.get(m.governing_seat) {
+        Some(g) => c.extend([g.end.clone(), float_token(g.ratio)]),
+        None => c.extend([String::new(), String::new()]),
+    }
     c.push(m.unseated.to_string());
     c.push(opt(m.unseating_time));
     c.push(m.unseated_end.clone().unwrap_or_default());
@@ -258,7 +266,7 @@ fn bridge_cells(o: &BatchOutcome, c: &mut Vec<String>) {
             None => c.extend(BRIDGE_ABUTMENT_COLS.iter().map(|_| String::new())),
         }
     }
-    for g in &m.segments {
+    for (i, g) in m.segments.iter().enumerate() {
         for v in [
             g.peak_displacement,
             g.final_displacement,
@@ -267,6 +275,11 @@ fn bridge_cells(o: &BatchOutcome, c: &mut Vec<String>) {
             g.hysteretic_energy,
         ] {
             c.push(float_token(v));
+        }
+        for face in ["start", "end"] {
+            let name = format!("segment{}-{face}", i + 1);
+            let seat = m.seats.iter().find(|s| s.end == name);
+            c.push(seat.map_or(String::new(), |s| float_token(s.ratio)));
         }
     }
     let peaks: Vec<Option<Real>> = (m.joints.iter().map(|j| j.peak_contact_force))
