@@ -10,6 +10,7 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use pounding::assessment::im::{ImSpec, PeriodInfo, fundamental_period};
 use pounding::assessment::limit::bind;
 use pounding::assessment::run::{Plan, RunRow, fit_limit_state, run_all, runs_csv};
+use pounding::assessment::{CodeCheckInput, check_bridge};
 use pounding::assessment::{FragilitySettings, PeriodChoice};
 use pounding::fragility::{
     BootstrapSettings, FragilityRow, StudyColumns, fragility_csv_study, fragility_json_study,
@@ -97,6 +98,16 @@ fn read(args: &Args) -> Result<Study> {
     for w in set_warnings(&set) {
         eprintln!("warning: {w}");
     }
+    // a `[code_check]` table is read (and refused, naming its key) before any run
+    let code_check = if CodeCheckInput::is_present(scenario.text()) {
+        let input = CodeCheckInput::from_scenario(scenario.text(), scenario.origin())?;
+        Some(
+            check_bridge(&setup.problem.model, &input, scenario.origin())
+                .map_err(|e| e.to_string()),
+        )
+    } else {
+        None
+    };
     let limits = bind(
         &settings.limit_states,
         &setup.problem.model,
@@ -127,6 +138,7 @@ fn read(args: &Args) -> Result<Study> {
         limits,
         spec,
         period,
+        code_check,
     })
 }
 
@@ -295,7 +307,7 @@ fn write_outputs(
         .map_err(|e| anyhow!("plotting: {e}"))?;
     wr(
         "report.html",
-        crate::fragility_plot::report(st, plan, rows, fits).as_bytes(),
+        crate::fragility_report::report(st, plan, rows, fits).as_bytes(),
     )?;
     let timing = json!({
         "runs_s": runs_s,

@@ -1,18 +1,15 @@
-//! `fragility.png` and `report.html` of `pounding fragility`: per limit state the fitted
-//! lognormal curve, the empirical fraction of exceedance per stripe (points; IDA: the
-//! fraction of records exceeded at each scale's median IM) and the bootstrap band; one
-//! self-contained page (inline CSS, no scripts, no timestamps) with the study, the table of fits
-//! and the figure.
+//! `fragility.png` of `pounding fragility`: per limit state the fitted lognormal curve, the
+//! empirical fraction of exceedance per stripe (points; IDA: the fraction of records exceeded
+//! at each scale's median IM) and the bootstrap band, on a log IM axis labelled at 1–2–5 steps
+//! (the report around it: [`crate::fragility_report`]).
 
-use crate::fragility_study::{Fits, Study, boot_failed};
+use crate::fragility_study::{Fits, Study};
 use crate::plot_style::{
     BLUE, DrawResult, FAMILY, GREEN, ORANGE, PURPLE, RED, e, register, save_png, series_legend,
 };
-use crate::report::{CSS, esc};
 use plotters::prelude::*;
 use pounding::assessment::run::{Plan, RunRow};
 use pounding::math::Real;
-use std::fmt::Write;
 use std::path::Path;
 
 const COLOURS: [RGBColor; 5] = [BLUE, RED, GREEN, ORANGE, PURPLE];
@@ -44,6 +41,49 @@ pub(crate) fn empirical(plan: &Plan, rows: &[RunRow], l: usize) -> Vec<(Real, Re
         .collect()
 }
 
+/// Labels of a log axis over `[lo, hi]`: the 1–2–5 steps of each decade, or the finer
+/// 1–1.5–2–3–5–7 steps when that gives fewer than four labels (a narrow IM range was labelled
+/// only at 1 and 2 g), and the range's ends when even those give fewer than three.
+pub(crate) fn log_key_points(lo: Real, hi: Real) -> Vec<Real> {
+    let mut out = Vec::new();
+    if !(lo > 0.0 && hi > lo && hi.is_finite()) {
+        return out;
+    }
+    for steps in [&[1.0, 2.0, 5.0][..], &[1.0, 1.5, 2.0, 3.0, 5.0, 7.0]] {
+        out.clear();
+        let mut decade = 10.0_f64.powf(lo.log10().floor());
+        while decade <= hi {
+            // rounded to 12 significant digits: 3 × 0.1 is 0.30000000000000004
+            out.extend(
+                steps
+                    .iter()
+                    .map(|m| {
+                        format!("{:.11e}", m * decade)
+                            .parse::<Real>()
+                            .unwrap_or(m * decade)
+                    })
+                    .filter(|v| (lo..=hi).contains(v)),
+            );
+            decade *= 10.0;
+        }
+        if out.len() >= 4 {
+            break;
+        }
+    }
+    if out.len() < 3 {
+        // a range narrower than the steps: label its ends too (3 significant digits, inside)
+        let sig3 = |x: Real| format!("{x:.2e}").parse::<Real>().unwrap_or(x);
+        out.extend(
+            [sig3(lo), sig3(hi)]
+                .into_iter()
+                .filter(|v| (lo..=hi).contains(v)),
+        );
+        out.sort_by(Real::total_cmp);
+        out.dedup();
+    }
+    out
+}
+
 /// Draws `fragility.png`: P(exceed) against the IM (log axis) for every limit state.
 pub(crate) fn plot(
     path: &Path,
@@ -72,16 +112,16 @@ pub(crate) fn plot(
             .margin(14)
             .x_label_area_size(48)
             .y_label_area_size(64)
-            .build_cartesian_2d((lo..hi).log_scale(), 0.0..1.0)
+            .build_cartesian_2d(
+                (lo..hi).log_scale().with_key_points(log_key_points(lo, hi)),
+                0.0..1.0,
+            )
             .map_err(e)?;
         chart
             .configure_mesh()
             .x_desc(format!("{} [g]", st.spec.label()))
             .y_desc("probability of exceedance")
-            .x_label_formatter(&|v| {
-                let t = format!("{v:.3}");
-                t.trim_end_matches('0').trim_end_matches('.').to_string()
-            })
+            .x_label_formatter(&|v| pounding::output::float_token(*v))
             .y_label_formatter(&|v| format!("{v:.1}"))
             .label_style((FAMILY, 15))
             .axis_desc_style((FAMILY, 17))
@@ -146,102 +186,19 @@ pub(crate) fn plot(
     })
 }
 
-/// `x` to 4 significant digits, `-` when absent.
-fn g4(x: Option<Real>) -> String {
-    x.map_or("-".into(), |v| format!("{v:.4}"))
-}
+#[cfg(test)]
+mod tests {
+    use super::log_key_points;
 
-/// `report.html`: the study, the table of fits, the figure and the exclusions.
-pub(crate) fn report(st: &Study, plan: &Plan, rows: &[RunRow], fits: &Fits) -> String {
-    let mut h = String::with_capacity(1 << 14);
-    let _ = write!(
-        h,
-        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>pounding \
-         fragility report</title>\n<style>{CSS}</style>\n</head>\n<body>\n<h1>Fragility study — \
-         {}</h1>\n<p>Produced by <code>pounding fragility</code>, pounding version {}. Data: \
-         <a href=\"runs.csv\">runs.csv</a>, <a href=\"fragility.csv\">fragility.csv</a>, <a \
-         href=\"fragility.json\">fragility.json</a>.</p>\n",
-        esc(st.scenario_origin()),
-        env!("CARGO_PKG_VERSION")
-    );
-    let excluded = rows.iter().filter(|r| !r.trusted()).count();
-    let _ = writeln!(h, "<h2>Study</h2>\n<table>");
-    let mut row = |k: &str, v: String| {
-        let _ = writeln!(h, "<tr><th>{}</th><td>{}</td></tr>", esc(k), esc(&v));
-    };
-    row(
-        "record set",
-        format!(
-            "{} ({} entries) {}",
-            st.set_path.display(),
-            st.set.records.len(),
-            st.set.name
-        ),
-    );
-    row("intensity measure", st.spec.label());
-    if let Some(p) = &st.period {
-        row("period", p.describe());
+    #[test]
+    fn log_axis_labels_every_decade_step_in_range() {
+        assert_eq!(log_key_points(0.08, 2.6), vec![0.1, 0.2, 0.5, 1.0, 2.0]);
+        // a narrow range takes the finer steps
+        assert_eq!(log_key_points(0.9, 2.5), vec![1.0, 1.5, 2.0]);
+        assert_eq!(log_key_points(0.25, 0.8), vec![0.3, 0.5, 0.7]);
+        assert_eq!(log_key_points(0.01, 0.012), vec![0.01, 0.012]);
+        assert_eq!(log_key_points(0.0111, 0.0119), vec![0.0111, 0.0119]);
+        assert!(log_key_points(0.0, 1.0).is_empty());
+        assert!(log_key_points(1.0, f64::INFINITY).is_empty());
     }
-    row(
-        match plan.stripes {
-            pounding::assessment::Stripes::Levels(_) => "IM levels [g] (multiple stripes)",
-            pounding::assessment::Stripes::Scales(_) => "scale factors (IDA)",
-        },
-        plan.values()
-            .iter()
-            .map(|v| pounding::output::float_token(*v))
-            .collect::<Vec<_>>()
-            .join(", "),
-    );
-    row(
-        "runs",
-        format!(
-            "{} ({excluded} excluded: failed or not trustworthy)",
-            rows.len()
-        ),
-    );
-    row(
-        "bootstrap",
-        format!(
-            "{} resamples over records, seed {}, level {}",
-            st.settings.bootstrap, st.settings.seed, st.settings.level
-        ),
-    );
-    h.push_str("</table>\n<h2>Fits</h2>\n<table>\n<tr><th>limit state</th><th>method</th><th>status</th><th>θ [g]</th><th>β</th><th>θ interval</th><th>β interval</th><th>bootstrap failed</th><th>records</th><th>runs</th></tr>\n");
-    for f in &fits.rows {
-        let (t, b) = f.fit.params().unzip();
-        let bs = f.bootstrap.as_ref();
-        let iv =
-            |i: Option<(Real, Real)>| i.map_or("-".into(), |(a, z)| format!("{a:.4} – {z:.4}"));
-        let _ = writeln!(
-            h,
-            "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
-            esc(&f.limit_state),
-            esc(f.method.as_str()),
-            esc(f.fit.status()),
-            g4(t),
-            g4(b),
-            iv(bs.and_then(|b| b.theta)),
-            iv(bs.and_then(|b| b.beta)),
-            esc(&boot_failed(f)),
-            f.n_records,
-            f.n_runs
-        );
-    }
-    h.push_str("</table>\n");
-    let warnings: Vec<String> = fits
-        .rows
-        .iter()
-        .flat_map(pounding::fragility::FragilityRow::interval_warnings)
-        .collect();
-    if !warnings.is_empty() {
-        h.push_str("<h2>Warnings</h2>\n<ul>\n");
-        for w in &warnings {
-            let _ = writeln!(h, "<li>{}</li>", esc(w));
-        }
-        h.push_str("</ul>\n");
-    }
-    h.push_str("<h2>Figure</h2>\n<p><img src=\"fragility.png\" alt=\"fragility curves\" width=\"1100\"></p>\n");
-    h.push_str("<p>Lines: fitted lognormal curves; points: the fraction of runs exceeding per stripe; bands: pointwise bootstrap intervals over records. A status other than <code>ok</code> means the data have no finite fit, and no curve is drawn.</p>\n</body>\n</html>\n");
-    h
 }

@@ -20,6 +20,9 @@ pub(crate) struct Study {
     pub limits: Vec<BoundLimit>,
     pub spec: ImSpec,
     pub period: Option<PeriodInfo>,
+    /// The code check of a scenario with a `[code_check]` table (its input validated before
+    /// any run; `Err`: the check could not be evaluated, with the reason).
+    pub code_check: Option<Result<pounding::assessment::CheckReport, String>>,
 }
 
 impl Study {

@@ -16,6 +16,7 @@ mod cmd_spectrum;
 mod cmd_study;
 mod figures;
 mod fragility_plot;
+mod fragility_report;
 mod fragility_study;
 mod plot_style;
 mod plots;

@@ -18,14 +18,13 @@ pub fn skipped(reason: &str) {
         std::io::stderr().lock(),
         "SKIPPED pounding-cli/cli::{name}: {reason}"
     );
-    if let Some(log) = std::env::var_os("POUNDING_SKIP_LOG") {
-        if let Ok(mut f) = std::fs::OpenOptions::new()
+    if let Some(log) = std::env::var_os("POUNDING_SKIP_LOG")
+        && let Ok(mut f) = std::fs::OpenOptions::new()
             .create(true)
             .append(true)
             .open(log)
-        {
-            let _ = writeln!(f, "pounding-cli/cli::{name}\t{reason}");
-        }
+    {
+        let _ = writeln!(f, "pounding-cli/cli::{name}\t{reason}");
     }
 }
 
@@ -88,6 +87,7 @@ mod errors_round3;
 mod fragility;
 mod fragility_censored;
 mod fragility_example;
+mod fragility_report;
 mod fragility_trial;
 mod fuzz;
 mod golden;

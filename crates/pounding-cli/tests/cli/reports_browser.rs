@@ -276,6 +276,31 @@ fn both_reports_load_in_headless_chromium() {
     );
     assert_eq!(pages, 1);
     assert!(images >= 3, "viaduct report shows {images} images");
+    // the fragility report of the tiny study, with its code-check section
+    let frag = work.join("fragility");
+    std::fs::create_dir_all(&frag).unwrap();
+    std::fs::write(
+        frag.join("bridge.toml"),
+        format!(
+            "{}{}",
+            crate::fragility::SCENARIO,
+            crate::fragility_report::CODE_CHECK
+        ),
+    )
+    .unwrap();
+    std::fs::write(frag.join("set.toml"), crate::fragility_report::SET).unwrap();
+    let (pages, images) = run_and_check(
+        &chrome,
+        &work,
+        &[
+            "fragility",
+            &s(&frag.join("bridge.toml")),
+            "--out",
+            &s(&frag.join("out")),
+        ],
+        &frag.join("out"),
+    );
+    assert_eq!((pages, images), (1, 1));
     // The screenshots (screenshot-*.png) go with the scratch directory; POUNDING_KEEP_SCRATCH=1
     // keeps them to look at (docs/development.md). Chromium's profile goes in any case.
     let _ = std::fs::remove_dir_all(work.join("profile"));

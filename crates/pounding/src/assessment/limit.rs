@@ -128,6 +128,40 @@ impl BoundLimit {
         }
     }
 
+    /// The limit state in words, with its capacity, for reports: what is measured, over which
+    /// elements, and when it counts as exceeded (the module table, one row).
+    pub fn definition(&self) -> String {
+        let f = crate::output::float_token;
+        match self.state.kind {
+            LimitKind::Unseating => "an end leaves its seat: ratio = the largest over the seated \
+                ends of peak seat displacement / that end's own seat length; exceeded when an end \
+                unseats (ratio > 1)"
+                .into(),
+            LimitKind::JointForce { .. } if self.rigid => format!(
+                "peak impulse of an impact at any joint above {} N s (rigid contact: impacts have \
+                 impulses, not forces); ratio = largest joint peak impulse / capacity",
+                f(self.capacity)
+            ),
+            LimitKind::JointForce { .. } => format!(
+                "peak contact force at any joint above {} N; ratio = largest joint peak force / \
+                 capacity (abutments not included)",
+                f(self.capacity)
+            ),
+            LimitKind::BearingDeformation(c) => format!(
+                "peak bearing deformation of any segment above {} m; ratio = largest / limit",
+                f(c)
+            ),
+            LimitKind::Rotation(c) => format!(
+                "peak plan rotation of any segment above {} deg; ratio = largest / limit",
+                f(c)
+            ),
+            LimitKind::JointOpening(c) => format!(
+                "peak opening of any joint above {} m; ratio = largest / limit",
+                f(c)
+            ),
+        }
+    }
+
     /// `(exceeded, ratio)` of a run: `exceeded` is `None` when the demand is not a finite
     /// number (the run is then excluded from the fit).
     pub fn evaluate(&self, s: &BridgeSummary) -> (Option<bool>, Real) {

@@ -152,7 +152,7 @@ pub(super) fn records(
             ("index".to_string(), MetaValue::Integer(i as i64)),
             (
                 "model".to_string(),
-                MetaValue::Text("kanai-tajimi-clough-penzien".into()),
+                MetaValue::Text(crate::ground_motion::set::SYNTHETIC_MODEL.into()),
             ),
             ("pga_g".to_string(), MetaValue::Number(peak(&r.x))),
             ("seed".to_string(), MetaValue::Integer(seed as i64)),

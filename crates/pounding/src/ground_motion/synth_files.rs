@@ -51,7 +51,8 @@ pub fn suite_toml(records: &[SynthRecord], seed: u64, source: &str) -> String {
             s.push_str(&format!("y = {}\n", quoted(&format!("{}_y.AT2", r.id))));
         }
         s.push_str(&format!(
-            "[record.meta]\nmodel = \"kanai-tajimi-clough-penzien\"\nseed = {seed}\nindex = {i}\npga_g = {}\n",
+            "[record.meta]\nmodel = {}\nseed = {seed}\nindex = {i}\npga_g = {}\n",
+            quoted(crate::ground_motion::set::SYNTHETIC_MODEL),
             f(peak(&r.x))
         ));
         if let Some(y) = &r.y {

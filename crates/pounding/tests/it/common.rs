@@ -34,13 +34,12 @@ pub fn skipped(reason: &str) {
         std::io::stderr().lock(),
         "SKIPPED pounding/it::{name}: {reason}"
     );
-    if let Some(log) = std::env::var_os("POUNDING_SKIP_LOG") {
-        if let Ok(mut f) = std::fs::OpenOptions::new()
+    if let Some(log) = std::env::var_os("POUNDING_SKIP_LOG")
+        && let Ok(mut f) = std::fs::OpenOptions::new()
             .create(true)
             .append(true)
             .open(log)
-        {
-            let _ = writeln!(f, "pounding/it::{name}\t{reason}");
-        }
+    {
+        let _ = writeln!(f, "pounding/it::{name}\t{reason}");
     }
 }
