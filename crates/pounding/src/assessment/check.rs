@@ -16,7 +16,7 @@
 //! | Code | Terms |
 //! |---|---|
 //! | EN 1998-2 §6.6.4 | `L_eff` = `l_eff_m` or `L`; `d_es = d_i` at an abutment or pier seat, `√(d_i² + d_j²)` at a joint with segment `j` |
-//! | AASHTO LRFD 4.7.4.4 | `L`, `H` = `pier_height_m` of segment `i`, `S = θ` |
+//! | AASHTO LRFD 4.7.4.4 | `L`, `H` = `pier_height_m` of segment `i`, `S = θ`; at a joint listed in `in_span_hinges` (a hinge within a span) `L = L_i + L_j` (the distances to either side of the hinge) and `H = (H_i + H_j)/2` (the two adjacent columns) |
 //! | AASHTO Guide Spec | SDC A–C as LRFD; SDC D `Δ_eq` = the displacement of the longer-period frame at a joint, `d_i` elsewhere |
 //! | Caltrans SDC 1.7 | `Δ_eq = √(d_i² + d_j²)` at a joint (hinge minimum 24 in), `d_i` at an abutment (30 in) or a pier seat (24 in) |
 //! | JRA V §16.2 | `u_R = d_i`, `L = l = L_θ =` the deck length `L` |
@@ -95,6 +95,9 @@ pub struct EndCheck {
     pub at: SeatedEnd,
     /// Average column height `H` under its segment \[m\].
     pub pier_height: Real,
+    /// AASHTO's `L` and `H` at this end \[m\]: the segment's own, or at an in-span hinge the sum
+    /// of the two segments' lengths and the mean of their column heights.
+    pub aashto_l_h: (Real, Real),
     /// Its segment's design displacement \[m\], when given.
     pub displacement: Option<Real>,
     /// Per code (in [`CODES`] order).
@@ -221,16 +224,25 @@ pub fn check_bridge(
     let disp = |i: usize| input.displacement.as_ref().and_then(|d| d.of(i));
     let err = |e| code_error(e, origin);
     let mut ends = Vec::new();
-    for at in seated_ends(model) {
+    let all = seated_ends(model);
+    let height = |i: usize| input.pier_height.of(i).unwrap_or(0.0);
+    for at in all.iter().cloned() {
         let i = at.segment;
         let other = at.joint.map(|k| if k == i { i + 1 } else { k });
-        let h = input.pier_height.of(i).unwrap_or(0.0);
+        let h = height(i);
+        let aashto_l_h = match (at.joint, other) {
+            (Some(k), Some(j)) if input.in_span_hinges.contains(&k) => (
+                at.deck_length + all[2 * j].deck_length,
+                0.5 * (h + height(j)),
+            ),
+            _ => (at.deck_length, h),
+        };
         let codes = CODES
             .iter()
             .map(|&c| {
                 Ok((
                     c,
-                    end_requirement(c, &at, i, other, h, input, &periods, &disp)?,
+                    end_requirement(c, &at, i, other, aashto_l_h, input, &periods, &disp)?,
                 ))
             })
             .collect::<Result<Vec<_>, CodeCheckError>>()
@@ -238,6 +250,7 @@ pub fn check_bridge(
         ends.push(EndCheck {
             at,
             pier_height: h,
+            aashto_l_h,
             displacement: disp(i),
             codes,
         });

@@ -96,14 +96,14 @@ pub struct SeatedEnd {
 }
 
 /// The requirement of `code` at the end `at` of segment `i` (the other segment at its joint:
-/// `other`), column height `h`.
+/// `other`); AASHTO's deck length and column height `(l_a, h)` at this end.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn end_requirement(
     code: Code,
     at: &SeatedEnd,
     i: usize,
     other: Option<usize>,
-    h: Real,
+    (l_a, h): (Real, Real),
     input: &CodeCheckInput,
     periods: &[Option<Real>],
     disp: &dyn Fn(usize) -> Option<Real>,
@@ -139,7 +139,7 @@ pub(super) fn end_requirement(
             Ok(Required(r.l_ov))
         }
         Code::AashtoLrfd => Ok(Required(cc::aashto_lrfd_seat(
-            l,
+            l_a,
             h,
             skew,
             input.aashto_zone,
@@ -158,7 +158,7 @@ pub(super) fn end_requirement(
                 (cc::Sdc::D, None) => missing("displacement_m (SDC D)"),
                 (sdc, delta) => Ok(Required(cc::aashto_guide_seat(
                     sdc,
-                    l,
+                    l_a,
                     h,
                     skew,
                     a_s,

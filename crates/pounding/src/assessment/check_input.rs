@@ -40,6 +40,10 @@ pub const DEFAULTS: &[(&str, &str)] = &[
     ("period_s", "\"model\" (each segment's own first period)"),
     ("damping", "the bridge's damping_ratio"),
     ("pier_height_m", "0"),
+    (
+        "in_span_hinges",
+        "none: every joint sits over a pier (AASHTO's L is each segment's own length)",
+    ),
     ("aashto_zone", "4 (150 %, the most demanding)"),
     ("a_s", "none: taken as ≥ 0.05 (100 % in zone 1 / SDC A)"),
     ("sdc", "\"C\" (150 %)"),
@@ -84,6 +88,10 @@ pub struct CodeCheckInput {
     pub damping: Option<Real>,
     /// Average column height `H` under each segment \[m\].
     pub pier_height: PerSegment,
+    /// The joints (0-based) that are hinges within a span (written 1-based, as `joint<k>`):
+    /// there AASHTO takes `L` as the sum of the two segments' lengths and `H` as the mean of
+    /// their column heights.
+    pub in_span_hinges: Vec<usize>,
     /// AASHTO LRFD seismic zone.
     pub aashto_zone: AashtoZone,
     /// `A_s` (`None`: taken as ≥ 0.05).
@@ -98,6 +106,8 @@ pub struct CodeCheckInput {
     pub given: Vec<&'static str>,
     /// Where the per-segment keys are written, for [`CodeCheckInput::check_segments`].
     lines: Vec<(&'static str, Option<usize>, usize)>,
+    /// The line of `in_span_hinges`, for [`CodeCheckInput::check_segments`].
+    hinges_line: Option<usize>,
     origin: String,
 }
 
@@ -120,6 +130,7 @@ struct Sec {
     period_s: Sp<toml::Value>,
     damping: Sp<Real>,
     pier_height_m: Sp<toml::Value>,
+    in_span_hinges: Sp<Vec<i64>>,
     aashto_zone: Sp<i64>,
     a_s: Sp<Real>,
     sdc: Sp<String>,
@@ -144,6 +155,7 @@ impl Sec {
             self.period_s.is_some(),
             self.damping.is_some(),
             self.pier_height_m.is_some(),
+            self.in_span_hinges.is_some(),
             self.aashto_zone.is_some(),
             self.a_s.is_some(),
             self.sdc.is_some(),
@@ -280,6 +292,23 @@ impl CodeCheckInput {
             "must be in [0, 1) (a fraction of critical)",
         )?;
         let (aashto_zone, a_s, sdc, caltrans, jra_ground) = Self::read_us_jra(cx, s)?;
+        let mut in_span_hinges = Vec::new();
+        if let Some(v) = &s.in_span_hinges {
+            for &k in v.get_ref() {
+                let Some(j) = usize::try_from(k).ok().filter(|&k| k >= 1) else {
+                    return Err(cx.err(
+                        "in_span_hinges",
+                        v,
+                        format!("{k} is not a joint number: joints are numbered from 1 (joint1)"),
+                    ));
+                };
+                if in_span_hinges.contains(&(j - 1)) {
+                    return Err(cx.err("in_span_hinges", v, format!("joint {j} is listed twice")));
+                }
+                in_span_hinges.push(j - 1);
+            }
+        }
+        let hinges_line = s.in_span_hinges.as_ref().map(|v| cx.line(v));
         let given = s.given();
         Ok(Self {
             ground,
@@ -293,6 +322,7 @@ impl CodeCheckInput {
             period,
             damping,
             pier_height,
+            in_span_hinges,
             aashto_zone,
             a_s,
             sdc,
@@ -300,6 +330,7 @@ impl CodeCheckInput {
             jra_ground,
             given,
             lines,
+            hinges_line,
             origin: cx.origin.to_string(),
         })
     }
@@ -350,8 +381,21 @@ impl CodeCheckInput {
         Ok((aashto_zone, a_s, sdc, caltrans, jra_ground))
     }
 
-    /// Refuses a per-segment array whose length is not the bridge's number of segments `n`.
+    /// Refuses a per-segment array whose length is not the bridge's number of segments `n`, and
+    /// an in-span hinge that is not one of its `n − 1` joints.
     pub fn check_segments(&self, n: usize) -> Result<(), AssessmentError> {
+        if let Some(&k) = self.in_span_hinges.iter().find(|&&k| k + 1 >= n) {
+            return Err(AssessmentError::Key {
+                message: format!(
+                    "joint {} is not a joint of this bridge of {n} segment(s) (joints 1 to {})",
+                    k + 1,
+                    n.saturating_sub(1)
+                ),
+                key: "code_check.in_span_hinges".into(),
+                origin: self.origin.clone(),
+                line: self.hinges_line,
+            });
+        }
         match self.lines.iter().find(|(_, _, len)| *len != n) {
             None => Ok(()),
             Some((key, line, len)) => Err(AssessmentError::Key {

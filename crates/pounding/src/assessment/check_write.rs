@@ -33,7 +33,7 @@ fn verdict(pass: Option<bool>) -> &'static str {
 /// `check.csv`: one row per seated end.
 pub fn check_csv(r: &CheckReport) -> String {
     let mut s = String::from(
-        "end,segment,support,seat_length_m,deck_length_m,skew_deg,subtended_deg,pier_height_m,displacement_m",
+        "end,segment,support,seat_length_m,deck_length_m,skew_deg,subtended_deg,pier_height_m,aashto_l_m,aashto_h_m,displacement_m",
     );
     for c in CODES {
         s += &format!(",{}_m", c.name());
@@ -42,7 +42,7 @@ pub fn check_csv(r: &CheckReport) -> String {
     for e in &r.ends {
         let a = &e.at;
         s += &format!(
-            "{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{}",
             a.end,
             a.segment + 1,
             a.support,
@@ -51,6 +51,8 @@ pub fn check_csv(r: &CheckReport) -> String {
             float_token(a.skew_deg),
             cell(a.subtended_deg),
             float_token(e.pier_height),
+            float_token(e.aashto_l_h.0),
+            float_token(e.aashto_l_h.1),
             cell(e.displacement)
         );
         for (_, req) in &e.codes {
@@ -123,6 +125,7 @@ pub fn inputs_json(i: &CodeCheckInput) -> Value {
         "period_s": match &i.period { PeriodInput::Model => Value::from("model"), PeriodInput::Given(p) => per_segment(p) },
         "damping": opt(i.damping),
         "pier_height_m": per_segment(&i.pier_height),
+        "in_span_hinges": i.in_span_hinges.iter().map(|k| k + 1).collect::<Vec<_>>(),
         "aashto_zone": match i.aashto_zone { AashtoZone::Z1 => 1, AashtoZone::Z2 => 2, AashtoZone::Z3 => 3, AashtoZone::Z4 => 4 },
         "a_s": opt(i.a_s),
         "sdc": match i.sdc { Sdc::A => "A", Sdc::B => "B", Sdc::C => "C", Sdc::D => "D" },
@@ -149,6 +152,8 @@ pub fn check_json(r: &CheckReport, scenario: &str) -> String {
                 "skew_deg": json_float(e.at.skew_deg),
                 "subtended_deg": opt(e.at.subtended_deg),
                 "pier_height_m": json_float(e.pier_height),
+                "aashto_l_m": json_float(e.aashto_l_h.0),
+                "aashto_h_m": json_float(e.aashto_l_h.1),
                 "displacement_m": opt(e.displacement),
                 "required_m": req, "not_evaluated": why,
                 "governing_code": g.map(|(c, _)| c.name()),

@@ -241,6 +241,8 @@ fn code_check_errors_name_key_and_line() {
         ("sdc = \"E\"", "code_check.sdc"),
         ("jra_ground = \"IV\"", "code_check.jra_ground"),
         ("damping = 1.5", "code_check.damping"),
+        ("in_span_hinges = [0]", "code_check.in_span_hinges"),
+        ("in_span_hinges = [2, 2]", "code_check.in_span_hinges"),
     ] {
         let (k, l, m) = key_error(table);
         assert_eq!((k.as_str(), l), (key, Some(line)), "{table}: {m}");
@@ -250,6 +252,19 @@ fn code_check_errors_name_key_and_line() {
     match check_scenario(&scenario(&text)) {
         Err(AssessmentError::Key { key, line: l, .. }) => {
             assert_eq!((key.as_str(), l), ("code_check.displacement_m", Some(line)))
+        }
+        other => panic!("{other:?}"),
+    }
+    // an in-span hinge that is not a joint of the five-segment bridge (joints 1 to 4)
+    match check_scenario(&scenario(&with_check("in_span_hinges = [1, 5]"))) {
+        Err(AssessmentError::Key {
+            key,
+            line: l,
+            message,
+            ..
+        }) => {
+            assert_eq!((key.as_str(), l), ("code_check.in_span_hinges", Some(line)));
+            assert!(message.contains("joints 1 to 4"), "{message}");
         }
         other => panic!("{other:?}"),
     }
@@ -275,7 +290,7 @@ fn every_default_key_is_accepted_and_documented() {
                near_fault_factor = 1.2, l_m_m = 0.5, l_eff_m = 20.0, displacement_m = 0.1, \
                period_s = 1.0, damping = 0.02, pier_height_m = [5, 6, 7, 8, 9], aashto_zone = 1, \
                a_s = 0.04, sdc = \"A\", delta_ps_m = 0.01, delta_crsh_m = 0.02, \
-               delta_temp_m = 0.03, jra_ground = \"I\"";
+               delta_temp_m = 0.03, jra_ground = \"I\", in_span_hinges = [2]";
     // an inline table, before the first table header
     let text = format!("code_check = {{ {all} }}\n{CURVED_5}");
     let input = CodeCheckInput::from_scenario(&text, "s.toml").unwrap();
@@ -298,4 +313,66 @@ fn every_default_key_is_accepted_and_documented() {
             "{k}"
         );
     }
+}
+
+/// AASHTO LRFD 4.7.4.4 at a hinge within a span: `L` is the sum of the distances to either side
+/// of the hinge (the two segments' lengths) and `H` the mean height of the two adjacent columns;
+/// at the other joints and the abutments each segment's own `L` and `H`. Worked by hand from
+/// the clause's `N = (8 + 0.02 L + 0.08 H)(1 + 0.000125 S²)` in (L, H in ft; zone 3: 150 %):
+/// segments of 94.248 m (R β = 150 m × 36°), columns of 6 and 10 m.
+#[test]
+fn an_in_span_hinge_takes_the_sum_of_the_lengths_either_side() {
+    let text = CURVED_5
+        .replace("beta_deg = 12.0", "beta_deg = 36.0")
+        .replace(
+            "[ground_motion]",
+            "[code_check]\npier_height_m = [6.0, 10.0, 6.0, 10.0, 6.0]\naashto_zone = 3\n\
+         in_span_hinges = [2]\n[ground_motion]",
+        );
+    let r = check_scenario(&scenario(&text)).unwrap();
+    let ft = 0.3048;
+    let l_seg = 150.0 * 36.0_f64.to_radians();
+    // N in inches, times 150 %, in metres
+    let n = |l_m: f64, h_m: f64| (8.0 + 0.02 * l_m / ft + 0.08 * h_m / ft) * 1.5 * 0.0254;
+    let lrfd = |end: &str| {
+        let e = r.ends.iter().find(|e| e.at.end == end).unwrap();
+        e.codes
+            .iter()
+            .find(|(c, _)| *c == Code::AashtoLrfd)
+            .unwrap()
+            .1
+            .value()
+            .unwrap()
+    };
+    // joint 2 (segments 2 and 3) is the hinge: L = 2 L_seg, H = (10 + 6)/2
+    for end in ["segment2-end", "segment3-start"] {
+        let want = n(2.0 * l_seg, 8.0);
+        assert!(
+            (lrfd(end) - want).abs() < 1e-12,
+            "{end}: {} vs {want}",
+            lrfd(end)
+        );
+    }
+    // joint 1 and the abutments: the segment's own L and H
+    assert!((lrfd("segment1-end") - n(l_seg, 6.0)).abs() < 1e-12);
+    assert!((lrfd("segment2-start") - n(l_seg, 10.0)).abs() < 1e-12);
+    assert!((lrfd("segment1-start") - n(l_seg, 6.0)).abs() < 1e-12);
+    // a hand number: L = 188.50 m = 618.4 ft, H = 8 m = 26.25 ft: N = 22.47 in × 1.5 = 0.856 m
+    assert!(
+        (lrfd("segment2-end") - 0.856).abs() < 5e-4,
+        "{}",
+        lrfd("segment2-end")
+    );
+    let csv = check_csv(&r);
+    let row = csv
+        .lines()
+        .find(|l| l.starts_with("segment3-start,"))
+        .unwrap();
+    assert!(
+        row.contains(&format!(
+            ",{},8,",
+            pounding::output::float_token(2.0 * l_seg)
+        )),
+        "{row}"
+    );
 }
