@@ -163,7 +163,7 @@ pub(crate) fn flag_list(args: &Args) -> Vec<String> {
 pub(crate) type Sections<'a> = (
     Option<&'a str>,
     &'a [pounding::sim::table::Table],
-    Option<String>,
+    Option<crate::sim_report_check::CodeCheckSection>,
     &'a [pounding::sim::output::VerdictLine],
 );
 

@@ -33,7 +33,7 @@ pub struct ReportInput<'a> {
     /// The run's tables (`bearings`, `restrainers`, `joint_slip`): their peaks are shown.
     pub tables: &'a [Table],
     /// The code-check section of a bridge with `[code_check]` ([`crate::sim_report_check`]).
-    pub code_check: Option<String>,
+    pub code_check: Option<crate::sim_report_check::CodeCheckSection>,
     /// The run's answer in a few lines ([`pounding::sim::output::verdict`]), shown first.
     pub verdict: &'a [pounding::sim::output::VerdictLine],
 }
@@ -95,7 +95,9 @@ pub fn report_html(input: &ReportInput, summary_json: &str) -> String {
     );
     crate::sim_report_verdict::section(&mut h, input, &summary);
     warnings(&mut h, &summary);
-    h.push_str(input.code_check.as_deref().unwrap_or_default());
+    if let Some(c) = &input.code_check {
+        h.push_str(&c.html);
+    }
     if let Some(traj) = input.animation {
         h.push_str(&crate::sim_anim::section(traj));
     }

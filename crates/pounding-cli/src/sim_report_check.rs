@@ -14,27 +14,39 @@ fn m3(x: Option<f64>) -> String {
     x.map_or("—".into(), |v| format!("{v:.3}"))
 }
 
-/// The section's HTML, or `None` when the scenario has no `[code_check]` table (its errors were
+/// The code check of a run for its report: the verdict in one sentence (for the report's
+/// Verdict) and the section's HTML.
+pub struct CodeCheckSection {
+    /// `FAIL: 10 of 10 seated ends are shorter than a code requires.` (plain text).
+    pub verdict: String,
+    /// The section.
+    pub html: String,
+}
+
+/// The section, or `None` when the scenario has no `[code_check]` table (its errors were
 /// reported before the run).
 pub fn section(
     model: &BridgeModel,
     (origin, text): (&str, &str),
     seats: &[SeatSummary],
-) -> Option<String> {
+) -> Option<CodeCheckSection> {
     if !CodeCheckInput::is_present(text) {
         return None;
     }
     let input = CodeCheckInput::from_scenario(text, origin).ok()?;
     Some(match check_bridge(model, &input, origin) {
         Ok(r) => table(&r, seats),
-        Err(e) => format!(
-            "<h2 id=\"code-check\">Code check</h2>\n<p>Not evaluated: {}</p>\n",
-            esc(&e.to_string())
-        ),
+        Err(e) => CodeCheckSection {
+            verdict: format!("Not evaluated: {e}"),
+            html: format!(
+                "<h2 id=\"code-check\">Code check</h2>\n<p>Not evaluated: {}</p>\n",
+                esc(&e.to_string())
+            ),
+        },
     })
 }
 
-fn table(r: &CheckReport, seats: &[SeatSummary]) -> String {
+fn table(r: &CheckReport, seats: &[SeatSummary]) -> CodeCheckSection {
     let rows = against_run(r, seats);
     let beyond = rows
         .iter()
@@ -101,5 +113,19 @@ fn table(r: &CheckReport, seats: &[SeatSummary]) -> String {
         );
     }
     h.push_str("</table></div>\n");
-    h
+    let verdict = format!(
+        "{}: {} of {} seated ends are shorter than a code requires{}.",
+        overall(r),
+        r.failing_ends(),
+        r.ends.len(),
+        if beyond > 0 {
+            format!(
+                "; at {beyond} end(s) the simulated peak exceeds the design displacement the \
+                 codes were given"
+            )
+        } else {
+            String::new()
+        }
+    );
+    CodeCheckSection { verdict, html: h }
 }

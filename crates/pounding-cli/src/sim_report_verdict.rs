@@ -1,6 +1,6 @@
 //! The Verdict section of `report.html` of `pounding simulate`: the run's answers
 //! ([`pounding::sim::output::verdict`]) as a table, the alarming ones in red, then the number of
-//! warnings and a pointer to the code check.
+//! warnings and the code check's verdict (with a link to its section).
 
 use crate::report::esc;
 use crate::sim_report::ReportInput;
@@ -45,10 +45,16 @@ pub fn section(h: &mut String, input: &ReportInput, summary: &Value) {
             format!("{n} (see <a href=\"#warnings\">Warnings</a>).")
         }
     );
-    if input.code_check.is_some() {
-        h.push_str(
-            "<tr><th>code check</th><td>The seats against the design codes: see <a \
-             href=\"#code-check\">Code check</a>.</td></tr>\n",
+    if let Some(c) = &input.code_check {
+        let alarm = if c.verdict.starts_with("FAIL") {
+            " class=\"v-contradicted\""
+        } else {
+            ""
+        };
+        let _ = writeln!(
+            h,
+            "<tr><th>code check</th><td{alarm}>{} See <a href=\"#code-check\">Code check</a>.</td></tr>",
+            esc(&c.verdict)
         );
     }
     h.push_str("</table>\n");

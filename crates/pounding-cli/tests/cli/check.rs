@@ -231,6 +231,24 @@ fn simulate_report_puts_code_seats_beside_the_run() {
         html.contains("the simulated peak seat displacement exceeds"),
         beyond > 0
     );
+    // the Verdict states the code verdict and its counts (check.json's), in red when it fails
+    let verdict = html.split("<h2 id=\"verdict\">").nth(1).unwrap();
+    let verdict = verdict.split("</table>").next().unwrap();
+    let row = verdict
+        .split("<tr>")
+        .find(|r| r.starts_with("<th>code check</th>"))
+        .expect("code check row");
+    let n = check["ends"].as_array().unwrap().len();
+    let failing = check["failing_ends"].as_u64().unwrap();
+    let overall = check["verdict"].as_str().unwrap();
+    assert!(
+        row.contains(&format!(
+            "{overall}: {failing} of {n} seated ends are shorter than a code requires"
+        )),
+        "{row}"
+    );
+    assert_eq!(row.contains("v-contradicted"), overall == "FAIL", "{row}");
+    assert_eq!(row.contains("exceeds the design displacement"), beyond > 0, "{row}");
     // without [code_check] there is no such section
     let d2 = scratch_with("check", "plain", &[("s.toml", CURVED_5)]);
     let out2 = d2.join("out");
