@@ -12,6 +12,7 @@ pub const FIGURES: &[&str] = &[
     "joint_openings.png",
     "displacements.png",
     "plan.png",
+    "joint_zoom.png",
     "energy.png",
 ];
 
@@ -90,6 +91,10 @@ pub fn write_all(out: &Path, model: &BridgeModel, sol: &BridgeSolution) -> R {
     })?;
     let plan_size = plan_size(model);
     save_white_png(out, "plan.png", plan_size, |root| plan(root, model, sol))?;
+    let zoom = crate::plots::bridge_zoom::size(model);
+    save_white_png(out, "joint_zoom.png", zoom, |root| {
+        crate::plots::bridge_zoom::draw(root, model, sol)
+    })?;
     save_white_png(out, "energy.png", (1400, 600), |root| {
         energy(root, sol, t_end)
     })

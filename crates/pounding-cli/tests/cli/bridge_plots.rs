@@ -7,7 +7,7 @@ use std::path::Path;
 
 const CURVED_5: &str = include_str!("../../../../examples/viaduct-curved-5.toml");
 
-const BRIDGE_FILES: [&str; 13] = [
+const BRIDGE_FILES: [&str; 14] = [
     "bearings.csv",
     "displacements.png",
     "energy.png",
@@ -15,6 +15,7 @@ const BRIDGE_FILES: [&str; 13] = [
     "impacts.csv",
     "joint_openings.png",
     "joint_slip.csv",
+    "joint_zoom.png",
     "plan.png",
     "report.html",
     "restrainers.csv",
@@ -23,11 +24,12 @@ const BRIDGE_FILES: [&str; 13] = [
     "trajectories.json",
 ];
 
-const BRIDGE_PNGS: [&str; 4] = [
+const BRIDGE_PNGS: [&str; 5] = [
     "joint_openings.png",
     "displacements.png",
     "plan.png",
     "energy.png",
+    "joint_zoom.png",
 ];
 
 fn files(dir: &Path) -> BTreeSet<String> {
@@ -85,7 +87,14 @@ fn bridge_run_writes_figures_and_reruns_leave_no_stale_files() {
         want,
         "stale or missing files after the bridge run"
     );
-    let sizes = [(1400, 900), (1400, 600), (1000, 1300), (1400, 600)];
+    // joint_zoom: 4 joints × 2 corner pairs + 2 abutments × 2 corners = 12 panels, 3 rows of 4
+    let sizes = [
+        (1400, 900),
+        (1400, 600),
+        (1000, 1300),
+        (1400, 600),
+        (1400, 60 + 340 * 3),
+    ];
     let mut first = Vec::new();
     for (name, size) in BRIDGE_PNGS.iter().zip(sizes) {
         let (w, h, len) = png(&out.join(name));

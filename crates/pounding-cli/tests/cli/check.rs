@@ -248,7 +248,11 @@ fn simulate_report_puts_code_seats_beside_the_run() {
         "{row}"
     );
     assert_eq!(row.contains("v-contradicted"), overall == "FAIL", "{row}");
-    assert_eq!(row.contains("exceeds the design displacement"), beyond > 0, "{row}");
+    assert_eq!(
+        row.contains("exceeds the design displacement"),
+        beyond > 0,
+        "{row}"
+    );
     // without [code_check] there is no such section
     let d2 = scratch_with("check", "plain", &[("s.toml", CURVED_5)]);
     let out2 = d2.join("out");

@@ -77,6 +77,7 @@ pub const SIM_OUTPUTS: &[&str] = &[
     "batch.png",
     "joint_openings.png",
     "plan.png",
+    "joint_zoom.png",
     "report.html",
     "trajectories.json",
 ];
