@@ -263,7 +263,8 @@ fn array_table(h: &mut String, rows: &[Value], names: &[&str]) {
     }
     h.push_str("<div class=\"scroll\"><table>\n<tr><th>#</th>");
     for k in &keys {
-        let _ = write!(h, "<th>{}</th>", esc(k));
+        // a key breaks after its underscores, so that a wide table fits the page
+        let _ = write!(h, "<th>{}</th>", esc(k).replace('_', "_<wbr>"));
     }
     h.push_str("</tr>\n");
     for (i, r) in rows.iter().enumerate() {
