@@ -101,6 +101,7 @@ fn read(args: &Args) -> Result<Study> {
     // a `[code_check]` table is read (and refused, naming its key) before any run
     let code_check = if CodeCheckInput::is_present(scenario.text()) {
         let input = CodeCheckInput::from_scenario(scenario.text(), scenario.origin())?;
+        input.check_segments(setup.problem.model.segments.len())?;
         Some(
             check_bridge(&setup.problem.model, &input, scenario.origin())
                 .map_err(|e| e.to_string()),

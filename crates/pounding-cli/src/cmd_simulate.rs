@@ -215,9 +215,18 @@ pub fn run(args: Args) -> Result<ExitCode> {
     }
     pounding::assessment::CodeCheckInput::check_if_present(&text, &origin)?;
     let sc = with_flags(sc, &args);
+    // [code_check] against the bridge (array lengths, hinge joints) before any run
+    let check = |setup: &pounding::sim::scenario::Setup| {
+        pounding::assessment::CodeCheckInput::check_against(
+            &text,
+            &origin,
+            pounding::sim::Problem::model(setup).segments.len(),
+        )
+    };
     if !args.records.is_empty() {
         let reading = sc.override_reading(args.csv_units)?;
         let setup = sc.build_setup()?;
+        check(&setup)?;
         return sim_batch::run(&args, &setup, &reading, t_start);
     }
     if !bridge {
@@ -225,6 +234,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
         sc.override_reading(args.csv_units)?;
     }
     let setup = sc.build_setup()?;
+    check(&setup)?;
     sim_run::run(&args, setup, (&origin, &text), t_start)
 }
 

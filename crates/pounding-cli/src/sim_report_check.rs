@@ -37,7 +37,7 @@ pub fn section(
     Some(match check_bridge(model, &input, origin) {
         Ok(r) => table(&r, seats),
         Err(e) => CodeCheckSection {
-            verdict: format!("Not evaluated: {e}"),
+            verdict: format!("Not evaluated: {e}."),
             html: format!(
                 "<h2 id=\"code-check\">Code check</h2>\n<p>Not evaluated: {}</p>\n",
                 esc(&e.to_string())

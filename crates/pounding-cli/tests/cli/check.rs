@@ -117,6 +117,36 @@ fn check_of_a_bad_value_names_file_key_and_line() {
     let (code, _, stderr) = run_capture(&["simulate", d.join("s.toml").to_str().unwrap()]);
     assert_eq!(code, Some(2));
     assert!(stderr.contains("code_check.importance_class"), "{stderr}");
+    // a per-segment list that does not fit the bridge, or a hinge it lacks, is found against
+    // the model: simulate (a run and a batch) refuses it before running, writing nothing
+    for (name, table, key) in [
+        (
+            "len",
+            "displacement_m = [0.1, 0.2]",
+            "code_check.displacement_m",
+        ),
+        ("hinge", "in_span_hinges = [9]", "code_check.in_span_hinges"),
+    ] {
+        let d = scratch_with("check", name, &[("s.toml", &with_check(table))]);
+        let s = d.join("s.toml");
+        let out = d.join("out");
+        for extra in [&[][..], &["--records", "builtin:ELC180"][..]] {
+            let mut args = vec![
+                "simulate",
+                s.to_str().unwrap(),
+                "--out",
+                out.to_str().unwrap(),
+            ];
+            args.extend_from_slice(extra);
+            let (code, _, stderr) = run_capture(&args);
+            assert_eq!(code, Some(2), "{table} {extra:?}: {stderr}");
+            assert!(
+                stderr.contains(key) && stderr.contains(&format!("s.toml:{}", first_key_line())),
+                "{stderr}"
+            );
+            assert!(!out.exists(), "{table}: an output was written");
+        }
+    }
 }
 
 #[test]

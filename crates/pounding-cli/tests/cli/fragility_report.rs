@@ -155,4 +155,25 @@ fn without_code_check_there_is_no_code_section_and_a_bad_key_stops_the_study() {
         "{err}"
     );
     assert!(!d.join("out").exists(), "an output was written");
+    // a per-segment list that does not fit the two-segment bridge: found before any run
+    let bad = format!(
+        "{SCENARIO}{}",
+        CODE_CHECK.replace(
+            "displacement_m = 0.01",
+            "displacement_m = [0.01, 0.02, 0.03]"
+        )
+    );
+    let d = study_in("fragrep", "len", &bad, SET);
+    let (code, _, err) = run_capture(&[
+        "fragility",
+        s(&d.join("bridge.toml")),
+        "--out",
+        s(&d.join("out")),
+    ]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("code_check.displacement_m") && err.contains("2 segments"),
+        "{err}"
+    );
+    assert!(!d.join("out").exists(), "an output was written");
 }

@@ -188,6 +188,17 @@ impl CodeCheckInput {
         Ok(())
     }
 
+    /// Checks the `[code_check]` table of a scenario that has one against its bridge of
+    /// `segments` segments (per-segment arrays of the right length, in-span hinges that are
+    /// joints), so that a run refuses what its report's code check would not evaluate; `Ok`
+    /// when there is none.
+    pub fn check_against(text: &str, origin: &str, segments: usize) -> Result<(), AssessmentError> {
+        if Self::is_present(text) {
+            Self::from_scenario(text, origin)?.check_segments(segments)?;
+        }
+        Ok(())
+    }
+
     /// Reads `[code_check]` of the scenario `text` named `origin`; every default
     /// ([`DEFAULTS`]) when the table is absent.
     pub fn from_scenario(text: &str, origin: &str) -> Result<Self, AssessmentError> {
