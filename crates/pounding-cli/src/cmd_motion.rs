@@ -3,7 +3,7 @@
 //! `SYNTHETIC.txt` and the record-set manifest `suite.toml` (last).
 
 use anyhow::{Context, Result};
-use pounding::ground_motion::synth::{SynthParams, check_count, write_suite};
+use pounding::ground_motion::synth::{SynthParams, check_count, synth_source, write_suite};
 use pounding::output::float_token;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -75,19 +75,7 @@ fn synth(a: SynthArgs) -> Result<ExitCode> {
     // every flag is checked before the directory is created or locked
     check_count(a.count)?;
     p.check()?;
-    let mut source = format!(
-        "pounding motion synth --count {} --seed {} --dt {} --duration {}",
-        a.count,
-        a.seed,
-        float_token(a.dt),
-        float_token(a.duration)
-    );
-    if let Some(g) = a.pga {
-        source.push_str(&format!(" --pga {}", float_token(g)));
-    }
-    if a.pairs {
-        source.push_str(" --pairs");
-    }
+    let source = synth_source(&p, a.count, a.seed, a.pairs);
     let _lock = pounding::output::lock_output_dir(&a.out)?;
     let records = write_suite(&a.out, &p, a.count, a.seed, a.pairs, &source)
         .with_context(|| format!("writing the suite to {}", a.out.display()))?;

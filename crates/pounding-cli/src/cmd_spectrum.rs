@@ -1,12 +1,12 @@
 //! `pounding spectrum`: elastic response spectra of records and RotD50/RotD100 of horizontal
 //! pairs ([`pounding::spectrum`]); writes `spectrum.csv` and `spectrum.png`.
 
-use anyhow::{Context, Result, anyhow, bail};
+use anyhow::{Context, Result, anyhow};
 use plotters::prelude::*;
-use pounding::ground_motion::{AccelUnits, ReadOptions, Record, el_centro_1940};
+use pounding::ground_motion::Record;
 use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
-use pounding::spectrum::{Curve, default_periods, rotd, spectrum, spectrum_csv};
+use pounding::spectrum::{Curve, SpectrumRequest, spectrum_csv};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -45,7 +45,6 @@ pub struct Args {
     pub out: PathBuf,
 }
 
-/// A record named on the command line.
 /// A number as given on the command line, refused (quoting it) if it does not read as a
 /// finite double (`1e400` would read as `inf`).
 fn finite(s: &str) -> std::result::Result<f64, String> {
@@ -54,40 +53,6 @@ fn finite(s: &str) -> std::result::Result<f64, String> {
         Ok(_) => Err(format!("{s:?} is not a finite number")),
         Err(e) => Err(format!("{s:?}: {e}")),
     }
-}
-
-/// A record by file name or `builtin:NAME`, refused if it has fewer than two samples (a
-/// spectrum of one sample would be all zeros: the load is zero after the last sample).
-fn load(name: &str, opts: &ReadOptions) -> Result<Record> {
-    let r = load_any(name, opts)?;
-    if r.times().len() < 2 {
-        bail!(
-            "record {name}: {} sample: a spectrum needs at least two (the record is linear \
-             between its samples and zero after the last)",
-            r.times().len()
-        );
-    }
-    Ok(r)
-}
-
-fn load_any(name: &str, opts: &ReadOptions) -> Result<Record> {
-    if let Some(b) = name.strip_prefix("builtin:") {
-        if opts.dt.is_some() {
-            bail!(
-                "--record-dt does not apply to the built-in record {name} (it carries its own times)"
-            );
-        }
-        let g = el_centro_1940();
-        let r = match b {
-            "ELC180" => g.along_y,
-            "ELC270" => g.along_x,
-            _ => None,
-        };
-        return r.ok_or_else(|| {
-            anyhow!("unknown built-in record {name:?}: use builtin:ELC180 or builtin:ELC270")
-        });
-    }
-    Record::from_path_with(Path::new(name), opts).map_err(|e| anyhow!("{e}"))
 }
 
 /// Prints how each record was read, one line per record and component (`x`; a pair's `x` and
@@ -106,80 +71,23 @@ fn print_records(singles: &[(String, Record)], pairs: &[(String, Record, Record)
 
 /// Runs `pounding spectrum`.
 pub fn run(args: Args) -> Result<ExitCode> {
-    if args.records.is_empty() && args.pair.is_empty() {
-        bail!("give at least one record or --pair X Y (e.g. pounding spectrum builtin:ELC180)");
-    }
-    let periods = if args.periods.is_empty() {
-        default_periods()
-    } else {
-        args.periods.clone()
-    };
-    pounding::spectrum::check(args.damping, &[]).map_err(|e| anyhow!("{e} (--damping)"))?;
-    pounding::spectrum::check(args.damping, &periods).map_err(|e| anyhow!("{e} (--periods)"))?;
-    let mut sorted = periods.clone();
-    sorted.sort_by(f64::total_cmp);
-    if let Some(w) = sorted.windows(2).find(|w| w[0] == w[1]) {
-        bail!("invalid --periods: {} s is given twice", float_token(w[0]));
-    }
-    let units = AccelUnits::from_name(&args.csv_units)
-        .ok_or_else(|| anyhow!("invalid --csv-units {:?}: use g or m/s2", args.csv_units))?;
-    if let Some(dt) = args.record_dt
-        && !(dt.is_finite() && dt > 0.0)
-    {
-        bail!(
-            "invalid --record-dt {}: must be finite and > 0",
-            float_token(dt)
-        );
-    }
-    let opts = ReadOptions {
-        units,
-        units_from: "--csv-units".into(),
-        dt: args.record_dt,
-        dt_from: "--record-dt".into(),
-        dt_default: false,
+    let request = SpectrumRequest {
+        records: args.records.clone(),
+        pairs: args
+            .pair
+            .chunks(2)
+            .map(|p| (p[0].clone(), p[1].clone()))
+            .collect(),
+        damping: args.damping,
+        periods: args.periods.clone(),
+        csv_units: args.csv_units.clone(),
+        record_dt: args.record_dt,
     };
     // read everything first: bad input writes nothing
-    let singles: Vec<(String, Record)> = args
-        .records
-        .iter()
-        .map(|n| Ok((n.clone(), load(n, &opts)?)))
-        .collect::<Result<_>>()?;
-    let pairs: Vec<(String, Record, Record)> = args
-        .pair
-        .chunks(2)
-        .map(|p| {
-            Ok((
-                format!("{}+{}", p[0], p[1]),
-                load(&p[0], &opts)?,
-                load(&p[1], &opts)?,
-            ))
-        })
-        .collect::<Result<_>>()?;
-    print_records(&singles, &pairs);
-    let mut curves = Vec::new();
-    let err = |e: pounding::spectrum::SpectrumError| anyhow!("{e}");
-    for (name, r) in &singles {
-        curves.push(Curve {
-            record: name.clone(),
-            component: "x".into(),
-            ordinates: spectrum(r, args.damping, &periods).map_err(err)?,
-        });
-    }
-    for (name, x, y) in &pairs {
-        let rd = rotd(x, y, args.damping, &periods).map_err(err)?;
-        for (component, ordinates) in [
-            ("x", spectrum(x, args.damping, &periods).map_err(err)?),
-            ("y", spectrum(y, args.damping, &periods).map_err(err)?),
-            ("rotd50", rd.rotd50),
-            ("rotd100", rd.rotd100),
-        ] {
-            curves.push(Curve {
-                record: name.clone(),
-                component: component.into(),
-                ordinates,
-            });
-        }
-    }
+    let inputs = request.read()?;
+    print_records(&inputs.singles, &inputs.pairs);
+    let curves = inputs.curves().map_err(|e| anyhow!("{e}"))?;
+    let periods = &inputs.periods;
     let out = &args.out;
     let lock = pounding::output::lock_output_dir(out)?;
     pounding::output::remove_previous_outputs(&lock, OUTPUTS)?;

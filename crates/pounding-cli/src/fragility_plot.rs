@@ -14,32 +14,7 @@ use std::path::Path;
 
 const COLOURS: [RGBColor; 5] = [BLUE, RED, GREEN, ORANGE, PURPLE];
 
-/// Empirical points of limit state `l`: per stripe, `(IM, fraction exceeded, runs counted)`;
-/// the IM of a stripe is its level (stripes) or the median IM of its runs (IDA).
-pub(crate) fn empirical(plan: &Plan, rows: &[RunRow], l: usize) -> Vec<(Real, Real, usize)> {
-    let ns = plan.values().len();
-    (0..ns)
-        .filter_map(|b| {
-            let runs: Vec<&RunRow> = rows.iter().filter(|r| r.stripe == b).collect();
-            let mut ims: Vec<Real> = runs.iter().map(|r| r.im_g).collect();
-            ims.sort_by(Real::total_cmp);
-            let im = match ims.len() {
-                0 => return None,
-                n if n % 2 == 1 => ims[n / 2],
-                n => 0.5 * (ims[n / 2 - 1] + ims[n / 2]),
-            };
-            let counted: Vec<bool> = runs.iter().filter_map(|r| r.limits[l].0).collect();
-            let n = counted.len();
-            (n > 0).then(|| {
-                (
-                    im,
-                    counted.iter().filter(|&&x| x).count() as Real / n as Real,
-                    n,
-                )
-            })
-        })
-        .collect()
-}
+pub(crate) use pounding::assessment::study::empirical;
 
 /// Labels of a log axis over `[lo, hi]`: the 1–2–5 steps of each decade, or the finer
 /// 1–1.5–2–3–5–7 steps when that gives fewer than four labels (a narrow IM range was labelled

@@ -140,6 +140,32 @@ pub fn check_threads(threads: Option<usize>) -> Result<(), String> {
     }
 }
 
+/// `message` with the command-line flags `names` (`(flag, name)`, e.g. `("--record-dt",
+/// "record_dt")`) replaced by the names another front end gives the same arguments (the Python
+/// package's keyword arguments): a flag is replaced only as a whole word (not followed by a
+/// letter, digit or `-`), so `--pair` does not touch `--pairs`.
+pub fn rename_flags(message: &str, names: &[(&str, &str)]) -> String {
+    let mut out = String::with_capacity(message.len());
+    let mut rest = message;
+    'scan: while let Some(i) = rest.find("--") {
+        out.push_str(&rest[..i]);
+        let tail = &rest[i..];
+        for (flag, name) in names {
+            if let Some(after) = tail.strip_prefix(flag)
+                && !after.starts_with(|c: char| c.is_ascii_alphanumeric() || c == '-')
+            {
+                out.push_str(name);
+                rest = after;
+                continue 'scan;
+            }
+        }
+        out.push_str("--");
+        rest = &tail[2..];
+    }
+    out.push_str(rest);
+    out
+}
+
 /// Refuses JSON text in which an object has the same key twice (at any depth).
 ///
 /// The error (from `serde_json`) names the key, line and column, e.g. `duplicate key "mass" at
@@ -246,6 +272,17 @@ pub fn shorten_lines(text: &str, max_chars: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn flags_are_renamed_as_whole_words_only() {
+        let names = [("--pair", "pair"), ("--record-dt", "record_dt")];
+        assert_eq!(
+            rename_flags("--pairs and --pair X; --record-dt=1, --record-dtx", &names),
+            "--pairs and pair X; record_dt=1, --record-dtx"
+        );
+        assert_eq!(rename_flags("no flags -- here", &names), "no flags -- here");
+        assert_eq!(rename_flags("ends with --pair", &names), "ends with pair");
+    }
 
     #[test]
     fn fnv_matches_the_reference_vectors() {

@@ -64,7 +64,9 @@ use thiserror::Error;
 
 mod oscillator;
 mod recurrence;
+mod request;
 pub use oscillator::SERIES_BELOW;
+pub use request::{RequestError, SpectrumInputs, SpectrumRequest};
 
 /// Bad spectrum input (a parameter out of range); the message names it.
 #[derive(Debug, Error, Clone, PartialEq)]

@@ -122,11 +122,12 @@ def toml_text(d: Dict[str, Any], prefix: str = "") -> str:
 
 
 #: Count columns whose name has none of the suffixes above.
-_INT_COLUMNS = frozenset({"warnings"})
+_INT_COLUMNS = frozenset({"warnings", "n_records", "n_runs", "bootstrap_samples"})
 
 #: Text columns of the library's tables (kept as str, empty cells as ""), whatever they hold.
 _TEXT_COLUMNS = frozenset({"record", "status", "error", "unseated_end", "contact", "mode", "case",
-                           "shape", "site"})
+                           "shape", "site", "component", "limit_state", "method", "im",
+                           "im_unit"})
 
 
 def _column(name: str, tokens: List[str]):

@@ -43,6 +43,7 @@ pub mod im;
 pub mod limit;
 pub mod run;
 pub mod settings;
+pub mod study;
 
 /// Largest factor a record may be scaled by (by a level's `L / IM` or an IDA scale): a record
 /// scaled by more is no longer a plausible ground motion of that intensity (practice keeps scale
@@ -89,6 +90,9 @@ pub enum AssessmentError {
     /// The bridge model (e.g. no fundamental period).
     #[error("{0}")]
     Model(String),
+    /// The study cannot be set up: a two-deck scenario, no record set.
+    #[error("{0}")]
+    Invalid(String),
     /// A stripe that needs a scale factor beyond [`MAX_SCALE_FACTOR`] for an entry: its IM is too
     /// small for the level (or the IDA scale is absurd).
     #[error(

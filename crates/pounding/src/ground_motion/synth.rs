@@ -464,4 +464,4 @@ pub fn suite(
 
 #[path = "synth_files.rs"]
 mod files;
-pub use files::{WriteSuiteError, at2_text, readme_text, suite_toml, write_suite};
+pub use files::{WriteSuiteError, at2_text, readme_text, suite_toml, synth_source, write_suite};

@@ -99,6 +99,24 @@ pub fn readme_text(p: &SynthParams, count: usize, seed: u64, pairs: bool, source
     )
 }
 
+/// The command that writes a suite, as `suite.toml` (`[set] source`) and `SYNTHETIC.txt` name
+/// it: `pounding motion synth --count N --seed S --dt DT --duration D [--pga G] [--pairs]`
+/// (the same text whichever front end writes the suite, so the files are the same bytes).
+pub fn synth_source(p: &SynthParams, count: usize, seed: u64, pairs: bool) -> String {
+    let mut source = format!(
+        "pounding motion synth --count {count} --seed {seed} --dt {} --duration {}",
+        f(p.dt),
+        f(p.duration)
+    );
+    if let Some(g) = p.pga_g {
+        source.push_str(&format!(" --pga {}", f(g)));
+    }
+    if pairs {
+        source.push_str(" --pairs");
+    }
+    source
+}
+
 /// Errors of writing a suite: bad parameters, or an I/O error naming the path.
 #[derive(Debug, thiserror::Error)]
 pub enum WriteSuiteError {
