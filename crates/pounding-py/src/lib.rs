@@ -1,7 +1,7 @@
 //! Python bindings of `pounding` (the extension module `pounding._core`).
 //!
 //! Every function here calls the library functions the CLI calls (`pounding::lcp`,
-//! `pounding::impact_report`, `pounding::study`, `pounding::sim`), so that the numbers are the
+//! `pounding::impact_report`, `pounding::study`, `pounding::sim`, `pounding::sim::compare`), so that the numbers are the
 //! CLI's, bit for bit. Bad input raises `ValueError` with the library's message; a panic inside
 //! a computation raises `pounding.SolverError` (never an interpreter crash). Heavy calls release
 //! the GIL. The Python package `pounding` (python/pounding) wraps these in documented classes.
@@ -10,6 +10,7 @@
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 
+mod compare;
 mod impact;
 mod lcp;
 mod sim;
@@ -104,5 +105,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     impact::register(m)?;
     study::register(m)?;
     sim::register(m)?;
+    compare::register(m)?;
     Ok(())
 }

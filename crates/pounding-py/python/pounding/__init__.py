@@ -8,6 +8,7 @@ same numbers (bit for bit), numpy arrays and pandas tables instead of files.
 * :func:`study` — the parametric stick/slip study (``bounds.csv`` rows as a DataFrame);
 * :func:`simulate` — a seismic time history (``summary.json`` dict, numpy histories);
 * :func:`batch` — records × scales in parallel (``batch.csv`` rows);
+* :func:`compare` — one scenario under several contact laws (``compare.csv`` rows);
 * :func:`check` — the code check of seats and joint gaps (``pounding check``).
 
 Bad input raises ``ValueError`` with the CLI's message; :class:`SolverError` is raised where the
@@ -16,6 +17,7 @@ Heavy calls release the GIL.
 """
 
 from . import lcp
+from ._compare import ComparisonResult, compare
 from ._core import SolverError, __version__
 from ._impact import ImpactResult, impact
 from ._sim import SimulationResult, batch, check, default_simulate_scenario, simulate
@@ -31,6 +33,8 @@ __all__ = [
     "SimulationResult",
     "simulate",
     "batch",
+    "ComparisonResult",
+    "compare",
     "check",
     "default_simulate_scenario",
     "default_study_scenario",
