@@ -173,6 +173,40 @@ pub fn agreement(runs: &[LawRun]) -> Agreement {
             calm.join(", ")
         ),
     });
+    out.overall.extend(force_sentence(&heads));
+    out.overall.extend(spreads(&heads));
+    let unseated: Vec<&str> = heads.iter().filter(|h| h.1.unseated).map(|h| h.0).collect();
+    if !unseated.is_empty() {
+        out.overall
+            .push(format!("An end unseats under {}.", unseated.join(", ")));
+    }
+    let bad: Vec<String> = heads
+        .iter()
+        .filter(|h| h.1.status != SimStatus::Completed)
+        .map(|(l, h)| format!("{l} ({:?})", h.status))
+        .collect();
+    if !bad.is_empty() {
+        out.overall.push(format!(
+            "Not trustworthy (did not complete cleanly): {}.",
+            bad.join(", ")
+        ));
+    }
+    let skipped: Vec<&str> = runs
+        .iter()
+        .filter(|r| r.outcome.is_err())
+        .map(|r| r.law.as_str())
+        .collect();
+    if !skipped.is_empty() {
+        out.overall.push(format!(
+            "Skipped (cannot run on this bridge): {}.",
+            skipped.join(", ")
+        ));
+    }
+    out
+}
+
+/// The spread of the computed peak force between the laws, the rigid estimate named apart.
+fn force_sentence(heads: &[(&str, Headline)]) -> Option<String> {
     let forces: Vec<(&str, Real)> = heads
         .iter()
         .filter_map(|(l, h)| Some((*l, h.force?)))
@@ -187,7 +221,7 @@ pub fn agreement(runs: &[LawRun]) -> Agreement {
             .iter()
             .map(|(l, f)| format!("; the {l} law's estimate from the impulse is {}", mn(*f)))
             .collect::<String>();
-        out.overall.push(if forces.len() == 1 {
+        Some(if forces.len() == 1 {
             format!("Peak contact force (computed): {}{est}.", mn(hi))
         } else {
             format!(
@@ -195,13 +229,20 @@ pub fn agreement(runs: &[LawRun]) -> Agreement {
                  apart{est}.",
                 n3(hi / lo)
             )
-        });
-    } else if let Some((l, f)) = estimates.first() {
-        out.overall.push(format!(
+        })
+    } else {
+        let (l, f) = estimates.first()?;
+        Some(format!(
             "Peak contact force: only the {l} law's estimate from the impulse, {}.",
             mn(*f)
-        ));
+        ))
     }
+}
+
+/// The spread of the peak closing, penetration, impacts and governing seat ratio between the
+/// laws (a sentence each, where more than one law has the figure).
+fn spreads(heads: &[(&str, Headline)]) -> Vec<String> {
+    let mut out = Vec::new();
     let spread = |what: &str, xs: Vec<(&str, Real)>, show: &dyn Fn(Real) -> String| {
         let (text, lo, hi) = range(&xs, show)?;
         if xs.len() > 1 && lo == hi {
@@ -230,49 +271,21 @@ pub fn agreement(runs: &[LawRun]) -> Agreement {
     let mm = |x: Real| format!("{} mm", n3(x * 1e3));
     let pc = |x: Real| format!("{:.0} %", 100.0 * x.max(0.0));
     let count = |x: Real| format!("{x:.0}");
-    out.overall
-        .extend(spread("Peak closing", pick(&|h| Some(h.closing)), &m));
-    out.overall.extend(spread(
+    out.extend(spread("Peak closing", pick(&|h| Some(h.closing)), &m));
+    out.extend(spread(
         "Peak penetration",
         pick(&|h| Some(h.penetration)),
         &mm,
     ));
-    out.overall.extend(spread(
+    out.extend(spread(
         "Impacts",
         pick(&|h| Some(h.impacts as Real)),
         &count,
     ));
-    out.overall.extend(spread(
+    out.extend(spread(
         "Governing seat ratio",
         pick(&|h| h.seat.as_ref().map(|s| s.1)),
         &pc,
     ));
-    let unseated: Vec<&str> = heads.iter().filter(|h| h.1.unseated).map(|h| h.0).collect();
-    if !unseated.is_empty() {
-        out.overall
-            .push(format!("An end unseats under {}.", unseated.join(", ")));
-    }
-    let bad: Vec<String> = heads
-        .iter()
-        .filter(|h| h.1.status != SimStatus::Completed)
-        .map(|(l, h)| format!("{l} ({:?})", h.status))
-        .collect();
-    if !bad.is_empty() {
-        out.overall.push(format!(
-            "Not trustworthy (did not complete cleanly): {}.",
-            bad.join(", ")
-        ));
-    }
-    let skipped: Vec<&str> = runs
-        .iter()
-        .filter(|r| r.outcome.is_err())
-        .map(|r| r.law.as_str())
-        .collect();
-    if !skipped.is_empty() {
-        out.overall.push(format!(
-            "Skipped (cannot run on this bridge): {}.",
-            skipped.join(", ")
-        ));
-    }
     out
 }
