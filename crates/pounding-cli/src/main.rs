@@ -14,6 +14,7 @@ mod cmd_motion;
 mod cmd_simulate;
 mod cmd_spectrum;
 mod cmd_study;
+mod compare_report;
 mod figures;
 mod fragility_plot;
 mod fragility_report;

@@ -172,7 +172,7 @@ fn sig6(n: &serde_json::Number) -> String {
 
 /// `x` to 6 significant digits (positional from 1e-3 to 1e7, else exponent form); `0`, `nan`,
 /// `inf` as the shortest float token.
-fn sig6_of(x: f64) -> String {
+pub(crate) fn sig6_of(x: f64) -> String {
     if x == 0.0 || !x.is_finite() {
         return pounding::output::float_token(x);
     }

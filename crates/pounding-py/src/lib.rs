@@ -1,8 +1,9 @@
 //! Python bindings of `pounding` (the extension module `pounding._core`).
 //!
 //! Every function here calls the library functions the CLI calls (`pounding::lcp`,
-//! `pounding::impact_report`, `pounding::study`, `pounding::sim`, `pounding::assessment`,
-//! `pounding::spectrum`, `pounding::ground_motion::synth`), so that the numbers are the
+//! `pounding::impact_report`, `pounding::study`, `pounding::sim`, `pounding::sim::compare`,
+//! `pounding::assessment`, `pounding::spectrum`, `pounding::ground_motion::synth`), so that the
+//! numbers are the
 //! CLI's, bit for bit. Bad input raises `ValueError` with the library's message; a panic inside
 //! a computation raises `pounding.SolverError` (never an interpreter crash). Heavy calls release
 //! the GIL. The Python package `pounding` (python/pounding) wraps these in documented classes.
@@ -12,6 +13,7 @@ use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 
 mod assess;
+mod compare;
 mod impact;
 mod lcp;
 mod motion;
@@ -109,5 +111,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     sim::register(m)?;
     assess::register(m)?;
     motion::register(m)?;
+    compare::register(m)?;
     Ok(())
 }

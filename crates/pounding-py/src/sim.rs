@@ -21,7 +21,7 @@ type ArrayRecord = (String, Vec<f64>, f64);
 
 /// The scenario as `pounding simulate` reads it: the file `path` (record paths relative to its
 /// directory), the TOML `text` (records relative to the current directory) or the default.
-fn load(path: Option<&str>, text: Option<String>, origin: &str) -> PyResult<Scenario> {
+pub(crate) fn load(path: Option<&str>, text: Option<String>, origin: &str) -> PyResult<Scenario> {
     match (path, text) {
         (Some(p), _) => Scenario::load(Path::new(p)).map_err(value_error),
         (None, Some(t)) => Scenario::from_toml(&t, origin).map_err(value_error),

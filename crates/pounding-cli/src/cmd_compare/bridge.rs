@@ -9,73 +9,53 @@
 //! Writes `compare.csv` and `compare_sites.csv` (library writers,
 //! [`pounding::sim::output::bridge_compare_csv`]), the table on stdout, `joint_gap.png` (one
 //! panel per joint: its smaller end gap over time, one curve per law; the start abutment's
-//! gap when the bridge has no joint) and `timing.json` (last). Exit 1 when a law that ran did
+//! gap when the bridge has no joint), `report.html` and `timing.json` (last). Exit 1 when a law that ran did
 //! not complete.
 
-use super::Run;
 use super::plots::{R, panel};
-use anyhow::{Context, Result, anyhow};
+use super::{Job, timing_json, write};
+use anyhow::{Result, anyhow};
 use pounding::math::Real;
-use pounding::output::write_atomic;
 use pounding::sim::bridge::BridgeSolution;
+use pounding::sim::compare::LawRun;
 use pounding::sim::output::{
-    BRIDGE_COMPARE_OUTPUTS, BridgeCompareRun, COMPARE_OUTPUTS, bridge_compare_csv,
-    bridge_compare_sites_csv, bridge_compare_table,
+    BRIDGE_COMPARE_OUTPUTS, COMPARE_OUTPUTS, bridge_compare_csv, bridge_compare_sites_csv,
+    bridge_compare_table,
 };
-use serde_json::json;
 use std::path::Path;
-use std::time::Instant;
 
-/// Writes the CSV files, the table, the plot and `timing.json` into the locked `out`.
-pub(super) fn write_outputs(out: &Path, runs: &[Run], t_start: Instant) -> Result<()> {
+/// Writes the CSV files, the table, the plot, `report.html` and `timing.json` into the locked
+/// `out`.
+pub(super) fn write_outputs(ctx: &Job) -> Result<()> {
+    let out = ctx.out;
     let lock = pounding::output::lock_output_dir(out)?;
     pounding::output::remove_previous_outputs(&lock, BRIDGE_COMPARE_OUTPUTS)?;
     pounding::output::remove_previous_outputs(&lock, COMPARE_OUTPUTS)?;
-    let rows: Vec<(&str, BridgeCompareRun)> = runs
-        .iter()
-        .map(|r| {
-            let run = match &r.outcome {
-                Ok((sol, _)) => BridgeCompareRun::Ran(sol),
-                Err(why) => BridgeCompareRun::Skipped(why),
-            };
-            (r.law.as_str(), run)
-        })
-        .collect();
-    let wr = |name: &str, bytes: &[u8]| {
-        write_atomic(&out.join(name), bytes)
-            .with_context(|| format!("cannot write {}", out.join(name).display()))
+    let csv = bridge_compare_csv(ctx.runs);
+    let sites = bridge_compare_sites_csv(ctx.runs);
+    write(out, "compare.csv", csv.as_bytes())?;
+    write(out, "compare_sites.csv", sites.as_bytes())?;
+    print!("{}", bridge_compare_table(ctx.runs));
+    plot_gaps(out, ctx.runs).map_err(|e| anyhow!("plotting: {e}"))?;
+    let page = crate::compare_report::Page {
+        ctx,
+        files: &["compare.csv", "compare_sites.csv", "timing.json"],
+        tables: vec![
+            ("Per law (compare.csv)", csv),
+            ("Per joint and abutment (compare_sites.csv)", sites),
+        ],
+        figures: &[(
+            "joint_gap.png",
+            "Each joint's gap (the smaller of its two ends) by contact law; the abutments' \
+             smaller gap when the bridge has no joint.",
+        )],
     };
-    wr("compare.csv", bridge_compare_csv(&rows).as_bytes())?;
-    wr(
-        "compare_sites.csv",
-        bridge_compare_sites_csv(&rows).as_bytes(),
+    write(
+        out,
+        "report.html",
+        crate::compare_report::html(&page).as_bytes(),
     )?;
-    print!("{}", bridge_compare_table(&rows));
-    plot_gaps(out, runs).map_err(|e| anyhow!("plotting: {e}"))?;
-    let mut timing = serde_json::Map::new();
-    let mut skipped = serde_json::Map::new();
-    for r in runs {
-        match &r.outcome {
-            Ok((sol, secs)) => {
-                timing.insert(
-                    r.law.clone(),
-                    json!({"simulate_s": secs, "steps": sol.steps}),
-                );
-            }
-            Err(why) => {
-                skipped.insert(r.law.clone(), json!(why));
-            }
-        }
-    }
-    let timing = json!({
-        "laws": timing,
-        "skipped": skipped,
-        "wall_time_s": t_start.elapsed().as_secs_f64()
-    });
-    wr(
-        "timing.json",
-        (serde_json::to_string_pretty(&timing)? + "\n").as_bytes(),
-    )?;
+    write(out, "timing.json", timing_json(ctx, true)?.as_bytes())?;
     eprintln!("outputs in {}", out.display());
     Ok(())
 }
@@ -102,11 +82,11 @@ fn gap_series(sol: &BridgeSolution, k: Option<usize>) -> Vec<(Real, Real)> {
 
 /// `joint_gap.png`: one panel per joint (the smaller of its two end gaps), a curve per law that
 /// ran; a bridge without joints shows its abutments' smaller gap.
-fn plot_gaps(out: &Path, runs: &[Run]) -> R {
+fn plot_gaps(out: &Path, runs: &[LawRun]) -> R {
     crate::plot_style::register();
     let ran: Vec<(&str, &BridgeSolution)> = runs
         .iter()
-        .filter_map(|r| r.outcome.as_ref().ok().map(|(s, _)| (r.law.as_str(), s)))
+        .filter_map(|r| r.ran().map(|x| (r.law.as_str(), &x.sol)))
         .collect();
     let nj = ran.first().map_or(0, |(_, s)| s.n_segments - 1);
     let panels: Vec<Option<usize>> = if nj == 0 {

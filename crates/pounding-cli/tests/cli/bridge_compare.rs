@@ -1,7 +1,8 @@
 //! `pounding compare` on a bridge file and the per-site contact tables of bridge scenarios
 //! (issue 11): the comparison's figures are those of `pounding simulate` of the same bridge
-//! with that law; a law that cannot run is skipped with its reason; bad site tables exit 2
-//! naming `joint[k].contact.KEY` and its line, writing nothing.
+//! with that law (the rigid law's peak-force estimate too); a law that cannot run is skipped
+//! with its reason (also in `report.html`); bad site tables exit 2 naming
+//! `joint[k].contact.KEY` and its line, writing nothing.
 
 use crate::{run_capture, scratch_dir};
 use serde_json::Value;
@@ -84,18 +85,18 @@ fn sites_match(rows: &[Vec<String>], law: &str, s: &Value, raw: &str) {
         assert_eq!(r[2], j["impacts"].to_string(), "{law} joint {k}");
         any_impact |= j["impacts"].as_u64().unwrap() > 0;
         same(&r[3], &j["peak_contact_force_n"], "force", raw);
-        same(&r[4], &j["peak_impulse_ns"], "impulse", raw);
-        same(&r[5], &j["peak_closing_m"], "closing", raw);
-        same(&r[6], &j["peak_opening_m"], "opening", raw);
-        same(&r[7], &j["restrainer_peak_force_n"], "restrainer", raw);
+        same(&r[6], &j["peak_impulse_ns"], "impulse", raw);
+        same(&r[7], &j["peak_closing_m"], "closing", raw);
+        same(&r[8], &j["peak_opening_m"], "opening", raw);
+        same(&r[9], &j["restrainer_peak_force_n"], "restrainer", raw);
     }
     for (side, a) in abuts.iter().enumerate() {
         let r = rows[joints.len() + side];
         assert_eq!(r[1], ["abutment.start", "abutment.end"][side]);
         assert_eq!(r[2], a["impacts"].to_string());
         same(&r[3], &a["peak_contact_force_n"], "abutment force", raw);
-        same(&r[4], &a["peak_impulse_ns"], "abutment impulse", raw);
-        same(&r[5], &a["peak_closing_m"], "abutment closing", raw);
+        same(&r[6], &a["peak_impulse_ns"], "abutment impulse", raw);
+        same(&r[7], &a["peak_closing_m"], "abutment closing", raw);
     }
     assert!(any_impact, "{law}: the test bridge must pound");
 }
@@ -144,9 +145,57 @@ fn bridge_compare_rows_equal_simulate_of_each_law() {
         assert_eq!(row[1], s["status"].as_str().unwrap());
         assert_eq!(row[2], s["steps"].to_string());
         assert_eq!(row[3], s["impacts"].to_string());
-        same(&row[8], &s["peak_penetration_m"], "penetration", raw);
-        same(&row[12], &s["energy_balance_error"], "energy", raw);
-        assert_eq!(row[13], "", "not skipped");
+        let col = |name: &str| head[0].iter().position(|h| h == name).unwrap();
+        same(
+            &row[col("peak_penetration_m")],
+            &s["peak_penetration_m"],
+            "penetration",
+            raw,
+        );
+        same(
+            &row[col("energy_balance_error")],
+            &s["energy_balance_error"],
+            "energy",
+            raw,
+        );
+        assert_eq!(row[col("skipped_reason")], "", "not skipped");
+        // the rigid law's estimate is the summary's, labelled apart from the computed force
+        let est = s.get("peak_force_estimate_n").unwrap_or(&Value::Null);
+        same(&row[col("peak_force_estimate_n")], est, "estimate", raw);
+        if law == "rigid" {
+            assert!(est.as_f64().unwrap() > 0.0, "the rigid bridge pounds");
+            assert_eq!(row[col("peak_contact_force_n")], "", "no computed force");
+            let t_c: f64 = row[col("contact_time_estimate_s")].parse().unwrap();
+            assert!(t_c > 0.0 && t_c < 1.0, "{t_c}");
+            // the largest site estimate of compare_sites.csv is the run's
+            let e = sites
+                .iter()
+                .filter(|r| r[0] == "rigid" && !r[4].is_empty())
+                .map(|r| r[4].parse::<f64>().unwrap())
+                .fold(f64::NAN, f64::max);
+            assert_eq!(e, est.as_f64().unwrap());
+        } else {
+            assert_eq!(row[col("contact_time_estimate_s")], "");
+            assert!(
+                sites
+                    .iter()
+                    .filter(|r| r[0] == law)
+                    .all(|r| r[4].is_empty())
+            );
+        }
+    }
+    // the report: the laws, the agreement paragraph and both tables, the figure
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    for needle in [
+        "Do the laws agree?",
+        "<strong>rigid</strong>: pounded",
+        "<strong>bilinear</strong>: pounded",
+        "compare_sites.csv",
+        "peak_force_estimate_n",
+        "src=\"joint_gap.png\"",
+        "<h2 id=\"skipped\">Skipped laws</h2>\n<p>Every law ran.</p>",
+    ] {
+        assert!(html.contains(needle), "report lacks {needle:?}");
     }
     let timing: Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("timing.json")).unwrap()).unwrap();
@@ -182,9 +231,18 @@ fn bridge_compare_skips_a_law_that_cannot_run_and_says_why() {
     let text = std::fs::read_to_string(out.join("compare.csv")).unwrap();
     let line = text.lines().nth(2).unwrap();
     assert!(
-        line.starts_with("hertz-damp,skipped,,,,,,,,,,,,\"invalid calibration"),
+        line.starts_with("hertz-damp,skipped,,,,,,,,,,,,,,\"invalid calibration"),
         "{line}"
     );
+    // the report lists the skipped law with its reason, and the warnings of the laws that ran
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    let skipped = html.split("<h2 id=\"skipped\">").nth(1).unwrap();
+    assert!(
+        skipped.contains("<li><strong>hertz-damp</strong>: ")
+            && skipped.contains("invalid calibration"),
+        "{skipped}"
+    );
+    assert!(html.contains("<strong>hertz-damp</strong>: skipped: "));
     let sites = csv(&out.join("compare_sites.csv"));
     assert!(sites.iter().skip(1).all(|r| r[0] == "kelvin"));
     // every law refused: an error, exit 2, nothing written

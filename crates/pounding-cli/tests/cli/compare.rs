@@ -277,6 +277,90 @@ fn compare_smoke() {
     assert!(!dir.join("c").exists());
 }
 
+/// `compare` of the two-deck default: `report.html` names every law, answers whether they
+/// agree, lists each law's warnings (bilinear's time step is too coarse at the default dt) and
+/// shows the figures; the rigid row's `peak_force_estimate_N` is `simulate --law rigid`'s
+/// `peak_force_estimate_n` (same token), and the compliance rows have none.
+#[test]
+fn compare_report_and_the_rigid_estimate() {
+    let dir = tmp("report");
+    let out = dir.join("cmp");
+    let o = pounding()
+        .args([
+            "compare",
+            "--duration",
+            "3",
+            "--laws",
+            "rigid,bilinear,kelvin",
+        ])
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{err}");
+    // the warning printed on stderr is also in the report, under its law
+    let warning = "too coarse for the contact law";
+    assert!(err.contains(warning), "{err}");
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    let warnings = html
+        .split("<h2 id=\"warnings\">")
+        .nth(1)
+        .unwrap()
+        .split("<h2 id=\"skipped\">")
+        .next()
+        .unwrap();
+    assert!(
+        warnings.contains("<h3>bilinear</h3>") && warnings.contains(warning),
+        "{warnings}"
+    );
+    for law in ["rigid", "bilinear", "kelvin"] {
+        assert!(
+            html.contains(&format!("<li><strong>{law}</strong>: pounded")),
+            "{law}"
+        );
+        assert!(html.contains(&format!("<th>{law}</th>")), "{law} column");
+    }
+    for needle in [
+        "The 3 laws agree that the structure pounds.",
+        "src=\"joint_gap.png\"",
+        "src=\"contact_force.png\"",
+        "<p>Every law ran.</p>",
+        "<h2 id=\"timing\">Wall time</h2>",
+    ] {
+        assert!(html.contains(needle), "report lacks {needle:?}");
+    }
+    // the estimate column against simulate's summary of the same rigid run
+    let sim = dir.join("sim");
+    let o = pounding()
+        .args(["simulate", "--duration", "3", "--law", "rigid", "--out"])
+        .arg(&sim)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let raw = std::fs::read_to_string(sim.join("summary.json")).unwrap();
+    let s: serde_json::Value = serde_json::from_str(&raw).unwrap();
+    let csv = std::fs::read_to_string(out.join("compare.csv")).unwrap();
+    let rows: Vec<Vec<&str>> = csv.lines().map(|l| l.split(',').collect()).collect();
+    let col = |name: &str| rows[0].iter().position(|c| *c == name).unwrap();
+    let (est, t_c, force) = (
+        col("peak_force_estimate_N"),
+        col("contact_time_estimate_s"),
+        col("peak_contact_force_N"),
+    );
+    assert_eq!(rows[1][0], "rigid");
+    let e: f64 = rows[1][est].parse().unwrap();
+    assert_eq!(e, s["peak_force_estimate_n"].as_f64().unwrap());
+    assert!(raw.contains(&format!("\"peak_force_estimate_n\": {}", rows[1][est])));
+    assert!(e > 0.0 && rows[1][force] == "nan");
+    let t: f64 = rows[1][t_c].parse().unwrap();
+    assert!(t > 0.0 && t < 1.0, "{t}");
+    for r in &rows[2..] {
+        assert_eq!((r[est], r[t_c]), ("nan", "nan"), "{}", r[0]);
+        assert!(r[force].parse::<f64>().unwrap() > 0.0, "{}", r[0]);
+    }
+}
+
 /// `law = "linear"` (added through the contact-law registry) runs through `pounding simulate`
 /// and is reported with its stiffness; an unknown law lists it.
 #[test]

@@ -2,7 +2,8 @@
 //!
 //! Every case runs one command line of `pounding` (from the workspace root, so that relative paths
 //! in the outputs are those a user in a clone would see), collects its output files (except
-//! `timing.json`, the one documented non-deterministic file) and, where the case says so, its
+//! `timing.json`, the one documented non-deterministic file; the wall times of `compare`'s
+//! `report.html` between `<!--wall-->` markers are masked) and, where the case says so, its
 //! stdout/stderr, and compares them with `crates/pounding-cli/tests/golden/<case>/`:
 //! small text files (< 20 kB) are stored in full and compared byte by byte; larger or binary
 //! files are stored as size + FNV-1a 64-bit hash, text files also with one hash per block of
@@ -160,8 +161,36 @@ fn collect(root: &Path, dir: &Path, files: &mut BTreeMap<String, Vec<u8>>) {
         if rel == "timing.json" {
             continue;
         }
-        files.insert(rel, std::fs::read(&p).unwrap());
+        let bytes = std::fs::read(&p).unwrap();
+        let bytes = if rel.ends_with(".html") {
+            mask_wall_times(bytes)
+        } else {
+            bytes
+        };
+        files.insert(rel, bytes);
     }
+}
+
+/// A report's wall times (`compare`'s `report.html`: each between `<!--wall-->` and
+/// `<!--/wall-->`, the page's only non-deterministic bytes) replaced by `…`.
+fn mask_wall_times(bytes: Vec<u8>) -> Vec<u8> {
+    const OPEN: &str = "<!--wall-->";
+    const CLOSE: &str = "<!--/wall-->";
+    let Ok(text) = String::from_utf8(bytes.clone()) else {
+        return bytes;
+    };
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text.as_str();
+    while let Some(i) = rest.find(OPEN) {
+        let after = &rest[i + OPEN.len()..];
+        let Some(j) = after.find(CLOSE) else { break };
+        out.push_str(&rest[..i + OPEN.len()]);
+        out.push('…');
+        out.push_str(CLOSE);
+        rest = &after[j + CLOSE.len()..];
+    }
+    out.push_str(rest);
+    out.into_bytes()
 }
 
 /// What the manifest records about one file.

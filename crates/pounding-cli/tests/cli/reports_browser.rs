@@ -1,6 +1,7 @@
-//! Headless-browser check of both reports (issue 12 acceptance): `report.html` of `pounding study`
-//! (a small scenario with figures, so an index page and two geometry pages) and of `pounding
-//! simulate` (two decks, and the three-segment viaduct) are opened in headless Chromium.
+//! Headless-browser check of the reports (issue 12 acceptance): `report.html` of `pounding study`
+//! (a small scenario with figures, so an index page and two geometry pages), of `pounding
+//! simulate` and of `pounding compare` (two decks, and the three-segment viaduct each) are
+//! opened in headless Chromium.
 //!
 //! * Rust crawls every page reachable from `report.html`: each `src=`/`href=` target is relative
 //!   and exists; PNG targets decode in full.
@@ -299,6 +300,40 @@ fn both_reports_load_in_headless_chromium() {
             &s(&frag.join("out")),
         ],
         &frag.join("out"),
+    );
+    assert_eq!((pages, images), (1, 1));
+    // `compare` of the two decks (two overlay figures) and of the viaduct (its gap panels)
+    let cmp = work.join("compare-two-decks");
+    let (pages, images) = run_and_check(
+        &chrome,
+        &work,
+        &[
+            "compare",
+            "--duration",
+            "3",
+            "--laws",
+            "rigid,kelvin",
+            "--out",
+            &s(&cmp),
+        ],
+        &cmp,
+    );
+    assert_eq!((pages, images), (1, 2));
+    let cmp = work.join("compare-viaduct");
+    let (pages, images) = run_and_check(
+        &chrome,
+        &work,
+        &[
+            "compare",
+            &s(&example),
+            "--duration",
+            "3",
+            "--laws",
+            "rigid,bilinear",
+            "--out",
+            &s(&cmp),
+        ],
+        &cmp,
     );
     assert_eq!((pages, images), (1, 1));
     // The screenshots (screenshot-*.png) go with the scratch directory; POUNDING_KEEP_SCRATCH=1

@@ -8,6 +8,7 @@ same numbers (bit for bit), numpy arrays and pandas tables instead of files.
 * :func:`study` — the parametric stick/slip study (``bounds.csv`` rows as a DataFrame);
 * :func:`simulate` — a seismic time history (``summary.json`` dict, numpy histories);
 * :func:`batch` — records × scales in parallel (``batch.csv`` rows);
+* :func:`compare` — one scenario under several contact laws (``compare.csv`` rows);
 * :func:`check` — the code check of seats and joint gaps (``pounding check``);
 * :func:`fragility` — fragility curves over a record set (``runs.csv`` rows and the fits of
   ``fragility.csv``/``fragility.json``; optionally those files in a directory);
@@ -26,6 +27,7 @@ Heavy calls release the GIL.
 
 from . import lcp, motion
 from ._assess import FragilityResult, fragility
+from ._compare import ComparisonResult, compare
 from ._core import SolverError, __version__
 from ._impact import ImpactResult, impact
 from ._sim import SimulationResult, batch, check, default_simulate_scenario, simulate
@@ -42,6 +44,8 @@ __all__ = [
     "SimulationResult",
     "simulate",
     "batch",
+    "ComparisonResult",
+    "compare",
     "check",
     "FragilityResult",
     "fragility",

@@ -63,6 +63,14 @@ def batch_run(
 def check_run(
     path: Optional[str] = None, text: Optional[str] = None, origin: str = "scenario",
 ) -> Tuple[str, str, str, str]: ...
+def compare_run(
+    path: Optional[str] = None, text: Optional[str] = None, origin: str = "scenario",
+    laws: Optional[List[str]] = None, dt: Optional[float] = None,
+    scale: Optional[float] = None, duration: Optional[float] = None,
+) -> Tuple[
+    str, Optional[str], str, List[Tuple[str, str]], List[Tuple[str, List[str]]],
+    List[Tuple[str, float]], Tuple[List[str], List[Tuple[str, str]]],
+]: ...
 def default_simulate_scenario() -> str: ...
 def default_study_scenario() -> str: ...
 def fragility_run(

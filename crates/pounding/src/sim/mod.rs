@@ -60,6 +60,7 @@
 
 pub mod batch;
 pub mod bridge;
+pub mod compare;
 pub mod compliance;
 pub mod contact;
 pub mod dofs;

@@ -53,6 +53,7 @@ mod sim_bridge_reference;
 mod sim_bridge_seats;
 mod sim_bridge_site_contact;
 mod sim_bridge_trajectories;
+mod sim_compare;
 mod sim_compliance;
 mod sim_friction;
 mod sim_observers;

@@ -257,7 +257,18 @@ fn writers_rows_match_their_headers() {
     let v: serde_json::Value = serde_json::from_str(&j).unwrap();
     assert_eq!(v["steps"], sol.steps);
     assert!(v["abutments"]["deck1"].is_object());
-    let c = compare_csv(&[("rigid", &sol)]);
+    let st = pounding::sim::scenario::Setup::TwoDecks(Box::new(setup.clone()));
+    let ran = pounding::sim::compare::Ran {
+        estimates: st.peak_force_estimates(&sol),
+        setup: st,
+        sol: sol.clone(),
+        seconds: 0.0,
+        warnings: Vec::new(),
+    };
+    let c = compare_csv(&[pounding::sim::compare::LawRun {
+        law: "rigid".into(),
+        outcome: Ok(ran),
+    }]);
     assert_eq!(
         c.lines().nth(1).unwrap().split(',').count(),
         COMPARE_HEADER.split(',').count()

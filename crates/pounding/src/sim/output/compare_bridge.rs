@@ -4,46 +4,47 @@
 //! `compare_sites.csv` (one row per law and site: the figures an engineer compares joint by
 //! joint) and the readable table printed on stdout.
 //!
-//! Empty fields mean "not applicable": the contact force of rigid contact (impulses only), a
+//! Empty fields mean "not applicable": the contact force of rigid contact (impulses only; its
+//! estimate from the impulse has columns of its own), the estimate of a compliance law, a
 //! joint's opening at an abutment, the figures of a skipped law. Numbers are [`float_token`]s.
 
 use super::batch::field;
+use super::compare::{ESTIMATE_NOTE, estimate_cell};
+use super::{PeakEstimate, SiteKey};
 use crate::math::Real;
 use crate::output::{fixed, float_token};
-use crate::sim::bridge::{ABUTMENT_SIDES, BridgeSolution};
+use crate::sim::bridge::ABUTMENT_SIDES;
+use crate::sim::compare::{LawRun, Ran};
+use std::collections::BTreeMap;
 
 /// Every file `compare` writes for a bridge; removed before a new run writes. `timing.json` is
 /// written last and marks a complete run.
 pub const BRIDGE_COMPARE_OUTPUTS: &[&str] = &[
     "timing.json",
+    "report.html",
     "compare.csv",
     "compare_sites.csv",
     "joint_gap.png",
 ];
 
 /// Columns of the bridge `compare.csv`: per law its status (`Completed`, … or `skipped`), steps,
-/// impacts of the whole bridge, the largest contact force and impulse over all joints and
-/// abutments, the largest joint closing and opening, the largest penetration, segment
+/// impacts of the whole bridge, the largest contact force computed by a compliance law over all
+/// joints and abutments, the rigid law's largest peak-force estimate from the impulse and the
+/// contact duration it assumes ([`crate::contact_law::estimate`]), the largest impulse, the
+/// largest joint closing and opening, the largest penetration, segment
 /// displacement and seat displacement, unseating, the energy-balance error, and the reason a
 /// skipped law could not run.
 pub const BRIDGE_COMPARE_HEADER: &str = "law,status,steps,impacts,peak_contact_force_n,\
-peak_impulse_ns,peak_closing_m,peak_opening_m,peak_penetration_m,peak_displacement_m,\
+peak_force_estimate_n,contact_time_estimate_s,peak_impulse_ns,peak_closing_m,peak_opening_m,peak_penetration_m,peak_displacement_m,\
 peak_seat_displacement_m,unseated,energy_balance_error,skipped_reason";
 
 /// Columns of `compare_sites.csv`: one row per law that ran and site (`joint1`, … in bridge
 /// order, then `abutment.start`, `abutment.end` where present), as the `joints` /
-/// `abutments` arrays of a bridge `summary.json`.
-pub const BRIDGE_COMPARE_SITES_HEADER: &str = "law,site,impacts,peak_contact_force_n,peak_impulse_ns,peak_closing_m,peak_opening_m,\
+/// `abutments` arrays of a bridge `summary.json`, and the site's rigid peak-force estimate
+/// (empty for a compliance law).
+pub const BRIDGE_COMPARE_SITES_HEADER: &str = "law,site,impacts,peak_contact_force_n,\
+peak_force_estimate_n,contact_time_estimate_s,peak_impulse_ns,peak_closing_m,peak_opening_m,\
 restrainer_peak_force_n";
-
-/// One law of a bridge comparison: its run, or why it could not run on this bridge.
-#[derive(Debug, Clone, Copy)]
-pub enum BridgeCompareRun<'a> {
-    /// The law ran (whatever its status).
-    Ran(&'a BridgeSolution),
-    /// The law was skipped: the reason (a build or model error).
-    Skipped(&'a str),
-}
 
 /// `Some(x)` as its token, `None` as an empty field.
 fn opt(x: Option<Real>) -> String {
@@ -55,7 +56,8 @@ fn max_of(xs: impl Iterator<Item = Option<Real>>) -> Option<Real> {
     xs.flatten().reduce(Real::max)
 }
 
-/// One site's figures: `(site, impacts, force, impulse, closing, opening, restrainer force)`.
+/// One site's figures: `(site, impacts, force, impulse, closing, opening, restrainer force,
+/// estimate)`.
 type SiteRow = (
     String,
     usize,
@@ -64,11 +66,14 @@ type SiteRow = (
     Real,
     Option<Real>,
     Option<Real>,
+    Option<PeakEstimate>,
 );
 
 /// The sites of a run in bridge order.
-fn sites(sol: &BridgeSolution) -> Vec<SiteRow> {
-    let s = &sol.summary;
+fn sites(ran: &Ran) -> Vec<SiteRow> {
+    let s = &ran.sol.summary;
+    let empty = BTreeMap::new();
+    let est: &BTreeMap<SiteKey, PeakEstimate> = ran.estimates.as_ref().unwrap_or(&empty);
     let mut rows: Vec<SiteRow> = s
         .joints
         .iter()
@@ -82,6 +87,7 @@ fn sites(sol: &BridgeSolution) -> Vec<SiteRow> {
                 j.peak_closing,
                 Some(j.peak_opening),
                 j.restrainer_peak_force,
+                est.get(&(true, k)).copied(),
             )
         })
         .collect();
@@ -95,6 +101,7 @@ fn sites(sol: &BridgeSolution) -> Vec<SiteRow> {
                 a.peak_closing,
                 None,
                 None,
+                est.get(&(false, side)).copied(),
             ));
         }
     }
@@ -102,26 +109,31 @@ fn sites(sol: &BridgeSolution) -> Vec<SiteRow> {
 }
 
 /// The bridge `compare.csv`: [`BRIDGE_COMPARE_HEADER`], then one row per `(law, run)`.
-pub fn bridge_compare_csv(runs: &[(&str, BridgeCompareRun)]) -> String {
+pub fn bridge_compare_csv(runs: &[LawRun]) -> String {
     let mut out = String::from(BRIDGE_COMPARE_HEADER);
     out.push('\n');
-    for &(law, run) in runs {
-        let row: Vec<String> = match run {
-            BridgeCompareRun::Skipped(why) => {
+    for run in runs {
+        let law = run.law.as_str();
+        let row: Vec<String> = match &run.outcome {
+            Err(why) => {
                 let mut r = vec![field(law), "skipped".into()];
-                r.extend(std::iter::repeat_n(String::new(), 11));
+                r.extend(std::iter::repeat_n(String::new(), 13));
                 r.push(field(why));
                 r
             }
-            BridgeCompareRun::Ran(sol) => {
+            Ok(ran) => {
+                let sol = &ran.sol;
                 let s = &sol.summary;
-                let site = sites(sol);
+                let site = sites(ran);
+                let e = ran.peak_estimate();
                 vec![
                     field(law),
                     format!("{:?}", sol.status),
                     sol.steps.to_string(),
                     s.impacts.to_string(),
                     opt(max_of(site.iter().map(|r| r.2))),
+                    opt(e.map(|e| e.peak_force)),
+                    opt(e.map(|e| e.contact_time)),
                     opt(max_of(site.iter().map(|r| Some(r.3)))),
                     opt(max_of(s.joints.iter().map(|j| Some(j.peak_closing)))),
                     opt(max_of(s.joints.iter().map(|j| Some(j.peak_opening)))),
@@ -142,19 +154,21 @@ pub fn bridge_compare_csv(runs: &[(&str, BridgeCompareRun)]) -> String {
 
 /// `compare_sites.csv`: [`BRIDGE_COMPARE_SITES_HEADER`], then one row per site of every law
 /// that ran (skipped laws have no rows; `compare.csv` says why).
-pub fn bridge_compare_sites_csv(runs: &[(&str, BridgeCompareRun)]) -> String {
+pub fn bridge_compare_sites_csv(runs: &[LawRun]) -> String {
     let mut out = String::from(BRIDGE_COMPARE_SITES_HEADER);
     out.push('\n');
-    for &(law, run) in runs {
-        let BridgeCompareRun::Ran(sol) = run else {
+    for run in runs {
+        let Some(ran) = run.ran() else {
             continue;
         };
-        for (site, impacts, force, impulse, closing, opening, restrainer) in sites(sol) {
+        for (site, impacts, force, impulse, closing, opening, restrainer, est) in sites(ran) {
             let row = [
-                field(law),
+                field(&run.law),
                 site,
                 impacts.to_string(),
                 opt(force),
+                opt(est.map(|e| e.peak_force)),
+                opt(est.map(|e| e.contact_time)),
                 float_token(impulse),
                 float_token(closing),
                 opt(opening),
@@ -169,29 +183,39 @@ pub fn bridge_compare_sites_csv(runs: &[(&str, BridgeCompareRun)]) -> String {
 
 /// The readable table `pounding compare` prints for a bridge: one line per law and site
 /// (forces in MN, `-` for rigid contact), then the skipped laws with their reasons.
-pub fn bridge_compare_table(runs: &[(&str, BridgeCompareRun)]) -> String {
+pub fn bridge_compare_table(runs: &[LawRun]) -> String {
     let mut s = format!(
-        "{:<11} {:<15} {:>7} {:>11} {:>13} {:>11} {:>11}\n",
-        "law", "site", "impacts", "force [MN]", "impulse [kNs]", "closing [m]", "opening [m]"
+        "{:<11} {:<15} {:>7} {:>11} {:>14} {:>13} {:>11} {:>11}\n",
+        "law",
+        "site",
+        "impacts",
+        "force [MN]",
+        "estimate [MN]",
+        "impulse [kNs]",
+        "closing [m]",
+        "opening [m]"
     );
     let mut skipped = Vec::new();
-    for &(law, run) in runs {
-        let sol = match run {
-            BridgeCompareRun::Ran(sol) => sol,
-            BridgeCompareRun::Skipped(why) => {
+    for run in runs {
+        let law = run.law.as_str();
+        let ran = match &run.outcome {
+            Ok(ran) => ran,
+            Err(why) => {
                 skipped.push(format!("{law}: {why}"));
                 continue;
             }
         };
-        for (site, impacts, force, impulse, closing, opening, _) in sites(sol) {
+        let sol = &ran.sol;
+        for (site, impacts, force, impulse, closing, opening, _, est) in sites(ran) {
             let f = force.map_or("-".to_string(), |f| format!("{:.3}", f / 1e6));
             let o = opening.map_or("-".to_string(), |o| fixed(o, 5));
             s.push_str(&format!(
-                "{:<11} {:<15} {:>7} {:>11} {:>13} {:>11} {:>11}\n",
+                "{:<11} {:<15} {:>7} {:>11} {:>14} {:>13} {:>11} {:>11}\n",
                 law,
                 site,
                 impacts,
                 f,
+                estimate_cell(est),
                 fixed(impulse / 1e3, 3),
                 fixed(closing, 5),
                 o
@@ -201,7 +225,7 @@ pub fn bridge_compare_table(runs: &[(&str, BridgeCompareRun)]) -> String {
             s.push_str(&format!("{law:<11} status {:?}\n", sol.status));
         }
     }
-    s.push_str("(rigid contact has impulses, no force: its force column is '-')\n");
+    s.push_str(ESTIMATE_NOTE);
     for k in skipped {
         s.push_str(&format!("skipped {k}\n"));
     }

@@ -17,6 +17,7 @@ mod bridge;
 mod bridge_plan;
 mod compare;
 mod compare_bridge;
+mod estimate;
 mod history;
 mod impacts;
 mod input_warnings;
@@ -31,13 +32,16 @@ pub use bridge_plan::{
 };
 pub use compare::{COMPARE_HEADER, COMPARE_OUTPUTS, compare_csv, compare_table};
 pub use compare_bridge::{
-    BRIDGE_COMPARE_HEADER, BRIDGE_COMPARE_OUTPUTS, BRIDGE_COMPARE_SITES_HEADER, BridgeCompareRun,
-    bridge_compare_csv, bridge_compare_sites_csv, bridge_compare_table,
+    BRIDGE_COMPARE_HEADER, BRIDGE_COMPARE_OUTPUTS, BRIDGE_COMPARE_SITES_HEADER, bridge_compare_csv,
+    bridge_compare_sites_csv, bridge_compare_table,
 };
+pub use estimate::{PeakEstimate, SiteKey, peak_force_estimates};
+pub(crate) use estimate::{largest_estimate, peak_estimate_json, rigid_estimate, setup_estimates};
 pub use history::History;
 pub use impacts::{impacts_csv, run_warnings};
 pub use input_warnings::{InputWarning, input_warnings, warning_sentence};
 pub use trajectories::{TRAJECTORY_MAX_FRAMES, trajectories_json, trajectory_stride};
+pub(crate) use verdict::n3;
 pub use verdict::{VerdictLine, verdict};
 
 /// Degrees per radian.
@@ -140,44 +144,6 @@ pub(crate) fn pulse_cells(r: &super::ImpactRecord, rigid: bool, eps: Real) -> St
     [p.peak_force, p.duration, p.max_penetration]
         .map(float_token)
         .join(",")
-}
-
-/// The peak-force estimate of a rigid impact record at one corner contact: the default joint
-/// `k_h` shared by the site's two corner contacts (`k_h / 2` per corner, as the compliance laws
-/// share a joint's law, [`crate::contact_law::sharing`]).
-pub(crate) fn rigid_estimate(
-    r: &super::ImpactRecord,
-    eps: Real,
-) -> crate::contact_law::estimate::PeakForceEstimate {
-    crate::contact_law::estimate::rigid_peak_force(
-        r.impulse_n,
-        r.gamma_n_pre,
-        eps,
-        0.5 * crate::contact_law::registry::default_k_h(),
-    )
-}
-
-/// `summary.json`'s `peak_force_estimate_n` of a rigid run: the largest over the impacts and
-/// sites of the sum of the site's corner estimates in that impact (a rigid impact is one step, so
-/// its corner pulses coincide); `null` without impacts.
-pub(crate) fn peak_estimate_json<'a>(
-    records: impl Iterator<Item = (&'a super::ImpactRecord, Real)>,
-) -> serde_json::Value {
-    let mut sums = std::collections::BTreeMap::<(usize, bool, usize), Real>::new();
-    for (r, eps) in records {
-        let f = rigid_estimate(r, eps).peak_force;
-        if !f.is_nan() {
-            let key = (
-                r.impact,
-                matches!(r.contact, super::SimContact::Joint(_)),
-                r.site,
-            );
-            *sums.entry(key).or_insert(0.0) += f;
-        }
-    }
-    sums.into_values()
-        .reduce(Real::max)
-        .map_or(serde_json::Value::Null, json_float)
 }
 
 /// Relative tolerance of [`energy_warnings`] for the rigid law: energy created at a contact

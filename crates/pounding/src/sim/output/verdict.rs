@@ -22,7 +22,7 @@ pub struct VerdictLine {
 
 /// A number in a sentence, to 3 significant digits: plain between 1e-3 and 1e5, else
 /// `d.dde±x`.
-fn n3(x: f64) -> String {
+pub(crate) fn n3(x: f64) -> String {
     if x == 0.0 {
         return "0".into();
     }

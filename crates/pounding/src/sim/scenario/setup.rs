@@ -90,6 +90,16 @@ impl Setup {
         output::trajectories_json(&self.model(), self.ground(), sol)
     }
 
+    /// The rigid law's peak-force estimates of a run of it, by site (`None` when no contact site
+    /// is rigid; [`output::peak_force_estimates`]): the largest is `summary.json`'s
+    /// `peak_force_estimate_n`.
+    pub fn peak_force_estimates(
+        &self,
+        sol: &BridgeSolution,
+    ) -> Option<std::collections::BTreeMap<output::SiteKey, output::PeakEstimate>> {
+        output::setup_estimates(self, sol)
+    }
+
     /// `summary.json` of a run of it, as written.
     pub fn summary_json_text(&self, sol: &BridgeSolution) -> String {
         match self {
