@@ -265,14 +265,11 @@ fn batch_run(
     let mut list = Vec::with_capacity(records.len().max(arrays.len()));
     for (p, a) in records.into_iter().zip(arrays) {
         list.push(match (p, a) {
-            (Some(p), _) => BatchRecord {
-                name: p.display().to_string(),
-                record: Record::open_with(&p, &reading).map_err(|e| e.to_string()),
-            },
-            (None, Some(a)) => BatchRecord {
-                name: a.0.clone(),
-                record: Ok(array_record(a, reading.units)?),
-            },
+            (Some(p), _) => BatchRecord::single(
+                p.display().to_string(),
+                Record::open_with(&p, &reading).map_err(|e| e.to_string()),
+            ),
+            (None, Some(a)) => BatchRecord::single(a.0.clone(), Ok(array_record(a, reading.units)?)),
             (None, None) => return Err(value_error("a record is neither a path nor an array")),
         });
     }

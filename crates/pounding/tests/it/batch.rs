@@ -22,6 +22,7 @@ fn records() -> Vec<BatchRecord> {
         .map(|(n, f, a)| BatchRecord {
             name: n.into(),
             record: Ok(record(n, f, a)),
+            along_x: None,
         })
         .collect()
 }
@@ -158,6 +159,7 @@ fn an_unreadable_record_fails_only_its_rows() {
         BatchRecord {
             name: "missing.AT2".into(),
             record: Err("cannot read ground-motion record missing.AT2: not found".into()),
+            along_x: None,
         },
     );
     let rows = pool(2)
