@@ -34,8 +34,9 @@ pub(crate) fn check_flags(args: &Args) -> Result<()> {
     }
     if let (Some(m), Some(_)) = (&args.set, args.record_dt) {
         bail!(
-            "--record-dt applies to the files of --record or --records; the one-column records \
-             of the manifest {} give their sample interval in their entry (dt = SECONDS)",
+            "--record-dt applies to the files of --record or --records; with --set, the \
+             one-column records of the manifest {} give their sample interval in their entry \
+             (dt = SECONDS)",
             m.display()
         );
     }
