@@ -5,7 +5,7 @@
 //! validation and record loading live in the library), runs [`pounding::sim::simulate`] and
 //! writes `history.csv`, `impacts.csv`, `summary.json` ([`pounding::sim::output`]), `timing.json`
 //! and PNG plots into the output directory. Every input is validated before anything is written.
-//! With `--records` it runs a batch instead ([`sim_batch`]).
+//! With `--records` or `--set` it runs a batch instead ([`sim_batch`]).
 
 use anyhow::{Context, Result};
 use pounding::ground_motion::AccelUnits;
@@ -39,8 +39,9 @@ pub struct Args {
     /// scenario's records.
     #[arg(long, value_name = "FILE")]
     pub record: Option<PathBuf>,
-    /// Units of the text records (CSV, columns, one column) of --record / --records: g or m/s2.
-    /// Default: the scenario's csv_units (g). A PEER .AT2 header names its own units.
+    /// Units of the text records (CSV, columns, one column) of --record / --records (and of a
+    /// --set manifest's entries without `units`): g or m/s2. Default: the scenario's csv_units
+    /// (g). A PEER .AT2 header names its own units.
     #[arg(long, value_name = "g|m/s2", value_parser = parse_units)]
     pub csv_units: Option<AccelUnits>,
     /// Sample interval (s) of one-column records (accelerations only, as OpenSees' timeSeries
@@ -67,26 +68,45 @@ pub struct Args {
     #[arg(long)]
     pub print_default: bool,
     /// Batch mode: run every record (files, or directories whose `.AT2`/`.csv`/`.txt`/`.dat`
-    /// files are taken in name order; skipped files are listed) at every `--scales` factor, each as the only component along y (as
-    /// `--record`); writes `batch.csv` and `batch.png`. Put the scenario file before this flag.
-    #[arg(long, num_args = 1.., value_name = "DIR_OR_FILE", conflicts_with_all = ["record", "scale"])]
+    /// files are taken in name order; skipped files are listed) at every `--scales` factor, each
+    /// as the only component along y (as `--record`); writes `batch.csv` and `batch.png`. Put the
+    /// scenario file before this flag. Horizontal pairs: a record-set manifest with --set.
+    #[arg(
+        long,
+        num_args = 1..,
+        value_name = "DIR_OR_FILE",
+        conflicts_with_all = ["record", "scale"],
+        group = "batch"
+    )]
     pub records: Vec<PathBuf>,
-    /// Batch mode: scale factors, comma separated (each multiplies the scenario's scale_y, as
-    /// `--scale`). Default: 1.
+    /// Batch mode over a record-set manifest (`.toml` with `[[record]]` tables or `[synth]`, or
+    /// `.csv`, as `pounding fragility --set`): every entry at every `--scales` factor; a pair's
+    /// `x` record along y with scale_y, its `y` record along x with scale_x (incidence_deg
+    /// applies), a single record as with --records. batch.csv names each entry's id, records
+    /// and metadata.
+    #[arg(
+        long,
+        value_name = "MANIFEST",
+        conflicts_with_all = ["record", "scale", "records"],
+        group = "batch"
+    )]
+    pub set: Option<PathBuf>,
+    /// Batch mode: scale factors, comma separated (each multiplies the scenario's scale_y, and
+    /// a pair's scale_x, as `--scale`). Default: 1.
     #[arg(
         long,
         value_delimiter = ',',
         value_name = "S1,S2,...",
         allow_hyphen_values = true,
-        requires = "records"
+        requires = "batch"
     )]
     pub scales: Vec<f64>,
     /// Batch mode: worker threads (default: all cores). batch.csv is identical for any value.
-    #[arg(long, value_name = "N", requires = "records")]
+    #[arg(long, value_name = "N", requires = "batch")]
     pub threads: Option<usize>,
     /// Batch mode: run only the runs whose global index i (0-based, record-major) has
     /// i mod N = K − 1.
-    #[arg(long, value_name = "K/N", requires = "records")]
+    #[arg(long, value_name = "K/N", requires = "batch")]
     pub shard: Option<String>,
 }
 
@@ -132,10 +152,15 @@ pub(crate) fn with_flags(sc: Scenario, args: &Args) -> Scenario {
             .with_law_replacing(l)
             .with_flag(ParamKey::new(Section::Contact, "law"), "--law");
     }
-    if !args.records.is_empty() {
+    if is_batch(args) {
         sc = sc.for_batch();
     }
     sc
+}
+
+/// Whether the command runs a batch (`--records` or `--set`).
+pub(crate) fn is_batch(args: &Args) -> bool {
+    !args.records.is_empty() || args.set.is_some()
 }
 
 /// The command-line replacements as given, for the report.
@@ -223,7 +248,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
             pounding::sim::Problem::model(setup).segments.len(),
         )
     };
-    if !args.records.is_empty() {
+    if is_batch(&args) {
         let reading = sc.override_reading(args.csv_units)?;
         let setup = sc.build_setup()?;
         check(&setup)?;

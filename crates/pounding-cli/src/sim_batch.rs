@@ -1,4 +1,5 @@
-//! Batch mode of `pounding simulate` (`--records … --scales …`): every (record, scale) pair in
+//! Batch mode of `pounding simulate` (`--records … --scales …`, or `--set MANIFEST`: the
+//! entries of a record-set manifest, pairs along y and x): every (record, scale) pair in
 //! parallel ([`pounding::sim::batch`]), a progress bar on a terminal, `batch.csv` (one row per
 //! run), `batch.png` (peak response against PGA per record) and `timing.json`.
 //!
@@ -12,13 +13,14 @@ use super::sim_plots::{self, BatchCurve};
 use super::sim_records::count;
 use anyhow::{Context, Result, anyhow};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use pounding::ground_motion::set::RecordSet;
 use pounding::ground_motion::{ComponentInfo, G0, ReadOptions, Record};
 use pounding::math::Real;
 use pounding::output::write_atomic;
 use pounding::shard::Shard;
 use pounding::sim::Problem;
 use pounding::sim::batch::{BatchOutcome, BatchRecord, BatchRow, run_batch};
-use pounding::sim::output::batch_csv;
+use pounding::sim::output::{batch_csv, batch_set_csv};
 use pounding::sim::scenario::Setup;
 use pounding::sim::{SimSettings, SimStatus};
 use serde_json::json;
@@ -29,19 +31,52 @@ use std::time::Instant;
 /// Degrees per radian (as in `summary.json`).
 const DEG: Real = 180.0 / std::f64::consts::PI;
 
-/// What every batch needs before its runs: the records (read), the scales, the shard, the
-/// worker pool and the progress bar (the plan is printed; the output directory is checked).
+/// What every batch needs before its runs: the records (read), the record set they come from
+/// (`--set`), the scales, the shard, the worker pool and the progress bar (the plan is printed;
+/// the output directory is checked).
 struct Plan {
     records: Vec<BatchRecord>,
+    set: Option<RecordSet>,
     scales: Vec<Real>,
     shard: Shard,
     pool: rayon::ThreadPool,
     pb: ProgressBar,
 }
 
+/// The entries of the batch: the records of `--records` (one component each; an unreadable one
+/// is kept with its error), or the entries of the `--set` manifest (all read, or an error
+/// naming the manifest, key and line) and the set; each component's line printed.
+fn entries(args: &Args, reading: &ReadOptions) -> Result<(Vec<BatchRecord>, Option<RecordSet>)> {
+    if let Some(m) = &args.set {
+        let set = RecordSet::load_with_units(m, reading.units, &reading.units_from)?;
+        for e in &set.records {
+            super::sim_records::print_component(&ComponentInfo::of("y", &e.x));
+            if let Some(y) = &e.y {
+                super::sim_records::print_component(&ComponentInfo::of("x", y));
+            }
+        }
+        return Ok((BatchRecord::of_set(&set), Some(set)));
+    }
+    let paths = super::sim_records::expand_records(&args.records)?;
+    let records: Vec<BatchRecord> = paths
+        .iter()
+        .map(|p| {
+            BatchRecord::single(
+                p.display().to_string(),
+                Record::open_with(p, reading).map_err(|e| e.to_string()),
+            )
+        })
+        .collect();
+    for r in &records {
+        if let Ok(rec) = &r.record {
+            super::sim_records::print_component(&ComponentInfo::of("y", rec));
+        }
+    }
+    Ok((records, None))
+}
+
 /// Parses and checks the batch flags, reads the records and prints the plan.
 fn plan(args: &Args, reading: &ReadOptions) -> Result<Plan> {
-    let paths = super::sim_records::expand_records(&args.records)?;
     let scales = if args.scales.is_empty() {
         vec![1.0]
     } else {
@@ -52,18 +87,7 @@ fn plan(args: &Args, reading: &ReadOptions) -> Result<Plan> {
         None => Shard::ALL,
     };
     pounding::input::check_threads(args.threads).map_err(anyhow::Error::msg)?;
-    let records: Vec<BatchRecord> = paths
-        .iter()
-        .map(|p| BatchRecord {
-            name: p.display().to_string(),
-            record: Record::open_with(p, reading).map_err(|e| e.to_string()),
-        })
-        .collect();
-    for r in &records {
-        if let Ok(rec) = &r.record {
-            super::sim_records::print_component(&ComponentInfo::of("y", rec));
-        }
-    }
+    let (records, set) = entries(args, reading)?;
     pounding::sim::batch::validate_lists(&records, &scales).map_err(|e| anyhow!("{e}"))?;
     let mut pool = rayon::ThreadPoolBuilder::new();
     if let Some(n) = args.threads {
@@ -72,9 +96,18 @@ fn plan(args: &Args, reading: &ReadOptions) -> Result<Plan> {
     let pool = pool.build().context("cannot start the worker threads")?;
     let total = records.len() * scales.len();
     let todo = (0..total).filter(|&i| shard.contains(i)).count();
+    let what = match (&set, &args.set) {
+        (Some(set), Some(m)) => format!(
+            "{} ({} pairs) of {}",
+            count(set.records.len(), "entry").replace("entrys", "entries"),
+            set.records.iter().filter(|e| e.y.is_some()).count(),
+            m.display()
+        ),
+        _ => count(records.len(), "record"),
+    };
     eprintln!(
         "batch: {} x {} = {}{} on {}",
-        count(records.len(), "record"),
+        what,
         count(scales.len(), "scale"),
         count(total, "run"),
         if shard == Shard::ALL {
@@ -99,6 +132,7 @@ fn plan(args: &Args, reading: &ReadOptions) -> Result<Plan> {
     pounding::output::check_output_dir_free(&args.out)?;
     Ok(Plan {
         records,
+        set,
         scales,
         shard,
         pool,
@@ -149,7 +183,7 @@ pub fn run(
 ) -> Result<ExitCode> {
     let plan = plan(args, reading)?;
     let (rows, runs_secs) = execute(&plan, setup, setup.settings())?;
-    let curves = curves(&plan.records, &rows);
+    let curves = curves(&plan.records, plan.set.as_ref(), &rows);
     let model = setup.model();
     let seat = model
         .joints
@@ -162,10 +196,15 @@ pub fn run(
                 .map(|a| a.map_or(model.outer_seat_length, |a| a.seat_length)),
         )
         .fold(Real::INFINITY, Real::min);
+    let (layout, n) = (setup.layout(), model.segments.len());
+    let csv = match &plan.set {
+        Some(set) => batch_set_csv(layout, n, &rows, set),
+        None => batch_csv(layout, n, &rows),
+    };
     write_outputs(
         args,
         &plan,
-        &batch_csv(setup.layout(), model.segments.len(), &rows),
+        &csv,
         &curves,
         seat,
         (rows.len(), runs_secs, t_start),
@@ -216,9 +255,9 @@ fn execute<P: Problem>(
     Ok((rows, t_runs.elapsed().as_secs_f64()))
 }
 
-/// The curves of `batch.png`: per record, the peak responses of its completed runs against PGA
+/// The curves of `batch.png`: per record (or manifest entry), the peak responses of its completed runs against PGA
 /// (the largest seat displacement, the largest joint opening and segment rotation, the impacts).
-fn curves(records: &[BatchRecord], rows: &[BatchRow]) -> Vec<BatchCurve> {
+fn curves(records: &[BatchRecord], set: Option<&RecordSet>, rows: &[BatchRow]) -> Vec<BatchCurve> {
     let values = |o: &BatchOutcome| {
         let m = &o.summary;
         let max = |v: &mut dyn Iterator<Item = Real>| v.fold(Real::NAN, Real::max);
@@ -242,9 +281,13 @@ fn curves(records: &[BatchRecord], rows: &[BatchRow]) -> Vec<BatchCurve> {
                 })
                 .collect();
             pts.sort_by(|p, q| p.0.total_cmp(&q.0));
-            let label = PathBuf::from(&rec.name)
-                .file_name()
-                .map_or(rec.name.clone(), |f| f.to_string_lossy().into_owned());
+            // a file's name without its directory; a manifest entry's id as written
+            let label = match set {
+                Some(_) => rec.name.clone(),
+                None => PathBuf::from(&rec.name)
+                    .file_name()
+                    .map_or(rec.name.clone(), |f| f.to_string_lossy().into_owned()),
+            };
             BatchCurve { label, pts }
         })
         .filter(|c| !c.pts.is_empty())

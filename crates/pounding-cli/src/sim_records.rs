@@ -1,5 +1,6 @@
 //! The record files of `pounding simulate --record` / `--records`: the flags' checks (a scenario
-//! file given among the records, `--csv-units` / `--record-dt` without a record), the expansion
+//! file given among the records, `--csv-units` / `--record-dt` without a record, `--record-dt`
+//! with a `--set` manifest), the expansion
 //! of `--records` directories (every skipped file listed with the reason) and the printed line
 //! per ground-motion component.
 
@@ -25,12 +26,21 @@ pub(crate) fn check_flags(args: &Args) -> Result<()> {
     if let Some(t) = args.records.iter().find(|p| has_ext(p, "toml")) {
         bail!(
             "--records: {} is a scenario file (.toml), not a record: put the scenario before \
-             the flags (pounding simulate {} --records ...) or --records last",
+             the flags (pounding simulate {} --records ...) or --records last (a record-set \
+             manifest is given with --set MANIFEST)",
             t.display(),
             t.display()
         );
     }
-    let files = args.record.is_some() || !args.records.is_empty();
+    if let (Some(m), Some(_)) = (&args.set, args.record_dt) {
+        bail!(
+            "--record-dt applies to the files of --record or --records; with --set, the \
+             one-column records of the manifest {} give their sample interval in their entry \
+             (dt = SECONDS)",
+            m.display()
+        );
+    }
+    let files = args.record.is_some() || super::is_batch(args);
     for (flag, given, key) in [
         ("--csv-units", args.csv_units.is_some(), "csv_units"),
         ("--record-dt", args.record_dt.is_some(), "record_dt"),

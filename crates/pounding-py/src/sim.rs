@@ -1,9 +1,10 @@
 //! `pounding.simulate` and `pounding.batch`: seismic time histories of two decks or of a bridge
 //! of N segments (as `pounding simulate`), and batches of (record, scale) runs (as
-//! `pounding simulate --records ... --scales ...`).
+//! `pounding simulate --records ... --scales ...`, or `--set MANIFEST` for pairs).
 
 use crate::value_error;
 use numpy::PyArray2;
+use pounding::ground_motion::set::RecordSet;
 use pounding::ground_motion::{AccelUnits, ReadOptions, Record};
 use pounding::output::float_token;
 use pounding::shard::Shard;
@@ -229,10 +230,11 @@ fn simulate_run(
     })
 }
 
-/// Runs a batch: every record (a path, or samples `(name, values, dt)`) at every scale, in
-/// parallel on `threads` workers; returns the text of `batch.csv`.
+/// Runs a batch: every record (a path, or samples `(name, values, dt)`) at every scale, or every
+/// entry of the record-set manifest `record_set` (pairs along y and x, as `pounding simulate
+/// --set`), in parallel on `threads` workers; returns the text of `batch.csv`.
 #[pyfunction]
-#[pyo3(signature = (path=None, text=None, origin="scenario", records=Vec::new(), arrays=Vec::new(), scales=Vec::new(), csv_units=None, record_dt=None, dt=None, duration=None, law=None, threads=None))]
+#[pyo3(signature = (path=None, text=None, origin="scenario", records=Vec::new(), arrays=Vec::new(), scales=Vec::new(), csv_units=None, record_dt=None, dt=None, duration=None, law=None, threads=None, record_set=None))]
 #[allow(clippy::too_many_arguments)]
 fn batch_run(
     py: Python<'_>,
@@ -248,7 +250,22 @@ fn batch_run(
     duration: Option<f64>,
     law: Option<String>,
     threads: Option<usize>,
+    record_set: Option<PathBuf>,
 ) -> PyResult<String> {
+    if let Some(m) = &record_set {
+        if !records.is_empty() || !arrays.is_empty() {
+            return Err(value_error(
+                "give records or a record_set (a manifest of pairs), not both",
+            ));
+        }
+        if record_dt.is_some() {
+            return Err(value_error(format!(
+                "record_dt applies to the record files of records; the one-column records of \
+                 the manifest {} give their sample interval in their entry (dt = SECONDS)",
+                m.display()
+            )));
+        }
+    }
     let csv_units = units(csv_units)?;
     let flags = Flags {
         record: None,
@@ -262,26 +279,44 @@ fn batch_run(
     };
     let sc = flags.apply(load(path, text, origin)?);
     let reading: ReadOptions = sc.override_reading(csv_units).map_err(value_error)?;
-    let mut list = Vec::with_capacity(records.len().max(arrays.len()));
-    for (p, a) in records.into_iter().zip(arrays) {
-        list.push(match (p, a) {
-            (Some(p), _) => BatchRecord {
-                name: p.display().to_string(),
-                record: Record::open_with(&p, &reading).map_err(|e| e.to_string()),
-            },
-            (None, Some(a)) => BatchRecord {
-                name: a.0.clone(),
-                record: Ok(array_record(a, reading.units)?),
-            },
-            (None, None) => return Err(value_error("a record is neither a path nor an array")),
-        });
-    }
+    let (list, set) = match &record_set {
+        Some(m) => {
+            let set = RecordSet::load_with_units(m, reading.units, &reading.units_from)
+                .map_err(value_error)?;
+            (BatchRecord::of_set(&set), Some(set))
+        }
+        None => (record_list(records, arrays, &reading)?, None),
+    };
     let pool = crate::pool(threads)?;
     let setup = sc.build_setup().map_err(value_error)?;
     let (layout, n) = (setup.layout(), setup.model().segments.len());
     let settings = setup.settings().clone();
     let rows = batch_rows(py, pool, setup, settings, list, scales)?;
-    Ok(so::batch_csv(layout, n, &rows))
+    Ok(match &set {
+        Some(set) => so::batch_set_csv(layout, n, &rows, set),
+        None => so::batch_csv(layout, n, &rows),
+    })
+}
+
+/// The one-component entries of a batch: each record a path (read as the CLI reads it; an
+/// unreadable one keeps its error) or samples.
+fn record_list(
+    records: Vec<Option<PathBuf>>,
+    arrays: Vec<Option<ArrayRecord>>,
+    reading: &ReadOptions,
+) -> PyResult<Vec<BatchRecord>> {
+    let mut list = Vec::with_capacity(records.len().max(arrays.len()));
+    for (p, a) in records.into_iter().zip(arrays) {
+        list.push(match (p, a) {
+            (Some(p), _) => BatchRecord::single(
+                p.display().to_string(),
+                Record::open_with(&p, reading).map_err(|e| e.to_string()),
+            ),
+            (None, Some(a)) => BatchRecord::single(a.0.clone(), Ok(array_record(a, reading.units)?)),
+            (None, None) => return Err(value_error("a record is neither a path nor an array")),
+        });
+    }
+    Ok(list)
 }
 
 /// Runs every record of `list` at every scale on `problem` (two decks or a bridge) in `pool`, off

@@ -96,3 +96,64 @@ def test_warnings_column_is_an_int64_count(tmp_path):
     rows = pounding.batch(None, [str(p) for p in _records(tmp_path)], [1.0, 3.0])
     assert rows["warnings"].dtype == np.int64
     assert (rows["warnings"] >= 0).all()
+
+
+_PAIRS_TOML = """[set]
+name = "El Centro both ways"
+[[record]]
+id = "elc-180-270"
+x = "builtin:ELC180"
+y = "builtin:ELC270"
+[record.meta]
+station = "El Centro, Imperial Valley"
+magnitude = 6.9
+[[record]]
+id = "elc-270-180"
+x = "builtin:ELC270"
+y = "builtin:ELC180"
+"""
+
+_PAIRS_CSV = """id,x,y,station
+elc-180-270,builtin:ELC180,builtin:ELC270,"El Centro, Imperial Valley"
+elc-270-180,builtin:ELC270,builtin:ELC180,
+"""
+
+
+@pytest.mark.parametrize("form", ["bridge", "two-deck"])
+def test_record_set_pairs_equal_cli_batch_csv(cli, root, tmp_path, form):
+    # 2 pairs (El Centro 180/270 and the swapped pair) x 2 scales: the rows of `pounding.batch`
+    # with a manifest are the CLI's `simulate --set` batch.csv, byte for byte
+    if form == "bridge":
+        scen, manifest = str(root / "examples" / "viaduct-curved-5.toml"), "pairs.toml"
+        (tmp_path / manifest).write_text(_PAIRS_TOML)
+    else:
+        scen, manifest = None, "pairs.csv"
+        (tmp_path / manifest).write_text(_PAIRS_CSV)
+    m = tmp_path / manifest
+    args = ["simulate"] + ([scen] if scen else []) + ["--set", m, "--scales", "0.5,1.5",
+                                                       "--duration", "3", "--out", tmp_path / "o"]
+    p = cli(*args, check=False)
+    assert p.returncode == 0, p.stderr
+    want = (tmp_path / "o" / "batch.csv").read_text()
+    got = batch_csv_text(scen, [], [], [0.5, 1.5], duration=3.0, record_set=str(m))
+    assert got == want
+    rows = pounding.batch(scen, scales=[0.5, 1.5], duration=3.0, record_set=m, threads=1)
+    assert list(rows.columns) == want.splitlines()[0].split(",")
+    assert list(rows["record"]) == ["elc-180-270"] * 2 + ["elc-270-180"] * 2
+    assert all("ELC180" in r for r in rows["record_y"][:2]) and all(
+        "ELC270" in r for r in rows["record_x"][:2])
+    assert rows["meta_station"].iloc[0] == "El Centro, Imperial Valley"
+    assert list(rows["status"]) == ["Completed"] * 4
+
+
+def test_a_bad_record_set_raises_naming_manifest_key_and_line(tmp_path):
+    m = tmp_path / "bad.toml"
+    m.write_text('[[record]]\nid = "a"\nx = "builtin:ELC180"\ny = "nowhere.AT2"\n')
+    with pytest.raises(ValueError, match=r"bad\.toml.*record\[0\]\.y \(.*bad\.toml:4\).*nowhere\.AT2"):
+        pounding.batch(None, scales=[1.0], record_set=m)
+    with pytest.raises(ValueError, match="not both"):
+        pounding.batch(None, ["builtin:ELC180"], [1.0], record_set=m)
+    with pytest.raises(ValueError, match="record_dt"):
+        pounding.batch(None, scales=[1.0], record_set=m, record_dt=0.01)
+    with pytest.raises(TypeError, match="record_set"):
+        pounding.batch(None, scales=[1.0], record_set=[m])

@@ -100,6 +100,7 @@ mod lcp;
 mod manifest_csv;
 mod memory_guards;
 mod motion;
+mod pair_batch;
 mod physics_check;
 mod record_misreads;
 mod record_units;

@@ -59,6 +59,7 @@ def batch_run(
     scales: List[float] = ..., csv_units: Optional[str] = None,
     record_dt: Optional[float] = None, dt: Optional[float] = None,
     duration: Optional[float] = None, law: Optional[str] = None, threads: Optional[int] = None,
+    record_set: Optional[str] = None,
 ) -> str: ...
 def check_run(
     path: Optional[str] = None, text: Optional[str] = None, origin: str = "scenario",

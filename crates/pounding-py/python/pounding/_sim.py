@@ -243,6 +243,7 @@ def batch(
     record_dt: Optional[float] = None,
     threads: Optional[int] = None,
     errors: str = "raise",
+    record_set: Any = None,
 ):
     """Run every record at every scale (an incremental dynamic analysis), in parallel.
 
@@ -251,7 +252,19 @@ def batch(
     ``scales[b]``. ``records`` is a list of paths (files, not directories) or
     ``(accelerations, dt[, name])`` tuples; a single path (str or ``os.PathLike``) or a single
     tuple is one record. ``scales`` is a list of numbers (a single number is one scale); an
-    empty ``records`` or ``scales`` raises ``ValueError``. A run that fails (a record that cannot
+    empty ``records`` or ``scales`` raises ``ValueError``.
+
+    Horizontal pairs: ``record_set`` is the path of a record-set manifest (``.toml`` with
+    ``[[record]]`` tables or ``[synth]``, or ``.csv``), the batch of ``pounding simulate
+    SCENARIO --set MANIFEST --scales ...`` (give it instead of ``records``): each entry at each
+    scale, a pair's ``x`` record along y with ``scale_y`` and its ``y`` record along x with
+    ``scale_x`` (``incidence_deg`` applies; each scale multiplies both factors), a single record
+    as with ``records``. The rows then also carry ``record_y``, ``record_x`` and the entries'
+    metadata as ``meta_<name>`` after ``record`` (the entry's id); the bytes are the CLI's.
+    A manifest that cannot be read (a missing file, an unknown key) raises ``ValueError`` naming
+    the manifest, the key and its line.
+
+    A run that fails (a record that cannot
     be read, an input error of that run) raises ``ValueError`` naming the record and the reason
     (after the other runs are done); with ``errors="rows"`` it is a row with
     ``status == "error"`` and the message in ``error`` instead, as in the CLI's ``batch.csv``.
@@ -263,7 +276,8 @@ def batch(
 
     Raises:
         ValueError: bad input for the whole batch (no records, no scales, a non-finite scale,
-            the scenario, ``record_dt`` with an array record, an ``errors`` other than
+            the scenario, ``record_dt`` with an array record or with ``record_set``, both
+            ``records`` and ``record_set``, a bad manifest, an ``errors`` other than
             ``"raise"``/``"rows"``); a failed run unless ``errors="rows"``.
         TypeError: a record that is neither a path nor a tuple, a complex/bool/masked array, a
             ``threads`` that is not an int.
@@ -293,8 +307,12 @@ def batch(
     _no_record_dt_for_arrays(record_dt, arrays)
     if errors not in ("raise", "rows"):
         raise ValueError(f'errors must be "raise" or "rows", not {errors!r}')
+    if record_set is not None and not isinstance(record_set, (str, os.PathLike)):
+        raise TypeError(f"record_set must be the path of a manifest (str or os.PathLike), not "
+                        f"{type(record_set).__name__}")
     text = batch_csv_text(scenario, paths, arrays, scales, dt, duration, law, csv_units,
-                          record_dt, threads)
+                          record_dt, threads,
+                          None if record_set is None else os.fspath(record_set))
     rows = csv_table(text)
     if errors == "raise":
         failed = [i for i, st in enumerate(rows["status"]) if st == "error"]
@@ -318,13 +336,13 @@ def _no_record_dt_for_arrays(record_dt, arrays) -> None:
 
 
 def batch_csv_text(scenario, paths, arrays, scales, dt=None, duration=None, law=None,
-                   csv_units=None, record_dt=None, threads=None) -> str:
+                   csv_units=None, record_dt=None, threads=None, record_set=None) -> str:
     """The text of ``batch.csv`` for :func:`batch` (internal; byte for byte the CLI's)."""
     return _core.batch_run(
         records=paths, arrays=arrays, scales=[real_number("scale", s) for s in scales], csv_units=csv_units,
         record_dt=optional_float("record_dt", record_dt), dt=optional_float("dt", dt),
         duration=optional_float("duration", duration), law=law,
-        threads=thread_count(threads),
+        threads=thread_count(threads), record_set=record_set,
         **scenario_args(scenario, "simulate"),
     )
 

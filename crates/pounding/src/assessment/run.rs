@@ -9,6 +9,7 @@ use crate::ground_motion::GroundMotion;
 use crate::ground_motion::set::RecordSet;
 use crate::math::Real;
 use crate::output::{csv_field, float_token};
+use crate::sim::batch::entry_problem;
 use crate::sim::bridge::BridgeProblem;
 use crate::sim::simulate;
 use crate::sim::{SimSettings, SimStatus};
@@ -157,18 +158,7 @@ pub fn run_all(
             let (a, b) = (i / ns, i % ns);
             let (im_g, sf) = plan.point(a, b);
             let e = &set.records[a];
-            let p = BridgeProblem {
-                model: base.model.clone(),
-                ground: GroundMotion {
-                    along_y: Some(e.x.clone()),
-                    scale_y: base.ground.scale_y * sf,
-                    along_x: e.y.clone(),
-                    scale_x: base.ground.scale_x * sf,
-                    incidence: base.ground.incidence,
-                },
-                q0: base.q0.clone(),
-                u0: base.u0.clone(),
-            };
+            let p: BridgeProblem = entry_problem(base, &e.x, e.y.as_ref(), sf);
             let mut seats = (Vec::new(), None);
             let (status, error, lim, warnings) = match simulate(&p, &settings) {
                 Err(err) => (

@@ -8,6 +8,12 @@
 //! is the base problem's factor. This is exactly the single run of `pounding simulate --record r_a
 //! --scale s_b` ([`run_problem`] builds it), so a batch row equals that run's summary bit for bit.
 //!
+//! An entry may instead be a horizontal **pair** ([`BatchRecord::along_x`], the entries of a
+//! record-set manifest, [`BatchRecord::of_set`]): its first record acts along `Rot(α) ŷ` with
+//! `s_b · scale_y` and its second along `Rot(α) x̂` with `s_b · scale_x`, as in a fragility run
+//! ([`entry_ground`], shared with [`crate::assessment`]): the single run of a scenario naming the
+//! first as `record_y` and the second as `record_x`, with `--scale s_b`.
+//!
 //! Rows come back in increasing `i` whatever the number of threads (rayon's ordered collect; each
 //! run is sequential and deterministic). A [`BatchShard`] `K/N` keeps only the runs with
 //! `i mod N = K − 1`, so the union of the rows of all `N` shards, sorted by `i`, is the unsharded
@@ -23,6 +29,7 @@
 use super::bridge::{BridgeSolution, BridgeSummary};
 use super::problem::{Problem, simulate};
 use super::{SimError, SimSettings, SimStatus};
+use crate::ground_motion::set::RecordSet;
 use crate::ground_motion::{GroundMotion, Record};
 use crate::math::Real;
 use rayon::prelude::*;
@@ -30,13 +37,43 @@ use rayon::prelude::*;
 /// Which runs a batch computes (the shard type shared with `study`).
 pub type BatchShard = crate::shard::Shard;
 
-/// One ground-motion record of a batch, or the reason it could not be read.
+/// One entry of a batch: a ground-motion record (or a horizontal pair), or the reason it could
+/// not be read.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BatchRecord {
-    /// Name in the output (the path as given).
+    /// Name in the output (the path as given, or a manifest entry's id).
     pub name: String,
-    /// The record (accelerations in m/s²), or the error message that names the file.
+    /// The record (accelerations in m/s²), or the error message that names the file: the only
+    /// component, or the first of a pair, along `Rot(α) ŷ` with `scale_y`.
     pub record: Result<Record, String>,
+    /// The second horizontal component of a pair, along `Rot(α) x̂` with `scale_x` (`None`: the
+    /// record is the only component).
+    pub along_x: Option<Record>,
+}
+
+impl BatchRecord {
+    /// A one-component entry named `name`.
+    pub fn single(name: impl Into<String>, record: Result<Record, String>) -> Self {
+        Self {
+            name: name.into(),
+            record,
+            along_x: None,
+        }
+    }
+
+    /// The entries of a record set, in its order: each named by its id, a pair's `x` record
+    /// first (along `Rot(α) ŷ`) and its `y` record second (along `Rot(α) x̂`), as a fragility
+    /// run applies them.
+    pub fn of_set(set: &RecordSet) -> Vec<Self> {
+        set.records
+            .iter()
+            .map(|e| Self {
+                name: e.id.clone(),
+                record: Ok(e.x.clone()),
+                along_x: e.y.clone(),
+            })
+            .collect()
+    }
 }
 
 /// What one run produced (of the two-deck model or a bridge: both are bridges).
@@ -81,28 +118,46 @@ pub struct BatchRow {
     /// Scale factor `s` of this run (multiplies the base problem's `scale_y`).
     pub scale: Real,
     /// Peak ground acceleration of the applied (scaled) component, `|s · scale_y| · max|a|`
-    /// \[m/s²\]; NaN when the record could not be read.
+    /// \[m/s²\] (of a pair: the larger of its two components', the second's with `scale_x`);
+    /// NaN when the record could not be read.
     pub pga: Real,
     /// The run's result, or the error (an unreadable record, or a simulation input error).
     pub outcome: Result<BatchOutcome, String>,
 }
 
-/// `ground` with `record` as its only component along `Rot(α) ŷ` and its scale factors
-/// multiplied by `scale`.
-fn run_ground(ground: &GroundMotion, record: &Record, scale: Real) -> GroundMotion {
+/// The ground motion of one run of an entry (a batch's or a fragility study's): `ground` with
+/// `first` along `Rot(α) ŷ` and `second` (a pair's other component; `None`: no component)
+/// along `Rot(α) x̂`, the incidence kept and both scale factors multiplied by `scale`.
+pub fn entry_ground(
+    ground: &GroundMotion,
+    first: &Record,
+    second: Option<&Record>,
+    scale: Real,
+) -> GroundMotion {
     GroundMotion {
-        along_y: Some(record.clone()),
+        along_y: Some(first.clone()),
         scale_y: ground.scale_y * scale,
-        along_x: None,
+        along_x: second.cloned(),
         scale_x: ground.scale_x * scale,
         incidence: ground.incidence,
     }
 }
 
+/// The problem of one run of an entry: `base` under [`entry_ground`] (a pair: the single run of
+/// the scenario naming `first` as `record_y` and `second` as `record_x`, with `--scale S`).
+pub fn entry_problem<P: Problem>(
+    base: &P,
+    first: &Record,
+    second: Option<&Record>,
+    scale: Real,
+) -> P {
+    base.with_ground(entry_ground(base.ground(), first, second, scale))
+}
+
 /// The problem of one run: `base` with `record` as its only component along `Rot(α) ŷ`, scale
 /// factors multiplied by `scale` (the single run `pounding simulate --record R --scale S`).
 pub fn run_problem<P: Problem>(base: &P, record: &Record, scale: Real) -> P {
-    base.with_ground(run_ground(base.ground(), record, scale))
+    entry_problem(base, record, None, scale)
 }
 
 /// Checks the batch lists: at least one record and one scale, every scale finite.
@@ -133,15 +188,18 @@ pub fn validate_lists(records: &[BatchRecord], scales: &[Real]) -> Result<(), Si
     Ok(())
 }
 
-/// One run of a batch: `base` under `record` scaled by `scale` → `(PGA [m/s²], outcome)`.
+/// One run of a batch: `base` under `record` (and a pair's `second`) scaled by `scale` →
+/// `(PGA [m/s²], outcome)`; the PGA of a pair is the larger of its scaled components'.
 fn run_one<P: Problem>(
     base: &P,
-    record: &Record,
+    (record, second): (&Record, Option<&Record>),
     scale: Real,
     settings: &SimSettings,
 ) -> (Real, Result<BatchOutcome, SimError>) {
-    let p = run_problem(base, record, scale);
-    let pga = record.pga() * p.ground().scale_y.abs();
+    let p = entry_problem(base, record, second, scale);
+    let g = p.ground();
+    let pga = record.pga() * g.scale_y.abs();
+    let pga = second.map_or(pga, |x| pga.max(x.pga() * g.scale_x.abs()));
     let out = simulate(&p, settings).map(|sol| {
         let w = crate::sim::output::run_warnings(p.layout(), &sol).len();
         counted(BatchOutcome::from(sol), p.ground(), w)
@@ -194,8 +252,10 @@ fn batch_settings(
     })
 }
 
-/// One run of a batch: `(record, scale)` → the PGA of the applied component and the outcome.
-type RunOne<'a> = dyn Fn(&Record, Real) -> (Real, Result<BatchOutcome, SimError>) + Sync + 'a;
+/// One run of a batch: `((record, a pair's second record), scale)` → the PGA of the applied
+/// component(s) and the outcome.
+type RunOne<'a> =
+    dyn Fn((&Record, Option<&Record>), Real) -> (Real, Result<BatchOutcome, SimError>) + Sync + 'a;
 
 /// The rows of every `(record, scale)` pair of `shard`, in parallel on the current rayon pool, in
 /// increasing global index; `run(record, scale)` gives the PGA of the applied component and the
@@ -219,7 +279,7 @@ fn run_pairs(
             let (pga, outcome) = match &rec.record {
                 Err(msg) => (Real::NAN, Err(msg.clone())),
                 Ok(r) => {
-                    let (pga, out) = run(r, scale);
+                    let (pga, out) = run((r, rec.along_x.as_ref()), scale);
                     (pga, out.map_err(|e| format!("{}: {e}", rec.name)))
                 }
             };

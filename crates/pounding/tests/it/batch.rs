@@ -22,6 +22,7 @@ fn records() -> Vec<BatchRecord> {
         .map(|(n, f, a)| BatchRecord {
             name: n.into(),
             record: Ok(record(n, f, a)),
+            along_x: None,
         })
         .collect()
 }
@@ -158,6 +159,7 @@ fn an_unreadable_record_fails_only_its_rows() {
         BatchRecord {
             name: "missing.AT2".into(),
             record: Err("cannot read ground-motion record missing.AT2: not found".into()),
+            along_x: None,
         },
     );
     let rows = pool(2)
@@ -218,4 +220,69 @@ fn bad_batch_input_is_an_error_naming_it() {
     b.model.gap = -0.1;
     let e = run_batch(&b, &settings(), &recs, &[1.0], BatchShard::ALL, &|_| {}).unwrap_err();
     assert!(matches!(e, SimError::InvalidParameter { ref name, .. } if name == "gap"));
+}
+
+/// A record-set manifest of pairs: each row equals the single run of the ground motion built
+/// here by hand (the entry's `x` along y with `s · scale_y`, its `y` along x with `s · scale_x`,
+/// the incidence kept), its PGA is the larger of the scaled components', and a fragility run's
+/// ground motion is the same function's.
+#[test]
+fn pair_entries_of_a_record_set_equal_single_runs_of_both_components() {
+    use pounding::ground_motion::set::RecordSet;
+    use pounding::sim::batch::entry_ground;
+    let set = RecordSet::from_toml(
+        "[[record]]\nid = \"p\"\nx = \"builtin:ELC180\"\ny = \"builtin:ELC270\"\n\
+         [[record]]\nid = \"one\"\nx = \"builtin:ELC270\"\n",
+        "set.toml",
+        std::path::Path::new("."),
+    )
+    .unwrap();
+    let recs = BatchRecord::of_set(&set);
+    assert_eq!(recs.len(), 2);
+    assert_eq!((recs[0].name.as_str(), recs[1].name.as_str()), ("p", "one"));
+    let mut base = base();
+    base.ground.scale_x = -0.7;
+    let settings = SimSettings {
+        duration: Some(3.0),
+        ..settings()
+    };
+    let scales = [0.5, 2.0];
+    let rows = pool(2)
+        .install(|| run_batch(&base, &settings, &recs, &scales, BatchShard::ALL, &|_| {}))
+        .unwrap();
+    assert_eq!(rows.len(), 4);
+    for (i, row) in rows.iter().enumerate() {
+        let (e, s) = (&set.records[i / 2], scales[i % 2]);
+        let ground = GroundMotion {
+            along_y: Some(e.x.clone()),
+            scale_y: 1.5 * s,
+            along_x: e.y.clone(),
+            scale_x: -0.7 * s,
+            incidence: 20f64.to_radians(),
+        };
+        assert_eq!(entry_ground(&base.ground, &e.x, e.y.as_ref(), s), ground);
+        let single = SimProblem {
+            ground,
+            ..base.clone()
+        };
+        let sol = simulate(&single, &settings).unwrap();
+        let out = row.outcome.as_ref().unwrap();
+        assert_eq!(out.summary, sol.summary, "row {i}");
+        // |s · scale| · max|a| of each component (the factor formed first, as documented)
+        let pga_y = e.x.pga() * (1.5 * s).abs();
+        let pga =
+            e.y.as_ref()
+                .map_or(pga_y, |y| pga_y.max(y.pga() * (-0.7 * s).abs()));
+        assert_eq!(row.pga, pga, "row {i}");
+    }
+    // the second component matters: the pair's run differs from its x record alone
+    let alone = simulate(
+        &SimProblem {
+            ground: entry_ground(&base.ground, &set.records[0].x, None, 2.0),
+            ..base.clone()
+        },
+        &settings,
+    )
+    .unwrap();
+    assert_ne!(rows[1].outcome.as_ref().unwrap().summary, alone.summary);
 }

@@ -290,6 +290,7 @@ fn overflowing_energies_end_the_run_as_diverged() {
             v
         })
         .unwrap()),
+        along_x: None,
     }];
     let base = SimProblem::at_rest(bridge, GroundMotion::none());
     let rows = run_batch(

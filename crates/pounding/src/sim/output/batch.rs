@@ -1,8 +1,10 @@
 //! `batch.csv` of `pounding simulate --records` (one row per `(record, scale)` run), for the
-//! two-deck model ([`batch_csv`]) and for bridges ([`bridge_batch_csv`]).
+//! two-deck model ([`batch_csv`]) and for bridges ([`bridge_batch_csv`]); of a record-set
+//! manifest (`--set`), with the columns of its entries after `record` ([`batch_set_csv`]).
 
 use super::DEG;
 use crate::ground_motion::G0;
+use crate::ground_motion::set::RecordSet;
 use crate::math::Real;
 use crate::output::float_token;
 use crate::sim::batch::{BatchOutcome, BatchRow};
@@ -54,8 +56,8 @@ fn tail_cells(
 
 /// `batch.csv`: [`BATCH_HEADER`], then one row per run (a run that failed has `status = error`
 /// and its message in `error`), with the [`BATCH_TAIL`] columns appended after `error`.
-fn two_deck_batch_csv(rows: &[BatchRow]) -> String {
-    rows_csv(BATCH_HEADER, rows, |o, c| {
+fn two_deck_batch_csv(rows: &[BatchRow], set: Option<&RecordSet>) -> String {
+    rows_csv(BATCH_HEADER, rows, set, |o, c| {
         let m = &o.summary;
         let joint = &m.joints[0];
         c.push(format!("{:?}", o.status));
@@ -101,16 +103,35 @@ fn two_deck_batch_csv(rows: &[BatchRow]) -> String {
 
 /// `header`, then one row per run: `index, record, scale`, then for a run that failed
 /// `, , error`, empty cells and the message in the last column (`error`); else the PGA in g and
-/// m/s², the cells of `cells` and an empty `error`.
+/// m/s², the cells of `cells` and an empty `error`. With a record `set` (the rows' records are
+/// its entries, in its order), its columns ([`set_columns`]) follow `record`.
 fn rows_csv(
     header: &str,
     rows: &[BatchRow],
+    set: Option<&RecordSet>,
     cells: impl Fn(&BatchOutcome, &mut Vec<String>),
 ) -> String {
+    let (header, meta) = match set {
+        None => (header.to_string(), Vec::new()),
+        Some(set) => {
+            let meta = set.meta_keys();
+            let mut h: Vec<String> = header.split(',').map(String::from).collect();
+            let cols = ["record_y".to_string(), "record_x".to_string()];
+            let cols = cols
+                .into_iter()
+                .chain(meta.iter().map(|k| format!("meta_{k}")));
+            h.splice(2..2, cols);
+            (h.join(","), meta)
+        }
+    };
     let ncols = header.split(',').count();
     let mut s = format!("{header}\n");
     for r in rows {
-        let mut c: Vec<String> = vec![r.index.to_string(), field(&r.record), float_token(r.scale)];
+        let mut c: Vec<String> = vec![r.index.to_string(), field(&r.record)];
+        if let Some(set) = set {
+            c.extend(set_columns(set, &meta, r.record_index));
+        }
+        c.push(float_token(r.scale));
         match &r.outcome {
             Err(msg) => {
                 c.extend(["".into(), "".into(), "error".into()]);
@@ -129,6 +150,25 @@ fn rows_csv(
         s.push('\n');
     }
     s
+}
+
+/// The cells of entry `a` of `set` after `record`: `record_y` (the entry's `x` record, which
+/// acts along `Rot(α) ŷ`), `record_x` (a pair's `y` record, along `Rot(α) x̂`; empty for a
+/// single record), both as read (the reader's name: the path, or the built-in record's file
+/// name), then its metadata under the names `meta` (sorted; empty where it has none).
+fn set_columns(set: &RecordSet, meta: &[String], a: usize) -> Vec<String> {
+    let e = &set.records[a];
+    let mut c = vec![
+        field(&e.x.name),
+        e.y.as_ref().map_or(String::new(), |y| field(&y.name)),
+    ];
+    c.extend(meta.iter().map(|k| {
+        e.meta
+            .iter()
+            .find(|(n, _)| n == k)
+            .map_or(String::new(), |(_, v)| v.csv_cell())
+    }));
+    c
 }
 
 /// The leading columns of a bridge's `batch.csv`: those of [`BATCH_HEADER`] that keep their
@@ -301,8 +341,8 @@ fn bridge_cells(o: &BatchOutcome, c: &mut Vec<String>) {
 /// (an abutment the bridge does not have, the contact force of the rigid law, a joint without a
 /// restrainer, no unseating, no joint at all for one segment) are empty fields; a value that is
 /// not a number is `nan` (the project's CSV tokens, [`float_token`]).
-fn bridge_batch_csv(n_segments: usize, rows: &[BatchRow]) -> String {
-    rows_csv(&bridge_batch_header(n_segments), rows, bridge_cells)
+fn bridge_batch_csv(n_segments: usize, rows: &[BatchRow], set: Option<&RecordSet>) -> String {
+    rows_csv(&bridge_batch_header(n_segments), rows, set, bridge_cells)
 }
 
 /// `batch.csv` of a batch in `layout`: the two-deck model's columns ([`BATCH_HEADER`]) or a
@@ -310,7 +350,24 @@ fn bridge_batch_csv(n_segments: usize, rows: &[BatchRow]) -> String {
 /// failed has `status = error` and its message in `error`).
 pub fn batch_csv(layout: super::Layout, n_segments: usize, rows: &[BatchRow]) -> String {
     match layout {
-        super::Layout::TwoDecks => two_deck_batch_csv(rows),
-        super::Layout::Bridge => bridge_batch_csv(n_segments, rows),
+        super::Layout::TwoDecks => two_deck_batch_csv(rows, None),
+        super::Layout::Bridge => bridge_batch_csv(n_segments, rows, None),
+    }
+}
+
+/// `batch.csv` of a batch over the entries of the record set `set`
+/// ([`crate::sim::batch::BatchRecord::of_set`], in its order): the columns of [`batch_csv`] with,
+/// after `record` (the entry's id), `record_y` and `record_x` (the records as read: the entry's
+/// `x` acting along y, a pair's `y` along x; empty for a single record) and its metadata as
+/// `meta_<name>` (sorted names; empty where an entry has none).
+pub fn batch_set_csv(
+    layout: super::Layout,
+    n_segments: usize,
+    rows: &[BatchRow],
+    set: &RecordSet,
+) -> String {
+    match layout {
+        super::Layout::TwoDecks => two_deck_batch_csv(rows, Some(set)),
+        super::Layout::Bridge => bridge_batch_csv(n_segments, rows, Some(set)),
     }
 }

@@ -23,7 +23,7 @@ mod impacts;
 mod input_warnings;
 mod trajectories;
 mod verdict;
-pub use batch::{BATCH_HEADER, BATCH_TAIL, batch_csv, bridge_batch_header};
+pub use batch::{BATCH_HEADER, BATCH_TAIL, batch_csv, batch_set_csv, bridge_batch_header};
 pub(crate) use bridge::bridge_summary_json_text;
 pub use bridge::governing_seat_line;
 pub use bridge_plan::{
