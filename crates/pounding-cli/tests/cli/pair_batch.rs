@@ -154,7 +154,17 @@ fn row_equals_summary(head: &[String], row: &[String], js: &str) {
     let top = |k: &str| token(js, None, k);
     for (col, cell) in head.iter().zip(row) {
         let (c, cell) = (col.as_str(), cell.as_str());
-        let tok = if let Some(rest) = c.strip_prefix("joint") {
+        let seat = c
+            .strip_prefix("segment")
+            .and_then(|r| r.strip_suffix("_seat_ratio"))
+            .and_then(|r| r.split_once('_'));
+        let tok = if let Some((i, face)) = seat {
+            // seats[] are per segment [start, end], in bridge order
+            let k = 2 * (i.parse::<usize>().unwrap() - 1) + usize::from(face == "end");
+            token(js, Some(("seats", Some(k))), "ratio")
+        } else if let Some(key) = c.strip_prefix("governing_seat_") {
+            token(js, Some(("governing_seat", None)), key)
+        } else if let Some(rest) = c.strip_prefix("joint") {
             let (k, key) = rest.split_once('_').unwrap();
             token(
                 js,
