@@ -48,32 +48,19 @@ fn cell(token: &str) -> String {
     }
 }
 
-/// The CSV's fields (the library quotes a field holding a comma or a quote).
-fn fields(line: &str) -> Vec<String> {
-    let mut out = Vec::new();
-    let mut cur = String::new();
-    let mut quoted = false;
-    let mut chars = line.chars().peekable();
-    while let Some(c) = chars.next() {
-        match c {
-            '"' if quoted && chars.peek() == Some(&'"') => {
-                cur.push('"');
-                chars.next();
-            }
-            '"' => quoted = !quoted,
-            ',' if !quoted => out.push(std::mem::take(&mut cur)),
-            _ => cur.push(c),
-        }
-    }
-    out.push(cur);
-    out
-}
-
 /// A CSV as a table: transposed (one column per row of the file, one row per column) when it
 /// has at most 8 rows, so that a wide comparison fits the page; else as it is, scrolling
 /// sideways within the page if it must.
 fn csv_table(h: &mut String, csv: &str) {
-    let rows: Vec<Vec<String>> = csv.lines().map(fields).collect();
+    // the library's CSV (fields with a comma or a quote are quoted), read back by the csv crate
+    let rows: Vec<Vec<String>> = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .flexible(true)
+        .from_reader(csv.as_bytes())
+        .records()
+        .filter_map(Result::ok)
+        .map(|r| r.iter().map(String::from).collect())
+        .collect();
     let Some((head, body)) = rows.split_first() else {
         return;
     };

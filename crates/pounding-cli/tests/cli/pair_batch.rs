@@ -64,29 +64,17 @@ const ENTRIES: [(&str, &str, &str); 3] = [
     ("elc-180", "ELC180", ""),
 ];
 
-/// The cells of one CSV line (quoted fields with commas and doubled quotes).
-fn cells(line: &str) -> Vec<String> {
-    let (mut out, mut cur, mut quoted) = (Vec::new(), String::new(), false);
-    let mut chars = line.chars().peekable();
-    while let Some(c) = chars.next() {
-        match c {
-            '"' if quoted && chars.peek() == Some(&'"') => {
-                cur.push('"');
-                chars.next();
-            }
-            '"' => quoted = !quoted,
-            ',' if !quoted => out.push(std::mem::take(&mut cur)),
-            c => cur.push(c),
-        }
-    }
-    out.push(cur);
-    out
-}
-
-fn rows(csv: &str) -> (Vec<String>, Vec<Vec<String>>) {
-    let mut lines = csv.lines();
-    let head = cells(lines.next().unwrap());
-    (head, lines.map(cells).collect())
+/// The header and rows of a CSV text (quoted fields with commas and doubled quotes), read by
+/// the csv crate.
+fn rows(text: &str) -> (Vec<String>, Vec<Vec<String>>) {
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .from_reader(text.as_bytes());
+    let mut all = reader
+        .records()
+        .map(|r| r.unwrap().iter().map(String::from).collect::<Vec<_>>());
+    let head = all.next().unwrap();
+    (head, all.collect())
 }
 
 /// Runs the batch into `out` with `extra` flags: the text of `batch.csv`.
