@@ -186,3 +186,18 @@ def test_tables_equal_the_cli_files_and_survive_pickling(cli, root, tmp_path):
     assert copy == r
     assert np.array_equal(copy.bearings["segment1_bearing1_fx_N"],
                           r.bearings["segment1_bearing1_fx_N"])
+
+
+def test_the_governing_joint_seat_equals_the_cli(cli, root, tmp_path):
+    """A curved four-segment viaduct whose governing seat is a joint end: Python's summary names
+    the same end, ratio and every seat as the CLI's summary.json (and its code check runs)."""
+    path = root / "crates" / "pounding-cli" / "tests" / "data" / "curved-4-joint-governs.toml"
+    cli("simulate", path, "--out", tmp_path)
+    want = json.loads((tmp_path / "summary.json").read_text())
+    r = pounding.simulate(str(path))
+    assert r.summary["governing_seat"] == want["governing_seat"]
+    assert r.summary["governing_seat"]["support"].startswith("joint")
+    assert r.summary["seats"] == want["seats"]
+    check = pounding.check(str(path))
+    ends = list(check["ends"]["end"])
+    assert ends == [s["end"] for s in want["seats"]]

@@ -106,6 +106,7 @@ mod record_misreads;
 mod record_units;
 mod reports_browser;
 mod reports_browser_anim;
+mod seat_margins;
 mod shapes;
 mod sim_report;
 mod simulate;
