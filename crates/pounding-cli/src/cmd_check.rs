@@ -24,6 +24,8 @@ pub struct Args {
 /// Runs `pounding check`: exit 0 when the check ran, whatever its verdict.
 pub fn run(args: Args) -> Result<ExitCode> {
     let sc = Scenario::load(&args.scenario)?;
+    // a typo in [fragility] is refused here too, as every command refuses it
+    pounding::assessment::check_tables(&sc, None)?;
     let report = pounding::assessment::check_scenario(&sc)?;
     let origin = sc.origin();
     print!("{}", check_text(&report, origin));

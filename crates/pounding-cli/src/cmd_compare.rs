@@ -105,7 +105,16 @@ pub fn run(args: Args) -> Result<ExitCode> {
     flags.check()?;
     let base = cmd_simulate::load_scenario(args.scenario.as_deref())?;
     let (origin, text) = (base.origin().to_string(), base.text().to_string());
+    pounding::assessment::check_tables(&base, None)?;
+    let tables = base.clone();
     let cmp = Comparison::prepare(base, &flags)?;
+    if let Some(s) = cmp.first_setup() {
+        // [code_check] against the bridge before any run, as simulate does
+        pounding::assessment::check_tables(
+            &tables,
+            Some(pounding::sim::Problem::model(s).segments.len()),
+        )?;
+    }
     if cmp.stride_coarsened {
         let dt = cmp.first_setup().map_or(1e-3, |s| s.settings().dt);
         eprintln!(

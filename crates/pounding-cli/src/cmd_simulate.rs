@@ -235,17 +235,13 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let sc = load_scenario(args.scenario.as_deref())?;
     let (origin, text) = (sc.origin().to_string(), sc.text().to_string());
     let bridge = sc.is_bridge();
-    if bridge {
-        pounding::assessment::FragilitySettings::check_if_present(&text, &origin)?;
-    }
-    pounding::assessment::CodeCheckInput::check_if_present(&text, &origin)?;
+    pounding::assessment::check_tables(&sc, None)?;
     let sc = with_flags(sc, &args);
     // [code_check] against the bridge (array lengths, hinge joints) before any run
     let check = |setup: &pounding::sim::scenario::Setup| {
-        pounding::assessment::CodeCheckInput::check_against(
-            &text,
-            &origin,
-            pounding::sim::Problem::model(setup).segments.len(),
+        pounding::assessment::check_tables(
+            &sc,
+            Some(pounding::sim::Problem::model(setup).segments.len()),
         )
     };
     if is_batch(&args) {

@@ -3,11 +3,11 @@
 //! ([`pounding::assessment::check_run`]).
 
 use crate::report::esc;
+use pounding::assessment::CheckReport;
 use pounding::assessment::check::CODES;
 use pounding::assessment::check_run::against_run;
 use pounding::assessment::check_write::overall;
-use pounding::assessment::{CheckReport, CodeCheckInput, check_bridge};
-use pounding::sim::bridge::{BridgeModel, SeatSummary};
+use pounding::sim::bridge::SeatSummary;
 use std::fmt::Write;
 
 fn m3(x: Option<f64>) -> String {
@@ -23,27 +23,55 @@ pub struct CodeCheckSection {
     pub html: String,
 }
 
-/// The section, or `None` when the scenario has no `[code_check]` table (its errors were
-/// reported before the run).
+/// The section of a run whose scenario's code check is `check`
+/// ([`pounding::assessment::check_summary::scenario_check`]: `None` without `[code_check]`).
 pub fn section(
-    model: &BridgeModel,
-    (origin, text): (&str, &str),
+    check: Option<&Result<CheckReport, String>>,
     seats: &[SeatSummary],
 ) -> Option<CodeCheckSection> {
-    if !CodeCheckInput::is_present(text) {
-        return None;
-    }
-    let input = CodeCheckInput::from_scenario(text, origin).ok()?;
-    Some(match check_bridge(model, &input, origin) {
-        Ok(r) => table(&r, seats),
+    Some(match check? {
+        Ok(r) => table(r, seats),
         Err(e) => CodeCheckSection {
             verdict: format!("Not evaluated: {e}."),
             html: format!(
                 "<h2 id=\"code-check\">Code check</h2>\n<p>Not evaluated: {}</p>\n",
-                esc(&e.to_string())
+                esc(e)
             ),
         },
     })
+}
+
+/// Each joint's gap against the SRSS and double-difference requirements (a table), and what
+/// the check leaves out: shared by the simulate and fragility reports.
+pub(crate) fn gaps_and_omissions(r: &CheckReport) -> String {
+    let mut h = String::new();
+    if !r.gaps.is_empty() {
+        h.push_str(
+            "<p>Joint gaps (the double-difference rule decides; the SRSS, which ignores the \
+             frames' correlation, beside it):</p>\n<table>\n<tr><th>joint</th><th>gap \
+             [m]</th><th>SRSS [m]</th><th>double difference [m]</th><th>verdict</th></tr>\n",
+        );
+        for g in &r.gaps {
+            let _ = writeln!(
+                h,
+                "<tr><td>joint{}</td><td>{:.3}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
+                g.joint + 1,
+                g.gap,
+                m3(g.srss.value()),
+                m3(g.ddc.value()),
+                match g.pass() {
+                    Some(true) => "PASS",
+                    Some(false) => "FAIL",
+                    None => "not evaluated",
+                }
+            );
+        }
+        h.push_str("</table>\n");
+    }
+    for o in pounding::assessment::check_summary::omissions(r) {
+        let _ = writeln!(h, "<p>Not included: {}.</p>", esc(&o));
+    }
+    h
 }
 
 fn table(r: &CheckReport, seats: &[SeatSummary]) -> CodeCheckSection {
@@ -56,10 +84,13 @@ fn table(r: &CheckReport, seats: &[SeatSummary]) -> CodeCheckSection {
     let _ = writeln!(
         h,
         "<p>Code verdict: <strong>{}</strong> — {} of {} seated ends are shorter than a code \
-         requires (<code>pounding check</code> gives the full table). {}</p>",
+         requires, {} of {} joint gaps narrower than required (<code>pounding check</code> gives \
+         the full table). {}</p>",
         overall(r),
         r.failing_ends(),
         r.ends.len(),
+        r.failing_gaps(),
+        r.gaps.len(),
         if beyond > 0 {
             format!(
                 "<strong>At {beyond} end(s) the simulated peak seat displacement exceeds the \
@@ -113,19 +144,7 @@ fn table(r: &CheckReport, seats: &[SeatSummary]) -> CodeCheckSection {
         );
     }
     h.push_str("</table></div>\n");
-    let verdict = format!(
-        "{}: {} of {} seated ends are shorter than a code requires{}.",
-        overall(r),
-        r.failing_ends(),
-        r.ends.len(),
-        if beyond > 0 {
-            format!(
-                "; at {beyond} end(s) the simulated peak exceeds the design displacement the \
-                 codes were given"
-            )
-        } else {
-            String::new()
-        }
-    );
+    h.push_str(&gaps_and_omissions(r));
+    let verdict = pounding::assessment::check_summary::verdict_sentence(r, seats);
     CodeCheckSection { verdict, html: h }
 }

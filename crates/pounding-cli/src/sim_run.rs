@@ -46,7 +46,16 @@ pub fn run(
     };
     wr("history.csv", setup.history(&sol).csv().as_bytes())?;
     wr("impacts.csv", setup.impacts_csv(&sol).as_bytes())?;
-    let summary = setup.summary_json_text(&sol);
+    // a bridge with [code_check]: the check of its scenario, in summary.json, on stderr and in
+    // the report beside the run's seat demand
+    let check = match &setup {
+        Setup::Bridge(s) => {
+            pounding::assessment::check_summary::scenario_check(&s.problem.model, scenario)
+        }
+        Setup::TwoDecks(_) => None,
+    };
+    let summary =
+        pounding::assessment::check_summary::run_summary_json_text(&setup, &sol, scenario);
     wr("summary.json", summary.as_bytes())?;
     let tables = sol.tables();
     for t in &tables {
@@ -73,13 +82,7 @@ pub fn run(
             (what, crate::plots::bridge::FIGURES)
         }
     };
-    // a bridge with [code_check]: its code seats beside the run's seat demand
-    let code_check = match &setup {
-        Setup::Bridge(s) => {
-            crate::sim_report_check::section(&s.problem.model, scenario, &sol.summary.seats)
-        }
-        Setup::TwoDecks(_) => None,
-    };
+    let code_check = crate::sim_report_check::section(check.as_ref(), &sol.summary.seats);
     // every table of the run, as written above
     files.extend(tables.iter().map(|t| t.file_name()));
     let files: Vec<&str> = files.iter().map(String::as_str).collect();
@@ -108,6 +111,14 @@ pub fn run(
         (serde_json::to_string_pretty(&timing)? + "\n").as_bytes(),
     )?;
     print_summary(&setup, &sol, sim_secs, out);
+    match &check {
+        Some(Ok(r)) => eprintln!(
+            "code check: {}",
+            pounding::assessment::check_summary::verdict_sentence(r, &sol.summary.seats)
+        ),
+        Some(Err(e)) => eprintln!("code check: not evaluated: {e}"),
+        None => {}
+    }
     if sol.status != SimStatus::Completed {
         // outputs are written (they show where the run went wrong), but the run did not succeed
         let hint = match sol.status {
@@ -174,7 +185,7 @@ fn print_summary(setup: &Setup, sol: &BridgeSolution, sim_secs: f64, out: &Path)
             }
             eprintln!(
                 "simulated a bridge of {} segments for {duration} s in {} steps ({:.1} ms): {} \
-                 impacts; per joint: {}; energy balance error {:.1e}{}; outputs in {}",
+                 impacts; per joint: {}{}; energy balance error {:.1e}{}; outputs in {}",
                 sol.n_segments,
                 sol.steps,
                 sim_secs * 1e3,
@@ -184,6 +195,7 @@ fn print_summary(setup: &Setup, sol: &BridgeSolution, sim_secs: f64, out: &Path)
                 } else {
                     joints.join(", ")
                 },
+                abutment_impacts(s),
                 s.energy_balance_error,
                 match (&s.unseated_end, s.unseating_time) {
                     (Some(e), Some(t)) => format!(" (UNSEATED: {e} at {t:.3} s)"),
@@ -195,5 +207,20 @@ fn print_summary(setup: &Setup, sol: &BridgeSolution, sim_secs: f64, out: &Path)
                 eprintln!("governing seat: {g}");
             }
         }
+    }
+}
+
+/// `; per abutment: start 8, end 9` (the impacts at the bridge's abutments), or nothing.
+fn abutment_impacts(s: &pounding::sim::bridge::BridgeSummary) -> String {
+    let sites: Vec<String> = s
+        .abutments
+        .iter()
+        .zip(["start", "end"])
+        .filter_map(|(a, side)| a.as_ref().map(|a| format!("{side} {}", a.impacts)))
+        .collect();
+    if sites.is_empty() {
+        String::new()
+    } else {
+        format!("; per abutment: {}", sites.join(", "))
     }
 }

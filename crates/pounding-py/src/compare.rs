@@ -61,7 +61,11 @@ pub(crate) fn compare_run(
     // the CLI's order: the flags, then the scenario
     flags.check().map_err(|e| err(&e))?;
     let base = crate::sim::load(path, text, origin)?;
+    let tables = base.clone();
     let cmp = Comparison::prepare(base, &flags).map_err(|e| err(&e))?;
+    if let Some(s) = cmp.first_setup() {
+        crate::sim::check_tables(&tables, Some(pounding::sim::Problem::model(s).segments.len()))?;
+    }
     let bridge = cmp.bridge;
     let runs = crate::interruptible(py, move || {
         cmp.run(pounding::sim::Progress::default, |_| {})

@@ -23,6 +23,18 @@ type ArrayRecord = (String, Vec<f64>, f64);
 /// The scenario as `pounding simulate` reads it: the file `path` (record paths relative to its
 /// directory), the TOML `text` (records relative to the current directory) or the default.
 pub(crate) fn load(path: Option<&str>, text: Option<String>, origin: &str) -> PyResult<Scenario> {
+    let sc = load_any(path, text, origin)?;
+    check_tables(&sc, None)?;
+    Ok(sc)
+}
+
+/// The scenario's assessment tables checked (`[fragility]`, `[[limit_state]]`, `[code_check]`,
+/// against the bridge of `segments` segments when known), as every CLI command checks them.
+pub(crate) fn check_tables(sc: &Scenario, segments: Option<usize>) -> PyResult<()> {
+    pounding::assessment::check_tables(sc, segments).map_err(value_error)
+}
+
+fn load_any(path: Option<&str>, text: Option<String>, origin: &str) -> PyResult<Scenario> {
     match (path, text) {
         (Some(p), _) => Scenario::load(Path::new(p)).map_err(value_error),
         (None, Some(t)) => Scenario::from_toml(&t, origin).map_err(value_error),
@@ -91,6 +103,8 @@ impl Flags {
 struct Run {
     setup: Setup,
     sol: BridgeSolution,
+    /// The scenario's name and text (its `[code_check]` goes into the summary).
+    scenario: (String, String),
 }
 
 /// The result of one simulation, kept in Rust: the summary, tables and histories are made on
@@ -104,7 +118,11 @@ pub struct SimRun {
 impl SimRun {
     /// The text of `summary.json`, as the CLI writes it.
     fn summary_json(&self) -> String {
-        self.run.setup.summary_json_text(&self.run.sol)
+        pounding::assessment::check_summary::run_summary_json_text(
+            &self.run.setup,
+            &self.run.sol,
+            (&self.run.scenario.0, &self.run.scenario.1),
+        )
     }
     /// The text of `impacts.csv`.
     fn impacts_csv(&self) -> String {
@@ -216,6 +234,8 @@ fn simulate_run(
         sc.override_reading(csv_units).map_err(value_error)?;
     }
     let mut setup = sc.build_setup().map_err(value_error)?;
+    check_tables(&sc, Some(pounding::sim::Problem::model(&setup).segments.len()))?;
+    let scenario = (sc.origin().to_string(), sc.text().to_string());
     if let Some(r) = &rec {
         setup = run_problem(&setup, r, s);
         *setup.records_mut() = [r.name.clone(), "none".into()];
@@ -226,7 +246,11 @@ fn simulate_run(
     })?;
     let sol = sol.map_err(value_error)?;
     Ok(SimRun {
-        run: Run { setup, sol },
+        run: Run {
+            setup,
+            sol,
+            scenario,
+        },
     })
 }
 
@@ -290,6 +314,7 @@ fn batch_run(
     let pool = crate::pool(threads)?;
     let setup = sc.build_setup().map_err(value_error)?;
     let (layout, n) = (setup.layout(), setup.model().segments.len());
+    check_tables(&sc, Some(n))?;
     let settings = setup.settings().clone();
     let rows = batch_rows(py, pool, setup, settings, list, scales)?;
     Ok(match &set {

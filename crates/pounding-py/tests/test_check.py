@@ -36,3 +36,28 @@ def test_bad_code_check_value_is_the_clis_error(cli, root, tmp_path):
     with pytest.raises(ValueError) as e:
         pounding.check(str(f))
     assert str(e.value) == cli_error(proc)
+
+
+def test_every_call_refuses_a_bad_code_check_as_the_cli(cli, root, tmp_path):
+    """A [code_check] typo, or a per-segment list that does not fit the bridge, stops
+    simulate, batch and compare from Python as the CLI's simulate stops (a hostile trial found
+    them running with such a table)."""
+    text = (root / "examples" / "viaduct-curved-5-check.toml").read_text()
+    for name, bad in [
+        ("nan", text.replace("[code_check]", "[code_check]\na_gr_ms2 = nan", 1)),
+        ("len", text.replace("displacement_m = 0.25", "displacement_m = [0.1, 0.2]", 1)),
+    ]:
+        assert bad != text
+        f = tmp_path / f"{name}.toml"
+        f.write_text(bad)
+        proc = cli("simulate", f, "--out", tmp_path / name, check=False)
+        assert proc.returncode == 2
+        want = cli_error(proc)
+        for call in (
+            lambda: pounding.simulate(str(f), duration=0.1),
+            lambda: pounding.batch(str(f), ["builtin:ELC180"], [1.0], duration=0.1),
+            lambda: pounding.compare(str(f), laws=["rigid"], duration=0.1),
+        ):
+            with pytest.raises(ValueError) as e:
+                call()
+            assert str(e.value) == want, name

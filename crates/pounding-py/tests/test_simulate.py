@@ -198,6 +198,8 @@ def test_the_governing_joint_seat_equals_the_cli(cli, root, tmp_path):
     assert r.summary["governing_seat"] == want["governing_seat"]
     assert r.summary["governing_seat"]["support"].startswith("joint")
     assert r.summary["seats"] == want["seats"]
+    assert r.summary["code_check"] == want["code_check"]
+    assert r.summary["code_check"]["seated_ends"] == 8
     check = pounding.check(str(path))
     ends = list(check["ends"]["end"])
     assert ends == [s["end"] for s in want["seats"]]

@@ -30,6 +30,15 @@ pub fn bounded(x: f64, decimals: usize) -> String {
     }
 }
 
+/// The text of a JSON file the tool writes: pretty-printed, negative zeros as `0`, a final line
+/// break (`summary.json`, `check.json`, …).
+pub fn json_text(mut v: serde_json::Value) -> String {
+    json_without_negative_zero(&mut v);
+    let mut s = serde_json::to_string_pretty(&v).unwrap_or_default();
+    s.push('\n');
+    s
+}
+
 /// Replaces every negative zero in a JSON tree by `0.0` (a `-0.0` in a report only puzzles a
 /// reader; it equals `0`).
 pub fn json_without_negative_zero(v: &mut serde_json::Value) {

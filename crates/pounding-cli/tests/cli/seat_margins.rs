@@ -93,6 +93,37 @@ fn a_joint_end_governs_and_each_ratio_follows_from_the_history() {
         (100.0 * largest.1).round()
     );
     assert!(stderr.contains(&line), "{line:?} not in {stderr}");
+    // summary.json's code_check: its sentence is stderr's, its counts are its ends' and gaps'
+    let cc = &summary["code_check"];
+    let sentence = cc["sentence"].as_str().unwrap();
+    assert!(
+        stderr.contains(&format!("code check: {sentence}")),
+        "{stderr}"
+    );
+    let ends = cc["ends"].as_array().unwrap();
+    assert_eq!(ends.len(), 8);
+    let failing = ends
+        .iter()
+        .filter(|e| e["seat_length_m"].as_f64() < e["governing_m"].as_f64())
+        .count();
+    assert_eq!(cc["failing_ends"].as_u64().unwrap() as usize, failing);
+    assert!(sentence.starts_with(&format!(
+        "{}: {failing} of 8 seated ends",
+        cc["verdict"].as_str().unwrap()
+    )));
+    let gaps = cc["gaps"].as_array().unwrap();
+    assert_eq!(gaps.len(), 3);
+    let failing_gaps = gaps.iter().filter(|g| g["pass"] == false).count();
+    assert_eq!(cc["failing_gaps"].as_u64().unwrap() as usize, failing_gaps);
+    for (e, seat) in ends.iter().zip(seats) {
+        assert_eq!(e["end"], seat["end"]);
+        assert_eq!(
+            e["peak_seat_displacement_m"],
+            seat["peak_seat_displacement_m"]
+        );
+    }
+    // curved segments: the JRA curve term is named as left out
+    assert!(cc["omissions"][0].as_str().unwrap().contains("JRA"), "{cc}");
     // report.html: the Verdict names it, and the code check lists every end
     let html = read("report.html");
     let verdict = html.split("<h2 id=\"verdict\">").nth(1).unwrap();

@@ -36,6 +36,7 @@ pub mod check;
 mod check_codes;
 pub mod check_input;
 pub mod check_run;
+pub mod check_summary;
 mod check_values;
 pub mod check_write;
 pub mod code_check;
@@ -52,6 +53,24 @@ pub mod study;
 pub const MAX_SCALE_FACTOR: crate::math::Real = 100.0;
 
 pub use check::{CheckReport, check_bridge, check_scenario, seated_ends};
+
+/// Checks the assessment tables a scenario may carry, so that no front end runs a scenario with
+/// a typo in them (every command and Python call that reads a scenario calls this): a bridge's
+/// `[fragility]` and `[[limit_state]]`s, and `[code_check]` — against the bridge of `segments`
+/// segments when its model is built (per-segment lists, in-span hinges). `Ok` when absent.
+pub fn check_tables(
+    sc: &crate::sim::scenario::Scenario,
+    segments: Option<usize>,
+) -> Result<(), AssessmentError> {
+    let (text, origin) = (sc.text(), sc.origin());
+    if sc.is_bridge() {
+        FragilitySettings::check_if_present(text, origin)?;
+    }
+    match segments {
+        Some(n) => CodeCheckInput::check_against(text, origin, n),
+        None => CodeCheckInput::check_if_present(text, origin),
+    }
+}
 pub use check_input::CodeCheckInput;
 pub use settings::{
     FragilitySettings, ImKind, LimitKind, LimitState, PairIm, PeriodChoice, Stripes,

@@ -198,4 +198,10 @@ fn joint_gap_rules() {
         1e-15,
     );
     close(cqc_rho(1.0, 0.9, 0.05).unwrap(), 0.473_027_68, 1e-8);
+    // undamped: equal periods are fully correlated (the 0/0 of the form; a hostile trial got a
+    // NaN turned into a zero gap that passed), different ones not at all
+    assert_eq!(cqc_rho(1.0, 1.0, 0.0).unwrap(), 1.0);
+    assert_eq!(cqc_rho(1.0, 1.2, 0.0).unwrap(), 0.0);
+    close(gap_ddc(0.1, 0.3, 1.0, 1.0, 0.0).unwrap(), 0.2, 1e-15);
+    close(gap_ddc(0.1, 0.3, 1.0, 1.0, 1e-7).unwrap(), 0.2, 1e-9);
 }

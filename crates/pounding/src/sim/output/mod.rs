@@ -24,8 +24,8 @@ mod input_warnings;
 mod trajectories;
 mod verdict;
 pub use batch::{BATCH_HEADER, BATCH_TAIL, batch_csv, batch_set_csv, bridge_batch_header};
-pub(crate) use bridge::bridge_summary_json_text;
 pub use bridge::governing_seat_line;
+pub(crate) use bridge::{bridge_summary_json, bridge_summary_json_text};
 pub use bridge_plan::{
     BridgePlan, CornerPaths, bridge_plan, corner_paths, joint_openings, plan_exaggeration,
     segment_displacements,

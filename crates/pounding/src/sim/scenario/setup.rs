@@ -107,6 +107,15 @@ impl Setup {
             Setup::Bridge(s) => output::bridge_summary_json_text(s, sol),
         }
     }
+
+    /// `summary.json` as a value (its text is [`Setup::summary_json_text`]); callers that add
+    /// a key (the code check of a run) write it with [`crate::output::json_text`].
+    pub fn summary_json_value(&self, sol: &BridgeSolution) -> serde_json::Value {
+        match self {
+            Setup::TwoDecks(s) => output::pair_summary_json(s, sol),
+            Setup::Bridge(s) => output::bridge_summary_json(s, sol),
+        }
+    }
 }
 
 /// Delegates to the problem of its form (a batch over a setup runs its problem).
