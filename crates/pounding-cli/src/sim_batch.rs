@@ -302,12 +302,21 @@ fn report(rows: &[BatchRow], runs_secs: f64, out: &Path) -> ExitCode {
         .iter()
         .filter(|r| r.outcome.as_ref().is_ok_and(|o| status(o).1))
         .count();
+    let untrusted_n = rows
+        .iter()
+        .filter(|r| {
+            r.outcome
+                .as_ref()
+                .is_ok_and(|o| status(o).0 != SimStatus::Completed)
+        })
+        .count();
     eprintln!(
-        "batch: {} in {:.2} s, {} unseated, {} failed; outputs in {}",
+        "batch: {} in {:.2} s, {} unseated, {} could not run, {} not trustworthy; outputs in {}",
         count(rows.len(), "run"),
         runs_secs,
         unseated,
         failed.len(),
+        untrusted_n,
         out.display()
     );
     let warned = rows
@@ -317,8 +326,8 @@ fn report(rows: &[BatchRow], runs_secs: f64, out: &Path) -> ExitCode {
     if warned > 0 {
         eprintln!(
             "warning: {} of {} runs have warnings (energy created at a contact, a coarse time step \
-             or an implausible record PGA): see batch.csv, column warnings, and run one alone with \
-             --record for its summary.json",
+             or an implausible record PGA): see batch.csv, column warnings, and run one alone (--record \
+             and --scale, or --set with a manifest of that entry) for its summary.json",
             warned,
             rows.len()
         );

@@ -111,6 +111,12 @@ pub fn draw(
         )
         .map_err(e)?;
     if sites.is_empty() {
+        root.draw(&Text::new(
+            "A single segment without abutments: no joint or abutment to show",
+            (40, 60),
+            (FAMILY, 20).into_font(),
+        ))
+        .map_err(e)?;
         return Ok(());
     }
     let rows = sites.len().div_ceil(4);

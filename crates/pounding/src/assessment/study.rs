@@ -309,8 +309,10 @@ pub fn fit_warnings(rows: &[RunRow], fits: &Fits) -> Vec<String> {
     if warned > 0 {
         out.push(format!(
             "{warned} of {} runs have warnings (a time step coarser than the record's samples, \
-             energy created at a contact, ...): the warnings column of runs.csv counts them; run \
-             one with `pounding simulate --record` to read them",
+             energy created at a contact, ...): the warnings column of runs.csv counts them; \
+             reproduce a run to read them (a single record: `pounding simulate --record R \
+             --scale S`; a pair: `pounding simulate --set` with a manifest of that pair and \
+             `--scales S`, or the fragility guide's recipe)",
             rows.len()
         ));
     }

@@ -234,7 +234,8 @@ pub fn warnings_message(w: &[RunWarning]) -> Option<String> {
     };
     Some(format!(
         "warning: energy was created at a contact in {} impacting contact{} (total {} J; largest {} J \
-         at {} in impact {}, t = {} s): {why}; see summary.json \"warnings\"",
+         at {} in impact {}, t = {} s): {why}; every one is listed in the run's warnings (simulate: \
+         summary.json \"warnings\"; compare: report.html)",
         w.len(),
         if w.len() == 1 { "" } else { "s" },
         float_token(total),

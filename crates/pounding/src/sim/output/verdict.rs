@@ -152,7 +152,9 @@ pub fn verdict(layout: Layout, sol: &BridgeSolution) -> Vec<VerdictLine> {
             VerdictLine {
                 topic: "unseating",
                 text: format!(
-                    "UNSEATED: {name} left its seat first, at {} s ({n} end{} in all).",
+                    "UNSEATED: {name} left its seat first, at {} s ({n} end{} in all). The model has \
+                     no fall: what it reports after that time assumes the deck still on its \
+                     seat, so it is not physical.",
                     n3(t),
                     if n == 1 { "" } else { "s" }
                 ),
