@@ -85,6 +85,15 @@ pub fn verdict_sentence(r: &CheckReport, seats: &[SeatSummary]) -> String {
             r.failing_gaps()
         );
     }
+    let missing: Vec<String> = r
+        .not_evaluated()
+        .iter()
+        .map(|(c, why)| format!("{} ({why})", c.title()))
+        .collect();
+    if !missing.is_empty() {
+        // a PASS of the codes evaluated is not a PASS of the others
+        s += &format!("; not evaluated: {}", missing.join(", "));
+    }
     let beyond = against_run(r, seats)
         .iter()
         .filter(|e| e.beyond_design == Some(true))

@@ -191,6 +191,7 @@ pub fn check_json(r: &CheckReport, scenario: &str) -> String {
         "inputs": inputs_json(&r.input),
         "ends": ends,
         "gaps": gaps,
+        "omissions": super::check_summary::omissions(r),
     });
     crate::output::json_without_negative_zero(&mut v);
     serde_json::to_string_pretty(&v).unwrap_or_default() + "\n"
@@ -273,6 +274,9 @@ pub fn check_text(r: &CheckReport, scenario: &str) -> String {
             "Not part of this verdict (inputs missing): {}\n",
             skipped.join(", ")
         );
+    }
+    for o in super::check_summary::omissions(r) {
+        s += &format!("Not included: {o}\n");
     }
     s
 }
