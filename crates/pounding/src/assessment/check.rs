@@ -240,6 +240,10 @@ pub fn check_bridge(
         let codes = CODES
             .iter()
             .map(|&c| {
+                if !input.codes.contains(&c) {
+                    let why = "not selected ([code_check] codes)".to_string();
+                    return Ok((c, Requirement::NotEvaluated(why)));
+                }
                 Ok((
                     c,
                     end_requirement(c, &at, i, other, aashto_l_h, input, &periods, &disp)?,

@@ -51,6 +51,10 @@ pub const DEFAULTS: &[(&str, &str)] = &[
     ("delta_crsh_m", "0"),
     ("delta_temp_m", "0"),
     ("jra_ground", "\"III\" (the largest ε_G)"),
+    (
+        "codes",
+        "every code: [\"ec8\", \"aashto_lrfd\", \"aashto_guide\", \"caltrans\", \"jra\"]",
+    ),
 ];
 
 /// The periods of the frames for the double-difference gap.
@@ -102,6 +106,9 @@ pub struct CodeCheckInput {
     pub caltrans: [Real; 3],
     /// JRA ground type.
     pub jra_ground: JraGround,
+    /// The codes that apply (the others are not evaluated and do not govern): every code by
+    /// default.
+    pub codes: Vec<super::check::Code>,
     /// The keys the file sets (the others are at their [`DEFAULTS`]).
     pub given: Vec<&'static str>,
     /// Where the per-segment keys are written, for [`CodeCheckInput::check_segments`].
@@ -138,6 +145,7 @@ struct Sec {
     delta_crsh_m: Sp<Real>,
     delta_temp_m: Sp<Real>,
     jra_ground: Sp<String>,
+    codes: Option<Spanned<Vec<Spanned<String>>>>,
 }
 
 impl Sec {
@@ -163,6 +171,7 @@ impl Sec {
             self.delta_crsh_m.is_some(),
             self.delta_temp_m.is_some(),
             self.jra_ground.is_some(),
+            self.codes.is_some(),
         ];
         DEFAULTS
             .iter()
@@ -320,6 +329,35 @@ impl CodeCheckInput {
             }
         }
         let hinges_line = s.in_span_hinges.as_ref().map(|v| cx.line(v));
+        let all = super::check::CODES;
+        let codes = match &s.codes {
+            None => all.to_vec(),
+            Some(list) => {
+                let names: Vec<&str> = all.iter().map(|c| c.name()).collect();
+                let mut out: Vec<super::check::Code> = Vec::new();
+                for v in list.get_ref() {
+                    let c = all[cx.choice("codes", v, &names)?];
+                    if out.contains(&c) {
+                        return Err(cx.err(
+                            "codes",
+                            v,
+                            format!("{:?} is listed twice", v.get_ref()),
+                        ));
+                    }
+                    out.push(c);
+                }
+                if out.is_empty() {
+                    return Err(cx.err(
+                        "codes",
+                        list,
+                        "lists no code: name at least one, or leave the key out for every code"
+                            .into(),
+                    ));
+                }
+                // in the order of CODES, whatever the order written
+                all.iter().copied().filter(|c| out.contains(c)).collect()
+            }
+        };
         let given = s.given();
         Ok(Self {
             ground,
@@ -339,6 +377,7 @@ impl CodeCheckInput {
             sdc,
             caltrans,
             jra_ground,
+            codes,
             given,
             lines,
             hinges_line,

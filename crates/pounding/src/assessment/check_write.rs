@@ -133,6 +133,7 @@ pub fn inputs_json(i: &CodeCheckInput) -> Value {
         "delta_crsh_m": json_float(i.caltrans[1]),
         "delta_temp_m": json_float(i.caltrans[2]),
         "jra_ground": match i.jra_ground { JraGround::I => "I", JraGround::II => "II", JraGround::III => "III" },
+        "codes": i.codes.iter().map(|c| c.name()).collect::<Vec<_>>(),
         "at_default": i.defaulted(),
     })
 }
@@ -268,12 +269,13 @@ pub fn check_text(r: &CheckReport, scenario: &str) -> String {
         r.failing_gaps(),
         r.gaps.len()
     );
-    let skipped: Vec<&str> = r.not_evaluated().iter().map(|(c, _)| c.title()).collect();
+    let skipped: Vec<String> = r
+        .not_evaluated()
+        .iter()
+        .map(|(c, why)| format!("{} ({why})", c.title()))
+        .collect();
     if !skipped.is_empty() {
-        s += &format!(
-            "Not part of this verdict (inputs missing): {}\n",
-            skipped.join(", ")
-        );
+        s += &format!("Not part of this verdict: {}\n", skipped.join(", "));
     }
     for o in super::check_summary::omissions(r) {
         s += &format!("Not included: {o}\n");

@@ -243,6 +243,9 @@ fn code_check_errors_name_key_and_line() {
         ("damping = 1.5", "code_check.damping"),
         ("in_span_hinges = [0]", "code_check.in_span_hinges"),
         ("in_span_hinges = [2, 2]", "code_check.in_span_hinges"),
+        ("codes = [\"eurocode\"]", "code_check.codes"),
+        ("codes = [\"ec8\", \"ec8\"]", "code_check.codes"),
+        ("codes = []", "code_check.codes"),
     ] {
         let (k, l, m) = key_error(table);
         assert_eq!((k.as_str(), l), (key, Some(line)), "{table}: {m}");
@@ -290,7 +293,8 @@ fn every_default_key_is_accepted_and_documented() {
                near_fault_factor = 1.2, l_m_m = 0.5, l_eff_m = 20.0, displacement_m = 0.1, \
                period_s = 1.0, damping = 0.02, pier_height_m = [5, 6, 7, 8, 9], aashto_zone = 1, \
                a_s = 0.04, sdc = \"A\", delta_ps_m = 0.01, delta_crsh_m = 0.02, \
-               delta_temp_m = 0.03, jra_ground = \"I\", in_span_hinges = [2]";
+               delta_temp_m = 0.03, jra_ground = \"I\", in_span_hinges = [2], \
+               codes = [\"jra\", \"ec8\", \"aashto_lrfd\", \"aashto_guide\", \"caltrans\"]";
     // an inline table, before the first table header
     let text = format!("code_check = {{ {all} }}\n{CURVED_5}");
     let input = CodeCheckInput::from_scenario(&text, "s.toml").unwrap();
@@ -375,4 +379,37 @@ fn an_in_span_hinge_takes_the_sum_of_the_lengths_either_side() {
         )),
         "{row}"
     );
+}
+
+/// `codes` selects the codes that apply: the others are not evaluated (with the reason) and do
+/// not govern, so a seat that only JRA's 0.7 m floor fails passes an AASHTO-only check.
+#[test]
+fn selected_codes_alone_govern() {
+    let all = check_scenario(&scenario(&with_check(
+        "pier_height_m = 8.0\ndisplacement_m = 0.1",
+    )))
+    .unwrap();
+    let some = check_scenario(&scenario(&with_check(
+        "pier_height_m = 8.0\ndisplacement_m = 0.1\ncodes = [\"aashto_lrfd\", \"ec8\"]",
+    )))
+    .unwrap();
+    for (a, s) in all.ends.iter().zip(&some.ends) {
+        for ((ca, qa), (cs, qs)) in a.codes.iter().zip(&s.codes) {
+            assert_eq!(ca, cs);
+            match cs {
+                Code::AashtoLrfd | Code::Ec8 => assert_eq!(qa, qs, "{}", a.at.end),
+                _ => assert!(
+                    matches!(qs, Requirement::NotEvaluated(w) if w.contains("not selected")),
+                    "{qs:?}"
+                ),
+            }
+        }
+        let g = s.governing().unwrap();
+        assert!(matches!(g.0, Code::AashtoLrfd | Code::Ec8), "{g:?}");
+        let want = [Code::AashtoLrfd, Code::Ec8]
+            .iter()
+            .filter_map(|&c| a.codes.iter().find(|(k, _)| *k == c).unwrap().1.value())
+            .fold(f64::MIN, f64::max);
+        assert_eq!(g.1, want);
+    }
 }
