@@ -140,14 +140,13 @@ fn plan(args: &Args, reading: &ReadOptions) -> Result<Plan> {
     })
 }
 
-/// Writes `batch.csv` (`csv`), `batch.png` (`curves`, the dashed seat length `seat_length`) and
-/// `timing.json` into `--out`.
+/// Writes `batch.csv` (`csv`), `batch.png` (`curves`; the seat panel is each run's governing
+/// seat ratio, its unseating line at 1) and `timing.json` into `--out`.
 fn write_outputs(
     args: &Args,
     plan: &Plan,
     csv: &str,
     curves: &[BatchCurve],
-    seat_length: Real,
     (runs, runs_secs, t_start): (usize, f64, Instant),
 ) -> Result<()> {
     let out = &args.out;
@@ -157,7 +156,7 @@ fn write_outputs(
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
     wr("batch.csv", csv.as_bytes())?;
-    sim_plots::batch_plot(out, "batch.png", curves, seat_length)
+    sim_plots::batch_plot(out, "batch.png", curves, 1.0)
         .map_err(|e| anyhow!("plotting: {e}"))?;
     let timing = json!({
         "runs_s": runs_secs,
@@ -185,17 +184,6 @@ pub fn run(
     let (rows, runs_secs) = execute(&plan, setup, setup.settings())?;
     let curves = curves(&plan.records, plan.set.as_ref(), &rows);
     let model = setup.model();
-    let seat = model
-        .joints
-        .iter()
-        .map(|j| j.seat_length)
-        .chain(
-            model
-                .abutments
-                .iter()
-                .map(|a| a.map_or(model.outer_seat_length, |a| a.seat_length)),
-        )
-        .fold(Real::INFINITY, Real::min);
     let (layout, n) = (setup.layout(), model.segments.len());
     let csv = match &plan.set {
         Some(set) => batch_set_csv(layout, n, &rows, set),
@@ -206,7 +194,6 @@ pub fn run(
         &plan,
         &csv,
         &curves,
-        seat,
         (rows.len(), runs_secs, t_start),
     )?;
     Ok(report(&rows, runs_secs, &args.out))
@@ -262,7 +249,7 @@ fn curves(records: &[BatchRecord], set: Option<&RecordSet>, rows: &[BatchRow]) -
         let m = &o.summary;
         let max = |v: &mut dyn Iterator<Item = Real>| v.fold(Real::NAN, Real::max);
         [
-            m.peak_seat_displacement,
+            m.peak_seat_ratio,
             max(&mut m.joints.iter().map(|j| j.peak_opening)),
             max(&mut m.segments.iter().map(|g| g.peak_rotation)) * DEG,
             m.impacts as Real,

@@ -13,7 +13,7 @@ use std::path::Path;
 pub struct BatchCurve {
     /// Record name (legend).
     pub label: String,
-    /// `(x, [seat displacement, joint opening, rotation, impacts])` per successful run.
+    /// `(x, [governing seat ratio, joint opening, rotation, impacts])` per successful run.
     pub pts: Vec<(Real, [Real; 4])>,
 }
 
@@ -57,17 +57,18 @@ fn batch_panel_range(k: usize, curves: &[BatchCurve], seat_length: Real) -> (Rea
     crate::figures::sane_range(lo, hi, (0.0, 1.0))
 }
 
-/// `batch.png`: peak response against intensity (PGA of the applied component) per record, four
-/// panels (seat displacement with the seat length, joint opening, plan rotation, impacts).
+/// `batch.png`: peak response against intensity (PGA of the applied component; of a pair the
+/// larger of its two) per record, four panels (the governing seat ratio with the unseating line
+/// at `seat_length` = 1, joint opening, plan rotation, impacts).
 pub fn batch_plot(out: &Path, name: &str, curves: &[BatchCurve], seat_length: Real) -> DrawResult {
     register();
     let titles = [
         (
-            "Peak seat displacement (dashed: seat length)",
-            "seat displacement [m]",
+            "Governing seat: peak displacement / its own seat (dashed: 1, unseating)",
+            "peak / seat [-]",
         ),
-        ("Peak joint opening", "opening [m]"),
-        ("Peak plan rotation (either deck)", "rotation [deg]"),
+        ("Peak joint opening (largest joint)", "opening [m]"),
+        ("Peak plan rotation (largest segment)", "rotation [deg]"),
         ("Number of impacts", "impacts"),
     ];
     let mut xmax: Real = 0.0;
@@ -94,7 +95,7 @@ pub fn batch_plot(out: &Path, name: &str, curves: &[BatchCurve], seat_length: Re
                 .map_err(e)?;
             chart
                 .configure_mesh()
-                .x_desc("PGA of the applied component [g]")
+                .x_desc("PGA [g] (of a pair: the larger of its two scaled components)")
                 .y_desc(titles[k].1)
                 .x_label_formatter(&|v| tick(*v, xmax))
                 .y_label_formatter(&|v| {
