@@ -74,3 +74,12 @@ def test_unknown_builtin_and_no_record_raise():
         pounding.spectrum()
     with pytest.raises(ValueError, match="periods"):
         pounding.spectrum("builtin:ELC180", periods=[])
+
+
+def test_text_where_a_pair_or_periods_belong_is_refused():
+    """A hostile trial: one record given as ``pair`` was walked letter by letter, and
+    ``periods="1,2"`` likewise; both are type errors naming the argument now."""
+    with pytest.raises(TypeError, match="pair must be"):
+        pounding.spectrum([], pair="builtin:ELC180")
+    with pytest.raises(TypeError, match="periods must be"):
+        pounding.spectrum(["builtin:ELC180"], periods="1,2")

@@ -27,6 +27,9 @@ def _records(records: Any) -> List[str]:
 
 
 def _pairs(pair: Any) -> List[Tuple[str, str]]:
+    if isinstance(pair, (str, bytes, os.PathLike)):
+        raise TypeError("pair must be an (X, Y) tuple of two records or a list of them, not one "
+                        f"record {pair!r}: a single record goes in records")
     if pair is None:
         return []
     if isinstance(pair, tuple) and len(pair) == 2 and all(
@@ -57,6 +60,9 @@ def spectrum_csv_text(records: Any = (), *, pair: Any = None, damping: float = 0
             periods = [periods.item()]
         elif isinstance(periods, (int, float, np.integer, np.floating)):
             periods = [periods]
+        elif isinstance(periods, (str, bytes)):
+            raise TypeError(f"periods must be a number or a sequence of numbers [s], not the text "
+                            f"{periods!r}")
         ts = [real_number("periods", t) for t in periods]
         if not ts:
             raise ValueError("invalid periods: the list is empty (None gives the default 100 "
