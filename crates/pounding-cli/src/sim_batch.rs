@@ -156,8 +156,7 @@ fn write_outputs(
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
     wr("batch.csv", csv.as_bytes())?;
-    sim_plots::batch_plot(out, "batch.png", curves, 1.0)
-        .map_err(|e| anyhow!("plotting: {e}"))?;
+    sim_plots::batch_plot(out, "batch.png", curves, 1.0).map_err(|e| anyhow!("plotting: {e}"))?;
     let timing = json!({
         "runs_s": runs_secs,
         "wall_time_s": t_start.elapsed().as_secs_f64(),
@@ -189,13 +188,7 @@ pub fn run(
         Some(set) => batch_set_csv(layout, n, &rows, set),
         None => batch_csv(layout, n, &rows),
     };
-    write_outputs(
-        args,
-        &plan,
-        &csv,
-        &curves,
-        (rows.len(), runs_secs, t_start),
-    )?;
+    write_outputs(args, &plan, &csv, &curves, (rows.len(), runs_secs, t_start))?;
     Ok(report(&rows, runs_secs, &args.out))
 }
 

@@ -66,6 +66,9 @@ pub enum CompareError {
     /// Too many steps, or the histories of all runs do not fit in memory.
     #[error("{0}")]
     Size(String),
+    /// Every law refused for one reason that is not the laws' (a flag or the scenario).
+    #[error("{0}")]
+    Input(String),
     /// A law of the two-deck model failed to run (`law "x": reason`).
     #[error("{0}")]
     Run(String),
@@ -262,6 +265,11 @@ impl Comparison {
         if let Some(Err(first)) = setups.first()
             && setups.iter().all(Result::is_err)
         {
+            // every law refused for the same reason: it is not the laws' (a flag or the scenario,
+            // e.g. --scale nan), so say it as itself
+            if setups.iter().all(|s| s.as_ref().err() == Some(first)) && laws.len() > 1 {
+                return Err(CompareError::Input(first.clone()));
+            }
             return Err(CompareError::NoLaw(first.clone()));
         }
         let mut sizes = Vec::new();
