@@ -80,9 +80,9 @@ fn reference_table_of_spec_section_15() {
     assert_eq!(check_table15(TABLE15), 10);
     match spec_section(15) {
         Some(s) => assert_eq!(check_table15(&s), 10, "spec §15 rows"),
-        None => {
-            crate::common::skipped("spec §15 table from the shared spec (hard-coded copy checked)")
-        }
+        None => crate::common::skipped(
+            "the reference table of the project's shared specification (a copy in this test is checked instead)",
+        ),
     }
 }
 

@@ -101,9 +101,9 @@ fn mass_properties_reproduce_spec_table() {
     assert_eq!(check_table3(TABLE3), 6);
     match spec_section(3) {
         Some(s) => assert_eq!(check_table3(&s), 6, "spec §3 table rows"),
-        None => {
-            crate::common::skipped("spec §3 table from the shared spec (hard-coded copy checked)")
-        }
+        None => crate::common::skipped(
+            "the mass-property table of the project's shared specification (a copy in this test is checked instead)",
+        ),
     }
 }
 
