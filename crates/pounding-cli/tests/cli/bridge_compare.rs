@@ -231,7 +231,7 @@ fn bridge_compare_skips_a_law_that_cannot_run_and_says_why() {
     let text = std::fs::read_to_string(out.join("compare.csv")).unwrap();
     let line = text.lines().nth(2).unwrap();
     assert!(
-        line.starts_with("hertz-damp,skipped,,,,,,,,,,,,,,\"invalid calibration"),
+        line.starts_with("hertz-damp,skipped,,,,,,,,,,,,,,,,\"invalid calibration"),
         "{line}"
     );
     // the report lists the skipped law with its reason, and the warnings of the laws that ran
@@ -386,6 +386,10 @@ fn scale_and_duration_apply_to_every_law_as_in_simulate() {
     );
     let seat: f64 = row[col("peak_seat_displacement_m")].parse().unwrap();
     assert_eq!(seat, s["peak_seat_displacement_m"].as_f64().unwrap());
+    let gov = &s["governing_seat"];
+    assert_eq!(row[col("governing_seat_end")], gov["end"].as_str().unwrap());
+    let ratio: f64 = row[col("governing_seat_ratio")].parse().unwrap();
+    assert_eq!(ratio, gov["ratio"].as_f64().unwrap());
     // a bad value names the flag and writes nothing
     let bad = work.join("bad");
     let (code, _, err) = run_capture(&[

@@ -32,11 +32,12 @@ pub const BRIDGE_COMPARE_OUTPUTS: &[&str] = &[
 /// joints and abutments, the rigid law's largest peak-force estimate from the impulse and the
 /// contact duration it assumes ([`crate::contact_law::estimate`]), the largest impulse, the
 /// largest joint closing and opening, the largest penetration, segment
-/// displacement and seat displacement, unseating, the energy-balance error, and the reason a
-/// skipped law could not run.
+/// displacement and seat displacement, the governing seated end and its ratio (peak over its own
+/// seat, as `summary.json`'s `governing_seat`), unseating, the energy-balance error, and the
+/// reason a skipped law could not run.
 pub const BRIDGE_COMPARE_HEADER: &str = "law,status,steps,impacts,peak_contact_force_n,\
 peak_force_estimate_n,contact_time_estimate_s,peak_impulse_ns,peak_closing_m,peak_opening_m,peak_penetration_m,peak_displacement_m,\
-peak_seat_displacement_m,unseated,energy_balance_error,skipped_reason";
+peak_seat_displacement_m,governing_seat_end,governing_seat_ratio,unseated,energy_balance_error,skipped_reason";
 
 /// Columns of `compare_sites.csv`: one row per law that ran and site (`joint1`, … in bridge
 /// order, then `abutment.start`, `abutment.end` where present), as the `joints` /
@@ -117,7 +118,7 @@ pub fn bridge_compare_csv(runs: &[LawRun]) -> String {
         let row: Vec<String> = match &run.outcome {
             Err(why) => {
                 let mut r = vec![field(law), "skipped".into()];
-                r.extend(std::iter::repeat_n(String::new(), 13));
+                r.extend(std::iter::repeat_n(String::new(), 15));
                 r.push(field(why));
                 r
             }
@@ -140,6 +141,12 @@ pub fn bridge_compare_csv(runs: &[LawRun]) -> String {
                     float_token(s.peak_penetration),
                     opt(max_of(s.segments.iter().map(|g| Some(g.peak_displacement)))),
                     float_token(s.peak_seat_displacement),
+                    s.seats
+                        .get(s.governing_seat)
+                        .map_or(String::new(), |g| g.end.clone()),
+                    s.seats
+                        .get(s.governing_seat)
+                        .map_or(String::new(), |g| float_token(g.ratio)),
                     s.unseated.to_string(),
                     float_token(s.energy_balance_error),
                     String::new(),
