@@ -138,6 +138,16 @@ pub fn inputs_json(i: &CodeCheckInput) -> Value {
     })
 }
 
+/// The inputs as used: the damping is the one the gap rule used (the bridge's when the table
+/// leaves it out), not a null.
+fn inputs_used(r: &CheckReport) -> Value {
+    let mut i = inputs_json(&r.input);
+    if let (Some(g), Some(o)) = (r.gaps.first(), i.as_object_mut()) {
+        o.insert("damping".into(), json_float(g.damping));
+    }
+    i
+}
+
 /// `check.json`: the scenario, the inputs, every end and joint, the counts and the verdict.
 pub fn check_json(r: &CheckReport, scenario: &str) -> String {
     let ends: Vec<Value> = r
@@ -189,7 +199,7 @@ pub fn check_json(r: &CheckReport, scenario: &str) -> String {
         "verdict": overall(r),
         "failing_ends": r.failing_ends(),
         "failing_gaps": r.failing_gaps(),
-        "inputs": inputs_json(&r.input),
+        "inputs": inputs_used(r),
         "ends": ends,
         "gaps": gaps,
         "omissions": super::check_summary::omissions(r),
