@@ -136,3 +136,45 @@ fn bad_synth_flags_exit_2_naming_the_flag_and_write_nothing() {
         assert!(!out.exists(), "{args:?} wrote outputs");
     }
 }
+
+/// A smaller suite written where a larger one was leaves none of the larger one's records
+/// (a hostile trial found SYN003–SYN005 beside a two-entry manifest, read by `--records DIR`);
+/// a file the generator did not write stays.
+#[test]
+fn a_smaller_suite_removes_the_records_of_a_larger_one() {
+    let d = scratch_dir("motion", "stale");
+    let out = d.join("suite");
+    let synth = |count: &str| {
+        let (code, _, err) = run_capture(&[
+            "motion",
+            "synth",
+            "--count",
+            count,
+            "--seed",
+            "4",
+            "--duration",
+            "2",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert_eq!(code, Some(0), "{err}");
+    };
+    synth("4");
+    std::fs::write(out.join("MINE_x.AT2"), "a user's record\n").unwrap();
+    synth("2");
+    let mut names: Vec<String> = std::fs::read_dir(&out)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(
+        names,
+        [
+            "MINE_x.AT2",
+            "SYN001_x.AT2",
+            "SYN002_x.AT2",
+            "SYNTHETIC.txt",
+            "suite.toml"
+        ]
+    );
+}

@@ -133,9 +133,39 @@ pub enum WriteSuiteError {
     },
 }
 
+/// Removes the records of an earlier, larger suite from `dir`: files named as the generator
+/// names them (`<id>_x.AT2`, `<id>_y.AT2`) that the new suite does not write and that begin with
+/// the generator's own header line (a user's file is never touched). Left behind, they sat next
+/// to a manifest that does not list them and were read by `--records DIR`.
+fn remove_stale_records(dir: &Path, records: &[SynthRecord]) -> std::io::Result<()> {
+    use std::io::BufRead;
+    let keep: std::collections::BTreeSet<String> = records
+        .iter()
+        .flat_map(|r| [format!("{}_x.AT2", r.id), format!("{}_y.AT2", r.id)])
+        .collect();
+    for entry in std::fs::read_dir(dir)? {
+        let path = entry?.path();
+        let Some(name) = path.file_name().and_then(|n| n.to_str()) else {
+            continue;
+        };
+        if keep.contains(name) || !(name.ends_with("_x.AT2") || name.ends_with("_y.AT2")) {
+            continue;
+        }
+        let Ok(file) = std::fs::File::open(&path) else {
+            continue;
+        };
+        let mut first = String::new();
+        let _ = std::io::BufReader::new(file).read_line(&mut first);
+        if first.starts_with("SYNTHETIC ACCELEROGRAM (pounding motion synth)") {
+            std::fs::remove_file(&path)?;
+        }
+    }
+    Ok(())
+}
+
 /// Generates the suite and writes it to `dir` (created if needed): the `.AT2` files, then
 /// `SYNTHETIC.txt`, then `suite.toml` last (each atomically: a manifest present means every
-/// file it names is complete). Parameters are checked before anything is written. Returns the
+/// file it names is complete); the records of an earlier suite there are removed first. Parameters are checked before anything is written. Returns the
 /// records.
 pub fn write_suite(
     dir: &Path,
@@ -160,6 +190,7 @@ pub fn write_suite(
     if manifest.exists() {
         std::fs::remove_file(&manifest).map_err(io(&manifest))?;
     }
+    remove_stale_records(dir, &records).map_err(io(dir))?;
     for r in &records {
         write(
             format!("{}_x.AT2", r.id),
