@@ -28,10 +28,14 @@ pub fn run(args: Args) -> Result<ExitCode> {
     pounding::assessment::check_tables(&sc, None)?;
     let report = pounding::assessment::check_scenario(&sc)?;
     let origin = sc.origin();
+    // the output directory first: an unusable --out is an error before anything is printed
+    let lock = match &args.out {
+        Some(out) => Some(pounding::output::lock_output_dir(out)?),
+        None => None,
+    };
     print!("{}", check_text(&report, origin));
-    if let Some(out) = &args.out {
-        let lock = pounding::output::lock_output_dir(out)?;
-        pounding::output::remove_previous_outputs(&lock, CHECK_OUTPUTS)?;
+    if let (Some(out), Some(lock)) = (&args.out, &lock) {
+        pounding::output::remove_previous_outputs(lock, CHECK_OUTPUTS)?;
         let files = [
             ("check.csv", check_csv(&report)),
             ("check_gaps.csv", check_gaps_csv(&report)),

@@ -149,6 +149,26 @@ fn check_of_a_bad_value_names_file_key_and_line() {
     }
 }
 
+/// An unusable `--out` (a regular file) is an error before the table is printed (a hostile trial
+/// saw the whole table and verdict, then exit 2).
+#[test]
+fn an_unusable_out_is_refused_before_anything_is_printed() {
+    let d = scratch_with(
+        "check",
+        "outfile",
+        &[("s.toml", &with_check("")), ("f", "x")],
+    );
+    let (code, stdout, stderr) = run_capture(&[
+        "check",
+        d.join("s.toml").to_str().unwrap(),
+        "--out",
+        d.join("f").to_str().unwrap(),
+    ]);
+    assert_eq!(code, Some(2), "{stderr}");
+    assert!(stdout.is_empty(), "{stdout}");
+    assert_eq!(std::fs::read_to_string(d.join("f")).unwrap(), "x");
+}
+
 #[test]
 fn check_refuses_an_unknown_key_with_its_line() {
     let d = scratch_with(

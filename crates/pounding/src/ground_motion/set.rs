@@ -644,12 +644,15 @@ fn meta_values(
     out
 }
 
-/// Why `k` cannot name metadata (it becomes a column of `runs.csv`), if it cannot: empty, with
-/// commas, quotes or line breaks, or repeating a column of `runs.csv`.
+/// Why `k` cannot name metadata (it becomes a column of `runs.csv`), if it cannot: empty or only
+/// spaces, with leading or trailing spaces, commas, quotes or line breaks, or repeating a column
+/// of `runs.csv`.
 fn meta_name_problem(k: &str) -> Option<String> {
-    if k.is_empty() || k.contains([',', '"', '\n', '\r']) {
+    if k.trim().is_empty() || k.trim() != k || k.contains([',', '"', '\n', '\r']) {
         return Some(
-            "a metadata name becomes a column: no commas, quotes or line breaks".to_string(),
+            "a metadata name becomes a column: not blank, no leading or trailing spaces, no \
+             commas, quotes or line breaks"
+                .to_string(),
         );
     }
     reserved_column(k).map(|why| format!("{why}; rename the metadata (e.g. meta_{k})"))

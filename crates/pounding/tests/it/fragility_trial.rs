@@ -124,6 +124,18 @@ fn metadata_names_that_repeat_a_runs_csv_column_are_refused() {
         assert!(e.contains("set.toml: table at line 6"), "{e}");
         assert!(e.contains("runs.csv"), "{e}");
     }
+    // blank or space-padded names would be blank or misleading columns (a hostile trial saw a
+    // `meta_ ` column)
+    for key in ["\" \"", "\" pga\""] {
+        let m = format!(
+            "[[record]]\nid = \"A\"\nx = \"a.txt\"\ndt = 0.01\n\n[record.meta]\n{key} = 1\n"
+        );
+        let e = set_err(&m);
+        assert!(
+            e.contains("not blank, no leading or trailing spaces"),
+            "{e}"
+        );
+    }
     // a harmless name next to them still reads
     let d = crate::scratch::scratch_dir("ft", "ok");
     std::fs::write(d.join("a.txt"), "0.0\n1.0\n").unwrap();
