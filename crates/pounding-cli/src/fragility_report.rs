@@ -6,7 +6,6 @@
 
 use crate::fragility_study::{Fits, Study, boot_failed};
 use crate::report::{CSS, esc};
-use pounding::assessment::check::CODES;
 use pounding::assessment::check_run::against_runs;
 use pounding::assessment::check_write::overall;
 use pounding::assessment::run::{Plan, RunRow};
@@ -326,42 +325,18 @@ fn code_check(h: &mut String, st: &Study, c: &Result<CheckReport, String>, rows:
             "In no trusted run did an end move farther than the governing code seat."
         }
     );
-    h.push_str("<div class=\"scroll\"><table>\n<tr><th>end</th><th>support</th><th>seat [m]</th>");
-    for c in CODES {
-        let _ = write!(h, "<th>{} [m]</th>", esc(c.title()));
-    }
-    h.push_str(
-        "<th>governing</th><th>code verdict</th><th>largest simulated peak [m] (at IM [g])</th>\
-         <th>largest peak / seat</th><th>runs unseated</th><th>beyond code seat</th><th>beyond \
-         design d</th></tr>\n",
+    crate::sim_report_check::end_table_head(
+        h,
+        "<th>largest simulated peak [m] (at IM [g])</th><th>largest peak / seat</th><th>runs \
+         unseated</th><th>beyond code seat</th><th>beyond design d</th>",
     );
     let of = |k: Option<usize>, n: usize| k.map_or("—".into(), |k| format!("{k} of {n}"));
     for e in &ends {
         let c = e.check;
-        let _ = write!(
-            h,
-            "<tr><td>{}</td><td>{}</td><td>{:.3}</td>",
-            esc(&c.at.end),
-            esc(&c.at.support),
-            c.at.seat_length
-        );
-        for (_, q) in &c.codes {
-            let _ = write!(
-                h,
-                "<td>{}</td>",
-                q.value().map_or("—".into(), |v| format!("{v:.3}"))
-            );
-        }
-        let verdict = match c.pass() {
-            Some(true) => "PASS",
-            Some(false) => "FAIL",
-            None => "not evaluated",
-        };
+        crate::sim_report_check::end_row_start(h, c);
         let _ = writeln!(
             h,
-            "<td>{}</td><td>{verdict}</td><td>{}</td><td>{}</td><td>{} of {}</td><td>{}</td><td>{}</td></tr>",
-            c.governing()
-                .map_or("—".into(), |(k, v)| format!("{} {v:.3}", k.name())),
+            "<td>{}</td><td>{}</td><td>{} of {}</td><td>{}</td><td>{}</td></tr>",
             e.largest
                 .map_or("—".into(), |(p, im)| format!("{p:.3} ({im:.3})")),
             e.largest.map_or("—".into(), |(p, _)| format!(

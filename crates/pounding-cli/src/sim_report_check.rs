@@ -41,6 +41,43 @@ pub fn section(
     })
 }
 
+/// Opens the per-end code table: the end, its support and seat, each code's seat, the governing
+/// one and the verdict, then the report's own column headers `extra` (shared by the simulate
+/// and fragility reports).
+pub(crate) fn end_table_head(h: &mut String, extra: &str) {
+    h.push_str("<div class=\"scroll\"><table>\n<tr><th>end</th><th>support</th><th>seat [m]</th>");
+    for c in CODES {
+        let _ = write!(h, "<th>{} [m]</th>", esc(c.title()));
+    }
+    let _ = writeln!(h, "<th>governing</th><th>code verdict</th>{extra}</tr>");
+}
+
+/// The cells of [`end_table_head`]'s shared columns for one end (the row is left open for the
+/// report's own cells).
+pub(crate) fn end_row_start(h: &mut String, c: &pounding::assessment::check::EndCheck) {
+    let _ = write!(
+        h,
+        "<tr><td>{}</td><td>{}</td><td>{:.3}</td>",
+        esc(&c.at.end),
+        esc(&c.at.support),
+        c.at.seat_length
+    );
+    for (_, q) in &c.codes {
+        let _ = write!(h, "<td>{}</td>", m3(q.value()));
+    }
+    let verdict = match c.pass() {
+        Some(true) => "PASS",
+        Some(false) => "FAIL",
+        None => "not evaluated",
+    };
+    let _ = write!(
+        h,
+        "<td>{}</td><td>{verdict}</td>",
+        c.governing()
+            .map_or("—".into(), |(k, v)| format!("{} {v:.3}", k.name()))
+    );
+}
+
 /// Each joint's gap against the SRSS and double-difference requirements (a table), and what
 /// the check leaves out: shared by the simulate and fragility reports.
 pub(crate) fn gaps_and_omissions(r: &CheckReport) -> String {
@@ -101,37 +138,16 @@ fn table(r: &CheckReport, seats: &[SeatSummary]) -> CodeCheckSection {
             String::new()
         }
     );
-    h.push_str("<div class=\"scroll\"><table>\n<tr><th>end</th><th>support</th><th>seat [m]</th>");
-    for c in CODES {
-        let _ = write!(h, "<th>{} [m]</th>", esc(c.title()));
-    }
-    h.push_str(
-        "<th>governing</th><th>code verdict</th><th>simulated peak [m]</th><th>residual \
-         [m]</th><th>peak / seat</th><th>seat left [m]</th><th>peak vs design d</th></tr>\n",
+    end_table_head(
+        &mut h,
+        "<th>simulated peak [m]</th><th>residual [m]</th><th>peak / seat</th><th>seat left \
+         [m]</th><th>peak vs design d</th>",
     );
     for e in &rows {
-        let c = e.check;
-        let _ = write!(
-            h,
-            "<tr><td>{}</td><td>{}</td><td>{:.3}</td>",
-            esc(&c.at.end),
-            esc(&c.at.support),
-            c.at.seat_length
-        );
-        for (_, q) in &c.codes {
-            let _ = write!(h, "<td>{}</td>", m3(q.value()));
-        }
-        let verdict = match c.pass() {
-            Some(true) => "PASS",
-            Some(false) => "FAIL",
-            None => "not evaluated",
-        };
+        end_row_start(&mut h, e.check);
         let _ = writeln!(
             h,
-            "<td>{}</td><td>{verdict}</td><td>{:.3}</td><td>{:.3}</td><td>{:.0} %</td>\
-             <td>{:+.3}</td><td>{}</td></tr>",
-            c.governing()
-                .map_or("—".into(), |(k, v)| format!("{} {v:.3}", k.name())),
+            "<td>{:.3}</td><td>{:.3}</td><td>{:.0} %</td><td>{:+.3}</td><td>{}</td></tr>",
             e.peak,
             e.residual,
             100.0 * e.ratio,
