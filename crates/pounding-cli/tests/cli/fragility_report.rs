@@ -143,42 +143,34 @@ fn without_code_check_there_is_no_code_section_and_a_bad_key_stops_the_study() {
     assert_eq!(code, Some(0), "{err}");
     let html = std::fs::read_to_string(d.join("out/report.html")).unwrap();
     assert!(!html.contains("id=\"code-check\""));
-    let bad = format!(
-        "{SCENARIO}{}",
-        CODE_CHECK.replace("a_gr_ms2 = 2.5", "a_gr_ms2 = -2.5")
-    );
-    let d = study_in("fragrep", "bad", &bad, SET);
-    let (code, _, err) = run_capture(&[
-        "fragility",
-        s(&d.join("bridge.toml")),
-        "--out",
-        s(&d.join("out")),
-    ]);
-    assert_eq!(code, Some(2), "{err}");
-    assert!(
-        err.contains("code_check.a_gr_ms2") && err.contains("bridge.toml:"),
-        "{err}"
-    );
-    assert!(!d.join("out").exists(), "an output was written");
-    // a per-segment list that does not fit the two-segment bridge: found before any run
-    let bad = format!(
-        "{SCENARIO}{}",
-        CODE_CHECK.replace(
+    // a bad value, and a per-segment list that does not fit the two-segment bridge: both found
+    // before any run, naming the key
+    for (name, from, to, key, also) in [
+        (
+            "bad",
+            "a_gr_ms2 = 2.5",
+            "a_gr_ms2 = -2.5",
+            "code_check.a_gr_ms2",
+            "bridge.toml:",
+        ),
+        (
+            "len",
             "displacement_m = 0.01",
-            "displacement_m = [0.01, 0.02, 0.03]"
-        )
-    );
-    let d = study_in("fragrep", "len", &bad, SET);
-    let (code, _, err) = run_capture(&[
-        "fragility",
-        s(&d.join("bridge.toml")),
-        "--out",
-        s(&d.join("out")),
-    ]);
-    assert_eq!(code, Some(2), "{err}");
-    assert!(
-        err.contains("code_check.displacement_m") && err.contains("2 segments"),
-        "{err}"
-    );
-    assert!(!d.join("out").exists(), "an output was written");
+            "displacement_m = [0.01, 0.02, 0.03]",
+            "code_check.displacement_m",
+            "2 segments",
+        ),
+    ] {
+        let bad = format!("{SCENARIO}{}", CODE_CHECK.replace(from, to));
+        let d = study_in("fragrep", name, &bad, SET);
+        let (code, _, err) = run_capture(&[
+            "fragility",
+            s(&d.join("bridge.toml")),
+            "--out",
+            s(&d.join("out")),
+        ]);
+        assert_eq!(code, Some(2), "{err}");
+        assert!(err.contains(key) && err.contains(also), "{err}");
+        assert!(!d.join("out").exists(), "{name}: an output was written");
+    }
 }
