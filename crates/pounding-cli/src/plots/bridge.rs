@@ -232,6 +232,9 @@ fn plan(root: &DrawingArea<BitMapBackend, Shift>, model: &BridgeModel, sol: &Bri
         |(l, h), &(x, y)| ((l.0.min(x), l.1.min(y)), (h.0.max(x), h.1.max(y))),
     );
     let extent = (hi.0 - lo.0).max(hi.1 - lo.1);
+    // a diverged run's corners can be 1e300 m away: plotters' pixel arithmetic overflows on such
+    // ranges (a panic), so points farther than this from their reference corner are not drawn
+    let far = 1e3 * extent.max(1.0);
     let raw = corner_paths(model, sol, 1.0);
     let peak = raw
         .iter()
@@ -241,10 +244,15 @@ fn plan(root: &DrawingArea<BitMapBackend, Shift>, model: &BridgeModel, sol: &Bri
                 .zip(c0)
                 .flat_map(move |(path, c)| path.iter().map(move |q| (q - c).norm()))
         })
-        .filter(|d| d.is_finite())
+        .filter(|d| d.is_finite() && *d <= far)
         .fold(0.0, Real::max);
     let f = plan_exaggeration(extent, peak);
-    let paths = corner_paths(model, sol, f);
+    let mut paths = corner_paths(model, sol, f);
+    for (seg, c0) in paths.iter_mut().zip(&p.corners) {
+        for (path, c) in seg.iter_mut().zip(c0) {
+            path.retain(|q| q.x.is_finite() && q.y.is_finite() && (q - c).norm() <= far * f);
+        }
+    }
     all.extend(
         paths
             .iter()

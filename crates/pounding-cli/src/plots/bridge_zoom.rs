@@ -92,11 +92,17 @@ pub fn draw(
     let finite = |v: &&Vector| v.x.is_finite() && v.y.is_finite();
     // one half-width for every panel: the largest distance of a shown corner from its panel's
     // centre over the run, with a margin
+    // a diverged run's corners can be 1e300 m away (plotters' pixel arithmetic overflows on such
+    // ranges): panels reach at most 10 m, and points beyond are not drawn
+    const MAX_REACH: Real = 10.0;
     let mut reach: Real = 0.0;
     for s in &sites {
         for &(i, c) in &s.corners {
             for q in paths[i][c].iter().filter(finite) {
-                reach = reach.max((q - s.centre).norm());
+                let d = (q - s.centre).norm();
+                if d <= MAX_REACH {
+                    reach = reach.max(d);
+                }
             }
         }
     }
@@ -170,16 +176,20 @@ pub fn draw(
         let colours = [RED, GREEN];
         for (n, &(i, c)) in site.corners.iter().enumerate() {
             let col = colours[n % 2];
-            chart
-                .draw_series(LineSeries::new(
-                    paths[i][c].iter().filter(finite).map(xy),
-                    col.mix(0.8).stroke_width(1),
-                ))
-                .map_err(e)?
-                .label(format!("segment {} corner", i + 1))
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 16, y)], col.stroke_width(2))
-                });
+            // the path clipped to the panel (a diverged run's points may lie far outside it)
+            let pts: Vec<(Real, Real)> = paths[i][c].iter().filter(finite).map(xy).collect();
+            let runs = clip_polyline(&pts, window);
+            for (r, run) in runs.into_iter().enumerate() {
+                let s = chart
+                    .draw_series(LineSeries::new(run, col.mix(0.8).stroke_width(1)))
+                    .map_err(e)?;
+                if r == 0 {
+                    s.label(format!("segment {} corner", i + 1))
+                        .legend(move |(x, y)| {
+                            PathElement::new(vec![(x, y), (x + 16, y)], col.stroke_width(2))
+                        });
+                }
+            }
         }
         chart
             .configure_series_labels()

@@ -146,3 +146,31 @@ fn a_joint_end_governs_and_each_ratio_follows_from_the_history() {
         );
     }
 }
+
+/// A diverged bridge run (both components ×1e300) ends with its status and exit 1, its files
+/// written, and no panic: its corners lie ~1e300 m away, which the plan figures once handed to
+/// the plotting library (an integer overflow panic, found in a final hostile check).
+#[test]
+fn a_diverged_bridge_run_draws_its_figures_without_a_panic() {
+    let d = crate::scratch_dir("seats", "diverged");
+    let out = d.join("out");
+    let sc = Path::new(env!("CARGO_MANIFEST_DIR")).join(SCENARIO);
+    let (code, _, stderr) = run_capture(&[
+        "simulate",
+        sc.to_str().unwrap(),
+        "--scale",
+        "1e300",
+        "--duration",
+        "1",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, Some(1), "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    for f in ["plan.png", "joint_zoom.png", "summary.json", "report.html"] {
+        assert!(out.join(f).is_file(), "{f}");
+    }
+    let s: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_ne!(s["status"], "Completed");
+}
