@@ -9,7 +9,7 @@
 //! Today every body is a [`BodyKind::PlanRigid`] deck segment: `(x, y, θ)`, the displacement of
 //! its centroid relative to the ground and its rotation about the centroid.
 
-use crate::math::Real;
+use crate::math::{Real, Vector};
 use std::ops::Range;
 
 /// How a body's coordinates are laid out.
@@ -17,6 +17,9 @@ use std::ops::Range;
 pub enum BodyKind {
     /// A rigid body moving in the plan: `(x, y, θ)` \[m, m, rad\].
     PlanRigid,
+    /// A body translating in the plan without turning: `(x, y)` \[m\] (a pier cap: its
+    /// column holds its rotation). A wrench's moment on it goes into what holds it.
+    PlanPoint,
 }
 
 impl BodyKind {
@@ -24,6 +27,7 @@ impl BodyKind {
     pub const fn len(self) -> usize {
         match self {
             BodyKind::PlanRigid => 3,
+            BodyKind::PlanPoint => 2,
         }
     }
 
@@ -105,10 +109,11 @@ impl Dofs {
         self.start[b]..self.start[b + 1]
     }
 
-    /// The index of coordinate `d` of plan body `b`.
+    /// The index of coordinate `d` of plan body `b` (a [`BodyKind::PlanPoint`] has no
+    /// [`PlanDof::Theta`]).
     #[inline]
     pub fn plan(&self, b: usize, d: PlanDof) -> usize {
-        debug_assert_eq!(self.kinds[b], BodyKind::PlanRigid);
+        debug_assert!(self.kinds[b] == BodyKind::PlanRigid || d != PlanDof::Theta);
         self.start[b]
             + match d {
                 PlanDof::X => 0,
@@ -117,23 +122,45 @@ impl Dofs {
             }
     }
 
-    /// `(x, y, θ)` of plan body `b` in the state `v`.
+    /// `(x, y, θ)` of plan body `b` in the state `v` (`θ = 0` for a [`BodyKind::PlanPoint`]).
     #[inline]
     pub fn plan_of(&self, b: usize, v: &[Real]) -> [Real; 3] {
         let s = self.start[b];
-        debug_assert_eq!(self.kinds[b], BodyKind::PlanRigid);
-        let x = &v[s..s + 3];
-        [x[0], x[1], x[2]]
+        match self.kinds[b] {
+            BodyKind::PlanRigid => {
+                let x = &v[s..s + 3];
+                [x[0], x[1], x[2]]
+            }
+            BodyKind::PlanPoint => [v[s], v[s + 1], 0.0],
+        }
     }
 
-    /// Adds the plan wrench `(f_x, f_y, m)` on body `b` to the generalised force `f`.
+    /// Adds the plan wrench `(f_x, f_y, m)` on body `b` to the generalised force `f` (a
+    /// [`BodyKind::PlanPoint`] takes `(f_x, f_y)`; its moment goes into what holds it).
     #[inline]
     pub fn add_plan(&self, b: usize, f: &mut [Real], w: [Real; 3]) {
         let s = self.start[b];
-        debug_assert_eq!(self.kinds[b], BodyKind::PlanRigid);
-        for (fi, wi) in f[s..s + 3].iter_mut().zip(w) {
+        let n = self.kinds[b].len();
+        for (fi, wi) in f[s..s + n].iter_mut().zip(w) {
             *fi += wi;
         }
+    }
+
+    /// The linearised plan displacement operator of the body point with arm `r` (from the
+    /// body's reference centroid): `u = B q_b` with `B = [[1, 0, −r_y], [0, 1, r_x]]` for a
+    /// [`BodyKind::PlanRigid`] and `B = I` for a [`BodyKind::PlanPoint`]; returned as its
+    /// columns `(B_x, B_y)` over the body's coordinates (unused entries zero).
+    #[inline]
+    pub fn point_operator(&self, b: usize, r: &Vector) -> [[Real; 3]; 2] {
+        match self.kinds[b] {
+            BodyKind::PlanRigid => [[1.0, 0.0, -r.y], [0.0, 1.0, r.x]],
+            BodyKind::PlanPoint => [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+        }
+    }
+
+    /// Whether every body is a [`BodyKind::PlanRigid`] (the segments of a bridge on the ground).
+    pub fn all_plan_rigid(&self) -> bool {
+        self.kinds.iter().all(|k| *k == BodyKind::PlanRigid)
     }
 
     /// Which body and which coordinate index `k` of the state is.

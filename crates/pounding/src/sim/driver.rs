@@ -202,6 +202,19 @@ pub(crate) struct Peaks {
     /// Per segment: the arms `r = p − G⁰` of its bearings to a support (the fast path of the
     /// bearing monitor) with the largest `|r|`, and its other bearings.
     arms: Vec<(Vec<Vector>, Real, Vec<BearingAt>)>,
+    /// Per pier.
+    pub pier: Vec<PierPeak>,
+}
+
+/// The peaks of one pier.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct PierPeak {
+    /// `max_t |x_c|`, `max_t |y_c|` of the cap \[m\].
+    pub drift: [Real; 2],
+    /// `max_t |f|` of the column's force \[N\].
+    pub force: Real,
+    /// Whether the column ever yielded.
+    pub yielded: bool,
 }
 
 /// What [`Peaks::observe`] measured for the history (reused from step to step).
@@ -239,6 +252,7 @@ impl Peaks {
             abut: [None, None],
             force: vec![None; nj],
             abut_force: [None, None],
+            pier: vec![PierPeak::default(); br.piers.len()],
             disp: vec![0.0; br.bodies.len()],
             bearing: vec![0.0; br.bodies.len()],
             arms: br
@@ -290,14 +304,47 @@ impl Peaks {
         }
     }
 
+    /// The piers' drifts, column forces and yield (`el`: the elements committed at `q`).
+    fn observe_piers(&mut self, q: &State, br: &Bridge, el: &super::elements::Elements) {
+        for (pk, p) in self.pier.iter_mut().zip(&br.piers) {
+            let (u, f) = p.drift_and_force(&br.dofs, q.as_slice(), el);
+            pk.drift[0] = pk.drift[0].max(u.x.abs());
+            pk.drift[1] = pk.drift[1].max(u.y.abs());
+            pk.force = pk.force.max(f.norm());
+            if let Some(e) = p.element {
+                pk.yielded |= el.bearings[e].state.u_p != Vector::zeros();
+            }
+        }
+    }
+
     /// The displacement of a seated end off its seat: the larger over its two corners of
     /// `(p − p⁰)·n_in`.
-    fn seat_displacement(s_end: &SeatEnd, pose: &Pose, bodies: &[SegmentBody]) -> Real {
+    /// On a pier the displacement is relative to its cap (`q` the state of `pose`).
+    fn seat_displacement(
+        s_end: &SeatEnd,
+        pose: &Pose,
+        bodies: &[SegmentBody],
+        q: &State,
+        br: &Bridge,
+    ) -> Real {
+        let base = Self::seat_base(s_end, q, br);
         s_end
             .corners
             .iter()
-            .map(|p| (pose.place(bodies, s_end.body, p) - p).dot(&s_end.inward))
+            .map(|p| (pose.place(bodies, s_end.body, p) - p - base).dot(&s_end.inward))
             .fold(Real::NEG_INFINITY, Real::max)
+    }
+
+    /// The displacement of what a seated end rests on (zero on the ground).
+    #[inline]
+    fn seat_base(s_end: &SeatEnd, q: &State, br: &Bridge) -> Vector {
+        match s_end.base {
+            None => Vector::zeros(),
+            Some(c) => {
+                let [x, y, _] = br.dofs.plan_of(c, q.as_slice());
+                Vector::new(x, y)
+            }
+        }
     }
 
     /// The seat displacements at the last observed step (the residuals).
@@ -308,7 +355,7 @@ impl Peaks {
         let q = State::from_column_slice(&self.last_q);
         let frame = br.frame(&q);
         for (e, s_end) in br.seats.iter().enumerate() {
-            self.seat_last[e] = Self::seat_displacement(s_end, &frame.pose, &br.bodies);
+            self.seat_last[e] = Self::seat_displacement(s_end, &frame.pose, &br.bodies, &q, br);
         }
     }
 
@@ -363,14 +410,15 @@ impl Peaks {
             // skipped where it cannot exceed the peak so far (nor, then, the seat): the corners'
             // displacement along n is at most d·n + |θ| |c − G⁰|, plus rounding
             let [x, y, th] = br.dofs.plan_of(s_end.body, q.as_slice());
+            let base = Self::seat_base(s_end, q, br);
             let (reach, scale) = self.seat_reach[e];
-            let dn = x * s_end.inward.x + y * s_end.inward.y;
+            let dn = (x - base.x) * s_end.inward.x + (y - base.y) * s_end.inward.y;
             let spin = th.abs() * reach;
             let bound = dn + spin + 1e-12 * (dn.abs() + spin + scale);
             if bound < self.seat[e] {
                 continue;
             }
-            let s = Self::seat_displacement(s_end, pose, bodies);
+            let s = Self::seat_displacement(s_end, pose, bodies, q, br);
             if s > self.seat[e] {
                 self.seat_time[e] = t;
             }
@@ -571,9 +619,14 @@ pub(crate) fn run<S: Stepper>(
     let (mut q, mut u) = (q0, u0);
     let mut work = Work::new(q.len());
     let el0 = &bridge.elements;
-    let mut yield_body = vec![false; bridge.bodies.len()];
+    // the bodies whose elements' work is booked (block diagonal: the yielding segments, whose
+    // strain energy the balance leaves out; coupled: every body a yielding element acts on)
+    let mut yield_body = vec![false; sc.dofs.n_bodies()];
     for b in &el0.bearings {
         yield_body[b.body] = true;
+        if let Some((c, _)) = b.base {
+            yield_body[c] = true;
+        }
     }
     let (t0, v0) = sc.energies(&q, &u, &mut work, &yield_body);
     let mut ledger = Ledger::new(t0 + v0);
@@ -590,7 +643,7 @@ pub(crate) fn run<S: Stepper>(
     let mut steps_done = 0usize;
     let abut_sides: Vec<usize> = bridge.abutments.iter().map(|a| a.side).collect();
     let mut el = bridge.elements.clone();
-    let nb = bridge.bodies.len();
+    let nb = sc.dofs.n_bodies();
     let has_elements = !el.is_empty();
     let mut el_force = super::elements::StepForce::new(&sc.dofs);
     let mut yielding = super::yielding::Implicit::new(&el.bearings, sc);
@@ -606,6 +659,9 @@ pub(crate) fn run<S: Stepper>(
         let t = clock.time(k);
         peaks.observe(t, &q, &frame, bridge, &mut obs);
         peaks.observe_segments(&q, bridge);
+        if !bridge.piers.is_empty() {
+            peaks.observe_piers(&q, bridge, &el);
+        }
         let forces = stepper.contact_forces();
         if let Some(f) = forces {
             peaks.observe_forces(f, &abut_sides);
@@ -623,6 +679,7 @@ pub(crate) fn run<S: Stepper>(
                 bridge,
                 elements: &el,
                 slip: &obs.slip,
+                q: q.as_slice(),
             };
             for o in &mut observers {
                 o.observe(&snapshot);
@@ -639,7 +696,7 @@ pub(crate) fn run<S: Stepper>(
         sc.u_free(&q, &u, &abar, &mut work.u_free);
         if has_elements {
             el.step_force(&q, &u, h, th, &bridge.bodies, &frame.pose, &mut el_force);
-            Scheme::apply_blocks_into(&sc.dofs, sc.winv.iter(), &el_force.r, &mut work.wr);
+            sc.winv_into(&el_force.r, &mut work.wr);
             for (uf, wr) in work.u_free.iter_mut().zip(work.wr.iter()) {
                 *uf += wr * h;
             }
@@ -647,11 +704,7 @@ pub(crate) fn run<S: Stepper>(
                 yielding.solve_free(sc, &el.bearings, &q, &u, &mut work.u_free, &el_force);
             }
         }
-        let winv = if yielding.tangent {
-            Winv(&yielding.winv, &sc.dofs)
-        } else {
-            Winv(&sc.winv, &sc.dofs)
-        };
+        let winv = yielding.winv(sc);
         let input = StepInput {
             t_next: clock.time(k + 1),
             q: &q,
@@ -677,8 +730,7 @@ pub(crate) fn run<S: Stepper>(
                 for i in 0..q.len() {
                     work.q_th[i] = q[i] + work.u_th[i] * (th * h);
                 }
-                let k_blocks = sc.bodies.iter().map(|b| &b.stiffness);
-                Scheme::apply_blocks_into(&sc.dofs, k_blocks, &work.q_th, &mut work.kq_th);
+                sc.yield_stiffness_into(&work.q_th, &mut work.kq_th);
             }
             let kq = (&work.kq_th, yield_body.as_slice());
             el.book(h, &work.u_mid, kq, &mut el_force, nb);

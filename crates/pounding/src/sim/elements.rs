@@ -83,15 +83,18 @@ impl StepForce {
     }
 }
 
-/// One yielding bearing of a segment.
+/// One yielding bearing of a segment, or a yielding pier column: a bilinear spring from a point
+/// of `body` to a point of `base` (another body: a pier cap) or to the ground.
 #[derive(Debug, Clone)]
 pub(crate) struct YieldingBearing {
-    /// The segment.
+    /// The body it carries (a segment, or the cap of a column).
     pub body: usize,
-    /// Its index among the segment's bearings.
+    /// Its index among the segment's bearings (a column: its pier).
     pub slot: usize,
     /// Lever arm `r = p − G⁰` (reference pose).
     pub arm: Vector,
+    /// The body under it and the arm of its point there (`None`: the ground).
+    pub base: Option<(usize, Vector)>,
     /// Its law.
     pub law: BilinearBearing,
     /// Committed state.
@@ -185,7 +188,7 @@ impl Elements {
         r.fill(0.0);
         for b in &self.bearings {
             let u_p = if trial {
-                let u = deformation(&self.dofs, q, b.body, &b.arm);
+                let u = b.deformation(&self.dofs, q);
                 b.law.response(&u, &b.state).trial.u_p
             } else {
                 b.state.u_p
@@ -194,6 +197,10 @@ impl Elements {
             let m = -b.arm.y * fp.x + b.arm.x * fp.y;
             self.dofs
                 .add_plan(b.body, r.as_mut_slice(), [fp.x, fp.y, m]);
+            if let Some((c, arm)) = b.base {
+                let m = -arm.y * fp.x + arm.x * fp.y;
+                self.dofs.add_plan(c, r.as_mut_slice(), [-fp.x, -fp.y, -m]);
+            }
         }
     }
 
@@ -256,7 +263,7 @@ impl Elements {
     /// Commits the return mappings at the new state `q` (`pose`: the pose at `q`).
     pub fn commit(&mut self, q: &State, pose: &Pose, bodies: &[SegmentBody]) {
         for b in &mut self.bearings {
-            let u = deformation(&self.dofs, q, b.body, &b.arm);
+            let u = b.deformation(&self.dofs, q);
             b.state = b.law.response(&u, &b.state).trial;
         }
         for i in 0..self.cables.len() {
@@ -267,12 +274,15 @@ impl Elements {
         }
     }
 
-    /// The energy each segment's yielding bearings store in their committed state (the rest
-    /// of what they absorbed, [`Elements::w_bearings`], they dissipated).
+    /// The energy the yielding elements of each of the first `bodies` bodies store in their
+    /// committed state (the rest of what they absorbed, [`Elements::w_bearings`], they
+    /// dissipated).
     pub fn bearing_stored_energy(&self, bodies: usize) -> Vec<Real> {
         let mut out = vec![0.0; bodies];
         for b in &self.bearings {
-            out[b.body] += b.law.stored_energy(&b.state);
+            if let Some(e) = out.get_mut(b.body) {
+                *e += b.law.stored_energy(&b.state);
+            }
         }
         out
     }
@@ -282,6 +292,19 @@ impl Elements {
 pub(crate) fn deformation(dofs: &Dofs, q: &State, body: usize, r: &Vector) -> Vector {
     let [x, y, th] = dofs.plan_of(body, q.as_slice());
     Vector::new(x - th * r.y, y + th * r.x)
+}
+
+impl YieldingBearing {
+    /// Its linearised deformation at `q`: its point on [`Self::body`] relative to its point on
+    /// [`Self::base`] (or the ground).
+    #[inline]
+    pub fn deformation(&self, dofs: &Dofs, q: &State) -> Vector {
+        let u = deformation(dofs, q, self.body, &self.arm);
+        match self.base {
+            None => u,
+            Some((c, arm)) => u - deformation(dofs, q, c, &arm),
+        }
+    }
 }
 
 /// The cable's anchors and the current centroids of their bodies in `pose`.

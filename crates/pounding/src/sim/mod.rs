@@ -63,6 +63,7 @@ pub mod bridge;
 pub mod compare;
 pub mod compliance;
 pub mod contact;
+mod coupled;
 pub mod dofs;
 mod driver;
 mod elements;
@@ -81,6 +82,7 @@ mod support;
 pub mod table;
 mod view;
 mod yielding;
+mod yielding_dense;
 
 use crate::analytic::SlipMode;
 use crate::geometry::{ContactCase, GeometryError};

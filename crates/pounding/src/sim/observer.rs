@@ -10,14 +10,16 @@
 //!
 //! The standard observers of a bridge:
 //! - [`BearingForces`] (`bearings.csv`): each bearing's deformation `u_b = (x − θ r_y, y + θ r_x)`
-//!   (`r` its arm from the segment's centroid, the linearised rotation the stiffness `K` uses)
-//!   and the force it exerts on its segment, `f = −k u_b` for a linear bearing and
+//!   (`r` its arm from the segment's centroid, the linearised rotation the stiffness `K` uses;
+//!   minus the cap's `(x_c, y_c)` for a bearing on a pier) and the force it exerts on its segment, `f = −k u_b` for a linear bearing and
 //!   `f = −(k₀ u_b − (1 − b) k₀ u_p)` for a bilinear one (`u_p` its committed plastic
 //!   displacement);
 //! - [`RestrainerForces`] (`restrainers.csv`): each restrainer's elongation
 //!   `e = |P_b − P_a| − L₀` (exact anchor positions) and its committed tension;
 //! - [`JointSlip`] (`joint_slip.csv`): each joint's tangential slip, as the two-deck
-//!   `history.csv` reports it.
+//!   `history.csv` reports it;
+//! - [`PierColumns`] (`piers.csv`, only for a bridge with piers): each pier's cap displacement
+//!   and its column's force on the cap (named `pier<k>` by the joint `k` it carries).
 
 use super::dofs::Dofs;
 use super::elements::Elements;
@@ -37,6 +39,8 @@ pub(crate) struct Snapshot<'a> {
     pub elements: &'a Elements,
     /// Slip of each joint \[m\].
     pub slip: &'a [Real],
+    /// The state `q`.
+    pub q: &'a [Real],
 }
 
 /// Records one table over a run.
@@ -51,11 +55,56 @@ pub(crate) trait Observer: Send {
 
 /// The observers every bridge run records (in output order).
 pub(crate) fn standard(bridge: &Bridge) -> Vec<Box<dyn Observer>> {
-    vec![
+    let mut out: Vec<Box<dyn Observer>> = vec![
         Box::new(BearingForces::new(bridge)),
         Box::new(RestrainerForces::new(bridge)),
         Box::new(JointSlip::new(bridge)),
-    ]
+    ];
+    if !bridge.piers.is_empty() {
+        out.push(Box::new(PierColumns::new(bridge)));
+    }
+    out
+}
+
+/// Per pier (a bridge with piers only): the cap's displacement relative to the ground (the
+/// column's deformation) and the column's spring force on the cap, `−(k0 u − (1 − b) k0 u_p)`
+/// (its dashpot left out).
+pub(crate) struct PierColumns {
+    table: Table,
+}
+
+impl PierColumns {
+    fn new(bridge: &Bridge) -> Self {
+        let mut columns = Vec::new();
+        for p in &bridge.piers {
+            let name = format!("pier{}", p.joint + 1);
+            for (c, unit) in [("ux", "m"), ("uy", "m"), ("fx", "N"), ("fy", "N")] {
+                columns.push(Column::new(format!("{name}_{c}"), unit));
+            }
+        }
+        PierColumns {
+            table: Table::with_time("piers", columns),
+        }
+    }
+}
+
+impl Observer for PierColumns {
+    fn reserve(&mut self, rows: usize) {
+        self.table.reserve_rows(rows);
+    }
+
+    fn observe(&mut self, s: &Snapshot<'_>) {
+        let v = &mut self.table.values;
+        v.push(s.t);
+        for p in &s.bridge.piers {
+            let (u, f) = p.drift_and_force(&s.bridge.dofs, s.q, s.elements);
+            v.extend([u.x, u.y, -f.x, -f.y]);
+        }
+    }
+
+    fn into_source(self: Box<Self>) -> TableSource {
+        TableSource::Recorded(self.table)
+    }
 }
 
 /// Per bearing: deformation and force on its segment (module doc). Derived from the run's `q`
@@ -73,8 +122,11 @@ impl BearingForces {
             .iter()
             .map(|b| vec![None; b.len()])
             .collect();
+        // the segments' yielding bearings (a pier column is an element of its cap)
         for (e, b) in bridge.elements.bearings.iter().enumerate() {
-            yielding[b.body][b.slot] = Some(e);
+            if let Some(y) = yielding.get_mut(b.body) {
+                y[b.slot] = Some(e);
+            }
         }
         let mut bearings = Vec::new();
         for (i, bs) in bridge.bearings.iter().enumerate() {
@@ -85,6 +137,7 @@ impl BearingForces {
                 }
                 bearings.push(BearingRecipe {
                     segment: i,
+                    base: b.bottom.body(),
                     arm: b.arm(&bridge.bodies),
                     stiffness: b.stiffness,
                     yielding: yielding[i][j].map(|e| {
@@ -128,6 +181,8 @@ impl Observer for BearingForces {
 #[derive(Debug, Clone, PartialEq)]
 pub struct BearingRecipe {
     segment: usize,
+    /// The body under it (a pier cap; `None`: the ground).
+    base: Option<usize>,
     arm: Vector,
     stiffness: Real,
     yielding: Option<(usize, Real, Real)>,
@@ -156,9 +211,14 @@ impl BearingsTable {
             let plastic = &self.plastic[2 * self.n_yielding * r..2 * self.n_yielding * (r + 1)];
             out.values.push(tr);
             for b in &self.bearings {
-                // (x − θ r_y, y + θ r_x) of the segment's point; the ground does not move
+                // (x − θ r_y, y + θ r_x) of the segment's point, relative to the cap under it
+                // (the ground does not move)
                 let [x, y, th] = dofs.plan_of(b.segment, qr);
-                let u = Vector::new(x - th * b.arm.y, y + th * b.arm.x);
+                let mut u = Vector::new(x - th * b.arm.y, y + th * b.arm.x);
+                if let Some(c) = b.base {
+                    let [xc, yc, _] = dofs.plan_of(c, qr);
+                    u -= Vector::new(xc, yc);
+                }
                 let f = match b.yielding {
                     Some((e, k0, hardening)) => {
                         let u_p = Vector::new(plastic[2 * e], plastic[2 * e + 1]);

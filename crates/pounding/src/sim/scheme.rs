@@ -4,6 +4,8 @@
 //! block per segment: bearings and dashpots tie a segment to the ground only).
 
 use super::contact::State;
+pub(crate) use super::coupled::Coupled;
+use super::coupled::Dense;
 use super::dofs::Dofs;
 use super::{SimError, SimSettings};
 use crate::ground_motion::GroundMotion;
@@ -52,16 +54,22 @@ pub(crate) struct Scheme {
     b_g: Vec<Matrix3x2<Real>>,
     /// `M_j r`: the effective load is `F = −M r a_g`.
     mr: Vec<Matrix3x2<Real>>,
-    /// Where each segment's block sits in the state.
+    /// Where each body's coordinates sit in the state.
     pub dofs: Dofs,
+    /// The dense operators of a system whose links couple bodies ([`super::coupled`]; `None`:
+    /// block diagonal, the blocks above).
+    pub dense: Option<Dense>,
 }
 
 impl Scheme {
-    /// Duration, step count, ground-motion samples and `Ŵ⁻¹` (errors name `duration` / `dt`).
+    /// Duration, step count, ground-motion samples and `Ŵ⁻¹` (errors name `duration` / `dt`);
+    /// `coupled`: the whole system of a bridge whose links couple bodies, laid out by `dofs`
+    /// (`None`: the segments' blocks `bodies` are the system).
     pub fn new(
         ground: &GroundMotion,
         settings: &SimSettings,
         bodies: Vec<BodySystem>,
+        coupled: Option<(Coupled, Dofs)>,
     ) -> Result<Self, SimError> {
         let h = settings.dt;
         let duration = match settings.duration {
@@ -95,7 +103,12 @@ impl Scheme {
             mr: Vec::with_capacity(n),
             bodies: Vec::new(),
             dofs: Dofs::plan_rigid(n),
+            dense: None,
         };
+        if let Some((sys, dofs)) = coupled {
+            sc.dense = Some(Dense::new(sys, h, th)?);
+            sc.dofs = dofs;
+        }
         for b in &bodies {
             let (mm, kk, cc) = (&b.mass, &b.stiffness, &b.damping);
             // h²θ² as the rigid scheme always computed it; the former compliance copy used (hθ)²,
@@ -147,6 +160,9 @@ impl Scheme {
 
     /// The contact-free velocity `u_free = u + A_u u + A_q q + B_g ā`, into `out`.
     pub fn u_free(&self, q: &State, u: &State, abar: &Vector, out: &mut State) {
+        if let Some(d) = &self.dense {
+            return d.u_free(q, u, abar, out);
+        }
         // block by block, in place: per entry the same products and the same sums in the same
         // order, ((u + A_u u) + A_q q) + B_g ā, as the whole-vector expression (bit-identical)
         let a = Vector2::new(abar.x, abar.y);
@@ -164,6 +180,9 @@ impl Scheme {
 
     /// The effective seismic load `F = −M r a_g`, into `f`.
     pub fn load(&self, a: &Vector, f: &mut State) {
+        if let Some(d) = &self.dense {
+            return d.load(a, f);
+        }
         let a = Vector2::new(a.x, a.y);
         for (j, m) in self.mr.iter().enumerate() {
             f.fixed_rows_mut::<3>(self.dofs.start(j))
@@ -177,6 +196,9 @@ impl Scheme {
     /// their yielding bearings' initial stiffness, whose energy the elements book as work
     /// ([`super::elements::Elements::book`]).
     pub fn energies(&self, q: &State, u: &State, w: &mut Work, yielding: &[bool]) -> (Real, Real) {
+        if let Some(d) = &self.dense {
+            return d.energies(q, u, &mut w.mu, &mut w.kq);
+        }
         let dofs = &self.dofs;
         Self::apply_blocks_into(dofs, self.bodies.iter().map(|b| &b.mass), u, &mut w.mu);
         Self::apply_blocks_into(dofs, self.bodies.iter().map(|b| &b.stiffness), q, &mut w.kq);
@@ -193,22 +215,56 @@ impl Scheme {
 
     /// `vᵀ C v`; `cv` holds `C v`.
     pub fn damping_power(&self, v: &State, cv: &mut State) -> Real {
+        if let Some(d) = &self.dense {
+            return d.damping_power(v, cv);
+        }
         Self::apply_blocks_into(&self.dofs, self.bodies.iter().map(|b| &b.damping), v, cv);
         v.dot(cv)
     }
 }
 
-/// A block-diagonal iteration-matrix inverse, one `3 × 3` block per segment: the scheme's
-/// `Ŵ⁻¹`, or in a step where yielding bearings flow, the inverse of the tangent
-/// `Ŵ_t = Ŵ − h²θ² Σ Bᵀ (k0 I − K_t) B` of [`super::elements::Implicit`] (the response of the
-/// segments to a contact impulse with their bearings on the branch they are on).
+impl Scheme {
+    /// `out = Ŵ⁻¹ v` (the scheme's, not a step's tangent).
+    pub fn winv_into(&self, v: &State, out: &mut State) {
+        match &self.dense {
+            Some(d) => out.gemv(1.0, &d.winv, v, 0.0),
+            None => Self::apply_blocks_into(&self.dofs, self.winv.iter(), v, out),
+        }
+    }
+
+    /// `out = K_y v`: the linear part of the yielding elements (block diagonal: each yielding
+    /// segment's `K`, the energies leave those segments out).
+    pub fn yield_stiffness_into(&self, v: &State, out: &mut State) {
+        match &self.dense {
+            Some(d) => d.ky_mul(v, out),
+            None => {
+                let k_blocks = self.bodies.iter().map(|b| &b.stiffness);
+                Self::apply_blocks_into(&self.dofs, k_blocks, v, out)
+            }
+        }
+    }
+}
+
+/// An iteration-matrix inverse: the scheme's `Ŵ⁻¹`, or in a step where yielding elements flow,
+/// the inverse of the tangent `Ŵ_t = Ŵ − h²θ² Σ Bᵀ (k0 I − K_t) B` of
+/// [`super::yielding::Implicit`] (the response of the bodies to a contact impulse with their
+/// bearings on the branch they are on). Block diagonal (one `3 × 3` block per segment) or dense
+/// ([`super::coupled`]).
 #[derive(Clone, Copy)]
-pub(crate) struct Winv<'a>(pub &'a [Matrix3<Real>], pub &'a Dofs);
+pub(crate) enum Winv<'a> {
+    /// One block per segment, placed by the DOF map.
+    Blocks(&'a [Matrix3<Real>], &'a Dofs),
+    /// The whole matrix.
+    Dense(&'a DMatrix<Real>),
+}
 
 impl Winv<'_> {
     /// `Ŵ⁻¹ v`.
     pub fn mul(&self, v: &State) -> State {
-        Scheme::apply(self.1, self.0, v)
+        match *self {
+            Winv::Blocks(b, dofs) => Scheme::apply(dofs, b, v),
+            Winv::Dense(m) => m * v,
+        }
     }
 
     /// `Ŵ⁻¹ D` column by column.

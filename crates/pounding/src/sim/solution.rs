@@ -69,6 +69,24 @@ pub struct SegmentSummary {
     pub rayleigh: (Real, Real),
 }
 
+/// The response of one pier ([`crate::sim::bridge::Pier`]): its cap relative to the ground
+/// (the column's deformation) and its column.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PierSummary {
+    /// The joint it carries (1-based).
+    pub joint: usize,
+    /// `max_t |x_c|`, `max_t |y_c|` of the cap \[m\].
+    pub peak_drift: [Real; 2],
+    /// `(x_c, y_c)` at the end \[m\].
+    pub residual_drift: [Real; 2],
+    /// `max_t |f|` of the column's spring force (its dashpot's left out) \[N\].
+    pub peak_column_force: Real,
+    /// Whether the column yielded.
+    pub yielded: bool,
+    /// Energy dissipated by the column's yielding \[J\].
+    pub hysteretic_energy: Real,
+}
+
 /// The seat margin of one seated end (a segment's start or end, on an abutment seat, a joint's
 /// seat, or an outer seat without abutment).
 #[derive(Debug, Clone, PartialEq)]
@@ -106,6 +124,8 @@ pub struct BridgeSummary {
     pub abutments: [Option<AbutmentSummary>; 2],
     /// Per segment.
     pub segments: Vec<SegmentSummary>,
+    /// Per pier (none without piers).
+    pub piers: Vec<PierSummary>,
     /// Largest seat displacement over all seated ends (joint ends and outer ends, as the
     /// two-deck `peak_seat_displacement_m`) \[m\].
     pub peak_seat_displacement: Real,
@@ -366,7 +386,24 @@ pub(crate) fn solution(
             });
         }
     }
-    let correction = r.elements.bearing_stored_energy(nb);
+    let correction = r.elements.bearing_stored_energy(br.dofs.n_bodies());
+    let piers = br
+        .piers
+        .iter()
+        .zip(&peaks.pier)
+        .map(|(p, pk)| {
+            let [x, y, _] = br.dofs.plan_of(p.body, r.final_q.as_slice());
+            PierSummary {
+                joint: p.joint + 1,
+                peak_drift: pk.drift,
+                residual_drift: [x, y],
+                peak_column_force: pk.force,
+                yielded: pk.yielded,
+                hysteretic_energy: r.elements.w_bearings.get(p.body).copied().unwrap_or(0.0)
+                    - correction[p.body],
+            }
+        })
+        .collect();
     let segments = (0..nb)
         .map(|i| {
             let [x, y, _] = br.dofs.plan_of(i, r.final_q.as_slice());
@@ -408,6 +445,7 @@ pub(crate) fn solution(
         joints,
         abutments,
         segments,
+        piers,
         peak_seat_displacement: peaks
             .seat
             .iter()

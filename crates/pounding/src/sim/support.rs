@@ -16,7 +16,7 @@
 
 use super::SimError;
 use super::contact::Pose;
-use super::dofs::Dofs;
+use super::dofs::{BodyKind, Dofs};
 use super::model::SegmentBody;
 use crate::math::{Real, Vector};
 
@@ -97,6 +97,10 @@ impl Attachment {
         match *self {
             Attachment::Body(b, p) => {
                 let [x, y, th] = dofs.plan_of(b, q);
+                if dofs.kind(b) == BodyKind::PlanPoint {
+                    // a body that does not turn: every point moves with it
+                    return Vector::new(x, y);
+                }
                 let r = p - bodies[b].centroid;
                 Vector::new(x - th * r.y, y + th * r.x)
             }
@@ -105,7 +109,8 @@ impl Attachment {
     }
 
     /// Its current position in `pose`, and the current centroid of its body (the origin of its
-    /// lever arm; the point itself for a support, which takes no moment).
+    /// lever arm; the point itself for a support, which takes no moment). Only for points of
+    /// segments and supports (a pose holds the segments).
     #[inline]
     pub fn place(&self, pose: &Pose, bodies: &[SegmentBody]) -> (Vector, Vector) {
         match *self {

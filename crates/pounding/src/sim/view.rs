@@ -75,6 +75,9 @@ pub(crate) struct SeatEnd {
     pub inward: Vector,
     /// Seat length.
     pub length: Real,
+    /// The body it is seated on (a pier's cap; `None`: the ground): seat displacements are
+    /// relative to it.
+    pub base: Option<usize>,
 }
 
 /// A bearing under a segment: its point (global reference pose) and its (initial) stiffness.
@@ -89,12 +92,12 @@ pub(crate) struct BearingAt {
 }
 
 impl BearingAt {
-    /// The arm `r = p − G⁰` of a bearing from a segment to a support (the segment's point from
-    /// its reference centroid); `(0, 0)` for another kind of link.
+    /// The arm `r = p − G⁰` of a bearing on a segment (the segment's point from its reference
+    /// centroid); `(0, 0)` for a top on a support.
     pub fn arm(&self, bodies: &[SegmentBody]) -> Vector {
-        match (self.top, self.bottom) {
-            (Attachment::Body(i, p), Attachment::Support(..)) => p - bodies[i].centroid,
-            _ => Vector::zeros(),
+        match self.top {
+            Attachment::Body(i, p) => p - bodies[i].centroid,
+            Attachment::Support(..) => Vector::zeros(),
         }
     }
 
@@ -124,6 +127,45 @@ pub(crate) struct Bridge {
     pub bearings: Vec<Vec<BearingAt>>,
     /// Yielding bearings and restrainers in their initial state.
     pub elements: super::elements::Elements,
+    /// The piers.
+    pub piers: Vec<PierAt>,
+}
+
+/// A pier as the driver sees it: its cap's body, its column.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct PierAt {
+    /// The joint it carries.
+    pub joint: usize,
+    /// The cap's body.
+    pub body: usize,
+    /// The column's initial stiffness \[N/m\].
+    pub k0: Real,
+    /// The column's yielding element in [`super::elements::Elements::bearings`] (`None`:
+    /// elastic).
+    pub element: Option<usize>,
+}
+
+impl PierAt {
+    /// The cap's displacement `(x_c, y_c)` (the column's deformation) and the column's force on
+    /// the ground side, `k0 u − (1 − b) k0 u_p` (its committed plastic displacement `u_p` in
+    /// `elements`).
+    pub fn drift_and_force(
+        &self,
+        dofs: &Dofs,
+        q: &[Real],
+        elements: &super::elements::Elements,
+    ) -> (Vector, Vector) {
+        let [x, y, _] = dofs.plan_of(self.body, q);
+        let u = Vector::new(x, y);
+        let f = match self.element {
+            Some(e) => {
+                let b = &elements.bearings[e];
+                u * b.law.k0() - b.state.u_p * ((1.0 - b.law.b()) * b.law.k0())
+            }
+            None => u * self.k0,
+        };
+        (u, f)
+    }
 }
 
 impl Bridge {

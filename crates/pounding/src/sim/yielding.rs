@@ -43,7 +43,7 @@
 
 use super::contact::State;
 use super::elements::{StepForce, YieldingBearing};
-use super::scheme::Scheme;
+use super::scheme::{Scheme, Winv};
 use crate::math::{Real, Vector};
 use nalgebra::{Matrix2x3, Matrix3, Vector3};
 
@@ -73,6 +73,8 @@ pub(crate) struct Implicit {
     /// Steps in which a contact impulse changed a bearing's branch and the end velocity was
     /// corrected.
     pub corrections: usize,
+    /// The whole-system solve of a coupled scheme (then [`Self::groups`] is empty).
+    dense: Option<Box<super::yielding_dense::DenseImplicit>>,
 }
 
 /// `B = [[1, 0, −r_y], [0, 1, r_x]]`: the linearised deformation of a bearing of arm `r`.
@@ -84,7 +86,9 @@ impl Implicit {
     /// The groups of `bearings` by segment, for a bridge of `n_bodies` segments.
     pub fn new(bearings: &[YieldingBearing], sc: &Scheme) -> Self {
         let mut groups: Vec<(usize, Vec<usize>)> = Vec::new();
-        for (i, b) in bearings.iter().enumerate() {
+        let dense = (sc.dense.is_some() && !bearings.is_empty())
+            .then(|| Box::new(super::yielding_dense::DenseImplicit::new(bearings, sc)));
+        for (i, b) in bearings.iter().enumerate().filter(|_| dense.is_none()) {
             match groups.iter_mut().find(|g| g.0 == b.body) {
                 Some(g) => g.1.push(i),
                 None => groups.push((b.body, vec![i])),
@@ -102,12 +106,24 @@ impl Implicit {
             wt: vec![Matrix3::zeros(); n],
             failures: 0,
             corrections: 0,
+            dense,
         }
     }
 
     /// Nothing to solve.
     pub fn is_empty(&self) -> bool {
-        self.groups.is_empty()
+        self.groups.is_empty() && self.dense.is_none()
+    }
+
+    /// The iteration-matrix inverse of the step: the scheme's, or the tangent's where elements
+    /// flow.
+    pub fn winv<'a>(&'a self, sc: &'a Scheme) -> Winv<'a> {
+        match (&self.dense, &sc.dense) {
+            (Some(d), _) if self.tangent => Winv::Dense(&d.winv),
+            (_, Some(sd)) => Winv::Dense(&sd.winv),
+            _ if self.tangent => Winv::Blocks(&self.winv, &sc.dofs),
+            _ => Winv::Blocks(&sc.winv, &sc.dofs),
+        }
     }
 
     /// `R̃(q⁺)` of one segment's bearings (the same operations as the driver's first estimate,
@@ -287,6 +303,12 @@ impl Implicit {
         u_free: &mut State,
         f: &StepForce,
     ) {
+        if let Some(d) = &mut self.dense {
+            let (tangent, failed) = d.solve_free(sc, bearings, (q, u), u_free, f);
+            self.tangent = tangent;
+            self.failures += usize::from(failed);
+            return;
+        }
         if self.tangent {
             self.winv.copy_from_slice(&sc.winv);
             self.tangent = false;
@@ -344,6 +366,12 @@ impl Implicit {
         u_new: &mut State,
         f: &mut StepForce,
     ) -> Real {
+        if let Some(d) = &mut self.dense {
+            let (d_contact, corrected, failed) = d.finish_step(sc, bearings, (q, u), u_new, f);
+            self.failures += usize::from(failed);
+            self.corrections += usize::from(corrected);
+            return d_contact;
+        }
         let mut corrected = false;
         let mut d_contact = 0.0;
         for (g, (j, idx)) in self.groups.iter().enumerate() {

@@ -45,6 +45,7 @@ fn chain(n: usize, k: f64, gap: f64, eps: f64) -> BridgeModel {
         outer_seat_length: 0.4,
         damping_ratio: 0.0,
         damping_model: DampingModel::Rayleigh,
+        piers: Vec::new(),
     }
 }
 

@@ -36,6 +36,7 @@ fn model(segments: Vec<Segment>, joints: Vec<Joint>) -> BridgeModel {
         outer_seat_length: 0.4,
         damping_ratio: 0.05,
         damping_model: DampingModel::TranslationalDashpots,
+        piers: Vec::new(),
     }
 }
 

@@ -28,6 +28,7 @@ fn one_segment(yielding: Option<BearingYield>) -> BridgeModel {
         outer_seat_length: 0.4,
         damping_ratio: 0.0,
         damping_model: DampingModel::Rayleigh,
+        piers: Vec::new(),
     }
 }
 
@@ -161,6 +162,7 @@ fn restrainer_table_gives_the_cable_law_of_its_elongation() {
         outer_seat_length: 0.4,
         damping_ratio: 0.05,
         damping_model: DampingModel::Rayleigh,
+        piers: Vec::new(),
     };
     let (_, sol, _) = run(model, 6.0);
     let t = table(sol.tables(), "restrainers");

@@ -21,9 +21,10 @@ impl BridgeModel {
         joints.chain(abuts)
     }
 
-    /// The DOF map of the bridge: every segment a plan rigid body `(x, y, θ)`, in bridge order.
+    /// The DOF map of the bridge: every segment a plan rigid body `(x, y, θ)`, in bridge order,
+    /// then every pier's cap `(x, y)` ([`Pier`]).
     pub fn dofs(&self) -> Dofs {
-        Dofs::plan_rigid(self.segments.len())
+        Dofs::new(self.body_kinds())
     }
 
     /// The segments placed end to end in the global frame (module doc).
@@ -187,6 +188,7 @@ impl BridgeModel {
                 true => SeatSupport::Outer(1),
                 false => SeatSupport::Joint(i),
             };
+            let caps = self.end_piers(i).map(|p| p.map(|p| self.cap_body(p)));
             for (at_end, f, length, support) in [
                 (false, &b.start, start, start_support),
                 (true, &b.end, end, end_support),
@@ -198,12 +200,28 @@ impl BridgeModel {
                     corners: f.corners,
                     inward: f.inward,
                     length,
+                    base: caps[usize::from(at_end)],
                 });
             }
         }
         let dofs = self.dofs();
         let elements = self.elements(&bodies, &dofs);
+        let on = self.bearing_piers().expect("validated");
         Bridge {
+            piers: self
+                .piers
+                .iter()
+                .enumerate()
+                .map(|(p, pier)| {
+                    let body = self.cap_body(p);
+                    crate::sim::view::PierAt {
+                        joint: pier.joint,
+                        body,
+                        k0: pier.column.k0,
+                        element: elements.bearings.iter().position(|b| b.body == body),
+                    }
+                })
+                .collect(),
             dofs,
             supports,
             bodies,
@@ -216,12 +234,22 @@ impl BridgeModel {
                 .zip(&self.segments)
                 .enumerate()
                 .map(|(i, (points, s))| {
-                    let at = |(p, b): (Vector, &Bearing)| crate::sim::view::BearingAt {
-                        top: Attachment::Body(i, p),
-                        bottom: Attachment::Support(Support::GROUND, p),
-                        stiffness: b.stiffness,
+                    let at = |((p, b), on): ((Vector, &Bearing), &Option<usize>)| {
+                        crate::sim::view::BearingAt {
+                            top: Attachment::Body(i, p),
+                            bottom: match on {
+                                Some(pier) => Attachment::Body(self.cap_body(*pier), p),
+                                None => Attachment::Support(Support::GROUND, p),
+                            },
+                            stiffness: b.stiffness,
+                        }
                     };
-                    points.into_iter().zip(&s.bearings).map(at).collect()
+                    points
+                        .into_iter()
+                        .zip(&s.bearings)
+                        .zip(&on[i])
+                        .map(at)
+                        .collect()
                 })
                 .collect(),
             elements,
@@ -251,6 +279,7 @@ impl BridgeModel {
                 })
                 .collect(),
             bearing_yield: None,
+            bearing_damping: 0.0,
         };
         let abut = |a: Option<crate::sim::SimAbutment>| {
             a.map(|a| BridgeAbutment {
@@ -275,6 +304,7 @@ impl BridgeModel {
             outer_seat_length: model.seat_length,
             damping_ratio: model.damping_ratio,
             damping_model: model.damping_model,
+            piers: Vec::new(),
         }
     }
 }
@@ -293,6 +323,7 @@ impl BridgeModel {
             ..Default::default()
         };
         let points = self.bearing_points();
+        let on = self.bearing_piers().expect("validated");
         for (i, s) in self.segments.iter().enumerate() {
             let Some(y) = s.bearing_yield else { continue };
             let total: Real = s.bearings.iter().map(|b| b.stiffness).sum();
@@ -306,10 +337,23 @@ impl BridgeModel {
                     body: i,
                     slot,
                     arm: p - bodies[i].centroid,
+                    base: on[i][slot].map(|p| (self.cap_body(p), Vector::zeros())),
                     law,
                     state: BearingState::default(),
                 });
             }
+        }
+        for (p, pier) in self.piers.iter().enumerate() {
+            let Some(fy) = pier.column.fy else { continue };
+            let law = BilinearBearing::new(pier.column.k0, fy, pier.column.b).expect("validated");
+            el.bearings.push(crate::sim::elements::YieldingBearing {
+                body: self.cap_body(p),
+                slot: p,
+                arm: Vector::zeros(),
+                base: None,
+                law,
+                state: BearingState::default(),
+            });
         }
         for (k, j) in self.joints.iter().enumerate() {
             for r in &j.restrainers {

@@ -56,8 +56,10 @@ use nalgebra::{Matrix2x3, Matrix3, Vector3};
 
 mod build;
 mod geometry;
+mod pier;
 pub(crate) use geometry::placement;
 use geometry::*;
+pub use pier::{Pier, PierColumn};
 
 /// One deck segment.
 #[derive(Debug, Clone, PartialEq)]
@@ -72,6 +74,9 @@ pub struct Segment {
     pub bearings: Vec<Bearing>,
     /// Yielding bearings ([`crate::element::bearing::BilinearBearing`]): `None` = linear.
     pub bearing_yield: Option<BearingYield>,
+    /// A dashpot in parallel with each bearing, in each plan direction, on the bearing's
+    /// deformation `c ≥ 0` \[N·s/m\] (0: none).
+    pub bearing_damping: Real,
 }
 
 /// The yield of a segment's bearings: bilinear with kinematic hardening, each bearing `b` with
@@ -131,6 +136,7 @@ impl Segment {
             mirrored,
             bearings: Vec::new(),
             bearing_yield: None,
+            bearing_damping: 0.0,
         };
         s.bearings = s
             .corner_points()
@@ -261,6 +267,8 @@ pub struct BridgeModel {
     pub damping_ratio: Real,
     /// Damping model.
     pub damping_model: DampingModel,
+    /// Piers under joints ([`Pier`]; none: every bearing stands on the ground).
+    pub piers: Vec<Pier>,
 }
 
 /// `segment[i].key`, `joint[k].key`, `abutment.start.key` (0-based indices, as in the arrays of
@@ -307,6 +315,7 @@ impl BridgeModel {
         self.validate_segments()?;
         self.validate_joints()?;
         self.validate_abutments()?;
+        self.validate_piers()?;
         check(
             "outer_seat_length".into(),
             self.outer_seat_length,

@@ -85,14 +85,39 @@ pub(crate) fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> 
     let m = &setup.problem.model;
     let e = &s.final_energy;
     let (joints, abutments, segments) = bridge_arrays(setup, sol);
-    let hyst: Real = s.segments.iter().map(|g| g.hysteretic_energy).sum();
+    let hyst: Real = s.segments.iter().map(|g| g.hysteretic_energy).sum::<Real>()
+        + s.piers.iter().map(|p| p.hysteretic_energy).sum::<Real>();
     let (rigid, compliant) = site_kinds(m);
+    let piers: Vec<Value> = s
+        .piers
+        .iter()
+        .zip(&m.piers)
+        .map(|(p, mp)| {
+            json!({
+                "joint": p.joint,
+                "peak_drift_x_m": json_float(p.peak_drift[0]),
+                "peak_drift_y_m": json_float(p.peak_drift[1]),
+                "residual_drift_x_m": json_float(p.residual_drift[0]),
+                "residual_drift_y_m": json_float(p.residual_drift[1]),
+                "residual_drift_m": json_float(p.residual_drift[0].hypot(p.residual_drift[1])),
+                "peak_column_force_n": json_float(p.peak_column_force),
+                "yielded": p.yielded,
+                "hysteretic_energy_j": json_float(p.hysteretic_energy),
+                "cap_mass_kg": json_float(mp.cap_mass),
+                "column_k0_n_per_m": json_float(mp.column.k0),
+                "column_fy_n": opt(mp.column.fy),
+                "column_b": json_float(mp.column.b),
+                "damping_ns_per_m": json_float(mp.damping),
+            })
+        })
+        .collect();
     let mut out = json!({
         "impacts": s.impacts,
         "impacting_contacts": sol.impacts.len(),
         "joints": joints,
         "abutments": abutments,
         "segments": segments,
+        "piers": piers,
         "peak_seat_displacement_m": json_float(s.peak_seat_displacement),
         "governing_seat": governing_seat_json(s),
         "seats": s.seats.iter().map(seat_json).collect::<Vec<_>>(),

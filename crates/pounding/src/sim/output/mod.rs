@@ -70,6 +70,7 @@ pub const SIM_OUTPUTS: &[&str] = &[
     "bearings.csv",
     "restrainers.csv",
     "joint_slip.csv",
+    "piers.csv",
     "displacements.png",
     "layout.png",
     "rotations.png",

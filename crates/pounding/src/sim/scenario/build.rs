@@ -442,6 +442,7 @@ pub(super) fn build_settings(
     sc: &Scenario,
     ground: &GroundMotion,
     records: &[String; 2],
+    // bodies of the memory estimate (segments, and piers counted as segments)
     n_segments: usize,
     model_checks: impl FnOnce() -> Result<(), ScenarioError>,
 ) -> Result<SimSettings, ScenarioError> {

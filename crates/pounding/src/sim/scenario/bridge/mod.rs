@@ -64,8 +64,10 @@ use crate::toml_schema::{Table, line_col};
 use serde::Deserialize;
 use toml::Spanned;
 
+mod pier;
 mod segment;
 mod sites;
+use pier::PierSec;
 use segment::*;
 use sites::*;
 
@@ -82,6 +84,8 @@ pub(crate) struct BridgeRaw {
     joint: Vec<Spanned<JointSec>>,
     #[serde(default)]
     abutment: Table<AbutmentTables>,
+    #[serde(default)]
+    pier: Vec<Spanned<PierSec>>,
     #[serde(default)]
     pub(crate) ground_motion: Table<GroundSec>,
     #[serde(default)]
@@ -138,6 +142,7 @@ struct SegmentSec {
     bearing: Sp<String>,
     fy: Sp<f64>,
     b: Sp<f64>,
+    bearing_damping: Sp<f64>,
 }
 
 #[derive(Deserialize, Default, Clone, Debug)]
@@ -370,6 +375,7 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
         seat_length: d_seat,
     };
     let (joints, abutments) = sites(sc, &v, raw, &masses, &defaults)?;
+    let piers = pier::piers(&v, &raw.pier, nj)?;
     let model = BridgeModel {
         segments,
         joints,
@@ -377,9 +383,13 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
         outer_seat_length,
         damping_ratio,
         damping_model,
+        piers,
     };
     let (ground, records, units) = build_ground(sc)?;
-    let settings = build_settings(sc, &ground, &records, model.segments.len(), || {
+    // a pier's cap holds fewer values a row (2 coordinates, 2 rates, 4 in piers.csv) than a
+    // segment: the memory estimate counts each as one more segment
+    let bodies = model.segments.len() + model.piers.len();
+    let settings = build_settings(sc, &ground, &records, bodies, || {
         model.validate().map_err(|e| model_error(&v, raw, e))?;
         check_mechanism(&v, raw, &model)
     })?;

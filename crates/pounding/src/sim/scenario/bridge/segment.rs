@@ -381,5 +381,6 @@ pub(super) fn segment(
             .collect();
     }
     seg.bearing_yield = bearing_yield(v, i, s)?;
+    seg.bearing_damping = v.nonneg(sk("bearing_damping"), &s.bearing_damping, Some(0.0))?;
     Ok(seg)
 }

@@ -255,6 +255,7 @@ pub(super) fn segment_key_line(v: &Val, t: &SegmentSec, key: &str) -> Option<usi
         "bearing" => text(&t.bearing),
         "fy" => num(&t.fy),
         "b" => num(&t.b),
+        "bearing_damping" => num(&t.bearing_damping),
         _ => None,
     }
 }
@@ -306,6 +307,9 @@ pub(super) fn model_error(v: &Val, raw: &BridgeRaw, e: crate::sim::SimError) -> 
                 .or(raw.joint.get(k).map(|t| v.line(t)))
                 .or_else(|| raw.segment.get(k + 1).map(|t| v.line(t)))
         }
+    } else if let Some(p) = index("pier[") {
+        let key = name.rsplit('.').next().unwrap_or_default();
+        super::pier::pier_line(v, &raw.pier, p, key)
     } else {
         None
     };

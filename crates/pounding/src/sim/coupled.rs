@@ -1,0 +1,104 @@
+//! The Moreau–Jean scheme of a system whose links couple bodies (bearings on pier caps): the
+//! same θ-method as [`super::scheme`], on the dense matrices of the whole system.
+//!
+//! With `M`, `K`, `C` over all `n` coordinates, `Ŵ = M + hθC + h²θ²K`, the contact-free
+//! velocity is `u_free = u + A_u u + A_q q + B_g ā` with `A_u = −h Ŵ⁻¹ (C + hθK)`,
+//! `A_q = −h Ŵ⁻¹ K`, `B_g = −h Ŵ⁻¹ M r` (`r` maps the plan ground acceleration onto each
+//! body's translations), exactly the block scheme's operators without the block structure. The
+//! yielding elements' initial stiffness `K_y` (part of `K`) is left out of the strain energy
+//! `½ qᵀ (K − K_y) q`: their work is booked instead ([`super::elements::Elements::book`]).
+
+use super::SimError;
+use super::contact::State;
+use crate::math::{Real, Vector};
+use nalgebra::{DMatrix, Vector2};
+
+/// The linear structure of a coupled system (assembled by the model).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Coupled {
+    /// `M`.
+    pub m: DMatrix<Real>,
+    /// `K` (the yielding elements at their initial stiffness).
+    pub k: DMatrix<Real>,
+    /// `K_y`: the yielding elements' part of `K`.
+    pub ky: DMatrix<Real>,
+    /// `C`.
+    pub c: DMatrix<Real>,
+    /// `r` (`n × 2`): the coordinates that the ground's `(a_x, a_y)` accelerates.
+    pub r: DMatrix<Real>,
+}
+
+/// The iteration operators of a [`Coupled`] system for one step `h` and `θ`.
+#[derive(Debug, Clone)]
+pub(crate) struct Dense {
+    /// The system.
+    pub sys: Coupled,
+    /// `Ŵ`.
+    pub what: DMatrix<Real>,
+    /// `Ŵ⁻¹`.
+    pub winv: DMatrix<Real>,
+    a_u: DMatrix<Real>,
+    a_q: DMatrix<Real>,
+    b_g: DMatrix<Real>,
+    mr: DMatrix<Real>,
+    /// `K − K_y`.
+    k_elastic: DMatrix<Real>,
+}
+
+impl Dense {
+    /// The operators (errors name `dt` when `Ŵ` is singular).
+    pub fn new(sys: Coupled, h: Real, th: Real) -> Result<Self, SimError> {
+        let what = &sys.m + &sys.c * (h * th) + &sys.k * (h * h * th * th);
+        let winv = what
+            .clone()
+            .lu()
+            .try_inverse()
+            .ok_or_else(|| SimError::invalid("dt", h, "iteration matrix is singular"))?;
+        let mr = &sys.m * &sys.r;
+        let a_u = -(&winv * (&sys.c + &sys.k * (h * th))) * h;
+        let a_q = -(&winv * &sys.k) * h;
+        let b_g = -(&winv * &mr) * h;
+        let k_elastic = &sys.k - &sys.ky;
+        Ok(Dense {
+            sys,
+            what,
+            winv,
+            a_u,
+            a_q,
+            b_g,
+            mr,
+            k_elastic,
+        })
+    }
+
+    /// `u_free = u + A_u u + A_q q + B_g ā`, into `out`, allocating nothing.
+    pub fn u_free(&self, q: &State, u: &State, abar: &Vector, out: &mut State) {
+        out.copy_from(u);
+        out.gemv(1.0, &self.a_u, u, 1.0);
+        out.gemv(1.0, &self.a_q, q, 1.0);
+        out.gemv(1.0, &self.b_g, &Vector2::new(abar.x, abar.y), 1.0);
+    }
+
+    /// `F = −M r a_g`, into `f`.
+    pub fn load(&self, a: &Vector, f: &mut State) {
+        f.gemv(-1.0, &self.mr, &Vector2::new(a.x, a.y), 0.0);
+    }
+
+    /// `(T, V) = (½ uᵀ M u, ½ qᵀ (K − K_y) q)`, with `mu`, `kq` as scratch.
+    pub fn energies(&self, q: &State, u: &State, mu: &mut State, kq: &mut State) -> (Real, Real) {
+        mu.gemv(1.0, &self.sys.m, u, 0.0);
+        kq.gemv(1.0, &self.k_elastic, q, 0.0);
+        (0.5 * u.dot(mu), 0.5 * q.dot(kq))
+    }
+
+    /// `vᵀ C v`; `cv` holds `C v`.
+    pub fn damping_power(&self, v: &State, cv: &mut State) -> Real {
+        cv.gemv(1.0, &self.sys.c, v, 0.0);
+        v.dot(cv)
+    }
+
+    /// `out = K_y v` (the yielding elements' linear part, for their work).
+    pub fn ky_mul(&self, v: &State, out: &mut State) {
+        out.gemv(1.0, &self.sys.ky, v, 0.0);
+    }
+}

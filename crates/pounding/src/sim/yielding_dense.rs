@@ -1,0 +1,281 @@
+//! The implicit return mapping of [`super::yielding`] on a coupled system
+//! ([`super::coupled`]): the same residual, tangent, convergence test, line search and contact
+//! correction, over the whole velocity vector instead of one segment's block, because a yielding
+//! element may link two bodies (a bearing on a pier cap) and a linear link couples every body.
+//!
+//! Each yielding element `e` acts on its deformation `u_e = L_e q` (`L_e = [B_body, −B_base]`,
+//! [`super::dofs::Dofs::point_operator`]); its plastic force `f_p,e = (1 − b) k0 u_p` enters as
+//! `R = Σ L_eᵀ f_p,e`, its consistent tangent as `J = Σ L_eᵀ (k0 I − K_t,e) L_e`.
+
+use super::contact::State;
+use super::elements::{StepForce, YieldingBearing};
+use super::scheme::Scheme;
+use crate::math::{Real, Vector};
+use nalgebra::DMatrix;
+
+/// Newton iterations allowed per step.
+const MAX_ITER: usize = 60;
+
+/// One element's operator: `(coordinate, [∂u_x/∂q_i, ∂u_y/∂q_i])`.
+type Operator = Vec<(usize, [Real; 2])>;
+
+/// The dense implicit solve and the scratch of one step.
+#[derive(Debug, Clone)]
+pub(crate) struct DenseImplicit {
+    ops: Vec<Operator>,
+    /// The step's tangent inverse (valid when [`super::yielding::Implicit::tangent`]).
+    pub winv: DMatrix<Real>,
+    ub: State,
+    xf: State,
+    rf: State,
+    jac: DMatrix<Real>,
+    wt: DMatrix<Real>,
+}
+
+/// What one Newton solve returns: `x`, `R̃`, `J`, `Ŵ_t` at it and whether it converged.
+type Solved = (State, State, DMatrix<Real>, DMatrix<Real>, bool);
+
+impl DenseImplicit {
+    /// The operators of `bearings` on the system of `sc`.
+    pub fn new(bearings: &[YieldingBearing], sc: &Scheme) -> Self {
+        let dofs = &sc.dofs;
+        let ops = bearings
+            .iter()
+            .map(|b| {
+                let mut op = Vec::with_capacity(5);
+                let l = dofs.point_operator(b.body, &b.arm);
+                for (d, i) in dofs.range(b.body).enumerate() {
+                    op.push((i, [l[0][d], l[1][d]]));
+                }
+                if let Some((c, arm)) = b.base {
+                    let l = dofs.point_operator(c, &arm);
+                    for (d, i) in dofs.range(c).enumerate() {
+                        op.push((i, [-l[0][d], -l[1][d]]));
+                    }
+                }
+                op
+            })
+            .collect();
+        let n = dofs.len();
+        let winv = sc
+            .dense
+            .as_ref()
+            .map_or_else(|| DMatrix::zeros(n, n), |d| d.winv.clone());
+        DenseImplicit {
+            ops,
+            winv,
+            ub: State::zeros(n),
+            xf: State::zeros(n),
+            rf: State::zeros(n),
+            jac: DMatrix::zeros(n, n),
+            wt: DMatrix::zeros(n, n),
+        }
+    }
+
+    fn apply(op: &Operator, v: &State) -> Vector {
+        op.iter().fold(Vector::zeros(), |u, (i, l)| {
+            u + Vector::new(l[0], l[1]) * v[*i]
+        })
+    }
+
+    /// `R̃(q⁺)`, `J`, whether any element flows, and the entrywise size of `R̃`'s terms.
+    fn end_force(
+        &self,
+        bearings: &[YieldingBearing],
+        qp: &State,
+    ) -> (State, DMatrix<Real>, bool, State) {
+        let n = qp.len();
+        let (mut r, mut size) = (State::zeros(n), State::zeros(n));
+        let mut jac = DMatrix::zeros(n, n);
+        let mut flows = false;
+        for (b, op) in bearings.iter().zip(&self.ops) {
+            let u = Self::apply(op, qp);
+            let resp = b.law.response(&u, &b.state);
+            let fp = (1.0 - b.law.b()) * b.law.k0() * resp.trial.u_p;
+            for &(i, l) in op {
+                r[i] += l[0] * fp.x + l[1] * fp.y;
+                size[i] += (l[0] * fp.x).abs() + (l[1] * fp.y).abs();
+            }
+            if resp.yielding {
+                flows = true;
+                let d = nalgebra::Matrix2::identity() * b.law.k0() - resp.tangent;
+                for &(i, li) in op {
+                    for &(j, lj) in op {
+                        let dl = d * nalgebra::Vector2::new(lj[0], lj[1]);
+                        jac[(i, j)] += li[0] * dl.x + li[1] * dl.y;
+                    }
+                }
+            }
+        }
+        (r, jac, flows, size)
+    }
+
+    fn end_position(sc: &Scheme, q: &State, u: &State, x: &State) -> State {
+        let th = sc.th;
+        State::from_fn(q.len(), |i, _| {
+            q[i] + (u[i] * (1.0 - th) + x[i] * th) * sc.h
+        })
+    }
+
+    /// Newton on `g(x) = Ŵ (x − base) − hθ (R̃(q⁺(x)) − R̃_pred) − Π = 0` from `x`.
+    #[allow(clippy::too_many_arguments)]
+    fn newton(
+        &self,
+        sc: &Scheme,
+        bearings: &[YieldingBearing],
+        (q, u): (&State, &State),
+        base: &State,
+        r_pred: &State,
+        pi: &State,
+        mut x: State,
+    ) -> Solved {
+        let hth = sc.h * sc.th;
+        let what = &sc.dense.as_ref().expect("a coupled scheme").what;
+        let fy: Real = bearings.iter().map(|b| b.law.fy()).sum();
+        let wabs = what.abs();
+        for _ in 0..MAX_ITER {
+            let qp = Self::end_position(sc, q, u, &x);
+            let (r, jac, _, r_size) = self.end_force(bearings, &qp);
+            let g = what * (&x - base) - (&r - r_pred) * hth - pi;
+            let wt = what - &jac * (hth * hth);
+            let size = &wabs * (x.abs() + base.abs())
+                + (r_size * 2.0 + r.abs() + r_pred.abs()) * hth
+                + pi.abs();
+            let tol = 1e-12 * hth * fy;
+            if (0..x.len()).all(|i| g[i].abs() <= (64.0 * Real::EPSILON * size[i]).max(tol)) {
+                return (x, r, jac, wt, true);
+            }
+            let Some(d) = wt.clone().lu().solve(&(-&g)) else {
+                return (x, r, jac, wt, false);
+            };
+            let t = self.damping(sc, bearings, (q, u), &x, &d, &g);
+            let next = &x + d * t;
+            if next == x {
+                return (x, r, jac, wt, true);
+            }
+            x = next;
+        }
+        let qp = Self::end_position(sc, q, u, &x);
+        let (r, jac, _, _) = self.end_force(bearings, &qp);
+        let wt = what - &jac * (hth * hth);
+        (x, r, jac, wt, false)
+    }
+
+    /// The Armijo step length on the convex potential of [`super::yielding`]'s line search.
+    fn damping(
+        &self,
+        sc: &Scheme,
+        bearings: &[YieldingBearing],
+        (q, u): (&State, &State),
+        x: &State,
+        d: &State,
+        g: &State,
+    ) -> Real {
+        let hth = sc.h * sc.th;
+        let slope = g.dot(d);
+        if slope >= 0.0 {
+            return 1.0;
+        }
+        let what = &sc.dense.as_ref().expect("a coupled scheme").what;
+        let quad = d.dot(&(what * d));
+        let q0 = Self::end_position(sc, q, u, x);
+        let mut t = 1.0;
+        for _ in 0..40 {
+            let dq = d * (hth * t);
+            let mut dpsi = 0.0;
+            for (b, op) in bearings.iter().zip(&self.ops) {
+                let (ke, rr) = ((1.0 - b.law.b()) * b.law.k0(), b.law.plastic_force_radius());
+                let du = Self::apply(op, &dq);
+                let u0 = Self::apply(op, &q0);
+                let s0 = (u0 - b.state.u_p) * ke;
+                let ds = du * ke;
+                let s1 = s0 + ds;
+                let (n0, n1) = (s0.norm(), s1.norm());
+                let (e0, e1) = ((n0 - rr).max(0.0), (n1 - rr).max(0.0));
+                let de = if e0 > 0.0 && e1 > 0.0 {
+                    ds.dot(&(s0 + s1)) / (n0 + n1)
+                } else {
+                    e1 - e0
+                };
+                let lin0 = if e0 > 0.0 { e0 * s0.dot(&du) / n0 } else { 0.0 };
+                dpsi += de * (e0 + e1) / (2.0 * ke) - lin0;
+            }
+            let dphi = t * slope + 0.5 * t * t * quad - dpsi;
+            if dphi <= 1e-4 * t * slope {
+                return t;
+            }
+            t *= 0.5;
+        }
+        1.0
+    }
+
+    /// The contact-free step ([`super::yielding::Implicit::solve_free`]); returns whether the
+    /// step's tangent differs from `Ŵ` and whether Newton failed.
+    pub fn solve_free(
+        &mut self,
+        sc: &Scheme,
+        bearings: &[YieldingBearing],
+        (q, u): (&State, &State),
+        u_free: &mut State,
+        f: &StepForce,
+    ) -> (bool, bool) {
+        let base = u_free.clone();
+        let pi = State::zeros(base.len());
+        let (x, r, jac, wt, ok) =
+            self.newton(sc, bearings, (q, u), &base, &f.rb1, &pi, base.clone());
+        u_free.copy_from(&x);
+        self.ub = base;
+        self.xf = x;
+        self.rf = r;
+        let mut tangent = false;
+        if jac.iter().any(|v| *v != 0.0)
+            && let Some(inv) = wt.clone().lu().try_inverse()
+        {
+            self.winv = inv;
+            tangent = true;
+        }
+        self.jac = jac;
+        self.wt = wt;
+        (tangent, !ok)
+    }
+
+    /// After the contact step ([`super::yielding::Implicit::finish_step`]); returns the change
+    /// of the contact energy term, whether the end velocity was corrected and whether Newton
+    /// failed.
+    pub fn finish_step(
+        &mut self,
+        sc: &Scheme,
+        bearings: &[YieldingBearing],
+        (q, u): (&State, &State),
+        u_new: &mut State,
+        f: &mut StepForce,
+    ) -> (Real, bool, bool) {
+        let r_pred = f.rb1.clone();
+        let (mut d_contact, mut corrected, mut failed) = (0.0, false, false);
+        let r_end = if *u_new == self.xf {
+            self.rf.clone()
+        } else {
+            let qp = Self::end_position(sc, q, u, u_new);
+            let (r_true, _, _, _) = self.end_force(bearings, &qp);
+            let qf = Self::end_position(sc, q, u, &self.xf);
+            let r_lin = &self.rf + &self.jac * (qp - qf);
+            let scale = r_true.amax().max(r_pred.amax()).max(self.rf.amax());
+            if (&r_true - r_lin).amax() <= 1e-9 * scale {
+                r_true
+            } else {
+                let pi = &self.wt * (&*u_new - &self.xf);
+                let (x, r, _, _, ok) =
+                    self.newton(sc, bearings, (q, u), &self.ub, &r_pred, &pi, u_new.clone());
+                failed = !ok;
+                corrected = true;
+                d_contact -= 0.5 * pi.dot(&(&x - &*u_new));
+                u_new.copy_from(&x);
+                r
+            }
+        };
+        let d = (r_end - r_pred) * sc.th;
+        f.rb += &d;
+        f.r += &d;
+        (d_contact, corrected, failed)
+    }
+}
