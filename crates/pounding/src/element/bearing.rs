@@ -40,6 +40,16 @@ const LINEAR: &str = "linear bearing";
 /// `σ = max(b E0 ε − (1−b) Fy, min(b E0 ε + (1−b) Fy, σ_c + E0 Δε))`, tangent `E0` inside the
 /// band and `b E0` on it (`f_p` clamped to `[−R, R]` is the same clamp written for `σ`).
 ///
+/// # Piles and piers: `b = 0`
+/// With `b = 0` ([`BilinearBearing::elastic_perfectly_plastic`]) and along one fixed line this
+/// is OpenSees `ElasticPP` with `E = k0`, `epsyP = −epsyN = fy/k0`, `eps0 = 0`:
+/// `f = clamp(f_c + k0 Δu, −fy, fy)`, tangent `k0` inside and 0 on the yield force, plastic
+/// offset `u_p` growing by the excess. OpenSees declares a trial plastic already when
+/// `|σ_tr| > fy − E·2.2e-16` (its `DBL_EPSILON` tolerance), which changes the returned force
+/// by at most `E·2.2e-16` and the tangent only inside that sliver; elsewhere the two agree to
+/// rounding (the tests compare OpenSees 3.7.1). In the plane the yield set is a disc
+/// `|f| ≤ fy`, i.e. a pile group equally strong in every direction.
+///
 /// # Energy and the trapezoidal rule
 /// Over one plastic step from the force `f_p,k` (inside the disc), the trapezoidal work of the
 /// plastic spring minus its stored-energy change is
@@ -73,6 +83,12 @@ impl BilinearBearing {
             });
         }
         Ok(BilinearBearing { k0, fy, b })
+    }
+
+    /// An elastic–perfectly-plastic spring (`b = 0`): stiffness `k0`, yield force `fy`
+    /// (piles, piers); validates like [`BilinearBearing::new`].
+    pub fn elastic_perfectly_plastic(k0: Real, fy: Real) -> Result<Self, ElementError> {
+        BilinearBearing::new(k0, fy, 0.0)
     }
 
     /// Initial stiffness `k0` \[N/m\].

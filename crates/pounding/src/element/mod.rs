@@ -1,6 +1,10 @@
 //! Structural elements between a deck and the ground or between two decks: bearings
-//! ([`bearing`]: linear, or bilinear with kinematic hardening in 2-D) and cable restrainers
-//! ([`restrainer`]: tension-only with slack, optionally yielding).
+//! ([`bearing`]: linear, or bilinear with kinematic hardening in 2-D), cable restrainers
+//! ([`restrainer`]: tension-only with slack, optionally yielding), and the substructure laws:
+//! abutment backfill behind a backwall ([`backfill`]: hyperbolic, compression-only with a gap,
+//! with the Caltrans SDC 2019 preset), piles and piers (elastic–perfectly-plastic: the
+//! bilinear bearing with `b = 0`, see [`bearing::BilinearBearing::elastic_perfectly_plastic`])
+//! and exterior shear keys ([`shear_key`]: gap + elastic–perfectly-plastic on both sides).
 //!
 //! Each element is a *rate-independent constitutive law* in the same functional form, so a
 //! time-stepping driver (or a Newton iteration inside one step) can evaluate trial states freely
@@ -12,8 +16,8 @@
 //! ```
 //!
 //! `response` never mutates anything (safe to call in parallel, any number of times per step).
-//! The state types are `Copy`; [`bearing::BearingElement`] and [`restrainer::RestrainerElement`]
-//! are small holders (law + committed state + accumulated dissipation) for a driver that prefers
+//! The state types are `Copy`; [`bearing::BearingElement`], [`restrainer::RestrainerElement`],
+//! [`backfill::BackfillElement`] and [`shear_key::ShearKeyElement`] are small holders (law + committed state + accumulated dissipation) for a driver that prefers
 //! `trial`/`commit` methods.
 //!
 //! # Energy
@@ -26,15 +30,24 @@
 //! becoming taut or slack), which vanishes as the step shrinks. A driver whose balance must
 //! close to rounding should book the hysteretic energy as `W_step − ΔE` (for the bilinear
 //! bearing provably in `[0, D]`, see [`bearing::BilinearBearing`]; for a cable crossing its
-//! slack within a step it has either sign) and may report `Σ D` beside it.
+//! slack within a step it has either sign) and may report `Σ D` beside it. The backfill's
+//! dissipation is instead the exact `W − ΔE` of each step (its envelope work is in closed form),
+//! which is negative on the early envelope if `kur < kmax` (see [`backfill::HyperbolicGap`]).
 //!
 //! # Errors
 //! Bad parameters give an [`ElementError`] naming the parameter key (`k0`, `fy`, `b`, `k`,
-//! `slack`) — the same key a scenario file uses — so a scenario reader can prefix file and line
+//! `slack`, `kmax`, `kur`, `rf`, `fult`, `gap`, `height`, `width`, `skew`) — the same key a scenario file uses — so a scenario reader can prefix file and line
 //! via [`ElementError::key`].
 
+pub mod backfill;
 pub mod bearing;
 pub mod restrainer;
+pub mod shear_key;
+
+pub use backfill::{
+    BackfillElement, CaltransBackwall, HyperbolicGap, HyperbolicGapResponse, HyperbolicGapState,
+};
+pub use shear_key::{ShearKey, ShearKeyElement, ShearKeyResponse, ShearKeyState};
 
 use crate::math::Real;
 use thiserror::Error;
@@ -45,9 +58,10 @@ pub enum ElementError {
     /// A parameter is not finite or out of its range.
     #[error("invalid {element} parameter `{key}` = {}: {reason}", crate::output::float_token(*value))]
     InvalidParameter {
-        /// The element kind (`bilinear bearing`, `linear bearing`, `restrainer`).
+        /// The element kind (`bilinear bearing`, `linear bearing`, `restrainer`,
+        /// `hyperbolic backfill`, `Caltrans backwall`, `shear key`).
         element: &'static str,
-        /// The parameter key as a scenario file spells it (`k0`, `fy`, `b`, `k`, `slack`).
+        /// The parameter key as a scenario file spells it (`k0`, `fy`, `b`, `k`, `slack`, …).
         key: &'static str,
         /// The offending value.
         value: Real,
@@ -57,7 +71,7 @@ pub enum ElementError {
 }
 
 impl ElementError {
-    /// The offending parameter key (`k0`, `fy`, `b`, `k`, `slack`), for a caller that adds the
+    /// The offending parameter key (`k0`, `fy`, `b`, `k`, `slack`, …), for a caller that adds the
     /// file and line of that key.
     pub fn key(&self) -> &'static str {
         match self {

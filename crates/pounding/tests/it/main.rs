@@ -11,6 +11,8 @@ mod contact_law_keys;
 mod contact_law_linear;
 mod element_bearing;
 mod element_restrainer;
+mod element_substructure;
+mod element_substructure_opensees;
 mod event_chain;
 mod event_chain_checks;
 mod event_chain_sim;
