@@ -354,15 +354,13 @@ impl ComplianceStepper {
             }
         }
         for ab in &self.abutments {
+            let shift = ab.shift(dofs, q.as_slice());
             for c0 in &ab.corners {
                 let (j, nn, tn) = (ab.body, ab.normal, ab.tangent);
                 let pc = pose.place(&self.bodies, j, c0);
                 let r = pc - pose.g[j];
-                let dir = |v: crate::math::Vector| super::contact::Direction {
-                    first: (j, [v.x, v.y, crate::math::cross(&r, &v)]),
-                    second: None,
-                };
-                let delta = -(pc - ab.point).dot(&nn);
+                let dir = |v: crate::math::Vector| ab.direction(v, &r);
+                let delta = -((pc - ab.point).dot(&nn) + shift);
                 let (wn, wt) = (dir(nn).dense(dofs), dir(tn).dense(dofs));
                 out.push(self.end_eval(out.len(), states, None, wn, wt, delta, u));
             }

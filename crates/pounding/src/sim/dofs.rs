@@ -20,6 +20,10 @@ pub enum BodyKind {
     /// A body translating in the plan without turning: `(x, y)` \[m\] (a pier cap: its
     /// column holds its rotation). A wrench's moment on it goes into what holds it.
     PlanPoint,
+    /// A body sliding along one fixed plan direction `a` (a unit vector, [`Dofs::axis`]): its
+    /// one coordinate `s` \[m\], its displacement `s a` (an abutment's backwall, `a` into the
+    /// soil). Force across `a` and moments go into what guides it.
+    Axial,
 }
 
 impl BodyKind {
@@ -28,6 +32,7 @@ impl BodyKind {
         match self {
             BodyKind::PlanRigid => 3,
             BodyKind::PlanPoint => 2,
+            BodyKind::Axial => 1,
         }
     }
 
@@ -50,9 +55,11 @@ pub enum PlanDof {
 
 /// The DOF map of a system: body `b` owns `q[range(b)]` and `u[range(b)]`. The default is the
 /// map of no body.
-#[derive(Debug, Clone, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct Dofs {
     kinds: Vec<BodyKind>,
+    /// Per body: the direction of an [`BodyKind::Axial`] body (zero for the others).
+    axes: Vec<Vector>,
     /// `start[b]`: the first index of body `b`; `start[N]` the total count (empty for the
     /// default map of no body).
     start: Vec<usize>,
@@ -62,6 +69,7 @@ impl Dofs {
     /// The map of bodies of the given kinds, in order.
     pub fn new(kinds: impl IntoIterator<Item = BodyKind>) -> Self {
         let kinds: Vec<BodyKind> = kinds.into_iter().collect();
+        let axes = vec![Vector::zeros(); kinds.len()];
         let mut start = Vec::with_capacity(kinds.len() + 1);
         let mut at = 0;
         start.push(at);
@@ -69,7 +77,24 @@ impl Dofs {
             at += k.len();
             start.push(at);
         }
-        Dofs { kinds, start }
+        Dofs { kinds, axes, start }
+    }
+
+    /// This map with the directions of its [`BodyKind::Axial`] bodies, in body order.
+    pub fn with_axes(mut self, axes: impl IntoIterator<Item = Vector>) -> Self {
+        let mut it = axes.into_iter();
+        for (k, a) in self.kinds.iter().zip(self.axes.iter_mut()) {
+            if *k == BodyKind::Axial {
+                *a = it.next().expect("an axis per axial body");
+            }
+        }
+        self
+    }
+
+    /// The direction of axial body `b`.
+    #[inline]
+    pub fn axis(&self, b: usize) -> Vector {
+        self.axes[b]
     }
 
     /// The map of `n` plan rigid bodies (deck segments).
@@ -132,6 +157,10 @@ impl Dofs {
                 [x[0], x[1], x[2]]
             }
             BodyKind::PlanPoint => [v[s], v[s + 1], 0.0],
+            BodyKind::Axial => {
+                let a = self.axes[b];
+                [v[s] * a.x, v[s] * a.y, 0.0]
+            }
         }
     }
 
@@ -140,6 +169,11 @@ impl Dofs {
     #[inline]
     pub fn add_plan(&self, b: usize, f: &mut [Real], w: [Real; 3]) {
         let s = self.start[b];
+        if self.kinds[b] == BodyKind::Axial {
+            let a = self.axes[b];
+            f[s] += w[0] * a.x + w[1] * a.y;
+            return;
+        }
         let n = self.kinds[b].len();
         for (fi, wi) in f[s..s + n].iter_mut().zip(w) {
             *fi += wi;
@@ -155,6 +189,10 @@ impl Dofs {
         match self.kinds[b] {
             BodyKind::PlanRigid => [[1.0, 0.0, -r.y], [0.0, 1.0, r.x]],
             BodyKind::PlanPoint => [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+            BodyKind::Axial => {
+                let a = self.axes[b];
+                [[a.x, 0.0, 0.0], [a.y, 0.0, 0.0]]
+            }
         }
     }
 
@@ -177,6 +215,13 @@ impl Dofs {
     /// Whether index `k` of the state is a rotation (reported in degrees at the interfaces).
     pub fn is_rotation(&self, k: usize) -> bool {
         self.which(k).1 == PlanDof::Theta
+    }
+
+    /// The displacement `s a` of axial body `b` in `v` as a plan vector (zero for another kind).
+    #[inline]
+    pub fn axial_displacement(&self, b: usize, v: &[Real]) -> Real {
+        debug_assert_eq!(self.kinds[b], BodyKind::Axial);
+        v[self.start[b]]
     }
 
     /// [`Self::is_rotation`] of every index, in order (for writers that convert whole rows).

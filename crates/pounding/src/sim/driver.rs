@@ -204,6 +204,19 @@ pub(crate) struct Peaks {
     arms: Vec<(Vec<Vector>, Real, Vec<BearingAt>)>,
     /// Per pier.
     pub pier: Vec<PierPeak>,
+    /// Per abutment side with a backwall.
+    pub wall: [Option<WallPeak>; 2],
+}
+
+/// The peaks of one backwall.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct WallPeak {
+    /// `max_t s` \[m\].
+    pub displacement: Real,
+    /// `max_t F` of the backfill \[N\].
+    pub backfill: Option<Real>,
+    /// `max_t |f|` of the piles \[N\].
+    pub piles: Option<Real>,
 }
 
 /// The peaks of one pier.
@@ -253,6 +266,15 @@ impl Peaks {
             force: vec![None; nj],
             abut_force: [None, None],
             pier: vec![PierPeak::default(); br.piers.len()],
+            wall: [0, 1].map(|side| {
+                let a = br.abutments.iter().find(|a| a.side == side)?;
+                let w = a.wall?;
+                Some(WallPeak {
+                    displacement: 0.0,
+                    backfill: br.elements.backfills.iter().any(|b| b.body == w).then_some(0.0),
+                    piles: br.elements.bearings.iter().any(|b| b.body == w).then_some(0.0),
+                })
+            }),
             disp: vec![0.0; br.bodies.len()],
             bearing: vec![0.0; br.bodies.len()],
             arms: br
@@ -301,6 +323,23 @@ impl Peaks {
                 m = m.max(u.x * u.x + u.y * u.y);
             }
             *peak = m;
+        }
+    }
+
+    /// The backwalls' displacements, backfill and pile forces (`el`: committed at `q`).
+    fn observe_walls(&mut self, q: &State, br: &Bridge, el: &super::elements::Elements) {
+        for a in &br.abutments {
+            let (Some(w), Some(pk)) = (a.wall, self.wall[a.side].as_mut()) else {
+                continue;
+            };
+            let (s, f_fill, f_piles) = wall_forces(w, q.as_slice(), br, el);
+            pk.displacement = pk.displacement.max(s);
+            if let (Some(p), Some(f)) = (pk.backfill.as_mut(), f_fill) {
+                *p = p.max(f);
+            }
+            if let (Some(p), Some(f)) = (pk.piles.as_mut(), f_piles) {
+                *p = p.max(f.abs());
+            }
         }
     }
 
@@ -430,10 +469,11 @@ impl Peaks {
         let abut_gaps = &mut obs.abut_gaps;
         *abut_gaps = [Real::NAN; 2];
         for a in &br.abutments {
+            let shift = a.shift(&br.dofs, q.as_slice());
             let gm = a
                 .corners
                 .iter()
-                .map(|c| (pose.place(bodies, a.body, c) - a.point).dot(&a.normal))
+                .map(|c| (pose.place(bodies, a.body, c) - a.point).dot(&a.normal) + shift)
                 .fold(Real::INFINITY, Real::min);
             abut_gaps[a.side] = gm;
             let pk = self.abut[a.side].get_or_insert(Real::NEG_INFINITY);
@@ -662,12 +702,16 @@ pub(crate) fn run<S: Stepper>(
         if !bridge.piers.is_empty() {
             peaks.observe_piers(&q, bridge, &el);
         }
+        if peaks.wall.iter().any(Option::is_some) {
+            peaks.observe_walls(&q, bridge, &el);
+        }
         let forces = stepper.contact_forces();
         if let Some(f) = forces {
             peaks.observe_forces(f, &abut_sides);
         }
         let (tk, vk) = sc.energies(&q, &u, &mut work, &yield_body);
-        let w_el = (!el.is_empty()).then(|| el.w_bearings.iter().sum::<Real>() + el.w_cables);
+        let w_el = (!el.is_empty())
+            .then(|| el.w_bearings.iter().sum::<Real>() + el.w_cables + el.w_backfill);
         let mut energy = ledger.check(tk, vk, stepper.contact_energy(), w_el);
         energy.elements = w_el.unwrap_or(0.0);
         if k % settings.history_stride == 0 || k == sc.n_steps {
@@ -765,7 +809,7 @@ pub(crate) fn run<S: Stepper>(
     }
     let (tf, vf) = sc.energies(&q, &u, &mut work, &yield_body);
     let mut final_energy = ledger.energy(tf, vf, stepper.contact_energy());
-    final_energy.elements = el.w_bearings.iter().sum::<Real>() + el.w_cables;
+    final_energy.elements = el.w_bearings.iter().sum::<Real>() + el.w_cables + el.w_backfill;
     RunResult {
         status,
         trace,
@@ -780,6 +824,28 @@ pub(crate) fn run<S: Stepper>(
         log,
         tables: observers.into_iter().map(|o| o.into_source()).collect(),
     }
+}
+
+/// A backwall's coordinate `s` (into the soil), its backfill's force `F ≥ 0` and its piles'
+/// force along `s` (`el`: the elements committed at `q`).
+pub(crate) fn wall_forces(
+    wall: usize,
+    q: &[Real],
+    br: &Bridge,
+    el: &super::elements::Elements,
+) -> (Real, Option<Real>, Option<Real>) {
+    let s = br.dofs.axial_displacement(wall, q);
+    let fill = el
+        .backfills
+        .iter()
+        .find(|b| b.body == wall)
+        .map(|b| b.element.committed().force);
+    let piles = el.bearings.iter().find(|b| b.body == wall).map(|b| {
+        let a = br.dofs.axis(wall);
+        let k0 = b.law.k0();
+        k0 * s - (1.0 - b.law.b()) * k0 * b.state.u_p.dot(&a)
+    });
+    (s, fill, piles)
 }
 
 #[cfg(test)]

@@ -34,6 +34,7 @@ use super::contact::{Pose, State};
 use super::dofs::Dofs;
 use super::model::SegmentBody;
 use super::support::Attachment;
+use crate::element::backfill::BackfillElement;
 use crate::element::bearing::{BearingState, BilinearBearing};
 use crate::element::restrainer::{RestrainerElement, RestrainerResponse};
 use crate::math::{Real, Vector, cross};
@@ -58,6 +59,8 @@ pub(crate) struct StepForce {
     pub(super) rb1: State,
     /// The cables' part `R̄ − R̄_b` (work booking).
     rc: State,
+    /// The backfills' part of `R̄`.
+    rf: State,
 }
 
 impl StepForce {
@@ -79,6 +82,7 @@ impl StepForce {
             r1: z(),
             rb1: z(),
             rc: z(),
+            rf: z(),
         }
     }
 }
@@ -125,11 +129,25 @@ impl Cable {
     }
 }
 
+/// The backfill behind an abutment's backwall: a force `−F(s)` on the wall's coordinate `s`
+/// (into the soil), held over each step as the cables' forces are.
+#[derive(Debug, Clone)]
+pub(crate) struct BackfillAt {
+    /// The wall's body.
+    pub body: usize,
+    /// The backfill spring.
+    pub element: BackfillElement,
+}
+
 /// The nonlinear elements and their energy bookkeeping.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Elements {
     pub bearings: Vec<YieldingBearing>,
     pub cables: Vec<Cable>,
+    /// Backfills behind backwalls.
+    pub backfills: Vec<BackfillAt>,
+    /// Work done on the backfills.
+    pub w_backfill: Real,
     /// Energy absorbed by the yielding bearings (work done on them), per segment.
     pub w_bearings: Vec<Real>,
     /// Work done on the restrainers.
@@ -141,7 +159,7 @@ pub(crate) struct Elements {
 impl Elements {
     /// Nothing to do.
     pub fn is_empty(&self) -> bool {
-        self.bearings.is_empty() && self.cables.is_empty()
+        self.bearings.is_empty() && self.cables.is_empty() && self.backfills.is_empty()
     }
 
     /// The force held over the step from `q_k` with velocity `u_k`, first estimate: the mean
@@ -174,6 +192,18 @@ impl Elements {
             self.add_cable_forces(&mut f.r0, pose, bodies);
             f.pose_pred.set(bodies, &self.dofs, f.pred.as_slice());
             self.add_cable_forces(&mut f.r1, &f.pose_pred, bodies);
+        }
+        // the backfills' terms after the cables' (their part `R̄_f` apart, for their work)
+        if !self.backfills.is_empty() {
+            f.rf.fill(0.0);
+            for b in &self.backfills {
+                let i = self.dofs.start(b.body);
+                let f0 = -b.element.committed().force;
+                let f1 = -b.element.trial(f.pred[i]).force;
+                f.r0[i] += f0;
+                f.r1[i] += f1;
+                f.rf[i] += f0 * (1.0 - th) + f1 * th;
+            }
         }
         // (1−θ) a + θ b: for θ = ½ the same bits as (a + b)·½ (scaling by ½ is exact)
         for i in 0..q.len() {
@@ -257,7 +287,13 @@ impl Elements {
         for i in 0..r.len() {
             f.rc[i] = r[i] - rb[i];
         }
-        self.w_cables -= h * u_mid.dot(&f.rc);
+        if !self.backfills.is_empty() {
+            let wf = h * u_mid.dot(&f.rf);
+            self.w_backfill -= wf;
+            self.w_cables -= h * u_mid.dot(&f.rc) - wf;
+        } else {
+            self.w_cables -= h * u_mid.dot(&f.rc);
+        }
     }
 
     /// Commits the return mappings at the new state `q` (`pose`: the pose at `q`).
@@ -265,6 +301,10 @@ impl Elements {
         for b in &mut self.bearings {
             let u = b.deformation(&self.dofs, q);
             b.state = b.law.response(&u, &b.state).trial;
+        }
+        for b in &mut self.backfills {
+            let resp = b.element.trial(q[self.dofs.start(b.body)]);
+            b.element.commit(&resp);
         }
         for i in 0..self.cables.len() {
             let (pa, pb, _, _) = cable_points(&self.cables[i], pose, bodies);

@@ -63,7 +63,51 @@ pub(crate) fn standard(bridge: &Bridge) -> Vec<Box<dyn Observer>> {
     if !bridge.piers.is_empty() {
         out.push(Box::new(PierColumns::new(bridge)));
     }
+    if bridge.abutments.iter().any(|a| a.wall.is_some()) {
+        out.push(Box::new(Backwalls::new(bridge)));
+    }
     out
+}
+
+/// Per abutment with a backwall: the wall's displacement into the soil, its backfill's force
+/// (≥ 0, resisting) and its piles' force along the same axis (a bridge with backwalls only).
+pub(crate) struct Backwalls {
+    table: Table,
+}
+
+impl Backwalls {
+    fn new(bridge: &Bridge) -> Self {
+        let mut columns = Vec::new();
+        for a in bridge.abutments.iter().filter(|a| a.wall.is_some()) {
+            let name = format!("abutment_{}", crate::sim::bridge::ABUTMENT_SIDES[a.side]);
+            for (c, unit) in [("wall", "m"), ("backfill", "N"), ("piles", "N")] {
+                columns.push(Column::new(format!("{name}_{c}"), unit));
+            }
+        }
+        Backwalls {
+            table: Table::with_time("backwalls", columns),
+        }
+    }
+}
+
+impl Observer for Backwalls {
+    fn reserve(&mut self, rows: usize) {
+        self.table.reserve_rows(rows);
+    }
+
+    fn observe(&mut self, s: &Snapshot<'_>) {
+        let v = &mut self.table.values;
+        v.push(s.t);
+        for a in &s.bridge.abutments {
+            let Some(w) = a.wall else { continue };
+            let (d, fill, piles) = super::driver::wall_forces(w, s.q, s.bridge, s.elements);
+            v.extend([d, fill.unwrap_or(0.0), piles.unwrap_or(0.0)]);
+        }
+    }
+
+    fn into_source(self: Box<Self>) -> TableSource {
+        TableSource::Recorded(self.table)
+    }
 }
 
 /// Per pier (a bridge with piers only): the cap's displacement relative to the ground (the

@@ -13,7 +13,7 @@ use super::{ImpactRecord, SimContact, SimSettings};
 use crate::analytic::{ImpactLaw, SlipMode};
 use crate::law_check;
 use crate::lcp::{self, LcpStatus, LemkeSettings};
-use crate::math::{Real, cross};
+use crate::math::Real;
 
 /// Most contacts solved with the size-specialised Lemke kernels (LCP size ≤ 18); larger
 /// active sets (several joints closing at once) use the dynamic kernel.
@@ -171,18 +171,13 @@ impl RigidStepper {
         }
         for ab in br.abutments.iter().filter(|ab| self.on.1[ab.side]) {
             let (j, n, tn) = (ab.body, ab.normal, ab.tangent);
+            let shift = ab.shift(&br.dofs, inp.q.as_slice());
             for (k, c0) in ab.corners.iter().enumerate() {
                 let pc = pose.place(bodies, j, c0);
                 let r = pc - pose.g[j];
-                let wn = Direction {
-                    first: (j, [n.x, n.y, cross(&r, &n)]),
-                    second: None,
-                };
-                if (pc - ab.point).dot(&n) + h * dot_dir(&wn, u, &br.dofs) <= 0.0 {
-                    let wt = Direction {
-                        first: (j, [tn.x, tn.y, cross(&r, &tn)]),
-                        second: None,
-                    };
+                let wn = ab.direction(n, &r);
+                if (pc - ab.point).dot(&n) + shift + h * dot_dir(&wn, u, &br.dofs) <= 0.0 {
+                    let wt = ab.direction(tn, &r);
                     let contact = SimContact::Abutment {
                         deck: ab.side + 1,
                         corner: k,

@@ -48,6 +48,23 @@ pub struct AbutmentSummary {
     pub peak_impulse: Real,
     /// `max_t (gap − smaller corner gap)` \[m\].
     pub peak_closing: Real,
+    /// The backwall's peaks (`None` without a backwall).
+    pub backwall: Option<BackwallSummary>,
+}
+
+/// The peaks of an abutment's backwall ([`crate::sim::bridge::Backwall`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BackwallSummary {
+    /// `max_t s`: the farthest the wall was pushed into the soil \[m\].
+    pub peak_displacement: Real,
+    /// `max_t F` of the backfill \[N\] (`None` without backfill).
+    pub peak_backfill_force: Option<Real>,
+    /// `max_t |f|` of the piles \[N\] (`None` without piles).
+    pub peak_pile_force: Option<Real>,
+    /// `s` at the end \[m\].
+    pub residual_displacement: Real,
+    /// Energy dissipated by the piles' yielding \[J\].
+    pub pile_hysteretic_energy: Real,
 }
 
 /// Peaks of one segment.
@@ -154,6 +171,8 @@ pub struct BridgeSummary {
     pub max_input_energy: Real,
     /// Work done on the restrainers (stored plus plastic) at the end \[J\].
     pub restrainer_work: Real,
+    /// Work done on the backfills (stored plus dissipated) \[J\].
+    pub backfill_work: Real,
 }
 
 /// Result of [`super::bridge::simulate`] and of [`super::simulate`].
@@ -383,6 +402,23 @@ pub(crate) fn solution(
                 },
                 peak_impulse: imp_abut[side],
                 peak_closing: peaks.abut[side].unwrap_or(Real::NAN),
+                backwall: peaks.wall[side].map(|w| {
+                    let b = model.wall_body(side).expect("a backwall");
+                    let correction = r.elements.bearing_stored_energy(br.dofs.n_bodies());
+                    BackwallSummary {
+                        peak_displacement: w.displacement,
+                        peak_backfill_force: w.backfill,
+                        peak_pile_force: w.piles,
+                        residual_displacement: br.dofs.axial_displacement(b, r.final_q.as_slice()),
+                        pile_hysteretic_energy: r
+                            .elements
+                            .w_bearings
+                            .get(b)
+                            .copied()
+                            .unwrap_or(0.0)
+                            - correction[b],
+                    }
+                }),
             });
         }
     }
@@ -470,6 +506,7 @@ pub(crate) fn solution(
         final_energy: r.final_energy,
         max_input_energy: r.max_input_energy,
         restrainer_work: r.elements.w_cables,
+        backfill_work: r.elements.w_backfill,
     };
     let tr = r.trace;
     BridgeSolution {

@@ -97,7 +97,7 @@ impl Attachment {
         match *self {
             Attachment::Body(b, p) => {
                 let [x, y, th] = dofs.plan_of(b, q);
-                if dofs.kind(b) == BodyKind::PlanPoint {
+                if dofs.kind(b) != BodyKind::PlanRigid {
                     // a body that does not turn: every point moves with it
                     return Vector::new(x, y);
                 }

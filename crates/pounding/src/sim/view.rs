@@ -26,6 +26,26 @@ pub(crate) struct AbutmentFace {
     pub point: Vector,
     /// Reference gap.
     pub gap: Real,
+    /// The backwall body whose face this is (`None`: the ground); the face moves with it along
+    /// `−normal` by its coordinate `s`.
+    pub wall: Option<usize>,
+}
+
+impl AbutmentFace {
+    /// How far the face has moved away from the deck, `s` of its backwall at `q` (0 without).
+    #[inline]
+    pub fn shift(&self, dofs: &Dofs, q: &[Real]) -> Real {
+        self.wall.map_or(0.0, |w| dofs.axial_displacement(w, q))
+    }
+
+    /// A contact direction at this face: `v` (with moment arm `r`) on the segment and, with a
+    /// backwall, its reaction `−v` on the wall.
+    pub fn direction(&self, v: Vector, r: &Vector) -> super::contact::Direction {
+        super::contact::Direction {
+            first: (self.body, [v.x, v.y, crate::math::cross(r, &v)]),
+            second: self.wall.map(|w| (w, [-v.x, -v.y, 0.0])),
+        }
+    }
 }
 
 impl AbutmentFace {
@@ -45,6 +65,7 @@ impl AbutmentFace {
             tangent: Vector::new(-n.y, n.x),
             point: face.mid - n * gap,
             gap,
+            wall: None,
         }
     }
 }

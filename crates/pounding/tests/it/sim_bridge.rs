@@ -32,6 +32,7 @@ fn abutment(gap: f64, eps: f64) -> Option<BridgeAbutment> {
         friction: 0.0,
         restitution: eps,
         contact: JointContact::Rigid,
+        backwall: None,
     })
 }
 

@@ -163,6 +163,7 @@ fn abutment() -> Option<BridgeAbutment> {
         friction: 0.0,
         restitution: 0.6,
         contact: JointContact::Rigid,
+        backwall: None,
     })
 }
 

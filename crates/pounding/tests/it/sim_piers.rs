@@ -381,3 +381,102 @@ fn bridge_p_piers_against_opensees() {
         within(&format!("deck {}", i + 1), g.peak_displacement, r, 0.05);
     }
 }
+
+const BRIDGE_P_FULL: &str = include_str!("../../../../examples/bridge-piers-1d.toml");
+
+/// `examples/bridge-piers-1d.toml` (bridge P with backwalls, backfill and piles) against the
+/// OpenSees 3.7.1 figures computed for this project (zeroLength elements, `Steel01`,
+/// `ImpactMaterial`, `HyperbolicGapMaterial`, `ElasticPP`, Newmark average acceleration,
+/// dt = 5e-5 s, converged against 2.5e-5 s): contact, column, backfill and pile forces and joint
+/// closings within 3 %, drifts, backwall and deck displacements within 5 %, impacts within ±3.
+#[test]
+fn bridge_p_with_backwalls_against_opensees() {
+    let s = run_text(BRIDGE_P_FULL).summary;
+    let joints = [(22, 40.26, 0.0228), (31, 43.78, 0.0239)];
+    for (k, (j, r)) in s.joints.iter().zip(joints).enumerate() {
+        assert!(
+            j.impacts.abs_diff(r.0) <= 3,
+            "joint {}: {} impacts vs {}",
+            k + 1,
+            j.impacts,
+            r.0
+        );
+        within(
+            &format!("joint {} force", k + 1),
+            j.peak_contact_force.unwrap() / 1e6,
+            r.1,
+            0.03,
+        );
+        within(
+            &format!("joint {} closing", k + 1),
+            j.peak_closing,
+            r.2,
+            0.03,
+        );
+    }
+    // impacts, contact force MN, backwall into the soil m, backfill MN, piles MN
+    let abuts = [
+        (29, 37.61, 0.0479, 3.778, 1.071),
+        (19, 40.27, 0.0552, 3.948, 1.071),
+    ];
+    for (side, r) in abuts.iter().enumerate() {
+        let a = s.abutments[side].as_ref().expect("abutment");
+        let w = a.backwall.as_ref().expect("backwall");
+        assert!(
+            a.impacts.abs_diff(r.0) <= 3,
+            "abutment {side}: {} vs {}",
+            a.impacts,
+            r.0
+        );
+        within(
+            &format!("abutment {side} force"),
+            a.peak_contact_force.unwrap() / 1e6,
+            r.1,
+            0.03,
+        );
+        within(
+            &format!("abutment {side} backwall"),
+            w.peak_displacement,
+            r.2,
+            0.05,
+        );
+        within(
+            &format!("abutment {side} backfill"),
+            w.peak_backfill_force.unwrap() / 1e6,
+            r.3,
+            0.03,
+        );
+        within(
+            &format!("abutment {side} piles"),
+            w.peak_pile_force.unwrap() / 1e6,
+            r.4,
+            0.03,
+        );
+    }
+    // peak drift m, residual drift along the chain (OpenSees x = −y here) m, column force MN
+    let piers = [(0.0183, -0.0036, 1.205), (0.0192, -0.0019, 1.207)];
+    for (p, r) in s.piers.iter().zip(piers) {
+        assert!(p.yielded, "pier {} yields", p.joint);
+        within(
+            &format!("pier {} drift", p.joint),
+            p.peak_drift[1],
+            r.0,
+            0.05,
+        );
+        within(
+            &format!("pier {} residual", p.joint),
+            -p.residual_drift[1],
+            r.1,
+            0.05,
+        );
+        within(
+            &format!("pier {} column", p.joint),
+            p.peak_column_force / 1e6,
+            r.2,
+            0.03,
+        );
+    }
+    for (i, (g, r)) in s.segments.iter().zip([0.0862, 0.0961, 0.0964]).enumerate() {
+        within(&format!("deck {}", i + 1), g.peak_displacement, r, 0.05);
+    }
+}

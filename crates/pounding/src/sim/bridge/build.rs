@@ -24,7 +24,7 @@ impl BridgeModel {
     /// The DOF map of the bridge: every segment a plan rigid body `(x, y, θ)`, in bridge order,
     /// then every pier's cap `(x, y)` ([`Pier`]).
     pub fn dofs(&self) -> Dofs {
-        Dofs::new(self.body_kinds())
+        Dofs::new(self.body_kinds()).with_axes(self.wall_axes())
     }
 
     /// The segments placed end to end in the global frame (module doc).
@@ -163,7 +163,9 @@ impl BridgeModel {
             .filter_map(|(side, a)| {
                 let a = a.as_ref()?;
                 let body = if side == 0 { 0 } else { n - 1 };
-                Some(AbutmentFace::new(&bodies, (body, side), a.gap))
+                let mut face = AbutmentFace::new(&bodies, (body, side), a.gap);
+                face.wall = self.wall_body(side);
+                Some(face)
             })
             .collect();
         let mut seats = Vec::with_capacity(2 * n);
@@ -288,6 +290,7 @@ impl BridgeModel {
                 friction: model.friction,
                 restitution: model.restitution,
                 contact: model.contact,
+                backwall: None,
             })
         };
         BridgeModel {
@@ -340,6 +343,30 @@ impl BridgeModel {
                     base: on[i][slot].map(|p| (self.cap_body(p), Vector::zeros())),
                     law,
                     state: BearingState::default(),
+                });
+            }
+        }
+        for side in 0..2 {
+            let (Some(wb), Some(w)) = (
+                self.wall_body(side),
+                self.abutments[side].and_then(|a| a.backwall),
+            ) else {
+                continue;
+            };
+            if let Some(p) = w.piles {
+                el.bearings.push(crate::sim::elements::YieldingBearing {
+                    body: wb,
+                    slot: side,
+                    arm: Vector::zeros(),
+                    base: None,
+                    law: BilinearBearing::elastic_perfectly_plastic(p.k, p.fy).expect("validated"),
+                    state: BearingState::default(),
+                });
+            }
+            if let Some(b) = w.backfill {
+                el.backfills.push(crate::sim::elements::BackfillAt {
+                    body: wb,
+                    element: crate::element::backfill::BackfillElement::new(b),
                 });
             }
         }

@@ -13,6 +13,7 @@ impl BridgeModel {
     /// `k (1/m_a + 1/m_b)`. `h ≤ 1/ω` is required (errors name `dt` and the joint's
     /// `restrainer_k`).
     pub fn check_time_step(&self, dt: Real) -> Result<(), SimError> {
+        self.check_backfill_step(dt)?;
         let bodies = self.layout();
         for (k, j) in self.joints.iter().enumerate() {
             if j.restrainers.is_empty() {

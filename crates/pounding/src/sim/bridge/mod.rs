@@ -54,9 +54,11 @@ use crate::math::{Real, Vector, cross};
 use crate::shape::{DeckEnd, DeckShape};
 use nalgebra::{Matrix2x3, Matrix3, Vector3};
 
+mod backwall;
 mod build;
 mod geometry;
 mod pier;
+pub use backwall::{Backwall, Piles};
 pub(crate) use geometry::placement;
 use geometry::*;
 pub use pier::{Pier, PierColumn};
@@ -247,6 +249,9 @@ pub struct BridgeAbutment {
     pub restitution: Real,
     /// Contact law.
     pub contact: JointContact,
+    /// A backwall that slides into backfill and piles ([`Backwall`]; `None`: the abutment face
+    /// is the ground).
+    pub backwall: Option<Backwall>,
 }
 
 /// Which abutment.
@@ -315,6 +320,7 @@ impl BridgeModel {
         self.validate_segments()?;
         self.validate_joints()?;
         self.validate_abutments()?;
+        self.validate_backwalls()?;
         self.validate_piers()?;
         check(
             "outer_seat_length".into(),

@@ -199,7 +199,9 @@ impl BridgeModel {
     /// The kinds of the bodies: the segments, then one cap per pier.
     pub(crate) fn body_kinds(&self) -> Vec<BodyKind> {
         let segs = std::iter::repeat_n(BodyKind::PlanRigid, self.segments.len());
+        let walls = (0..2).filter(|&s| self.wall_body(s).is_some()).count();
         segs.chain(std::iter::repeat_n(BodyKind::PlanPoint, self.piers.len()))
+            .chain(std::iter::repeat_n(BodyKind::Axial, walls))
             .collect()
     }
 
@@ -211,7 +213,7 @@ impl BridgeModel {
         systems: &[BodySystem],
         always: bool,
     ) -> Result<Option<Coupled>, SimError> {
-        if self.piers.is_empty() && !always {
+        if self.piers.is_empty() && !self.has_backwalls() && !always {
             return Ok(None);
         }
         let dofs = self.dofs();
@@ -230,7 +232,8 @@ impl BridgeModel {
             r[(s, 0)] = 1.0;
             r[(s + 1, 1)] = 1.0;
             // each segment's own damping block, unless Rayleigh damping of a coupled system
-            if self.piers.is_empty() || self.damping_model == DampingModel::TranslationalDashpots {
+            let coupled = !self.piers.is_empty() || self.has_backwalls();
+            if !coupled || self.damping_model == DampingModel::TranslationalDashpots {
                 c.view_mut((s, s), (3, 3)).copy_from(&sys.damping);
             }
         }
@@ -279,7 +282,23 @@ impl BridgeModel {
                 }
             }
         }
-        let coupled = !self.piers.is_empty();
+        for side in 0..2 {
+            let (Some(wb), Some(w)) = (
+                self.wall_body(side),
+                self.abutments[side].and_then(|a| a.backwall),
+            ) else {
+                continue;
+            };
+            let (s, a) = (dofs.start(wb), dofs.axis(wb));
+            m[(s, s)] = w.mass;
+            r[(s, 0)] = a.x;
+            r[(s, 1)] = a.y;
+            if let Some(p) = w.piles {
+                k[(s, s)] += p.k;
+                ky[(s, s)] += p.k;
+            }
+        }
+        let coupled = !self.piers.is_empty() || self.has_backwalls();
         if coupled && self.damping_model == DampingModel::Rayleigh && self.damping_ratio > 0.0 {
             let om = system_frequencies(&m, &k);
             let lowest = [

@@ -52,6 +52,25 @@ fn bridge_arrays(
                 "gap_m": json_float(ma.gap),
                 "seat_length_m": json_float(ma.seat_length),
                 "contact_law": describe_contact(&ma.contact),
+                "backwall": a.backwall.as_ref().zip(ma.backwall.as_ref()).map(|(w, mw)| json!({
+                    "peak_backwall_displacement_m": json_float(w.peak_displacement),
+                    "residual_backwall_displacement_m": json_float(w.residual_displacement),
+                    "peak_backfill_force_n": opt(w.peak_backfill_force),
+                    "peak_pile_force_n": opt(w.peak_pile_force),
+                    "pile_hysteretic_energy_j": json_float(w.pile_hysteretic_energy),
+                    "mass_kg": json_float(mw.mass),
+                    "backfill": mw.backfill.map(|b| json!({
+                        "kmax_n_per_m": json_float(b.kmax()),
+                        "kur_n_per_m": json_float(b.kur()),
+                        "rf": json_float(b.rf()),
+                        "fult_n": json_float(b.fult()),
+                        "gap_m": json_float(b.gap()),
+                    })),
+                    "piles": mw.piles.map(|p| json!({
+                        "k_n_per_m": json_float(p.k),
+                        "fy_n": json_float(p.fy),
+                    })),
+                })),
             }),
             _ => Value::Null,
         })
@@ -86,7 +105,13 @@ pub(crate) fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> 
     let e = &s.final_energy;
     let (joints, abutments, segments) = bridge_arrays(setup, sol);
     let hyst: Real = s.segments.iter().map(|g| g.hysteretic_energy).sum::<Real>()
-        + s.piers.iter().map(|p| p.hysteretic_energy).sum::<Real>();
+        + s.piers.iter().map(|p| p.hysteretic_energy).sum::<Real>()
+        + s.abutments
+            .iter()
+            .flatten()
+            .filter_map(|a| a.backwall.as_ref())
+            .map(|w| w.pile_hysteretic_energy)
+            .sum::<Real>();
     let (rigid, compliant) = site_kinds(m);
     let piers: Vec<Value> = s
         .piers
@@ -129,11 +154,14 @@ pub(crate) fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> 
         "energy_J": {
             "input": json_float(e.input),
             "kinetic": json_float(e.kinetic),
-            "strain": json_float(e.potential + (e.elements - hyst - s.restrainer_work)),
+            "strain": json_float(
+                e.potential + (e.elements - hyst - s.restrainer_work - s.backfill_work)
+            ),
             "viscous_dissipation": json_float(e.viscous),
             "contact_dissipation": json_float(e.contact),
             "hysteretic_dissipation": json_float(hyst),
             "restrainer_work": json_float(s.restrainer_work),
+            "backfill_work": json_float(s.backfill_work),
             "max_input": json_float(s.max_input_energy),
         },
         "ground_motion": super::ground_json(&setup.records, &setup.problem.ground),

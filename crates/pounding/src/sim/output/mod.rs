@@ -71,6 +71,7 @@ pub const SIM_OUTPUTS: &[&str] = &[
     "restrainers.csv",
     "joint_slip.csv",
     "piers.csv",
+    "backwalls.csv",
     "displacements.png",
     "layout.png",
     "rotations.png",

@@ -64,6 +64,7 @@ use crate::toml_schema::{Table, line_col};
 use serde::Deserialize;
 use toml::Spanned;
 
+mod backwall;
 mod pier;
 mod segment;
 mod sites;
@@ -177,6 +178,8 @@ struct AbutmentSec {
     eps_n: Sp<f64>,
     /// The abutment's own contact keys (`[abutment.start.contact]`).
     contact: Option<Spanned<SiteTable>>,
+    /// Its backwall (`[abutment.start.backwall]`).
+    backwall: Option<Spanned<backwall::BackwallSec>>,
 }
 
 /// What [`Scenario::build_bridge`] returns: the problem and settings of

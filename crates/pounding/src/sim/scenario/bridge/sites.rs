@@ -102,6 +102,10 @@ pub(super) fn sites(
             friction: v.nonneg(ak("mu"), &a.mu, Some(d.mu))?,
             restitution,
             contact: contact_for(&contacts[next], restitution, [2.0 * m, 2.0 * m])?,
+            backwall: match &a.backwall {
+                None => None,
+                Some(w) => Some(super::backwall::backwall(v, side, w)?),
+            },
         });
         next += 1;
     }

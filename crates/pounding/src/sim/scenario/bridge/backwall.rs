@@ -1,0 +1,142 @@
+//! `[abutment.start.backwall]` / `[abutment.end.backwall]`: an abutment's backwall on backfill
+//! and piles ([`crate::sim::bridge::Backwall`]).
+//!
+//! ```toml
+//! [abutment.start.backwall]
+//! mass = 1.0e5        # [kg]
+//! kmax = 2.436e8      # backfill (OpenSees HyperbolicGapMaterial): initial stiffness [N/m],
+//! kur = 2.436e8       #   unloading/reloading stiffness [N/m] (default kmax),
+//! rf = 0.7            #   failure ratio in (0, 1) (default 0.7),
+//! fult = 3.912e6      #   ultimate passive force [N],
+//! backfill_gap = 0.0  #   gap behind the wall [m] (default 0)
+//! # or, instead of kmax/kur/fult: Caltrans SDC 2019 from the wall's size
+//! # height = 2.0     # [m]
+//! # width = 12.0     # [m]
+//! # skew_deg = 0.0   # [deg]
+//! piles_k = 6.3e7     # piles, elastic-perfectly-plastic both ways: stiffness [N/m]
+//! piles_fy = 1.071e6  #   yield force [N]
+//! ```
+
+use super::{Sp, Val};
+use crate::element::backfill::{CaltransBackwall, HyperbolicGap};
+use crate::sim::bridge::{Backwall, Piles};
+use crate::sim::scenario::ScenarioError;
+use serde::Deserialize;
+use toml::Spanned;
+
+/// One backwall table as read by `serde`.
+#[derive(Deserialize, Default, Clone, Debug)]
+#[serde(deny_unknown_fields, default)]
+pub(super) struct BackwallSec {
+    mass: Sp<f64>,
+    kmax: Sp<f64>,
+    kur: Sp<f64>,
+    rf: Sp<f64>,
+    fult: Sp<f64>,
+    backfill_gap: Sp<f64>,
+    height: Sp<f64>,
+    width: Sp<f64>,
+    skew_deg: Sp<f64>,
+    piles_k: Sp<f64>,
+    piles_fy: Sp<f64>,
+}
+
+/// The backwall of abutment `side` from its table.
+pub(super) fn backwall(
+    v: &Val,
+    side: usize,
+    t: &Spanned<BackwallSec>,
+) -> Result<Backwall, ScenarioError> {
+    let name = crate::sim::bridge::ABUTMENT_SIDES[side];
+    let key = |k: &str| format!("abutment.{name}.backwall.{k}");
+    let w = t.get_ref();
+    let mass = v.pos(key("mass"), &w.mass, None)?;
+    let line = |x: &Sp<f64>| x.as_ref().map(|x| v.line(x));
+    let explicit = w.kmax.is_some() || w.fult.is_some() || w.kur.is_some();
+    let caltrans = w.height.is_some() || w.width.is_some() || w.skew_deg.is_some();
+    if explicit && caltrans {
+        let at = line(&w.height).or(line(&w.width)).or(line(&w.skew_deg));
+        return Err(v.err(
+            key("height"),
+            at,
+            format!(
+                "give the backfill either by {} and {} or by the wall's {} and {} (Caltrans), not \
+                 both",
+                key("kmax"),
+                key("fult"),
+                key("height"),
+                key("width")
+            ),
+        ));
+    }
+    let gap = v.nonneg(key("backfill_gap"), &w.backfill_gap, Some(0.0))?;
+    let rf = v.num(
+        key("rf"),
+        &w.rf,
+        Some(0.7),
+        |x| x > 0.0 && x < 1.0,
+        "must lie in (0, 1)",
+    )?;
+    let element_error = |e: crate::element::ElementError, at: Option<usize>| {
+        v.err(key(e.key()), at.or(Some(v.line(t))), e.to_string())
+    };
+    let backfill = if explicit {
+        let kmax = v.pos(key("kmax"), &w.kmax, None)?;
+        let kur = v.pos(key("kur"), &w.kur, Some(kmax))?;
+        let fult = v.pos(key("fult"), &w.fult, None)?;
+        Some(HyperbolicGap::new(kmax, kur, rf, fult, gap).map_err(|e| element_error(e, None))?)
+    } else if caltrans {
+        let h = v.pos(key("height"), &w.height, None)?;
+        let b = v.pos(key("width"), &w.width, None)?;
+        let skew = v.num(
+            key("skew_deg"),
+            &w.skew_deg,
+            Some(0.0),
+            |x| (0.0..90.0).contains(&x),
+            "must lie in [0, 90) deg",
+        )?;
+        let c = CaltransBackwall::new(h, b, skew).map_err(|e| element_error(e, line(&w.height)))?;
+        Some(HyperbolicGap::new(c.k, c.k, rf, c.f_ult, gap).map_err(|e| element_error(e, None))?)
+    } else {
+        for (k, x) in [("rf", &w.rf), ("backfill_gap", &w.backfill_gap)] {
+            if let Some(x) = x {
+                return Err(v.err(
+                    key(k),
+                    Some(v.line(x)),
+                    format!(
+                        "{} applies to a backfill: give {} and {} (or height and width)",
+                        key(k),
+                        key("kmax"),
+                        key("fult")
+                    ),
+                ));
+            }
+        }
+        None
+    };
+    let piles = match (&w.piles_k, &w.piles_fy) {
+        (None, None) => None,
+        (k, fy) => Some(Piles {
+            k: v.pos(key("piles_k"), k, None)?,
+            fy: v.pos(key("piles_fy"), fy, None)?,
+        }),
+    };
+    if backfill.is_none() && piles.is_none() {
+        return Err(v.err(
+            key("mass"),
+            Some(v.line(t)),
+            format!(
+                "a backwall needs something behind it: its backfill ({} and {}) or its piles ({} and {})",
+                key("kmax"),
+                key("fult"),
+                key("piles_k"),
+                key("piles_fy")
+            ),
+        ));
+    }
+    Ok(Backwall {
+        mass,
+        backfill,
+        piles,
+    })
+}
