@@ -43,6 +43,7 @@ mod scratch;
 mod set_synth;
 mod shapes;
 mod sim;
+mod sim_backwalls;
 mod sim_bearings;
 mod sim_bridge;
 mod sim_bridge_batch;

@@ -50,7 +50,12 @@ pub(super) fn backwall(
     let name = crate::sim::bridge::ABUTMENT_SIDES[side];
     let key = |k: &str| format!("abutment.{name}.backwall.{k}");
     let w = t.get_ref();
-    let mass = v.pos(key("mass"), &w.mass, None)?;
+    // a required key left out: the error names the table's line
+    let pos = |k: &str, x: &Sp<f64>| match x {
+        None => Err(v.err(key(k), Some(v.line(t)), format!("{} is required", key(k)))),
+        some => v.pos(key(k), some, None),
+    };
+    let mass = pos("mass", &w.mass)?;
     let line = |x: &Sp<f64>| x.as_ref().map(|x| v.line(x));
     let explicit = w.kmax.is_some() || w.fult.is_some() || w.kur.is_some();
     let caltrans = w.height.is_some() || w.width.is_some() || w.skew_deg.is_some();
@@ -81,13 +86,13 @@ pub(super) fn backwall(
         v.err(key(e.key()), at.or(Some(v.line(t))), e.to_string())
     };
     let backfill = if explicit {
-        let kmax = v.pos(key("kmax"), &w.kmax, None)?;
+        let kmax = pos("kmax", &w.kmax)?;
         let kur = v.pos(key("kur"), &w.kur, Some(kmax))?;
-        let fult = v.pos(key("fult"), &w.fult, None)?;
+        let fult = pos("fult", &w.fult)?;
         Some(HyperbolicGap::new(kmax, kur, rf, fult, gap).map_err(|e| element_error(e, None))?)
     } else if caltrans {
-        let h = v.pos(key("height"), &w.height, None)?;
-        let b = v.pos(key("width"), &w.width, None)?;
+        let h = pos("height", &w.height)?;
+        let b = pos("width", &w.width)?;
         let skew = v.num(
             key("skew_deg"),
             &w.skew_deg,
@@ -117,8 +122,8 @@ pub(super) fn backwall(
     let piles = match (&w.piles_k, &w.piles_fy) {
         (None, None) => None,
         (k, fy) => Some(Piles {
-            k: v.pos(key("piles_k"), k, None)?,
-            fy: v.pos(key("piles_fy"), fy, None)?,
+            k: pos("piles_k", k)?,
+            fy: pos("piles_fy", fy)?,
         }),
     };
     if backfill.is_none() && piles.is_none() {

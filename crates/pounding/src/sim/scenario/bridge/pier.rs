@@ -73,8 +73,13 @@ pub(super) fn piers(
                 k as usize - 1
             }
         };
-        let cap_mass = v.pos(pk("cap_mass"), &s.cap_mass, None)?;
-        let k0 = v.pos(pk("k0"), &s.k0, None)?;
+        // a required key left out: the error names the table's line
+        let pos = |k: &str, x: &Sp<f64>| match x {
+            None => Err(v.err(pk(k), Some(v.line(t)), format!("{} is required", pk(k)))),
+            some => v.pos(pk(k), some, None),
+        };
+        let cap_mass = pos("cap_mass", &s.cap_mass)?;
+        let k0 = pos("k0", &s.k0)?;
         let fy = match &s.fy {
             None => None,
             some => Some(v.pos(pk("fy"), some, None)?),

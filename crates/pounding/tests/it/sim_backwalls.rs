@@ -1,0 +1,164 @@
+//! Abutment backwalls: the scenario's refusals (key and line), the step check of the backfill,
+//! and the wall's equilibrium in the histories.
+
+use pounding::sim::scenario::Scenario;
+
+const BRIDGE_P_FULL: &str = include_str!("../../../../examples/bridge-piers-1d.toml");
+
+/// `BRIDGE_P_FULL` with the start abutment's backwall table replaced by `table`.
+fn with_start_wall(table: &str) -> String {
+    let start = BRIDGE_P_FULL.find("[abutment.start.backwall]").unwrap();
+    let end = BRIDGE_P_FULL[start..].find("\n\n").unwrap() + start;
+    format!(
+        "{}[abutment.start.backwall]\n{table}{}",
+        &BRIDGE_P_FULL[..start],
+        &BRIDGE_P_FULL[end..]
+    )
+}
+
+fn error(text: &str) -> String {
+    Scenario::from_toml(text, "walls.toml")
+        .and_then(|s| s.build_bridge())
+        .expect_err("refused")
+        .to_string()
+}
+
+/// Bad backwalls are refused naming the key and the line of the offending value.
+#[test]
+fn bad_backwalls_are_refused_with_key_and_line() {
+    let cases = [
+        (
+            "kmax = 1e8\nfult = 1e6\n",
+            "backwall.mass",
+            "is required",
+            "[abutment.start.backwall]",
+        ),
+        (
+            "mass = -1.0\npiles_k = 1e7\npiles_fy = 1e5\n",
+            "backwall.mass",
+            "> 0",
+            "mass = -1.0",
+        ),
+        (
+            "mass = 1e5\nkmax = 1e8\nfult = 1e6\nrf = 1.2\n",
+            "backwall.rf",
+            "(0, 1)",
+            "rf = 1.2",
+        ),
+        (
+            "mass = 1e5\nkmax = 1e8\nfult = 1e6\nheight = 2.0\n",
+            "backwall.height",
+            "not both",
+            "height = 2.0",
+        ),
+        (
+            "mass = 1e5\n",
+            "backwall.mass",
+            "something behind it",
+            "[abutment.start.backwall]",
+        ),
+        (
+            "mass = 1e5\npiles_k = 1e7\n",
+            "backwall.piles_fy",
+            "is required",
+            "[abutment.start.backwall]",
+        ),
+        (
+            "mass = 1e5\nkmax = 1e8\n",
+            "backwall.fult",
+            "is required",
+            "[abutment.start.backwall]",
+        ),
+        (
+            "mass = 1e5\npiles_k = 1e7\npiles_fy = 1e5\nrf = 0.5\n",
+            "backwall.rf",
+            "applies to a backfill",
+            "rf = 0.5",
+        ),
+        (
+            "mass = 1e5\nheight = 2.0\nwidth = 12.0\nskew_deg = 95.0\n",
+            "backwall.skew_deg",
+            "[0, 90)",
+            "skew_deg = 95.0",
+        ),
+        (
+            "mass = 1e5\nkmax = nan\nfult = 1e6\n",
+            "backwall.kmax",
+            "> 0",
+            "kmax = nan",
+        ),
+        (
+            "mass = 1e5\nheight = 2.0\nwidth = 12.0\nsoil = 1.0\n",
+            "soil",
+            "unknown",
+            "soil = 1.0",
+        ),
+    ];
+    for (table, key, why, bad) in cases {
+        let text = with_start_wall(table);
+        let err = error(&text);
+        assert!(err.contains(key) && err.contains(why), "{table}: {err}");
+        let line = text.lines().position(|l| l == bad).unwrap() + 1;
+        assert!(
+            err.contains(&format!("walls.toml:{line}")) || err.contains(&format!("line {line}")),
+            "{table}: not line {line} in {err}"
+        );
+    }
+    // the backfill is held over each step: a step that does not resolve it is refused naming dt
+    let coarse = BRIDGE_P_FULL.replace("dt = 5e-5 ", "dt = 0.05 ");
+    let err = error(&coarse);
+    assert!(
+        err.contains("dt") && err.contains("backfill of abutment.start"),
+        "{err}"
+    );
+}
+
+/// The Caltrans preset runs and its backfill force never exceeds `F_ult`; the wall's coordinate,
+/// backfill and pile forces in `backwalls.csv` match `summary.json`'s peaks.
+#[test]
+fn caltrans_backwall_runs_and_its_table_matches_the_summary() {
+    let table = "mass = 1.0e5\nheight = 1.7\nwidth = 12.0\nskew_deg = 0.0\npiles_k = 6.3e7\n\
+                 piles_fy = 1.071e6\n";
+    let text = with_start_wall(table)
+        .replace("dt = 5e-5 ", "dt = 1e-4 ")
+        .replace("history_every = 200", "history_every = 1");
+    let text = text.replace("[time]\n", "[time]\nduration = 12.0\n");
+    let sol = Scenario::from_toml(&text, "walls.toml")
+        .unwrap()
+        .build_bridge()
+        .unwrap()
+        .run()
+        .unwrap();
+    assert_eq!(sol.status, pounding::sim::SimStatus::Completed);
+    assert!(sol.summary.energy_balance_error < 1e-9);
+    let c = pounding::element::backfill::CaltransBackwall::new(1.7, 12.0, 0.0).unwrap();
+    let tables = sol.tables();
+    let t = tables
+        .iter()
+        .find(|t| t.name == "backwalls")
+        .expect("backwalls.csv");
+    let n = t.columns.len();
+    assert_eq!(n, 7, "t and three columns per wall");
+    let (mut wall, mut fill, mut piles) = (0.0f64, 0.0f64, 0.0f64);
+    for row in t.values.chunks(n) {
+        assert!(
+            row[2] >= 0.0 && row[2] <= c.f_ult * (1.0 + 1e-12),
+            "{}",
+            row[2]
+        );
+        assert!(row[3].abs() <= 1.071e6 * (1.0 + 1e-9));
+        wall = wall.max(row[1]);
+        fill = fill.max(row[2]);
+        piles = piles.max(row[3].abs());
+    }
+    let w = sol.summary.abutments[0]
+        .as_ref()
+        .unwrap()
+        .backwall
+        .as_ref()
+        .unwrap();
+    assert!(wall > 0.0 && fill > 0.0, "the wall is pushed");
+    assert_eq!(w.peak_displacement, wall);
+    assert_eq!(w.peak_backfill_force, Some(fill));
+    assert_eq!(w.peak_pile_force, Some(piles));
+}
