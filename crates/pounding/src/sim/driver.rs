@@ -206,6 +206,8 @@ pub(crate) struct Peaks {
     pub pier: Vec<PierPeak>,
     /// Per abutment side with a backwall.
     pub wall: [Option<WallPeak>; 2],
+    /// Per abutment side with shear keys: `max_t |F|`, `max_t |v|`.
+    pub keys: [Option<(Real, Real)>; 2],
 }
 
 /// The peaks of one backwall.
@@ -266,6 +268,9 @@ impl Peaks {
             force: vec![None; nj],
             abut_force: [None, None],
             pier: vec![PierPeak::default(); br.piers.len()],
+            keys: [0, 1].map(|side| {
+                br.elements.keys.iter().any(|k| k.side == side).then_some((0.0, 0.0))
+            }),
             wall: [0, 1].map(|side| {
                 let a = br.abutments.iter().find(|a| a.side == side)?;
                 let w = a.wall?;
@@ -350,7 +355,7 @@ impl Peaks {
             pk.drift[0] = pk.drift[0].max(u.x.abs());
             pk.drift[1] = pk.drift[1].max(u.y.abs());
             pk.force = pk.force.max(f.norm());
-            if let Some(e) = p.element {
+            for &e in &p.elements {
                 pk.yielded |= el.bearings[e].state.u_p != Vector::zeros();
             }
         }
@@ -705,13 +710,19 @@ pub(crate) fn run<S: Stepper>(
         if peaks.wall.iter().any(Option::is_some) {
             peaks.observe_walls(&q, bridge, &el);
         }
+        for k in &el.keys {
+            if let Some((f, v)) = peaks.keys[k.side].as_mut() {
+                *f = f.max(k.force.abs());
+                *v = v.max(k.deformation(&bridge.dofs, q.as_slice()).abs());
+            }
+        }
         let forces = stepper.contact_forces();
         if let Some(f) = forces {
             peaks.observe_forces(f, &abut_sides);
         }
         let (tk, vk) = sc.energies(&q, &u, &mut work, &yield_body);
         let w_el = (!el.is_empty())
-            .then(|| el.w_bearings.iter().sum::<Real>() + el.w_cables + el.w_backfill);
+            .then(|| el.w_bearings.iter().sum::<Real>() + el.w_cables + el.w_backfill + el.w_keys);
         let mut energy = ledger.check(tk, vk, stepper.contact_energy(), w_el);
         energy.elements = w_el.unwrap_or(0.0);
         if k % settings.history_stride == 0 || k == sc.n_steps {
@@ -809,7 +820,8 @@ pub(crate) fn run<S: Stepper>(
     }
     let (tf, vf) = sc.energies(&q, &u, &mut work, &yield_body);
     let mut final_energy = ledger.energy(tf, vf, stepper.contact_energy());
-    final_energy.elements = el.w_bearings.iter().sum::<Real>() + el.w_cables + el.w_backfill;
+    final_energy.elements =
+        el.w_bearings.iter().sum::<Real>() + el.w_cables + el.w_backfill + el.w_keys;
     RunResult {
         status,
         trace,

@@ -37,6 +37,7 @@ use super::support::Attachment;
 use crate::element::backfill::BackfillElement;
 use crate::element::bearing::{BearingState, BilinearBearing};
 use crate::element::restrainer::{RestrainerElement, RestrainerResponse};
+use crate::element::shear_key::ShearKeyElement;
 use crate::math::{Real, Vector, cross};
 
 /// The elements' force over one step ([`Elements::step_force`]) and the vectors it is computed
@@ -61,6 +62,8 @@ pub(crate) struct StepForce {
     rc: State,
     /// The backfills' part of `R̄`.
     rf: State,
+    /// The shear keys' part of `R̄`.
+    rk: State,
 }
 
 impl StepForce {
@@ -83,6 +86,7 @@ impl StepForce {
             rb1: z(),
             rc: z(),
             rf: z(),
+            rk: z(),
         }
     }
 }
@@ -99,6 +103,10 @@ pub(crate) struct YieldingBearing {
     pub arm: Vector,
     /// The body under it and the arm of its point there (`None`: the ground).
     pub base: Option<(usize, Vector)>,
+    /// A member acting along one plan direction only (a pier column's yielding per axis, OpenSees
+    /// `Steel01` along that axis): its deformation is the projection `(u·a) a` (`None`: the plan
+    /// deformation, a yield circle).
+    pub axis: Option<Vector>,
     /// Its law.
     pub law: BilinearBearing,
     /// Committed state.
@@ -139,6 +147,45 @@ pub(crate) struct BackfillAt {
     pub element: BackfillElement,
 }
 
+/// Exterior shear keys at an abutment: a force `−F(v) t` at the segment's outer-face midpoint,
+/// `v = u·t` its linearised transverse displacement (relative to the ground), held over each step
+/// as the cables' forces are.
+#[derive(Debug, Clone)]
+pub(crate) struct KeyAt {
+    /// The abutment side.
+    pub side: usize,
+    /// The segment.
+    pub body: usize,
+    /// Arm `r = M − G⁰` of the face midpoint.
+    pub arm: Vector,
+    /// The face's tangent `t`.
+    pub tangent: Vector,
+    /// The keys.
+    pub element: ShearKeyElement,
+    /// The committed force `F` \[N\].
+    pub force: Real,
+}
+
+impl KeyAt {
+    /// `v = u·t` at `q`.
+    #[inline]
+    pub fn deformation(&self, dofs: &Dofs, q: &[Real]) -> Real {
+        let [x, y, th] = dofs.plan_of(self.body, q);
+        let u = Vector::new(x - th * self.arm.y, y + th * self.arm.x);
+        u.dot(&self.tangent)
+    }
+
+    /// Adds the force `−F t` on the segment to `r`.
+    fn add_force(&self, dofs: &Dofs, f: Real, r: &mut State) {
+        let t = self.tangent;
+        dofs.add_plan(
+            self.body,
+            r.as_mut_slice(),
+            [-f * t.x, -f * t.y, -f * cross(&self.arm, &t)],
+        );
+    }
+}
+
 /// The nonlinear elements and their energy bookkeeping.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Elements {
@@ -148,6 +195,10 @@ pub(crate) struct Elements {
     pub backfills: Vec<BackfillAt>,
     /// Work done on the backfills.
     pub w_backfill: Real,
+    /// Shear keys at the abutments.
+    pub keys: Vec<KeyAt>,
+    /// Work done on the shear keys.
+    pub w_keys: Real,
     /// Energy absorbed by the yielding bearings (work done on them), per segment.
     pub w_bearings: Vec<Real>,
     /// Work done on the restrainers.
@@ -159,7 +210,10 @@ pub(crate) struct Elements {
 impl Elements {
     /// Nothing to do.
     pub fn is_empty(&self) -> bool {
-        self.bearings.is_empty() && self.cables.is_empty() && self.backfills.is_empty()
+        self.bearings.is_empty()
+            && self.cables.is_empty()
+            && self.backfills.is_empty()
+            && self.keys.is_empty()
     }
 
     /// The force held over the step from `q_k` with velocity `u_k`, first estimate: the mean
@@ -203,6 +257,18 @@ impl Elements {
                 f.r0[i] += f0;
                 f.r1[i] += f1;
                 f.rf[i] += f0 * (1.0 - th) + f1 * th;
+            }
+        }
+        if !self.keys.is_empty() {
+            f.rk.fill(0.0);
+            for k in &self.keys {
+                let f1 = k
+                    .element
+                    .trial(k.deformation(&self.dofs, f.pred.as_slice()))
+                    .force;
+                k.add_force(&self.dofs, k.force, &mut f.r0);
+                k.add_force(&self.dofs, f1, &mut f.r1);
+                k.add_force(&self.dofs, k.force * (1.0 - th) + f1 * th, &mut f.rk);
             }
         }
         // (1−θ) a + θ b: for θ = ½ the same bits as (a + b)·½ (scaling by ½ is exact)
@@ -287,12 +353,22 @@ impl Elements {
         for i in 0..r.len() {
             f.rc[i] = r[i] - rb[i];
         }
-        if !self.backfills.is_empty() {
-            let wf = h * u_mid.dot(&f.rf);
-            self.w_backfill -= wf;
-            self.w_cables -= h * u_mid.dot(&f.rc) - wf;
-        } else {
+        if self.backfills.is_empty() && self.keys.is_empty() {
             self.w_cables -= h * u_mid.dot(&f.rc);
+        } else {
+            let wf = if self.backfills.is_empty() {
+                0.0
+            } else {
+                h * u_mid.dot(&f.rf)
+            };
+            let wk = if self.keys.is_empty() {
+                0.0
+            } else {
+                h * u_mid.dot(&f.rk)
+            };
+            self.w_backfill -= wf;
+            self.w_keys -= wk;
+            self.w_cables -= h * u_mid.dot(&f.rc) - wf - wk;
         }
     }
 
@@ -305,6 +381,11 @@ impl Elements {
         for b in &mut self.backfills {
             let resp = b.element.trial(q[self.dofs.start(b.body)]);
             b.element.commit(&resp);
+        }
+        for k in &mut self.keys {
+            let resp = k.element.trial(k.deformation(&self.dofs, q.as_slice()));
+            k.element.commit(&resp);
+            k.force = resp.force;
         }
         for i in 0..self.cables.len() {
             let (pa, pb, _, _) = cable_points(&self.cables[i], pose, bodies);
@@ -340,9 +421,13 @@ impl YieldingBearing {
     #[inline]
     pub fn deformation(&self, dofs: &Dofs, q: &State) -> Vector {
         let u = deformation(dofs, q, self.body, &self.arm);
-        match self.base {
+        let u = match self.base {
             None => u,
             Some((c, arm)) => u - deformation(dofs, q, c, &arm),
+        };
+        match self.axis {
+            None => u,
+            Some(a) => a * u.dot(&a),
         }
     }
 }

@@ -66,7 +66,48 @@ pub(crate) fn standard(bridge: &Bridge) -> Vec<Box<dyn Observer>> {
     if bridge.abutments.iter().any(|a| a.wall.is_some()) {
         out.push(Box::new(Backwalls::new(bridge)));
     }
+    if !bridge.elements.keys.is_empty() {
+        out.push(Box::new(ShearKeys::new(bridge)));
+    }
     out
+}
+
+/// Per abutment with shear keys: the deck end's transverse displacement `v` relative to the
+/// abutment and the keys' force `F` (on the abutment; `−F` on the deck).
+pub(crate) struct ShearKeys {
+    table: Table,
+}
+
+impl ShearKeys {
+    fn new(bridge: &Bridge) -> Self {
+        let mut columns = Vec::new();
+        for k in &bridge.elements.keys {
+            let name = format!("abutment_{}", crate::sim::bridge::ABUTMENT_SIDES[k.side]);
+            columns.push(Column::new(format!("{name}_shear_key_v"), "m"));
+            columns.push(Column::new(format!("{name}_shear_key_force"), "N"));
+        }
+        ShearKeys {
+            table: Table::with_time("shear_keys", columns),
+        }
+    }
+}
+
+impl Observer for ShearKeys {
+    fn reserve(&mut self, rows: usize) {
+        self.table.reserve_rows(rows);
+    }
+
+    fn observe(&mut self, s: &Snapshot<'_>) {
+        let v = &mut self.table.values;
+        v.push(s.t);
+        for k in &s.elements.keys {
+            v.extend([k.deformation(&s.bridge.dofs, s.q), k.force]);
+        }
+    }
+
+    fn into_source(self: Box<Self>) -> TableSource {
+        TableSource::Recorded(self.table)
+    }
 }
 
 /// Per abutment with a backwall: the wall's displacement into the soil, its backfill's force

@@ -52,6 +52,21 @@ pub struct AbutmentSummary {
     pub backwall: Option<BackwallSummary>,
 }
 
+/// The peaks of an abutment's exterior shear keys.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShearKeySummary {
+    /// `start` or `end`.
+    pub side: &'static str,
+    /// `max_t |F|` \[N\].
+    pub peak_force: Real,
+    /// `max_t |v|`: the deck end's largest transverse displacement relative to the abutment \[m\].
+    pub peak_deformation: Real,
+    /// Whether a key yielded.
+    pub yielded: bool,
+    /// Energy the keys dissipated by yielding \[J\].
+    pub dissipated: Real,
+}
+
 /// The peaks of an abutment's backwall ([`crate::sim::bridge::Backwall`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct BackwallSummary {
@@ -143,6 +158,8 @@ pub struct BridgeSummary {
     pub segments: Vec<SegmentSummary>,
     /// Per pier (none without piers).
     pub piers: Vec<PierSummary>,
+    /// Per abutment with shear keys, start before end.
+    pub shear_keys: Vec<ShearKeySummary>,
     /// Largest seat displacement over all seated ends (joint ends and outer ends, as the
     /// two-deck `peak_seat_displacement_m`) \[m\].
     pub peak_seat_displacement: Real,
@@ -173,6 +190,8 @@ pub struct BridgeSummary {
     pub restrainer_work: Real,
     /// Work done on the backfills (stored plus dissipated) \[J\].
     pub backfill_work: Real,
+    /// Work done on the shear keys (stored plus dissipated) \[J\].
+    pub shear_key_work: Real,
 }
 
 /// Result of [`super::bridge::simulate`] and of [`super::simulate`].
@@ -482,6 +501,21 @@ pub(crate) fn solution(
         abutments,
         segments,
         piers,
+        shear_keys: r
+            .elements
+            .keys
+            .iter()
+            .map(|k| {
+                let (f, v) = peaks.keys[k.side].unwrap_or((0.0, 0.0));
+                ShearKeySummary {
+                    side: ABUTMENT_SIDES[k.side],
+                    peak_force: f,
+                    peak_deformation: v,
+                    yielded: k.element.dissipated() > 0.0,
+                    dissipated: k.element.dissipated(),
+                }
+            })
+            .collect(),
         peak_seat_displacement: peaks
             .seat
             .iter()
@@ -507,6 +541,7 @@ pub(crate) fn solution(
         max_input_energy: r.max_input_energy,
         restrainer_work: r.elements.w_cables,
         backfill_work: r.elements.w_backfill,
+        shear_key_work: r.elements.w_keys,
     };
     let tr = r.trace;
     BridgeSolution {

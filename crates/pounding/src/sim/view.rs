@@ -153,7 +153,7 @@ pub(crate) struct Bridge {
 }
 
 /// A pier as the driver sees it: its cap's body, its column.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub(crate) struct PierAt {
     /// The joint it carries.
     pub joint: usize,
@@ -161,15 +161,15 @@ pub(crate) struct PierAt {
     pub body: usize,
     /// The column's initial stiffness \[N/m\].
     pub k0: Real,
-    /// The column's yielding element in [`super::elements::Elements::bearings`] (`None`:
-    /// elastic).
-    pub element: Option<usize>,
+    /// The column's yielding members in [`super::elements::Elements::bearings`] (none:
+    /// elastic; one: a yield circle; two: per axis).
+    pub elements: Vec<usize>,
 }
 
 impl PierAt {
     /// The cap's displacement `(x_c, y_c)` (the column's deformation) and the column's force on
-    /// the ground side, `k0 u − (1 − b) k0 u_p` (its committed plastic displacement `u_p` in
-    /// `elements`).
+    /// the ground side, `k0 u − (1 − b) k0 Σ u_p` (its members' committed plastic displacements
+    /// in `elements`).
     pub fn drift_and_force(
         &self,
         dofs: &Dofs,
@@ -178,13 +178,12 @@ impl PierAt {
     ) -> (Vector, Vector) {
         let [x, y, _] = dofs.plan_of(self.body, q);
         let u = Vector::new(x, y);
-        let f = match self.element {
-            Some(e) => {
-                let b = &elements.bearings[e];
-                u * b.law.k0() - b.state.u_p * ((1.0 - b.law.b()) * b.law.k0())
-            }
-            None => u * self.k0,
-        };
+        // k0 u − Σ (1 − b) k0 u_p over its members (each u_p along its own axis)
+        let mut f = u * self.k0;
+        for &e in &self.elements {
+            let b = &elements.bearings[e];
+            f -= b.state.u_p * ((1.0 - b.law.b()) * b.law.k0());
+        }
         (u, f)
     }
 }

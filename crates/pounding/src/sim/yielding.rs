@@ -89,6 +89,7 @@ impl Implicit {
         let dense = (sc.dense.is_some() && !bearings.is_empty())
             .then(|| Box::new(super::yielding_dense::DenseImplicit::new(bearings, sc)));
         for (i, b) in bearings.iter().enumerate().filter(|_| dense.is_none()) {
+            debug_assert!(b.base.is_none() && b.axis.is_none(), "a block-path member");
             match groups.iter_mut().find(|g| g.0 == b.body) {
                 Some(g) => g.1.push(i),
                 None => groups.push((b.body, vec![i])),

@@ -53,6 +53,13 @@ impl DenseImplicit {
                         op.push((i, [-l[0][d], -l[1][d]]));
                     }
                 }
+                if let Some(a) = b.axis {
+                    // the projection (u·a) a of each column
+                    for (_, l) in &mut op {
+                        let p = a.x * l[0] + a.y * l[1];
+                        *l = [a.x * p, a.y * p];
+                    }
+                }
                 op
             })
             .collect();

@@ -162,3 +162,100 @@ fn caltrans_backwall_runs_and_its_table_matches_the_summary() {
     assert_eq!(w.peak_backfill_force, Some(fill));
     assert_eq!(w.peak_pile_force, Some(piles));
 }
+
+const BRIDGE_P_PLAN: &str = include_str!("../../../../examples/bridge-piers.toml");
+
+/// The plan bridge with shear keys: the keys' force never exceeds their capacity, is zero while
+/// the deck end is inside the gap and opposes its displacement; the summary's peaks are the
+/// table's; the energy balance closes with the keys' work booked.
+#[test]
+fn shear_keys_stay_on_their_law_in_the_plan_bridge() {
+    let text = BRIDGE_P_PLAN
+        .replace("dt = 5e-5 ", "dt = 1e-4 ")
+        .replace("history_every = 200", "history_every = 1")
+        .replace("[time]\n", "[time]\nduration = 15.0\n");
+    let sol = Scenario::from_toml(&text, "plan.toml")
+        .unwrap()
+        .build_bridge()
+        .unwrap()
+        .run()
+        .unwrap();
+    assert_eq!(sol.status, pounding::sim::SimStatus::Completed);
+    assert!(
+        sol.summary.energy_balance_error < 1e-9,
+        "{}",
+        sol.summary.energy_balance_error
+    );
+    let tables = sol.tables();
+    let t = tables
+        .iter()
+        .find(|t| t.name == "shear_keys")
+        .expect("shear_keys.csv");
+    let n = t.columns.len();
+    assert_eq!(n, 5);
+    let (fy, gap) = (1.8e6, 0.015);
+    let mut peak = [(0.0f64, 0.0f64); 2];
+    for row in t.values.chunks(n) {
+        for side in 0..2 {
+            let (v, f) = (row[1 + 2 * side], row[2 + 2 * side]);
+            assert!(f.abs() <= fy * (1.0 + 1e-12), "{f}");
+            assert!(
+                f * v >= 0.0,
+                "the force opposes the displacement: v {v}, F {f}"
+            );
+            if v.abs() < gap {
+                assert_eq!(f, 0.0, "inside the gap: v {v}, F {f}");
+            }
+            peak[side] = (peak[side].0.max(f.abs()), peak[side].1.max(v.abs()));
+        }
+    }
+    for (k, p) in sol.summary.shear_keys.iter().zip(peak) {
+        assert_eq!((k.peak_force, k.peak_deformation), p, "{}", k.side);
+        assert!(k.peak_deformation > gap, "the keys engage");
+    }
+}
+
+/// Bad shear-key tables are refused naming the key and its line.
+#[test]
+fn bad_shear_keys_are_refused_with_key_and_line() {
+    let start = BRIDGE_P_PLAN.find("[abutment.start.shear_keys]").unwrap();
+    let end = BRIDGE_P_PLAN[start..].find("\n\n").unwrap() + start;
+    let with = |table: &str| {
+        format!(
+            "{}[abutment.start.shear_keys]\n{table}{}",
+            &BRIDGE_P_PLAN[..start],
+            &BRIDGE_P_PLAN[end..]
+        )
+    };
+    let cases = [
+        (
+            "fy = 1e6\ngap = 0.01\n",
+            "shear_keys.k",
+            "is required",
+            "[abutment.start.shear_keys]",
+        ),
+        ("k = 2e8\nfy = -1.0\n", "shear_keys.fy", "> 0", "fy = -1.0"),
+        (
+            "k = 2e8\nfy = 1e6\ngap = -0.01\n",
+            "shear_keys.gap",
+            "[0, 1e3]",
+            "gap = -0.01",
+        ),
+        (
+            "k = 2e8\nfy = 1e6\nafter_yield = \"brittle\"\n",
+            "shear_keys.after_yield",
+            "recentering",
+            "after_yield = \"brittle\"",
+        ),
+    ];
+    for (table, key, why, bad) in cases {
+        let text = with(table);
+        let err = error(&text);
+        assert!(err.contains(key) && err.contains(why), "{table}: {err}");
+        let line = text.lines().position(|l| l == bad).unwrap() + 1;
+        assert!(
+            err.contains(&format!("walls.toml:{line}")),
+            "{table}: not line {line} in {err}"
+        );
+    }
+}

@@ -33,6 +33,7 @@ fn abutment(gap: f64, eps: f64) -> Option<BridgeAbutment> {
         restitution: eps,
         contact: JointContact::Rigid,
         backwall: None,
+        shear_keys: None,
     })
 }
 

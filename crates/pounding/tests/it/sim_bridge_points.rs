@@ -164,6 +164,7 @@ fn abutment() -> Option<BridgeAbutment> {
         restitution: 0.6,
         contact: JointContact::Rigid,
         backwall: None,
+        shear_keys: None,
     })
 }
 

@@ -56,6 +56,10 @@ impl BridgeModel {
 
     /// The direction into the soil of each backwall, start before end.
     pub(crate) fn wall_axes(&self) -> Vec<Vector> {
+        if !self.has_backwalls() {
+            // (no layout: the DOF map of a model not yet validated must not need one)
+            return Vec::new();
+        }
         let bodies = self.layout();
         let n = bodies.len();
         (0..2)
@@ -98,6 +102,28 @@ impl BridgeModel {
     /// The step must resolve each backfill's initial stiffness on its wall (it is held over the
     /// step): `h √(K_max / m_w) ≤ 1`.
     pub(super) fn check_backfill_step(&self, dt: Real) -> Result<(), SimError> {
+        let masses: Vec<Real> = self.layout().iter().map(|b| b.mass.mass).collect();
+        for (side, a) in self.abutments.iter().enumerate() {
+            let Some(k) = a.and_then(|a| a.shear_keys) else {
+                continue;
+            };
+            let m = masses[if side == 0 { 0 } else { masses.len() - 1 }];
+            let om = (k.k() / m).sqrt();
+            if dt * om > 1.0 {
+                return Err(SimError::invalid(
+                    "dt",
+                    dt,
+                    &format!(
+                        "the shear keys of abutment.{} (k {} N/m on a {} kg segment) are held \
+                         over each step and need dt <= {:.3e} s",
+                        ABUTMENT_SIDES[side],
+                        crate::output::float_token(k.k()),
+                        crate::output::float_token(m),
+                        1.0 / om
+                    ),
+                ));
+            }
+        }
         for (side, a) in self.abutments.iter().enumerate() {
             let Some(w) = a.and_then(|a| a.backwall) else {
                 continue;

@@ -47,7 +47,8 @@ impl BridgeModel {
                 }
             } else {
                 let prev = out[i - 1].end;
-                let gap = self.joints[i - 1].gap;
+                // (a model with too few joints is refused by `validate`; laid out without them)
+                let gap = self.joints.get(i - 1).map_or(0.0, |j| j.gap);
                 // turn the joint face's outward normal (−inward) onto the previous face's inward
                 // normal, then move its midpoint to the previous midpoint − gap ν
                 let (a, b) = (-jf.inward, prev.inward);
@@ -220,7 +221,9 @@ impl BridgeModel {
                         joint: pier.joint,
                         body,
                         k0: pier.column.k0,
-                        element: elements.bearings.iter().position(|b| b.body == body),
+                        elements: (0..elements.bearings.len())
+                            .filter(|&e| elements.bearings[e].body == body)
+                            .collect(),
                     }
                 })
                 .collect(),
@@ -291,6 +294,7 @@ impl BridgeModel {
                 restitution: model.restitution,
                 contact: model.contact,
                 backwall: None,
+                shear_keys: None,
             })
         };
         BridgeModel {
@@ -341,6 +345,7 @@ impl BridgeModel {
                     slot,
                     arm: p - bodies[i].centroid,
                     base: on[i][slot].map(|p| (self.cap_body(p), Vector::zeros())),
+                    axis: None,
                     law,
                     state: BearingState::default(),
                 });
@@ -359,6 +364,7 @@ impl BridgeModel {
                     slot: side,
                     arm: Vector::zeros(),
                     base: None,
+                    axis: None,
                     law: BilinearBearing::elastic_perfectly_plastic(p.k, p.fy).expect("validated"),
                     state: BearingState::default(),
                 });
@@ -370,17 +376,47 @@ impl BridgeModel {
                 });
             }
         }
+        let n = bodies.len();
+        for (side, a) in self.abutments.iter().enumerate() {
+            let Some(law) = a.and_then(|a| a.shear_keys) else {
+                continue;
+            };
+            let body = if side == 0 { 0 } else { n - 1 };
+            let face = if side == 0 {
+                &bodies[0].start
+            } else {
+                &bodies[n - 1].end
+            };
+            el.keys.push(crate::sim::elements::KeyAt {
+                side,
+                body,
+                arm: face.mid - bodies[body].centroid,
+                tangent: Vector::new(-face.inward.y, face.inward.x),
+                element: crate::element::shear_key::ShearKeyElement::new(law),
+                force: 0.0,
+            });
+        }
         for (p, pier) in self.piers.iter().enumerate() {
             let Some(fy) = pier.column.fy else { continue };
             let law = BilinearBearing::new(pier.column.k0, fy, pier.column.b).expect("validated");
-            el.bearings.push(crate::sim::elements::YieldingBearing {
-                body: self.cap_body(p),
-                slot: p,
-                arm: Vector::zeros(),
-                base: None,
-                law,
-                state: BearingState::default(),
-            });
+            // per axis: along the joint's face normal and along the face (one member each);
+            // coupled: one member with a yield circle
+            let along = bodies[pier.joint].end.inward;
+            let axes = match pier.column.per_axis {
+                true => vec![Some(along), Some(Vector::new(-along.y, along.x))],
+                false => vec![None],
+            };
+            for axis in axes {
+                el.bearings.push(crate::sim::elements::YieldingBearing {
+                    body: self.cap_body(p),
+                    slot: p,
+                    arm: Vector::zeros(),
+                    base: None,
+                    axis,
+                    law,
+                    state: BearingState::default(),
+                });
+            }
         }
         for (k, j) in self.joints.iter().enumerate() {
             for r in &j.restrainers {

@@ -252,6 +252,11 @@ pub struct BridgeAbutment {
     /// A backwall that slides into backfill and piles ([`Backwall`]; `None`: the abutment face
     /// is the ground).
     pub backwall: Option<Backwall>,
+    /// Exterior shear keys across the deck end ([`crate::element::shear_key::ShearKey`]: a gap
+    /// and an elastic–perfectly-plastic key on each side; `None`: none). They act on the
+    /// transverse displacement `v = u·t` of the segment's outer-face midpoint relative to the
+    /// abutment (`t` along the face, [`super::view::AbutmentFace::tangent`]).
+    pub shear_keys: Option<crate::element::shear_key::ShearKey>,
 }
 
 /// Which abutment.

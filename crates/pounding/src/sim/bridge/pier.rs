@@ -42,6 +42,10 @@ pub struct PierColumn {
     pub fy: Option<Real>,
     /// Post-yield stiffness ratio `b ∈ [0, 1)`.
     pub b: Real,
+    /// Yield along each of the column's two axes apart (along the joint's face normal and along
+    /// the face: OpenSees `Steel01` on each, a square yield surface), else coupled in the plan
+    /// (a yield circle of radius `F_y`).
+    pub per_axis: bool,
 }
 
 /// A pier under a joint (module doc).

@@ -143,6 +143,13 @@ pub(crate) fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> 
         "abutments": abutments,
         "segments": segments,
         "piers": piers,
+        "shear_keys": s.shear_keys.iter().map(|k| json!({
+            "abutment": k.side,
+            "peak_force_n": json_float(k.peak_force),
+            "peak_deformation_m": json_float(k.peak_deformation),
+            "yielded": k.yielded,
+            "dissipated_j": json_float(k.dissipated),
+        })).collect::<Vec<_>>(),
         "peak_seat_displacement_m": json_float(s.peak_seat_displacement),
         "governing_seat": governing_seat_json(s),
         "seats": s.seats.iter().map(seat_json).collect::<Vec<_>>(),
@@ -155,13 +162,15 @@ pub(crate) fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> 
             "input": json_float(e.input),
             "kinetic": json_float(e.kinetic),
             "strain": json_float(
-                e.potential + (e.elements - hyst - s.restrainer_work - s.backfill_work)
+                e.potential
+                    + (e.elements - hyst - s.restrainer_work - s.backfill_work - s.shear_key_work)
             ),
             "viscous_dissipation": json_float(e.viscous),
             "contact_dissipation": json_float(e.contact),
             "hysteretic_dissipation": json_float(hyst),
             "restrainer_work": json_float(s.restrainer_work),
             "backfill_work": json_float(s.backfill_work),
+            "shear_key_work": json_float(s.shear_key_work),
             "max_input": json_float(s.max_input_energy),
         },
         "ground_motion": super::ground_json(&setup.records, &setup.problem.ground),

@@ -72,6 +72,7 @@ pub const SIM_OUTPUTS: &[&str] = &[
     "joint_slip.csv",
     "piers.csv",
     "backwalls.csv",
+    "shear_keys.csv",
     "displacements.png",
     "layout.png",
     "rotations.png",

@@ -15,6 +15,13 @@
 //! # skew_deg = 0.0   # [deg]
 //! piles_k = 6.3e7     # piles, elastic-perfectly-plastic both ways: stiffness [N/m]
 //! piles_fy = 1.071e6  #   yield force [N]
+//!
+//! [abutment.start.shear_keys]   # exterior keys across the deck end (OpenSees ElasticPPGap pair)
+//! k = 2.0e8           # [N/m]
+//! fy = 1.8e6          # capacity of each key [N]
+//! gap = 0.015         # on each side [m]
+//! after_yield = "permanent"  # a yielded key keeps its set (OpenSees `damage`, the default), or
+//!                     # "recentering" (OpenSees' default `noDamage`)
 //! ```
 
 use super::{Sp, Val};
@@ -39,6 +46,56 @@ pub(super) struct BackwallSec {
     skew_deg: Sp<f64>,
     piles_k: Sp<f64>,
     piles_fy: Sp<f64>,
+}
+
+/// One shear-keys table as read by `serde`.
+#[derive(Deserialize, Default, Clone, Debug)]
+#[serde(deny_unknown_fields, default)]
+pub(super) struct ShearKeysSec {
+    k: Sp<f64>,
+    fy: Sp<f64>,
+    gap: Sp<f64>,
+    after_yield: Sp<String>,
+}
+
+/// The shear keys of abutment `side` from their table.
+pub(super) fn shear_keys(
+    v: &Val,
+    side: usize,
+    t: &Spanned<ShearKeysSec>,
+) -> Result<crate::element::shear_key::ShearKey, ScenarioError> {
+    let name = crate::sim::bridge::ABUTMENT_SIDES[side];
+    let key = |k: &str| format!("abutment.{name}.shear_keys.{k}");
+    let s = t.get_ref();
+    let pos = |k: &str, x: &Sp<f64>| match x {
+        None => Err(v.err(key(k), Some(v.line(t)), format!("{} is required", key(k)))),
+        some => v.pos(key(k), some, None),
+    };
+    let k = pos("k", &s.k)?;
+    let fy = pos("fy", &s.fy)?;
+    let gap = v.gap(key("gap"), &s.gap, Some(0.0))?;
+    use crate::element::restrainer::SlackGrowth;
+    let growth = match s
+        .after_yield
+        .as_ref()
+        .map(|r| (r.get_ref().as_str(), v.line(r)))
+    {
+        None | Some(("permanent", _)) => SlackGrowth::Permanent,
+        Some(("recentering", _)) => SlackGrowth::Recentering,
+        Some((other, line)) => {
+            return Err(v.err(
+                key("after_yield"),
+                Some(line),
+                format!(
+                    "invalid {} {other:?}: use \"permanent\" (OpenSees ElasticPPGap damage) or \
+                     \"recentering\" (its default, noDamage)",
+                    key("after_yield")
+                ),
+            ));
+        }
+    };
+    crate::element::shear_key::ShearKey::new(k, fy, gap, growth)
+        .map_err(|e| v.err(key(e.key()), Some(v.line(t)), e.to_string()))
 }
 
 /// The backwall of abutment `side` from its table.

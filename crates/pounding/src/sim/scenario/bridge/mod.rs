@@ -180,6 +180,8 @@ struct AbutmentSec {
     contact: Option<Spanned<SiteTable>>,
     /// Its backwall (`[abutment.start.backwall]`).
     backwall: Option<Spanned<backwall::BackwallSec>>,
+    /// Its exterior shear keys (`[abutment.start.shear_keys]`).
+    shear_keys: Option<Spanned<backwall::ShearKeysSec>>,
 }
 
 /// What [`Scenario::build_bridge`] returns: the problem and settings of

@@ -7,6 +7,7 @@
 //! k0 = 8.0e7          # column stiffness in each plan direction [N/m]
 //! fy = 1.2e6          # optional: column yield force [N] (bilinear, kinematic hardening)
 //! b = 0.02            # post-yield stiffness ratio (with fy; default 0)
+//! yield = "per-axis"  # Steel01 along and across the joint apart (default), or "plan": a circle
 //! damping = 1.0e6     # column dashpot in each plan direction [N s/m] (default 0)
 //! ```
 
@@ -26,6 +27,8 @@ pub(super) struct PierSec {
     fy: Sp<f64>,
     b: Sp<f64>,
     damping: Sp<f64>,
+    #[serde(rename = "yield")]
+    yield_rule: Sp<String>,
 }
 
 /// The piers of the `[[pier]]` tables; `joints`: the bridge's joint count.
@@ -105,10 +108,46 @@ pub(super) fn piers(
             "must lie in [0, 1)",
         )?;
         let damping = v.nonneg(pk("damping"), &s.damping, Some(0.0))?;
+        let per_axis = match s
+            .yield_rule
+            .as_ref()
+            .map(|r| (r.get_ref().as_str(), v.line(r)))
+        {
+            None | Some(("per-axis", _)) => true,
+            Some(("plan", _)) => false,
+            Some((other, line)) => {
+                return Err(v.err(
+                    pk("yield"),
+                    Some(line),
+                    format!(
+                        "invalid {} {other:?}: use \"per-axis\" or \"plan\"",
+                        pk("yield")
+                    ),
+                ));
+            }
+        };
+        if fy.is_none()
+            && let Some(r) = &s.yield_rule
+        {
+            return Err(v.err(
+                pk("yield"),
+                Some(v.line(r)),
+                format!(
+                    "{} applies to a yielding column: give {} too",
+                    pk("yield"),
+                    pk("fy")
+                ),
+            ));
+        }
         out.push(Pier {
             joint,
             cap_mass,
-            column: PierColumn { k0, fy, b },
+            column: PierColumn {
+                k0,
+                fy,
+                b,
+                per_axis,
+            },
             damping,
         });
     }
@@ -131,6 +170,7 @@ pub(super) fn pier_line(
         "fy" => s.fy.as_ref().map(|x| v.line(x)),
         "b" => s.b.as_ref().map(|x| v.line(x)),
         "damping" => s.damping.as_ref().map(|x| v.line(x)),
+        "yield" => s.yield_rule.as_ref().map(|x| v.line(x)),
         _ => None,
     };
     own.or(Some(v.line(t)))

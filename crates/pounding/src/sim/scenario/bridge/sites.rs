@@ -106,6 +106,10 @@ pub(super) fn sites(
                 None => None,
                 Some(w) => Some(super::backwall::backwall(v, side, w)?),
             },
+            shear_keys: match &a.shear_keys {
+                None => None,
+                Some(t) => Some(super::backwall::shear_keys(v, side, t)?),
+            },
         });
         next += 1;
     }
