@@ -203,3 +203,25 @@ def test_the_governing_joint_seat_equals_the_cli(cli, root, tmp_path):
     check = pounding.check(str(path))
     ends = list(check["ends"]["end"])
     assert ends == [s["end"] for s in want["seats"]]
+
+
+def test_piers_backwalls_and_shear_keys_equal_the_cli(cli, root, tmp_path):
+    """The plan bridge with piers, backwalls and shear keys: Python's summary (piers[],
+    abutments[].backwall, shear_keys[]) and its tables piers, backwalls and shear_keys are the
+    CLI's summary.json and files, number for number."""
+    path = root / "examples" / "bridge-piers.toml"
+    cli("simulate", path, "--out", tmp_path / "p", "--duration", "4")
+    want = json.loads((tmp_path / "p" / "summary.json").read_text())
+    r = pounding.simulate(str(path), duration=4.0)
+    assert r.summary["piers"] == want["piers"] and len(r.summary["piers"]) == 2
+    assert r.summary["shear_keys"] == want["shear_keys"]
+    assert [a["backwall"] for a in r.summary["abutments"]] == [
+        a["backwall"] for a in want["abutments"]
+    ]
+    assert {"piers", "backwalls", "shear_keys"} <= set(r.tables)
+    for name in ("piers", "backwalls", "shear_keys"):
+        lines = (tmp_path / "p" / f"{name}.csv").read_text().splitlines()
+        cols = r.tables[name]
+        assert list(cols) == lines[0].split(",")
+        data = np.array([[float(x) for x in l.split(",")] for l in lines[1:]])
+        assert np.array_equal(np.column_stack(list(cols.values())), data), name

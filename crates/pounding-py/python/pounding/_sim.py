@@ -98,7 +98,10 @@ class SimulationResult:
     def tables(self) -> Dict[str, Dict[str, np.ndarray]]:
         """The run's other tables, as the CLI's ``<name>.csv``: ``"bearings"`` (each bearing's
         deformation and the force it exerts on its segment), ``"restrainers"`` (each
-        restrainer's elongation and tension), ``"joint_slip"`` (each joint's slip); name →
+        restrainer's elongation and tension), ``"joint_slip"`` (each joint's slip), and for a
+        bridge that has them ``"piers"`` (each cap's displacement and its column's force),
+        ``"backwalls"`` (each backwall's displacement, backfill and pile forces), ``"shear_keys"``
+        (each abutment's deck-end transverse displacement and key force); name →
         column name → read-only float64 array of shape ``(steps stored,)``. The values come
         from the solver as they are (no text in between)."""
         if self._tables is None:
