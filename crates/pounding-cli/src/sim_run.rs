@@ -72,14 +72,14 @@ pub fn run(
         Setup::TwoDecks(s) => {
             super::sim_plots::write_all(out, &s.problem, &sol)
                 .map_err(|e| anyhow!("plotting: {e}"))?;
-            ("two decks".to_string(), super::sim_plots::FIGURES)
+            ("two decks".to_string(), super::sim_plots::FIGURES.to_vec())
         }
         Setup::Bridge(s) => {
-            crate::plots::bridge::write_all(out, &s.problem.model, &sol)
+            let figures = crate::plots::bridge::write_all(out, &s.problem.model, &sol)
                 .map_err(|e| anyhow!("plotting: {e}"))?;
             let n = sol.n_segments;
             let what = format!("a bridge of {n} segment{}", if n == 1 { "" } else { "s" });
-            (what, crate::plots::bridge::FIGURES)
+            (what, figures)
         }
     };
     let code_check = crate::sim_report_check::section(check.as_ref(), &sol.summary.seats);
@@ -91,7 +91,7 @@ pub fn run(
         what,
         scenario,
         &summary,
-        figures,
+        &figures,
         &files,
         (
             Some(&traj),

@@ -5,7 +5,8 @@
 //!   and, with abutments, the abutment gaps;
 //! * `displacements.png` — every segment's centroid displacement magnitude;
 //! * `plan.png` — plan view of the reference pose with each corner's path, exaggerated;
-//! * `energy.png` — the energy balance.
+//! * `energy.png` — the energy balance;
+//! * `hysteresis.png` — with piers, backwalls or shear keys: their force–deformation loops.
 
 /// The figures [`write_all`] draws, in order.
 pub const FIGURES: &[&str] = &[
@@ -58,8 +59,28 @@ fn pts(t: &[Real], v: &[Real]) -> Vec<(Real, Real)> {
     t.iter().copied().zip(v.iter().copied()).collect()
 }
 
-/// Writes the bridge figures into `out`.
-pub fn write_all(out: &Path, model: &BridgeModel, sol: &BridgeSolution) -> R {
+/// Drawn besides [`FIGURES`] for a bridge with piers, backwalls or shear keys
+/// ([`crate::plots::bridge_loops`]).
+pub const LOOPS: &str = "hysteresis.png";
+
+/// Writes the bridge figures into `out`; returns their names ([`FIGURES`], then [`LOOPS`] when
+/// drawn).
+pub fn write_all(out: &Path, model: &BridgeModel, sol: &BridgeSolution) -> R<Vec<&'static str>> {
+    write_figures(out, model, sol)?;
+    let mut names = FIGURES.to_vec();
+    let tables = sol.tables();
+    if crate::plots::bridge_loops::has_loops(&tables) {
+        let size = crate::plots::bridge_loops::size(&tables);
+        save_white_png(out, LOOPS, size, |root| {
+            crate::plots::bridge_loops::draw(root, &tables)
+        })?;
+        names.push(LOOPS);
+    }
+    Ok(names)
+}
+
+/// The figures of [`FIGURES`].
+fn write_figures(out: &Path, model: &BridgeModel, sol: &BridgeSolution) -> R {
     register();
     let t_end = sol.t.last().copied().unwrap_or(1.0).max(1e-9);
     let pts = |v: &[Real]| pts(&sol.t, v);

@@ -1,6 +1,7 @@
 //! Drawing code of the figures, one module per kind (the style lives in [`crate::plot_style`]).
 
 pub(crate) mod bridge;
+pub(crate) mod bridge_loops;
 pub(crate) mod bridge_zoom;
 pub(crate) mod sim_batch;
 pub(crate) mod sim_layout;

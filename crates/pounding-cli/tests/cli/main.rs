@@ -3,6 +3,7 @@
 mod bridge;
 mod bridge_compare;
 mod impact;
+mod substructure;
 
 use std::process::Command;
 

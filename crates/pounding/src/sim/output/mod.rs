@@ -85,6 +85,7 @@ pub const SIM_OUTPUTS: &[&str] = &[
     "joint_openings.png",
     "plan.png",
     "joint_zoom.png",
+    "hysteresis.png",
     "report.html",
     "trajectories.json",
 ];

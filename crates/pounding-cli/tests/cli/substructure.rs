@@ -1,0 +1,84 @@
+//! `pounding simulate` of a bridge with piers, backwalls and shear keys: the member tables,
+//! `hysteresis.png` in the report, the summary's arrays, and a stale-file check against a plain
+//! bridge run; a bad pier is refused (exit 2, key and line, nothing written).
+
+use crate::{run_capture, scratch_with};
+use std::collections::BTreeSet;
+
+const PLAN: &str = include_str!("../../../../examples/bridge-piers.toml");
+const CURVED_5: &str = include_str!("../../../../examples/viaduct-curved-5.toml");
+
+fn files(dir: &std::path::Path) -> BTreeSet<String> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect()
+}
+
+#[test]
+fn piers_backwalls_and_keys_write_their_tables_and_loops() {
+    let short = PLAN.replace("[time]\n", "[time]\nduration = 3.0\n");
+    let plain = CURVED_5.replace("history_every = 10", "history_every = 10\nduration = 2.0");
+    let bad = PLAN.replace("cap_mass = 2.0e5", "cap_mass = -2.0e5");
+    let d = scratch_with(
+        "substructure",
+        "run",
+        &[
+            ("plan.toml", &short),
+            ("plain.toml", &plain),
+            ("bad.toml", &bad),
+        ],
+    );
+    let p = |f: &str| d.join(f).to_str().unwrap().to_string();
+    let (code, _, err) = run_capture(&["simulate", &p("plan.toml"), "--out", &p("o")]);
+    assert_eq!(code, Some(0), "{err}");
+    let have = files(&d.join("o"));
+    for f in [
+        "piers.csv",
+        "backwalls.csv",
+        "shear_keys.csv",
+        "hysteresis.png",
+        "report.html",
+    ] {
+        assert!(have.contains(f), "{f} missing: {have:?}");
+    }
+    let report = std::fs::read_to_string(d.join("o/report.html")).unwrap();
+    for f in [
+        "hysteresis.png",
+        "piers.csv",
+        "backwalls.csv",
+        "shear_keys.csv",
+    ] {
+        assert!(report.contains(f), "the report does not show {f}");
+    }
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("o/summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["piers"].as_array().unwrap().len(), 2);
+    assert_eq!(summary["shear_keys"].as_array().unwrap().len(), 2);
+    assert!(summary["abutments"][0]["backwall"]["peak_backfill_force_n"].is_number());
+    // a plain bridge into the same directory leaves none of them behind
+    let (code, _, err) = run_capture(&["simulate", &p("plain.toml"), "--out", &p("o")]);
+    assert_eq!(code, Some(0), "{err}");
+    let have = files(&d.join("o"));
+    for f in [
+        "piers.csv",
+        "backwalls.csv",
+        "shear_keys.csv",
+        "hysteresis.png",
+    ] {
+        assert!(!have.contains(f), "stale {f}");
+    }
+    // a bad pier: exit 2, the key and its line, nothing written
+    let (code, _, err) = run_capture(&["simulate", &p("bad.toml"), "--out", &p("b")]);
+    assert_eq!(code, Some(2), "{err}");
+    let line = bad
+        .lines()
+        .position(|l| l.starts_with("cap_mass = -2.0e5"))
+        .unwrap()
+        + 1;
+    assert!(
+        err.contains("pier[0].cap_mass") && err.contains(&format!("bad.toml:{line}")),
+        "{err}"
+    );
+    assert!(!d.join("b").exists());
+}
