@@ -13,12 +13,15 @@ use pounding::sim::table::Table;
 
 type R<T = ()> = DrawResult<T>;
 
-/// One loop panel: a title, axis labels, and `(label, colour, (deformation, force) points)`.
+/// One loop: its label, colour and `(deformation, force)` points.
+type Line = (String, RGBColor, Vec<(Real, Real)>);
+
+/// One loop panel: a title, axis labels, and its loops.
 struct Panel {
     title: String,
     x: &'static str,
     y: &'static str,
-    lines: Vec<(String, RGBColor, Vec<(Real, Real)>)>,
+    lines: Vec<Line>,
 }
 
 /// The panels of `tables` (none without piers, backwalls or shear keys).
