@@ -57,6 +57,34 @@ pub fn bind(
             s.kind,
             LimitKind::JointForce { .. } | LimitKind::JointOpening(_)
         );
+        let missing = match s.kind {
+            LimitKind::PierDrift(_) if model.piers.is_empty() => Some("piers"),
+            LimitKind::Backwall(_)
+                if !model
+                    .abutments
+                    .iter()
+                    .flatten()
+                    .any(|a| a.backwall.is_some()) =>
+            {
+                Some("abutment backwalls")
+            }
+            LimitKind::ShearKey
+                if !model
+                    .abutments
+                    .iter()
+                    .flatten()
+                    .any(|a| a.shear_keys.is_some()) =>
+            {
+                Some("shear keys")
+            }
+            _ => None,
+        };
+        if let Some(what) = missing {
+            return Err(err(
+                "kind",
+                format!("this bridge has no {what}: the limit state has nothing to read"),
+            ));
+        }
         if needs_joints && model.joints.is_empty() {
             return Err(err(
                 "kind",
@@ -67,6 +95,12 @@ pub fn bind(
         let capacity =
             match s.kind {
                 LimitKind::Unseating => 1.0,
+                LimitKind::ShearKey => model
+                    .abutments
+                    .iter()
+                    .flatten()
+                    .filter_map(|a| a.shear_keys.map(|k| k.fy()))
+                    .fold(Real::INFINITY, Real::min),
                 LimitKind::JointForce {
                     capacity_n,
                     capacity_ns,
@@ -93,7 +127,9 @@ pub fn bind(
                 }
                 LimitKind::BearingDeformation(c)
                 | LimitKind::Rotation(c)
-                | LimitKind::JointOpening(c) => c,
+                | LimitKind::JointOpening(c)
+                | LimitKind::PierDrift(c)
+                | LimitKind::Backwall(c) => c,
             };
         out.push(BoundLimit {
             state: s.clone(),
@@ -125,6 +161,14 @@ impl BoundLimit {
                 max(&mut s.segments.iter().map(|g| g.peak_rotation.to_degrees()))
             }
             LimitKind::JointOpening(_) => max(&mut s.joints.iter().map(|j| j.peak_opening)),
+            LimitKind::PierDrift(_) => max(&mut s.piers.iter().map(|p| p.peak_drift_magnitude)),
+            LimitKind::Backwall(_) => max(&mut s
+                .abutments
+                .iter()
+                .flatten()
+                .filter_map(|a| a.backwall.as_ref().map(|w| w.peak_displacement))),
+            // the largest key force over the smallest capacity (1 when a key yields)
+            LimitKind::ShearKey => max(&mut s.shear_keys.iter().map(|k| k.peak_force)),
         }
     }
 
@@ -159,6 +203,21 @@ impl BoundLimit {
                 "peak opening of any joint above {} m; ratio = largest / limit",
                 f(c)
             ),
+            LimitKind::PierDrift(c) => format!(
+                "peak drift (cap displacement √(x² + y²)) of any pier above {} m; ratio = \
+                 largest / limit",
+                f(c)
+            ),
+            LimitKind::Backwall(c) => format!(
+                "peak displacement of any backwall into the soil above {} m; ratio = largest / \
+                 limit",
+                f(c)
+            ),
+            LimitKind::ShearKey => format!(
+                "a shear key reaches its capacity and yields; ratio = largest key force / {} N \
+                 (the smallest capacity)",
+                f(self.capacity)
+            ),
         }
     }
 
@@ -171,6 +230,7 @@ impl BoundLimit {
         }
         let exceeded = match self.state.kind {
             LimitKind::Unseating => s.unseated,
+            LimitKind::ShearKey => s.shear_keys.iter().any(|k| k.yielded),
             _ => ratio > 1.0,
         };
         (Some(exceeded), ratio)

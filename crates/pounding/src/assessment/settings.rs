@@ -71,6 +71,12 @@ pub enum LimitKind {
     Rotation(Real),
     /// Peak opening of any joint above `limit_m` \[m\].
     JointOpening(Real),
+    /// Peak drift (cap displacement magnitude) of any pier above `limit_m` \[m\].
+    PierDrift(Real),
+    /// Peak displacement of any backwall into the soil above `limit_m` \[m\].
+    Backwall(Real),
+    /// Any shear key reaches its capacity (yields).
+    ShearKey,
 }
 
 /// A named limit state.
@@ -468,11 +474,11 @@ fn limit_state(cx: &Cx, i: usize, l: &Spanned<LimitSec>) -> Result<LimitState, A
     .collect();
     let kind_name = s.kind.get_ref().as_str();
     let allowed: &[&str] = match kind_name {
-        "unseating" => &[],
+        "unseating" | "shear_key" => &[],
         "joint_force" => &["capacity_n", "capacity_ns"],
-        "bearing_deformation" | "joint_opening" => &["limit_m"],
+        "bearing_deformation" | "joint_opening" | "pier_drift" | "backwall" => &["limit_m"],
         "rotation" => &["limit_deg"],
-        o => return Err(cx.err(key("kind"), &s.kind, format!("unknown kind {o:?}: use unseating, joint_force, bearing_deformation, rotation or joint_opening"))),
+        o => return Err(cx.err(key("kind"), &s.kind, format!("unknown kind {o:?}: use unseating, joint_force, bearing_deformation, rotation, joint_opening, pier_drift, backwall or shear_key"))),
     };
     for (k, v) in &given {
         if !allowed.contains(k) {
@@ -529,6 +535,9 @@ fn limit_state(cx: &Cx, i: usize, l: &Spanned<LimitSec>) -> Result<LimitState, A
         }
         "bearing_deformation" => LimitKind::BearingDeformation(need("limit_m")?),
         "joint_opening" => LimitKind::JointOpening(need("limit_m")?),
+        "pier_drift" => LimitKind::PierDrift(need("limit_m")?),
+        "backwall" => LimitKind::Backwall(need("limit_m")?),
+        "shear_key" => LimitKind::ShearKey,
         _ => LimitKind::Rotation(need("limit_deg")?),
     };
     Ok(LimitState {

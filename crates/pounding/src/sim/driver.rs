@@ -226,6 +226,8 @@ pub(crate) struct WallPeak {
 pub(crate) struct PierPeak {
     /// `max_t |x_c|`, `max_t |y_c|` of the cap \[m\].
     pub drift: [Real; 2],
+    /// `max_t |(x_c, y_c)|` \[m\].
+    pub drift_magnitude: Real,
     /// `max_t |f|` of the column's force \[N\].
     pub force: Real,
     /// Whether the column ever yielded.
@@ -354,6 +356,7 @@ impl Peaks {
             let (u, f) = p.drift_and_force(&br.dofs, q.as_slice(), el);
             pk.drift[0] = pk.drift[0].max(u.x.abs());
             pk.drift[1] = pk.drift[1].max(u.y.abs());
+            pk.drift_magnitude = pk.drift_magnitude.max(u.norm());
             pk.force = pk.force.max(f.norm());
             for &e in &p.elements {
                 pk.yielded |= el.bearings[e].state.u_p != Vector::zeros();

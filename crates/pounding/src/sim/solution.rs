@@ -109,6 +109,8 @@ pub struct PierSummary {
     pub joint: usize,
     /// `max_t |x_c|`, `max_t |y_c|` of the cap \[m\].
     pub peak_drift: [Real; 2],
+    /// `max_t |(x_c, y_c)|` \[m\].
+    pub peak_drift_magnitude: Real,
     /// `(x_c, y_c)` at the end \[m\].
     pub residual_drift: [Real; 2],
     /// `max_t |f|` of the column's spring force (its dashpot's left out) \[N\].
@@ -451,6 +453,7 @@ pub(crate) fn solution(
             PierSummary {
                 joint: p.joint + 1,
                 peak_drift: pk.drift,
+                peak_drift_magnitude: pk.drift_magnitude,
                 residual_drift: [x, y],
                 peak_column_force: pk.force,
                 yielded: pk.yielded,

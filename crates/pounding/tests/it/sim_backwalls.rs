@@ -338,3 +338,73 @@ fn plan_bridge_p_within_the_opensees_band() {
     band("deck 2 along", pk(4), (0.09902, 0.09994), 0.05);
     band("deck 2 across", pk(3), (0.1543, 0.1544), 0.05);
 }
+
+/// Fragility limit states of the substructure: `pier_drift`, `backwall` and `shear_key` read the
+/// run's piers, backwalls and keys (ratio = the largest demand over the limit; a key that yields
+/// exceeds), and are refused on a bridge without them, naming the limit state's kind.
+#[test]
+fn substructure_limit_states_read_the_members() {
+    use pounding::assessment::FragilitySettings;
+    use pounding::assessment::limit::bind;
+    let frag = "\n[fragility]\nim = \"pga\"\nlevels_g = [0.1, 0.3]\n\n[[limit_state]]\nname = \"drift\"\n\
+                kind = \"pier_drift\"\nlimit_m = 0.02\n\n[[limit_state]]\nname = \"wall\"\n\
+                kind = \"backwall\"\nlimit_m = 0.03\n\n[[limit_state]]\nname = \"keys\"\n\
+                kind = \"shear_key\"\n";
+    let text = BRIDGE_P_PLAN
+        .replace("dt = 5e-5 ", "dt = 1e-4 ")
+        .replace("[time]\n", "[time]\nduration = 8.0\n")
+        + frag;
+    let f = FragilitySettings::from_scenario(&text, "s.toml").unwrap();
+    let setup = Scenario::from_toml(&text, "s.toml")
+        .unwrap()
+        .build_bridge()
+        .unwrap();
+    let lims = bind(&f.limit_states, &setup.problem.model, "s.toml").unwrap();
+    let s = setup.run().unwrap().summary;
+    let drift = s
+        .piers
+        .iter()
+        .map(|p| p.peak_drift_magnitude)
+        .fold(0.0, f64::max);
+    let wall = s
+        .abutments
+        .iter()
+        .flatten()
+        .map(|a| a.backwall.as_ref().unwrap().peak_displacement)
+        .fold(0.0, f64::max);
+    let key = s
+        .shear_keys
+        .iter()
+        .map(|k| k.peak_force)
+        .fold(0.0, f64::max);
+    for (l, want) in lims.iter().zip([drift / 0.02, wall / 0.03, key / 1.8e6]) {
+        let (exceeded, ratio) = l.evaluate(&s);
+        assert_eq!(ratio, want, "{}", l.state.name);
+        let keys_yield = s.shear_keys.iter().any(|k| k.yielded);
+        let want_exceeded = if l.state.name == "keys" {
+            keys_yield
+        } else {
+            want > 1.0
+        };
+        assert_eq!(exceeded, Some(want_exceeded), "{}", l.state.name);
+    }
+    assert!(
+        s.piers
+            .iter()
+            .all(|p| p.peak_drift_magnitude >= p.peak_drift[0].max(p.peak_drift[1]))
+    );
+    // on a bridge without piers, backwalls or keys: refused naming the kind
+    let plain = include_str!("../../../../examples/viaduct-1d.toml").to_string() + frag;
+    let f = FragilitySettings::from_scenario(&plain, "p.toml").unwrap();
+    let setup = Scenario::from_toml(&plain, "p.toml")
+        .unwrap()
+        .build_bridge()
+        .unwrap();
+    let e = bind(&f.limit_states, &setup.problem.model, "p.toml")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("limit_state[0].kind") && e.contains("no piers"),
+        "{e}"
+    );
+}

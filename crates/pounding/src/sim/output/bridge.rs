@@ -122,6 +122,7 @@ pub(crate) fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> 
                 "joint": p.joint,
                 "peak_drift_x_m": json_float(p.peak_drift[0]),
                 "peak_drift_y_m": json_float(p.peak_drift[1]),
+                "peak_drift_m": json_float(p.peak_drift_magnitude),
                 "residual_drift_x_m": json_float(p.residual_drift[0]),
                 "residual_drift_y_m": json_float(p.residual_drift[1]),
                 "residual_drift_m": json_float(p.residual_drift[0].hypot(p.residual_drift[1])),
