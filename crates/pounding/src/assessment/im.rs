@@ -128,11 +128,23 @@ pub struct PeriodInfo {
     pub segment: usize,
     /// `ω_1` of that segment \[rad/s\].
     pub omega: Real,
+    /// The period is the whole bridge's (piers or backwalls couple the segments; `segment` is
+    /// then 0).
+    pub whole_bridge: bool,
 }
 
 impl PeriodInfo {
     /// One line for stdout and the report.
     pub fn describe(&self) -> String {
+        if self.whole_bridge {
+            return format!(
+                "T1 = {} s: the first-mode period of the whole bridge (segments, pier caps and \
+                 backwalls on the bearings, columns and piles at their initial stiffness; omega1 = \
+                 {} rad/s; joints open, no contact, no backfill)",
+                crate::output::float_token(self.period),
+                crate::output::float_token(self.omega)
+            );
+        }
         format!(
             "T1 = {} s: the longest first-mode period of the segments on their bearings \
              (segment {}, mode 1, omega1 = {} rad/s; joints open, no contact)",
@@ -143,12 +155,33 @@ impl PeriodInfo {
     }
 }
 
-/// The bridge's fundamental period: the segments are coupled only by contact and restrainers,
+/// The bridge's fundamental period. With piers or backwalls, the first-mode period of the whole
+/// coupled system ([`BridgeModel::system_frequencies`]). Otherwise the segments are coupled only
+/// by contact and restrainers,
 /// so with the joints open each segment vibrates on its own bearings; the fundamental period is
 /// the longest first-mode period `2π / ω_1` over the segments
 /// ([`BridgeModel::segment_frequencies`], initial bearing stiffness). A segment free to slide or
 /// spin (`ω_1 = 0`) has no period: an error.
 pub fn fundamental_period(model: &BridgeModel) -> Result<PeriodInfo, AssessmentError> {
+    let whole = model
+        .system_frequencies()
+        .map_err(|e| AssessmentError::Model(e.to_string()))?;
+    if let Some(om) = whole {
+        let w = om.iter().copied().find(|w| *w > 0.0 && w.is_finite());
+        let w = w.filter(|_| om[0] > 0.0).ok_or_else(|| {
+            AssessmentError::Model(
+                "the bridge is free to slide or spin on its bearings and piers (a zero natural \
+                 frequency): period_s = \"model\" cannot be used; give period_s in seconds"
+                    .into(),
+            )
+        })?;
+        return Ok(PeriodInfo {
+            period: 2.0 * std::f64::consts::PI / w,
+            segment: 0,
+            omega: w,
+            whole_bridge: true,
+        });
+    }
     let om = model
         .segment_frequencies()
         .map_err(|e| AssessmentError::Model(e.to_string()))?;
@@ -171,5 +204,6 @@ pub fn fundamental_period(model: &BridgeModel) -> Result<PeriodInfo, AssessmentE
         period: 2.0 * std::f64::consts::PI / w,
         segment: i + 1,
         omega: w,
+        whole_bridge: false,
     })
 }

@@ -195,6 +195,12 @@ pub(crate) struct Elements {
     pub backfills: Vec<BackfillAt>,
     /// Work done on the backfills.
     pub w_backfill: Real,
+    /// Per yielding member: the work done on it, `Σ ½ (f_k + f_{k+1})·(u_{k+1} − u_k)` over the
+    /// committed steps (its own share of the bearings' booked work, for reports: on a coupled
+    /// system the booking per body splits a bearing on a cap between its two bodies).
+    pub w_member: Vec<Real>,
+    /// Per yielding member: its committed `(u, f)`.
+    pub member_state: Vec<(Vector, Vector)>,
     /// Shear keys at the abutments.
     pub keys: Vec<KeyAt>,
     /// Work done on the shear keys.
@@ -374,9 +380,17 @@ impl Elements {
 
     /// Commits the return mappings at the new state `q` (`pose`: the pose at `q`).
     pub fn commit(&mut self, q: &State, pose: &Pose, bodies: &[SegmentBody]) {
-        for b in &mut self.bearings {
+        if self.w_member.len() != self.bearings.len() {
+            self.w_member = vec![0.0; self.bearings.len()];
+            self.member_state = vec![(Vector::zeros(), Vector::zeros()); self.bearings.len()];
+        }
+        for (i, b) in self.bearings.iter_mut().enumerate() {
             let u = b.deformation(&self.dofs, q);
             b.state = b.law.response(&u, &b.state).trial;
+            let f = u * b.law.k0() - b.state.u_p * ((1.0 - b.law.b()) * b.law.k0());
+            let (u0, f0) = self.member_state[i];
+            self.w_member[i] += 0.5 * (f0 + f).dot(&(u - u0));
+            self.member_state[i] = (u, f);
         }
         for b in &mut self.backfills {
             let resp = b.element.trial(q[self.dofs.start(b.body)]);
@@ -393,6 +407,12 @@ impl Elements {
             let resp: RestrainerResponse = c.element.trial((pb - pa).norm() - c.length);
             c.element.commit(&resp);
         }
+    }
+
+    /// The energy yielding member `i` dissipated: the work done on it less what it stores.
+    pub fn member_dissipation(&self, i: usize) -> Real {
+        let b = &self.bearings[i];
+        self.w_member.get(i).copied().unwrap_or(0.0) - b.law.stored_energy(&b.state)
     }
 
     /// The energy the yielding elements of each of the first `bodies` bodies store in their

@@ -398,6 +398,14 @@ pub(crate) fn seat_name(seat: &SeatEnd) -> String {
     format!("segment{}-{face}", seat.body + 1)
 }
 
+/// The dissipation of the yielding members on `body` (their own work less what they store).
+fn member_dissipation(el: &super::elements::Elements, body: usize) -> Real {
+    (0..el.bearings.len())
+        .filter(|&e| el.bearings[e].body == body)
+        .map(|e| el.member_dissipation(e))
+        .sum()
+}
+
 /// Assembles the [`BridgeSolution`] of a run (its seats in the order of `br.seats`).
 pub(crate) fn solution(
     r: driver::RunResult,
@@ -425,25 +433,21 @@ pub(crate) fn solution(
                 peak_closing: peaks.abut[side].unwrap_or(Real::NAN),
                 backwall: peaks.wall[side].map(|w| {
                     let b = model.wall_body(side).expect("a backwall");
-                    let correction = r.elements.bearing_stored_energy(br.dofs.n_bodies());
                     BackwallSummary {
                         peak_displacement: w.displacement,
                         peak_backfill_force: w.backfill,
                         peak_pile_force: w.piles,
                         residual_displacement: br.dofs.axial_displacement(b, r.final_q.as_slice()),
-                        pile_hysteretic_energy: r
-                            .elements
-                            .w_bearings
-                            .get(b)
-                            .copied()
-                            .unwrap_or(0.0)
-                            - correction[b],
+                        pile_hysteretic_energy: member_dissipation(&r.elements, b),
                     }
                 }),
             });
         }
     }
     let correction = r.elements.bearing_stored_energy(br.dofs.n_bodies());
+    // a coupled system books a bearing on a cap partly on the cap: report members instead
+    let coupled = !br.piers.is_empty() || br.abutments.iter().any(|a| a.wall.is_some());
+    let members = |body: usize| member_dissipation(&r.elements, body);
     let piers = br
         .piers
         .iter()
@@ -457,8 +461,7 @@ pub(crate) fn solution(
                 residual_drift: [x, y],
                 peak_column_force: pk.force,
                 yielded: pk.yielded,
-                hysteretic_energy: r.elements.w_bearings.get(p.body).copied().unwrap_or(0.0)
-                    - correction[p.body],
+                hysteretic_energy: members(p.body),
             }
         })
         .collect();
@@ -470,8 +473,11 @@ pub(crate) fn solution(
                 final_displacement: (x * x + y * y).sqrt(),
                 peak_rotation: peaks.rot[i],
                 peak_bearing_deformation: peaks.bearing[i].sqrt(),
-                hysteretic_energy: r.elements.w_bearings.get(i).copied().unwrap_or(0.0)
-                    - correction[i],
+                hysteretic_energy: if coupled {
+                    members(i)
+                } else {
+                    r.elements.w_bearings.get(i).copied().unwrap_or(0.0) - correction[i]
+                },
                 frequencies: systems[i].frequencies,
                 rayleigh: systems[i].rayleigh,
             }

@@ -408,3 +408,35 @@ fn substructure_limit_states_read_the_members() {
         "{e}"
     );
 }
+
+/// A backfill whose unloading is softer than its loading would create energy: refused naming
+/// `kur` and its line; a wall mass too small for its backfill is refused naming `dt` with a
+/// readable bound; the Caltrans/explicit clash names the key actually written.
+#[test]
+fn backfill_refusals_name_what_is_wrong() {
+    let text = with_start_wall(
+        "mass = 1.0e5\nkmax = 2.436e8\nkur = 1.0e3\nfult = 3.912e6\npiles_k = 6.3e7\npiles_fy = 1.071e6\n",
+    );
+    let err = error(&text);
+    let line = text.lines().position(|l| l == "kur = 1.0e3").unwrap() + 1;
+    assert!(
+        err.contains("backwall.kur")
+            && err.contains(">=")
+            && err.contains(&format!("walls.toml:{line}")),
+        "{err}"
+    );
+    let text = with_start_wall("mass = 1.0e5\nkmax = 2.436e8\nfult = 3.912e6\nskew_deg = 30.0\n");
+    let err = error(&text);
+    assert!(
+        err.contains("backwall.skew_deg") && err.contains("not both"),
+        "{err}"
+    );
+    let err = error(&with_start_wall(
+        "mass = 1e-300\nkmax = 2.436e8\nfult = 3.912e6\n",
+    ));
+    assert!(err.contains("dt") && !err.contains("0.000e0"), "{err}");
+    let err = error(&with_start_wall(
+        "mass = 1.0e5\nkmax = 1e300\nfult = 3.912e6\n",
+    ));
+    assert!(err.contains("dt") && err.len() < 600, "{err}");
+}

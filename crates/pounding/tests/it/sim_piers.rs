@@ -524,3 +524,91 @@ fn bridge_p_with_backwalls_under_another_motion() {
         within("deck", g.peak_displacement, r, 0.05);
     }
 }
+
+/// Yielding bearings standing on the cap of an elastic pier: the pier reports no hysteresis (the
+/// bearings' dissipation is the segments'), each member's own work less what it stores adds up to
+/// the bridge's hysteretic dissipation, and `period_s = "model"` of a fragility study is the
+/// whole coupled bridge's first period (not a segment's on fixed caps).
+#[test]
+fn bearing_dissipation_stays_with_the_segments_and_the_period_is_the_bridges() {
+    let text = BRIDGE_P
+        .replace(
+            "bearing_damping = 1.0e5\n",
+            "bearing_damping = 1.0e5\nbearing = \"bilinear\"\nfy = 4.0e5\nb = 0.05\n",
+        )
+        .replace("fy = 1.2e6\nb = 0.02\n", "")
+        .replace("[time]\n", "[time]\nduration = 12.0\n");
+    let s = run_text(&text).summary;
+    let segs: f64 = s.segments.iter().map(|g| g.hysteretic_energy).sum();
+    assert!(segs > 1e3, "the bearings yield ({segs} J)");
+    for p in &s.piers {
+        assert!(!p.yielded && p.hysteretic_energy == 0.0, "{p:?}");
+    }
+    // the booked work of the elements = what they store + the members' dissipation
+    let booked = s.final_energy.elements - s.restrainer_work - s.backfill_work - s.shear_key_work;
+    let stored = booked - segs;
+    assert!(
+        stored >= -1e-6 * segs && stored < 0.5 * segs,
+        "stored {stored} of {segs}"
+    );
+    // the fundamental period of the coupled bridge: its lowest mode along the chain
+    let model = Scenario::from_toml(BRIDGE_P, "p.toml")
+        .unwrap()
+        .build_bridge()
+        .unwrap()
+        .problem
+        .model;
+    let t = pounding::assessment::im::fundamental_period(&model).unwrap();
+    assert!(t.whole_bridge && t.segment == 0);
+    // independent: the plan system by hand, decks (x, y, θ) 0..9 and caps (x, y) 9..13; the
+    // chain runs along −y, so a bearing's arm from its deck's centroid is (±5, ±15); two bearings
+    // of 4e6 N/m at each deck end, on the ground (outer ends) or on a cap (joint ends)
+    let (k, kc, mc) = (4.0e6, 8.0e7, 2.0e5);
+    let masses = [1.0e6, 1.2e6, 0.8e6];
+    let mut mm = vec![0.0f64; 13];
+    for (d, m) in masses.iter().enumerate() {
+        mm[3 * d] = *m;
+        mm[3 * d + 1] = *m;
+        mm[3 * d + 2] = m * (30.0f64 * 30.0 + 12.0 * 12.0) / 12.0;
+    }
+    for c in 0..2 {
+        mm[9 + 2 * c] = mc;
+        mm[10 + 2 * c] = mc;
+    }
+    let mut kk = DMatrix::<f64>::zeros(13, 13);
+    for d in 0..3 {
+        for (ry, base) in [
+            (15.0, if d == 0 { None } else { Some(d - 1) }),
+            (-15.0, if d == 2 { None } else { Some(d) }),
+        ] {
+            for rx in [-5.0, 5.0] {
+                // u = B q_d − q_c, B = [[1, 0, −r_y], [0, 1, r_x]]
+                let mut rows: Vec<(usize, [f64; 2])> = vec![
+                    (3 * d, [1.0, 0.0]),
+                    (3 * d + 1, [0.0, 1.0]),
+                    (3 * d + 2, [-ry, rx]),
+                ];
+                if let Some(c) = base {
+                    rows.push((9 + 2 * c, [-1.0, 0.0]));
+                    rows.push((10 + 2 * c, [0.0, -1.0]));
+                }
+                for &(i, a) in &rows {
+                    for &(j, b) in &rows {
+                        kk[(i, j)] += k * (a[0] * b[0] + a[1] * b[1]);
+                    }
+                }
+            }
+        }
+    }
+    for i in 9..13 {
+        kk[(i, i)] += kc;
+    }
+    let sym = DMatrix::from_fn(13, 13, |i, j| kk[(i, j)] / (mm[i] * mm[j]).sqrt());
+    let w1 = sym
+        .symmetric_eigenvalues()
+        .iter()
+        .fold(f64::INFINITY, |a, &l| a.min(l))
+        .sqrt();
+    let t1 = 2.0 * std::f64::consts::PI / w1;
+    assert!((t.period - t1).abs() <= 1e-9 * t1, "{} vs {t1}", t.period);
+}

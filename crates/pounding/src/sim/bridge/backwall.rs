@@ -87,6 +87,16 @@ impl BridgeModel {
                 check(key("piles_k"), p.k, p.k > 0.0, "must be finite and > 0")?;
                 check(key("piles_fy"), p.fy, p.fy > 0.0, "must be finite and > 0")?;
             }
+            if let Some(b) = w.backfill
+                && b.kur() < b.kmax()
+            {
+                return Err(SimError::invalid(
+                    key("kur"),
+                    b.kur(),
+                    "must be >= kmax: with a softer unloading the backfill law gives back more \
+                     energy than it took",
+                ));
+            }
             if w.backfill.is_none() && w.piles.is_none() {
                 return Err(SimError::InvalidArgument {
                     name: key("mass"),
@@ -130,13 +140,21 @@ impl BridgeModel {
             };
             let Some(b) = w.backfill else { continue };
             let om = (b.kmax() / w.mass).sqrt();
+            if !om.is_finite() {
+                return Err(SimError::invalid(
+                    abut_key(side, "backwall.mass"),
+                    w.mass,
+                    "is too small for its backfill: kmax / mass overflows (no time step resolves \
+                     it); use a physical mass",
+                ));
+            }
             if dt * om > 1.0 {
                 return Err(SimError::invalid(
                     "dt",
                     dt,
                     &format!(
-                        "the backfill of abutment.{} (kmax {} N/m on a {} kg wall, ω = {:.4} rad/s) \
-                         is held over each step and needs dt <= {:.3e} s",
+                        "the backfill of abutment.{} (kmax {} N/m on a {} kg wall, ω = {:.4e} \
+                         rad/s) is held over each step and needs dt <= {:.3e} s",
                         ABUTMENT_SIDES[side],
                         crate::output::float_token(b.kmax()),
                         crate::output::float_token(w.mass),

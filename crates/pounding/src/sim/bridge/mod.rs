@@ -27,15 +27,17 @@
 //! ground and its rotation about the centroid, as in the two-deck model.
 //!
 //! # Model
-//! Bearings tie each segment to the ground ([`Bearing`]: linear springs of equal stiffness in x
-//! and y at body points, linearised kinematics); damping is Rayleigh per segment or translational
-//! dashpots ([`DampingModel`]); `M`, `K`, `C` are block diagonal. The contacts are those of the
+//! Bearings tie each segment to the ground, or to the cap of a pier under its joint ([`Pier`]; the
+//! module `pier`) ([`Bearing`]: linear springs of equal stiffness in x and y at body points,
+//! linearised kinematics, with optional dashpots); damping is Rayleigh per segment or
+//! translational dashpots ([`DampingModel`]). Without piers or backwalls `M`, `K`, `C` are block
+//! diagonal; with them the system is coupled and runs on its dense matrices. An abutment may have
+//! a backwall on backfill and piles ([`Backwall`]) and exterior shear keys. The contacts are those of the
 //! two-deck model at every joint (four corner-against-face candidates, at most two realised) and
 //! the outer-face corners at each abutment. With the rigid law the contacts active in one step
 //! are solved together (one impact LCP over the bridge); with a compliance law every joint and
 //! abutment carries its own law (shared by its two corners) and the Newton iteration couples
-//! them. All joints and abutments must use the same kind of contact (all rigid, or all
-//! compliance laws); their parameters may differ.
+//! them. Rigid and compliance sites may be mixed (`super::mixed`).
 
 pub use super::solution::{
     AbutmentSummary, BridgeSolution, BridgeSummary, JointSummary, SeatSummary, SegmentSummary,

@@ -323,6 +323,20 @@ impl BridgeModel {
     }
 }
 
+impl BridgeModel {
+    /// The natural frequencies of the whole coupled system (segments, pier caps and backwalls on
+    /// the bearings, columns and piles at their initial stiffness; the backfill, compression only,
+    /// and the contacts left out), in increasing order \[rad/s\]; `None` for a bridge without
+    /// piers or backwalls (its segments are separate systems:
+    /// [`BridgeModel::segment_frequencies`]).
+    pub fn system_frequencies(&self) -> Result<Option<Vec<Real>>, SimError> {
+        let systems = self.body_systems()?;
+        Ok(self
+            .coupled_system(&systems, false)?
+            .map(|c| system_frequencies(&c.m, &c.k)))
+    }
+}
+
 /// Natural frequencies of `(M, K)` in increasing order \[rad/s\] (`M` diagonal, positive).
 pub(crate) fn system_frequencies(m: &DMatrix<Real>, k: &DMatrix<Real>) -> Vec<Real> {
     let n = m.nrows();

@@ -117,10 +117,17 @@ pub(super) fn backwall(
     let explicit = w.kmax.is_some() || w.fult.is_some() || w.kur.is_some();
     let caltrans = w.height.is_some() || w.width.is_some() || w.skew_deg.is_some();
     if explicit && caltrans {
-        let at = line(&w.height).or(line(&w.width)).or(line(&w.skew_deg));
+        let (k, at) = [
+            ("height", &w.height),
+            ("width", &w.width),
+            ("skew_deg", &w.skew_deg),
+        ]
+        .into_iter()
+        .find_map(|(k, x)| line(x).map(|l| (k, l)))
+        .expect("a Caltrans key");
         return Err(v.err(
-            key("height"),
-            at,
+            key(k),
+            Some(at),
             format!(
                 "give the backfill either by {} and {} or by the wall's {} and {} (Caltrans), not \
                  both",
@@ -131,7 +138,7 @@ pub(super) fn backwall(
             ),
         ));
     }
-    let gap = v.nonneg(key("backfill_gap"), &w.backfill_gap, Some(0.0))?;
+    let gap = v.gap(key("backfill_gap"), &w.backfill_gap, Some(0.0))?;
     let rf = v.num(
         key("rf"),
         &w.rf,
@@ -145,6 +152,20 @@ pub(super) fn backwall(
     let backfill = if explicit {
         let kmax = pos("kmax", &w.kmax)?;
         let kur = v.pos(key("kur"), &w.kur, Some(kmax))?;
+        if kur < kmax {
+            return Err(v.err(
+                key("kur"),
+                line(&w.kur),
+                format!(
+                    "invalid {} = {}: must be >= {} ({}): with a softer unloading the backfill \
+                     law gives back more energy than it took (it is not dissipative)",
+                    key("kur"),
+                    crate::output::float_token(kur),
+                    key("kmax"),
+                    crate::output::float_token(kmax)
+                ),
+            ));
+        }
         let fult = pos("fult", &w.fult)?;
         Some(HyperbolicGap::new(kmax, kur, rf, fult, gap).map_err(|e| element_error(e, None))?)
     } else if caltrans {

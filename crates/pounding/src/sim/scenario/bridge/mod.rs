@@ -41,7 +41,7 @@
 //! keys that its law reads. A key of a site table that the site's law does not read is an error
 //! naming `joint[k].contact.KEY` (`abutment.end.contact.KEY`) and its line, as is an unknown key;
 //! a `[contact]` key that no site's law reads is refused as for two decks. Rigid contact at some
-//! sites and compliance laws at others is refused, naming the site's `contact.law` and its line.
+//! sites and compliance laws at others run together (`crate::sim::mixed`).
 //! A law override (`pounding simulate --law`, `pounding compare`) replaces the law at every
 //! site; the site's other keys apply when that law reads them. A compliance law at an abutment
 //! is built with the segment's mass as the effective mass (calibrations), at a joint with the
