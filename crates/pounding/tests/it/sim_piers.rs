@@ -565,7 +565,7 @@ fn bearing_dissipation_stays_with_the_segments_and_the_period_is_the_bridges() {
     // of 4e6 N/m at each deck end, on the ground (outer ends) or on a cap (joint ends)
     let (k, kc, mc) = (4.0e6, 8.0e7, 2.0e5);
     let masses = [1.0e6, 1.2e6, 0.8e6];
-    let mut mm = vec![0.0f64; 13];
+    let mut mm = [0.0f64; 13];
     for (d, m) in masses.iter().enumerate() {
         mm[3 * d] = *m;
         mm[3 * d + 1] = *m;
