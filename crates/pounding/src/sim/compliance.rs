@@ -116,6 +116,10 @@ impl EndEval {
 fn gen_force(ends: &[EndEval]) -> State {
     let mut r = State::zeros(ends[0].wn.len());
     for e in ends {
+        if e.f_n == 0.0 && e.f_t == 0.0 {
+            // an open end adds nothing (its `+ 0` terms could change only a zero's sign)
+            continue;
+        }
         // in place, entry by entry: the same products and sums as `r += w_N f_N + w_T f_T`
         // without its two temporary vectors
         for ((ri, wn), wt) in r.iter_mut().zip(e.wn.iter()).zip(e.wt.iter()) {

@@ -23,6 +23,10 @@ type Operator = Vec<(usize, [Real; 2])>;
 #[derive(Debug, Clone)]
 pub(crate) struct DenseImplicit {
     ops: Vec<Operator>,
+    /// `|Ŵ|` entrywise (the rounding scale of the residual).
+    wabs: DMatrix<Real>,
+    /// The total yield force of the members (the residual's force scale).
+    fy: Real,
     /// The step's tangent inverse (valid when [`super::yielding::Implicit::tangent`]).
     pub winv: DMatrix<Real>,
     ub: State,
@@ -68,8 +72,14 @@ impl DenseImplicit {
             .dense
             .as_ref()
             .map_or_else(|| DMatrix::zeros(n, n), |d| d.winv.clone());
+        let wabs = sc
+            .dense
+            .as_ref()
+            .map_or_else(|| DMatrix::zeros(n, n), |d| d.what.abs());
         DenseImplicit {
             ops,
+            wabs,
+            fy: bearings.iter().map(|b| b.law.fy()).sum(),
             winv,
             ub: State::zeros(n),
             xf: State::zeros(n),
@@ -138,18 +148,26 @@ impl DenseImplicit {
     ) -> Solved {
         let hth = sc.h * sc.th;
         let what = &sc.dense.as_ref().expect("a coupled scheme").what;
-        let fy: Real = bearings.iter().map(|b| b.law.fy()).sum();
-        let wabs = what.abs();
+        let (fy, wabs) = (self.fy, &self.wabs);
         for _ in 0..MAX_ITER {
             let qp = Self::end_position(sc, q, u, &x);
-            let (r, jac, _, r_size) = self.end_force(bearings, &qp);
+            let (r, jac, flows, r_size) = self.end_force(bearings, &qp);
             let g = what * (&x - base) - (&r - r_pred) * hth - pi;
-            let wt = what - &jac * (hth * hth);
-            let size = &wabs * (x.abs() + base.abs())
-                + (r_size * 2.0 + r.abs() + r_pred.abs()) * hth
-                + pi.abs();
+            // elastic members: J = 0 and Ŵ_t = Ŵ (no product formed)
+            let wt = if flows {
+                what - &jac * (hth * hth)
+            } else {
+                what.clone()
+            };
             let tol = 1e-12 * hth * fy;
-            if (0..x.len()).all(|i| g[i].abs() <= (64.0 * Real::EPSILON * size[i]).max(tol)) {
+            // (the rounding scale is formed only when the plain tolerance does not settle it)
+            let converged = g.iter().all(|gi| gi.abs() <= tol) || {
+                let size = wabs * (x.abs() + base.abs())
+                    + (r_size * 2.0 + r.abs() + r_pred.abs()) * hth
+                    + pi.abs();
+                (0..x.len()).all(|i| g[i].abs() <= (64.0 * Real::EPSILON * size[i]).max(tol))
+            };
+            if converged {
                 return (x, r, jac, wt, true);
             }
             let Some(d) = wt.clone().lu().solve(&(-&g)) else {
