@@ -73,6 +73,7 @@ pub mod model;
 mod observer;
 pub mod options;
 pub mod output;
+mod peaks;
 pub mod problem;
 mod rigid;
 pub mod scenario;

@@ -77,6 +77,25 @@ pub(crate) struct Implicit {
     dense: Option<Box<super::yielding_dense::DenseImplicit>>,
 }
 
+/// `Δψ_b − e₀ n₀·Δu` of the line search ([`Implicit::damping`]): the change of the member's
+/// potential `ψ_b` from deformation `u0` by `du`, less its linear part, formed from
+/// `Δs = k_e Δu` without a difference of two large numbers.
+pub(super) fn psi_change(b: &YieldingBearing, u0: Vector, du: Vector) -> Real {
+    let (ke, rr) = ((1.0 - b.law.b()) * b.law.k0(), b.law.plastic_force_radius());
+    let s0 = (u0 - b.state.u_p) * ke;
+    let ds = du * ke;
+    let s1 = s0 + ds;
+    let (n0, n1) = (s0.norm(), s1.norm());
+    let (e0, e1) = ((n0 - rr).max(0.0), (n1 - rr).max(0.0));
+    let de = if e0 > 0.0 && e1 > 0.0 {
+        ds.dot(&(s0 + s1)) / (n0 + n1)
+    } else {
+        e1 - e0
+    };
+    let lin0 = if e0 > 0.0 { e0 * s0.dot(&du) / n0 } else { 0.0 };
+    de * (e0 + e1) / (2.0 * ke) - lin0
+}
+
 /// `B = [[1, 0, −r_y], [0, 1, r_x]]`: the linearised deformation of a bearing of arm `r`.
 fn b_matrix(r: &Vector) -> Matrix2x3<Real> {
     Matrix2x3::new(1.0, 0.0, -r.y, 0.0, 1.0, r.x)
@@ -267,21 +286,9 @@ impl Implicit {
             let mut dpsi = 0.0;
             for &i in idx {
                 let b = &bearings[i];
-                let (ke, rr) = ((1.0 - b.law.b()) * b.law.k0(), b.law.plastic_force_radius());
                 let du = Vector::new(dq.x - dq.z * b.arm.y, dq.y + dq.z * b.arm.x);
                 let u0 = Vector::new(q0.x - q0.z * b.arm.y, q0.y + q0.z * b.arm.x);
-                let s0 = (u0 - b.state.u_p) * ke;
-                let ds = du * ke;
-                let s1 = s0 + ds;
-                let (n0, n1) = (s0.norm(), s1.norm());
-                let (e0, e1) = ((n0 - rr).max(0.0), (n1 - rr).max(0.0));
-                let de = if e0 > 0.0 && e1 > 0.0 {
-                    ds.dot(&(s0 + s1)) / (n0 + n1)
-                } else {
-                    e1 - e0
-                };
-                let lin0 = if e0 > 0.0 { e0 * s0.dot(&du) / n0 } else { 0.0 };
-                dpsi += de * (e0 + e1) / (2.0 * ke) - lin0;
+                dpsi += psi_change(b, u0, du);
             }
             let dphi = t * slope + 0.5 * t * t * quad - dpsi;
             if dphi <= 1e-4 * t * slope {

@@ -209,21 +209,7 @@ impl DenseImplicit {
             let dq = d * (hth * t);
             let mut dpsi = 0.0;
             for (b, op) in bearings.iter().zip(&self.ops) {
-                let (ke, rr) = ((1.0 - b.law.b()) * b.law.k0(), b.law.plastic_force_radius());
-                let du = Self::apply(op, &dq);
-                let u0 = Self::apply(op, &q0);
-                let s0 = (u0 - b.state.u_p) * ke;
-                let ds = du * ke;
-                let s1 = s0 + ds;
-                let (n0, n1) = (s0.norm(), s1.norm());
-                let (e0, e1) = ((n0 - rr).max(0.0), (n1 - rr).max(0.0));
-                let de = if e0 > 0.0 && e1 > 0.0 {
-                    ds.dot(&(s0 + s1)) / (n0 + n1)
-                } else {
-                    e1 - e0
-                };
-                let lin0 = if e0 > 0.0 { e0 * s0.dot(&du) / n0 } else { 0.0 };
-                dpsi += de * (e0 + e1) / (2.0 * ke) - lin0;
+                dpsi += super::yielding::psi_change(b, Self::apply(op, &q0), Self::apply(op, &dq));
             }
             let dphi = t * slope + 0.5 * t * t * quad - dpsi;
             if dphi <= 1e-4 * t * slope {

@@ -273,6 +273,49 @@ const OS_NO_CONTACT: ([(f64, f64, f64); 2], [f64; 3]) = (
 
 const BRIDGE_P: &str = include_str!("../../../../examples/bridge-p-1d-piers.toml");
 
+/// Per joint `(impacts, peak force MN, peak closing m)` of OpenSees: impacts within ±3, force
+/// and closing within 3 %.
+fn check_joints(s: &pounding::sim::bridge::BridgeSummary, joints: &[(usize, f64, f64)]) {
+    for (k, (j, r)) in s.joints.iter().zip(joints).enumerate() {
+        let n = k + 1;
+        assert!(
+            j.impacts.abs_diff(r.0) <= 3,
+            "joint {n}: {} impacts vs {}",
+            j.impacts,
+            r.0
+        );
+        within(
+            &format!("joint {n} force"),
+            j.peak_contact_force.unwrap() / 1e6,
+            r.1,
+            0.03,
+        );
+        within(&format!("joint {n} closing"), j.peak_closing, r.2, 0.03);
+    }
+}
+
+/// Per pier `(peak drift m, residual drift along the chain m, column force MN)` of OpenSees (its
+/// x is −y here): each pier yields, drift and residual within 5 %, column force within 3 %.
+fn check_yielding_piers(s: &pounding::sim::bridge::BridgeSummary, piers: &[(f64, f64, f64)]) {
+    for (p, r) in s.piers.iter().zip(piers) {
+        let n = p.joint;
+        assert!(p.yielded, "pier {n} yields");
+        within(&format!("pier {n} drift"), p.peak_drift[1], r.0, 0.05);
+        within(
+            &format!("pier {n} residual"),
+            -p.residual_drift[1],
+            r.1,
+            0.05,
+        );
+        within(
+            &format!("pier {n} column"),
+            p.peak_column_force / 1e6,
+            r.2,
+            0.03,
+        );
+    }
+}
+
 fn within(what: &str, ours: f64, reference: f64, rel: f64) {
     let e = (ours - reference).abs() / reference.abs();
     assert!(
@@ -298,27 +341,7 @@ fn run_text(text: &str) -> BridgeSolution {
 fn bridge_p_piers_against_opensees() {
     let s = run_text(BRIDGE_P).summary;
     let (joints, abuts, piers) = OS_RIGID_ABUTMENTS;
-    for (k, (j, r)) in s.joints.iter().zip(joints).enumerate() {
-        assert!(
-            j.impacts.abs_diff(r.0) <= 3,
-            "joint {}: {} impacts vs {}",
-            k + 1,
-            j.impacts,
-            r.0
-        );
-        within(
-            &format!("joint {} force", k + 1),
-            j.peak_contact_force.unwrap() / 1e6,
-            r.1,
-            0.03,
-        );
-        within(
-            &format!("joint {} closing", k + 1),
-            j.peak_closing,
-            r.2,
-            0.03,
-        );
-    }
+    check_joints(&s, &joints);
     for (side, r) in abuts.iter().enumerate() {
         let a = s.abutments[side].as_ref().expect("abutment");
         assert!(
@@ -356,27 +379,7 @@ fn bridge_p_piers_against_opensees() {
     let s = run_text(&wide).summary;
     assert_eq!(s.impacts, 0);
     let (piers, decks) = OS_NO_CONTACT;
-    for (p, r) in s.piers.iter().zip(piers) {
-        assert!(p.yielded);
-        within(
-            &format!("pier {} drift", p.joint),
-            p.peak_drift[1],
-            r.0,
-            0.05,
-        );
-        within(
-            &format!("pier {} residual", p.joint),
-            -p.residual_drift[1],
-            r.1,
-            0.05,
-        );
-        within(
-            &format!("pier {} column", p.joint),
-            p.peak_column_force / 1e6,
-            r.2,
-            0.03,
-        );
-    }
+    check_yielding_piers(&s, &piers);
     for (i, (g, r)) in s.segments.iter().zip(decks).enumerate() {
         within(&format!("deck {}", i + 1), g.peak_displacement, r, 0.05);
     }
@@ -393,27 +396,7 @@ const BRIDGE_P_FULL: &str = include_str!("../../../../examples/bridge-piers-1d.t
 fn bridge_p_with_backwalls_against_opensees() {
     let s = run_text(BRIDGE_P_FULL).summary;
     let joints = [(22, 40.26, 0.0228), (31, 43.78, 0.0239)];
-    for (k, (j, r)) in s.joints.iter().zip(joints).enumerate() {
-        assert!(
-            j.impacts.abs_diff(r.0) <= 3,
-            "joint {}: {} impacts vs {}",
-            k + 1,
-            j.impacts,
-            r.0
-        );
-        within(
-            &format!("joint {} force", k + 1),
-            j.peak_contact_force.unwrap() / 1e6,
-            r.1,
-            0.03,
-        );
-        within(
-            &format!("joint {} closing", k + 1),
-            j.peak_closing,
-            r.2,
-            0.03,
-        );
-    }
+    check_joints(&s, &joints);
     // impacts, contact force MN, backwall into the soil m, backfill MN, piles MN
     let abuts = [
         (29, 37.61, 0.0479, 3.778, 1.071),
@@ -455,27 +438,7 @@ fn bridge_p_with_backwalls_against_opensees() {
     }
     // peak drift m, residual drift along the chain (OpenSees x = −y here) m, column force MN
     let piers = [(0.0183, -0.0036, 1.205), (0.0192, -0.0019, 1.207)];
-    for (p, r) in s.piers.iter().zip(piers) {
-        assert!(p.yielded, "pier {} yields", p.joint);
-        within(
-            &format!("pier {} drift", p.joint),
-            p.peak_drift[1],
-            r.0,
-            0.05,
-        );
-        within(
-            &format!("pier {} residual", p.joint),
-            -p.residual_drift[1],
-            r.1,
-            0.05,
-        );
-        within(
-            &format!("pier {} column", p.joint),
-            p.peak_column_force / 1e6,
-            r.2,
-            0.03,
-        );
-    }
+    check_yielding_piers(&s, &piers);
     for (i, (g, r)) in s.segments.iter().zip([0.0862, 0.0961, 0.0964]).enumerate() {
         within(&format!("deck {}", i + 1), g.peak_displacement, r, 0.05);
     }
@@ -489,20 +452,7 @@ fn bridge_p_with_backwalls_against_opensees() {
 fn bridge_p_with_backwalls_under_another_motion() {
     let text = BRIDGE_P_FULL.replace("scale_y = -1.0", "scale_y = -1.5");
     let s = run_text(&text).summary;
-    for (j, r) in s
-        .joints
-        .iter()
-        .zip([(30, 45.328, 0.02437), (31, 47.438, 0.02505)])
-    {
-        assert!(j.impacts.abs_diff(r.0) <= 3, "{} vs {}", j.impacts, r.0);
-        within(
-            "joint force",
-            j.peak_contact_force.unwrap() / 1e6,
-            r.1,
-            0.03,
-        );
-        within("joint closing", j.peak_closing, r.2, 0.03);
-    }
+    check_joints(&s, &[(30, 45.328, 0.02437), (31, 47.438, 0.02505)]);
     let abuts = [(23, 40.939, 0.09516, 4.503), (26, 41.613, 0.07857, 4.3255)];
     for (a, r) in s.abutments.iter().flatten().zip(abuts) {
         let w = a.backwall.as_ref().unwrap();
