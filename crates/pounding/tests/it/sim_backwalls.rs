@@ -432,11 +432,33 @@ fn backfill_refusals_name_what_is_wrong() {
         "{err}"
     );
     let err = error(&with_start_wall(
-        "mass = 1e-300\nkmax = 2.436e8\nfult = 3.912e6\n",
+        "mass = 1e-300\nkmax = 2.436e8\nfult = 3.912e6\npiles_k = 6.3e7\npiles_fy = 1.071e6\n",
     ));
     assert!(err.contains("dt") && !err.contains("0.000e0"), "{err}");
     let err = error(&with_start_wall(
-        "mass = 1.0e5\nkmax = 1e300\nfult = 3.912e6\n",
+        "mass = 1.0e5\nkmax = 1e300\nfult = 3.912e6\npiles_k = 6.3e7\npiles_fy = 1.071e6\n",
     ));
     assert!(err.contains("dt") && err.len() < 600, "{err}");
+}
+
+/// A backwall on backfill alone (compression only) is free to move toward the deck: refused as a
+/// mechanism naming `piles_k`, unless `bridge.allow_mechanism = true`.
+#[test]
+fn a_backwall_without_piles_is_a_mechanism() {
+    let text = with_start_wall("mass = 1.0e5\nkmax = 2.436e8\nfult = 3.912e6\n");
+    let err = error(&text);
+    assert!(
+        err.contains("backwall.piles_k") && err.contains("allow_mechanism"),
+        "{err}"
+    );
+    let allowed = text
+        .replacen("[bridge]\n", "[bridge]\nallow_mechanism = true\n", 1)
+        .replace("[time]\n", "[time]\nduration = 2.0\n");
+    let sol = Scenario::from_toml(&allowed, "walls.toml")
+        .unwrap()
+        .build_bridge()
+        .unwrap()
+        .run()
+        .unwrap();
+    assert!(sol.summary.energy_balance_error < 1e-9);
 }

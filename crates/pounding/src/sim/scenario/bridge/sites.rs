@@ -239,6 +239,28 @@ pub(super) fn check_mechanism(
             ),
         ));
     }
+    // a backwall with backfill (compression only) and no piles is free to move toward the deck
+    for (side, a) in model.abutments.iter().enumerate() {
+        let Some(w) = a.and_then(|a| a.backwall) else {
+            continue;
+        };
+        if w.piles.is_none() {
+            let name = crate::sim::bridge::ABUTMENT_SIDES[side];
+            let tables = [&raw.abutment.start, &raw.abutment.end];
+            let table = tables[side]
+                .as_ref()
+                .and_then(|t| t.get_ref().backwall.as_ref());
+            return Err(v.err(
+                format!("abutment.{name}.backwall.piles_k"),
+                table.map(|t| v.line(t)),
+                format!(
+                    "abutment.{name}.backwall has backfill and no piles: the backfill pushes only \
+                     into the soil, so nothing holds the wall toward the deck (a mechanism); give \
+                     piles_k and piles_fy, or set bridge.allow_mechanism = true to simulate it anyway"
+                ),
+            ));
+        }
+    }
     Ok(())
 }
 
