@@ -82,3 +82,73 @@ fn piers_backwalls_and_keys_write_their_tables_and_loops() {
     );
     assert!(!d.join("b").exists());
 }
+
+/// A batch of a bridge with piers, backwalls and shear keys has their columns, each row equal to
+/// the single run of its record and scale.
+#[test]
+fn batch_rows_carry_the_members_and_equal_the_single_runs() {
+    let short = PLAN.replace("[time]\n", "[time]\nduration = 3.0\n");
+    let d = scratch_with("substructure", "batch", &[("plan.toml", &short)]);
+    let p = |f: &str| d.join(f).to_str().unwrap().to_string();
+    let (code, _, err) = run_capture(&[
+        "simulate",
+        &p("plan.toml"),
+        "--records",
+        "builtin:ELC270",
+        "--scales",
+        "0.7",
+        "--out",
+        &p("b"),
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    let text = std::fs::read_to_string(d.join("b/batch.csv")).unwrap();
+    let mut lines = text.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let row: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let cell = |name: &str| {
+        row[head
+            .iter()
+            .position(|h| *h == name)
+            .unwrap_or_else(|| panic!("{name}"))]
+    };
+    let (code, _, err) = run_capture(&[
+        "simulate",
+        &p("plan.toml"),
+        "--record",
+        "builtin:ELC270",
+        "--scale",
+        "0.7",
+        "--out",
+        &p("s"),
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("s/summary.json")).unwrap()).unwrap();
+    let num = |v: &serde_json::Value| v.as_f64().unwrap();
+    for (k, pier) in s["piers"].as_array().unwrap().iter().enumerate() {
+        let j = pier["joint"].as_u64().unwrap();
+        assert_eq!(k as u64 + 1, j);
+        let got: f64 = cell(&format!("pier{j}_peak_drift_m")).parse().unwrap();
+        assert_eq!(got, num(&pier["peak_drift_m"]));
+        let got: f64 = cell(&format!("pier{j}_peak_column_force_n"))
+            .parse()
+            .unwrap();
+        assert_eq!(got, num(&pier["peak_column_force_n"]));
+    }
+    for (side, a) in ["start", "end"]
+        .iter()
+        .zip(s["abutments"].as_array().unwrap())
+    {
+        let got: f64 = cell(&format!("abutment_{side}_backfill_peak_n"))
+            .parse()
+            .unwrap();
+        assert_eq!(got, num(&a["backwall"]["peak_backfill_force_n"]));
+    }
+    for k in s["shear_keys"].as_array().unwrap() {
+        let side = k["abutment"].as_str().unwrap();
+        let got: f64 = cell(&format!("abutment_{side}_shear_key_peak_force_n"))
+            .parse()
+            .unwrap();
+        assert_eq!(got, num(&k["peak_force_n"]));
+    }
+}

@@ -8,7 +8,7 @@ use crate::ground_motion::set::RecordSet;
 use crate::math::Real;
 use crate::output::float_token;
 use crate::sim::batch::{BatchOutcome, BatchRow};
-use crate::sim::bridge::ABUTMENT_SIDES;
+use crate::sim::bridge::{ABUTMENT_SIDES, BridgeSummary};
 
 /// CSV field: quoted when it contains a comma, a quote or a line break.
 pub(super) fn field(s: &str) -> String {
@@ -212,12 +212,36 @@ const BRIDGE_SEGMENT_COLS: [&str; 7] = [
     "end_seat_ratio",
 ];
 
+/// Per-pier columns (after `pier<k>_`, `k` the joint it carries).
+const PIER_COLS: [&str; 4] = [
+    "peak_drift_m",
+    "residual_drift_m",
+    "peak_column_force_n",
+    "yielded",
+];
+/// Per-backwall columns (after `abutment_start_` / `abutment_end_`).
+const BACKWALL_COLS: [&str; 3] = ["backwall_peak_m", "backfill_peak_n", "piles_peak_n"];
+/// Per-abutment shear-key columns.
+const KEY_COLS: [&str; 3] = [
+    "shear_key_peak_force_n",
+    "shear_key_peak_m",
+    "shear_key_yielded",
+];
+
 /// Header of a bridge's `batch.csv` for a bridge of `n_segments` segments: the leading columns
 /// (as [`BATCH_HEADER`] where the meaning is the same), then per joint `joint<k>_…`, per
 /// abutment `abutment_start_…` and `abutment_end_…` (both always, empty where absent), per
-/// segment `segment<i>_…` in bridge order (the keys of `summary.json`), the appended
+/// segment `segment<i>_…` in bridge order (the keys of `summary.json`), in a batch of a bridge
+/// with them per pier `pier<k>_…`, per backwall and per shear-key pair `abutment_<side>_…`, the
+/// appended
 /// [`BATCH_TAIL`] columns, and `error` last.
 pub fn bridge_batch_header(n_segments: usize) -> String {
+    bridge_header(n_segments, None)
+}
+
+/// [`bridge_batch_header`] with, after the segments, the columns of the piers, backwalls and
+/// shear keys of `shape` (a run's summary: every run of a batch has the same members).
+fn bridge_header(n_segments: usize, shape: Option<&BridgeSummary>) -> String {
     let mut h: Vec<String> = BRIDGE_BATCH_LEAD.split(',').map(String::from).collect();
     for k in 1..n_segments {
         h.extend(BRIDGE_JOINT_COLS.iter().map(|c| format!("joint{k}_{c}")));
@@ -235,6 +259,19 @@ pub fn bridge_batch_header(n_segments: usize) -> String {
                 .iter()
                 .map(|c| format!("segment{i}_{c}")),
         );
+    }
+    if let Some(m) = shape {
+        for p in &m.piers {
+            h.extend(PIER_COLS.iter().map(|c| format!("pier{}_{c}", p.joint)));
+        }
+        for (side, a) in ABUTMENT_SIDES.iter().zip(&m.abutments) {
+            if a.as_ref().is_some_and(|a| a.backwall.is_some()) {
+                h.extend(BACKWALL_COLS.iter().map(|c| format!("abutment_{side}_{c}")));
+            }
+        }
+        for k in &m.shear_keys {
+            h.extend(KEY_COLS.iter().map(|c| format!("abutment_{}_{c}", k.side)));
+        }
     }
     h.extend(BATCH_TAIL.split(',').map(String::from));
     h.push("error".into());
@@ -322,6 +359,27 @@ fn bridge_cells(o: &BatchOutcome, c: &mut Vec<String>) {
             c.push(seat.map_or(String::new(), |s| float_token(s.ratio)));
         }
     }
+    for p in &m.piers {
+        c.push(float_token(p.peak_drift_magnitude));
+        c.push(float_token(p.residual_drift[0].hypot(p.residual_drift[1])));
+        c.push(float_token(p.peak_column_force));
+        c.push(p.yielded.to_string());
+    }
+    for w in m
+        .abutments
+        .iter()
+        .flatten()
+        .filter_map(|a| a.backwall.as_ref())
+    {
+        c.push(float_token(w.peak_displacement));
+        c.push(opt(w.peak_backfill_force));
+        c.push(opt(w.peak_pile_force));
+    }
+    for k in &m.shear_keys {
+        c.push(float_token(k.peak_force));
+        c.push(float_token(k.peak_deformation));
+        c.push(k.yielded.to_string());
+    }
     let peaks: Vec<Option<Real>> = (m.joints.iter().map(|j| j.peak_contact_force))
         .chain(m.abutments.iter().flatten().map(|a| a.peak_contact_force))
         .collect();
@@ -342,7 +400,10 @@ fn bridge_cells(o: &BatchOutcome, c: &mut Vec<String>) {
 /// restrainer, no unseating, no joint at all for one segment) are empty fields; a value that is
 /// not a number is `nan` (the project's CSV tokens, [`float_token`]).
 fn bridge_batch_csv(n_segments: usize, rows: &[BatchRow], set: Option<&RecordSet>) -> String {
-    rows_csv(&bridge_batch_header(n_segments), rows, set, bridge_cells)
+    let shape = rows
+        .iter()
+        .find_map(|r| r.outcome.as_ref().ok().map(|o| &o.summary));
+    rows_csv(&bridge_header(n_segments, shape), rows, set, bridge_cells)
 }
 
 /// `batch.csv` of a batch in `layout`: the two-deck model's columns ([`BATCH_HEADER`]) or a
