@@ -77,6 +77,23 @@ pub(crate) struct Implicit {
     dense: Option<Box<super::yielding_dense::DenseImplicit>>,
 }
 
+/// The Armijo step `t ∈ (0, 1]` of the line search on `Φ` ([`Implicit::damping`]): halving `t`
+/// until `ΔΦ(t) = t g·d + ½ t² dᵀŴd − Σ_b Δψ_b(t) ≤ 10⁻⁴ t g·d` (`slope = g·d < 0`, `quad =
+/// dᵀŴd`, `dpsi(t)` the members' `Σ_b (Δ(dist²)/(2 k_e) − e₀ n₀·Δu)` at step `t`: the terms of
+/// `Φ` linear in `x` cancel against `g·d` exactly, and the distance change is formed from
+/// `Δs = k_e Δu`, no difference of two large numbers); 1 after 40 halvings.
+pub(super) fn armijo(slope: Real, quad: Real, dpsi: impl Fn(Real) -> Real) -> Real {
+    let mut t = 1.0;
+    for _ in 0..40 {
+        let dphi = t * slope + 0.5 * t * t * quad - dpsi(t);
+        if dphi <= 1e-4 * t * slope {
+            return t;
+        }
+        t *= 0.5;
+    }
+    1.0
+}
+
 /// `Δψ_b − e₀ n₀·Δu` of the line search ([`Implicit::damping`]): the change of the member's
 /// potential `ψ_b` from deformation `u0` by `du`, less its linear part, formed from
 /// `Δs = k_e Δu` without a difference of two large numbers.
@@ -277,11 +294,7 @@ impl Implicit {
         let what = &sc.what[j];
         let quad = d.dot(&(what * d));
         let q0 = Self::end_position(sc, q, u, j, x);
-        let mut t = 1.0;
-        for _ in 0..40 {
-            // ΔΦ(t) = t g·d + ½ t² dᵀŴd − Σ_b (Δ(dist²)/(2 k_e) − e₀ n₀·Δu): the terms of
-            // `Φ` linear in `x` cancel against `g·d` exactly, and the distance change is
-            // formed from `Δs = k_e Δu` (no difference of two large numbers)
+        armijo(slope, quad, |t| {
             let dq = d * (hth * t);
             let mut dpsi = 0.0;
             for &i in idx {
@@ -290,13 +303,8 @@ impl Implicit {
                 let u0 = Vector::new(q0.x - q0.z * b.arm.y, q0.y + q0.z * b.arm.x);
                 dpsi += psi_change(b, u0, du);
             }
-            let dphi = t * slope + 0.5 * t * t * quad - dpsi;
-            if dphi <= 1e-4 * t * slope {
-                return t;
-            }
-            t *= 0.5;
-        }
-        1.0
+            dpsi
+        })
     }
 
     /// The contact-free step: solves `g(x) = 0` per segment, replaces `u_free`'s entries by the

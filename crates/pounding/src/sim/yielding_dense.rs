@@ -204,20 +204,14 @@ impl DenseImplicit {
         let what = &sc.dense.as_ref().expect("a coupled scheme").what;
         let quad = d.dot(&(what * d));
         let q0 = Self::end_position(sc, q, u, x);
-        let mut t = 1.0;
-        for _ in 0..40 {
+        super::yielding::armijo(slope, quad, |t| {
             let dq = d * (hth * t);
             let mut dpsi = 0.0;
             for (b, op) in bearings.iter().zip(&self.ops) {
                 dpsi += super::yielding::psi_change(b, Self::apply(op, &q0), Self::apply(op, &dq));
             }
-            let dphi = t * slope + 0.5 * t * t * quad - dpsi;
-            if dphi <= 1e-4 * t * slope {
-                return t;
-            }
-            t *= 0.5;
-        }
-        1.0
+            dpsi
+        })
     }
 
     /// The contact-free step ([`super::yielding::Implicit::solve_free`]); returns whether the

@@ -16,6 +16,16 @@ fn with_start_wall(table: &str) -> String {
     )
 }
 
+/// Builds and runs a bridge file.
+fn run(text: &str, name: &str) -> pounding::sim::bridge::BridgeSolution {
+    Scenario::from_toml(text, name)
+        .unwrap()
+        .build_bridge()
+        .unwrap()
+        .run()
+        .unwrap()
+}
+
 fn error(text: &str) -> String {
     Scenario::from_toml(text, "walls.toml")
         .and_then(|s| s.build_bridge())
@@ -123,12 +133,7 @@ fn caltrans_backwall_runs_and_its_table_matches_the_summary() {
         .replace("dt = 5e-5 ", "dt = 1e-4 ")
         .replace("history_every = 200", "history_every = 1");
     let text = text.replace("[time]\n", "[time]\nduration = 12.0\n");
-    let sol = Scenario::from_toml(&text, "walls.toml")
-        .unwrap()
-        .build_bridge()
-        .unwrap()
-        .run()
-        .unwrap();
+    let sol = run(&text, "walls.toml");
     assert_eq!(sol.status, pounding::sim::SimStatus::Completed);
     assert!(sol.summary.energy_balance_error < 1e-9);
     let c = pounding::element::backfill::CaltransBackwall::new(1.7, 12.0, 0.0).unwrap();
@@ -174,12 +179,7 @@ fn shear_keys_stay_on_their_law_in_the_plan_bridge() {
         .replace("dt = 5e-5 ", "dt = 1e-4 ")
         .replace("history_every = 200", "history_every = 1")
         .replace("[time]\n", "[time]\nduration = 15.0\n");
-    let sol = Scenario::from_toml(&text, "plan.toml")
-        .unwrap()
-        .build_bridge()
-        .unwrap()
-        .run()
-        .unwrap();
+    let sol = run(&text, "plan.toml");
     assert_eq!(sol.status, pounding::sim::SimStatus::Completed);
     assert!(
         sol.summary.energy_balance_error < 1e-9,
@@ -269,12 +269,7 @@ fn bad_shear_keys_are_refused_with_key_and_line() {
 #[test]
 fn plan_bridge_p_within_the_opensees_band() {
     let text = BRIDGE_P_PLAN.replace("history_every = 200", "history_every = 5");
-    let sol = Scenario::from_toml(&text, "plan.toml")
-        .unwrap()
-        .build_bridge()
-        .unwrap()
-        .run()
-        .unwrap();
+    let sol = run(&text, "plan.toml");
     assert_eq!(sol.status, pounding::sim::SimStatus::Completed);
     let s = &sol.summary;
     let band = |what: &str, ours: f64, (lo, hi): (f64, f64), tol: f64| {
@@ -454,11 +449,6 @@ fn a_backwall_without_piles_is_a_mechanism() {
     let allowed = text
         .replacen("[bridge]\n", "[bridge]\nallow_mechanism = true\n", 1)
         .replace("[time]\n", "[time]\nduration = 2.0\n");
-    let sol = Scenario::from_toml(&allowed, "walls.toml")
-        .unwrap()
-        .build_bridge()
-        .unwrap()
-        .run()
-        .unwrap();
+    let sol = run(&allowed, "walls.toml");
     assert!(sol.summary.energy_balance_error < 1e-9);
 }
