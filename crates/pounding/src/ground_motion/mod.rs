@@ -22,7 +22,9 @@ use thiserror::Error;
 
 mod at2;
 pub mod format;
+pub mod integral;
 pub mod set;
+pub mod support_file;
 pub mod synth;
 mod text;
 pub use format::{ACCEPTED_FORMATS, ReadOptions, RecordFormat};

@@ -91,9 +91,22 @@ pub(crate) struct EndEval {
     /// `μ s(γ_T)`.
     mus: Real,
     state: LawState,
+    /// The velocity `(v_n, v_t)` of the face it strikes when that face moves with a support of
+    /// its own ([`super::excitation`]; `None`: a joint, or supports that move together).
+    face: Option<(Real, Real)>,
 }
 
 impl EndEval {
+    /// The normal and tangential velocities of the contact at `u`: `(w_N·u, w_T·u)`, less the
+    /// struck face's velocity when it moves.
+    #[inline]
+    fn rel(&self, u: &State) -> (Real, Real) {
+        match self.face {
+            None => (self.wn.dot(u), self.wt.dot(u)),
+            Some((vn, vt)) => (self.wn.dot(u) - vn, self.wt.dot(u) - vt),
+        }
+    }
+
     /// An end without a contact (`n` generalised coordinates).
     fn open(n: usize) -> Self {
         EndEval {
@@ -108,6 +121,7 @@ impl EndEval {
             kt: 0.0,
             mus: 0.0,
             state: LawState::default(),
+            face: None,
         }
     }
 }
@@ -183,7 +197,13 @@ struct Trial<'a> {
     u: &'a State,
     winv: Winv<'a>,
     base: State,
+    /// The supports' offsets and velocities at `t_{k+1}` (when they move apart).
+    ground: Ground<'a>,
 }
+
+/// The supports' offsets and velocities at one time, when they move apart
+/// ([`super::excitation`]).
+type Ground<'a> = Option<(&'a [crate::math::Vector], &'a [crate::math::Vector])>;
 
 /// A compliance law at one contact site (a joint or an abutment), shared by its two ends.
 #[derive(Debug, Clone, Copy)]
@@ -276,11 +296,11 @@ impl ComplianceStepper {
             },
             sites,
         };
-        let first = s.eval_ends(q0, u0, &s.states);
+        let first = s.eval_ends(q0, u0, &s.states, None);
         for (st, f) in s.states.iter_mut().zip(&first) {
             *st = LawState::open_at(f.delta.min(0.0));
         }
-        s.ends = s.eval_ends(q0, u0, &s.states);
+        s.ends = s.eval_ends(q0, u0, &s.states, None);
         for (st, e) in s.states.iter_mut().zip(&s.ends) {
             *st = e.state;
         }
@@ -303,15 +323,17 @@ impl ComplianceStepper {
         case: Option<ContactCase>,
         wn: State,
         wt: State,
-        delta: Real,
-        u: &State,
+        (delta, u, face): (Real, &State, Option<(Real, Real)>),
     ) -> EndEval {
         let (mu, vr) = (self.mu_of(e), self.vr);
-        let ddot = -wn.dot(u);
+        // relative to a moving face: its velocity `(v_n, v_t)` taken off
+        let (ddot, gt) = match face {
+            None => (-wn.dot(u), wt.dot(u)),
+            Some((vn, vt)) => (vn - wn.dot(u), wt.dot(u) - vt),
+        };
         let law = self.sites[e / 2]
             .law
             .corner_evaluate(&states[e], delta, ddot);
-        let gt = wt.dot(u);
         let root = (gt * gt + vr * vr).sqrt();
         let s = gt / root;
         let sp = vr * vr / (root * root * root);
@@ -327,11 +349,19 @@ impl ComplianceStepper {
             kt: mu * law.force * sp,
             mus: mu * s,
             state: law.state,
+            face,
         }
     }
 
-    /// Evaluates every end at `(q, u)` from the committed `states`.
-    fn eval_ends(&self, q: &State, u: &State, states: &[LawState]) -> Vec<EndEval> {
+    /// Evaluates every end at `(q, u)` from the committed `states`; an abutment's face moved
+    /// with its support by `ground`.
+    fn eval_ends(
+        &self,
+        q: &State,
+        u: &State,
+        states: &[LawState],
+        ground: Ground<'_>,
+    ) -> Vec<EndEval> {
         let n = q.len();
         let dofs = &self.dofs;
         let pose = Pose::new(&self.bodies, dofs, q.as_slice());
@@ -344,7 +374,8 @@ impl ComplianceStepper {
                         let c = jf.cands[i];
                         let (wn, wt) = c.force_directions(&pose, jg);
                         let (wn, wt) = (wn.dense(dofs), wt.dense(dofs));
-                        self.end_eval(out.len(), states, Some(c.case), wn, wt, -c.gap, u)
+                        let at = (-c.gap, u, None);
+                        self.end_eval(out.len(), states, Some(c.case), wn, wt, at)
                     }
                     None => {
                         // No corner over the other face at this end: open, state reset to the
@@ -358,7 +389,13 @@ impl ComplianceStepper {
             }
         }
         for ab in &self.abutments {
-            let shift = ab.shift(dofs, q.as_slice());
+            let shift = match ground {
+                Some((d, _)) => ab.shift_on(dofs, q.as_slice(), d),
+                None => ab.shift(dofs, q.as_slice()),
+            };
+            // the face's velocity along its normal and tangent
+            let face =
+                ground.map(|(_, v)| (v[ab.line].dot(&ab.normal), v[ab.line].dot(&ab.tangent)));
             for c0 in &ab.corners {
                 let (j, nn, tn) = (ab.body, ab.normal, ab.tangent);
                 let pc = pose.place(&self.bodies, j, c0);
@@ -366,7 +403,7 @@ impl ComplianceStepper {
                 let dir = |v: crate::math::Vector| ab.direction(v, &r);
                 let delta = -((pc - ab.point).dot(&nn) + shift);
                 let (wn, wt) = (dir(nn).dense(dofs), dir(tn).dense(dofs));
-                out.push(self.end_eval(out.len(), states, None, wn, wt, delta, u));
+                out.push(self.end_eval(out.len(), states, None, wn, wt, (delta, u, face)));
             }
         }
         out
@@ -386,7 +423,7 @@ impl ComplianceStepper {
 
     /// The ends at the trial `un`.
     fn eval_at(&self, tr: &Trial, un: &State) -> Vec<EndEval> {
-        self.eval_ends(&self.q_of(tr, un), un, &self.states)
+        self.eval_ends(&self.q_of(tr, un), un, &self.states, tr.ground)
     }
 
     /// The residual `r(u) = u − base − hθ Ŵ⁻¹ R(u)`.
@@ -458,7 +495,7 @@ impl ComplianceStepper {
         let vr = self.vr;
         for (i, &e) in held.iter().enumerate() {
             let mu = self.mu_of(e);
-            let gt = ev[e].wt.dot(un);
+            let gt = ev[e].rel(un).1;
             let root = (gt * gt + vr * vr).sqrt();
             ev[e].f_n = lam[i];
             ev[e].f_t = -mu * lam[i] * gt / root;
@@ -534,7 +571,7 @@ impl ComplianceStepper {
     ) -> Option<(State, Vec<EndEval>)> {
         let mut ev = self.eval_at(tr, &un);
         for (i, &e) in held.iter().enumerate() {
-            let ddot = -ev[e].wn.dot(&un);
+            let ddot = -ev[e].rel(&un).0;
             let f_hi = self.sites[e / 2]
                 .law
                 .corner_evaluate(&self.states[e], Real::MIN_POSITIVE, ddot)
@@ -542,7 +579,7 @@ impl ComplianceStepper {
             if !(lam[i] >= 0.0 && lam[i] <= f_hi * (1.0 + 1e-9)) {
                 return None;
             }
-            let gt = ev[e].wt.dot(&un);
+            let gt = ev[e].rel(&un).1;
             ev[e].f_n = lam[i];
             ev[e].f_t = -self.mu_of(e) * lam[i] * gt / (gt * gt + self.vr * self.vr).sqrt();
         }
@@ -598,8 +635,8 @@ impl ComplianceStepper {
                     contact,
                     site,
                     mode: SlipMode::Stick,
-                    gamma_n_pre: ev[e].wn.dot(u),
-                    gamma_t_pre: ev[e].wt.dot(u),
+                    gamma_n_pre: ev[e].rel(u).0,
+                    gamma_t_pre: ev[e].rel(u).1,
                     gamma_n_post: Real::NAN,
                     gamma_t_post: Real::NAN,
                     impulse_n: 0.0,
@@ -628,8 +665,10 @@ impl ComplianceStepper {
                 oi.impulse_n += pn;
                 oi.impulse_t += pt;
                 let src = if ev[e].present { &ev[e] } else { &self.ends[e] };
-                let (wn, wt) = (&src.wn, &src.wt);
-                oi.work -= u_mid.dot(wn) * pn + u_mid.dot(wt) * pt;
+                // the contact's own work: on the relative motion (a moving face's work is the
+                // support's input)
+                let (gn, gt) = src.rel(u_mid);
+                oi.work -= gn * pn + gt * pt;
                 oi.peak_force = oi.peak_force.max(fn1);
                 if ev[e].present {
                     oi.max_penetration = oi.max_penetration.max(ev[e].delta);
@@ -638,8 +677,7 @@ impl ComplianceStepper {
                     let d1 = if ev[e].present { ev[e].delta } else { 0.0 };
                     let end = crossing(time, h, self.ends[e].delta, d1);
                     let rec = &mut log.records[oi.record];
-                    rec.gamma_n_post = wn.dot(un);
-                    rec.gamma_t_post = wt.dot(un);
+                    (rec.gamma_n_post, rec.gamma_t_post) = src.rel(un);
                     rec.impulse_n = oi.impulse_n;
                     rec.impulse_t = oi.impulse_t;
                     rec.energy_dissipated = oi.work;
@@ -674,6 +712,7 @@ impl ComplianceStepper {
             u: inp.u,
             winv: inp.winv,
             base: inp.u_free + &wr * (h * (1.0 - th)),
+            ground: inp.ground,
         };
         let guess = &tr.base + &wr * hth;
         let (converged, un, ev) = self.newton(&tr, guess);

@@ -26,6 +26,9 @@ pub(crate) struct Coupled {
     pub c: DMatrix<Real>,
     /// `r` (`n × 2`): the coordinates that the ground's `(a_x, a_y)` accelerates.
     pub r: DMatrix<Real>,
+    /// `(P_K, P_C)` (`n × 2S`): the links' coupling to the support lines, when the supports move
+    /// apart ([`crate::sim::excitation`]).
+    pub support: Option<(DMatrix<Real>, DMatrix<Real>)>,
 }
 
 /// The iteration operators of a [`Coupled`] system for one step `h` and `θ`.
@@ -43,6 +46,8 @@ pub(crate) struct Dense {
     mr: DMatrix<Real>,
     /// `K − K_y`.
     k_elastic: DMatrix<Real>,
+    /// `(h Ŵ⁻¹ P_K, h Ŵ⁻¹ P_C)`.
+    g_s: Option<(DMatrix<Real>, DMatrix<Real>)>,
 }
 
 impl Dense {
@@ -59,7 +64,12 @@ impl Dense {
         let a_q = -(&winv * &sys.k) * h;
         let b_g = -(&winv * &mr) * h;
         let k_elastic = &sys.k - &sys.ky;
+        let g_s = sys
+            .support
+            .as_ref()
+            .map(|(pk, pc)| ((&winv * pk) * h, (&winv * pc) * h));
         Ok(Dense {
+            g_s,
             sys,
             what,
             winv,
@@ -77,6 +87,24 @@ impl Dense {
         out.gemv(1.0, &self.a_u, u, 1.0);
         out.gemv(1.0, &self.a_q, q, 1.0);
         out.gemv(1.0, &self.b_g, &Vector2::new(abar.x, abar.y), 1.0);
+    }
+
+    /// Adds the supports' load over a step to `u_free`: `h Ŵ⁻¹ (P_K d̄ + P_C v̄)` with `d̄`, `v̄` the
+    /// offsets at the step's θ-point (`(1−θ) d_k + θ d_{k+1}`).
+    pub fn add_support_free(&self, th: Real, o: &crate::sim::excitation::Offsets, out: &mut State) {
+        let Some((gk, gc)) = &self.g_s else { return };
+        let (d, v) = (mean(&o.d, &o.d1, th), mean(&o.v, &o.v1, th));
+        out.gemv(1.0, gk, &d, 1.0);
+        out.gemv(1.0, gc, &v, 1.0);
+    }
+
+    /// Adds the supports' load `P_K d + P_C ḋ` at offsets `(d, v)` to `f`.
+    pub fn add_support_load(&self, d: &[Vector], v: &[Vector], f: &mut State) {
+        let Some((pk, pc)) = &self.sys.support else {
+            return;
+        };
+        f.gemv(1.0, pk, &flat(d), 1.0);
+        f.gemv(1.0, pc, &flat(v), 1.0);
     }
 
     /// `F = −M r a_g`, into `f`.
@@ -101,4 +129,20 @@ impl Dense {
     pub fn ky_mul(&self, v: &State, out: &mut State) {
         out.gemv(1.0, &self.sys.ky, v, 0.0);
     }
+}
+
+/// `(d_x, d_y)` per support, flattened.
+fn flat(d: &[Vector]) -> State {
+    State::from_iterator(2 * d.len(), d.iter().flat_map(|v| [v.x, v.y]))
+}
+
+/// `(1−θ) a + θ b`, flattened.
+fn mean(a: &[Vector], b: &[Vector], th: Real) -> State {
+    State::from_iterator(
+        2 * a.len(),
+        a.iter().zip(b).flat_map(|(a, b)| {
+            let m = a * (1.0 - th) + b * th;
+            [m.x, m.y]
+        }),
+    )
 }

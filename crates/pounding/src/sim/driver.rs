@@ -27,6 +27,7 @@
 //! `view.rs`.
 
 use super::contact::State;
+use super::excitation::Offsets;
 use super::observer::{Observer, Snapshot};
 use super::peaks::{Observed, Peaks};
 use super::scheme::{Scheme, Winv, Work};
@@ -57,6 +58,9 @@ pub(crate) struct StepInput<'a> {
     /// The iteration-matrix inverse of this step (the scheme's `Ŵ⁻¹`, or the tangent one where
     /// bearings flow: [`Winv`]).
     pub winv: Winv<'a>,
+    /// The supports' offsets and velocities at `t_{k+1}` when they move apart
+    /// ([`super::excitation`]).
+    pub ground: Option<(&'a [crate::math::Vector], &'a [crate::math::Vector])>,
 }
 
 /// The times `t_k = k·h` of the step grid, as the decimals the user expects: with `h` a short
@@ -218,15 +222,29 @@ impl Ledger {
     }
 
     /// Input work and viscous dissipation of step `k`; leaves `ū_θ` in `w.u_th` and `ū` in
-    /// `w.u_mid`.
-    fn advance(&mut self, sc: &Scheme, k: usize, u: &State, u_new: &State, w: &mut Work) {
+    /// `w.u_mid`. `offs`: the supports' offsets over the step, when they move apart (their load
+    /// is input work).
+    fn advance(
+        &mut self,
+        sc: &Scheme,
+        k: usize,
+        (u, u_new): (&State, &State),
+        w: &mut Work,
+        offs: Option<&Offsets>,
+    ) {
         let th = sc.th;
         if self.loaded == Some(k) {
             std::mem::swap(&mut w.f0, &mut w.f1);
         } else {
             sc.load(&sc.ag[k], &mut w.f0);
+            if let Some(o) = offs {
+                sc.add_support_load(&o.d, &o.v, &mut w.f0);
+            }
         }
         sc.load(&sc.ag[k + 1], &mut w.f1);
+        if let Some(o) = offs {
+            sc.add_support_load(&o.d1, &o.v1, &mut w.f1);
+        }
         self.loaded = Some(k + 1);
         for i in 0..u.len() {
             w.u_th[i] = u[i] * (1.0 - th) + u_new[i] * th;
@@ -259,6 +277,9 @@ pub(crate) struct Trace {
     pub contact_force: Vec<Real>,
     /// Smaller abutment corner gap `[start, end]` (NaN without that abutment).
     pub abutment_gaps: Vec<[Real; 2]>,
+    /// The support lines' offsets `(d_x, d_y)` from the reference ground, `2 (N + 1)` per row
+    /// (empty when the supports move together).
+    pub ground: Vec<Real>,
 }
 
 impl Trace {
@@ -302,6 +323,8 @@ impl Trace {
             self.contact_force.extend(f.iter().flatten());
         }
         self.abutment_gaps.push(obs.abut_gaps);
+        self.ground
+            .extend(fr.ground.iter().flat_map(|g| [g.x, g.y]));
     }
 }
 
@@ -367,6 +390,15 @@ pub(crate) fn run<S: Stepper>(
     // the geometry at q_k: computed once per state, after q_{k+1} is known, so that the
     // elements' commit at q_{k+1} and the next step share its sin θ_j, cos θ_j
     let mut frame = bridge.frame(&q);
+    // the supports' offsets at both ends of the step, when they move apart
+    let mut offs = sc.motion.as_ref().map(|m| {
+        let mut o = Offsets::new(m.len());
+        sc.support_offsets(0, &mut o.d, &mut o.v);
+        o
+    });
+    if let Some(o) = &offs {
+        frame.ground.clone_from(&o.d);
+    }
     let mut obs = Observed::default();
     let clock = TimeGrid::new(h);
     for k in 0..=sc.n_steps {
@@ -375,9 +407,9 @@ pub(crate) fn run<S: Stepper>(
         }
         let t = clock.time(k);
         peaks.observe(t, &q, &frame, bridge, &mut obs);
-        peaks.observe_segments(&q, bridge);
+        peaks.observe_segments(&q, bridge, &frame.ground);
         if !bridge.piers.is_empty() {
-            peaks.observe_piers(&q, bridge, &el);
+            peaks.observe_piers(&q, bridge, &el, &frame.ground);
         }
         if peaks.wall.iter().any(Option::is_some) {
             peaks.observe_walls(&q, bridge, &el);
@@ -421,6 +453,11 @@ pub(crate) fn run<S: Stepper>(
         }
         let abar = sc.ag[k] * (1.0 - th) + sc.ag[k + 1] * th;
         sc.u_free(&q, &u, &abar, &mut work.u_free);
+        if let Some(o) = &mut offs {
+            sc.support_offsets(k + 1, &mut o.d1, &mut o.v1);
+            sc.add_support_free(o, &mut work.u_free);
+            el.set_ground(&o.d1);
+        }
         if has_elements {
             el.step_force(&q, &u, h, th, &bridge.bodies, &frame.pose, &mut el_force);
             sc.winv_into(&el_force.r, &mut work.wr);
@@ -441,6 +478,7 @@ pub(crate) fn run<S: Stepper>(
             bridge,
             scheme: sc,
             winv,
+            ground: offs.as_ref().map(|o| (&o.d1[..], &o.v1[..])),
         };
         let mut out = stepper.step(&input, &mut log);
         if !yielding.is_empty() {
@@ -451,7 +489,7 @@ pub(crate) fn run<S: Stepper>(
             }
         }
         peaks.pen = peaks.pen.max(out.penetration);
-        ledger.advance(sc, k, &u, &out.u, &mut work);
+        ledger.advance(sc, k, (&u, &out.u), &mut work, offs.as_ref());
         if has_elements {
             if !yielding.is_empty() {
                 for i in 0..q.len() {
@@ -467,6 +505,10 @@ pub(crate) fn run<S: Stepper>(
         }
         u = out.u;
         bridge.update_frame(&q, &mut frame);
+        if let Some(o) = &mut offs {
+            o.advance();
+            frame.ground.clone_from(&o.d);
+        }
         if has_elements {
             el.commit(&q, &frame.pose, &bridge.bodies);
         }
@@ -476,7 +518,7 @@ pub(crate) fn run<S: Stepper>(
             break;
         }
     }
-    peaks.finish(bridge);
+    peaks.finish(bridge, &frame.ground);
     let mut stats = stepper.finish(&mut log);
     stats.newton_failures += yielding.failures;
     stats.bearing_corrections = yielding.corrections;

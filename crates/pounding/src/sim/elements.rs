@@ -111,6 +111,12 @@ pub(crate) struct YieldingBearing {
     pub law: BilinearBearing,
     /// Committed state.
     pub state: BearingState,
+    /// The support line under it when it stands on the ground (`None`: on a body, or on ground
+    /// that moves with the reference: a backwall's piles).
+    pub line: Option<usize>,
+    /// That support's current offset from the reference ground (zero when the supports move
+    /// together; set per step by the driver, [`Elements::set_ground`]).
+    pub ground: Vector,
 }
 
 /// One restrainer: a tension-only cable between two attachments (today across a joint, from
@@ -214,6 +220,16 @@ pub(crate) struct Elements {
 }
 
 impl Elements {
+    /// Sets the offsets of the supports under the members on the ground (the time of the
+    /// states their deformations are next evaluated at).
+    pub fn set_ground(&mut self, ground: &[Vector]) {
+        for b in &mut self.bearings {
+            if let Some(s) = b.line {
+                b.ground = ground[s];
+            }
+        }
+    }
+
     /// Nothing to do.
     pub fn is_empty(&self) -> bool {
         self.bearings.is_empty()
@@ -436,12 +452,24 @@ pub(crate) fn deformation(dofs: &Dofs, q: &State, body: usize, r: &Vector) -> Ve
 }
 
 impl YieldingBearing {
+    /// The part of its deformation that its support's offset takes away: the offset (on its
+    /// axis, for a member along one), zero on a body or on ground that moves with the reference.
+    #[inline]
+    pub fn ground_offset(&self) -> Vector {
+        match (self.line, self.base, self.axis) {
+            (Some(_), None, None) => self.ground,
+            (Some(_), None, Some(a)) => a * self.ground.dot(&a),
+            _ => Vector::zeros(),
+        }
+    }
+
     /// Its linearised deformation at `q`: its point on [`Self::body`] relative to its point on
     /// [`Self::base`] (or the ground).
     #[inline]
     pub fn deformation(&self, dofs: &Dofs, q: &State) -> Vector {
         let u = deformation(dofs, q, self.body, &self.arm);
         let u = match self.base {
+            None if self.line.is_some() => u - self.ground,
             None => u,
             Some((c, arm)) => u - deformation(dofs, q, c, &arm),
         };

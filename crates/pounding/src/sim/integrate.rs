@@ -19,6 +19,7 @@
 use super::bridge::{BridgeModel, abut_key, check, joint_key};
 use super::contact::State;
 use super::driver::{self};
+use super::excitation::{SupportExcitation, SupportMotion};
 use super::scheme::BodySystem;
 use super::view::Bridge;
 use super::{JointContact, SimError, SimSettings, compliance, rigid};
@@ -38,8 +39,10 @@ pub(crate) struct RunInput<'a> {
     pub systems: &'a [BodySystem],
     /// Which sites are rigid and which compliant.
     pub kinds: &'a SiteKinds,
-    /// The ground acceleration.
+    /// The ground acceleration (the reference motion when the supports move apart).
     pub ground: &'a GroundMotion,
+    /// The supports' own motions (`None`: every support moves with `ground`).
+    pub motion: Option<&'a SupportMotion>,
     /// `(q(0), u(0))`.
     pub initial: (&'a [Real], &'a [Real]),
     /// Step, duration, θ, history stride, monitors.
@@ -63,11 +66,13 @@ pub(crate) struct MoreauJean {
 impl Integrator for MoreauJean {
     fn integrate(&self, run: &RunInput<'_>) -> Result<driver::RunResult, SimError> {
         let (model, bridge, kinds, settings) = (run.model, run.bridge, run.kinds, run.settings);
+        let apart = run.motion.is_some();
         let coupled = model
-            .coupled_system(run.systems, self.dense)?
+            .coupled_system(run.systems, self.dense || apart, apart)?
             .map(|c| (c, model.dofs()));
-        let scheme =
+        let mut scheme =
             super::scheme::Scheme::new(run.ground, settings, run.systems.to_vec(), coupled)?;
+        scheme.motion = run.motion.cloned();
         let q0 = State::from_column_slice(run.initial.0);
         let u0 = State::from_column_slice(run.initial.1);
         let observers = super::observer::standard(bridge);
@@ -100,13 +105,18 @@ impl Integrator for MoreauJean {
 pub(crate) fn integrate(
     model: &BridgeModel,
     bridge: &Bridge,
-    ground: &GroundMotion,
+    (ground, excitation): (&GroundMotion, &SupportExcitation),
     initial: (&[Real], &[Real]),
     settings: &SimSettings,
 ) -> Result<(driver::RunResult, Vec<BodySystem>, SiteKinds), SimError> {
     let kinds = model.contact_kinds()?;
-    // relative coordinates: every support moves with the one ground motion (support.rs)
+    // relative coordinates: every support moves with the one ground motion (support.rs), or
+    // each its own motion relative to it (excitation.rs)
     super::support::check_uniform(&bridge.supports)?;
+    let motion = SupportMotion::new(model, ground, excitation)?;
+    if motion.is_some() {
+        check_apart(model, &kinds)?;
+    }
     model.check_time_step(settings.dt)?;
     let systems = model.body_systems()?;
     let run = RunInput {
@@ -115,11 +125,50 @@ pub(crate) fn integrate(
         systems: &systems,
         kinds: &kinds,
         ground,
+        motion: motion.as_ref(),
         initial,
         settings,
     };
     let result = MoreauJean { dense: false }.integrate(&run)?;
     Ok((result, systems, kinds))
+}
+
+/// Refuses what the supports' own motions do not reach yet: an abutment with the rigid (impact)
+/// law, a backwall, shear keys, and the segments' dashpots to "the ground" (which ground, when
+/// each support moves its own way?).
+fn check_apart(model: &BridgeModel, kinds: &SiteKinds) -> Result<(), SimError> {
+    let refuse = |name: String, what: &str| SimError::InvalidArgument {
+        name,
+        reason: format!(
+            "{what} is not supported when the supports move apart (wave passage or a motion per \
+             support); run it under a uniform ground motion"
+        ),
+    };
+    for (side, a) in model.abutments.iter().enumerate() {
+        let Some(a) = a else { continue };
+        if kinds.abutments[side] == Some(false) {
+            return Err(refuse(
+                abut_key(side, "law"),
+                "an abutment with the rigid impact law (give it a compliance law)",
+            ));
+        }
+        if a.backwall.is_some() {
+            return Err(refuse(abut_key(side, "backwall"), "a backwall"));
+        }
+        if a.shear_keys.is_some() {
+            return Err(refuse(abut_key(side, "shear_keys"), "shear keys"));
+        }
+    }
+    if model.damping_model == super::DampingModel::TranslationalDashpots
+        && model.damping_ratio > 0.0
+    {
+        return Err(refuse(
+            "bridge.damping".into(),
+            "`dashpots` damping (each segment's dashpots to one ground; use `rayleigh` or the \
+             bearings' `bearing_damping`)",
+        ));
+    }
+    Ok(())
 }
 
 /// Which contact sites have a compliance law (`true`) and which are rigid (`false`).
@@ -276,6 +325,7 @@ mod tests {
             systems: &systems,
             kinds: &kinds,
             ground,
+            motion: None,
             initial: (&z, &z),
             settings: s,
         };

@@ -67,6 +67,7 @@ mod coupled;
 pub mod dofs;
 mod driver;
 mod elements;
+pub mod excitation;
 mod integrate;
 mod mixed;
 pub mod model;

@@ -182,7 +182,7 @@ impl Observer for PierColumns {
         let v = &mut self.table.values;
         v.push(s.t);
         for p in &s.bridge.piers {
-            let (u, f) = p.drift_and_force(&s.bridge.dofs, s.q, s.elements);
+            let (u, f) = p.drift_and_force(&s.bridge.dofs, s.q, s.elements, &s.frame.ground);
             v.extend([u.x, u.y, -f.x, -f.y]);
         }
     }

@@ -155,7 +155,14 @@ impl Peaks {
     /// skipped in a step where `|u_b| ≤ |(x, y)| + |θ| max_b |r_b|` (with a relative margin of
     /// 1e-12 for rounding) cannot exceed the peak so far: the peak is the same, in far fewer
     /// operations once it has grown.
-    pub(crate) fn observe_segments(&mut self, q: &State, br: &Bridge) {
+    ///
+    /// When the supports move apart (`ground` their offsets, else empty), a segment's
+    /// displacement is taken relative to the ground under its start support and each bearing's
+    /// deformation relative to its own support.
+    pub(crate) fn observe_segments(&mut self, q: &State, br: &Bridge, ground: &[Vector]) {
+        if !ground.is_empty() {
+            return self.observe_segments_apart(q, br, ground);
+        }
         let q = q.as_slice();
         let segments = self.disp.iter_mut().zip(self.bearing.iter_mut());
         for (j, ((d, peak), pts)) in segments.zip(&self.arms).enumerate() {
@@ -181,6 +188,23 @@ impl Peaks {
         }
     }
 
+    /// [`Self::observe_segments`] under supports that move apart.
+    fn observe_segments_apart(&mut self, q: &State, br: &Bridge, ground: &[Vector]) {
+        let q = q.as_slice();
+        for (j, bs) in br.bearings.iter().enumerate() {
+            let [x, y, _] = br.dofs.plan_of(j, q);
+            let rel = Vector::new(x, y) - ground[j];
+            self.disp[j] = self.disp[j].max(rel.norm_squared());
+            for b in bs {
+                let mut u = b.deformation(&br.dofs, q, &br.bodies);
+                if matches!(b.bottom, Attachment::Support(..)) {
+                    u -= ground[b.line];
+                }
+                self.bearing[j] = self.bearing[j].max(u.norm_squared());
+            }
+        }
+    }
+
     /// The backwalls' displacements, backfill and pile forces (`el`: committed at `q`).
     pub(crate) fn observe_walls(&mut self, q: &State, br: &Bridge, el: &super::elements::Elements) {
         for a in &br.abutments {
@@ -199,9 +223,15 @@ impl Peaks {
     }
 
     /// The piers' drifts, column forces and yield (`el`: the elements committed at `q`).
-    pub(crate) fn observe_piers(&mut self, q: &State, br: &Bridge, el: &super::elements::Elements) {
+    pub(crate) fn observe_piers(
+        &mut self,
+        q: &State,
+        br: &Bridge,
+        el: &super::elements::Elements,
+        ground: &[Vector],
+    ) {
         for (pk, p) in self.pier.iter_mut().zip(&br.piers) {
-            let (u, f) = p.drift_and_force(&br.dofs, q.as_slice(), el);
+            let (u, f) = p.drift_and_force(&br.dofs, q.as_slice(), el, ground);
             pk.drift[0] = pk.drift[0].max(u.x.abs());
             pk.drift[1] = pk.drift[1].max(u.y.abs());
             pk.drift_magnitude = pk.drift_magnitude.max(u.norm());
@@ -217,12 +247,12 @@ impl Peaks {
     /// On a pier the displacement is relative to its cap (`q` the state of `pose`).
     fn seat_displacement(
         s_end: &SeatEnd,
-        pose: &Pose,
+        (pose, ground): (&Pose, &[Vector]),
         bodies: &[SegmentBody],
         q: &State,
         br: &Bridge,
     ) -> Real {
-        let base = Self::seat_base(s_end, q, br);
+        let base = Self::seat_base(s_end, q, br, ground);
         s_end
             .corners
             .iter()
@@ -230,11 +260,12 @@ impl Peaks {
             .fold(Real::NEG_INFINITY, Real::max)
     }
 
-    /// The displacement of what a seated end rests on (zero on the ground).
+    /// The displacement of what a seated end rests on (zero on the ground that moves with the
+    /// reference; its support's offset in `ground` when the supports move apart).
     #[inline]
-    fn seat_base(s_end: &SeatEnd, q: &State, br: &Bridge) -> Vector {
+    fn seat_base(s_end: &SeatEnd, q: &State, br: &Bridge, ground: &[Vector]) -> Vector {
         match s_end.base {
-            None => Vector::zeros(),
+            None => super::view::ground_at(ground, s_end.line),
             Some(c) => {
                 let [x, y, _] = br.dofs.plan_of(c, q.as_slice());
                 Vector::new(x, y)
@@ -243,14 +274,15 @@ impl Peaks {
     }
 
     /// The seat displacements at the last observed step (the residuals).
-    pub fn finish(&mut self, br: &Bridge) {
+    pub fn finish(&mut self, br: &Bridge, ground: &[Vector]) {
         if self.last_q.is_empty() {
             return;
         }
         let q = State::from_column_slice(&self.last_q);
         let frame = br.frame(&q);
         for (e, s_end) in br.seats.iter().enumerate() {
-            self.seat_last[e] = Self::seat_displacement(s_end, &frame.pose, &br.bodies, &q, br);
+            let at = (&frame.pose, ground);
+            self.seat_last[e] = Self::seat_displacement(s_end, at, &br.bodies, &q, br);
         }
     }
 
@@ -312,7 +344,7 @@ impl Peaks {
             // skipped where it cannot exceed the peak so far (nor, then, the seat): the corners'
             // displacement along n is at most d·n + |θ| |c − G⁰|, plus rounding
             let [x, y, th] = br.dofs.plan_of(s_end.body, q.as_slice());
-            let base = Self::seat_base(s_end, q, br);
+            let base = Self::seat_base(s_end, q, br, &fr.ground);
             let (reach, scale) = self.seat_reach[e];
             let dn = (x - base.x) * s_end.inward.x + (y - base.y) * s_end.inward.y;
             let spin = th.abs() * reach;
@@ -320,7 +352,7 @@ impl Peaks {
             if bound < self.seat[e] {
                 continue;
             }
-            let s = Self::seat_displacement(s_end, pose, bodies, q, br);
+            let s = Self::seat_displacement(s_end, (pose, &fr.ground), bodies, q, br);
             if s > self.seat[e] {
                 self.seat_time[e] = t;
             }
@@ -332,7 +364,7 @@ impl Peaks {
         let abut_gaps = &mut obs.abut_gaps;
         *abut_gaps = [Real::NAN; 2];
         for a in &br.abutments {
-            let shift = a.shift(&br.dofs, q.as_slice());
+            let shift = a.shift_on(&br.dofs, q.as_slice(), &fr.ground);
             let gm = a
                 .corners
                 .iter()

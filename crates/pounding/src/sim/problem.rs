@@ -8,6 +8,7 @@
 //! JSON keys).
 
 use super::bridge::{BridgeModel, BridgeProblem, BridgeSolution};
+use super::excitation::SupportExcitation;
 use super::output::Layout;
 use super::{SimError, SimProblem, SimSettings};
 use crate::ground_motion::GroundMotion;
@@ -18,8 +19,10 @@ use std::borrow::Cow;
 pub trait Problem: Sync {
     /// The bridge that runs (a preset: the bridge it expands into).
     fn model(&self) -> Cow<'_, BridgeModel>;
-    /// The ground acceleration.
+    /// The ground acceleration (the reference motion when the supports move apart).
     fn ground(&self) -> &GroundMotion;
+    /// How the supports move ([`SupportExcitation`]).
+    fn supports(&self) -> &SupportExcitation;
     /// The initial displacements and velocities `(q(0), u(0))`, laid out by
     /// [`BridgeModel::dofs`] of [`Self::model`].
     fn initial(&self) -> (&[Real], &[Real]);
@@ -50,8 +53,9 @@ pub fn simulate<P: Problem + ?Sized>(
     problem.check_initial()?;
     let model = problem.model();
     let view = model.bridge();
+    let ground = (problem.ground(), problem.supports());
     let (result, systems, kinds) =
-        super::integrate::integrate(&model, &view, problem.ground(), problem.initial(), settings)?;
+        super::integrate::integrate(&model, &view, ground, problem.initial(), settings)?;
     Ok(super::solution::solution(
         result,
         (&systems, settings.dt),
@@ -60,6 +64,9 @@ pub fn simulate<P: Problem + ?Sized>(
         &kinds,
     ))
 }
+
+/// Every support with the run's ground motion.
+pub(crate) static UNIFORM: SupportExcitation = SupportExcitation::Uniform;
 
 /// The first entry of `v` that is not finite, as an error naming it `name[i]`.
 fn finite(name: &str, v: &[Real]) -> Result<(), SimError> {
@@ -79,6 +86,9 @@ impl Problem for BridgeProblem {
     }
     fn ground(&self) -> &GroundMotion {
         &self.ground
+    }
+    fn supports(&self) -> &SupportExcitation {
+        &self.supports
     }
     fn initial(&self) -> (&[Real], &[Real]) {
         (&self.q0, &self.u0)
@@ -103,6 +113,7 @@ impl Problem for BridgeProblem {
         BridgeProblem {
             model: self.model.clone(),
             ground,
+            supports: self.supports.clone(),
             q0: self.q0.clone(),
             u0: self.u0.clone(),
         }
@@ -120,6 +131,9 @@ impl Problem for SimProblem {
     }
     fn ground(&self) -> &GroundMotion {
         &self.ground
+    }
+    fn supports(&self) -> &SupportExcitation {
+        &UNIFORM
     }
     fn initial(&self) -> (&[Real], &[Real]) {
         (&self.q0, &self.u0)

@@ -59,6 +59,9 @@ pub(crate) struct Scheme {
     /// The dense operators of a system whose links couple bodies ([`super::coupled`]; `None`:
     /// block diagonal, the blocks above).
     pub dense: Option<Dense>,
+    /// The supports' own motions (`None`: every support moves with the ground motion;
+    /// [`super::excitation`]; only with `dense` operators that hold the supports' coupling).
+    pub motion: Option<super::excitation::SupportMotion>,
 }
 
 impl Scheme {
@@ -104,6 +107,7 @@ impl Scheme {
             bodies: Vec::new(),
             dofs: Dofs::plan_rigid(n),
             dense: None,
+            motion: None,
         };
         if let Some((sys, dofs)) = coupled {
             sc.dense = Some(Dense::new(sys, h, th)?);
@@ -187,6 +191,27 @@ impl Scheme {
         for (j, m) in self.mr.iter().enumerate() {
             f.fixed_rows_mut::<3>(self.dofs.start(j))
                 .copy_from(&(-(m * a)));
+        }
+    }
+
+    /// The supports' offsets at `t_k = k h` into `(d, v)` (nothing without support motions).
+    pub fn support_offsets(&self, k: usize, d: &mut [Vector], v: &mut [Vector]) {
+        if let Some(m) = &self.motion {
+            m.offsets(k as Real * self.h, d, v);
+        }
+    }
+
+    /// Adds the supports' load at offsets `(d, v)` to `f` (nothing without support motions).
+    pub fn add_support_load(&self, d: &[Vector], v: &[Vector], f: &mut State) {
+        if let Some(dn) = &self.dense {
+            dn.add_support_load(d, v, f);
+        }
+    }
+
+    /// Adds the supports' load over the step of `o` to the contact-free velocity `out`.
+    pub fn add_support_free(&self, o: &super::excitation::Offsets, out: &mut State) {
+        if let Some(dn) = &self.dense {
+            dn.add_support_free(self.th, o, out);
         }
     }
 

@@ -29,6 +29,8 @@ pub(crate) struct AbutmentFace {
     /// The backwall body whose face this is (`None`: the ground); the face moves with it along
     /// `−normal` by its coordinate `s`.
     pub wall: Option<usize>,
+    /// Its support line (`start` or `end`, [`super::excitation`]).
+    pub line: usize,
 }
 
 impl AbutmentFace {
@@ -36,6 +38,17 @@ impl AbutmentFace {
     #[inline]
     pub fn shift(&self, dofs: &Dofs, q: &[Real]) -> Real {
         self.wall.map_or(0.0, |w| dofs.axial_displacement(w, q))
+    }
+
+    /// [`Self::shift`] with the face's support moved by `ground` (its line's offset, if the
+    /// supports move apart: [`super::excitation`]).
+    #[inline]
+    pub fn shift_on(&self, dofs: &Dofs, q: &[Real], ground: &[Vector]) -> Real {
+        let s = self.shift(dofs, q);
+        match ground.get(self.line) {
+            Some(d) => s - d.dot(&self.normal),
+            None => s,
+        }
     }
 
     /// A contact direction at this face: `v` (with moment arm `r`) on the segment and, with a
@@ -66,6 +79,7 @@ impl AbutmentFace {
             point: face.mid - n * gap,
             gap,
             wall: None,
+            line: if side == 0 { 0 } else { body + 1 },
         }
     }
 }
@@ -99,6 +113,8 @@ pub(crate) struct SeatEnd {
     /// The body it is seated on (a pier's cap; `None`: the ground): seat displacements are
     /// relative to it.
     pub base: Option<usize>,
+    /// The support line under it (the ground it is seated on when `base` is `None`).
+    pub line: usize,
 }
 
 /// A bearing under a segment: its point (global reference pose) and its (initial) stiffness.
@@ -110,6 +126,8 @@ pub(crate) struct BearingAt {
     pub bottom: Attachment,
     /// Stiffness in each plan direction \[N/m\].
     pub stiffness: Real,
+    /// The support line under it (its bottom's motion when that is the ground).
+    pub line: usize,
 }
 
 impl BearingAt {
@@ -166,18 +184,29 @@ pub(crate) struct PierAt {
     pub elements: Vec<usize>,
 }
 
+/// The offset of support line `s` in `ground` (zero when the supports move together: empty).
+#[inline]
+pub(crate) fn ground_at(ground: &[Vector], s: usize) -> Vector {
+    ground.get(s).copied().unwrap_or_else(Vector::zeros)
+}
+
 impl PierAt {
-    /// The cap's displacement `(x_c, y_c)` (the column's deformation) and the column's force on
-    /// the ground side, `k0 u − (1 − b) k0 Σ u_p` (its members' committed plastic displacements
-    /// in `elements`).
+    /// The cap's displacement `(x_c, y_c)` relative to its foundation (the column's
+    /// deformation; `ground`: the support lines' offsets, empty when they move together) and the
+    /// column's force on the ground side, `k0 u − (1 − b) k0 Σ u_p` (its members' committed
+    /// plastic displacements in `elements`).
     pub fn drift_and_force(
         &self,
         dofs: &Dofs,
         q: &[Real],
         elements: &super::elements::Elements,
+        ground: &[Vector],
     ) -> (Vector, Vector) {
         let [x, y, _] = dofs.plan_of(self.body, q);
-        let u = Vector::new(x, y);
+        let mut u = Vector::new(x, y);
+        if let Some(d) = ground.get(self.joint + 1) {
+            u -= d;
+        }
         // k0 u − Σ (1 − b) k0 u_p over its members (each u_p along its own axis)
         let mut f = u * self.k0;
         for &e in &self.elements {
@@ -197,7 +226,11 @@ impl Bridge {
             .iter()
             .map(|j| candidates(&self.bodies, &pose, j))
             .collect();
-        Frame { pose, joints }
+        Frame {
+            pose,
+            joints,
+            ground: Vec::new(),
+        }
     }
 
     /// [`Self::frame`] at `q` into `frame` (a frame of this bridge), reusing its storage.
@@ -215,4 +248,7 @@ pub(crate) struct Frame {
     pub pose: Pose,
     /// Per joint: its candidates and the realised one of each end.
     pub joints: Vec<JointFrame>,
+    /// The support lines' offsets from the reference ground at this state's time (empty when
+    /// the supports move together: [`super::excitation`]).
+    pub ground: Vec<Vector>,
 }

@@ -106,7 +106,7 @@ impl DenseImplicit {
         let mut jac = DMatrix::zeros(n, n);
         let mut flows = false;
         for (b, op) in bearings.iter().zip(&self.ops) {
-            let u = Self::apply(op, qp);
+            let u = Self::apply(op, qp) - b.ground_offset();
             let resp = b.law.response(&u, &b.state);
             let fp = (1.0 - b.law.b()) * b.law.k0() * resp.trial.u_p;
             for &(i, l) in op {
@@ -208,7 +208,8 @@ impl DenseImplicit {
             let dq = d * (hth * t);
             let mut dpsi = 0.0;
             for (b, op) in bearings.iter().zip(&self.ops) {
-                dpsi += super::yielding::psi_change(b, Self::apply(op, &q0), Self::apply(op, &dq));
+                let u0 = Self::apply(op, &q0) - b.ground_offset();
+                dpsi += super::yielding::psi_change(b, u0, Self::apply(op, &dq));
             }
             dpsi
         })

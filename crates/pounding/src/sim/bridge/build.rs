@@ -204,12 +204,14 @@ impl BridgeModel {
                     inward: f.inward,
                     length,
                     base: caps[usize::from(at_end)],
+                    line: i + usize::from(at_end),
                 });
             }
         }
         let dofs = self.dofs();
         let elements = self.elements(&bodies, &dofs);
         let on = self.bearing_piers().expect("validated");
+        let lines = self.bearing_lines();
         Bridge {
             piers: self
                 .piers
@@ -239,20 +241,23 @@ impl BridgeModel {
                 .zip(&self.segments)
                 .enumerate()
                 .map(|(i, (points, s))| {
-                    let at = |((p, b), on): ((Vector, &Bearing), &Option<usize>)| {
-                        crate::sim::view::BearingAt {
-                            top: Attachment::Body(i, p),
-                            bottom: match on {
-                                Some(pier) => Attachment::Body(self.cap_body(*pier), p),
-                                None => Attachment::Support(Support::GROUND, p),
-                            },
-                            stiffness: b.stiffness,
-                        }
-                    };
+                    let at =
+                        |(((p, b), on), line): (((Vector, &Bearing), &Option<usize>), &usize)| {
+                            crate::sim::view::BearingAt {
+                                line: *line,
+                                top: Attachment::Body(i, p),
+                                bottom: match on {
+                                    Some(pier) => Attachment::Body(self.cap_body(*pier), p),
+                                    None => Attachment::Support(Support::GROUND, p),
+                                },
+                                stiffness: b.stiffness,
+                            }
+                        };
                     points
                         .into_iter()
                         .zip(&s.bearings)
                         .zip(&on[i])
+                        .zip(&lines[i])
                         .map(at)
                         .collect()
                 })
@@ -331,6 +336,7 @@ impl BridgeModel {
         };
         let points = self.bearing_points();
         let on = self.bearing_piers().expect("validated");
+        let lines = self.bearing_lines();
         for (i, s) in self.segments.iter().enumerate() {
             let Some(y) = s.bearing_yield else { continue };
             let total: Real = s.bearings.iter().map(|b| b.stiffness).sum();
@@ -348,6 +354,8 @@ impl BridgeModel {
                     axis: None,
                     law,
                     state: BearingState::default(),
+                    line: on[i][slot].is_none().then_some(lines[i][slot]),
+                    ground: Vector::zeros(),
                 });
             }
         }
@@ -367,6 +375,8 @@ impl BridgeModel {
                     axis: None,
                     law: BilinearBearing::elastic_perfectly_plastic(p.k, p.fy).expect("validated"),
                     state: BearingState::default(),
+                    line: None,
+                    ground: Vector::zeros(),
                 });
             }
             if let Some(b) = w.backfill {
@@ -415,6 +425,8 @@ impl BridgeModel {
                     axis,
                     law,
                     state: BearingState::default(),
+                    line: Some(pier.joint + 1),
+                    ground: Vector::zeros(),
                 });
             }
         }

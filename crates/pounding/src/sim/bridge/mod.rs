@@ -506,8 +506,10 @@ impl BridgeModel {
 pub struct BridgeProblem {
     /// The bridge.
     pub model: BridgeModel,
-    /// The ground acceleration.
+    /// The ground acceleration (the reference motion when the supports move apart).
     pub ground: GroundMotion,
+    /// How the supports move ([`crate::sim::excitation`]; uniform by default).
+    pub supports: crate::sim::excitation::SupportExcitation,
     /// Initial displacements `q(0)`, laid out by [`BridgeModel::dofs`] \[m, rad\].
     pub q0: Vec<Real>,
     /// Initial velocities `u(0)` relative to the ground \[m/s, rad/s\].
@@ -521,6 +523,7 @@ impl BridgeProblem {
         Self {
             model,
             ground,
+            supports: Default::default(),
             q0: vec![0.0; n],
             u0: vec![0.0; n],
         }

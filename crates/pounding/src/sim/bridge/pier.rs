@@ -212,12 +212,18 @@ impl BridgeModel {
     /// The dense `M`, `K`, `K_y`, `C` and load map of a bridge with piers (module doc); `None`
     /// without piers (the block-diagonal systems `systems` of the segments are the system)
     /// unless `always`.
+    ///
+    /// With `supports`, also the links' coupling to the support lines (`P_K`, `P_C`,
+    /// [`crate::sim::excitation`]): a link from body point `B` to support line `s` adds `x Bᵀ` to
+    /// the columns `2s, 2s+1` of `P_K` (`x` its stiffness) or `P_C` (its dashpot), and a Rayleigh
+    /// damping adds `a_1` times the links' `P_K` to `P_C` (per segment, or of the whole system).
     pub(crate) fn coupled_system(
         &self,
         systems: &[BodySystem],
         always: bool,
+        supports: bool,
     ) -> Result<Option<Coupled>, SimError> {
-        if self.piers.is_empty() && !self.has_backwalls() && !always {
+        if self.piers.is_empty() && !self.has_backwalls() && !always && !supports {
             return Ok(None);
         }
         let dofs = self.dofs();
@@ -230,13 +236,18 @@ impl BridgeModel {
         let mut ky = DMatrix::zeros(n, n);
         let mut c = DMatrix::zeros(n, n);
         let mut r = DMatrix::zeros(n, 2);
+        let n_lines = if supports { self.segments.len() + 1 } else { 0 };
+        let mut pk = DMatrix::zeros(n, 2 * n_lines);
+        let mut pc = DMatrix::zeros(n, 2 * n_lines);
+        let lines = self.bearing_lines();
+        let coupled = !self.piers.is_empty() || self.has_backwalls();
+        let rayleigh = self.damping_model == DampingModel::Rayleigh && self.damping_ratio > 0.0;
         for (i, sys) in systems.iter().enumerate() {
             let s = dofs.start(i);
             m.view_mut((s, s), (3, 3)).copy_from(&sys.mass);
             r[(s, 0)] = 1.0;
             r[(s + 1, 1)] = 1.0;
             // each segment's own damping block, unless Rayleigh damping of a coupled system
-            let coupled = !self.piers.is_empty() || self.has_backwalls();
             if !coupled || self.damping_model == DampingModel::TranslationalDashpots {
                 c.view_mut((s, s), (3, 3)).copy_from(&sys.damping);
             }
@@ -260,10 +271,33 @@ impl BridgeModel {
                 }
             }
         };
+        // a link from a body point to support line `s`: `x Bᵀ` into its columns of `P`
+        let add_support = |mat: &mut DMatrix<Real>, x: Real, a: (usize, Vector), s: usize| {
+            let ba = dofs.point_operator(a.0, &a.1);
+            for (d, i) in dofs.range(a.0).enumerate() {
+                mat[(i, 2 * s)] += x * ba[0][d];
+                mat[(i, 2 * s + 1)] += x * ba[1][d];
+            }
+        };
         for (i, s) in self.segments.iter().enumerate() {
+            // the segment's own Rayleigh stiffness part on its links' deformation rates
+            let a1 = if rayleigh && !coupled {
+                systems[i].rayleigh.1
+            } else {
+                0.0
+            };
             for (bi, (br, p)) in s.bearings.iter().zip(&points[i]).enumerate() {
                 let arm = (i, p - bodies[i].centroid);
                 let base = on[i][bi].map(|p| self.cap_body(p));
+                if supports && base.is_none() {
+                    add_support(&mut pk, br.stiffness, arm, lines[i][bi]);
+                    add_support(
+                        &mut pc,
+                        s.bearing_damping + a1 * br.stiffness,
+                        arm,
+                        lines[i][bi],
+                    );
+                }
                 add_link(&mut k, br.stiffness, arm, base);
                 if s.bearing_yield.is_some() && br.stiffness > 0.0 {
                     add_link(&mut ky, br.stiffness, arm, base);
@@ -281,6 +315,12 @@ impl BridgeModel {
                 r[(s + d, d)] = 1.0;
                 k[(s + d, s + d)] += pier.column.k0;
                 c[(s + d, s + d)] += pier.damping;
+                if supports {
+                    // the column stands on the joint's support line
+                    let line = 2 * (pier.joint + 1) + d;
+                    pk[(s + d, line)] += pier.column.k0;
+                    pc[(s + d, line)] += pier.damping;
+                }
                 if pier.column.fy.is_some() {
                     ky[(s + d, s + d)] += pier.column.k0;
                 }
@@ -302,8 +342,7 @@ impl BridgeModel {
                 ky[(s, s)] += p.k;
             }
         }
-        let coupled = !self.piers.is_empty() || self.has_backwalls();
-        if coupled && self.damping_model == DampingModel::Rayleigh && self.damping_ratio > 0.0 {
+        if coupled && rayleigh {
             let om = system_frequencies(&m, &k);
             let lowest = [
                 om[0],
@@ -318,8 +357,17 @@ impl BridgeModel {
                 )
             })?;
             c += &m * a0 + &k * a1;
+            pc += &pk * a1;
         }
-        Ok(Some(Coupled { m, k, ky, c, r }))
+        let support = supports.then_some((pk, pc));
+        Ok(Some(Coupled {
+            m,
+            k,
+            ky,
+            c,
+            r,
+            support,
+        }))
     }
 }
 
@@ -332,7 +380,7 @@ impl BridgeModel {
     pub fn system_frequencies(&self) -> Result<Option<Vec<Real>>, SimError> {
         let systems = self.body_systems()?;
         Ok(self
-            .coupled_system(&systems, false)?
+            .coupled_system(&systems, false, false)?
             .map(|c| system_frequencies(&c.m, &c.k)))
     }
 }

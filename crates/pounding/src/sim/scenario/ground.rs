@@ -4,12 +4,14 @@
 use super::build::sim_error;
 use super::error::{ParamKey, ScenarioError, Section};
 use super::{Scenario, Src};
+use crate::ground_motion::support_file::read_support_motions;
 use crate::ground_motion::{
     AccelUnits, EL_CENTRO_180_AT2, EL_CENTRO_270_AT2, GroundMotion, ReadOptions, Record,
 };
-use crate::math::Real;
+use crate::math::{Real, Vector};
 use crate::output::float_token;
 use crate::sim::SimError;
+use crate::sim::excitation::{SupportExcitation, SupportRecord};
 
 const fn ground(key: &'static str) -> ParamKey {
     ParamKey::new(Section::GroundMotion, key)
@@ -222,4 +224,174 @@ pub(in crate::sim::scenario) fn build_ground(
         .validate()
         .map_err(|e| sim_error(src, SimError::from(e)))?;
     Ok((ground, records, units))
+}
+
+/// The keys of `[ground_motion]` that make the supports move apart (bridge files only).
+const APART_KEYS: [&str; 4] = ["v_app", "wave_direction_deg", "supports_y", "supports_x"];
+
+/// Refuses the support-motion keys in a two-deck file.
+pub(in crate::sim::scenario) fn refuse_apart(sc: &Scenario) -> Result<(), ScenarioError> {
+    let src = &sc.src;
+    match APART_KEYS.iter().find(|k| src.is_set(ground(k))) {
+        None => Ok(()),
+        Some(k) => Err(src.key_error(
+            format!(
+                "{} is read only in bridge files ([[segment]] tables): a two-deck file's \
+                 supports all move with its ground motion",
+                src.at(ground(k))
+            ),
+            &[ground(k)],
+        )),
+    }
+}
+
+/// The supports' motion of `[ground_motion]` (`v_app`, `wave_direction_deg`, `supports_y`,
+/// `supports_x`) on a bridge with support lines `ids`, and the reference ground motion: with
+/// support-motion files, the `start` support's motion (instead of `record_y` / `record_x`).
+pub(in crate::sim::scenario) fn build_supports(
+    sc: &Scenario,
+    ids: &[String],
+    reference: GroundMotion,
+) -> Result<(GroundMotion, SupportExcitation), ScenarioError> {
+    let src = &sc.src;
+    let g = &sc.raw.ground_motion;
+    let files = [&g.supports_y, &g.supports_x];
+    if files.iter().all(|f| f.is_none()) {
+        let Some(v) = g.v_app else {
+            if src.is_set(ground("wave_direction_deg")) {
+                return Err(src.key_error(
+                    format!(
+                        "{} needs v_app (the apparent velocity of the wave)",
+                        src.at(ground("wave_direction_deg"))
+                    ),
+                    &[ground("wave_direction_deg")],
+                ));
+            }
+            return Ok((reference, SupportExcitation::Uniform));
+        };
+        if v.is_nan() || v <= 0.0 {
+            return Err(src.invalid(
+                format!(
+                    "invalid v_app = {} at {}: the apparent velocity must be > 0 m/s (inf: no wave \
+                     passage)",
+                    float_token(v),
+                    src.at(ground("v_app"))
+                ),
+                ground("v_app"),
+            ));
+        }
+        let direction = match g.wave_direction_deg {
+            None => None,
+            Some(a) if a.is_finite() => {
+                Some(Vector::new(a.to_radians().cos(), a.to_radians().sin()))
+            }
+            Some(a) => {
+                return Err(src.invalid(
+                    format!(
+                        "invalid wave_direction_deg = {} at {}: must be finite",
+                        float_token(a),
+                        src.at(ground("wave_direction_deg"))
+                    ),
+                    ground("wave_direction_deg"),
+                ));
+            }
+        };
+        return Ok((
+            reference,
+            SupportExcitation::WavePassage {
+                v_app: v,
+                direction,
+            },
+        ));
+    }
+    // a motion per support: no record of its own, no wave passage on top
+    for k in [
+        "v_app",
+        "wave_direction_deg",
+        "record_y",
+        "record_x",
+        "record_dt",
+    ] {
+        if src.is_set(ground(k)) {
+            return Err(src.key_error(
+                format!(
+                    "{} cannot be combined with supports_y / supports_x (each support's motion is \
+                     in the support-motion file)",
+                    src.at(ground(k))
+                ),
+                &[ground(k)],
+            ));
+        }
+    }
+    if sc.record.is_some() || sc.batch {
+        return Err(src.key_error(
+            "supports_y / supports_x give every support its own motion: --record and batches \
+             of records do not apply to such a file"
+                .into(),
+            &[ground("supports_y"), ground("supports_x")],
+        ));
+    }
+    let read = |key: &'static str, spec: &Option<String>| -> Result<_, ScenarioError> {
+        let Some(spec) = spec else { return Ok(None) };
+        let path = src.dir.join(spec.trim());
+        read_support_motions(&path)
+            .map(Some)
+            .map_err(|error| ScenarioError::Record {
+                at: src.at(ground(key)),
+                error: Box::new(error),
+            })
+    };
+    let cols = [
+        read("supports_y", &g.supports_y)?,
+        read("supports_x", &g.supports_x)?,
+    ];
+    let mut records = Vec::with_capacity(ids.len());
+    for id in ids {
+        let col = |c: &Option<Vec<(String, Record)>>, key: &'static str| {
+            match c {
+            None => Ok(None),
+            Some(c) => match c.iter().find(|(i, _)| i == id) {
+                Some((_, r)) => Ok(Some(r.clone())),
+                None => Err(src.key_error(
+                    format!(
+                        "the file of {} has no column for support `{id}` (the bridge's supports: {})",
+                        src.at(ground(key)),
+                        ids.join(", ")
+                    ),
+                    &[ground(key)],
+                )),
+            },
+        }
+        };
+        records.push(SupportRecord {
+            id: id.clone(),
+            ground: GroundMotion {
+                along_y: col(&cols[0], "supports_y")?,
+                along_x: col(&cols[1], "supports_x")?,
+                ..reference.clone()
+            },
+        });
+    }
+    for (c, key) in cols.iter().zip(["supports_y", "supports_x"]) {
+        if let Some((extra, _)) = c.iter().flatten().find(|(i, _)| !ids.contains(i)) {
+            return Err(src.key_error(
+                format!(
+                    "the file of {} has a column `{extra}`, which is not a support of the bridge \
+                     (its supports: {})",
+                    src.at(ground(key)),
+                    ids.join(", ")
+                ),
+                &[ground(key)],
+            ));
+        }
+    }
+    let start = records[0].ground.clone();
+    Ok((start, SupportExcitation::Records(records)))
+}
+
+/// The support-motion files as written (`[supports_y, supports_x]`, `none` for a missing one):
+/// what the outputs name as the records of a run with a motion per support.
+pub(in crate::sim::scenario) fn support_files(sc: &Scenario) -> [String; 2] {
+    let g = &sc.raw.ground_motion;
+    [&g.supports_y, &g.supports_x].map(|f| f.clone().unwrap_or_else(|| "none".into()))
 }

@@ -262,6 +262,13 @@ pub(crate) struct GroundSec {
     pub(crate) incidence_deg: f64,
     pub(crate) csv_units: String,
     pub(crate) record_dt: Option<f64>,
+    /// Wave passage: apparent velocity \[m/s\] (bridge files).
+    pub(crate) v_app: Option<f64>,
+    /// Wave passage: direction of travel \[°\] (bridge files).
+    pub(crate) wave_direction_deg: Option<f64>,
+    /// A motion per support: a support-motion file acting along y / x (bridge files).
+    pub(crate) supports_y: Option<String>,
+    pub(crate) supports_x: Option<String>,
 }
 impl Default for GroundSec {
     fn default() -> Self {
@@ -273,6 +280,10 @@ impl Default for GroundSec {
             incidence_deg: 0.0,
             csv_units: "g".into(),
             record_dt: None,
+            v_app: None,
+            wave_direction_deg: None,
+            supports_y: None,
+            supports_x: None,
         }
     }
 }

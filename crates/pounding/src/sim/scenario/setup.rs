@@ -132,6 +132,12 @@ impl Problem for Setup {
             Setup::Bridge(s) => &s.problem.ground,
         }
     }
+    fn supports(&self) -> &crate::sim::excitation::SupportExcitation {
+        match self {
+            Setup::TwoDecks(s) => s.problem.supports(),
+            Setup::Bridge(s) => s.problem.supports(),
+        }
+    }
     fn initial(&self) -> (&[Real], &[Real]) {
         match self {
             Setup::TwoDecks(s) => s.problem.initial(),

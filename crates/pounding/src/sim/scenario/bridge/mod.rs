@@ -59,6 +59,7 @@ use crate::shape::{Deck, DeckShape, SkewedDeck, StraightDeck};
 use crate::sim::bridge::{
     BearingYield, BridgeAbutment, BridgeModel, BridgeProblem, Joint, RestrainerSpec, Segment,
 };
+use crate::sim::excitation::SupportExcitation;
 use crate::sim::{DampingModel, JointContact, SimSettings, simulate};
 use crate::toml_schema::{Table, line_col};
 use serde::Deserialize;
@@ -391,6 +392,12 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
         piers,
     };
     let (ground, records, units) = build_ground(sc)?;
+    let ids: Vec<String> = model.support_lines().into_iter().map(|l| l.id).collect();
+    let (ground, supports) = super::ground::build_supports(sc, &ids, ground)?;
+    let records = match &supports {
+        SupportExcitation::Records(_) => super::ground::support_files(sc),
+        _ => records,
+    };
     // a pier's cap holds fewer values a row (2 coordinates, 2 rates, 4 in piers.csv) than a
     // segment: the memory estimate counts each as one more segment
     let bodies = model.segments.len() + model.piers.len();
@@ -406,7 +413,10 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
             note: String::new(),
         })?;
     Ok(BridgeSetup {
-        problem: BridgeProblem::at_rest(model, ground),
+        problem: BridgeProblem {
+            supports,
+            ..BridgeProblem::at_rest(model, ground)
+        },
         settings,
         records,
         units,
