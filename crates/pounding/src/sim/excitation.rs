@@ -65,6 +65,26 @@ pub enum SupportExcitation {
     Records(Vec<SupportRecord>),
 }
 
+impl SupportExcitation {
+    /// A wave passage's direction of travel `e` and the arrival delay of each of `lines`,
+    /// `τ_s = (p_s − p_first)·e / v_app` (`None`: no wave passage, or `v_app = ∞`).
+    pub fn wave_delays(&self, lines: &[SupportLine]) -> Option<(Vector, Vec<Real>)> {
+        let SupportExcitation::WavePassage { v_app, direction } = self else {
+            return None;
+        };
+        if v_app.is_infinite() {
+            return None;
+        }
+        let e = direction.unwrap_or_else(|| {
+            let chord = lines[lines.len() - 1].position - lines[0].position;
+            chord / chord.norm()
+        });
+        let along: Vec<Real> = lines.iter().map(|l| l.position.dot(&e)).collect();
+        let first = along.iter().copied().fold(Real::INFINITY, Real::min);
+        Some((e, along.iter().map(|a| (a - first) / v_app).collect()))
+    }
+}
+
 /// The motion of one support.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SupportRecord {
@@ -143,7 +163,7 @@ impl SupportMotion {
         let lines = model.support_lines();
         let per_line = match excitation {
             SupportExcitation::Uniform => return Ok(None),
-            SupportExcitation::WavePassage { v_app, direction } => {
+            SupportExcitation::WavePassage { v_app, .. } => {
                 let v = *v_app;
                 if v.is_nan() || v <= 0.0 {
                     return Err(SimError::invalid(
@@ -152,19 +172,10 @@ impl SupportMotion {
                         "must be > 0 (m/s; inf for no wave passage)",
                     ));
                 }
-                if v.is_infinite() {
-                    return Ok(None);
+                match excitation.wave_delays(&lines) {
+                    None => return Ok(None),
+                    Some((_, delays)) => delays.into_iter().map(|tau| (None, tau)).collect(),
                 }
-                let e = match direction {
-                    Some(d) => *d,
-                    None => {
-                        let chord = lines[lines.len() - 1].position - lines[0].position;
-                        chord / chord.norm()
-                    }
-                };
-                let along: Vec<Real> = lines.iter().map(|l| l.position.dot(&e)).collect();
-                let first = along.iter().copied().fold(Real::INFINITY, Real::min);
-                along.iter().map(|a| (None, (a - first) / v)).collect()
             }
             SupportExcitation::Records(recs) => {
                 let mut out = Vec::with_capacity(lines.len());
@@ -208,11 +219,6 @@ impl SupportMotion {
     /// Number of support lines.
     pub fn len(&self) -> usize {
         self.lines.len()
-    }
-
-    /// The delay of each support (wave passage; 0 otherwise) \[s\].
-    pub fn delays(&self) -> Vec<Real> {
-        self.lines.iter().map(|l| l.1).collect()
     }
 
     /// `(d_s, ḋ_s)` of every support at `t`, into `d`, `v`.

@@ -136,7 +136,7 @@ pub(crate) fn integrate(
 /// Refuses what the supports' own motions do not reach yet: an abutment with the rigid (impact)
 /// law, a backwall, shear keys, and the segments' dashpots to "the ground" (which ground, when
 /// each support moves its own way?).
-fn check_apart(model: &BridgeModel, kinds: &SiteKinds) -> Result<(), SimError> {
+pub(crate) fn check_apart(model: &BridgeModel, kinds: &SiteKinds) -> Result<(), SimError> {
     let refuse = |name: String, what: &str| SimError::InvalidArgument {
         name,
         reason: format!(

@@ -68,7 +68,7 @@ pub mod dofs;
 mod driver;
 mod elements;
 pub mod excitation;
-mod integrate;
+pub(crate) mod integrate;
 mod mixed;
 pub mod model;
 mod observer;

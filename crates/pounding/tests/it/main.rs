@@ -62,6 +62,7 @@ mod sim_friction;
 mod sim_observers;
 mod sim_outputs;
 mod sim_piers;
+mod sim_support_motion;
 mod sim_progress;
 mod sim_scenario;
 mod sim_shapes;

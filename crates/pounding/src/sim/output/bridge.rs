@@ -211,7 +211,38 @@ pub(crate) fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> 
             });
         }
     }
+    if let Some(sup) = supports_json(setup) {
+        out["ground_motion"]["supports"] = sup;
+    }
     out
+}
+
+/// `ground_motion.supports` of a run whose supports move apart: how (`wave-passage` with its
+/// apparent velocity and direction, or `per-support` records), and per support line its id,
+/// plan position and the record's arrival delay (`null` without wave passage). `None` for a
+/// uniform excitation (the key is absent).
+fn supports_json(setup: &BridgeSetup) -> Option<Value> {
+    use crate::sim::excitation::SupportExcitation as E;
+    let lines = setup.problem.model.support_lines();
+    let (kind, v_app, dir, delays): (&str, _, _, Vec<Option<Real>>) = match &setup.problem.supports {
+        E::Uniform => return None,
+        E::WavePassage { v_app, .. } => {
+            let (e, d) = setup.problem.supports.wave_delays(&lines)?;
+            let d = d.into_iter().map(Some).collect();
+            ("wave-passage", json_float(*v_app), json_float(e.y.atan2(e.x).to_degrees()), d)
+        }
+        E::Records(_) => ("per-support", Value::Null, Value::Null, vec![None; lines.len()]),
+    };
+    Some(json!({
+        "kind": kind,
+        "v_app_mps": v_app,
+        "wave_direction_deg": dir,
+        "lines": lines.iter().zip(delays).map(|(l, d)| json!({
+            "id": l.id,
+            "position_m": [json_float(l.position.x), json_float(l.position.y)],
+            "arrival_delay_s": d.map_or(Value::Null, json_float),
+        })).collect::<Vec<_>>(),
+    }))
 }
 
 /// `summary.json` as written: pretty-printed with a final newline.
