@@ -82,9 +82,8 @@ fn linear_bridge_under_wave_passage_is_its_absolute_solution() {
         rec.values().iter().map(|x| x * scale).collect(),
     );
     // supports start (y = 0), joint1 (y = −31), end (y = −62): delays 0, 0.31, 0.62 s
-    let sup = |t: f64| -> [(f64, f64); 3] {
-        [0.0, 0.31, 0.62].map(|tau| exact_vu(&ts, &a, t - tau))
-    };
+    let sup =
+        |t: f64| -> [(f64, f64); 3] { [0.0, 0.31, 0.62].map(|tau| exact_vu(&ts, &a, t - tau)) };
     let (k, c, k0, c0) = (2.0 * 4.0e6, 2.0 * 1.0e5, 8.0e7, 1.0e6);
     let m = [1.0e6, 1.2e6, 2.0e5];
     // state [y1, y2, yc, v1, v2, vc]
@@ -93,7 +92,10 @@ fn linear_bridge_under_wave_passage_is_its_absolute_solution() {
         let (y1, y2, yc, v1, v2, vc) = (s[0], s[1], s[2], s[3], s[4], s[5]);
         let a1 = (-k * (y1 - g[0].1) - c * (v1 - g[0].0) - k * (y1 - yc) - c * (v1 - vc)) / m[0];
         let a2 = (-k * (y2 - g[2].1) - c * (v2 - g[2].0) - k * (y2 - yc) - c * (v2 - vc)) / m[1];
-        let ac = (-k * (yc - y1) - c * (vc - v1) - k * (yc - y2) - c * (vc - v2)
+        let ac = (-k * (yc - y1)
+            - c * (vc - v1)
+            - k * (yc - y2)
+            - c * (vc - v2)
             - k0 * (yc - g[1].1)
             - c0 * (vc - g[1].0))
             / m[2];
@@ -132,7 +134,10 @@ fn linear_bridge_under_wave_passage_is_its_absolute_solution() {
         s = std::array::from_fn(|i| s[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]));
         t = (step + 1) as f64 * h;
     }
-    assert!(amp > 0.02, "the bridge moves relative to the near end ({amp})");
+    assert!(
+        amp > 0.02,
+        "the bridge moves relative to the near end ({amp})"
+    );
     assert!(worst < 2e-3 * amp, "max |Δq| {worst:e} of {amp:e}");
     let p = &sol.summary.piers[0];
     assert!(
@@ -147,7 +152,10 @@ fn linear_bridge_under_wave_passage_is_its_absolute_solution() {
         dur,
     ));
     let d = (uni.summary.piers[0].peak_drift_magnitude - p.peak_drift_magnitude).abs();
-    assert!(d > 0.05 * drift, "wave passage changes the pier drift ({d})");
+    assert!(
+        d > 0.05 * drift,
+        "wave passage changes the pier drift ({d})"
+    );
 }
 
 /// `v_app = inf` is the uniform run, bit for bit; a huge finite `v_app` (delays of 1e-10 s)
@@ -180,11 +188,7 @@ fn support_file_of_delayed_records_is_the_wave_passage() {
     let dt = 0.01;
     let n = 1000; // 10 s
     let a = |t: f64| {
-        if t < 0.5 * dt {
-            0.0
-        } else {
-            rec.accel(t)
-        }
+        if t < 0.5 * dt { 0.0 } else { rec.accel(t) }
     };
     let (mut csv, mut one) = (String::from("t,start,joint1,end\n"), String::new());
     for i in 0..=n {
@@ -224,9 +228,21 @@ fn refusals_name_the_key() {
         (format!("{elc}\nv_app = -250.0"), "", "v_app"),
         (format!("{elc}\nv_app = 0.0"), "", "v_app"),
         (format!("{elc}\nv_app = nan"), "", "v_app"),
-        (format!("{elc}\nwave_direction_deg = 10.0"), "", "needs v_app"),
-        (format!("{elc}\nv_app = 250.0\nwave_direction_deg = inf"), "", "wave_direction_deg"),
-        ("supports_y = \"missing.csv\"\nrecord_y = \"builtin:ELC180\"".into(), "", "record_y"),
+        (
+            format!("{elc}\nwave_direction_deg = 10.0"),
+            "",
+            "needs v_app",
+        ),
+        (
+            format!("{elc}\nv_app = 250.0\nwave_direction_deg = inf"),
+            "",
+            "wave_direction_deg",
+        ),
+        (
+            "supports_y = \"missing.csv\"\nrecord_y = \"builtin:ELC180\"".into(),
+            "",
+            "record_y",
+        ),
         ("supports_y = \"missing.csv\"".into(), "", "missing.csv"),
         (
             format!("{elc}\nv_app = 250.0"),
@@ -249,8 +265,14 @@ fn refusals_name_the_key() {
     // a file without a column for a support, or with one the bridge lacks
     let dir = tempfile::tempdir().unwrap();
     for (csv, want) in [
-        ("t,start,end\n0,0,0\n1,1,1\n", "no column for support `joint1`"),
-        ("t,start,joint1,end,pier9\n0,0,0,0,0\n1,1,1,1,1\n", "`pier9`"),
+        (
+            "t,start,end\n0,0,0\n1,1,1\n",
+            "no column for support `joint1`",
+        ),
+        (
+            "t,start,joint1,end,pier9\n0,0,0,0,0\n1,1,1,1,1\n",
+            "`pier9`",
+        ),
     ] {
         std::fs::write(dir.path().join("r.csv"), csv).unwrap();
         let path = dir.path().join("s.toml");

@@ -224,14 +224,25 @@ pub(crate) fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> 
 fn supports_json(setup: &BridgeSetup) -> Option<Value> {
     use crate::sim::excitation::SupportExcitation as E;
     let lines = setup.problem.model.support_lines();
-    let (kind, v_app, dir, delays): (&str, _, _, Vec<Option<Real>>) = match &setup.problem.supports {
+    let (kind, v_app, dir, delays): (&str, _, _, Vec<Option<Real>>) = match &setup.problem.supports
+    {
         E::Uniform => return None,
         E::WavePassage { v_app, .. } => {
             let (e, d) = setup.problem.supports.wave_delays(&lines)?;
             let d = d.into_iter().map(Some).collect();
-            ("wave-passage", json_float(*v_app), json_float(e.y.atan2(e.x).to_degrees()), d)
+            (
+                "wave-passage",
+                json_float(*v_app),
+                json_float(e.y.atan2(e.x).to_degrees()),
+                d,
+            )
         }
-        E::Records(_) => ("per-support", Value::Null, Value::Null, vec![None; lines.len()]),
+        E::Records(_) => (
+            "per-support",
+            Value::Null,
+            Value::Null,
+            vec![None; lines.len()],
+        ),
     };
     Some(json!({
         "kind": kind,
