@@ -394,8 +394,13 @@ impl ComplianceStepper {
                 None => ab.shift(dofs, q.as_slice()),
             };
             // the face's velocity along its normal and tangent
-            let face =
-                ground.map(|(_, v)| (v[ab.line].dot(&ab.normal), v[ab.line].dot(&ab.tangent)));
+            // a ground face moves with its support; a backwall is a body of its own
+            let face = match (ab.wall, ground) {
+                (None, Some((_, v))) => {
+                    Some((v[ab.line].dot(&ab.normal), v[ab.line].dot(&ab.tangent)))
+                }
+                _ => None,
+            };
             for c0 in &ab.corners {
                 let (j, nn, tn) = (ab.body, ab.normal, ab.tangent);
                 let pc = pose.place(&self.bodies, j, c0);

@@ -337,6 +337,8 @@ pub(crate) struct RunResult {
     pub stats: StepperStats,
     pub steps: usize,
     pub final_q: State,
+    /// The support lines' offsets at `final_q` (empty when the supports move together).
+    pub final_ground: Vec<crate::math::Vector>,
     pub elements: super::elements::Elements,
     pub energy_balance_error: Real,
     pub final_energy: Energy,
@@ -412,7 +414,7 @@ pub(crate) fn run<S: Stepper>(
             peaks.observe_piers(&q, bridge, &el, &frame.ground);
         }
         if peaks.wall.iter().any(Option::is_some) {
-            peaks.observe_walls(&q, bridge, &el);
+            peaks.observe_walls(&q, bridge, &el, &frame.ground);
         }
         for k in &el.keys {
             if let Some((f, v)) = peaks.keys[k.side].as_mut() {
@@ -543,6 +545,7 @@ pub(crate) fn run<S: Stepper>(
         stats,
         steps: steps_done,
         final_q: q,
+        final_ground: frame.ground,
         elements: el,
         energy_balance_error,
         final_energy,

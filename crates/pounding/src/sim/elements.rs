@@ -151,6 +151,11 @@ pub(crate) struct BackfillAt {
     pub body: usize,
     /// The backfill spring.
     pub element: BackfillElement,
+    /// The abutment's support line.
+    pub line: usize,
+    /// That support's offset along the wall's coordinate (zero when the supports move together;
+    /// [`Elements::set_ground`]): the soil behind the wall moves with it.
+    pub ground: Real,
 }
 
 /// Exterior shear keys at an abutment: a force `−F(v) t` at the segment's outer-face midpoint,
@@ -170,6 +175,11 @@ pub(crate) struct KeyAt {
     pub element: ShearKeyElement,
     /// The committed force `F` \[N\].
     pub force: Real,
+    /// The abutment's support line.
+    pub line: usize,
+    /// That support's offset along `t` (zero when the supports move together;
+    /// [`Elements::set_ground`]): the keys stand on the abutment.
+    pub ground: Real,
 }
 
 impl KeyAt {
@@ -178,7 +188,7 @@ impl KeyAt {
     pub fn deformation(&self, dofs: &Dofs, q: &[Real]) -> Real {
         let [x, y, th] = dofs.plan_of(self.body, q);
         let u = Vector::new(x - th * self.arm.y, y + th * self.arm.x);
-        u.dot(&self.tangent)
+        u.dot(&self.tangent) - self.ground
     }
 
     /// Adds the force `−F t` on the segment to `r`.
@@ -225,8 +235,21 @@ impl Elements {
     pub fn set_ground(&mut self, ground: &[Vector]) {
         for b in &mut self.bearings {
             if let Some(s) = b.line {
-                b.ground = ground[s];
+                // a backwall's piles act along its coordinate only
+                b.ground = match self.dofs.kind(b.body) {
+                    super::dofs::BodyKind::Axial => {
+                        let a = self.dofs.axis(b.body);
+                        a * ground[s].dot(&a)
+                    }
+                    _ => ground[s],
+                };
             }
+        }
+        for b in &mut self.backfills {
+            b.ground = ground[b.line].dot(&self.dofs.axis(b.body));
+        }
+        for k in &mut self.keys {
+            k.ground = ground[k.line].dot(&k.tangent);
         }
     }
 
@@ -275,7 +298,7 @@ impl Elements {
             for b in &self.backfills {
                 let i = self.dofs.start(b.body);
                 let f0 = -b.element.committed().force;
-                let f1 = -b.element.trial(f.pred[i]).force;
+                let f1 = -b.element.trial(f.pred[i] - b.ground).force;
                 f.r0[i] += f0;
                 f.r1[i] += f1;
                 f.rf[i] += f0 * (1.0 - th) + f1 * th;
@@ -409,7 +432,7 @@ impl Elements {
             self.member_state[i] = (u, f);
         }
         for b in &mut self.backfills {
-            let resp = b.element.trial(q[self.dofs.start(b.body)]);
+            let resp = b.element.trial(q[self.dofs.start(b.body)] - b.ground);
             b.element.commit(&resp);
         }
         for k in &mut self.keys {

@@ -134,8 +134,8 @@ pub(crate) fn integrate(
 }
 
 /// Refuses what the supports' own motions do not reach yet: an abutment with the rigid (impact)
-/// law, a backwall, shear keys, and the segments' dashpots to "the ground" (which ground, when
-/// each support moves its own way?).
+/// law, and the segments' dashpots to "the ground" (which ground, when each support moves its
+/// own way?).
 pub(crate) fn check_apart(model: &BridgeModel, kinds: &SiteKinds) -> Result<(), SimError> {
     let refuse = |name: String, what: &str| SimError::InvalidArgument {
         name,
@@ -145,18 +145,11 @@ pub(crate) fn check_apart(model: &BridgeModel, kinds: &SiteKinds) -> Result<(), 
         ),
     };
     for (side, a) in model.abutments.iter().enumerate() {
-        let Some(a) = a else { continue };
-        if kinds.abutments[side] == Some(false) {
+        if a.is_some() && kinds.abutments[side] == Some(false) {
             return Err(refuse(
                 abut_key(side, "law"),
                 "an abutment with the rigid impact law (give it a compliance law)",
             ));
-        }
-        if a.backwall.is_some() {
-            return Err(refuse(abut_key(side, "backwall"), "a backwall"));
-        }
-        if a.shear_keys.is_some() {
-            return Err(refuse(abut_key(side, "shear_keys"), "shear keys"));
         }
     }
     if model.damping_model == super::DampingModel::TranslationalDashpots

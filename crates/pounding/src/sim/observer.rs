@@ -141,7 +141,8 @@ impl Observer for Backwalls {
         v.push(s.t);
         for a in &s.bridge.abutments {
             let Some(w) = a.wall else { continue };
-            let (d, fill, piles) = super::peaks::wall_forces(w, s.q, s.bridge, s.elements);
+            let (d, fill, piles) =
+                super::peaks::wall_forces((w, a.line), s.q, s.bridge, s.elements, &s.frame.ground);
             v.extend([d, fill.unwrap_or(0.0), piles.unwrap_or(0.0)]);
         }
     }

@@ -206,12 +206,18 @@ impl Peaks {
     }
 
     /// The backwalls' displacements, backfill and pile forces (`el`: committed at `q`).
-    pub(crate) fn observe_walls(&mut self, q: &State, br: &Bridge, el: &super::elements::Elements) {
+    pub(crate) fn observe_walls(
+        &mut self,
+        q: &State,
+        br: &Bridge,
+        el: &super::elements::Elements,
+        ground: &[Vector],
+    ) {
         for a in &br.abutments {
             let (Some(w), Some(pk)) = (a.wall, self.wall[a.side].as_mut()) else {
                 continue;
             };
-            let (s, f_fill, f_piles) = wall_forces(w, q.as_slice(), br, el);
+            let (s, f_fill, f_piles) = wall_forces((w, a.line), q.as_slice(), br, el, ground);
             pk.displacement = pk.displacement.max(s);
             if let (Some(p), Some(f)) = (pk.backfill.as_mut(), f_fill) {
                 *p = p.max(f);
@@ -377,15 +383,20 @@ impl Peaks {
     }
 }
 
-/// A backwall's coordinate `s` (into the soil), its backfill's force `F ≥ 0` and its piles'
-/// force along `s` (`el`: the elements committed at `q`).
+/// A backwall's coordinate `s` (into the soil, relative to its abutment's ground: `ground` the
+/// support lines' offsets, empty when they move together), its backfill's force `F ≥ 0` and its
+/// piles' force along `s` (`el`: the elements committed at `q`).
 pub(crate) fn wall_forces(
-    wall: usize,
+    (wall, line): (usize, usize),
     q: &[Real],
     br: &Bridge,
     el: &super::elements::Elements,
+    ground: &[Vector],
 ) -> (Real, Option<Real>, Option<Real>) {
-    let s = br.dofs.axial_displacement(wall, q);
+    let mut s = br.dofs.axial_displacement(wall, q);
+    if let Some(d) = ground.get(line) {
+        s -= d.dot(&br.dofs.axis(wall));
+    }
     let fill = el
         .backfills
         .iter()

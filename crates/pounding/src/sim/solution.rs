@@ -437,7 +437,14 @@ pub(crate) fn solution(
                         peak_displacement: w.displacement,
                         peak_backfill_force: w.backfill,
                         peak_pile_force: w.piles,
-                        residual_displacement: br.dofs.axial_displacement(b, r.final_q.as_slice()),
+                        residual_displacement: super::peaks::wall_forces(
+                            (b, if side == 0 { 0 } else { nb }),
+                            r.final_q.as_slice(),
+                            br,
+                            &r.elements,
+                            &r.final_ground,
+                        )
+                        .0,
                         pile_hysteretic_energy: member_dissipation(&r.elements, b),
                     }
                 }),
@@ -454,6 +461,8 @@ pub(crate) fn solution(
         .zip(&peaks.pier)
         .map(|(p, pk)| {
             let [x, y, _] = br.dofs.plan_of(p.body, r.final_q.as_slice());
+            let g = super::view::ground_at(&r.final_ground, p.joint + 1);
+            let (x, y) = (x - g.x, y - g.y);
             PierSummary {
                 joint: p.joint + 1,
                 peak_drift: pk.drift,
@@ -468,6 +477,8 @@ pub(crate) fn solution(
     let segments = (0..nb)
         .map(|i| {
             let [x, y, _] = br.dofs.plan_of(i, r.final_q.as_slice());
+            let g = super::view::ground_at(&r.final_ground, i);
+            let (x, y) = (x - g.x, y - g.y);
             SegmentSummary {
                 peak_displacement: peaks.disp[i].sqrt(),
                 final_displacement: (x * x + y * y).sqrt(),

@@ -45,9 +45,10 @@ impl AbutmentFace {
     #[inline]
     pub fn shift_on(&self, dofs: &Dofs, q: &[Real], ground: &[Vector]) -> Real {
         let s = self.shift(dofs, q);
-        match ground.get(self.line) {
-            Some(d) => s - d.dot(&self.normal),
-            None => s,
+        match (self.wall, ground.get(self.line)) {
+            // a ground face moves with its support; a backwall is a body of its own
+            (None, Some(d)) => s - d.dot(&self.normal),
+            _ => s,
         }
     }
 

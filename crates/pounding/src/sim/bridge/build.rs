@@ -375,7 +375,7 @@ impl BridgeModel {
                     axis: None,
                     law: BilinearBearing::elastic_perfectly_plastic(p.k, p.fy).expect("validated"),
                     state: BearingState::default(),
-                    line: None,
+                    line: Some(if side == 0 { 0 } else { self.segments.len() }),
                     ground: Vector::zeros(),
                 });
             }
@@ -383,6 +383,8 @@ impl BridgeModel {
                 el.backfills.push(crate::sim::elements::BackfillAt {
                     body: wb,
                     element: crate::element::backfill::BackfillElement::new(b),
+                    line: if side == 0 { 0 } else { self.segments.len() },
+                    ground: 0.0,
                 });
             }
         }
@@ -404,6 +406,8 @@ impl BridgeModel {
                 tangent: Vector::new(-face.inward.y, face.inward.x),
                 element: crate::element::shear_key::ShearKeyElement::new(law),
                 force: 0.0,
+                line: if side == 0 { 0 } else { n },
+                ground: 0.0,
             });
         }
         for (p, pier) in self.piers.iter().enumerate() {

@@ -340,6 +340,12 @@ impl BridgeModel {
             if let Some(p) = w.piles {
                 k[(s, s)] += p.k;
                 ky[(s, s)] += p.k;
+                if supports {
+                    // the piles stand on the abutment's support line
+                    let line = if side == 0 { 0 } else { self.segments.len() };
+                    pk[(s, 2 * line)] += p.k * a.x;
+                    pk[(s, 2 * line + 1)] += p.k * a.y;
+                }
             }
         }
         if coupled && rayleigh {
