@@ -52,7 +52,7 @@ impl RecordIntegral {
     pub fn at(&self, t: Real) -> [Real; 3] {
         let (ts, a) = (self.record.times(), self.record.values());
         let n = ts.len() - 1;
-        if !(t >= ts[0]) {
+        if t.is_nan() || t < ts[0] {
             return [0.0; 3];
         }
         if t >= ts[n] {

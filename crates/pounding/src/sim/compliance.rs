@@ -717,7 +717,7 @@ impl ComplianceStepper {
             u: inp.u,
             winv: inp.winv,
             base: inp.u_free + &wr * (h * (1.0 - th)),
-            ground: inp.ground,
+            ground: inp.ground.map(|o| (&o.d1[..], &o.v1[..])),
         };
         let guess = &tr.base + &wr * hth;
         let (converged, un, ev) = self.newton(&tr, guess);

@@ -58,9 +58,9 @@ pub(crate) struct StepInput<'a> {
     /// The iteration-matrix inverse of this step (the scheme's `Ŵ⁻¹`, or the tangent one where
     /// bearings flow: [`Winv`]).
     pub winv: Winv<'a>,
-    /// The supports' offsets and velocities at `t_{k+1}` when they move apart
+    /// The supports' offsets and velocities at `t_k` and `t_{k+1}` when they move apart
     /// ([`super::excitation`]).
-    pub ground: Option<(&'a [crate::math::Vector], &'a [crate::math::Vector])>,
+    pub ground: Option<&'a Offsets>,
 }
 
 /// The times `t_k = k·h` of the step grid, as the decimals the user expects: with `h` a short
@@ -480,7 +480,7 @@ pub(crate) fn run<S: Stepper>(
             bridge,
             scheme: sc,
             winv,
-            ground: offs.as_ref().map(|o| (&o.d1[..], &o.v1[..])),
+            ground: offs.as_ref(),
         };
         let mut out = stepper.step(&input, &mut log);
         if !yielding.is_empty() {

@@ -115,7 +115,7 @@ pub(crate) fn integrate(
     super::support::check_uniform(&bridge.supports)?;
     let motion = SupportMotion::new(model, ground, excitation)?;
     if motion.is_some() {
-        check_apart(model, &kinds)?;
+        check_apart(model)?;
     }
     model.check_time_step(settings.dt)?;
     let systems = model.body_systems()?;
@@ -133,10 +133,9 @@ pub(crate) fn integrate(
     Ok((result, systems, kinds))
 }
 
-/// Refuses what the supports' own motions do not reach yet: an abutment with the rigid (impact)
-/// law, and the segments' dashpots to "the ground" (which ground, when each support moves its
-/// own way?).
-pub(crate) fn check_apart(model: &BridgeModel, kinds: &SiteKinds) -> Result<(), SimError> {
+/// Refuses what the supports' own motions do not reach: the segments' dashpots to "the ground"
+/// (which ground, when each support moves its own way?).
+pub(crate) fn check_apart(model: &BridgeModel) -> Result<(), SimError> {
     let refuse = |name: String, what: &str| SimError::InvalidArgument {
         name,
         reason: format!(
@@ -144,14 +143,6 @@ pub(crate) fn check_apart(model: &BridgeModel, kinds: &SiteKinds) -> Result<(), 
              support); run it under a uniform ground motion"
         ),
     };
-    for (side, a) in model.abutments.iter().enumerate() {
-        if a.is_some() && kinds.abutments[side] == Some(false) {
-            return Err(refuse(
-                abut_key(side, "law"),
-                "an abutment with the rigid impact law (give it a compliance law)",
-            ));
-        }
-    }
     if model.damping_model == super::DampingModel::TranslationalDashpots
         && model.damping_ratio > 0.0
     {

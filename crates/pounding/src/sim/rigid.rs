@@ -26,6 +26,10 @@ struct ActiveContact {
     law: ImpactLaw,
     wn: Direction,
     wt: Direction,
+    /// The struck face's normal and tangential velocities at `t_k` and `t_{k+1}`
+    /// `[v_n, v_t, v_n', v_t']` when it moves with a support of its own (zero otherwise): the
+    /// law acts on the velocities relative to it.
+    face: [Real; 4],
 }
 
 /// Lemke on the leading `N × N` block of `a` (fixed-size kernel).
@@ -165,18 +169,30 @@ impl RigidStepper {
                         law: self.joint_laws[k],
                         wn,
                         wt: c.direction(pose, jg, c.tangent),
+                        face: [0.0; 4],
                     });
                 }
             }
         }
         for ab in br.abutments.iter().filter(|ab| self.on.1[ab.side]) {
             let (j, n, tn) = (ab.body, ab.normal, ab.tangent);
-            let shift = ab.shift(&br.dofs, inp.q.as_slice());
+            let (shift, face) = match (ab.wall, inp.ground) {
+                // a ground face that moves with its support
+                (None, Some(o)) => {
+                    let (v0, v1) = (o.v[ab.line], o.v1[ab.line]);
+                    (
+                        ab.shift_on(&br.dofs, inp.q.as_slice(), &o.d),
+                        [v0.dot(&n), v0.dot(&tn), v1.dot(&n), v1.dot(&tn)],
+                    )
+                }
+                _ => (ab.shift(&br.dofs, inp.q.as_slice()), [0.0; 4]),
+            };
             for (k, c0) in ab.corners.iter().enumerate() {
                 let pc = pose.place(bodies, j, c0);
                 let r = pc - pose.g[j];
                 let wn = ab.direction(n, &r);
-                if (pc - ab.point).dot(&n) + shift + h * dot_dir(&wn, u, &br.dofs) <= 0.0 {
+                let closing = dot_dir(&wn, u, &br.dofs) - face[0];
+                if (pc - ab.point).dot(&n) + shift + h * closing <= 0.0 {
                     let wt = ab.direction(tn, &r);
                     let contact = SimContact::Abutment {
                         deck: ab.side + 1,
@@ -188,6 +204,7 @@ impl RigidStepper {
                         law: self.abutment_laws[ab.side],
                         wn,
                         wt,
+                        face,
                     });
                 }
             }
@@ -210,8 +227,18 @@ impl RigidStepper {
         let g = (0..nc)
             .map(|i| (0..nc).map(|j| dot_seq(&wcols[i], &wiw[j])).collect())
             .collect();
-        let gam_pre = wcols.iter().map(|w| dot_seq(w, u)).collect();
-        let gam_free = wcols.iter().map(|w| dot_seq(w, u_free)).collect();
+        let mut gam_pre: Vec<Real> = wcols.iter().map(|w| dot_seq(w, u)).collect();
+        let mut gam_free: Vec<Real> = wcols.iter().map(|w| dot_seq(w, u_free)).collect();
+        for (i, a) in active
+            .iter()
+            .enumerate()
+            .filter(|(_, a)| a.face != [0.0; 4])
+        {
+            gam_pre[i] -= a.face[0];
+            gam_pre[n_act + i] -= a.face[1];
+            gam_free[i] -= a.face[2];
+            gam_free[n_act + i] -= a.face[3];
+        }
         Assembled {
             n: n_act,
             wcols,
@@ -367,6 +394,11 @@ impl RigidStepper {
             let dn = -0.5 * (gam_pre[i] + gam_post[i]) * p[i];
             let dt_ = -0.5 * (gam_pre[n + i] + gam_post[n + i]) * p[n + i];
             self.d_cont += dn + dt_;
+            let f = active[i].face;
+            if f != [0.0; 4] {
+                // the balance books the work on the bodies: a moving face's own work is input
+                self.d_cont -= 0.5 * ((f[0] + f[2]) * p[i] + (f[1] + f[3]) * p[n + i]);
+            }
             if impacting && gam_pre[i] < -v_imp && p[i] > 0.0 {
                 let gt = gam_post[n + i];
                 log.records.push(ImpactRecord {
@@ -442,7 +474,15 @@ impl Stepper for RigidStepper {
             let nc = 2 * active.len();
             let (z, ok, any) = self.solve(&asm, &active);
             let p = Self::impulses(&asm, &active, &z, &mut u_new);
-            let gam_post: Vec<Real> = (0..nc).map(|i| dot_seq(&asm.wcols[i], &u_new)).collect();
+            let mut gam_post: Vec<Real> = (0..nc).map(|i| dot_seq(&asm.wcols[i], &u_new)).collect();
+            for (i, a) in active
+                .iter()
+                .enumerate()
+                .filter(|(_, a)| a.face != [0.0; 4])
+            {
+                gam_post[i] -= a.face[2];
+                gam_post[active.len() + i] -= a.face[3];
+            }
             if ok || any {
                 self.check(&asm, &active, inp.u_free, &p, &gam_post);
             }

@@ -123,12 +123,16 @@ fn wave_passage_at_250_mps_matches_opensees() {
     }
 }
 
+/// A compared peak: which (0 joint force, 1 abutment force, 2 pier drift, 3 deck
+/// displacement), its index, OpenSees' value.
+type Item = (usize, usize, f64);
+
 /// 125, 500 and 1000 m/s over the first 7 s: the peaks OpenSees reaches by then.
 #[test]
 fn wave_passage_at_other_velocities_matches_opensees() {
     // (v_app, [(which, index, OpenSees peak)]): which 0 joint force, 1 abutment force, 2 pier
     // drift, 3 deck displacement
-    let cases: [(f64, &[(usize, usize, f64)]); 3] = [
+    let cases: [(f64, &[Item]); 3] = [
         (
             125.0,
             &[

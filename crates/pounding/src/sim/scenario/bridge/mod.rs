@@ -400,8 +400,7 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
     };
     if supports != SupportExcitation::Uniform {
         // what the supports' own motions do not reach yet, named before the run
-        let kinds = model.contact_kinds().map_err(|e| model_error(&v, raw, e))?;
-        crate::sim::integrate::check_apart(&model, &kinds).map_err(|e| model_error(&v, raw, e))?;
+        crate::sim::integrate::check_apart(&model).map_err(|e| model_error(&v, raw, e))?;
     }
     // a pier's cap holds fewer values a row (2 coordinates, 2 rates, 4 in piers.csv) than a
     // segment: the memory estimate counts each as one more segment
