@@ -85,6 +85,7 @@ fn batch_curved_five_8_runs_2_threads(bencher: divan::Bencher) {
             name: format!("elcentro-{i}"),
             record: Ok(r),
             along_x: None,
+            supports: Vec::new(),
         })
         .collect();
     let scales = [0.5, 1.0, 1.5, 2.0];

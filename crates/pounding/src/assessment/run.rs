@@ -158,45 +158,50 @@ pub fn run_all(
             let (a, b) = (i / ns, i % ns);
             let (im_g, sf) = plan.point(a, b);
             let e = &set.records[a];
-            let p: BridgeProblem = entry_problem(base, &e.x, e.y.as_ref(), sf);
-            let mut seats = (Vec::new(), None);
-            let (status, error, lim, warnings) = match simulate(&p, &settings) {
-                Err(err) => (
-                    "error".to_string(),
-                    err.to_string(),
-                    vec![(None, Real::NAN); limits.len()],
-                    0,
-                ),
-                Ok(sol) => {
-                    let ok = sol.status == SimStatus::Completed;
-                    if ok {
-                        let s = &sol.summary;
-                        seats = (
-                            s.seats.iter().map(|e| e.ratio).collect(),
-                            (s.governing_seat < s.seats.len()).then_some(s.governing_seat),
-                        );
-                    }
-                    let lim = limits
-                        .iter()
-                        .map(|l| {
-                            if ok {
-                                l.evaluate(&sol.summary)
-                            } else {
-                                (None, Real::NAN)
-                            }
-                        })
-                        .collect();
-                    let advice = sol.time_step_advice.as_ref();
-                    let warnings = crate::sim::output::input_warnings(&p.ground, sol.dt, advice)
-                        .len()
-                        + crate::sim::output::run_warnings(
-                            crate::sim::output::Layout::Bridge,
-                            &sol,
-                        )
-                        .len();
-                    (format!("{:?}", sol.status), String::new(), lim, warnings)
-                }
+            let p: Result<BridgeProblem, _> = if e.supports.is_empty() {
+                Ok(entry_problem(base, &e.x, e.y.as_ref(), sf))
+            } else {
+                crate::sim::batch::supports_problem(base, &e.supports, sf)
             };
+            let mut seats = (Vec::new(), None);
+            let (status, error, lim, warnings) =
+                match p.and_then(|p| simulate(&p, &settings).map(|s| (p, s))) {
+                    Err(err) => (
+                        "error".to_string(),
+                        err.to_string(),
+                        vec![(None, Real::NAN); limits.len()],
+                        0,
+                    ),
+                    Ok((p, sol)) => {
+                        let ok = sol.status == SimStatus::Completed;
+                        if ok {
+                            let s = &sol.summary;
+                            seats = (
+                                s.seats.iter().map(|e| e.ratio).collect(),
+                                (s.governing_seat < s.seats.len()).then_some(s.governing_seat),
+                            );
+                        }
+                        let lim = limits
+                            .iter()
+                            .map(|l| {
+                                if ok {
+                                    l.evaluate(&sol.summary)
+                                } else {
+                                    (None, Real::NAN)
+                                }
+                            })
+                            .collect();
+                        let advice = sol.time_step_advice.as_ref();
+                        let warnings =
+                            crate::sim::output::input_warnings(&p.ground, sol.dt, advice).len()
+                                + crate::sim::output::run_warnings(
+                                    crate::sim::output::Layout::Bridge,
+                                    &sol,
+                                )
+                                .len();
+                        (format!("{:?}", sol.status), String::new(), lim, warnings)
+                    }
+                };
             progress();
             RunRow {
                 record: a,

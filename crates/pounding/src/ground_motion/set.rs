@@ -85,6 +85,10 @@ pub struct SetRecord {
     pub y: Option<Record>,
     /// Metadata, in alphabetical order of the names.
     pub meta: Vec<(String, MetaValue)>,
+    /// A motion per support of a bridge (`supports = "FILE"`, a support-motion file:
+    /// [`crate::ground_motion::support_file`]), in its column order; empty for a record or a
+    /// pair. `x` is then the `start` support's motion (else the first column's).
+    pub supports: Vec<(String, Record)>,
 }
 
 /// The `model` metadata value that `pounding motion synth` (and a `[synth]` table) writes on
@@ -163,7 +167,9 @@ struct SetSec {
 #[serde(deny_unknown_fields)]
 struct RecordSec {
     id: Spanned<String>,
-    x: Spanned<String>,
+    x: Option<Spanned<String>>,
+    /// A support-motion file (one motion per support of a bridge) instead of `x` / `y`.
+    supports: Option<Spanned<String>>,
     y: Option<Spanned<String>>,
     dt: Option<Spanned<Real>>,
     units: Option<Spanned<String>>,
@@ -206,6 +212,8 @@ struct Val<T> {
 struct Entry {
     id: Val<String>,
     x: Val<String>,
+    /// A support-motion file instead of `x` / `y` (TOML manifests).
+    supports: Option<Val<String>>,
     y: Option<Val<String>>,
     dt: Option<Val<Real>>,
     units: Option<Val<String>>,
@@ -403,9 +411,23 @@ impl RecordSet {
                     Some(t) => meta_values(&cx, i, t, &mut meta_problems),
                     None => Vec::new(),
                 };
+                let supports = r.supports.as_ref().map(|s| cx.val(s));
+                let x = match (&r.x, &supports) {
+                    (Some(x), _) => cx.val(x),
+                    // a support-motion entry: `x` is its start support's motion
+                    (None, Some(s)) => s.clone(),
+                    (None, None) => {
+                        meta_problems.push(format!(
+                            "{}: give x (a record) or supports (a support-motion file)",
+                            cx.at(i, "id", cx.val(&r.id).at)
+                        ));
+                        cx.val(&r.id)
+                    }
+                };
                 Entry {
                     id: cx.val(&r.id),
-                    x: cx.val(&r.x),
+                    x,
+                    supports,
                     y: r.y.as_ref().map(|s| cx.val(s)),
                     dt: r.dt.as_ref().map(|s| cx.val(s)),
                     units: r.units.as_ref().map(|s| cx.val(s)),
@@ -568,6 +590,9 @@ fn entry(cx: &Ctx, i: usize, r: &Entry, cache: &mut Cache) -> Result<SetRecord, 
         }
         Some(rec)
     };
+    if let Some(s) = &r.supports {
+        return support_entry(cx, i, r, s, problems);
+    }
     let x = read("x", &r.x);
     let y = r.y.as_ref().map(|y| (y, read("y", y)));
     let components = 1 + usize::from(r.y.is_some());
@@ -607,7 +632,46 @@ fn entry(cx: &Ctx, i: usize, r: &Entry, cache: &mut Cache) -> Result<SetRecord, 
         x,
         y,
         meta: r.meta.clone(),
+        supports: Vec::new(),
     })
+}
+
+/// A support-motion entry: its file read (m/s², a header of support ids), no `x`, `y`, `dt`
+/// or `units` beside it.
+fn support_entry(
+    cx: &Ctx,
+    i: usize,
+    r: &Entry,
+    s: &Val<String>,
+    mut problems: Vec<String>,
+) -> Result<SetRecord, Vec<String>> {
+    let here = cx.at(i, "supports", s.at);
+    if r.x.at != s.at || r.y.is_some() || r.dt.is_some() || r.units.is_some() {
+        problems.push(format!(
+            "{here}: a support-motion file gives every support's motion (in m/s², with its own \
+             times): remove x, y, dt and units from this entry"
+        ));
+        return Err(problems);
+    }
+    match super::support_file::read_support_motions(&cx.dir.join(s.v.trim())) {
+        Err(e) => {
+            problems.push(format!("{here}: {e}"));
+            Err(problems)
+        }
+        Ok(cols) => {
+            let start = cols
+                .iter()
+                .find(|(id, _)| id == "start")
+                .unwrap_or(&cols[0]);
+            Ok(SetRecord {
+                id: r.id.v.trim().to_string(),
+                x: start.1.clone(),
+                y: None,
+                meta: r.meta.clone(),
+                supports: cols,
+            })
+        }
+    }
 }
 
 /// `[record.meta]`: strings, numbers and booleans, in alphabetical order of their names.

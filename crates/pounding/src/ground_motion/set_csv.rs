@@ -223,6 +223,7 @@ fn row(
         Some(x) if problems.is_empty() => Ok(Entry {
             id,
             x,
+            supports: None,
             y,
             dt,
             units: cell(4),

@@ -166,6 +166,7 @@ pub(super) fn records(
             x: read(&r.id, "x", &r.x)?,
             y: r.y.as_deref().map(|y| read(&r.id, "y", y)).transpose()?,
             meta,
+            supports: Vec::new(),
         });
     }
     let source = format!(

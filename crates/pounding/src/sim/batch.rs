@@ -27,6 +27,7 @@
 //! ([`BatchRow::outcome`]) and every other run is still done.
 
 use super::bridge::{BridgeSolution, BridgeSummary};
+use super::excitation::{SupportExcitation, SupportRecord};
 use super::problem::{Problem, simulate};
 use super::{SimError, SimSettings, SimStatus};
 use crate::ground_motion::set::RecordSet;
@@ -49,6 +50,9 @@ pub struct BatchRecord {
     /// The second horizontal component of a pair, along `Rot(α) x̂` with `scale_x` (`None`: the
     /// record is the only component).
     pub along_x: Option<Record>,
+    /// A motion per support of a bridge (a set's `supports` entry), each along `Rot(α) ŷ` with
+    /// `scale_y`; `record` is then the `start` support's. Empty for a record or a pair.
+    pub supports: Vec<(String, Record)>,
 }
 
 impl BatchRecord {
@@ -58,6 +62,7 @@ impl BatchRecord {
             name: name.into(),
             record,
             along_x: None,
+            supports: Vec::new(),
         }
     }
 
@@ -71,6 +76,7 @@ impl BatchRecord {
                 name: e.id.clone(),
                 record: Ok(e.x.clone()),
                 along_x: e.y.clone(),
+                supports: e.supports.clone(),
             })
             .collect()
     }
@@ -154,6 +160,38 @@ pub fn entry_problem<P: Problem>(
     base.with_ground(entry_ground(base.ground(), first, second, scale))
 }
 
+/// The problem of one run of a support-motion entry: `base` with each support's record along
+/// `Rot(α) ŷ` (scale factors multiplied by `scale`), the `start` support's as the reference
+/// (the single run of the scenario naming the file as `supports_y`, with `--scale S`). A
+/// two-deck problem has no supports of its own: an error.
+pub fn supports_problem<P: Problem>(
+    base: &P,
+    supports: &[(String, Record)],
+    scale: Real,
+) -> Result<P, SimError> {
+    if *base.supports() != SupportExcitation::Uniform {
+        return Err(SimError::InvalidArgument {
+            name: "ground_motion.v_app".into(),
+            reason: "the scenario's own support motion (wave passage) cannot be combined with a \
+                     support-motion entry, which gives every support its motion"
+                .into(),
+        });
+    }
+    let ground = |r: &Record| entry_ground(base.ground(), r, None, scale);
+    let start = supports
+        .iter()
+        .find(|(id, _)| id == "start")
+        .unwrap_or(&supports[0]);
+    let records = supports
+        .iter()
+        .map(|(id, r)| SupportRecord {
+            id: id.clone(),
+            ground: ground(r),
+        })
+        .collect();
+    base.with_motion(ground(&start.1), SupportExcitation::Records(records))
+}
+
 /// The problem of one run: `base` with `record` as its only component along `Rot(α) ŷ`, scale
 /// factors multiplied by `scale` (the single run `pounding simulate --record R --scale S`).
 pub fn run_problem<P: Problem>(base: &P, record: &Record, scale: Real) -> P {
@@ -232,9 +270,32 @@ pub fn run_batch<P: Problem>(
 ) -> Result<Vec<BatchRow>, SimError> {
     let settings = batch_settings(records, scales, settings)?;
     base.check_model()?;
-    Ok(run_pairs(records, scales, shard, progress, &|r, scale| {
-        run_one(base, r, scale, &settings)
-    }))
+    Ok(run_pairs(
+        records,
+        scales,
+        shard,
+        progress,
+        &|rec, r, scale| {
+            if rec.supports.is_empty() {
+                return run_one(base, (r, rec.along_x.as_ref()), scale, &settings);
+            }
+            let p = match supports_problem(base, &rec.supports, scale) {
+                Ok(p) => p,
+                Err(e) => return (Real::NAN, Err(e)),
+            };
+            let pga = rec
+                .supports
+                .iter()
+                .map(|(_, r)| r.pga())
+                .fold(0.0, Real::max)
+                * p.ground().scale_y.abs();
+            let out = simulate(&p, &settings).map(|sol| {
+                let w = crate::sim::output::run_warnings(p.layout(), &sol).len();
+                counted(BatchOutcome::from(sol), p.ground(), w)
+            });
+            (pga, out)
+        },
+    ))
 }
 
 /// Checks the lists and the settings of a batch; the settings of its runs keep no history (the
@@ -255,7 +316,7 @@ fn batch_settings(
 /// One run of a batch: `((record, a pair's second record), scale)` → the PGA of the applied
 /// component(s) and the outcome.
 type RunOne<'a> =
-    dyn Fn((&Record, Option<&Record>), Real) -> (Real, Result<BatchOutcome, SimError>) + Sync + 'a;
+    dyn Fn(&BatchRecord, &Record, Real) -> (Real, Result<BatchOutcome, SimError>) + Sync + 'a;
 
 /// The rows of every `(record, scale)` pair of `shard`, in parallel on the current rayon pool, in
 /// increasing global index; `run(record, scale)` gives the PGA of the applied component and the
@@ -279,7 +340,7 @@ fn run_pairs(
             let (pga, outcome) = match &rec.record {
                 Err(msg) => (Real::NAN, Err(msg.clone())),
                 Ok(r) => {
-                    let (pga, out) = run((r, rec.along_x.as_ref()), scale);
+                    let (pga, out) = run(rec, r, scale);
                     (pga, out.map_err(|e| format!("{}: {e}", rec.name)))
                 }
             };

@@ -34,6 +34,16 @@ pub trait Problem: Sync {
     fn with_ground(&self, ground: GroundMotion) -> Self
     where
         Self: Sized;
+    /// The same problem with a motion of each support's own and `ground` as the reference (a
+    /// batch run of a support-motion entry); an error for a problem without supports of its
+    /// own (the two-deck model).
+    fn with_motion(
+        &self,
+        ground: GroundMotion,
+        supports: SupportExcitation,
+    ) -> Result<Self, SimError>
+    where
+        Self: Sized;
     /// How its output files are laid out.
     fn layout(&self) -> Layout;
 }
@@ -118,6 +128,16 @@ impl Problem for BridgeProblem {
             u0: self.u0.clone(),
         }
     }
+    fn with_motion(
+        &self,
+        ground: GroundMotion,
+        supports: SupportExcitation,
+    ) -> Result<Self, SimError> {
+        Ok(BridgeProblem {
+            supports,
+            ..self.with_ground(ground)
+        })
+    }
     fn layout(&self) -> Layout {
         Layout::Bridge
     }
@@ -144,6 +164,14 @@ impl Problem for SimProblem {
     fn check_initial(&self) -> Result<(), SimError> {
         finite("q0", &self.q0)?;
         finite("u0", &self.u0)
+    }
+    fn with_motion(&self, _: GroundMotion, _: SupportExcitation) -> Result<Self, SimError> {
+        Err(SimError::InvalidArgument {
+            name: "supports".into(),
+            reason: "a two-deck file's supports all move with its ground motion: a motion per \
+                     support needs a bridge file ([[segment]] tables)"
+                .into(),
+        })
     }
     fn with_ground(&self, ground: GroundMotion) -> Self {
         SimProblem {

@@ -23,6 +23,7 @@ fn records() -> Vec<BatchRecord> {
             name: n.into(),
             record: Ok(record(n, f, a)),
             along_x: None,
+            supports: Vec::new(),
         })
         .collect()
 }
@@ -160,6 +161,7 @@ fn an_unreadable_record_fails_only_its_rows() {
             name: "missing.AT2".into(),
             record: Err("cannot read ground-motion record missing.AT2: not found".into()),
             along_x: None,
+            supports: Vec::new(),
         },
     );
     let rows = pool(2)

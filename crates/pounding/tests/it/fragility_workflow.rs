@@ -272,6 +272,7 @@ fn scaling_to_a_level_gives_that_im_exactly() {
         x: x.clone(),
         y: pair.then(|| y.clone()),
         meta: Vec::new(),
+        supports: Vec::new(),
     };
     let set = RecordSet {
         name: String::new(),
@@ -358,6 +359,7 @@ fn one_record_set(id: &str, x: Record) -> RecordSet {
             x,
             y: None,
             meta: Vec::new(),
+            supports: Vec::new(),
         }],
     }
 }

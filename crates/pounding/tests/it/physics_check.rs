@@ -291,6 +291,7 @@ fn overflowing_energies_end_the_run_as_diverged() {
         })
         .unwrap()),
         along_x: None,
+        supports: Vec::new(),
     }];
     let base = SimProblem::at_rest(bridge, GroundMotion::none());
     let rows = run_batch(

@@ -78,6 +78,7 @@ fn batch_records(paths: &[PathBuf]) -> Vec<BatchRecord> {
             name: p.display().to_string(),
             record: Record::from_path(p, AccelUnits::G).map_err(|e| e.to_string()),
             along_x: None,
+            supports: Vec::new(),
         })
         .collect()
 }

@@ -371,3 +371,84 @@ fn all_supports_on_another_record_is_that_uniform_run() {
         );
     }
 }
+
+/// A record set of support-motion files (`supports = "FILE"`, as `pounding motion svgm`
+/// writes its manifest) runs in a batch: each row is the single run of the scenario naming the
+/// file as `supports_y`, bit for bit; the entry's `x` is its start support's motion; an entry
+/// with `x` beside `supports` is refused naming the key.
+#[test]
+fn support_motion_sets_run_in_batches() {
+    use pounding::ground_motion::set::RecordSet;
+    use pounding::sim::batch::{BatchRecord, BatchShard, run_batch};
+    let rec = el_centro_1940().along_y.unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    for (k, lag) in [(1, 20), (2, 45)] {
+        let mut csv = String::from("t,start,joint1,end\n");
+        for i in 0..=400 {
+            let a = |j: i64| {
+                if j < 1 {
+                    0.0
+                } else {
+                    rec.accel(j as f64 * 0.01)
+                }
+            };
+            let i = i as i64;
+            csv += &format!(
+                "{},{},{},{}\n",
+                i as f64 * 0.01,
+                a(i),
+                a(i - lag),
+                a(i - 2 * lag)
+            );
+        }
+        std::fs::write(dir.path().join(format!("real_{k:04}.csv")), csv).unwrap();
+    }
+    let manifest = "[set]\nname = \"svgm\"\n\n[[record]]\nid = \"real_0001\"\nsupports = \
+                    \"real_0001.csv\"\n\n[[record]]\nid = \"real_0002\"\nsupports = \
+                    \"real_0002.csv\"\n";
+    let set = RecordSet::from_toml(manifest, "manifest.toml", dir.path()).expect("reads");
+    assert_eq!(set.records[1].supports.len(), 3);
+    assert_eq!(set.records[1].x, set.records[1].supports[0].1);
+    let base = Scenario::from_toml(
+        &two_spans("record_y = \"builtin:ELC180\"\nrecord_x = \"none\"", 3.0),
+        "b.toml",
+    )
+    .unwrap()
+    .build_bridge()
+    .unwrap();
+    let rows = run_batch(
+        &base.problem,
+        &base.settings,
+        &BatchRecord::of_set(&set),
+        &[0.5],
+        BatchShard::ALL,
+        &|_| {},
+    )
+    .expect("runs");
+    for (k, row) in rows.iter().enumerate() {
+        let path = dir.path().join("s.toml");
+        let file = format!("real_{:04}.csv", k + 1);
+        std::fs::write(
+            &path,
+            two_spans(&format!("supports_y = \"{file}\"\nscale_y = 0.5"), 3.0),
+        )
+        .unwrap();
+        let setup = Scenario::load(&path).unwrap().build_bridge().unwrap();
+        let single = pounding::sim::simulate(&setup.problem, &setup.settings).unwrap();
+        let out = row.outcome.as_ref().expect("a run");
+        assert_eq!(out.summary, single.summary, "row {k}");
+    }
+    let bad = "[[record]]\nid = \"a\"\nx = \"builtin:ELC180\"\nsupports = \"real_0001.csv\"\n";
+    let e = RecordSet::from_toml(bad, "m.toml", dir.path())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("record[0].supports") && e.contains("remove x"),
+        "{e}"
+    );
+    let none = "[[record]]\nid = \"a\"\n";
+    let e = RecordSet::from_toml(none, "m.toml", dir.path())
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("give x") && e.contains("supports"), "{e}");
+}

@@ -164,6 +164,23 @@ impl Problem for Setup {
         }
         out
     }
+    fn with_motion(
+        &self,
+        ground: GroundMotion,
+        supports: crate::sim::excitation::SupportExcitation,
+    ) -> Result<Self, SimError> {
+        Ok(match self {
+            Setup::TwoDecks(s) => {
+                s.problem.with_motion(ground, supports)?;
+                unreachable!("a two-deck problem refuses")
+            }
+            Setup::Bridge(s) => {
+                let mut out = s.clone();
+                out.problem = out.problem.with_motion(ground, supports)?;
+                Setup::Bridge(out)
+            }
+        })
+    }
     fn layout(&self) -> Layout {
         match self {
             Setup::TwoDecks(_) => Layout::TwoDecks,
