@@ -223,6 +223,7 @@ impl BearingForces {
                 }
                 bearings.push(BearingRecipe {
                     segment: i,
+                    line: b.line,
                     base: b.bottom.body(),
                     arm: b.arm(&bridge.bodies),
                     stiffness: b.stiffness,
@@ -240,6 +241,7 @@ impl BearingForces {
                 bearings,
                 n_yielding,
                 plastic: Vec::new(),
+                ground: Vec::new(),
             },
         }
     }
@@ -255,6 +257,8 @@ impl Observer for BearingForces {
         for y in &s.elements.bearings {
             self.recipe.plastic.extend([y.state.u_p.x, y.state.u_p.y]);
         }
+        let g = &s.frame.ground;
+        self.recipe.ground.extend(g.iter().flat_map(|d| [d.x, d.y]));
     }
 
     fn into_source(self: Box<Self>) -> TableSource {
@@ -267,6 +271,8 @@ impl Observer for BearingForces {
 #[derive(Debug, Clone, PartialEq)]
 pub struct BearingRecipe {
     segment: usize,
+    /// The support line under it.
+    line: usize,
     /// The body under it (a pier cap; `None`: the ground).
     base: Option<usize>,
     arm: Vector,
@@ -284,6 +290,9 @@ pub struct BearingsTable {
     n_yielding: usize,
     /// Per kept row: `u_p` of every yielding bearing.
     plastic: Vec<Real>,
+    /// Per kept row: the support lines' offsets `(d_x, d_y)` (empty when the supports move
+    /// together): a bearing on the ground deforms relative to its own support.
+    ground: Vec<Real>,
 }
 
 impl BearingsTable {
@@ -291,6 +300,7 @@ impl BearingsTable {
     fn table(&self, t: &[Real], q: &[Real], dofs: &Dofs) -> Table {
         let mut out = Table::with_time("bearings", self.columns.clone());
         let n = dofs.len();
+        let lines = if t.is_empty() { 0 } else { self.ground.len() / t.len() };
         out.values.reserve(t.len() * (1 + self.columns.len()));
         for (r, &tr) in t.iter().enumerate() {
             let qr = &q[n * r..n * (r + 1)];
@@ -304,6 +314,9 @@ impl BearingsTable {
                 if let Some(c) = b.base {
                     let [xc, yc, _] = dofs.plan_of(c, qr);
                     u -= Vector::new(xc, yc);
+                } else if !self.ground.is_empty() {
+                    let g = &self.ground[lines * r..lines * (r + 1)];
+                    u -= Vector::new(g[2 * b.line], g[2 * b.line + 1]);
                 }
                 let f = match b.yielding {
                     Some((e, k0, hardening)) => {
