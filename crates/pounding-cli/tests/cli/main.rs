@@ -4,6 +4,7 @@ mod bridge;
 mod bridge_compare;
 mod impact;
 mod substructure;
+mod support_motion;
 
 use std::process::Command;
 

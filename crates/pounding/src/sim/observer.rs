@@ -300,7 +300,11 @@ impl BearingsTable {
     fn table(&self, t: &[Real], q: &[Real], dofs: &Dofs) -> Table {
         let mut out = Table::with_time("bearings", self.columns.clone());
         let n = dofs.len();
-        let lines = if t.is_empty() { 0 } else { self.ground.len() / t.len() };
+        let lines = if t.is_empty() {
+            0
+        } else {
+            self.ground.len() / t.len()
+        };
         out.values.reserve(t.len() * (1 + self.columns.len()));
         for (r, &tr) in t.iter().enumerate() {
             let qr = &q[n * r..n * (r + 1)];

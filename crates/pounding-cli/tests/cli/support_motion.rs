@@ -1,0 +1,84 @@
+//! `pounding simulate` with supports that move apart: the wave-passage example (cut short)
+//! writes `ground_motion.supports` with each line's arrival delay; a support-motion file runs;
+//! bad input is refused with exit 2, naming the key and its line, nothing written.
+
+use crate::{run_capture, scratch_with};
+
+const WAVE: &str = include_str!("../../../../examples/bridge-p-1d-wave.toml");
+
+#[test]
+fn wave_passage_and_support_files_from_the_command_line() {
+    let short = WAVE.replace("[time]\n", "[time]\nduration = 1.0\n");
+    let neg = WAVE.replace("v_app = 250.0", "v_app = -250.0");
+    let (mut csv, mut missing) = (
+        String::from("t,start,joint1,joint2,end\n"),
+        String::from("t,start,joint1,end\n"),
+    );
+    for i in 0..=100 {
+        let t = i as f64 * 0.01;
+        let a = |lag: f64| {
+            if t > lag {
+                (6.0 * (t - lag)).sin()
+            } else {
+                0.0
+            }
+        };
+        csv += &format!("{t},{},{},{},{}\n", a(0.0), a(0.1), a(0.2), a(0.3));
+        missing += &format!("{t},{},{},{}\n", a(0.0), a(0.1), a(0.3));
+    }
+    let file = WAVE
+        .replace(
+            "record_y = \"builtin:ELC180\"\n",
+            "supports_y = \"real.csv\"\n",
+        )
+        .replace("record_x = \"none\"\n", "")
+        .replace("v_app = 250.0", "")
+        .replace("[time]\n", "[time]\nduration = 1.0\n");
+    let d = scratch_with(
+        "support_motion",
+        "run",
+        &[
+            ("wave.toml", &short),
+            ("neg.toml", &neg),
+            ("file.toml", &file),
+            ("real.csv", &csv),
+        ],
+    );
+    let p = |f: &str| d.join(f).to_str().unwrap().to_string();
+    let (code, _, err) = run_capture(&["simulate", &p("wave.toml"), "--out", &p("o")]);
+    assert_eq!(code, Some(0), "{err}");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("o/summary.json")).unwrap()).unwrap();
+    let sup = &summary["ground_motion"]["supports"];
+    assert_eq!(sup["kind"], "wave-passage");
+    assert_eq!(sup["v_app_mps"], 250.0);
+    let delays: Vec<f64> = sup["lines"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|l| l["arrival_delay_s"].as_f64().unwrap())
+        .collect();
+    // 30 m spans (and the 0.02 m joint gaps) at 250 m/s
+    for (k, d) in delays.iter().enumerate() {
+        assert!((d - 0.12 * k as f64).abs() < 2e-4, "{delays:?}");
+    }
+    let (code, _, err) = run_capture(&["simulate", &p("file.toml"), "--out", &p("f")]);
+    assert_eq!(code, Some(0), "{err}");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("f/summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["ground_motion"]["supports"]["kind"], "per-support");
+    assert_eq!(summary["ground_motion"]["record_y"], "real.csv");
+    // bad input: exit 2, the key and its line, nothing written
+    let (code, _, err) = run_capture(&["simulate", &p("neg.toml"), "--out", &p("n")]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("v_app") && err.contains("neg.toml:"), "{err}");
+    assert!(!d.join("n").exists());
+    std::fs::write(d.join("real.csv"), missing).unwrap();
+    let (code, _, err) = run_capture(&["simulate", &p("file.toml"), "--out", &p("m")]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("joint2") && err.contains("supports_y"),
+        "{err}"
+    );
+    assert!(!d.join("m").exists());
+}
