@@ -35,6 +35,11 @@ pub struct Args {
     /// Worker threads (default: all cores).
     #[arg(long)]
     pub threads: Option<usize>,
+    /// With a set of support-motion entries (`pounding motion svgm`): also run each entry with
+    /// every support on its start support's motion and write `svgm_ratio.csv` (the limit states'
+    /// probabilities under the spatially variable motion over the uniform one).
+    #[arg(long)]
+    pub compare_uniform: bool,
 }
 
 /// Reads the scenario, its `[fragility]` settings, the record set and binds the limit states
@@ -53,6 +58,16 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let t0 = Instant::now();
     pounding::input::check_threads(args.threads).map_err(anyhow::Error::msg)?;
     let st = read(&args)?;
+    let uniform = match args.compare_uniform {
+        false => None,
+        true => Some(st.uniform_counterpart().ok_or_else(|| {
+            anyhow!(
+                "--compare-uniform: the record set {} has no support-motion entries \
+                 (`supports = \"FILE\"`, as pounding motion svgm writes them)",
+                st.set_path.display()
+            )
+        })?),
+    };
     let mut pool = rayon::ThreadPoolBuilder::new();
     if let Some(n) = args.threads {
         pool = pool.num_threads(n);
@@ -60,7 +75,8 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let pool = pool.build().context("cannot start the worker threads")?;
     let plan = pool.install(|| st.plan())?;
     pounding::output::check_output_dir_free(&args.out)?;
-    let total = st.set.records.len() * plan.values().len();
+    let per = st.set.records.len() * plan.values().len();
+    let total = per * if uniform.is_some() { 2 } else { 1 };
     use crate::cmd_simulate::sim_records::count;
     let what = match &st.settings.stripes {
         pounding::assessment::Stripes::Levels(_) => "stripe",
@@ -86,17 +102,32 @@ pub fn run(args: Args) -> Result<ExitCode> {
     }
     let t_runs = Instant::now();
     let rows = pool.install(|| st.run(&plan, &|| pb.inc(1)));
+    // the uniform counterpart over the same stripes
+    let rows_u = uniform
+        .as_ref()
+        .map(|u| pool.install(|| u.run(&plan, &|| pb.inc(1))));
     pb.finish_and_clear();
     let runs_s = t_runs.elapsed().as_secs_f64();
     let fits = pool
         .install(|| st.fit(&plan, &rows))
         .map_err(|e| anyhow!("fitting: {e}"))?;
+    let compared = match (&uniform, &rows_u) {
+        (Some(u), Some(rows_u)) => {
+            let fits_u = pool
+                .install(|| u.fit(&plan, &rows_u))
+                .map_err(|e| anyhow!("fitting the uniform runs: {e}"))?;
+            Some(pounding::assessment::svgm::svgm_ratio_csv(
+                (&rows, &fits),
+                (rows_u, &fits_u),
+            ))
+        }
+        _ => None,
+    };
     write_outputs(
         &args.out,
         &st,
         &plan,
-        &rows,
-        &fits,
+        (&rows, &fits, compared.as_deref()),
         (runs_s, t0, total, &pool),
     )?;
     print_table(&fits);
@@ -116,8 +147,7 @@ fn write_outputs(
     out: &Path,
     st: &Study,
     plan: &Plan,
-    rows: &[RunRow],
-    fits: &Fits,
+    (rows, fits, compared): (&[RunRow], &Fits, Option<&str>),
     (runs_s, t0, runs, pool): (f64, Instant, usize, &rayon::ThreadPool),
 ) -> Result<()> {
     let lock = pounding::output::lock_output_dir(out)?;
@@ -128,6 +158,9 @@ fn write_outputs(
     };
     for (name, text) in st.data_files(plan, rows, fits) {
         wr(name, text.as_bytes())?;
+    }
+    if let Some(c) = compared {
+        wr(pounding::assessment::svgm::SVGM_RATIO, c.as_bytes())?;
     }
     crate::fragility_plot::plot(&out.join("fragility.png"), st, plan, rows, fits)
         .map_err(|e| anyhow!("plotting: {e}"))?;

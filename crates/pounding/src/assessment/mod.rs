@@ -45,6 +45,7 @@ pub mod limit;
 pub mod run;
 pub mod settings;
 pub mod study;
+pub mod svgm;
 
 /// Largest factor a record may be scaled by (by a level's `L / IM` or an IDA scale): a record
 /// scaled by more is no longer a plausible ground motion of that intensity (practice keeps scale

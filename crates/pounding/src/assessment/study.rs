@@ -27,6 +27,7 @@ pub const OUTPUTS: &[&str] = &[
     "fragility.png",
     "report.html",
     "timing.json",
+    "svgm_ratio.csv",
 ];
 
 /// Everything read and checked before any run.
