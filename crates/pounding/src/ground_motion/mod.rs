@@ -23,6 +23,7 @@ use thiserror::Error;
 mod at2;
 pub mod format;
 pub mod set;
+pub mod svgm;
 pub mod synth;
 mod text;
 pub use format::{ACCEPTED_FORMATS, ReadOptions, RecordFormat};
