@@ -73,4 +73,5 @@ mod spectrum_limits;
 mod study;
 mod study_shapes;
 mod study_vocab;
+mod svgm;
 mod synth;
