@@ -324,7 +324,11 @@ impl SvgmParams {
             ));
         }
         if let Some(x) = xs.iter().find(|x| !x.is_finite()) {
-            return Err(bad("--supports", list(), &format!("{} is not finite", f(*x))));
+            return Err(bad(
+                "--supports",
+                list(),
+                &format!("{} is not finite", f(*x)),
+            ));
         }
         if let Some(w) = xs.windows(2).find(|w| w[1] <= w[0]) {
             return Err(bad(

@@ -159,21 +159,56 @@ pub enum WriteSetError {
 /// Realisations generated (in parallel) and written at a time: bounds the memory.
 const CHUNK: usize = 32;
 
-/// Generates `count` realisations and writes them to `dir` (created if needed): an earlier
-/// `manifest.toml` there is removed first, then the CSV files, `SVGM.txt`, and `manifest.toml`
-/// last (each atomically: a manifest present means every file it names is complete). The
-/// parameters are checked and the coherency factored before anything is written. Returns the
-/// ids of the realisations.
+/// The CSV files an earlier set in `dir` wrote (listed by its `manifest.toml`, if that is an
+/// `svgm` manifest) that the new set `keep` does not write: left behind, they would sit next to
+/// a manifest that does not list them. A file the generator did not write is never touched.
+fn stale_files(dir: &Path, keep: &[String]) -> Vec<PathBuf> {
+    let Ok(text) = std::fs::read_to_string(dir.join("manifest.toml")) else {
+        return vec![];
+    };
+    let Ok(table) = text.parse::<toml::Table>() else {
+        return vec![];
+    };
+    if table
+        .get("set")
+        .and_then(|s| s.get("name"))
+        .and_then(|n| n.as_str())
+        != Some("svgm")
+    {
+        return vec![];
+    }
+    let records = table.get("record").and_then(|r| r.as_array());
+    records
+        .into_iter()
+        .flatten()
+        .filter_map(|r| r.get("supports").and_then(|f| f.as_str()))
+        .filter(|name| {
+            // only the generator's own names, inside dir
+            let id = name.strip_suffix(".csv").unwrap_or("");
+            id.strip_prefix("real_")
+                .is_some_and(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
+                && !keep.iter().any(|k| k == id)
+        })
+        .map(|name| dir.join(name))
+        .collect()
+}
+
+/// Writes `count` realisations of the checked model `g` to `dir` (created if needed): an
+/// earlier `manifest.toml` there is removed first (with the CSV files of an earlier `svgm` set
+/// that the new one does not write), then the CSV files, `SVGM.txt`, and `manifest.toml` last
+/// (each atomically: a manifest present means every file it names is complete). The count is
+/// checked before anything is written (the parameters were checked by [`Generator::new`]).
+/// Returns the ids of the realisations.
 pub fn write_set(
     dir: &Path,
-    p: &SvgmParams,
+    g: &Generator,
     count: usize,
     seed: u64,
     source: &str,
 ) -> Result<Vec<String>, WriteSetError> {
     use rayon::prelude::*;
     check_count(count)?;
-    let g = Generator::new(p)?;
+    let p = g.params();
     let io = |path: &Path| {
         let path = path.to_path_buf();
         move |source| WriteSetError::Io { path, source }
@@ -183,11 +218,17 @@ pub fn write_set(
         let path = dir.join(name);
         crate::output::write_atomic(&path, text.as_bytes()).map_err(io(&path))
     };
+    let ids: Vec<String> = (0..count).map(|r| record_id(r, count)).collect();
+    let stale = stale_files(dir, &ids);
     let manifest = dir.join("manifest.toml");
     if manifest.exists() {
         std::fs::remove_file(&manifest).map_err(io(&manifest))?;
     }
-    let ids: Vec<String> = (0..count).map(|r| record_id(r, count)).collect();
+    for path in stale {
+        if path.is_file() {
+            std::fs::remove_file(&path).map_err(io(&path))?;
+        }
+    }
     for start in (0..count).step_by(CHUNK) {
         let texts: Vec<String> = (start..(start + CHUNK).min(count))
             .into_par_iter()

@@ -132,6 +132,11 @@ impl Generator {
         Ok(g)
     }
 
+    /// The parameters (checked).
+    pub fn params(&self) -> &SvgmParams {
+        &self.p
+    }
+
     /// `N = M/2`, the frequencies per index `m`.
     fn nfreq(&self) -> usize {
         self.m_fft / 2

@@ -213,7 +213,9 @@ fn the_library_fft_equals_a_direct_dft() {
             let direct: Complex64 = x
                 .iter()
                 .enumerate()
-                .map(|(p, xp)| xp * Complex64::from_polar(1.0, sign * 2.0 * PI * (k * p) as f64 / n as f64))
+                .map(|(p, xp)| {
+                    xp * Complex64::from_polar(1.0, sign * 2.0 * PI * (k * p) as f64 / n as f64)
+                })
                 .sum();
             assert!((yk - direct).norm() < 1e-9, "{k}: {yk} vs {direct}");
         }
