@@ -372,7 +372,7 @@ impl SvgmParams {
                 return Err(bad("--ids", &ids, &format!("id {id:?} is given twice")));
             }
         }
-        if !(self.v_app > 0.0) || self.v_app.is_nan() {
+        if self.v_app.is_nan() || self.v_app <= 0.0 {
             return Err(bad(
                 "--v-app",
                 f(self.v_app),
