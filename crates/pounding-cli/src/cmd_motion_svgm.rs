@@ -119,6 +119,12 @@ pub struct SvgmArgs {
     /// Output directory (created if needed).
     #[arg(long, value_name = "DIR")]
     out: PathBuf,
+    /// Conditional simulation on a recorded motion: not available yet (refused).
+    #[arg(long, value_name = "FILE", hide = true)]
+    condition: Option<PathBuf>,
+    /// The support of the recorded motion of --condition: not available yet (refused).
+    #[arg(long, value_name = "ID", hide = true)]
+    at: Option<String>,
 }
 
 /// The coherency of the flags; a parameter flag of another model is refused.
@@ -175,6 +181,12 @@ fn coherency(a: &SvgmArgs) -> Result<Coherency> {
 /// Runs `pounding motion svgm`.
 pub fn svgm(a: SvgmArgs) -> Result<ExitCode> {
     let PsdArg::CloughPenzien = a.psd;
+    if a.condition.is_some() || a.at.is_some() {
+        bail!(
+            "--condition/--at: conditional simulation on a recorded motion is not available yet \
+             (see docs/guide/motion.md)"
+        );
+    }
     if a.s0.is_some() && a.pga.is_some() {
         bail!("--s0 has no effect with --pga (each realisation is scaled to the PGA): give one");
     }

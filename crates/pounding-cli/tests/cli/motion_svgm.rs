@@ -207,6 +207,8 @@ fn bad_svgm_flags_exit_2_naming_the_flag_and_write_nothing() {
         (with("--count", "10001"), "--count"),
         (with("--psd", "kanai-tajimi"), "--psd"),
         (with("--coherency", "vanmarcke"), "--coherency"),
+        (with("--condition", "rec.AT2"), "--condition"),
+        (with("--duration", "30000"), "--duration"),
     ];
     let mut s0_and_pga = with("--s0", "0.02");
     s0_and_pga.extend(["--pga", "0.3"]);

@@ -156,8 +156,9 @@ pub enum WriteSetError {
     },
 }
 
-/// Realisations generated (in parallel) and written at a time: bounds the memory.
-const CHUNK: usize = 32;
+/// Values (samples × supports) generated in parallel and then written, at most (a chunk has 1 to
+/// 32 realisations): bounds the memory.
+const CHUNK_VALUES: usize = 2 * super::MAX_VALUES;
 
 /// The CSV files an earlier set in `dir` wrote (listed by its `manifest.toml`, if that is an
 /// `svgm` manifest) that the new set `keep` does not write: left behind, they would sit next to
@@ -229,8 +230,9 @@ pub fn write_set(
             std::fs::remove_file(&path).map_err(io(&path))?;
         }
     }
-    for start in (0..count).step_by(CHUNK) {
-        let texts: Vec<String> = (start..(start + CHUNK).min(count))
+    let chunk = (CHUNK_VALUES / (p.samples() * p.positions.len())).clamp(1, 32);
+    for start in (0..count).step_by(chunk) {
+        let texts: Vec<String> = (start..(start + chunk).min(count))
             .into_par_iter()
             .map(|r| csv_text(&p.ids, p.psd.dt, &g.realisation(seed, r)))
             .collect();

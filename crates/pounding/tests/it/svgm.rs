@@ -279,3 +279,80 @@ fn the_same_seed_gives_the_same_bytes_on_any_thread_count_and_count() {
         assert!((mean / pounding::ground_motion::G0 - 0.3).abs() < 1e-12);
     }
 }
+
+#[test]
+fn the_coherency_models_follow_their_published_formulas() {
+    // written out again here from the papers' forms, with the SMART-1 Event 20 parameters
+    let hv = |xi: f64, w: f64| {
+        let (a, al, k, w0, b) = (0.736, 0.147, 5210.0, 6.85, 2.78);
+        let theta = k * (1.0 + (w / w0).powf(b)).powf(-0.5);
+        let e = 2.0 * xi * (1.0 - a + al * a);
+        a * (-e / (al * theta)).exp() + (1.0 - a) * (-e / theta).exp()
+    };
+    let lw = |xi: f64, w: f64| (-(2.5e-4 * w * xi).powi(2)).exp();
+    for xi in [0.0, 10.0, 30.0, 100.0, 500.0] {
+        for w in [0.5, 2.0, 6.85, 20.0, 60.0] {
+            let got = Coherency::HV_SMART1.value(xi, w);
+            assert!((got - hv(xi, w)).abs() < 1e-14, "HV at {xi} m, {w} rad/s");
+            assert!((Coherency::LW_DEFAULT.value(xi, w) - lw(xi, w)).abs() < 1e-14);
+            assert_eq!(Coherency::Full.value(xi, w), 1.0);
+            assert_eq!(
+                Coherency::Independent.value(xi, w),
+                if xi == 0.0 { 1.0 } else { 0.0 }
+            );
+            // unit at zero separation, decreasing with separation and frequency
+            if xi == 0.0 {
+                assert!((got - 1.0).abs() < 1e-15);
+            }
+            assert!(Coherency::HV_SMART1.value(xi + 1.0, w) < got);
+            assert!(
+                Coherency::HV_SMART1.value(xi + 1.0, w * 1.5)
+                    < Coherency::HV_SMART1.value(xi + 1.0, w)
+            );
+        }
+    }
+}
+
+#[test]
+fn ids_files_and_bad_parameters() {
+    use pounding::ground_motion::svgm::{SvgmError, record_id};
+    assert_eq!(default_ids(1), ["start"]);
+    assert_eq!(default_ids(2), ["start", "end"]);
+    assert_eq!(default_ids(4), ["start", "joint1", "joint2", "end"]);
+    assert_eq!(record_id(0, 3), "real_0001");
+    assert_eq!(record_id(9998, 9999), "real_9999");
+    assert_eq!(record_id(41, 10000), "real_00042");
+    let name = |p: &SvgmParams| match p.check() {
+        Err(SvgmError::InvalidParameter { name, .. }) => name,
+        other => panic!("{other:?}"),
+    };
+    let base = params(Coherency::HV_SMART1, 250.0);
+    let mut p = base.clone();
+    p.positions[2] = 30.0;
+    assert_eq!(name(&p), "--supports");
+    let mut p = base.clone();
+    p.ids[3] = "joint1".into();
+    assert_eq!(name(&p), "--ids");
+    let mut p = base.clone();
+    p.v_app = 0.0;
+    assert_eq!(name(&p), "--v-app");
+    let mut p = base.clone();
+    p.psd.omega_g = -1.0;
+    assert_eq!(name(&p), "--wg");
+    let mut p = base.clone();
+    p.coherency = Coherency::HarichandranVanmarcke {
+        a: 0.7,
+        alpha: 0.1,
+        k: 0.0,
+        omega0: 6.0,
+        b: 2.0,
+    };
+    assert_eq!(name(&p), "--hv-k");
+    // a single support is one motion
+    let mut p = base;
+    p.positions = vec![5.0];
+    p.ids = default_ids(1);
+    let a = Generator::new(&p).unwrap().realisation(1, 0);
+    assert_eq!(a.len(), 1);
+    assert_eq!(a[0].len(), 4001);
+}
