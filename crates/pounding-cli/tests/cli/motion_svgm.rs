@@ -186,6 +186,8 @@ fn bad_svgm_flags_exit_2_naming_the_flag_and_write_nothing() {
         (with("--v-app", "0"), "--v-app"),
         (with("--v-app", "-250"), "--v-app"),
         (with("--v-app", "nan"), "--v-app"),
+        (with("--v-app", "20"), "--v-app"),
+        (with("--supports", "0,30,60,1e308"), "--v-app"),
         (with("--hv-a", "0"), "--hv-a"),
         (with("--hv-a", "1.2"), "--hv-a"),
         (with("--hv-alpha", "0"), "--hv-alpha"),

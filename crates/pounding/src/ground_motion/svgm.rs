@@ -246,6 +246,19 @@ impl SvgmParams {
         }
         self.coherency.check()?;
         self.psd.check().map_err(from_synth)?;
+        let travel = self.delay(xs.len() - 1);
+        if travel.is_nan() || travel >= self.psd.duration {
+            return Err(bad(
+                "--v-app",
+                f(self.v_app),
+                &format!(
+                    "the wave needs {} s to cross the supports, not less than --duration = {} s \
+                     (the far supports would see no motion)",
+                    f(travel),
+                    f(self.psd.duration)
+                ),
+            ));
+        }
         let values = self.samples() * xs.len();
         if values > MAX_VALUES {
             return Err(bad(
@@ -260,6 +273,16 @@ impl SvgmParams {
             ));
         }
         Ok(())
+    }
+
+    /// The travel time `τ_j = (x_j − x_1)/v_app` of the wave from the first support to support
+    /// `j` \[s\] (0 for `v_app = ∞`).
+    pub fn delay(&self, j: usize) -> Real {
+        if self.v_app.is_infinite() {
+            0.0
+        } else {
+            (self.positions[j] - self.positions[0]) / self.v_app
+        }
     }
 
     /// Number of samples per support, `round(duration/dt) + 1`.

@@ -64,6 +64,9 @@ impl Coherency {
 
     /// `|γ(ξ, ω)|` for separation `ξ ≥ 0` \[m\] and frequency `ω ≥ 0` \[rad/s\].
     pub fn value(&self, xi: Real, w: Real) -> Real {
+        if xi == 0.0 {
+            return 1.0;
+        }
         match *self {
             Coherency::HarichandranVanmarcke {
                 a,
@@ -78,13 +81,7 @@ impl Coherency {
             }
             Coherency::LucoWong { alpha_over_vs } => (-(alpha_over_vs * w * xi).powi(2)).exp(),
             Coherency::Full => 1.0,
-            Coherency::Independent => {
-                if xi == 0.0 {
-                    1.0
-                } else {
-                    0.0
-                }
-            }
+            Coherency::Independent => 0.0,
         }
     }
 

@@ -101,11 +101,7 @@ impl Generator {
         let s = p.positions.len();
         let n = p.samples();
         let m_fft = n.next_power_of_two().max(2);
-        let delay = p
-            .positions
-            .iter()
-            .map(|x| (x - p.positions[0]) / p.v_app)
-            .collect();
+        let delay = (0..s).map(|j| p.delay(j)).collect();
         let mut g = Generator {
             p: p.clone(),
             s,
