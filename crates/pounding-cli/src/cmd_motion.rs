@@ -26,7 +26,7 @@ enum MotionCommand {
     Synth(SynthArgs),
     /// Spatially variable ground motions at several supports of a long bridge: wave passage and
     /// loss of coherency (spectral representation; Clough-Penzien PSD, Saragoni-Hart envelope).
-    Svgm(svgm::SvgmArgs),
+    Svgm(Box<svgm::SvgmArgs>),
 }
 
 /// Arguments of `pounding motion synth`.
@@ -69,7 +69,7 @@ struct SynthArgs {
 pub fn run(args: Args) -> Result<ExitCode> {
     match args.command {
         MotionCommand::Synth(a) => synth(a),
-        MotionCommand::Svgm(a) => svgm::svgm(a),
+        MotionCommand::Svgm(a) => svgm::svgm(*a),
     }
 }
 
