@@ -72,11 +72,14 @@ use thiserror::Error;
 
 #[path = "svgm_coherency.rs"]
 mod coherency;
+#[path = "svgm_condition.rs"]
+mod condition;
 #[path = "svgm_files.rs"]
 mod files;
 #[path = "svgm_gen.rs"]
 mod generator;
 pub use coherency::Coherency;
+pub use condition::{Conditioned, MIN_WINDOW_SAMPLES};
 pub use files::{WriteSetError, csv_text, manifest_toml, readme_text, record_id, write_set};
 pub use generator::{Fft, Generator};
 

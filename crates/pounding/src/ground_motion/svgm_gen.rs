@@ -73,6 +73,40 @@ impl Fft {
     }
 }
 
+/// Columns `0..cols` of the lower-triangular factor `L` (row-major `s × cols`) of the symmetric
+/// positive semi-definite `s × s` matrix with entries `a(r, c)` (`r ≥ c`; diagonal at most about
+/// 1), `A = L Lᵀ`: a pivot at most `1e-12` is zero and its column stays zero (module doc); a
+/// pivot below `−1e-9` is the error `(row, pivot)`.
+pub(super) fn semidefinite_cholesky(
+    s: usize,
+    cols: usize,
+    a: impl Fn(usize, usize) -> Real,
+) -> Result<Vec<Real>, (usize, Real)> {
+    let mut lm: Vec<Real> = vec![0.0; s * cols];
+    for c in 0..cols {
+        let mut d = a(c, c);
+        for q in 0..c {
+            d -= lm[c * cols + q].powi(2);
+        }
+        if d < PIVOT_NEGATIVE {
+            return Err((c, d));
+        }
+        if d <= PIVOT_ZERO {
+            continue; // the column stays zero
+        }
+        let root = d.sqrt();
+        lm[c * cols + c] = root;
+        for r in c + 1..s {
+            let mut v = a(r, c);
+            for q in 0..c {
+                v -= lm[r * cols + q] * lm[c * cols + q];
+            }
+            lm[r * cols + c] = v / root;
+        }
+    }
+    Ok(lm)
+}
+
 /// The checked model, ready to generate realisations ([`Generator::realisation`]).
 #[derive(Debug, Clone)]
 pub struct Generator {
@@ -156,33 +190,18 @@ impl Generator {
         let w = self.omega(m, l);
         let coh: &Coherency = &self.p.coherency;
         let x = &self.p.positions;
-        // left-looking Cholesky: columns 0..=m of L (row-major s × (m + 1))
-        let mut lm: Vec<Real> = vec![0.0; s * (m + 1)];
-        for c in 0..=m {
-            let mut d = 1.0;
-            for q in 0..c {
-                d -= lm[c * (m + 1) + q].powi(2);
+        let lm = semidefinite_cholesky(s, m + 1, |r, c| {
+            if r == c {
+                1.0
+            } else {
+                coh.value((x[r] - x[c]).abs(), w)
             }
-            if d < PIVOT_NEGATIVE {
-                return Err(SvgmError::NotPositiveSemiDefinite {
-                    omega: w,
-                    support: c,
-                    pivot: d,
-                });
-            }
-            if d <= PIVOT_ZERO {
-                continue; // the column stays zero
-            }
-            let root = d.sqrt();
-            lm[c * (m + 1) + c] = root;
-            for r in c + 1..s {
-                let mut v = coh.value((x[r] - x[c]).abs(), w);
-                for q in 0..c {
-                    v -= lm[r * (m + 1) + q] * lm[c * (m + 1) + q];
-                }
-                lm[r * (m + 1) + c] = v / root;
-            }
-        }
+        })
+        .map_err(|(support, pivot)| SvgmError::NotPositiveSemiDefinite {
+            omega: w,
+            support,
+            pivot,
+        })?;
         let amp = 2.0 * (self.p.psd.psd(w) * self.dw).sqrt();
         for j in m..s {
             out[j] = amp * lm[j * (m + 1) + m];

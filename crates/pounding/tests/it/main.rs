@@ -74,4 +74,5 @@ mod study;
 mod study_shapes;
 mod study_vocab;
 mod svgm;
+mod svgm_condition;
 mod synth;
