@@ -4,11 +4,12 @@
 
 use anyhow::{Context, Result, bail};
 use pounding::ground_motion::svgm::{
-    Coherency, Generator, SvgmParams, check_count, default_ids, write_set,
+    Coherency, Conditioned, Generator, SvgmParams, check_count, default_ids, write_set,
 };
 use pounding::ground_motion::synth::SynthParams;
+use pounding::ground_motion::{ReadOptions, Record};
 use pounding::output::float_token;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 /// The coherency model (`--coherency`).
@@ -70,21 +71,21 @@ pub struct SvgmArgs {
     /// Apparent wave velocity in m/s (> 0), or inf for no wave passage.
     #[arg(long, value_name = "M_S", allow_hyphen_values = true)]
     v_app: f64,
-    /// Power spectral density model.
-    #[arg(long, value_enum, default_value = "clough-penzien")]
-    psd: PsdArg,
-    /// Kanai-Tajimi soil frequency omega_g in rad/s.
-    #[arg(long, value_name = "RAD_S", default_value_t = SynthParams::default().omega_g, allow_hyphen_values = true)]
-    wg: f64,
-    /// Kanai-Tajimi soil damping zeta_g, in (0, 1).
-    #[arg(long, value_name = "ZETA", default_value_t = SynthParams::default().zeta_g, allow_hyphen_values = true)]
-    zg: f64,
-    /// Clough-Penzien filter frequency omega_f in rad/s.
-    #[arg(long, value_name = "RAD_S", default_value_t = SynthParams::default().omega_f, allow_hyphen_values = true)]
-    wf: f64,
-    /// Clough-Penzien filter damping zeta_f, in (0, 1).
-    #[arg(long, value_name = "ZETA", default_value_t = SynthParams::default().zeta_f, allow_hyphen_values = true)]
-    zf: f64,
+    /// Power spectral density model (default clough-penzien).
+    #[arg(long, value_enum)]
+    psd: Option<PsdArg>,
+    /// Kanai-Tajimi soil frequency omega_g in rad/s (default 15.6).
+    #[arg(long, value_name = "RAD_S", allow_hyphen_values = true)]
+    wg: Option<f64>,
+    /// Kanai-Tajimi soil damping zeta_g, in (0, 1) (default 0.6).
+    #[arg(long, value_name = "ZETA", allow_hyphen_values = true)]
+    zg: Option<f64>,
+    /// Clough-Penzien filter frequency omega_f in rad/s (default 1.5).
+    #[arg(long, value_name = "RAD_S", allow_hyphen_values = true)]
+    wf: Option<f64>,
+    /// Clough-Penzien filter damping zeta_f, in (0, 1) (default 0.6).
+    #[arg(long, value_name = "ZETA", allow_hyphen_values = true)]
+    zf: Option<f64>,
     /// White-noise intensity S0 in m^2/s^3, two-sided (default 0.01; not with --pga).
     #[arg(long, value_name = "M2_S3", allow_hyphen_values = true)]
     s0: Option<f64>,
@@ -94,22 +95,12 @@ pub struct SvgmArgs {
     /// Stationary samples: no envelope, no baseline correction.
     #[arg(long)]
     stationary: bool,
-    /// Duration in seconds.
-    #[arg(
-        long,
-        value_name = "SECONDS",
-        default_value_t = 20.0,
-        allow_hyphen_values = true
-    )]
-    duration: f64,
-    /// Sample interval in seconds.
-    #[arg(
-        long,
-        value_name = "SECONDS",
-        default_value_t = 0.01,
-        allow_hyphen_values = true
-    )]
-    dt: f64,
+    /// Duration in seconds (default 20; with --condition the record's).
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true)]
+    duration: Option<f64>,
+    /// Sample interval in seconds (default 0.01; with --condition the record's).
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true)]
+    dt: Option<f64>,
     /// Number of realisations (1 to 10000).
     #[arg(long, value_name = "N")]
     count: usize,
@@ -119,12 +110,16 @@ pub struct SvgmArgs {
     /// Output directory (created if needed).
     #[arg(long, value_name = "DIR")]
     out: PathBuf,
-    /// Conditional simulation on a recorded motion: not available yet (refused).
-    #[arg(long, value_name = "FILE", hide = true)]
+    /// Condition on this recorded motion (a record file the tool reads, or builtin:ELC180) at
+    /// the support --at: the PSD, dt and duration are the record's.
+    #[arg(long, value_name = "FILE")]
     condition: Option<PathBuf>,
-    /// The support of the recorded motion of --condition: not available yet (refused).
-    #[arg(long, value_name = "ID", hide = true)]
+    /// The support of the --condition record (one of the ids).
+    #[arg(long, value_name = "ID")]
     at: Option<String>,
+    /// Length of the stationary windows of --condition in seconds (default 4).
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true)]
+    window: Option<f64>,
 }
 
 /// The coherency of the flags; a parameter flag of another model is refused.
@@ -180,17 +175,39 @@ fn coherency(a: &SvgmArgs) -> Result<Coherency> {
 
 /// Runs `pounding motion svgm`.
 pub fn svgm(a: SvgmArgs) -> Result<ExitCode> {
-    let PsdArg::CloughPenzien = a.psd;
-    if a.condition.is_some() || a.at.is_some() {
-        bail!(
-            "--condition/--at: conditional simulation on a recorded motion is not available yet \
-             (see docs/guide/motion.md)"
-        );
+    let d = SynthParams::default();
+    let conditioned = a.condition.is_some();
+    if !conditioned {
+        for (flag, given) in [("--at", a.at.is_some()), ("--window", a.window.is_some())] {
+            if given {
+                bail!("{flag} applies to --condition only");
+            }
+        }
+    } else {
+        for (flag, given) in [
+            ("--psd", a.psd.is_some()),
+            ("--wg", a.wg.is_some()),
+            ("--zg", a.zg.is_some()),
+            ("--wf", a.wf.is_some()),
+            ("--zf", a.zf.is_some()),
+            ("--s0", a.s0.is_some()),
+            ("--pga", a.pga.is_some()),
+            ("--stationary", a.stationary),
+            ("--dt", a.dt.is_some()),
+            ("--duration", a.duration.is_some()),
+        ] {
+            if given {
+                bail!(
+                    "{flag} does not apply with --condition (the PSD, amplitude, dt and duration \
+                     are the record's)"
+                );
+            }
+        }
     }
     if a.s0.is_some() && a.pga.is_some() {
         bail!("--s0 has no effect with --pga (each realisation is scaled to the PGA): give one");
     }
-    let p = SvgmParams {
+    let mut p = SvgmParams {
         ids: a
             .ids
             .clone()
@@ -199,27 +216,36 @@ pub fn svgm(a: SvgmArgs) -> Result<ExitCode> {
         coherency: coherency(&a)?,
         v_app: a.v_app,
         psd: SynthParams {
-            omega_g: a.wg,
-            zeta_g: a.zg,
-            omega_f: a.wf,
-            zeta_f: a.zf,
-            s0: a.s0.unwrap_or(SynthParams::default().s0),
-            dt: a.dt,
-            duration: a.duration,
+            omega_g: a.wg.unwrap_or(d.omega_g),
+            zeta_g: a.zg.unwrap_or(d.zeta_g),
+            omega_f: a.wf.unwrap_or(d.omega_f),
+            zeta_f: a.zf.unwrap_or(d.zeta_f),
+            s0: a.s0.unwrap_or(d.s0),
+            dt: a.dt.unwrap_or(d.dt),
+            duration: a.duration.unwrap_or(d.duration),
             pga_g: a.pga,
-            ..SynthParams::default()
+            ..d
         },
         stationary: a.stationary,
     };
     // every flag is checked (and the coherency factored) before the directory is created
     check_count(a.count)?;
-    let g = Generator::new(&p)?;
-    let source = p.source(a.count, a.seed);
-    let _lock = pounding::output::lock_output_dir(&a.out)?;
-    let ids = write_set(&a.out, &g, a.count, a.seed, &source)
-        .with_context(|| format!("writing the set to {}", a.out.display()))?;
+    let ids = match &a.condition {
+        None => {
+            let g = Generator::new(&p)?;
+            let source = p.source(a.count, a.seed);
+            let _lock = pounding::output::lock_output_dir(&a.out)?;
+            write_set(&a.out, &g, a.count, a.seed, &source)
+        }
+        Some(file) => {
+            let (g, source) = conditioned_model(&a, file, &mut p)?;
+            let _lock = pounding::output::lock_output_dir(&a.out)?;
+            write_set(&a.out, &g, a.count, a.seed, &source)
+        }
+    }
+    .with_context(|| format!("writing the set to {}", a.out.display()))?;
     eprintln!(
-        "{} realisation{} at {} support{} ({}), {} s at dt {} s, written to {}: manifest.toml, \
+        "{} realisation{} at {} support{} ({}), {} s at dt {} s{}, written to {}: manifest.toml, \
          SVGM.txt. Synthetic motions are for trying multi-support analyses; real assessments \
          need recorded motions.",
         ids.len(),
@@ -229,7 +255,53 @@ pub fn svgm(a: SvgmArgs) -> Result<ExitCode> {
         p.ids.join(", "),
         float_token(p.psd.duration),
         float_token(p.psd.dt),
+        if conditioned {
+            " conditioned on the record"
+        } else {
+            ""
+        },
         a.out.display()
     );
     Ok(ExitCode::SUCCESS)
+}
+
+/// The model conditioned on `--condition FILE --at ID` (the record's dt and duration go to `p`)
+/// and its `source`.
+fn conditioned_model(
+    a: &SvgmArgs,
+    file: &Path,
+    p: &mut SvgmParams,
+) -> Result<(Conditioned, String)> {
+    let Some(at_id) = &a.at else {
+        bail!("--condition needs --at ID, the support of the record");
+    };
+    let at = p.ids.iter().position(|id| id == at_id).with_context(|| {
+        format!(
+            "--at {at_id}: not one of the support ids {}",
+            p.ids.join(",")
+        )
+    })?;
+    let record = Record::open_with(file, &ReadOptions::default())
+        .with_context(|| format!("--condition {}", file.display()))?;
+    let Some(dt) = record.dt() else {
+        bail!(
+            "--condition {}: the record is not uniformly sampled (conditional simulation needs \
+             a constant sample interval)",
+            file.display()
+        );
+    };
+    if record.times()[0] != 0.0 {
+        bail!(
+            "--condition {}: the record starts at t = {} s, not 0",
+            file.display(),
+            float_token(record.times()[0])
+        );
+    }
+    let n = record.values().len();
+    p.psd.dt = dt;
+    p.psd.duration = (n - 1) as f64 * dt;
+    let c = Conditioned::new(p, at, record.values(), a.window.unwrap_or(4.0))
+        .with_context(|| format!("--condition {}", file.display()))?;
+    let source = c.source(&file.display().to_string(), a.count, a.seed);
+    Ok((c, source))
 }

@@ -209,13 +209,41 @@ fn bad_svgm_flags_exit_2_naming_the_flag_and_write_nothing() {
         (with("--count", "10001"), "--count"),
         (with("--psd", "kanai-tajimi"), "--psd"),
         (with("--coherency", "vanmarcke"), "--coherency"),
-        (with("--condition", "rec.AT2"), "--condition"),
+        (with("--condition", "no-such-record.AT2"), "--condition"),
+        (with("--window", "4"), "--window"),
+        (with("--at", "start"), "--at"),
         (with("--duration", "30000"), "--duration"),
     ];
     let mut s0_and_pga = with("--s0", "0.02");
     s0_and_pga.extend(["--pga", "0.3"]);
     let mut lw_params = with("--coherency", "luco-wong");
     lw_params.extend(["--hv-k", "100"]);
+    let cond = |extra: &[&'static str]| {
+        let mut a = vec![
+            "--supports",
+            "0,30,60,90",
+            "--v-app",
+            "250",
+            "--count",
+            "1",
+            "--seed",
+            "1",
+            "--condition",
+            "builtin:ELC180",
+        ];
+        a.extend_from_slice(extra);
+        a
+    };
+    let conditioned = [
+        (cond(&[]), "--at"),
+        (cond(&["--at", "middle"]), "--at"),
+        (cond(&["--at", "start", "--window", "0.1"]), "--window"),
+        (cond(&["--at", "start", "--window", "100"]), "--window"),
+        (cond(&["--at", "start", "--pga", "0.3"]), "--pga"),
+        (cond(&["--at", "start", "--wg", "10"]), "--wg"),
+        (cond(&["--at", "start", "--stationary"]), "--stationary"),
+        (cond(&["--at", "start", "--duration", "20"]), "--duration"),
+    ];
     let mut lw_bad = with("--coherency", "luco-wong");
     lw_bad.extend(["--lw-alpha-vs", "0"]);
     for (i, (args, flag)) in cases
@@ -225,6 +253,7 @@ fn bad_svgm_flags_exit_2_naming_the_flag_and_write_nothing() {
             (lw_params, "--hv-k"),
             (lw_bad, "--lw-alpha-vs"),
         ])
+        .chain(conditioned)
         .enumerate()
     {
         let (code, err, out) = svgm(&d, &format!("out{i}"), &args);
@@ -233,4 +262,54 @@ fn bad_svgm_flags_exit_2_naming_the_flag_and_write_nothing() {
         assert!(!err.contains("panicked"), "{args:?}: {err}");
         assert!(!out.exists(), "{args:?} wrote outputs");
     }
+}
+
+#[test]
+fn svgm_conditioned_on_a_record_keeps_the_record_at_its_support() {
+    use pounding::ground_motion::builtin_record;
+    let d = scratch_dir("motion_svgm", "condition");
+    let (code, err, out) = svgm(
+        &d,
+        "set",
+        &[
+            "--supports",
+            "0,30,60,90",
+            "--v-app",
+            "250",
+            "--condition",
+            "builtin:ELC180",
+            "--at",
+            "joint1",
+            "--count",
+            "2",
+            "--seed",
+            "3",
+        ],
+    );
+    assert_eq!(code, Some(0), "{err}");
+    let manifest = std::fs::read_to_string(out.join("manifest.toml")).unwrap();
+    assert!(manifest.contains(
+        "--v-app 250 --condition builtin:ELC180 --at joint1 --window 4 --count 2 --seed 3"
+    ));
+    let rec = builtin_record("ELC180").unwrap();
+    let peak = rec.pga();
+    for f in ["real_0001.csv", "real_0002.csv"] {
+        let text = std::fs::read_to_string(out.join(f)).unwrap();
+        let mut lines = text.lines();
+        assert_eq!(lines.next(), Some("t,start,joint1,joint2,end"));
+        let rows: Vec<Vec<f64>> = lines
+            .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+            .collect();
+        assert_eq!(rows.len(), rec.values().len());
+        for (k, (row, a)) in rows.iter().zip(rec.values()).enumerate() {
+            assert!((row[0] - rec.times()[k]).abs() < 1e-9);
+            assert!((row[2] - a).abs() < 1e-12 * peak, "{f} row {k}");
+            assert!(row[1] != row[2] && row[3] != row[2]);
+        }
+    }
+    assert!(
+        std::fs::read_to_string(out.join("SVGM.txt"))
+            .unwrap()
+            .contains("CONDITIONED")
+    );
 }

@@ -234,6 +234,24 @@ impl Conditioned {
         &self.p
     }
 
+    /// The command that writes a conditioned set (the manifest's `source`): `pounding motion
+    /// svgm --supports … --ids … --coherency … --v-app … --condition FILE --at ID --window W
+    /// --count N --seed S` (`file` as given).
+    pub fn source(&self, file: &str, count: usize, seed: u64) -> String {
+        let p = &self.p;
+        let xs: Vec<String> = p.positions.iter().map(|&x| f(x)).collect();
+        format!(
+            "pounding motion svgm --supports {} --ids {} {} --v-app {} --condition {file} --at {} \
+             --window {} --count {count} --seed {seed}",
+            xs.join(","),
+            p.ids.join(","),
+            p.coherency.flags(),
+            f(p.v_app),
+            p.ids[self.at],
+            f(self.window())
+        )
+    }
+
     /// The recorded support.
     pub fn at(&self) -> usize {
         self.at

@@ -2,7 +2,7 @@
 //! (`real_0001.csv`: `t,<id1>,<id2>,…`, accelerations in m/s²), `SVGM.txt`, and the manifest
 //! `manifest.toml` (written last).
 
-use super::{Coherency, Generator, SvgmError, SvgmParams, check_count};
+use super::{Coherency, Conditioned, Generator, SvgmError, SvgmParams, check_count};
 use crate::math::Real;
 use crate::output::{float_token as f, push_float_token};
 use std::path::{Path, PathBuf};
@@ -139,6 +139,73 @@ pub fn readme_text(p: &SvgmParams, count: usize, seed: u64, source: &str) -> Str
     )
 }
 
+/// A model that generates realisations: the unconditional [`Generator`] or the
+/// [`Conditioned`] one.
+pub trait Realiser: Sync {
+    /// The parameters (checked).
+    fn params(&self) -> &SvgmParams;
+    /// The accelerations \[m/s²\] of realisation `r` of `seed`, per support.
+    fn realisation(&self, seed: u64, r: usize) -> Vec<Vec<Real>>;
+    /// The text of `SVGM.txt`.
+    fn readme(&self, count: usize, seed: u64, source: &str) -> String;
+}
+
+impl Realiser for Generator {
+    fn params(&self) -> &SvgmParams {
+        Generator::params(self)
+    }
+    fn realisation(&self, seed: u64, r: usize) -> Vec<Vec<Real>> {
+        Generator::realisation(self, seed, r)
+    }
+    fn readme(&self, count: usize, seed: u64, source: &str) -> String {
+        readme_text(self.params(), count, seed, source)
+    }
+}
+
+impl Realiser for Conditioned {
+    fn params(&self) -> &SvgmParams {
+        Conditioned::params(self)
+    }
+    fn realisation(&self, seed: u64, r: usize) -> Vec<Vec<Real>> {
+        Conditioned::realisation(self, seed, r)
+    }
+    fn readme(&self, count: usize, seed: u64, source: &str) -> String {
+        let p = self.params();
+        let supports: Vec<String> = p
+            .ids
+            .iter()
+            .zip(&p.positions)
+            .map(|(id, x)| format!("{id} at {} m", f(*x)))
+            .collect();
+        format!(
+            "SPATIALLY VARIABLE GROUND MOTIONS CONDITIONED ON A RECORD - SIMULATED, EXCEPT AT {}\n\n\
+             Written by: {source}\n\
+             {count} realisation(s), seed {seed}, dt = {} s, duration = {} s (the record's).\n\
+             Supports: {}.\n\n\
+             Model: conditional simulation on the record at support {} in overlapping stationary\n\
+             windows of {} s (Konakli & Der Kiureghian 2012): per window the PSD is the record's\n\
+             smoothed periodogram, the conditional mean is the record filtered by the lagged\n\
+             coherency {} and delayed by the wave passage ({}), and the residual is Gaussian\n\
+             with the conditional cross-spectral density. Same PSD at every support (no site\n\
+             effects); no envelope, baseline correction or scaling.\n\n\
+             Files: real_NNNN.csv, header t,<support ids>, accelerations in m/s^2 at t = k dt;\n\
+             manifest.toml lists them. See docs/guide/motion.md.\n",
+            p.ids[self.at()],
+            f(p.psd.dt),
+            f(p.psd.duration),
+            supports.join(", "),
+            p.ids[self.at()],
+            f(self.window()),
+            p.coherency.flags().trim_start_matches("--coherency "),
+            if p.v_app.is_infinite() {
+                "none, v_app = inf".to_string()
+            } else {
+                format!("v_app = {} m/s", f(p.v_app))
+            }
+        )
+    }
+}
+
 /// Errors of writing a set: bad parameters or numerical trouble (nothing written), or an I/O
 /// error naming the path.
 #[derive(Debug, thiserror::Error)]
@@ -194,7 +261,7 @@ fn stale_files(dir: &Path, keep: &[String]) -> Vec<PathBuf> {
         .collect()
 }
 
-/// Writes `count` realisations of the checked model `g` to `dir` (created if needed): an
+/// Writes `count` realisations of the checked model `g` ([`Generator`] or [`Conditioned`]) to `dir` (created if needed): an
 /// earlier `manifest.toml` there is removed first (with the CSV files of an earlier `svgm` set
 /// that the new one does not write), then the CSV files, `SVGM.txt`, and `manifest.toml` last
 /// (each atomically: a manifest present means every file it names is complete). The count is
@@ -202,7 +269,7 @@ fn stale_files(dir: &Path, keep: &[String]) -> Vec<PathBuf> {
 /// Returns the ids of the realisations.
 pub fn write_set(
     dir: &Path,
-    g: &Generator,
+    g: &impl Realiser,
     count: usize,
     seed: u64,
     source: &str,
@@ -240,7 +307,7 @@ pub fn write_set(
             write(&format!("{id}.csv"), text)?;
         }
     }
-    write("SVGM.txt", &readme_text(p, count, seed, source))?;
+    write("SVGM.txt", &g.readme(count, seed, source))?;
     write("manifest.toml", &manifest_toml(&ids, seed, source))?;
     Ok(ids)
 }
