@@ -3,8 +3,8 @@
 //! and **loss of coherency**, simulated by the spectral representation method. Like
 //! [`super::synth`], these are stochastic motions for trying a multi-support analysis, not a
 //! substitute for recorded motions. Site response per support is not modelled (every support has
-//! the same power spectral density); conditional simulation on a recorded motion is not
-//! available yet.
+//! the same power spectral density). [`Conditioned`] simulates the motions conditioned on a
+//! recorded motion at one support.
 //!
 //! # Cross-spectral density
 //! Support `j` sits at position `x_j` (metres, strictly increasing along the direction the wave
