@@ -1,12 +1,16 @@
 //! `pounding motion synth`: synthetic (stochastic) accelerogram suites for trying the workflow
 //! ([`pounding::ground_motion::synth`]); writes `SYNnnn_x.AT2` (and `_y` with `--pairs`),
-//! `SYNTHETIC.txt` and the record-set manifest `suite.toml` (last).
+//! `SYNTHETIC.txt` and the record-set manifest `suite.toml` (last); `pounding motion svgm`
+//! ([`svgm`]): spatially variable motions at several supports.
 
 use anyhow::{Context, Result};
 use pounding::ground_motion::synth::{SynthParams, check_count, synth_source, write_suite};
 use pounding::output::float_token;
 use std::path::PathBuf;
 use std::process::ExitCode;
+
+#[path = "cmd_motion_svgm.rs"]
+mod svgm;
 
 /// Arguments of `pounding motion`.
 #[derive(clap::Args)]
@@ -20,6 +24,9 @@ enum MotionCommand {
     /// Synthetic accelerograms: Kanai-Tajimi/Clough-Penzien filtered white noise times a
     /// Saragoni-Hart envelope (for trying the workflow; real assessments need real records).
     Synth(SynthArgs),
+    /// Spatially variable ground motions at several supports of a long bridge: wave passage and
+    /// loss of coherency (spectral representation; Clough-Penzien PSD, Saragoni-Hart envelope).
+    Svgm(Box<svgm::SvgmArgs>),
 }
 
 /// Arguments of `pounding motion synth`.
@@ -62,6 +69,7 @@ struct SynthArgs {
 pub fn run(args: Args) -> Result<ExitCode> {
     match args.command {
         MotionCommand::Synth(a) => synth(a),
+        MotionCommand::Svgm(a) => svgm::svgm(*a),
     }
 }
 

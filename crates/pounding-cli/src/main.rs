@@ -50,7 +50,7 @@ enum Command {
     Compare(cmd_compare::Args),
     /// Elastic response spectra (PSA, PSV, SD) of records, and RotD50/RotD100 of horizontal pairs.
     Spectrum(cmd_spectrum::Args),
-    /// Ground-motion tools: `motion synth` writes synthetic accelerogram suites (for trying the workflow).
+    /// Ground-motion tools: `motion synth` writes synthetic accelerogram suites (for trying the workflow), `motion svgm` spatially variable motions at several supports.
     Motion(cmd_motion::Args),
     /// Fragility study of a bridge: a record set at IM stripes, limit states, fitted lognormal curves.
     Fragility(cmd_fragility::Args),

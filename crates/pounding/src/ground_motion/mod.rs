@@ -25,6 +25,7 @@ pub mod format;
 pub mod integral;
 pub mod set;
 pub mod support_file;
+pub mod svgm;
 pub mod synth;
 mod text;
 pub use format::{ACCEPTED_FORMATS, ReadOptions, RecordFormat};

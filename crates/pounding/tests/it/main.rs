@@ -75,4 +75,6 @@ mod spectrum_limits;
 mod study;
 mod study_shapes;
 mod study_vocab;
+mod svgm;
+mod svgm_condition;
 mod synth;
