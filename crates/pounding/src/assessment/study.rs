@@ -130,6 +130,15 @@ impl Study {
                 (p.period, Some(p))
             }
         };
+        // support-motion entries: refused before any run if no run could take them
+        let entries = crate::sim::batch::BatchRecord::of_set(&records);
+        crate::sim::batch::check_support_entries(&setup.problem, &entries).map_err(|e| {
+            AssessmentError::Invalid(format!(
+                "record set {}: its support-motion entries cannot run on {}: {e}",
+                set_path.display(),
+                scenario.origin()
+            ))
+        })?;
         let spec = ImSpec {
             kind: settings.im,
             period,

@@ -270,6 +270,7 @@ pub fn run_batch<P: Problem>(
 ) -> Result<Vec<BatchRow>, SimError> {
     let settings = batch_settings(records, scales, settings)?;
     base.check_model()?;
+    check_support_entries(base, records)?;
     Ok(run_pairs(
         records,
         scales,
@@ -296,6 +297,20 @@ pub fn run_batch<P: Problem>(
             (pga, out)
         },
     ))
+}
+
+/// Refuses, before any run, support-motion entries that no run of `base` could take (a two-deck
+/// model, a scenario with its own wave passage, a bridge the supports' motions do not reach:
+/// [`crate::sim::integrate::check_apart`]).
+pub fn check_support_entries<P: Problem>(
+    base: &P,
+    records: &[BatchRecord],
+) -> Result<(), SimError> {
+    let Some(r) = records.iter().find(|r| !r.supports.is_empty()) else {
+        return Ok(());
+    };
+    let p = supports_problem(base, &r.supports, 1.0)?;
+    crate::sim::integrate::check_apart(&p.model())
 }
 
 /// Checks the lists and the settings of a batch; the settings of its runs keep no history (the
