@@ -33,7 +33,7 @@ impl Study {
             set,
             set_path: self.set_path.clone(),
             limits: self.limits.clone(),
-            spec: self.spec.clone(),
+            spec: self.spec,
             period: self.period.clone(),
             code_check: self.code_check.clone(),
         })
