@@ -114,7 +114,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let compared = match (&uniform, &rows_u) {
         (Some(u), Some(rows_u)) => {
             let fits_u = pool
-                .install(|| u.fit(&plan, &rows_u))
+                .install(|| u.fit(&plan, rows_u))
                 .map_err(|e| anyhow!("fitting the uniform runs: {e}"))?;
             Some(pounding::assessment::svgm::svgm_ratio_csv(
                 (&rows, &fits),
