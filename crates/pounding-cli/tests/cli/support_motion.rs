@@ -82,3 +82,87 @@ fn wave_passage_and_support_files_from_the_command_line() {
     );
     assert!(!d.join("m").exists());
 }
+
+const VIADUCT: &str = include_str!("../../../../examples/fragility/viaduct.toml");
+
+/// `motion svgm` → `fragility --compare-uniform`: the realisations run with every support on
+/// its own column and again on their start column; `svgm_ratio.csv` has a row per limit state
+/// and stripe with the runs counted under both. A dashpot-damped bridge refuses such a set
+/// before any run (exit 2, nothing written), and `--compare-uniform` without support entries is
+/// refused.
+#[test]
+fn svgm_set_through_fragility_with_the_uniform_ratio() {
+    let d = scratch_with("support_motion", "frag", &[]);
+    let p = |f: &str| d.join(f).to_str().unwrap().to_string();
+    let (code, _, err) = run_capture(&[
+        "motion",
+        "svgm",
+        "--supports",
+        "0,30.01,60.03,90.04",
+        "--count",
+        "3",
+        "--seed",
+        "2",
+        "--v-app",
+        "250",
+        "--duration",
+        "10",
+        "--out",
+        &p("sv"),
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    let scenario = |damping: &str| {
+        VIADUCT
+            .replace(
+                "records = \"suite.toml\"",
+                &format!("records = \"{}\"", p("sv/manifest.toml")),
+            )
+            .replace("damping = \"dashpots\"", damping)
+            .replace("bootstrap = 500", "bootstrap = 0")
+            .replace("[0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.4]", "[0.4, 1.0]")
+    };
+    std::fs::write(d.join("r.toml"), scenario("damping = \"rayleigh\"")).unwrap();
+    std::fs::write(d.join("dash.toml"), scenario("damping = \"dashpots\"")).unwrap();
+    let (code, _, err) = run_capture(&[
+        "fragility",
+        &p("r.toml"),
+        "--out",
+        &p("o"),
+        "--compare-uniform",
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    let ratio = std::fs::read_to_string(d.join("o/svgm_ratio.csv")).unwrap();
+    let lines: Vec<&str> = ratio.lines().collect();
+    assert!(lines[0].starts_with("limit_state,stripe,im_g,exceeded_svgm,runs_svgm"));
+    assert_eq!(lines.len(), 1 + 2 * 2, "{ratio}");
+    for l in &lines[1..] {
+        let c: Vec<&str> = l.split(',').collect();
+        assert_eq!((c[4], c[6]), ("3", "3"), "{l}");
+    }
+    let (code, _, err) = run_capture(&["fragility", &p("dash.toml"), "--out", &p("n")]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("dashpots") && err.contains("manifest.toml"),
+        "{err}"
+    );
+    assert!(!d.join("n").exists());
+    let plain = VIADUCT.replace("bootstrap = 500", "bootstrap = 0");
+    std::fs::write(d.join("plain.toml"), plain).unwrap();
+    std::fs::copy(
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../examples/fragility/suite.toml"
+        ),
+        d.join("suite.toml"),
+    )
+    .unwrap();
+    let (code, _, err) = run_capture(&[
+        "fragility",
+        &p("plain.toml"),
+        "--out",
+        &p("u"),
+        "--compare-uniform",
+    ]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("--compare-uniform"), "{err}");
+}
