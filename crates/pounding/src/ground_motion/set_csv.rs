@@ -74,6 +74,13 @@ fn header_problem(h: &str, seen: &[String]) -> Option<String> {
             KEYS.join(", ")
         ));
     }
+    if norm == "supports" {
+        return Some(format!(
+            "column {h:?}: support-motion entries (a motion per support) are read from TOML \
+             manifests only ([[record]] id = \"…\" supports = \"FILE.csv\"); rename the column \
+             (e.g. \"meta_supports\") to keep it as metadata"
+        ));
+    }
     if norm == "format" {
         return Some(format!(
             "column {h:?}: a record's format is found from its file (extension and content), \

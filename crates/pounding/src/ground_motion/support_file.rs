@@ -43,6 +43,7 @@ pub fn parse_support_motions(
     text: &str,
     name: &str,
 ) -> Result<Vec<(String, Record)>, GroundMotionError> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut lines = text
         .lines()
         .enumerate()

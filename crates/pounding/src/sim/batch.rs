@@ -310,7 +310,27 @@ pub fn check_support_entries<P: Problem>(
         return Ok(());
     };
     let p = supports_problem(base, &r.supports, 1.0)?;
-    crate::sim::integrate::check_apart(&p.model())
+    let model = p.model();
+    crate::sim::integrate::check_apart(&model)?;
+    let lines: Vec<String> = model.support_lines().into_iter().map(|l| l.id).collect();
+    for r in records.iter().filter(|r| !r.supports.is_empty()) {
+        let has = |id: &String| r.supports.iter().any(|(c, _)| c == id);
+        let missing = lines.iter().find(|l| !has(l));
+        let extra = r.supports.iter().find(|(c, _)| !lines.contains(c));
+        let problem = match (missing, extra) {
+            (Some(l), _) => format!("has no column for support `{l}`"),
+            (None, Some((c, _))) => format!("has a column `{c}`, which is not a support"),
+            (None, None) => continue,
+        };
+        return Err(SimError::InvalidArgument {
+            name: format!("record {:?}", r.name),
+            reason: format!(
+                "its support-motion file {problem} of the bridge (its supports: {})",
+                lines.join(", ")
+            ),
+        });
+    }
+    Ok(())
 }
 
 /// Checks the lists and the settings of a batch; the settings of its runs keep no history (the

@@ -174,7 +174,24 @@ impl SupportMotion {
                 }
                 match excitation.wave_delays(&lines) {
                     None => return Ok(None),
-                    Some((_, delays)) => delays.into_iter().map(|tau| (None, tau)).collect(),
+                    Some((_, delays)) => {
+                        let longest = delays.iter().copied().fold(0.0, Real::max);
+                        let end = ground.end_time();
+                        if !(longest.is_finite() && longest <= end) {
+                            return Err(SimError::invalid(
+                                "ground_motion.v_app",
+                                v,
+                                &format!(
+                                    "the wave would take {} s to cross the bridge, longer than \
+                                     the record ({} s): the far supports would not move while \
+                                     it lasts",
+                                    crate::output::float_token(longest),
+                                    crate::output::float_token(end)
+                                ),
+                            ));
+                        }
+                        delays.into_iter().map(|tau| (None, tau)).collect()
+                    }
                 }
             }
             SupportExcitation::Records(recs) => {
@@ -219,6 +236,12 @@ impl SupportMotion {
     /// Number of support lines.
     pub fn len(&self) -> usize {
         self.lines.len()
+    }
+
+    /// The longest arrival delay \[s\] (0 without wave passage): a run of the record's length
+    /// lasts this much longer, so that every support receives the whole record.
+    pub fn longest_delay(&self) -> Real {
+        self.lines.iter().map(|l| l.1).fold(0.0, Real::max)
     }
 
     /// `(d_s, ḋ_s)` of every support at `t`, into `d`, `v`.

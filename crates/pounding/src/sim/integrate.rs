@@ -70,6 +70,18 @@ impl Integrator for MoreauJean {
         let coupled = model
             .coupled_system(run.systems, self.dense || apart, apart)?
             .map(|c| (c, model.dofs()));
+        // a run to the record's end lasts until its last arrival's end (wave passage)
+        let extended;
+        let settings = match run.motion.map(|m| m.longest_delay()) {
+            Some(d) if d > 0.0 && settings.duration.is_none() => {
+                extended = SimSettings {
+                    duration: Some(run.ground.end_time() + d),
+                    ..settings.clone()
+                };
+                &extended
+            }
+            _ => settings,
+        };
         let mut scheme =
             super::scheme::Scheme::new(run.ground, settings, run.systems.to_vec(), coupled)?;
         scheme.motion = run.motion.cloned();

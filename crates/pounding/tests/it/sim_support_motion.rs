@@ -245,6 +245,23 @@ fn refusals_name_the_key() {
         ),
         ("supports_y = \"missing.csv\"".into(), "", "missing.csv"),
         (format!("{elc}\nv_app = 250.0"), "", "dashpots"),
+        (
+            format!("{elc}\nv_app = 250.0\nwave_direction_deg = 1e300"),
+            "",
+            "[-360, 360]",
+        ),
+        (format!("{elc}\nv_app = 1e-3"), "", "longer than the record"),
+        (
+            format!("{elc}\nv_app = 1e-300"),
+            "",
+            "longer than the record",
+        ),
+        ("supports_y = \"\"".into(), "", "supports_y is empty"),
+        (
+            "supports_y = \"r.csv\"\nrecord_dt = 0.01".into(),
+            "",
+            "cannot be combined",
+        ),
     ] {
         let mut text = two_spans(&ground, 2.0).replace("[contact]", &format!("{extra}\n[contact]"));
         if want == "dashpots" {
@@ -261,6 +278,10 @@ fn refusals_name_the_key() {
         };
         let e = e.to_string();
         assert!(e.contains(want), "{ground} / {extra}: {e}");
+        if want == "dashpots" {
+            // the line that sets them
+            assert!(e.contains("w.toml:3"), "{e}");
+        }
     }
     // a file without a column for a support, or with one the bridge lacks
     let dir = tempfile::tempdir().unwrap();
@@ -282,8 +303,29 @@ fn refusals_name_the_key() {
             .map(|_| ())
             .unwrap_err()
             .to_string();
-        assert!(e.contains(want) && e.contains("supports_y"), "{e}");
+        assert!(
+            e.contains(want) && e.contains("supports_y") && e.contains("r.csv"),
+            "{e}"
+        );
     }
+    // a byte-order mark before the header is read as text editors write it
+    std::fs::write(
+        dir.path().join("r.csv"),
+        "\u{feff}t,start,joint1,end\n0,0,0,0\n1,1,1,1\n",
+    )
+    .unwrap();
+    let path = dir.path().join("s.toml");
+    std::fs::write(&path, two_spans("supports_y = \"r.csv\"", 1.0)).unwrap();
+    assert!(Scenario::load(&path).unwrap().build_bridge().is_ok());
+    // a CSV manifest's `supports` column is not silently metadata
+    let e = pounding::ground_motion::set::RecordSet::from_csv(
+        "id,x,supports\nA,builtin:ELC180,r.csv\n",
+        "m.csv",
+        dir.path(),
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("supports") && e.contains("TOML"), "{e}");
     // two-deck files: the supports all move together
     let e = Scenario::from_toml("[ground_motion]\nv_app = 250.0\n", "two.toml")
         .and_then(|s| s.build().map(|_| ()))

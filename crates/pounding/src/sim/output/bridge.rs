@@ -233,7 +233,8 @@ fn supports_json(setup: &BridgeSetup) -> Option<Value> {
             (
                 "wave-passage",
                 json_float(*v_app),
-                json_float(e.y.atan2(e.x).to_degrees()),
+                // the direction as an angle to 1e-9°, not the last bits of its sine and cosine
+                json_float((e.y.atan2(e.x).to_degrees() * 1e9).round() / 1e9),
                 d,
             )
         }

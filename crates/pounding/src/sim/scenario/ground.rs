@@ -177,7 +177,10 @@ pub(in crate::sim::scenario) fn build_ground(
     let g = &sc.raw.ground_motion;
     let own = sc.scenario_reading()?;
     let units = own.units;
+    let files = check_support_files(sc)?;
     let (along_y, along_x, records) = match &sc.record {
+        // the records are the support-motion files' (build_supports)
+        _ if files => (None, None, support_files(sc)),
         None if sc.batch => (None, None, ["batch".into(), "none".into()]),
         Some((p, u)) => {
             let reading = sc.override_reading(*u)?;
@@ -282,13 +285,13 @@ pub(in crate::sim::scenario) fn build_supports(
         }
         let direction = match g.wave_direction_deg {
             None => None,
-            Some(a) if a.is_finite() => {
+            Some(a) if a.is_finite() && a.abs() <= 360.0 => {
                 Some(Vector::new(a.to_radians().cos(), a.to_radians().sin()))
             }
             Some(a) => {
                 return Err(src.invalid(
                     format!(
-                        "invalid wave_direction_deg = {} at {}: must be finite",
+                        "invalid wave_direction_deg = {} at {}: must lie in [-360, 360]",
                         float_token(a),
                         src.at(ground("wave_direction_deg"))
                     ),
@@ -304,38 +307,11 @@ pub(in crate::sim::scenario) fn build_supports(
             },
         ));
     }
-    // a motion per support: no record of its own, no wave passage on top
-    for k in [
-        "v_app",
-        "wave_direction_deg",
-        "record_y",
-        "record_x",
-        "record_dt",
-    ] {
-        if src.is_set(ground(k)) {
-            return Err(src.key_error(
-                format!(
-                    "{} cannot be combined with supports_y / supports_x (each support's motion is \
-                     in the support-motion file)",
-                    src.at(ground(k))
-                ),
-                &[ground(k)],
-            ));
-        }
-    }
-    if sc.record.is_some() || sc.batch {
-        return Err(src.key_error(
-            "supports_y / supports_x give every support its own motion: --record and batches \
-             of records do not apply to such a file"
-                .into(),
-            &[ground("supports_y"), ground("supports_x")],
-        ));
-    }
     let read = |key: &'static str, spec: &Option<String>| -> Result<_, ScenarioError> {
         let Some(spec) = spec else { return Ok(None) };
         let path = src.dir.join(spec.trim());
         read_support_motions(&path)
-            .map(Some)
+            .map(|c| Some((path.display().to_string(), c)))
             .map_err(|error| ScenarioError::Record {
                 at: src.at(ground(key)),
                 error: Box::new(error),
@@ -347,37 +323,39 @@ pub(in crate::sim::scenario) fn build_supports(
     ];
     let mut records = Vec::with_capacity(ids.len());
     for id in ids {
-        let col = |c: &Option<Vec<(String, Record)>>, key: &'static str| {
-            match c {
-            None => Ok(None),
-            Some(c) => match c.iter().find(|(i, _)| i == id) {
-                Some((_, r)) => Ok(Some(r.clone())),
-                None => Err(src.key_error(
+        let mut own = [None, None];
+        for (k, (c, key)) in cols.iter().zip(["supports_y", "supports_x"]).enumerate() {
+            let Some((file, c)) = c else { continue };
+            let Some((_, r)) = c.iter().find(|(i, _)| i == id) else {
+                return Err(src.key_error(
                     format!(
-                        "the file of {} has no column for support `{id}` (the bridge's supports: {})",
+                        "{file} (named by {}) has no column for support `{id}` (the bridge's \
+                         supports: {})",
                         src.at(ground(key)),
                         ids.join(", ")
                     ),
                     &[ground(key)],
-                )),
-            },
+                ));
+            };
+            own[k] = Some(r.clone());
         }
-        };
+        let [along_y, along_x] = own;
         records.push(SupportRecord {
             id: id.clone(),
             ground: GroundMotion {
-                along_y: col(&cols[0], "supports_y")?,
-                along_x: col(&cols[1], "supports_x")?,
+                along_y,
+                along_x,
                 ..reference.clone()
             },
         });
     }
     for (c, key) in cols.iter().zip(["supports_y", "supports_x"]) {
-        if let Some((extra, _)) = c.iter().flatten().find(|(i, _)| !ids.contains(i)) {
+        let Some((file, c)) = c else { continue };
+        if let Some((extra, _)) = c.iter().find(|(i, _)| !ids.contains(i)) {
             return Err(src.key_error(
                 format!(
-                    "the file of {} has a column `{extra}`, which is not a support of the bridge \
-                     (its supports: {})",
+                    "{file} (named by {}) has a column `{extra}`, which is not a support of the \
+                     bridge (its supports: {})",
                     src.at(ground(key)),
                     ids.join(", ")
                 ),
@@ -389,9 +367,82 @@ pub(in crate::sim::scenario) fn build_supports(
     Ok((start, SupportExcitation::Records(records)))
 }
 
+/// Refuses what cannot go with `supports_y` / `supports_x` (a record of the scenario's own,
+/// wave passage, `record_dt`, `--record`, a batch) and an empty path; `Ok(false)` without them.
+fn check_support_files(sc: &Scenario) -> Result<bool, ScenarioError> {
+    let (src, g) = (&sc.src, &sc.raw.ground_motion);
+    let files = [("supports_y", &g.supports_y), ("supports_x", &g.supports_x)];
+    let Some(key) = files.iter().find(|(_, f)| f.is_some()).map(|(k, _)| *k) else {
+        return Ok(false);
+    };
+    for (k, f) in files {
+        if f.as_ref().is_some_and(|f| f.trim().is_empty()) {
+            return Err(src.key_error(
+                format!(
+                    "{k} is empty at {}: give a support-motion file",
+                    src.at(ground(k))
+                ),
+                &[ground(k)],
+            ));
+        }
+    }
+    // a motion per support: no record of its own, no wave passage on top
+    for k in [
+        "v_app",
+        "wave_direction_deg",
+        "record_y",
+        "record_x",
+        "record_dt",
+    ] {
+        if src.is_set(ground(k)) {
+            return Err(src.key_error(
+                format!(
+                    "{} cannot be combined with {key} at {} (each support's motion is in the \
+                     support-motion file)",
+                    src.at(ground(k)),
+                    src.at(ground(key))
+                ),
+                &[ground(k)],
+            ));
+        }
+    }
+    if sc.record.is_some() || sc.batch {
+        return Err(src.key_error(
+            format!(
+                "{key} at {} gives every support its own motion: --record, --records and --set \
+                 do not apply to such a file",
+                src.at(ground(key))
+            ),
+            &[ground(key)],
+        ));
+    }
+    Ok(true)
+}
+
 /// The support-motion files as written (`[supports_y, supports_x]`, `none` for a missing one):
 /// what the outputs name as the records of a run with a motion per support.
 pub(in crate::sim::scenario) fn support_files(sc: &Scenario) -> [String; 2] {
     let g = &sc.raw.ground_motion;
     [&g.supports_y, &g.supports_x].map(|f| f.clone().unwrap_or_else(|| "none".into()))
+}
+
+/// The supports' motion on `model` checked before any run (a wave too slow to cross the bridge
+/// within the record, a support without a motion), the error naming the `[ground_motion]` key.
+pub(in crate::sim::scenario) fn check_motion(
+    sc: &Scenario,
+    model: &crate::sim::bridge::BridgeModel,
+    reference: &GroundMotion,
+    supports: &SupportExcitation,
+) -> Result<(), ScenarioError> {
+    let key = match supports {
+        SupportExcitation::Uniform => return Ok(()),
+        SupportExcitation::WavePassage { .. } => "v_app",
+        SupportExcitation::Records(_) => "supports_y",
+    };
+    crate::sim::excitation::SupportMotion::new(model, reference, supports)
+        .map(|_| ())
+        .map_err(|e| {
+            let src = &sc.src;
+            src.invalid(format!("{e} (at {})", src.at(ground(key))), ground(key))
+        })
 }

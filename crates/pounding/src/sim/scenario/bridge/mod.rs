@@ -401,6 +401,7 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
     if supports != SupportExcitation::Uniform {
         // what the supports' own motions do not reach yet, named before the run
         crate::sim::integrate::check_apart(&model).map_err(|e| model_error(&v, raw, e))?;
+        super::ground::check_motion(sc, &model, &ground, &supports)?;
     }
     // a pier's cap holds fewer values a row (2 coordinates, 2 rates, 4 in piers.csv) than a
     // segment: the memory estimate counts each as one more segment

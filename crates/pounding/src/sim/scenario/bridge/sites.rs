@@ -340,6 +340,8 @@ pub(super) fn model_error(v: &Val, raw: &BridgeRaw, e: crate::sim::SimError) -> 
     } else if let Some(p) = index("pier[") {
         let key = name.rsplit('.').next().unwrap_or_default();
         super::pier::pier_line(v, &raw.pier, p, key)
+    } else if name == "bridge.damping" {
+        raw.bridge.damping.as_ref().map(|x| v.line(x))
     } else {
         None
     };
