@@ -421,7 +421,7 @@ fn check_mechanism(sc: &Scenario, frequencies: &[[f64; 3]; 2]) -> Result<(), Sce
 pub(super) fn build(sc: &Scenario) -> Result<SimSetup, ScenarioError> {
     let src = &sc.src;
     let model = build_model(sc)?;
-    super::ground::refuse_apart(sc)?;
+    super::supports::refuse_apart(sc)?;
     let (ground, records, units) = build_ground(sc)?;
     let settings = build_settings(sc, &ground, &records, 2, || {
         model.validate().map_err(|e| scaled_mass_error(src, e))?;

@@ -22,6 +22,7 @@ mod ground;
 mod sections;
 mod setup;
 mod site_contact;
+mod supports;
 
 pub use bridge::BridgeSetup;
 pub use contact::{

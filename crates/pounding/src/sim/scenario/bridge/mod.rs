@@ -393,15 +393,15 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
     };
     let (ground, records, units) = build_ground(sc)?;
     let ids: Vec<String> = model.support_lines().into_iter().map(|l| l.id).collect();
-    let (ground, supports) = super::ground::build_supports(sc, &ids, ground)?;
+    let (ground, supports) = super::supports::build_supports(sc, &ids, ground)?;
     let records = match &supports {
-        SupportExcitation::Records(_) => super::ground::support_files(sc),
+        SupportExcitation::Records(_) => super::supports::support_files(sc),
         _ => records,
     };
     if supports != SupportExcitation::Uniform {
         // what the supports' own motions do not reach yet, named before the run
         crate::sim::integrate::check_apart(&model).map_err(|e| model_error(&v, raw, e))?;
-        super::ground::check_motion(sc, &model, &ground, &supports)?;
+        super::supports::check_motion(sc, &model, &ground, &supports)?;
     }
     // a pier's cap holds fewer values a row (2 coordinates, 2 rates, 4 in piers.csv) than a
     // segment: the memory estimate counts each as one more segment
