@@ -116,10 +116,20 @@ pub fn run(args: Args) -> Result<ExitCode> {
             let fits_u = pool
                 .install(|| u.fit(&plan, rows_u))
                 .map_err(|e| anyhow!("fitting the uniform runs: {e}"))?;
-            Some(pounding::assessment::svgm::svgm_ratio_csv(
-                (&rows, &fits),
-                (rows_u, &fits_u),
-            ))
+            // the uniform runs' own runs.csv and fragility.csv beside the comparison
+            let files = u.data_files(&plan, rows_u, &fits_u);
+            let own = |name: &str| {
+                files
+                    .iter()
+                    .find(|(n, _)| *n == name)
+                    .map(|(_, t)| t.clone())
+                    .unwrap_or_default()
+            };
+            Some([
+                pounding::assessment::svgm::svgm_ratio_csv((&rows, &fits), (rows_u, &fits_u)),
+                own("runs.csv"),
+                own("fragility.csv"),
+            ])
         }
         _ => None,
     };
@@ -127,7 +137,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
         &args.out,
         &st,
         &plan,
-        (&rows, &fits, compared.as_deref()),
+        (&rows, &fits, compared.as_ref()),
         (runs_s, t0, total, &pool),
     )?;
     print_table(&fits);
@@ -147,7 +157,7 @@ fn write_outputs(
     out: &Path,
     st: &Study,
     plan: &Plan,
-    (rows, fits, compared): (&[RunRow], &Fits, Option<&str>),
+    (rows, fits, compared): (&[RunRow], &Fits, Option<&[String; 3]>),
     (runs_s, t0, runs, pool): (f64, Instant, usize, &rayon::ThreadPool),
 ) -> Result<()> {
     let lock = pounding::output::lock_output_dir(out)?;
@@ -159,8 +169,10 @@ fn write_outputs(
     for (name, text) in st.data_files(plan, rows, fits) {
         wr(name, text.as_bytes())?;
     }
-    if let Some(c) = compared {
-        wr(pounding::assessment::svgm::SVGM_RATIO, c.as_bytes())?;
+    if let Some([ratio, runs, fragility]) = compared {
+        wr(pounding::assessment::svgm::SVGM_RATIO, ratio.as_bytes())?;
+        wr("runs_uniform.csv", runs.as_bytes())?;
+        wr("fragility_uniform.csv", fragility.as_bytes())?;
     }
     crate::fragility_plot::plot(&out.join("fragility.png"), st, plan, rows, fits)
         .map_err(|e| anyhow!("plotting: {e}"))?;

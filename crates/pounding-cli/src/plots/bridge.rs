@@ -100,9 +100,15 @@ fn write_figures(out: &Path, model: &BridgeModel, sol: &BridgeSolution) -> R {
                 color: color(i),
             })
             .collect();
+        let title = if sol.supports_apart {
+            "Centroid displacement of each segment relative to the reference ground motion \
+             (summary.json ground_motion.supports), √(x² + y²)"
+        } else {
+            "Centroid displacement of each segment relative to the ground, √(x² + y²)"
+        };
         line_panel(
             root,
-            "Centroid displacement of each segment relative to the ground, √(x² + y²)",
+            title,
             "displacement [m]",
             t_end,
             &series,

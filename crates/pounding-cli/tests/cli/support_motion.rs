@@ -137,7 +137,10 @@ fn svgm_set_through_fragility_with_the_uniform_ratio() {
     assert_eq!(lines.len(), 1 + 2 * 2, "{ratio}");
     for l in &lines[1..] {
         let c: Vec<&str> = l.split(',').collect();
-        assert_eq!((c[4], c[6]), ("3", "3"), "{l}");
+        assert_eq!((c[4], c[7]), ("3", "3"), "{l}");
+    }
+    for f in ["runs_uniform.csv", "fragility_uniform.csv"] {
+        assert!(d.join("o").join(f).exists(), "{f}");
     }
     let (code, _, err) = run_capture(&["fragility", &p("dash.toml"), "--out", &p("n")]);
     assert_eq!(code, Some(2), "{err}");

@@ -28,6 +28,8 @@ pub const OUTPUTS: &[&str] = &[
     "report.html",
     "timing.json",
     "svgm_ratio.csv",
+    "runs_uniform.csv",
+    "fragility_uniform.csv",
 ];
 
 /// Everything read and checked before any run.

@@ -72,8 +72,9 @@ fn stripe_counts(rows: &[RunRow], limits: usize) -> Vec<(Real, Vec<(usize, usize
 /// run over the same stripes.
 pub fn svgm_ratio_csv(svgm: (&[RunRow], &Fits), uniform: (&[RunRow], &Fits)) -> String {
     let mut out = String::from(
-        "limit_state,stripe,im_g,exceeded_svgm,runs_svgm,exceeded_uniform,runs_uniform,\
-         p_svgm,p_uniform,ratio\n",
+        "limit_state,stripe,im_g,exceeded_svgm,runs_svgm,fraction_svgm,exceeded_uniform,\
+         runs_uniform,fraction_uniform,p_svgm,p_uniform,ratio,theta_svgm_g,beta_svgm,\
+         theta_uniform_g,beta_uniform\n",
     );
     let n_lim = svgm.1.rows.len();
     let (cs, cu) = (
@@ -91,18 +92,26 @@ pub fn svgm_ratio_csv(svgm: (&[RunRow], &Fits), uniform: (&[RunRow], &Fits)) -> 
                 (Some(a), Some(u)) if u > 0.0 => Some(a / u),
                 _ => None,
             };
+            let frac = |(e, n): (usize, usize)| (n > 0).then(|| e as Real / n as Real);
+            let (ts, tu) = (fs.fit.params(), fu.fit.params());
             out += &format!(
-                "{},{},{},{},{},{},{},{},{},{}\n",
+                "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
                 crate::output::csv_field(&fs.limit_state),
                 b + 1,
                 float_token(*im),
                 ns[l].0,
                 ns[l].1,
+                cell(frac(ns[l])),
                 nu[l].0,
                 nu[l].1,
+                cell(frac(nu[l])),
                 cell(ps),
                 cell(pu),
-                cell(ratio)
+                cell(ratio),
+                cell(ts.map(|t| t.0)),
+                cell(ts.map(|t| t.1)),
+                cell(tu.map(|t| t.0)),
+                cell(tu.map(|t| t.1))
             );
         }
     }

@@ -273,7 +273,8 @@ impl Conditioned {
         let n = self.mean[0].len() as isize;
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         rng.set_stream(r as u64);
-        let mut out = self.mean.clone();
+        // the residual apart from the conditional mean (filtered below, then added)
+        let mut out = vec![vec![0.0; self.mean[0].len()]; s];
         let mut bufs = vec![vec![C::new(0.0, 0.0); m]; s];
         let mut xi = vec![C::new(0.0, 0.0); s];
         let norm = std::f64::consts::FRAC_1_SQRT_2;
@@ -316,6 +317,44 @@ impl Conditioned {
                 }
             }
         }
+        // the residual of each simulated support: its content below HIGH_PASS_HZ removed (the
+        // windows' residuals are independent from window to window, so their velocities would
+        // wander off like a random walk: metres of drift over a record) and ending at rest;
+        // added to the conditional mean (the recorded support's residual is zero)
+        for (j, a) in out.iter_mut().enumerate() {
+            if j != self.at {
+                high_pass(a, self.p.psd.dt, HIGH_PASS_HZ);
+                crate::ground_motion::synth::baseline_correct(self.p.psd.dt, a);
+            }
+            for (x, m) in a.iter_mut().zip(&self.mean[j]) {
+                *x += m;
+            }
+        }
         out
+    }
+}
+
+/// The corner \[Hz\] below which the simulated supports' content is removed (as a record
+/// processor's high-pass filter removes what the instrument does not resolve).
+pub const HIGH_PASS_HZ: Real = 0.1;
+
+/// Removes the content of `a` (sample interval `dt`) below `fc` by zeroing those bins of its
+/// discrete Fourier transform (zero-padded to twice a power of two; the mean included).
+fn high_pass(a: &mut [Real], dt: Real, fc: Real) {
+    let m = (2 * a.len()).next_power_of_two();
+    let fft = Fft::new(m);
+    let mut b: Vec<C> = (0..m)
+        .map(|i| C::new(a.get(i).copied().unwrap_or(0.0), 0.0))
+        .collect();
+    fft.process(&mut b, false);
+    let df = 1.0 / (m as Real * dt);
+    for (k, z) in b.iter_mut().enumerate() {
+        if (k.min(m - k) as Real) * df < fc {
+            *z = C::new(0.0, 0.0);
+        }
+    }
+    fft.process(&mut b, true);
+    for (x, z) in a.iter_mut().zip(&b) {
+        *x = z.re / m as Real;
     }
 }

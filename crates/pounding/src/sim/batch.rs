@@ -284,12 +284,8 @@ pub fn run_batch<P: Problem>(
                 Ok(p) => p,
                 Err(e) => return (Real::NAN, Err(e)),
             };
-            let pga = rec
-                .supports
-                .iter()
-                .map(|(_, r)| r.pga())
-                .fold(0.0, Real::max)
-                * p.ground().scale_y.abs();
+            // the start support's, as its single run's summary.json gives it (and its IM)
+            let pga = r.pga() * p.ground().scale_y.abs();
             let out = simulate(&p, &settings).map(|sol| {
                 let w = crate::sim::output::run_warnings(p.layout(), &sol).len();
                 counted(BatchOutcome::from(sol), p.ground(), w)

@@ -235,6 +235,9 @@ pub struct BridgeSolution {
     pub impacts: Vec<ImpactRecord>,
     /// Peaks.
     pub summary: BridgeSummary,
+    /// The supports moved apart (wave passage, a motion per support): the histories' `q` are
+    /// relative to the reference ground motion, not to each support.
+    pub supports_apart: bool,
     /// LCP solves / enumeration fallbacks / failures (rigid law).
     pub lcp_solves: usize,
     /// Steps where Lemke failed but enumeration succeeded.
@@ -565,6 +568,7 @@ pub(crate) fn solution(
     };
     let tr = r.trace;
     BridgeSolution {
+        supports_apart: !r.final_ground.is_empty(),
         status: r.status,
         steps: r.steps,
         dt,

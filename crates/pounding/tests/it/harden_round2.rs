@@ -40,6 +40,7 @@ fn memory_estimate_counts_the_rows_and_bytes_a_run_keeps() {
             energy,
             impacts: _,
             summary: _,
+            supports_apart: _,
             lcp_solves: _,
             lcp_enumeration_fallbacks: _,
             lcp_failures: _,

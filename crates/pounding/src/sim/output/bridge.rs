@@ -245,8 +245,15 @@ fn supports_json(setup: &BridgeSetup) -> Option<Value> {
             vec![None; lines.len()],
         ),
     };
+    // the support whose motion the histories are relative to: the first the wave reaches, or
+    // `start` (the reference of a motion per support)
+    let reference = delays
+        .iter()
+        .position(|d| *d == Some(0.0))
+        .map_or("start", |i| lines[i].id.as_str());
     Some(json!({
         "kind": kind,
+        "reference": reference,
         "v_app_mps": v_app,
         "wave_direction_deg": dir,
         "lines": lines.iter().zip(delays).map(|(l, d)| json!({

@@ -60,10 +60,8 @@ pub(in crate::sim::scenario) fn build_supports(
         if v.is_nan() || v <= 0.0 {
             return Err(src.invalid(
                 format!(
-                    "invalid v_app = {} at {}: the apparent velocity must be > 0 m/s (inf: no wave \
-                     passage)",
-                    float_token(v),
-                    src.at(ground("v_app"))
+                    "invalid v_app = {}: the apparent velocity must be > 0 m/s (inf: no wave passage)",
+                    float_token(v)
                 ),
                 ground("v_app"),
             ));
@@ -76,9 +74,8 @@ pub(in crate::sim::scenario) fn build_supports(
             Some(a) => {
                 return Err(src.invalid(
                     format!(
-                        "invalid wave_direction_deg = {} at {}: must lie in [-360, 360]",
-                        float_token(a),
-                        src.at(ground("wave_direction_deg"))
+                        "invalid wave_direction_deg = {}: must lie in [-360, 360]",
+                        float_token(a)
                     ),
                     ground("wave_direction_deg"),
                 ));
@@ -172,6 +169,7 @@ pub(in crate::sim::scenario) fn check_support_files(sc: &Scenario) -> Result<boo
         }
     }
     // a motion per support: no record of its own, no wave passage on top
+    let none = |v: &str| v.trim().eq_ignore_ascii_case("none");
     for k in [
         "v_app",
         "wave_direction_deg",
@@ -179,7 +177,12 @@ pub(in crate::sim::scenario) fn check_support_files(sc: &Scenario) -> Result<boo
         "record_x",
         "record_dt",
     ] {
-        if src.is_set(ground(k)) {
+        let empty = match k {
+            "record_y" => none(&g.record_y),
+            "record_x" => none(&g.record_x),
+            _ => false,
+        };
+        if src.is_set(ground(k)) && !empty {
             return Err(src.key_error(
                 format!(
                     "{} cannot be combined with {key} at {} (each support's motion is in the \
@@ -228,6 +231,6 @@ pub(in crate::sim::scenario) fn check_motion(
         .map(|_| ())
         .map_err(|e| {
             let src = &sc.src;
-            src.invalid(format!("{e} (at {})", src.at(ground(key))), ground(key))
+            src.invalid(e.to_string(), ground(key))
         })
 }
