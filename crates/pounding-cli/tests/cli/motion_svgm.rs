@@ -46,7 +46,22 @@ fn svgm_writes_csvs_and_the_manifest_with_the_generators_samples() {
             "\n[[record]]\nid = \"{id}\"\nsupports = \"{id}.csv\"\n\n[record.meta]\nseed = 7\n"
         ));
     }
-    assert_eq!(manifest, want);
+    // the manifest without the motions' statistics (checked below from the samples)
+    let bare: String = manifest
+        .lines()
+        .filter(|l| !l.starts_with("pgd_m = ") && !l.starts_with("differential_m = "))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    assert_eq!(bare, want);
+    let stat = |name: &str| -> Vec<f64> {
+        manifest
+            .lines()
+            .filter_map(|l| l.strip_prefix(name))
+            .map(|v| v.parse().unwrap())
+            .collect()
+    };
+    let (pgd, diff) = (stat("pgd_m = "), stat("differential_m = "));
+    assert_eq!((pgd.len(), diff.len()), (3, 3));
     let readme = std::fs::read_to_string(out.join("SVGM.txt")).unwrap();
     assert!(readme.contains("Harichandran-Vanmarcke") && readme.contains("250 m/s"));
     // the samples are the library generator's, read back exactly
@@ -73,6 +88,30 @@ fn svgm_writes_csvs_and_the_manifest_with_the_generators_samples() {
             .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
             .collect();
         assert_eq!(rows.len(), 401);
+        // the manifest's statistics: trapezoid velocity, exact piecewise-linear displacement
+        let (mut v, mut u) = ([0.0f64; 4], [0.0f64; 4]);
+        let (mut pk, mut df) = (0.0f64, 0.0f64);
+        for w in rows.windows(2) {
+            for j in 0..4 {
+                let (a0, a1) = (w[0][j + 1], w[1][j + 1]);
+                u[j] += v[j] * 0.01 + (2.0 * a0 + a1) * 1e-4 / 6.0;
+                v[j] += (a0 + a1) * 0.005;
+                pk = pk.max(u[j].abs());
+            }
+            let hi = u.iter().copied().fold(f64::MIN, f64::max);
+            let lo = u.iter().copied().fold(f64::MAX, f64::min);
+            df = df.max(hi - lo);
+        }
+        assert!(
+            (pk - pgd[r]).abs() <= 1e-9 * pk && pk > 0.0,
+            "pgd {pk} vs {}",
+            pgd[r]
+        );
+        assert!(
+            (df - diff[r]).abs() <= 1e-9 * df && df > 0.0,
+            "diff {df} vs {}",
+            diff[r]
+        );
         for (k, row) in rows.iter().enumerate() {
             assert!((row[0] - k as f64 * 0.01).abs() < 1e-12, "t at row {k}");
             for j in 0..4 {

@@ -81,7 +81,8 @@ mod generator;
 pub use coherency::Coherency;
 pub use condition::{Conditioned, MIN_WINDOW_SAMPLES};
 pub use files::{
-    Realiser, WriteSetError, csv_text, manifest_toml, readme_text, record_id, write_set,
+    MotionStats, Realiser, WriteSetError, csv_text, manifest_toml, readme_text, record_id,
+    write_set,
 };
 pub use generator::{Fft, Generator};
 

@@ -44,17 +44,69 @@ fn quoted(s: &str) -> String {
 }
 
 /// The manifest `manifest.toml`: `[set]` with `name = "svgm"` and `source`, then per
-/// realisation `[[record]]` with `id`, `supports` (the CSV file) and `[record.meta]` `seed`.
-pub fn manifest_toml(ids: &[String], seed: u64, source: &str) -> String {
+/// realisation `[[record]]` with `id`, `supports` (the CSV file) and `[record.meta]` `seed`
+/// and, when given, the realisation's [`MotionStats`] (`pgd_m`, `differential_m`).
+pub fn manifest_toml(
+    ids: &[String],
+    seed: u64,
+    source: &str,
+    stats: Option<&[MotionStats]>,
+) -> String {
     let mut s = format!("[set]\nname = \"svgm\"\nsource = {}\n", quoted(source));
-    for id in ids {
+    for (r, id) in ids.iter().enumerate() {
         s.push_str(&format!(
             "\n[[record]]\nid = {}\nsupports = {}\n\n[record.meta]\nseed = {seed}\n",
             quoted(id),
             quoted(&format!("{id}.csv"))
         ));
+        if let Some(m) = stats.and_then(|st| st.get(r)) {
+            s.push_str(&format!(
+                "pgd_m = {}\ndifferential_m = {}\n",
+                toml_float(m.pgd),
+                toml_float(m.differential)
+            ));
+        }
     }
     s
+}
+
+/// A finite float as TOML writes it (always with a decimal point or an exponent).
+fn toml_float(x: Real) -> String {
+    toml::Value::Float(x).to_string()
+}
+
+/// What a realisation does to the ground, from its samples exactly (piecewise-linear
+/// accelerations from rest, no baseline correction beyond the generator's): the largest peak
+/// ground displacement over the supports and the largest displacement of one support relative
+/// to another, `max_t (max_j u_j(t) − min_j u_j(t))`, over the samples.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MotionStats {
+    /// Largest `|u_j(t)|` \[m\].
+    pub pgd: Real,
+    /// Largest differential displacement between two supports \[m\].
+    pub differential: Real,
+}
+
+impl MotionStats {
+    /// The statistics of one realisation `a[support][sample]` at sample interval `dt`.
+    pub fn of(a: &[Vec<Real>], dt: Real) -> Self {
+        let n = a.iter().map(Vec::len).min().unwrap_or(0);
+        let mut v = vec![0.0; a.len()];
+        let mut u = vec![0.0; a.len()];
+        let (mut pgd, mut differential): (Real, Real) = (0.0, 0.0);
+        for k in 1..n {
+            for (j, x) in a.iter().enumerate() {
+                let (a0, a1) = (x[k - 1], x[k]);
+                u[j] += v[j] * dt + (2.0 * a0 + a1) * dt * dt / 6.0;
+                v[j] += (a0 + a1) * dt / 2.0;
+                pgd = pgd.max(u[j].abs());
+            }
+            let hi = u.iter().copied().fold(Real::NEG_INFINITY, Real::max);
+            let lo = u.iter().copied().fold(Real::INFINITY, Real::min);
+            differential = differential.max(hi - lo);
+        }
+        MotionStats { pgd, differential }
+    }
 }
 
 /// `SVGM.txt`: what the files are, the model and its parameters.
@@ -298,16 +350,27 @@ pub fn write_set(
         }
     }
     let chunk = (CHUNK_VALUES / (p.samples() * p.positions.len())).clamp(1, 32);
+    let mut stats = Vec::with_capacity(count);
     for start in (0..count).step_by(chunk) {
-        let texts: Vec<String> = (start..(start + chunk).min(count))
+        let texts: Vec<(String, MotionStats)> = (start..(start + chunk).min(count))
             .into_par_iter()
-            .map(|r| csv_text(&p.ids, p.psd.dt, &g.realisation(seed, r)))
+            .map(|r| {
+                let a = g.realisation(seed, r);
+                (
+                    csv_text(&p.ids, p.psd.dt, &a),
+                    MotionStats::of(&a, p.psd.dt),
+                )
+            })
             .collect();
-        for (text, id) in texts.iter().zip(&ids[start..]) {
+        for ((text, st), id) in texts.iter().zip(&ids[start..]) {
             write(&format!("{id}.csv"), text)?;
+            stats.push(*st);
         }
     }
     write("SVGM.txt", &g.readme(count, seed, source))?;
-    write("manifest.toml", &manifest_toml(&ids, seed, source))?;
+    write(
+        "manifest.toml",
+        &manifest_toml(&ids, seed, source, Some(&stats)),
+    )?;
     Ok(ids)
 }
