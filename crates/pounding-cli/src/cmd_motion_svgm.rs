@@ -41,12 +41,16 @@ pub struct SvgmArgs {
         value_name = "X,...",
         value_delimiter = ',',
         allow_hyphen_values = true,
-        required = true
+        required_unless_present = "bridge"
     )]
     supports: Vec<f64>,
     /// Support ids, one per position ([A-Za-z0-9_-]+; default start,joint1,...,end).
     #[arg(long, value_name = "ID,...", value_delimiter = ',')]
     ids: Option<Vec<String>>,
+    /// A bridge scenario ([[segment]] tables): its support lines' ids and their distances from
+    /// the start line toward the end one, instead of --supports and --ids.
+    #[arg(long, value_name = "SCENARIO", conflicts_with_all = ["supports", "ids"])]
+    bridge: Option<std::path::PathBuf>,
     /// Lagged coherency model.
     #[arg(long, value_enum, default_value = "harichandran-vanmarcke")]
     coherency: CoherencyArg,
@@ -207,12 +211,23 @@ pub fn svgm(a: SvgmArgs) -> Result<ExitCode> {
     if a.s0.is_some() && a.pga.is_some() {
         bail!("--s0 has no effect with --pga (each realisation is scaled to the PGA): give one");
     }
+    let (ids, positions) = match &a.bridge {
+        None => (
+            a.ids
+                .clone()
+                .unwrap_or_else(|| default_ids(a.supports.len())),
+            a.supports.clone(),
+        ),
+        Some(path) => {
+            let setup = pounding::sim::scenario::Scenario::load(path)?
+                .build_bridge()
+                .with_context(|| format!("--bridge {}", path.display()))?;
+            setup.problem.model.support_distances().into_iter().unzip()
+        }
+    };
     let mut p = SvgmParams {
-        ids: a
-            .ids
-            .clone()
-            .unwrap_or_else(|| default_ids(a.supports.len())),
-        positions: a.supports.clone(),
+        ids,
+        positions,
         coherency: coherency(&a)?,
         v_app: a.v_app,
         psd: SynthParams {

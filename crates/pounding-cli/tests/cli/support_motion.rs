@@ -169,3 +169,53 @@ fn svgm_set_through_fragility_with_the_uniform_ratio() {
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("--compare-uniform"), "{err}");
 }
+
+/// `motion svgm --bridge`: the bridge's support ids and distances (bridge P: 30 m spans, 0.02 m
+/// joint gaps: each joint line midway across its gap), refused beside --supports.
+#[test]
+fn svgm_takes_the_supports_of_a_bridge_file() {
+    let d = scratch_with("support_motion", "bridge", &[("wave.toml", WAVE)]);
+    let p = |f: &str| d.join(f).to_str().unwrap().to_string();
+    let (code, _, err) = run_capture(&[
+        "motion",
+        "svgm",
+        "--bridge",
+        &p("wave.toml"),
+        "--count",
+        "1",
+        "--seed",
+        "1",
+        "--v-app",
+        "250",
+        "--duration",
+        "5",
+        "--out",
+        &p("sv"),
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    let manifest = std::fs::read_to_string(d.join("sv/manifest.toml")).unwrap();
+    assert!(
+        manifest.contains("--supports 0,30.01,60.03,90.04 --ids start,joint1,joint2,end"),
+        "{manifest}"
+    );
+    let csv = std::fs::read_to_string(d.join("sv/real_0001.csv")).unwrap();
+    assert!(csv.starts_with("t,start,joint1,joint2,end\n"));
+    let (code, _, err) = run_capture(&[
+        "motion",
+        "svgm",
+        "--bridge",
+        &p("wave.toml"),
+        "--supports",
+        "0,1",
+        "--count",
+        "1",
+        "--seed",
+        "1",
+        "--v-app",
+        "250",
+        "--out",
+        &p("x"),
+    ]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(!d.join("x").exists());
+}

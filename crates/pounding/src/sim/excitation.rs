@@ -123,6 +123,20 @@ impl BridgeModel {
         out
     }
 
+    /// Each support line's id and its distance \[m\] from the `start` line along the default
+    /// direction of a wave (from the `start` line toward the `end` one): the positions of
+    /// `pounding motion svgm --bridge`.
+    pub fn support_distances(&self) -> Vec<(String, Real)> {
+        let lines = self.support_lines();
+        let (p0, p1) = (lines[0].position, lines[lines.len() - 1].position);
+        let e = (p1 - p0) / (p1 - p0).norm();
+        lines
+            .into_iter()
+            // to the nanometre: the layout's sums leave rounding in the last digits
+            .map(|l| (l.id, ((l.position - p0).dot(&e) * 1e9).round() / 1e9))
+            .collect()
+    }
+
     /// The support line under each bearing of each segment: the line of the segment end it
     /// belongs to (the nearer one).
     pub(crate) fn bearing_lines(&self) -> Vec<Vec<usize>> {
