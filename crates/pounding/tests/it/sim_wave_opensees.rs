@@ -17,20 +17,10 @@
 use pounding::sim::bridge::BridgeSolution;
 use pounding::sim::scenario::Scenario;
 
-fn run(v_app: f64, duration: Option<f64>) -> BridgeSolution {
-    let path = format!(
-        "{}/../../examples/bridge-p-1d-wave.toml",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    let text = std::fs::read_to_string(&path).expect("example");
-    assert!(
-        text.contains("v_app = 250.0"),
-        "the example says v_app = 250"
-    );
-    let mut text = text.replace("v_app = 250.0", &format!("v_app = {v_app:.1}"));
-    if let Some(d) = duration {
-        text = text.replace("[time]\n", &format!("[time]\nduration = {d}\n"));
-    }
+/// `examples/NAME` with its text edited by `edit`, run to completion with a closed balance.
+fn run_example(name: &str, edit: impl Fn(String) -> String) -> BridgeSolution {
+    let path = format!("{}/../../examples/{name}", env!("CARGO_MANIFEST_DIR"));
+    let text = edit(std::fs::read_to_string(&path).expect("example"));
     let setup = Scenario::from_toml(&text, &path)
         .expect("reads")
         .build_bridge()
@@ -39,6 +29,20 @@ fn run(v_app: f64, duration: Option<f64>) -> BridgeSolution {
     assert_eq!(sol.status, pounding::sim::SimStatus::Completed);
     assert!(sol.summary.energy_balance_error < 1e-9);
     sol
+}
+
+fn run(v_app: f64, duration: Option<f64>) -> BridgeSolution {
+    run_example("bridge-p-1d-wave.toml", |text| {
+        assert!(
+            text.contains("v_app = 250.0"),
+            "the example says v_app = 250"
+        );
+        let text = text.replace("v_app = 250.0", &format!("v_app = {v_app:.1}"));
+        match duration {
+            Some(d) => text.replace("[time]\n", &format!("[time]\nduration = {d}\n")),
+            None => text,
+        }
+    })
 }
 
 /// One compared peak: its name, this code's value, OpenSees', the relative tolerance.
@@ -191,22 +195,11 @@ fn wave_passage_at_other_velocities_matches_opensees() {
 /// 37.9 MN at 5e-5, 34.7 MN converged).
 #[test]
 fn wave_passage_on_the_full_bridge_matches_opensees() {
-    let path = format!(
-        "{}/../../examples/bridge-piers-1d.toml",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    let text = std::fs::read_to_string(&path).expect("example");
-    assert!(text.contains("scale_y = -1.0\n"));
-    let text = text
-        .replace("scale_y = -1.0\n", "scale_y = -1.0\nv_app = 250.0\n")
-        .replace("[time]\n", "[time]\nduration = 7.0\n");
-    let setup = Scenario::from_toml(&text, &path)
-        .expect("reads")
-        .build_bridge()
-        .expect("builds");
-    let sol = pounding::sim::simulate(&setup.problem, &setup.settings).expect("runs");
-    assert_eq!(sol.status, pounding::sim::SimStatus::Completed);
-    assert!(sol.summary.energy_balance_error < 1e-9);
+    let sol = run_example("bridge-piers-1d.toml", |text| {
+        assert!(text.contains("scale_y = -1.0\n"));
+        text.replace("scale_y = -1.0\n", "scale_y = -1.0\nv_app = 250.0\n")
+            .replace("[time]\n", "[time]\nduration = 7.0\n")
+    });
     let [jf, _, drift, deck] = peaks(&sol);
     let s = &sol.summary;
     let v = 250.0;
