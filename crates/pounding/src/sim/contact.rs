@@ -149,6 +149,92 @@ impl Direction {
     }
 }
 
+impl Direction {
+    /// The column in `q` coordinates as its nonzero entries ([`Sparse`]: the same values as
+    /// [`Self::dense`], without the zeros).
+    pub fn sparse(&self, dofs: &Dofs) -> Sparse {
+        let mut w = Sparse::ZERO;
+        w.add_body(dofs, self.first);
+        if let Some(second) = self.second {
+            w.add_body(dofs, second);
+        }
+        w
+    }
+}
+
+/// A generalised direction with at most six entries (a contact acts on at most two bodies of at
+/// most three coordinates each): `(index, value)` pairs into a `q`-length column. Copied, never
+/// allocated: the contact steppers evaluate thousands of these per second of a run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Sparse {
+    idx: [usize; 6],
+    val: [Real; 6],
+    len: usize,
+}
+
+impl Sparse {
+    /// No entry (an open contact's direction).
+    pub const ZERO: Sparse = Sparse {
+        idx: [0; 6],
+        val: [0.0; 6],
+        len: 0,
+    };
+
+    /// The plan wrench `v = (f_x, f_y, m)` on body `j` ([`Dofs::add_plan`]'s entries).
+    #[inline]
+    fn add_body(&mut self, dofs: &Dofs, (j, v): (usize, [Real; 3])) {
+        let (s, n) = (dofs.start(j), self.len);
+        match dofs.kind(j) {
+            super::dofs::BodyKind::PlanRigid => {
+                self.idx[n..n + 3].copy_from_slice(&[s, s + 1, s + 2]);
+                self.val[n..n + 3].copy_from_slice(&v);
+                self.len += 3;
+            }
+            super::dofs::BodyKind::PlanPoint => {
+                self.idx[n..n + 2].copy_from_slice(&[s, s + 1]);
+                self.val[n..n + 2].copy_from_slice(&v[..2]);
+                self.len += 2;
+            }
+            super::dofs::BodyKind::Axial => {
+                let a = dofs.axis(j);
+                self.idx[n] = s;
+                self.val[n] = v[0] * a.x + v[1] * a.y;
+                self.len += 1;
+            }
+        }
+    }
+
+    /// The `(index, value)` entries.
+    #[inline]
+    pub fn entries(&self) -> impl Iterator<Item = (usize, Real)> + '_ {
+        self.idx[..self.len]
+            .iter()
+            .copied()
+            .zip(self.val[..self.len].iter().copied())
+    }
+
+    /// `wᵀ u`.
+    #[inline]
+    pub fn dot(&self, u: &[Real]) -> Real {
+        self.entries().map(|(i, w)| w * u[i]).sum()
+    }
+
+    /// `out += a w`.
+    #[inline]
+    pub fn axpy(&self, a: Real, out: &mut [Real]) {
+        for (i, w) in self.entries() {
+            out[i] += a * w;
+        }
+    }
+
+    /// The dense column of `n` entries.
+    pub fn dense(&self, n: usize) -> State {
+        let mut w = State::zeros(n);
+        self.axpy(1.0, w.as_mut_slice());
+        w
+    }
+}
+
 /// One candidate contact in the current pose.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Candidate {

@@ -281,14 +281,21 @@ pub(crate) enum Winv<'a> {
     Blocks(&'a [Matrix3<Real>], &'a Dofs),
     /// The whole matrix.
     Dense(&'a DMatrix<Real>),
+    /// A dense tangent, inverted when first applied; the scheme's `Ŵ⁻¹` (the second) if the
+    /// tangent is singular.
+    Tangent(&'a LazyInverse, &'a DMatrix<Real>),
 }
 
 impl Winv<'_> {
-    /// `Ŵ⁻¹ v`.
+    /// `Ŵ⁻¹ v` (zero for `v = 0`, with no product formed: an open contact's force).
     pub fn mul(&self, v: &State) -> State {
+        if v.iter().all(|x| *x == 0.0) {
+            return State::zeros(v.len());
+        }
         match *self {
             Winv::Blocks(b, dofs) => Scheme::apply(dofs, b, v),
             Winv::Dense(m) => m * v,
+            Winv::Tangent(t, fallback) => t.get().unwrap_or(fallback) * v,
         }
     }
 
@@ -300,6 +307,30 @@ impl Winv<'_> {
             out.set_column(c, &self.mul(&col));
         }
         out
+    }
+}
+
+/// A dense tangent iteration matrix `Ŵ_t` whose inverse is formed on first use: most steps in
+/// which elements flow have no contact force to apply it to.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct LazyInverse {
+    /// `Ŵ_t`.
+    pub wt: DMatrix<Real>,
+    inv: std::cell::OnceCell<Option<DMatrix<Real>>>,
+}
+
+impl LazyInverse {
+    /// A new tangent, not yet inverted.
+    pub fn set(&mut self, wt: DMatrix<Real>) {
+        self.wt = wt;
+        self.inv = std::cell::OnceCell::new();
+    }
+
+    /// `Ŵ_t⁻¹` (`None`: singular).
+    pub fn get(&self) -> Option<&DMatrix<Real>> {
+        self.inv
+            .get_or_init(|| self.wt.clone().lu().try_inverse())
+            .as_ref()
     }
 }
 

@@ -156,7 +156,7 @@ impl Implicit {
     /// flow.
     pub fn winv<'a>(&'a self, sc: &'a Scheme) -> Winv<'a> {
         match (&self.dense, &sc.dense) {
-            (Some(d), _) if self.tangent => Winv::Dense(&d.winv),
+            (Some(d), Some(sd)) if self.tangent => Winv::Tangent(&d.tangent, &sd.winv),
             (_, Some(sd)) => Winv::Dense(&sd.winv),
             _ if self.tangent => Winv::Blocks(&self.winv, &sc.dofs),
             _ => Winv::Blocks(&sc.winv, &sc.dofs),

@@ -27,17 +27,19 @@ pub(crate) struct DenseImplicit {
     wabs: DMatrix<Real>,
     /// The total yield force of the members (the residual's force scale).
     fy: Real,
-    /// The step's tangent inverse (valid when [`super::yielding::Implicit::tangent`]).
-    pub winv: DMatrix<Real>,
+    /// The step's tangent `Ŵ_t`, inverted when a contact needs it (valid when
+    /// [`super::yielding::Implicit::tangent`]).
+    pub tangent: super::scheme::LazyInverse,
     ub: State,
     xf: State,
     rf: State,
-    jac: DMatrix<Real>,
-    wt: DMatrix<Real>,
+    /// `J` of the contact-free end (`None`: no element flows there, `J = 0`).
+    jac: Option<DMatrix<Real>>,
 }
 
-/// What one Newton solve returns: `x`, `R̃`, `J`, `Ŵ_t` at it and whether it converged.
-type Solved = (State, State, DMatrix<Real>, DMatrix<Real>, bool);
+/// What one Newton solve returns: `x`, `R̃`, `J` and `Ŵ_t` at it (`None`: no element flows,
+/// `J = 0`, `Ŵ_t = Ŵ`) and whether it converged.
+type Solved = (State, State, Option<(DMatrix<Real>, DMatrix<Real>)>, bool);
 
 impl DenseImplicit {
     /// The operators of `bearings` on the system of `sc`.
@@ -68,10 +70,6 @@ impl DenseImplicit {
             })
             .collect();
         let n = dofs.len();
-        let winv = sc
-            .dense
-            .as_ref()
-            .map_or_else(|| DMatrix::zeros(n, n), |d| d.winv.clone());
         let wabs = sc
             .dense
             .as_ref()
@@ -80,12 +78,11 @@ impl DenseImplicit {
             ops,
             wabs,
             fy: bearings.iter().map(|b| b.law.fy()).sum(),
-            winv,
+            tangent: Default::default(),
             ub: State::zeros(n),
             xf: State::zeros(n),
             rf: State::zeros(n),
-            jac: DMatrix::zeros(n, n),
-            wt: DMatrix::zeros(n, n),
+            jac: None,
         }
     }
 
@@ -95,16 +92,16 @@ impl DenseImplicit {
         })
     }
 
-    /// `R̃(q⁺)`, `J`, whether any element flows, and the entrywise size of `R̃`'s terms.
+    /// `R̃(q⁺)`, `J` (`None` when no element flows: `J = 0`), and the entrywise size of `R̃`'s
+    /// terms.
     fn end_force(
         &self,
         bearings: &[YieldingBearing],
         qp: &State,
-    ) -> (State, DMatrix<Real>, bool, State) {
+    ) -> (State, Option<DMatrix<Real>>, State) {
         let n = qp.len();
         let (mut r, mut size) = (State::zeros(n), State::zeros(n));
-        let mut jac = DMatrix::zeros(n, n);
-        let mut flows = false;
+        let mut jac: Option<DMatrix<Real>> = None;
         for (b, op) in bearings.iter().zip(&self.ops) {
             let u = Self::apply(op, qp) - b.ground_offset();
             let resp = b.law.response(&u, &b.state);
@@ -114,7 +111,7 @@ impl DenseImplicit {
                 size[i] += (l[0] * fp.x).abs() + (l[1] * fp.y).abs();
             }
             if resp.yielding {
-                flows = true;
+                let jac = jac.get_or_insert_with(|| DMatrix::zeros(n, n));
                 let d = nalgebra::Matrix2::identity() * b.law.k0() - resp.tangent;
                 for &(i, li) in op {
                     for &(j, lj) in op {
@@ -124,7 +121,7 @@ impl DenseImplicit {
                 }
             }
         }
-        (r, jac, flows, size)
+        (r, jac, size)
     }
 
     fn end_position(sc: &Scheme, q: &State, u: &State, x: &State) -> State {
@@ -151,14 +148,13 @@ impl DenseImplicit {
         let (fy, wabs) = (self.fy, &self.wabs);
         for _ in 0..MAX_ITER {
             let qp = Self::end_position(sc, q, u, &x);
-            let (r, jac, flows, r_size) = self.end_force(bearings, &qp);
+            let (r, jac, r_size) = self.end_force(bearings, &qp);
             let g = what * (&x - base) - (&r - r_pred) * hth - pi;
             // elastic members: J = 0 and Ŵ_t = Ŵ (no product formed)
-            let wt = if flows {
-                what - &jac * (hth * hth)
-            } else {
-                what.clone()
-            };
+            let tangent = jac.map(|j| {
+                let wt = what - &j * (hth * hth);
+                (j, wt)
+            });
             let tol = 1e-12 * hth * fy;
             // (the rounding scale is formed only when the plain tolerance does not settle it)
             let converged = g.iter().all(|gi| gi.abs() <= tol) || {
@@ -168,22 +164,29 @@ impl DenseImplicit {
                 (0..x.len()).all(|i| g[i].abs() <= (64.0 * Real::EPSILON * size[i]).max(tol))
             };
             if converged {
-                return (x, r, jac, wt, true);
+                return (x, r, tangent, true);
             }
-            let Some(d) = wt.clone().lu().solve(&(-&g)) else {
-                return (x, r, jac, wt, false);
+            let lu = match &tangent {
+                Some((_, wt)) => wt.clone().lu(),
+                None => what.clone().lu(),
+            };
+            let Some(d) = lu.solve(&(-&g)) else {
+                return (x, r, tangent, false);
             };
             let t = self.damping(sc, bearings, (q, u), &x, &d, &g);
             let next = &x + d * t;
             if next == x {
-                return (x, r, jac, wt, true);
+                return (x, r, tangent, true);
             }
             x = next;
         }
         let qp = Self::end_position(sc, q, u, &x);
-        let (r, jac, _, _) = self.end_force(bearings, &qp);
-        let wt = what - &jac * (hth * hth);
-        (x, r, jac, wt, false)
+        let (r, jac, _) = self.end_force(bearings, &qp);
+        let tangent = jac.map(|j| {
+            let wt = what - &j * (hth * hth);
+            (j, wt)
+        });
+        (x, r, tangent, false)
     }
 
     /// The Armijo step length on the convex potential of [`super::yielding`]'s line search.
@@ -227,22 +230,24 @@ impl DenseImplicit {
     ) -> (bool, bool) {
         let base = u_free.clone();
         let pi = State::zeros(base.len());
-        let (x, r, jac, wt, ok) =
+        let (x, r, tangent, ok) =
             self.newton(sc, bearings, (q, u), &base, &f.rb1, &pi, base.clone());
         u_free.copy_from(&x);
         self.ub = base;
         self.xf = x;
         self.rf = r;
-        let mut tangent = false;
-        if jac.iter().any(|v| *v != 0.0)
-            && let Some(inv) = wt.clone().lu().try_inverse()
-        {
-            self.winv = inv;
-            tangent = true;
+        // a flowing element whose tangent equals its elastic stiffness leaves `J = 0`
+        let flows = tangent
+            .as_ref()
+            .is_some_and(|(j, _)| j.iter().any(|v| *v != 0.0));
+        match tangent {
+            Some((j, wt)) if flows => {
+                self.jac = Some(j);
+                self.tangent.set(wt);
+            }
+            _ => self.jac = None,
         }
-        self.jac = jac;
-        self.wt = wt;
-        (tangent, !ok)
+        (flows, !ok)
     }
 
     /// After the contact step ([`super::yielding::Implicit::finish_step`]); returns the change
@@ -262,15 +267,22 @@ impl DenseImplicit {
             self.rf.clone()
         } else {
             let qp = Self::end_position(sc, q, u, u_new);
-            let (r_true, _, _, _) = self.end_force(bearings, &qp);
+            let (r_true, _, _) = self.end_force(bearings, &qp);
             let qf = Self::end_position(sc, q, u, &self.xf);
-            let r_lin = &self.rf + &self.jac * (qp - qf);
+            let r_lin = match &self.jac {
+                Some(j) => &self.rf + j * (qp - qf),
+                None => self.rf.clone(),
+            };
             let scale = r_true.amax().max(r_pred.amax()).max(self.rf.amax());
             if (&r_true - r_lin).amax() <= 1e-9 * scale {
                 r_true
             } else {
-                let pi = &self.wt * (&*u_new - &self.xf);
-                let (x, r, _, _, ok) =
+                let wt = match &self.jac {
+                    Some(_) => &self.tangent.wt,
+                    None => &sc.dense.as_ref().expect("a coupled scheme").what,
+                };
+                let pi = wt * (&*u_new - &self.xf);
+                let (x, r, _, ok) =
                     self.newton(sc, bearings, (q, u), &self.ub, &r_pred, &pi, u_new.clone());
                 failed = !ok;
                 corrected = true;

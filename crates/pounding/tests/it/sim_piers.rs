@@ -370,7 +370,14 @@ fn bridge_p_piers_against_opensees() {
             r.1,
             0.03,
         );
-        assert!(!p.yielded && p.peak_drift[0] == 0.0);
+        // no drift across the bridge beyond rounding (four simultaneous contact terms are
+        // solved by LU, which need not treat mirror-image ends bit-equally: ~1e-30 m)
+        assert!(
+            !p.yielded && p.peak_drift[0] <= 1e-12 * p.peak_drift[1],
+            "{} {:?}",
+            p.yielded,
+            p.peak_drift
+        );
     }
     // the piers alone: the gaps opened wide, nothing else changed
     let wide = BRIDGE_P

@@ -15,7 +15,10 @@
 //! `∂R/∂u = Σ_e [ −w_N (k_c h θ + c_c) w_Nᵀ + w_T (μ s (k_c h θ + c_c) w_Nᵀ − μ f_N s' w_Tᵀ) ]`
 //! (`k_c = ∂f_N/∂δ`, `c_c = ∂f_N/∂δ̇` from [`crate::contact_law::Evaluation`]; the geometric
 //! stiffness of the rotating normals is left out of `J`, which only slows convergence when the
-//! decks rotate), with a backtracking line search; converged when `|Δu|_∞ ≤ 1e-12 + 1e-10 |u|_∞`
+//! decks rotate), with a backtracking line search. `∂R/∂u` is a sum of one or two rank-one
+//! terms per end in contact, so each Newton correction is solved in contact space by the
+//! Sherman–Morrison–Woodbury identity (an `m × m` system, `m` ≤ two per active end; see
+//! `ComplianceStepper::correction`) rather than as an `n × n` system of the whole bridge; converged when `|Δu|_∞ ≤ 1e-12 + 1e-10 |u|_∞`
 //! (at most 50 iterations). A law whose force jumps at `δ = 0` (Kelvin's dashpot force `c δ̇`
 //! at contact onset) can leave a step without a root when it would end within `O(h² c δ̇ / m)`
 //! of `δ = 0`; that step is solved in the **closure of the law's graph**: the ends within 1 µm of
@@ -58,29 +61,30 @@
 //! masses) and `v_ref = 1 m/s`; the advice is returned in
 //! [`super::bridge::BridgeSolution::time_step_advice`] (the CLI warns when it is not adequate).
 #![allow(clippy::needless_range_loop)]
-use super::contact::{JointGeom, Pose, State, candidates};
+mod impacts;
+mod newton;
+
+use super::contact::{JointGeom, Pose, Sparse, State, candidates};
 use super::driver::{ImpactLog, StepInput, StepOutput, Stepper, StepperStats};
 use super::model::SegmentBody;
 use super::scheme::{Scheme, Winv};
 use super::view::Bridge;
-use super::{ImpactRecord, SimContact};
-use crate::analytic::SlipMode;
 use crate::contact_law::sharing::JointLaw;
 use crate::contact_law::timestep::law_time_step_advice;
 use crate::contact_law::{LawState, effective_mass};
 use crate::geometry::ContactCase;
 use crate::math::Real;
-use nalgebra::DMatrix;
+use impacts::OpenImpact;
 
 /// One contact end (a joint end or an abutment corner) evaluated at a trial state.
-#[derive(Clone)]
+#[derive(Clone, Copy)]
 pub(crate) struct EndEval {
     /// A contact exists at this end (a corner over the other face; always at an abutment).
     present: bool,
     /// The realised candidate of a joint end.
     case: Option<ContactCase>,
-    wn: State,
-    wt: State,
+    wn: Sparse,
+    wt: Sparse,
     delta: Real,
     f_n: Real,
     f_t: Real,
@@ -101,19 +105,20 @@ impl EndEval {
     /// struck face's velocity when it moves.
     #[inline]
     fn rel(&self, u: &State) -> (Real, Real) {
+        let u = u.as_slice();
         match self.face {
             None => (self.wn.dot(u), self.wt.dot(u)),
             Some((vn, vt)) => (self.wn.dot(u) - vn, self.wt.dot(u) - vt),
         }
     }
 
-    /// An end without a contact (`n` generalised coordinates).
-    fn open(n: usize) -> Self {
+    /// An end without a contact.
+    fn open() -> Self {
         EndEval {
             present: false,
             case: None,
-            wn: State::zeros(n),
-            wt: State::zeros(n),
+            wn: Sparse::ZERO,
+            wt: Sparse::ZERO,
             delta: 0.0,
             f_n: 0.0,
             f_t: 0.0,
@@ -126,68 +131,18 @@ impl EndEval {
     }
 }
 
-/// `R = Σ_e (w_N f_N + w_T f_T)` over every joint end.
-fn gen_force(ends: &[EndEval]) -> State {
-    let mut r = State::zeros(ends[0].wn.len());
+/// `R = Σ_e (w_N f_N + w_T f_T)` over every end, `n` generalised coordinates.
+fn gen_force(ends: &[EndEval], n: usize) -> State {
+    let mut r = State::zeros(n);
     for e in ends {
         if e.f_n == 0.0 && e.f_t == 0.0 {
             // an open end adds nothing (its `+ 0` terms could change only a zero's sign)
             continue;
         }
-        // in place, entry by entry: the same products and sums as `r += w_N f_N + w_T f_T`
-        // without its two temporary vectors
-        for ((ri, wn), wt) in r.iter_mut().zip(e.wn.iter()).zip(e.wt.iter()) {
-            *ri += wn * e.f_n + wt * e.f_t;
-        }
+        e.wn.axpy(e.f_n, r.as_mut_slice());
+        e.wt.axpy(e.f_t, r.as_mut_slice());
     }
     r
-}
-
-/// `∂R/∂u` of the ends (module doc); `all = false` skips ends without force and stiffness.
-fn force_jacobian(ev: &[EndEval], all: bool) -> DMatrix<Real> {
-    let n = ev[0].wn.len();
-    let mut dr = DMatrix::<Real>::zeros(n, n);
-    for e in ev {
-        if all || e.f_n > 0.0 || e.kc > 0.0 {
-            dr -= &e.wn * e.wn.transpose() * e.kc;
-            dr += &e.wt * (e.wn.transpose() * (e.mus * e.kc) - e.wt.transpose() * e.kt);
-        }
-    }
-    dr
-}
-
-/// Per-end bookkeeping of an impact in progress.
-#[derive(Clone, Copy)]
-struct OpenImpact {
-    record: usize,
-    impulse_n: Real,
-    impulse_t: Real,
-    work: Real,
-    /// Interpolated onset time (zero crossing of `δ`).
-    start: Real,
-    peak_force: Real,
-    max_penetration: Real,
-}
-
-impl OpenImpact {
-    /// The pulse so far, with `duration`.
-    fn pulse(&self, duration: Real) -> super::ImpactPulse {
-        super::ImpactPulse {
-            peak_force: self.peak_force,
-            duration,
-            max_penetration: self.max_penetration,
-        }
-    }
-}
-
-/// The time in `[t − h, t]` where `δ` crosses zero linearly from `d0` (at `t − h`) to `d1` (at
-/// `t`); `t` when it does not cross there.
-fn crossing(t: Real, h: Real, d0: Real, d1: Real) -> Real {
-    if (d0 <= 0.0) != (d1 <= 0.0) && d0 != d1 {
-        t - h + h * d0 / (d0 - d1)
-    } else {
-        t
-    }
 }
 
 /// The fixed data of one step's iteration: `q_k`, `u_k`, the scheme (for `Ŵ⁻¹`) and
@@ -241,6 +196,8 @@ pub(crate) struct ComplianceStepper {
     open_imp: Vec<Option<OpenImpact>>,
     d_cont: Real,
     stats: StepperStats,
+    /// The pose of a trial state (storage reused from one evaluation to the next).
+    pose: std::cell::RefCell<Pose>,
 }
 
 impl ComplianceStepper {
@@ -284,7 +241,7 @@ impl ComplianceStepper {
             th,
             hth: h * th,
             states: vec![LawState::default(); n_ends],
-            ends: vec![EndEval::open(n); n_ends],
+            ends: vec![EndEval::open(); n_ends],
             forces: vec![[0.0; 2]; sites.len()],
             r_k: State::zeros(n),
             site_in_contact: vec![false; sites.len()],
@@ -294,6 +251,7 @@ impl ComplianceStepper {
                 time_step_advice: advice,
                 ..StepperStats::default()
             },
+            pose: std::cell::RefCell::new(Pose::new(&bridge.bodies, &bridge.dofs, q0.as_slice())),
             sites,
         };
         let first = s.eval_ends(q0, u0, &s.states, None);
@@ -304,7 +262,7 @@ impl ComplianceStepper {
         for (st, e) in s.states.iter_mut().zip(&s.ends) {
             *st = e.state;
         }
-        s.r_k = gen_force(&s.ends);
+        s.r_k = gen_force(&s.ends, n);
         s.set_forces();
         s
     }
@@ -321,15 +279,16 @@ impl ComplianceStepper {
         e: usize,
         states: &[LawState],
         case: Option<ContactCase>,
-        wn: State,
-        wt: State,
+        wn: Sparse,
+        wt: Sparse,
         (delta, u, face): (Real, &State, Option<(Real, Real)>),
     ) -> EndEval {
         let (mu, vr) = (self.mu_of(e), self.vr);
         // relative to a moving face: its velocity `(v_n, v_t)` taken off
+        let us = u.as_slice();
         let (ddot, gt) = match face {
-            None => (-wn.dot(u), wt.dot(u)),
-            Some((vn, vt)) => (vn - wn.dot(u), wt.dot(u) - vt),
+            None => (-wn.dot(us), wt.dot(us)),
+            Some((vn, vt)) => (vn - wn.dot(us), wt.dot(us) - vt),
         };
         let law = self.sites[e / 2]
             .law
@@ -362,25 +321,26 @@ impl ComplianceStepper {
         states: &[LawState],
         ground: Ground<'_>,
     ) -> Vec<EndEval> {
-        let n = q.len();
         let dofs = &self.dofs;
-        let pose = Pose::new(&self.bodies, dofs, q.as_slice());
+        let mut pose = self.pose.borrow_mut();
+        pose.set(&self.bodies, dofs, q.as_slice());
+        let pose = &*pose;
         let mut out = Vec::with_capacity(states.len());
         for jg in &self.joints {
-            let jf = candidates(&self.bodies, &pose, jg);
+            let jf = candidates(&self.bodies, pose, jg);
             for e in 0..2 {
                 let ev = match jf.sel[e] {
                     Some(i) => {
                         let c = jf.cands[i];
-                        let (wn, wt) = c.force_directions(&pose, jg);
-                        let (wn, wt) = (wn.dense(dofs), wt.dense(dofs));
+                        let (wn, wt) = c.force_directions(pose, jg);
+                        let (wn, wt) = (wn.sparse(dofs), wt.sparse(dofs));
                         let at = (-c.gap, u, None);
                         self.end_eval(out.len(), states, Some(c.case), wn, wt, at)
                     }
                     None => {
                         // No corner over the other face at this end: open, state reset to the
                         // open gap.
-                        let mut ev = EndEval::open(n);
+                        let mut ev = EndEval::open();
                         ev.state = LawState::open_at(-jg.half_w.max(1.0));
                         ev
                     }
@@ -407,7 +367,7 @@ impl ComplianceStepper {
                 let r = pc - pose.g[j];
                 let dir = |v: crate::math::Vector| ab.direction(v, &r);
                 let delta = -((pc - ab.point).dot(&nn) + shift);
-                let (wn, wt) = (dir(nn).dense(dofs), dir(tn).dense(dofs));
+                let (wn, wt) = (dir(nn).sparse(dofs), dir(tn).sparse(dofs));
                 out.push(self.end_eval(out.len(), states, None, wn, wt, (delta, u, face)));
             }
         }
@@ -418,280 +378,6 @@ impl ComplianceStepper {
     fn set_forces(&mut self) {
         for (k, f) in self.forces.iter_mut().enumerate() {
             *f = [self.ends[2 * k].f_n, self.ends[2 * k + 1].f_n];
-        }
-    }
-
-    /// `q_{k+1}` for the trial `u_{k+1} = un`.
-    fn q_of(&self, tr: &Trial, un: &State) -> State {
-        tr.q + (tr.u * (1.0 - self.th) + un * self.th) * self.h
-    }
-
-    /// The ends at the trial `un`.
-    fn eval_at(&self, tr: &Trial, un: &State) -> Vec<EndEval> {
-        self.eval_ends(&self.q_of(tr, un), un, &self.states, tr.ground)
-    }
-
-    /// The residual `r(u) = u − base − hθ Ŵ⁻¹ R(u)`.
-    fn resid(&self, tr: &Trial, un: &State, ev: &[EndEval]) -> State {
-        un - &tr.base - tr.winv.mul(&gen_force(ev)) * self.hth
-    }
-
-    /// Newton with backtracking on `r(u) = 0` from `un`; returns the converged iterate or, if
-    /// none, the one with the smallest residual (`converged = false`).
-    fn newton(&self, tr: &Trial, mut un: State) -> (bool, State, Vec<EndEval>) {
-        let n = un.len();
-        let mut ev = self.eval_at(tr, &un);
-        let mut r = self.resid(tr, &un, &ev);
-        // the iterate with the smallest residual so far: the current one (`None`) until a worse
-        // one replaces it, and only then copied
-        let mut best_r = r.amax();
-        let mut best: Option<(State, Vec<EndEval>)> = None;
-        // open contacts (no force now or before): the first guess is exact
-        if r.amax() <= 1e-12 + 1e-10 * un.amax() {
-            return (true, un, ev);
-        }
-        for _ in 0..50 {
-            let jac =
-                DMatrix::identity(n, n) - tr.winv.mul_mat(&force_jacobian(&ev, false)) * self.hth;
-            let Some(du) = jac.lu().solve(&(-&r)) else {
-                break;
-            };
-            // backtracking line search on |r|
-            let r0 = r.amax();
-            let mut step = 1.0;
-            let mut accepted = false;
-            for _ in 0..12 {
-                let trial = &un + &du * step;
-                let ev_t = self.eval_at(tr, &trial);
-                let r_t = self.resid(tr, &trial, &ev_t);
-                if r_t.amax() <= r0 || step < 1e-3 {
-                    // not better than the best (NaN included): keep the best before moving on
-                    let better = r_t.amax() < best_r;
-                    if best.is_none() && !better {
-                        best = Some((un.clone(), ev.clone()));
-                    }
-                    un = trial;
-                    ev = ev_t;
-                    r = r_t;
-                    accepted = true;
-                    break;
-                }
-                step *= 0.5;
-            }
-            if !accepted {
-                break;
-            }
-            if r.amax() < best_r {
-                best_r = r.amax();
-                best = None;
-            }
-            if (&du * step).amax() <= 1e-12 + 1e-10 * un.amax() {
-                return (true, un, ev);
-            }
-        }
-        match best {
-            Some((u, e)) => (false, u, e),
-            None => (false, un, ev),
-        }
-    }
-
-    /// Holds the ends in `held` with the unknown forces `lam` (closure step).
-    fn hold(&self, ev: &mut [EndEval], held: &[usize], lam: &[Real], un: &State) {
-        let vr = self.vr;
-        for (i, &e) in held.iter().enumerate() {
-            let mu = self.mu_of(e);
-            let gt = ev[e].rel(un).1;
-            let root = (gt * gt + vr * vr).sqrt();
-            ev[e].f_n = lam[i];
-            ev[e].f_t = -mu * lam[i] * gt / root;
-            ev[e].kc = 0.0;
-            ev[e].kt = mu * lam[i] * vr * vr / (root * root * root);
-            ev[e].mus = mu * gt / root;
-        }
-    }
-
-    /// The graph-closure step for a law whose force jumps at `δ = 0` (Kelvin's `c δ̇`): the ends
-    /// whose penetration is within 1 µm of zero in the best Newton iterate are held at
-    /// `δ_{k+1} = 0` by an unknown force `λ_e`, which must lie in the closure `[0, F(0⁺, δ̇)]` of
-    /// the law's graph. Newton on `(u, λ)`; `None` if it does not converge or `λ` leaves the
-    /// closure.
-    fn closure_step(
-        &self,
-        tr: &Trial,
-        u0: &State,
-        ev0: &[EndEval],
-    ) -> Option<(State, Vec<EndEval>)> {
-        let held: Vec<usize> = (0..ev0.len())
-            .filter(|&e| ev0[e].present && ev0[e].delta.abs() < 1e-6)
-            .collect();
-        if held.is_empty() {
-            return None;
-        }
-        let nq = u0.len();
-        let (n, hth) = (nq + held.len(), self.hth);
-        let mut un = u0.clone();
-        let mut lam: Vec<Real> = held.iter().map(|&e| ev0[e].f_n).collect();
-        for _ in 0..30 {
-            let mut ev = self.eval_at(tr, &un);
-            self.hold(&mut ev, &held, &lam, &un);
-            let r_u = &un - &tr.base - tr.winv.mul(&gen_force(&ev)) * hth;
-            let mut r = State::zeros(n);
-            r.rows_mut(0, nq).copy_from(&r_u);
-            for (i, &e) in held.iter().enumerate() {
-                r[nq + i] = ev[e].delta;
-            }
-            let dr = force_jacobian(&ev, true);
-            let mut jac = nalgebra::DMatrix::<Real>::zeros(n, n);
-            jac.view_mut((0, 0), (nq, nq))
-                .copy_from(&(DMatrix::identity(nq, nq) - tr.winv.mul_mat(&dr) * hth));
-            for (i, &e) in held.iter().enumerate() {
-                let col = -(tr.winv.mul(&(&ev[e].wn - &ev[e].wt * ev[e].mus))) * hth;
-                jac.view_mut((0, nq + i), (nq, 1)).copy_from(&col);
-                // δ = −g_N, ∂g_N/∂q = w_Nᵀ, ∂q/∂u = hθ
-                let row = -(ev[e].wn.transpose() * hth);
-                jac.view_mut((nq + i, 0), (1, nq)).copy_from(&row);
-            }
-            let dx = jac.lu().solve(&(-&r))?;
-            let du: State = dx.rows(0, nq).into_owned();
-            un += &du;
-            for i in 0..held.len() {
-                lam[i] += dx[nq + i];
-            }
-            let small = du.amax() <= 1e-12 + 1e-10 * un.amax()
-                && (0..held.len()).all(|i| dx[nq + i].abs() <= 1e-6 * lam[i].abs().max(1.0));
-            if small {
-                return self.closure_accept(tr, un, &held, &lam);
-            }
-        }
-        None
-    }
-
-    /// The converged closure iterate if every `λ` lies in the closure of the law's graph.
-    fn closure_accept(
-        &self,
-        tr: &Trial,
-        un: State,
-        held: &[usize],
-        lam: &[Real],
-    ) -> Option<(State, Vec<EndEval>)> {
-        let mut ev = self.eval_at(tr, &un);
-        for (i, &e) in held.iter().enumerate() {
-            let ddot = -ev[e].rel(&un).0;
-            let f_hi = self.sites[e / 2]
-                .law
-                .corner_evaluate(&self.states[e], Real::MIN_POSITIVE, ddot)
-                .force;
-            if !(lam[i] >= 0.0 && lam[i] <= f_hi * (1.0 + 1e-9)) {
-                return None;
-            }
-            let gt = ev[e].rel(&un).1;
-            ev[e].f_n = lam[i];
-            ev[e].f_t = -self.mu_of(e) * lam[i] * gt / (gt * gt + self.vr * self.vr).sqrt();
-        }
-        Some((un, ev))
-    }
-
-    /// Impacts (intervals of positive total joint force) and the per-end impact records of the
-    /// step ending at `time` with velocity `un`, mean velocity `u_mid`, ends `ev`.
-    fn track_impacts(
-        &mut self,
-        log: &mut ImpactLog,
-        time: Real,
-        u: &State,
-        un: &State,
-        u_mid: &State,
-        ev: &[EndEval],
-    ) {
-        let (h, th) = (self.h, self.th);
-        let nj = self.joints.len();
-        for k in 0..self.site_in_contact.len() {
-            let f_now = ev[2 * k].f_n + ev[2 * k + 1].f_n;
-            if f_now > 0.0 && !self.site_in_contact[k] {
-                log.impacts += 1;
-                if k < nj {
-                    log.count_joint(self.joints[k].a);
-                } else {
-                    log.count_abutment(self.abutments[k - nj].side);
-                }
-            }
-            self.site_in_contact[k] = f_now > 0.0;
-        }
-        for e in 0..ev.len() {
-            let (fn0, ft0) = (self.ends[e].f_n, self.ends[e].f_t);
-            let (fn1, ft1) = (ev[e].f_n, ev[e].f_t);
-            if fn1 > 0.0 && self.open_imp[e].is_none() {
-                let (contact, site) = if e / 2 < nj {
-                    let case = ev[e].case.unwrap_or(ContactCase::Deck1Inner);
-                    (SimContact::Joint(case), self.joints[e / 2].a)
-                } else {
-                    let side = self.abutments[e / 2 - nj].side;
-                    let corner = e % 2;
-                    (
-                        SimContact::Abutment {
-                            deck: side + 1,
-                            corner,
-                        },
-                        side,
-                    )
-                };
-                log.records.push(ImpactRecord {
-                    impact: log.impacts,
-                    time,
-                    contact,
-                    site,
-                    mode: SlipMode::Stick,
-                    gamma_n_pre: ev[e].rel(u).0,
-                    gamma_t_pre: ev[e].rel(u).1,
-                    gamma_n_post: Real::NAN,
-                    gamma_t_post: Real::NAN,
-                    impulse_n: 0.0,
-                    impulse_t: 0.0,
-                    energy_dissipated: 0.0,
-                    pulse: None,
-                });
-                let d0 = if self.ends[e].present {
-                    self.ends[e].delta
-                } else {
-                    ev[e].delta
-                };
-                self.open_imp[e] = Some(OpenImpact {
-                    record: log.records.len() - 1,
-                    impulse_n: 0.0,
-                    impulse_t: 0.0,
-                    work: 0.0,
-                    start: crossing(time, h, d0, ev[e].delta),
-                    peak_force: 0.0,
-                    max_penetration: 0.0,
-                });
-            }
-            if let Some(oi) = self.open_imp[e].as_mut() {
-                let pn = h * ((1.0 - th) * fn0 + th * fn1);
-                let pt = h * ((1.0 - th) * ft0 + th * ft1);
-                oi.impulse_n += pn;
-                oi.impulse_t += pt;
-                let src = if ev[e].present { &ev[e] } else { &self.ends[e] };
-                // the contact's own work: on the relative motion (a moving face's work is the
-                // support's input)
-                let (gn, gt) = src.rel(u_mid);
-                oi.work -= gn * pn + gt * pt;
-                oi.peak_force = oi.peak_force.max(fn1);
-                if ev[e].present {
-                    oi.max_penetration = oi.max_penetration.max(ev[e].delta);
-                }
-                if fn1 <= 0.0 {
-                    let d1 = if ev[e].present { ev[e].delta } else { 0.0 };
-                    let end = crossing(time, h, self.ends[e].delta, d1);
-                    let rec = &mut log.records[oi.record];
-                    (rec.gamma_n_post, rec.gamma_t_post) = src.rel(un);
-                    rec.impulse_n = oi.impulse_n;
-                    rec.impulse_t = oi.impulse_t;
-                    rec.energy_dissipated = oi.work;
-                    rec.mode = SlipMode::classify(rec.gamma_t_post, rec.gamma_n_pre);
-                    rec.pulse = Some(oi.pulse(end - oi.start));
-                    self.open_imp[e] = None;
-                }
-            }
-            self.states[e] = ev[e].state;
         }
     }
 }
@@ -711,15 +397,22 @@ impl ComplianceStepper {
     /// `u_{k+1}` of the step from `inp` and the ends there, without committing anything.
     pub(crate) fn solve_step(&self, inp: &StepInput) -> (State, Vec<EndEval>, Solved) {
         let (h, th, hth) = (self.h, self.th, self.hth);
-        let wr = inp.winv.mul(&self.r_k);
+        // no force at t_k (most steps): the base and the first guess are `u_free`
+        let (base, guess) = if self.r_k.iter().all(|r| *r == 0.0) {
+            (inp.u_free.clone(), inp.u_free.clone())
+        } else {
+            let wr = inp.winv.mul(&self.r_k);
+            let base = inp.u_free + &wr * (h * (1.0 - th));
+            let guess = &base + &wr * hth;
+            (base, guess)
+        };
         let tr = Trial {
             q: inp.q,
             u: inp.u,
             winv: inp.winv,
-            base: inp.u_free + &wr * (h * (1.0 - th)),
+            base,
             ground: inp.ground.map(|o| (&o.d1[..], &o.v1[..])),
         };
-        let guess = &tr.base + &wr * hth;
         let (converged, un, ev) = self.newton(&tr, guess);
         if converged {
             return (un, ev, Solved::Newton);
@@ -747,10 +440,13 @@ impl ComplianceStepper {
             // the iterate with the smallest residual was kept
             Solved::Failed => self.stats.newton_failures += 1,
         }
-        let r_new = gen_force(&ev);
-        let rbar = &self.r_k * (1.0 - th) + &r_new * th;
+        let r_new = gen_force(&ev, un.len());
         let u_mid = (inp.u + &un) * 0.5;
-        self.d_cont -= h * u_mid.dot(&rbar);
+        // no force at either end of the step (most steps): no contact work
+        if !(r_new.iter().all(|r| *r == 0.0) && self.r_k.iter().all(|r| *r == 0.0)) {
+            let rbar = &self.r_k * (1.0 - th) + &r_new * th;
+            self.d_cont -= h * u_mid.dot(&rbar);
+        }
         self.track_impacts(log, inp.t_next, inp.u, &un, &u_mid, &ev);
         self.r_k = r_new;
         let penetration = ev
