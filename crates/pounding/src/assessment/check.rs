@@ -34,6 +34,17 @@ use crate::math::Real;
 use crate::sim::Problem;
 use crate::sim::bridge::BridgeModel;
 
+/// The angle `rad` in degrees as the scenario gave it: the shortest decimal whose conversion to
+/// radians is `rad` (60° is stored as `60f64.to_radians()`, whose `to_degrees()` is
+/// 59.99999999999999), else `rad.to_degrees()`.
+pub fn degrees_as_given(rad: Real) -> Real {
+    let deg = rad.to_degrees();
+    (1..=17)
+        .filter_map(|digits| format!("{deg:.*e}", digits - 1).parse::<Real>().ok())
+        .find(|d| d.to_radians() == rad)
+        .unwrap_or(deg)
+}
+
 /// The seated ends of `model`, from the start: per segment its start end, then its end end.
 pub fn seated_ends(model: &BridgeModel) -> Vec<SeatedEnd> {
     let n = model.segments.len();
@@ -80,8 +91,8 @@ pub fn seated_ends(model: &BridgeModel) -> Vec<SeatedEnd> {
                 kind,
                 seat_length,
                 deck_length,
-                skew_deg: s.shape.skew().to_degrees().abs(),
-                subtended_deg: curved.map(|d| d.angle.to_degrees()),
+                skew_deg: degrees_as_given(s.shape.skew().abs()),
+                subtended_deg: curved.map(|d| degrees_as_given(d.angle)),
             });
         }
     }
