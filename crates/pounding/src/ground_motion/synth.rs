@@ -148,6 +148,9 @@ fn bad_real(name: &str, value: Real, reason: &str) -> SynthError {
     bad(name, crate::output::float_token(value), reason)
 }
 
+/// A parameter's name, value, whether it is in range and the range in words.
+type RangeCheck = (&'static str, Real, fn(Real) -> bool, &'static str);
+
 impl SynthParams {
     /// Checks every parameter (finite, in range; `--duration` at most [`MAX_DURATION`]; `--pga` in
     /// (0, [`MAX_PGA_G`]] g; `omega_g`, `omega_f` in [[`MIN_OMEGA`], π/dt) (below the Nyquist
@@ -260,7 +263,7 @@ impl SynthParams {
                 &format!("must lie in (0, {MAX_S0}] m²/s³"),
             ));
         }
-        let ranges: [(&str, Real, fn(Real) -> bool, &str); 4] = [
+        let ranges: [RangeCheck; 4] = [
             (
                 "zeta_g",
                 self.zeta_g,
