@@ -180,21 +180,48 @@ pub(crate) fn html(page: &Page) -> String {
     h
 }
 
-/// Every law's warnings, then the skipped laws with their reasons.
+/// The warnings: those every law that ran shares (the records' implausible PGAs, …) once, then
+/// each law's own; then the skipped laws with their reasons.
 fn warnings(h: &mut String, ctx: &Job) {
     h.push_str("<h2 id=\"warnings\">Warnings</h2>\n");
-    let mut any = false;
-    for r in ctx.runs {
-        let Some(ran) = r.ran() else { continue };
-        if ran.warnings.is_empty() {
-            continue;
-        }
-        any = true;
-        let _ = writeln!(h, "<h3>{}</h3>\n<ul>", esc(&r.law));
-        for w in &ran.warnings {
-            let _ = writeln!(h, "<li>{}</li>", esc(&w.message));
+    let ran: Vec<(&str, Vec<&str>)> = ctx
+        .runs
+        .iter()
+        .filter_map(|r| {
+            let mut m: Vec<&str> = Vec::new();
+            for w in &r.ran()?.warnings {
+                if !m.contains(&w.message.as_str()) {
+                    m.push(&w.message);
+                }
+            }
+            Some((r.law.as_str(), m))
+        })
+        .collect();
+    let shared: Vec<&str> = match ran.as_slice() {
+        [(_, first), _, ..] => first
+            .iter()
+            .copied()
+            .filter(|m| ran.iter().all(|(_, ms)| ms.contains(m)))
+            .collect(),
+        _ => Vec::new(),
+    };
+    let list = |h: &mut String, title: &str, ms: &[&str]| {
+        let _ = writeln!(h, "<h3>{}</h3>\n<ul>", esc(title));
+        for m in ms {
+            let _ = writeln!(h, "<li>{}</li>", esc(m));
         }
         h.push_str("</ul>\n");
+    };
+    if !shared.is_empty() {
+        list(h, "Every law", &shared);
+    }
+    let mut any = !shared.is_empty();
+    for (law, ms) in &ran {
+        let own: Vec<&str> = ms.iter().copied().filter(|m| !shared.contains(m)).collect();
+        if !own.is_empty() {
+            any = true;
+            list(h, law, &own);
+        }
     }
     if !any {
         h.push_str("<p>No law's run has a warning.</p>\n");

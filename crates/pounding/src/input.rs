@@ -251,20 +251,27 @@ pub fn fnv1a64_hex(bytes: &[u8]) -> String {
 
 /// `text` with every line longer than `max_chars` characters cut to its first `max_chars`
 /// followed by `… (N more characters)`: error messages that quote an input line (a parser's
-/// excerpt of a 400 KB line) stay readable.
+/// excerpt of a 400 KB line) stay readable. The list of a schema's accepted names that ends a
+/// parser's `unknown field `x`, expected one of `a`, `b`, …` line is kept whole (it comes from
+/// the program, not the input): only the part before it is cut.
 pub fn shorten_lines(text: &str, max_chars: usize) -> String {
     let mut out = String::with_capacity(text.len().min(64 * 1024));
     for (i, line) in text.split('\n').enumerate() {
         if i > 0 {
             out.push('\n');
         }
-        let n = line.chars().count();
+        let (head, list) = match line.rfind("`, expected one of `") {
+            Some(at) if line.starts_with("unknown ") => line.split_at(at + 1),
+            _ => (line, ""),
+        };
+        let n = head.chars().count();
         if n > max_chars {
-            out.extend(line.chars().take(max_chars));
+            out.extend(head.chars().take(max_chars));
             out.push_str(&format!("… ({} more characters)", n - max_chars));
         } else {
-            out.push_str(line);
+            out.push_str(head);
         }
+        out.push_str(list);
     }
     out
 }

@@ -8,15 +8,15 @@
 //!
 //! Writes `compare.csv` and `compare_sites.csv` (library writers,
 //! [`pounding::sim::output::bridge_compare_csv`]), the table on stdout, `joint_gap.png` (one
-//! panel per joint: its smaller end gap over time, one curve per law; the start abutment's
-//! gap when the bridge has no joint), `report.html` and `timing.json` (last). Exit 1 when a law that ran did
-//! not complete.
+//! panel per site, in `compare_sites.csv`'s order: each joint's smaller end gap over time, then
+//! each abutment's gap, one curve per law), `report.html` and `timing.json` (last). Exit 1 when
+//! a law that ran did not complete.
 
 use super::plots::{R, panel};
 use super::{Job, timing_json, write};
 use anyhow::{Result, anyhow};
 use pounding::math::Real;
-use pounding::sim::bridge::BridgeSolution;
+use pounding::sim::bridge::{ABUTMENT_SIDES, BridgeSolution};
 use pounding::sim::compare::LawRun;
 use pounding::sim::output::{
     BRIDGE_COMPARE_OUTPUTS, COMPARE_OUTPUTS, bridge_compare_csv, bridge_compare_sites_csv,
@@ -36,7 +36,14 @@ pub(super) fn write_outputs(ctx: &Job) -> Result<()> {
     write(out, "compare.csv", csv.as_bytes())?;
     write(out, "compare_sites.csv", sites.as_bytes())?;
     print!("{}", bridge_compare_table(ctx.runs));
-    plot_gaps(out, ctx.runs).map_err(|e| anyhow!("plotting: {e}"))?;
+    let panels = gap_sites(ctx.runs);
+    plot_gaps(out, ctx.runs, &panels).map_err(|e| anyhow!("plotting: {e}"))?;
+    let names: Vec<String> = panels.iter().map(|s| s.name()).collect();
+    let caption = format!(
+        "The gap of each site by contact law, one panel per site ({}): a joint's is the smaller \
+         of its two end gaps, an abutment's the smaller of its corner gaps.",
+        names.join(", ")
+    );
     let page = crate::compare_report::Page {
         ctx,
         files: &["compare.csv", "compare_sites.csv", "timing.json"],
@@ -44,11 +51,7 @@ pub(super) fn write_outputs(ctx: &Job) -> Result<()> {
             ("Per law (compare.csv)", csv),
             ("Per joint and abutment (compare_sites.csv)", sites),
         ],
-        figures: &[(
-            "joint_gap.png",
-            "Each joint's gap (the smaller of its two ends) by contact law; the abutments' \
-             smaller gap when the bridge has no joint.",
-        )],
+        figures: &[("joint_gap.png", caption.as_str())],
     };
     write(
         out,
@@ -60,40 +63,63 @@ pub(super) fn write_outputs(ctx: &Job) -> Result<()> {
     Ok(())
 }
 
-/// `(t, smaller end gap of joint k)` of a run (`k = None`: the start abutment's gap).
-fn gap_series(sol: &BridgeSolution, k: Option<usize>) -> Vec<(Real, Real)> {
+/// A panel of `joint_gap.png`: a joint (0-based) or an abutment (0 start, 1 end).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Site {
+    Joint(usize),
+    Abutment(usize),
+}
+
+impl Site {
+    /// The site's name, as in `compare_sites.csv` and `summary.json`.
+    fn name(self) -> String {
+        match self {
+            Site::Joint(k) => format!("joint{}", k + 1),
+            Site::Abutment(side) => format!("abutment-{}", ABUTMENT_SIDES[side]),
+        }
+    }
+}
+
+/// The sites of the bridge in `compare_sites.csv`'s order: its joints, then the abutments
+/// present (taken from the first law that ran: every law runs the same bridge).
+fn gap_sites(runs: &[LawRun]) -> Vec<Site> {
+    let Some(sol) = runs.iter().find_map(|r| r.ran().map(|x| &x.sol)) else {
+        return Vec::new();
+    };
+    let joints = (0..sol.n_segments - 1).map(Site::Joint);
+    let abutments = (0..2)
+        .filter(|&side| sol.summary.abutments[side].is_some())
+        .map(Site::Abutment);
+    joints.chain(abutments).collect()
+}
+
+/// `(t, gap)` of `site` in a run: a joint's smaller end gap, an abutment's smaller corner gap.
+fn gap_series(sol: &BridgeSolution, site: Site) -> Vec<(Real, Real)> {
     let nj = sol.n_segments - 1;
     sol.t
         .iter()
         .enumerate()
         .map(|(i, &t)| {
-            let g = match k {
-                Some(k) => {
+            let g = match site {
+                Site::Joint(k) => {
                     let row = &sol.end_gaps[i * 2 * nj..(i + 1) * 2 * nj];
                     // `min` of a NaN (no corner over the face) and a gap is the gap
                     row[2 * k].min(row[2 * k + 1])
                 }
-                None => sol.abutment_gaps[i][0].min(sol.abutment_gaps[i][1]),
+                Site::Abutment(side) => sol.abutment_gaps[i][side],
             };
             (t, g)
         })
         .collect()
 }
 
-/// `joint_gap.png`: one panel per joint (the smaller of its two end gaps), a curve per law that
-/// ran; a bridge without joints shows its abutments' smaller gap.
-fn plot_gaps(out: &Path, runs: &[LawRun]) -> R {
+/// `joint_gap.png`: one panel per site of `panels`, a curve per law that ran.
+fn plot_gaps(out: &Path, runs: &[LawRun], panels: &[Site]) -> R {
     crate::plot_style::register();
     let ran: Vec<(&str, &BridgeSolution)> = runs
         .iter()
         .filter_map(|r| r.ran().map(|x| (r.law.as_str(), &x.sol)))
         .collect();
-    let nj = ran.first().map_or(0, |(_, s)| s.n_segments - 1);
-    let panels: Vec<Option<usize>> = if nj == 0 {
-        vec![None]
-    } else {
-        (0..nj).map(Some).collect()
-    };
     let t_end = ran
         .iter()
         .filter_map(|(_, s)| s.t.last().copied())
@@ -101,16 +127,18 @@ fn plot_gaps(out: &Path, runs: &[LawRun]) -> R {
         .max(1e-9);
     let height = (300 * panels.len()).clamp(450, 3000) as u32;
     crate::plot_style::save_white_png(out, "joint_gap.png", (1200, height), |root| {
-        let areas = root.split_evenly((panels.len(), 1));
-        for (area, k) in areas.iter().zip(&panels) {
-            let curves: Vec<(&str, Vec<(Real, Real)>)> =
-                ran.iter().map(|(l, s)| (*l, gap_series(s, *k))).collect();
-            let title = match k {
-                Some(k) => format!(
+        let areas = root.split_evenly((panels.len().max(1), 1));
+        for (area, site) in areas.iter().zip(panels) {
+            let curves: Vec<(&str, Vec<(Real, Real)>)> = ran
+                .iter()
+                .map(|(l, s)| (*l, gap_series(s, *site)))
+                .collect();
+            let title = match site {
+                Site::Joint(k) => format!(
                     "Joint {} gap (smaller of the two ends) by contact law",
                     k + 1
                 ),
-                None => "Abutment gap (smaller of the two) by contact law".to_string(),
+                Site::Abutment(_) => format!("{} gap by contact law", site.name()),
             };
             panel(
                 area,

@@ -92,7 +92,8 @@ fn sites_match(rows: &[Vec<String>], law: &str, s: &Value, raw: &str) {
     }
     for (side, a) in abuts.iter().enumerate() {
         let r = rows[joints.len() + side];
-        assert_eq!(r[1], ["abutment.start", "abutment.end"][side]);
+        // the names of summary.json's seats[] and impacts.csv
+        assert_eq!(r[1], ["abutment-start", "abutment-end"][side]);
         assert_eq!(r[2], a["impacts"].to_string());
         same(&r[3], &a["peak_contact_force_n"], "abutment force", raw);
         same(&r[6], &a["peak_impulse_ns"], "abutment impulse", raw);
@@ -132,7 +133,7 @@ fn bridge_compare_rows_equal_simulate_of_each_law() {
         assert!(out.join(f).is_file(), "{f}");
     }
     assert!(
-        table.contains("abutment.end") && table.contains("joint2"),
+        table.contains("abutment-end") && table.contains("joint2") && !table.contains("abutment."),
         "{table}"
     );
     let sites = csv(&out.join("compare_sites.csv"));
@@ -200,6 +201,28 @@ fn bridge_compare_rows_equal_simulate_of_each_law() {
     let timing: Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("timing.json")).unwrap()).unwrap();
     assert!(timing["laws"]["bilinear"]["steps"].as_u64().unwrap() > 0);
+    // joint_gap.png: one 300-px panel per site, the two joints and both abutments, named in
+    // the caption in compare_sites.csv's order
+    let png = std::fs::read(out.join("joint_gap.png")).unwrap();
+    let height = u32::from_be_bytes(png[20..24].try_into().unwrap());
+    let site_names: Vec<&str> = {
+        let mut v: Vec<&str> = sites[1..]
+            .iter()
+            .filter(|r| r[0] == "rigid")
+            .map(|r| r[1].as_str())
+            .collect();
+        v.dedup();
+        v
+    };
+    assert_eq!(
+        site_names,
+        ["joint1", "joint2", "abutment-start", "abutment-end"]
+    );
+    assert_eq!(height, 300 * site_names.len() as u32);
+    assert!(
+        html.contains(&format!("one panel per site ({})", site_names.join(", "))),
+        "the caption lists the panels"
+    );
 }
 
 /// A law that cannot run on the bridge (hertz-damp has no "anagnostopoulos" calibration) is

@@ -184,6 +184,11 @@ fn check_refuses_an_unknown_key_with_its_line() {
         "{stderr}"
     );
     assert!(stderr.contains("ground_type"), "{stderr}");
+    // every accepted key is listed, none cut off
+    for (key, _) in pounding::assessment::check_input::DEFAULTS {
+        assert!(stderr.contains(&format!("`{key}`")), "{key}: {stderr}");
+    }
+    assert!(!stderr.contains("more characters"), "{stderr}");
 }
 
 /// The guide's example run prints what the guide shows (its rows are copied from a run).

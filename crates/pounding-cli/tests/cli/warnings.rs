@@ -165,3 +165,41 @@ fn a_step_beyond_the_record_interval_is_warned() {
     assert!(ok.status.success());
     assert!(!kinds(&summary(&d.join("p"))).contains(&"time_step_beyond_record".to_string()));
 }
+
+/// `compare` of three laws on a record of 3 g: the record's warning is listed once in the
+/// report (under "Every law"), not once per law; stderr says it once too.
+#[test]
+fn compare_lists_a_record_warning_once() {
+    let d = scratch_dir("warn", "cmp");
+    std::fs::write(d.join("big.csv"), "t,a\n0,0\n0.01,3\n0.02,-3\n0.03,0\n").unwrap();
+    std::fs::write(
+        d.join("s.toml"),
+        "[time]\nduration = 0.5\n[ground_motion]\nrecord_y = \"big.csv\"\nrecord_x = \"none\"\n",
+    )
+    .unwrap();
+    let out = pounding()
+        .current_dir(&d)
+        .args([
+            "compare",
+            "s.toml",
+            "--laws",
+            "rigid,kelvin,bilinear",
+            "--out",
+            "o",
+        ])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    assert_eq!(err.matches("PGA of 3.000 g").count(), 1, "{err}");
+    let html = std::fs::read_to_string(d.join("o/report.html")).unwrap();
+    let section = html
+        .split("<h2 id=\"warnings\">")
+        .nth(1)
+        .unwrap()
+        .split("<h2 id=\"skipped\">")
+        .next()
+        .unwrap();
+    assert_eq!(section.matches("PGA of 3.000 g").count(), 1, "{section}");
+    assert!(section.contains("<h3>Every law</h3>"), "{section}");
+}

@@ -15,7 +15,7 @@
 //!
 //! | Code | Terms |
 //! |---|---|
-//! | EN 1998-2 §6.6.4 | `L_eff` = `l_eff_m` or `L`; `d_es = d_i` at an abutment or pier seat, `√(d_i² + d_j²)` at a joint with segment `j` |
+//! | EN 1998-2 §6.6.4 | at an abutment or pier seat (6.11) with `L_eff` = `l_eff_m` or `L`, `d_es = d_i`; at a joint with segment `j` (§6.6.4(4)) `√(l_ov,i² + l_ov,j²)`, each section's (6.11) with its own `d_es` (`d_i`, `d_j`) and `L_eff` (`l_eff_m`, else `L_i`, `L_j`) |
 //! | AASHTO LRFD 4.7.4.4 | `L`, `H` = `pier_height_m` of segment `i`, `S = θ`; at a joint listed in `in_span_hinges` (a hinge within a span) `L = L_i + L_j` (the distances to either side of the hinge) and `H = (H_i + H_j)/2` (the two adjacent columns) |
 //! | AASHTO Guide Spec | SDC A–C as LRFD; SDC D `Δ_eq` = the displacement of the longer-period frame at a joint, `d_i` elsewhere |
 //! | Caltrans SDC 1.7 | `Δ_eq = √(d_i² + d_j²)` at a joint (hinge minimum 24 in), `d_i` at an abutment (30 in) or a pier seat (24 in) |
@@ -26,13 +26,24 @@
 //! `g_DDC = √(d_i² + d_j² − 2 ρ d_i d_j)` with the CQC correlation `ρ(T_i, T_j, ξ)`.
 
 use super::AssessmentError;
-use super::check_codes::end_requirement;
-pub use super::check_codes::{CODES, Code, Requirement, SeatedEnd};
+pub use super::check_codes::{CODES, Code, Ec8End, Ec8Section, Requirement, SeatedEnd};
+use super::check_codes::{EndInputs, ec8_end, end_requirement};
 use super::check_input::{CodeCheckInput, PeriodInput};
 use super::code_check::{self as cc, CodeCheckError, SeatKind};
 use crate::math::Real;
 use crate::sim::Problem;
 use crate::sim::bridge::BridgeModel;
+
+/// The angle `rad` in degrees as the scenario gave it: the shortest decimal whose conversion to
+/// radians is `rad` (60° is stored as `60f64.to_radians()`, whose `to_degrees()` is
+/// 59.99999999999999), else `rad.to_degrees()`.
+pub fn degrees_as_given(rad: Real) -> Real {
+    let deg = rad.to_degrees();
+    (1..=17)
+        .filter_map(|digits| format!("{deg:.*e}", digits - 1).parse::<Real>().ok())
+        .find(|d| d.to_radians() == rad)
+        .unwrap_or(deg)
+}
 
 /// The seated ends of `model`, from the start: per segment its start end, then its end end.
 pub fn seated_ends(model: &BridgeModel) -> Vec<SeatedEnd> {
@@ -80,8 +91,8 @@ pub fn seated_ends(model: &BridgeModel) -> Vec<SeatedEnd> {
                 kind,
                 seat_length,
                 deck_length,
-                skew_deg: s.shape.skew().to_degrees().abs(),
-                subtended_deg: curved.map(|d| d.angle.to_degrees()),
+                skew_deg: degrees_as_given(s.shape.skew().abs()),
+                subtended_deg: curved.map(|d| degrees_as_given(d.angle)),
             });
         }
     }
@@ -102,6 +113,8 @@ pub struct EndCheck {
     pub displacement: Option<Real>,
     /// Per code (in [`CODES`] order).
     pub codes: Vec<(Code, Requirement)>,
+    /// EN 1998-2's terms (each deck section's expression (6.11)) when it is evaluated here.
+    pub ec8: Option<Ec8End>,
 }
 
 impl EndCheck {
@@ -237,17 +250,28 @@ pub fn check_bridge(
             ),
             _ => (at.deck_length, h),
         };
+        let inputs = EndInputs {
+            at: &at,
+            other: other.map(|j| (j, all[2 * j].deck_length)),
+            aashto_l_h,
+            input,
+            periods: &periods,
+            disp: &disp,
+        };
+        let selected = |c: Code| input.codes.contains(&c);
+        let ec8 = if selected(Code::Ec8) {
+            ec8_end(&inputs).map_err(err)?
+        } else {
+            Err(String::new())
+        };
         let codes = CODES
             .iter()
             .map(|&c| {
-                if !input.codes.contains(&c) {
+                if !selected(c) {
                     let why = "not selected ([code_check] codes)".to_string();
                     return Ok((c, Requirement::NotEvaluated(why)));
                 }
-                Ok((
-                    c,
-                    end_requirement(c, &at, i, other, aashto_l_h, input, &periods, &disp)?,
-                ))
+                Ok((c, end_requirement(c, &inputs, &ec8)?))
             })
             .collect::<Result<Vec<_>, CodeCheckError>>()
             .map_err(err)?;
@@ -257,6 +281,7 @@ pub fn check_bridge(
             aashto_l_h,
             displacement: disp(i),
             codes,
+            ec8: ec8.ok(),
         });
     }
     let damping = input.damping.unwrap_or(model.damping_ratio);

@@ -95,20 +95,110 @@ pub struct SeatedEnd {
     pub subtended_deg: Option<Real>,
 }
 
-/// The requirement of `code` at the end `at` of segment `i` (the other segment at its joint:
-/// `other`); AASHTO's deck length and column height `(l_a, h)` at this end.
-#[allow(clippy::too_many_arguments)]
+/// One deck section's terms of EN 1998-2 expression (6.11) at a seated end.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ec8Section {
+    /// The segment (0-based) that is the deck section.
+    pub segment: usize,
+    /// `L_eff` \[m\]: `l_eff_m`, else the segment's length (the distance from the end to the far
+    /// end of the section).
+    pub l_eff: Real,
+    /// `d_g`, `d_eg`, `d_es` (the section's design displacement), `l_m` and the section's
+    /// `l_ov` \[m\].
+    pub terms: cc::Ec8SeatResult,
+}
+
+/// EN 1998-2 §6.6.4 at one seated end: its own section's expression (6.11) and, at an
+/// intermediate separation joint, the other section's (§6.6.4(4)).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ec8End {
+    /// The end's own segment's section.
+    pub own: Ec8Section,
+    /// At a joint, the section across it.
+    pub other: Option<Ec8Section>,
+    /// The required overlap \[m\]: `own.l_ov` at an abutment or outer seat,
+    /// `√(l_ov,i² + l_ov,j²)` at a joint.
+    pub l_ov: Real,
+}
+
+/// What an end's requirements are computed from.
+pub(super) struct EndInputs<'a> {
+    /// The end.
+    pub at: &'a SeatedEnd,
+    /// The other segment at its joint and that segment's deck length.
+    pub other: Option<(usize, Real)>,
+    /// AASHTO's deck length and column height at this end.
+    pub aashto_l_h: (Real, Real),
+    /// The `[code_check]` inputs.
+    pub input: &'a CodeCheckInput,
+    /// Each segment's period.
+    pub periods: &'a [Option<Real>],
+    /// Each segment's design displacement.
+    pub disp: &'a dyn Fn(usize) -> Option<Real>,
+}
+
+/// EN 1998-2 §6.6.4 at the end: `Ok(Err(reason))` when an input is missing. At an abutment or
+/// outer seat expression (6.11) with `d_es = d_i`; at a joint (§6.6.4(4)) the SRSS of (6.11)
+/// for each of the two sections, each with its own `d_es` and its own `L_eff` (the distance
+/// from the joint to the section's far end: its length, unless `l_eff_m` is given).
+pub(super) fn ec8_end(e: &EndInputs) -> Result<Result<Ec8End, String>, CodeCheckError> {
+    let input = e.input;
+    let (Some(ground), Some(a_gr)) = (input.ground, input.a_gr) else {
+        return Ok(Err("needs ground and a_gr_ms2".into()));
+    };
+    let i = e.at.segment;
+    let section = |seg: usize, length: Real| -> Result<Option<Ec8Section>, CodeCheckError> {
+        let Some(d_ed) = (e.disp)(seg) else {
+            return Ok(None);
+        };
+        let l_eff = input.l_eff.unwrap_or(length);
+        let terms = cc::ec8_seat(&Ec8Seat {
+            ground,
+            spectrum: input.spectrum,
+            a_gr,
+            importance_class: input.importance_class,
+            l_eff,
+            d_ed,
+            l_m: input.l_m,
+            near_fault_factor: input.near_fault_factor,
+        })?;
+        Ok(Some(Ec8Section {
+            segment: seg,
+            l_eff,
+            terms,
+        }))
+    };
+    let missing = || Ok(Err("needs displacement_m".to_string()));
+    let Some(own) = section(i, e.at.deck_length)? else {
+        return missing();
+    };
+    let other = match e.other {
+        None => None,
+        Some((j, l_j)) => match section(j, l_j)? {
+            None => return missing(),
+            some => some,
+        },
+    };
+    // the lower segment first, so that both ends of a joint get the same bits
+    let l_ov = match other {
+        None => own.terms.l_ov,
+        Some(o) if o.segment < i => o.terms.l_ov.hypot(own.terms.l_ov),
+        Some(o) => own.terms.l_ov.hypot(o.terms.l_ov),
+    };
+    Ok(Ok(Ec8End { own, other, l_ov }))
+}
+
+/// The requirement of `code` at the end `e.at` (EN 1998-2's is `ec8`, from [`ec8_end`]).
 pub(super) fn end_requirement(
     code: Code,
-    at: &SeatedEnd,
-    i: usize,
-    other: Option<usize>,
-    (l_a, h): (Real, Real),
-    input: &CodeCheckInput,
-    periods: &[Option<Real>],
-    disp: &dyn Fn(usize) -> Option<Real>,
+    e: &EndInputs,
+    ec8: &Result<Ec8End, String>,
 ) -> Result<Requirement, CodeCheckError> {
     use Requirement::{NotEvaluated, Required};
+    let (at, input, disp, periods) = (e.at, e.input, e.disp, e.periods);
+    let i = at.segment;
+    let other = e.other.map(|(j, _)| j);
+    let (l_a, h) = e.aashto_l_h;
     // the end's own displacement, and the relative one at a joint (SRSS of the two frames)
     let d = disp(i);
     let relative = match other {
@@ -119,25 +209,10 @@ pub(super) fn end_requirement(
     let (l, skew) = (at.deck_length, at.skew_deg);
     let a_s = input.a_s.unwrap_or(0.05);
     match code {
-        Code::Ec8 => {
-            let (Some(ground), Some(a_gr)) = (input.ground, input.a_gr) else {
-                return missing("ground and a_gr_ms2");
-            };
-            let Some(d_ed) = relative else {
-                return missing("displacement_m");
-            };
-            let r = cc::ec8_seat(&Ec8Seat {
-                ground,
-                spectrum: input.spectrum,
-                a_gr,
-                importance_class: input.importance_class,
-                l_eff: input.l_eff.unwrap_or(l),
-                d_ed,
-                l_m: input.l_m,
-                near_fault_factor: input.near_fault_factor,
-            })?;
-            Ok(Required(r.l_ov))
-        }
+        Code::Ec8 => Ok(match ec8 {
+            Ok(r) => Required(r.l_ov),
+            Err(why) => NotEvaluated(why.clone()),
+        }),
         Code::AashtoLrfd => Ok(Required(cc::aashto_lrfd_seat(
             l_a,
             h,

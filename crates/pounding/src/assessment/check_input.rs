@@ -34,7 +34,10 @@ pub const DEFAULTS: &[(&str, &str)] = &[
     ("importance_class", "2 (γ_I = 1.0)"),
     ("near_fault_factor", "1"),
     ("l_m_m", "0.40 (the least §6.6.4 allows)"),
-    ("l_eff_m", "each end's deck length L (the segment's length)"),
+    (
+        "l_eff_m",
+        "each deck section's length L (at a joint, each of the two segments')",
+    ),
     (
         "displacement_m",
         "none: the codes that need a design displacement are not evaluated",

@@ -6,7 +6,7 @@
 
 use super::check::{CODES, CheckReport, Code};
 use super::check_run::against_run;
-use super::check_write::overall;
+use super::check_write::{ec8_sections_json, overall};
 use super::{CodeCheckInput, check_bridge};
 use crate::output::json_float;
 use crate::sim::bridge::{BridgeModel, SeatSummary};
@@ -133,6 +133,7 @@ pub fn summary_json(r: &CheckReport, seats: &[SeatSummary]) -> Value {
                 "governing_m": opt(g.map(|(_, v)| v)),
                 "margin_m": opt(e.check.margin()),
                 "peak_seat_displacement_m": json_float(e.peak),
+                "ec8_sections": ec8_sections_json(e.check.ec8.as_ref()),
                 "beyond_design_displacement": e.beyond_design,
             })
         })

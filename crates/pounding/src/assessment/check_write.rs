@@ -3,7 +3,7 @@
 //! (both, the inputs and the verdict) and the text `pounding check` prints. Lengths in metres,
 //! angles in degrees; an empty CSV cell (`null` in JSON) is a requirement not evaluated.
 
-use super::check::{CODES, CheckReport, EndCheck, Requirement};
+use super::check::{CODES, CheckReport, Ec8End, Ec8Section, EndCheck, Requirement};
 use super::check_input::{CodeCheckInput, DEFAULTS, PerSegment, PeriodInput};
 use super::code_check::{AashtoZone, JraGround, Sdc, SpectrumType};
 use crate::math::Real;
@@ -38,7 +38,17 @@ pub fn check_csv(r: &CheckReport) -> String {
     for c in CODES {
         s += &format!(",{}_m", c.name());
     }
-    s += ",governing_code,governing_m,margin_m,verdict\n";
+    s += ",governing_code,governing_m,margin_m,verdict";
+    s += ",ec8_d_g_m,ec8_l_m_m";
+    for side in ["own", "other"] {
+        if side == "other" {
+            s += ",ec8_other_segment";
+        }
+        for t in ["l_eff", "d_eg", "d_es", "l_ov"] {
+            s += &format!(",ec8_{side}_{t}_m");
+        }
+    }
+    s += "\n";
     for e in &r.ends {
         let a = &e.at;
         s += &format!(
@@ -60,14 +70,68 @@ pub fn check_csv(r: &CheckReport) -> String {
         }
         let g = e.governing();
         s += &format!(
-            ",{},{},{},{}\n",
+            ",{},{},{},{}",
             g.map_or("", |(c, _)| c.name()),
             cell(g.map(|(_, v)| v)),
             cell(e.margin()),
             verdict(e.pass())
         );
+        s += &ec8_cells(e.ec8.as_ref());
+        s += "\n";
     }
     s
+}
+
+/// The EN 1998-2 cells of a `check.csv` row: `d_g`, `l_m`, the own section's `L_eff`, `d_eg`,
+/// `d_es`, `l_ov`, the other section's segment (1-based) and the same four (empty off a joint
+/// or when EN 1998-2 is not evaluated).
+fn ec8_cells(e: Option<&Ec8End>) -> String {
+    let four = |x: Option<&Ec8Section>| {
+        let t = |f: fn(&Ec8Section) -> Real| cell(x.map(f));
+        format!(
+            ",{},{},{},{}",
+            t(|x| x.l_eff),
+            t(|x| x.terms.d_eg),
+            t(|x| x.terms.d_es),
+            t(|x| x.terms.l_ov)
+        )
+    };
+    let own = e.map(|e| &e.own);
+    let other = e.and_then(|e| e.other.as_ref());
+    format!(
+        ",{},{}{},{}{}",
+        cell(own.map(|x| x.terms.d_g)),
+        cell(own.map(|x| x.terms.l_m)),
+        four(own),
+        other.map_or(String::new(), |x| (x.segment + 1).to_string()),
+        four(other)
+    )
+}
+
+/// EN 1998-2's terms at an end for `check.json` and `summary.json`: per deck section (the end's
+/// own first, then at a joint the other) its segment (1-based), `L_eff`, `d_g`, `d_eg`, `d_es`,
+/// `l_m` and expression (6.11) `l_ov`; `null` when EN 1998-2 is not evaluated there.
+pub fn ec8_sections_json(e: Option<&Ec8End>) -> Value {
+    let Some(e) = e else {
+        return Value::Null;
+    };
+    let section = |x: &Ec8Section| {
+        json!({
+            "segment": x.segment + 1,
+            "l_eff_m": json_float(x.l_eff),
+            "d_g_m": json_float(x.terms.d_g),
+            "d_eg_m": json_float(x.terms.d_eg),
+            "d_es_m": json_float(x.terms.d_es),
+            "l_m_m": json_float(x.terms.l_m),
+            "l_ov_m": json_float(x.terms.l_ov),
+        })
+    };
+    Value::Array(
+        std::iter::once(&e.own)
+            .chain(&e.other)
+            .map(section)
+            .collect(),
+    )
 }
 
 /// `check_gaps.csv`: one row per joint.
@@ -167,6 +231,7 @@ pub fn check_json(r: &CheckReport, scenario: &str) -> String {
                 "aashto_h_m": json_float(e.aashto_l_h.1),
                 "displacement_m": opt(e.displacement),
                 "required_m": req, "not_evaluated": why,
+                "ec8_sections": ec8_sections_json(e.ec8.as_ref()),
                 "governing_code": g.map(|(c, _)| c.name()),
                 "governing_m": opt(g.map(|(_, v)| v)),
                 "margin_m": opt(e.margin()),

@@ -7,7 +7,7 @@
 //!
 //! | Code | Clause | Formula |
 //! |---|---|---|
-//! | Eurocode 8-2 | EN 1998-2 §6.6.4 | `l_ov = l_m + d_eg + d_es`, `d_eg = ε_s L_eff ≤ 2 d_g`, `ε_s = 2 d_g / L_g` |
+//! | Eurocode 8-2 | EN 1998-2 §6.6.4 | `l_ov = l_m + d_eg + d_es`, `d_eg = ε_s L_eff ≤ 2 d_g`, `ε_s = 2 d_g / L_g`; at an intermediate separation joint (§6.6.4(4)) `√(l_ov,1² + l_ov,2²)` of the two deck sections |
 //! | AASHTO LRFD | 4.7.4.4 | `N = (8 + 0.02 L + 0.08 H)(1 + 0.000125 S²)` in, times the zone percentage |
 //! | AASHTO Guide Spec | 4.12.2 (SDC A–C), 4.12.3 (SDC D) | as LRFD with SDC percentage; `N = (4 + 1.65 Δ_eq)(1 + 0.00025 S²) ≥ 24` in |
 //! | Caltrans SDC 1.7 | 7.2.5.4 (hinge), 7.8.3 (abutment) | `N = Δ_p/s + Δ_cr+sh + Δ_temp + Δ_eq + 4` in, `≥ 24` in (hinge), `≥ 30` in (abutment) |
@@ -20,6 +20,9 @@
 //! See the guide page `docs/guide/check.md` for every input and clause.
 
 use thiserror::Error;
+
+mod gap;
+pub use gap::{cqc_rho, gap_ddc, gap_srss};
 
 const INCH: f64 = 0.0254;
 const FOOT: f64 = 0.3048;
@@ -199,6 +202,28 @@ pub fn ec8_seat(input: &Ec8Seat) -> Result<Ec8SeatResult, CodeCheckError> {
     })
 }
 
+/// Terms of the EN 1998-2 §6.6.4(4) overlap length at an intermediate separation joint (m).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ec8JointSeatResult {
+    /// Expression (6.11) of each deck section alone, in the order given.
+    pub sections: [Ec8SeatResult; 2],
+    /// `l_ov = √(l_ov,1² + l_ov,2²)`.
+    pub l_ov: f64,
+}
+
+/// Minimum overlap length at an intermediate separation joint between two deck sections by
+/// EN 1998-2 §6.6.4(4): the square root of the sum of squares of expression (6.11)
+/// (`l_ov = l_m + d_eg + d_es`, [`ec8_seat`]) evaluated for each section separately, each with
+/// its own `L_eff` (the distance from the joint to the furthest end of that section) and its own
+/// `d_es`: `l_ov = √(l_ov,1² + l_ov,2²)`.
+pub fn ec8_joint_seat(sections: [&Ec8Seat; 2]) -> Result<Ec8JointSeatResult, CodeCheckError> {
+    let [a, b] = [ec8_seat(sections[0])?, ec8_seat(sections[1])?];
+    Ok(Ec8JointSeatResult {
+        sections: [a, b],
+        l_ov: a.l_ov.hypot(b.l_ov),
+    })
+}
+
 /// Base empirical seat width of AASHTO LRFD 4.7.4.4 (eq. 4.7.4.4-1), in metres:
 /// `N = (8 + 0.02 L + 0.08 H)(1 + 0.000125 S²)` inches, with `L` the length of the deck to the
 /// adjacent expansion joint or end (ft), `H` the average column height (ft), `S` the skew (deg).
@@ -354,40 +379,4 @@ pub fn jra_seat(
         0.0
     };
     Ok((non_negative("u_r_m", u_r)? + u_g).max(s_em).max(s_theta))
-}
-
-/// CQC correlation of two modes of equal damping ratio `ξ` and period ratio `r = T₂/T₁`:
-/// `ρ = 8 ξ² (1 + r) r^{3/2} / ((1 − r²)² + 4 ξ² r (1 + r)²)` (Der Kiureghian 1981).
-pub fn cqc_rho(t1: f64, t2: f64, xi: f64) -> Result<f64, CodeCheckError> {
-    let r = positive("period_2_s", t2)? / positive("period_1_s", t1)?;
-    let xi = non_negative("damping", xi)?;
-    let den = (1.0 - r * r).powi(2) + 4.0 * xi * xi * r * (1.0 + r).powi(2);
-    if den == 0.0 {
-        // undamped and equal periods (0/0): the limit along equal periods is 1 — the frames
-        // move in phase (the form is 1 at r = 1 for every ξ > 0)
-        return Ok(1.0);
-    }
-    Ok(8.0 * xi * xi * (1.0 + r) * r.powf(1.5) / den)
-}
-
-/// Required joint gap by the SRSS rule (m): `√(u₁² + u₂²)`.
-pub fn gap_srss(u1: f64, u2: f64) -> Result<f64, CodeCheckError> {
-    Ok(non_negative("u_1_m", u1)?.hypot(non_negative("u_2_m", u2)?))
-}
-
-/// Required joint gap by the double-difference (CQC) rule (m):
-/// `√(u₁² + u₂² − 2 ρ₁₂ u₁ u₂)`, `ρ₁₂` from [`cqc_rho`] of the two frames' periods.
-pub fn gap_ddc(u1: f64, u2: f64, t1: f64, t2: f64, xi: f64) -> Result<f64, CodeCheckError> {
-    let (u1, u2) = (non_negative("u_1_m", u1)?, non_negative("u_2_m", u2)?);
-    let rho = cqc_rho(t1, t2, xi)?;
-    // ρ ≤ 1, so the radicand is ≥ (u₁ − u₂)² ≥ 0 but for rounding; `max` would turn a NaN into
-    // 0 (a zero gap that passes): a non-finite ρ is an error instead
-    if !rho.is_finite() {
-        return Err(CodeCheckError::OutOfRange {
-            key: "damping",
-            what: "a ratio giving a finite correlation for these periods",
-            value: xi,
-        });
-    }
-    Ok((u1 * u1 + u2 * u2 - 2.0 * rho * u1 * u2).max(0.0).sqrt())
 }

@@ -27,6 +27,7 @@ use crate::ground_motion::synth::{
 use crate::math::Real;
 use crate::toml_schema::line_col;
 use serde::Deserialize;
+use std::f64::consts::PI;
 use toml::Spanned;
 
 /// The `[synth]` table.
@@ -119,6 +120,25 @@ pub(super) fn records(
             "--duration" => "duration",
             "--pga" => "pga_g",
             other => other,
+        };
+        // a default filter frequency above the Nyquist frequency of the table's dt: dt is the
+        // value the table sets
+        let given = |k: &str| keys.iter().any(|(g, at)| *g == k && *at != table_at);
+        let (key, value, reason) = if reason.contains("Nyquist") && !given(key) && given("dt") {
+            let w = if key == "omega_g" {
+                p.omega_g
+            } else {
+                p.omega_f
+            };
+            let why = format!(
+                "the default {key} = {value} rad/s lies above the Nyquist frequency π / dt = {} \
+                 rad/s of this dt: give dt < π / {key} = {} s, or a smaller {key}",
+                crate::output::float_token(PI / p.dt),
+                crate::output::float_token(PI / w)
+            );
+            ("dt", crate::output::float_token(p.dt), why)
+        } else {
+            (key, value, reason)
         };
         let offset = keys
             .iter()

@@ -124,6 +124,14 @@ pub const MAX_COUNT: usize = 10_000;
 pub const MAX_SAMPLES: usize = 10_000_000;
 /// Fewest steps of `dt` in `duration` (a record of fewer is refused).
 pub const MIN_STEPS: usize = 100;
+/// Longest `--duration` \[s\] (about 14 h: half of [`MAX_SAMPLES`] at the default 0.01 s).
+pub const MAX_DURATION: Real = 5e4;
+/// Smallest `omega_g`, `omega_f` \[rad/s\].
+pub const MIN_OMEGA: Real = 0.01;
+/// Largest `s0` \[m²/s³\] (with the default filters, a PGA of the order of 100 g).
+pub const MAX_S0: Real = 1e3;
+/// Smallest `zeta_g`, `zeta_f`.
+pub const MIN_ZETA: Real = 0.01;
 /// Largest `--pga` \[g\] (the largest recorded PGAs are about 3–4 g).
 pub const MAX_PGA_G: Real = 10.0;
 
@@ -140,9 +148,14 @@ fn bad_real(name: &str, value: Real, reason: &str) -> SynthError {
     bad(name, crate::output::float_token(value), reason)
 }
 
+/// A parameter's name, value, whether it is in range and the range in words.
+type RangeCheck = (&'static str, Real, fn(Real) -> bool, &'static str);
+
 impl SynthParams {
-    /// Checks every parameter (finite, in range; `--pga` in (0, [`MAX_PGA_G`]] g; `duration` a
-    /// whole number of at least [`MIN_STEPS`] steps of `dt`; fewer than [`MAX_SAMPLES`] samples).
+    /// Checks every parameter (finite, in range; `--duration` at most [`MAX_DURATION`]; `--pga` in
+    /// (0, [`MAX_PGA_G`]] g; `omega_g`, `omega_f` in [[`MIN_OMEGA`], π/dt) (below the Nyquist
+    /// frequency); `zeta_g`, `zeta_f` in [[`MIN_ZETA`], 1); `epsilon` in (0, 0.5]; `eta` in
+    /// [1e-6, 1); `s0` in (0, [`MAX_S0`]]; `duration` a whole number of at least [`MIN_STEPS`] steps of `dt`; fewer than [`MAX_SAMPLES`] samples).
     pub fn check(&self) -> Result<(), SynthError> {
         let pos = |name: &str, v: Real| {
             if v.is_finite() && v > 0.0 {
@@ -153,6 +166,13 @@ impl SynthParams {
         };
         pos("--dt", self.dt)?;
         pos("--duration", self.duration)?;
+        if self.duration > MAX_DURATION {
+            return Err(bad_real(
+                "--duration",
+                self.duration,
+                &format!("must not exceed {MAX_DURATION} s"),
+            ));
+        }
         if let Some(p) = self.pga_g {
             pos("--pga", p)?;
             if p > MAX_PGA_G {
@@ -161,20 +181,6 @@ impl SynthParams {
                     p,
                     &format!("must lie in (0, {MAX_PGA_G}] g"),
                 ));
-            }
-        }
-        for (n, v) in [("omega_g", self.omega_g), ("omega_f", self.omega_f)] {
-            pos(n, v)?;
-        }
-        pos("s0", self.s0)?;
-        for (n, v) in [
-            ("zeta_g", self.zeta_g),
-            ("zeta_f", self.zeta_f),
-            ("epsilon", self.epsilon),
-            ("eta", self.eta),
-        ] {
-            if !(v.is_finite() && v > 0.0 && v < 1.0) {
-                return Err(bad_real(n, v, "must lie in (0, 1)"));
             }
         }
         if self.dt > self.duration {
@@ -226,6 +232,57 @@ impl SynthParams {
                     crate::output::float_token(MIN_STEPS as Real * self.dt)
                 ),
             ));
+        }
+        // The model's parameters, each on its own range (after dt, on which the Nyquist bound
+        // depends), so that no combination overflows: a filter frequency at or above the
+        // Nyquist frequency π/dt is not represented by the samples (its one-step matrix
+        // exponential overflows long before 1e6 rad/s); below 0.01 rad/s (a period over 600 s),
+        // with a damping below 0.01 or an `s0` above 1e3 m²/s³ the stationary covariance
+        // overflows or is singular in floating point; ε above 0.5 or η below 1e-6 overflow the
+        // envelope's factor (e/ε)^b.
+        let nyquist = PI / self.dt;
+        for (n, v) in [("omega_g", self.omega_g), ("omega_f", self.omega_f)] {
+            if !(v.is_finite() && (MIN_OMEGA..nyquist).contains(&v)) {
+                return Err(bad_real(
+                    n,
+                    v,
+                    &format!(
+                        "must lie in [{MIN_OMEGA}, π / dt) rad/s, below the Nyquist frequency \
+                         π / dt = {} rad/s of dt = {}",
+                        crate::output::float_token(nyquist),
+                        crate::output::float_token(self.dt)
+                    ),
+                ));
+            }
+        }
+        pos("s0", self.s0)?;
+        if self.s0 > MAX_S0 {
+            return Err(bad_real(
+                "s0",
+                self.s0,
+                &format!("must lie in (0, {MAX_S0}] m²/s³"),
+            ));
+        }
+        let ranges: [RangeCheck; 4] = [
+            (
+                "zeta_g",
+                self.zeta_g,
+                |v| (MIN_ZETA..1.0).contains(&v),
+                "[0.01, 1)",
+            ),
+            (
+                "zeta_f",
+                self.zeta_f,
+                |v| (MIN_ZETA..1.0).contains(&v),
+                "[0.01, 1)",
+            ),
+            ("epsilon", self.epsilon, |v| v > 0.0 && v <= 0.5, "(0, 0.5]"),
+            ("eta", self.eta, |v| (1e-6..1.0).contains(&v), "[1e-6, 1)"),
+        ];
+        for (n, v, ok, what) in ranges {
+            if !(v.is_finite() && ok(v)) {
+                return Err(bad_real(n, v, &format!("must lie in {what}")));
+            }
         }
         Ok(())
     }

@@ -50,6 +50,45 @@ fn ec8_overlap_length_of_the_worked_example() {
     );
 }
 
+/// EN 1998-2 §6.6.4(4), an intermediate separation joint between two deck sections: expression
+/// (6.11) for each section alone, then the square root of the sum of their squares.
+/// Ground C, type 1 (Table 3.2: S = 1.15, T_C = 0.6 s, T_D = 2 s; L_g = 400 m), a_gR = 3.0 m/s²,
+/// class II (γ_I = 1): a_g = 3.0, d_g = 0.025·3.0·1.15·0.6·2.0 = 0.1035 m,
+/// ε_s = 2·0.1035/400 = 5.175e-4.
+/// Section 1: L_eff = 30 m, d_es = 0.08 m: d_eg = 30·5.175e-4 = 0.015525 (< 2 d_g = 0.207),
+/// l_ov,1 = 0.40 + 0.015525 + 0.08 = 0.495525 m.
+/// Section 2: L_eff = 50 m, d_es = 0.15 m: d_eg = 0.025875, l_ov,2 = 0.40 + 0.025875 + 0.15 =
+/// 0.575875 m.
+/// l_ov = √(0.495525² + 0.575875²) = √(0.245545025625 + 0.331632015625) = √0.57717704125
+/// = 0.759721686705 m (the former single-section form with d_es = √(0.08² + 0.15²) = 0.17 gave
+/// 0.585525 m at section 1's end).
+#[test]
+fn ec8_intermediate_joint_is_the_srss_of_the_two_sections() {
+    let section = |l_eff: f64, d_ed: f64| Ec8Seat {
+        ground: GroundType::C,
+        spectrum: SpectrumType::Type1,
+        a_gr: 3.0,
+        importance_class: 2,
+        l_eff,
+        d_ed,
+        l_m: 0.40,
+        near_fault_factor: 1.0,
+    };
+    let (a, b) = (section(30.0, 0.08), section(50.0, 0.15));
+    let r = ec8_joint_seat([&a, &b]).unwrap();
+    close(r.sections[0].d_g, 0.1035, 1e-12);
+    close(r.sections[0].d_eg, 0.015525, 1e-12);
+    close(r.sections[1].d_eg, 0.025875, 1e-12);
+    close(r.sections[0].l_ov, 0.495525, 1e-12);
+    close(r.sections[1].l_ov, 0.575875, 1e-12);
+    close(r.l_ov, 0.57717704125f64.sqrt(), 1e-12);
+    close(r.l_ov, 0.759721686705, 1e-9);
+    // symmetric in the two sections; a bad section is refused
+    close(ec8_joint_seat([&b, &a]).unwrap().l_ov, r.l_ov, 1e-15);
+    let bad = section(f64::NAN, 0.1);
+    assert!(ec8_joint_seat([&a, &bad]).is_err());
+}
+
 fn example() -> Ec8Seat {
     Ec8Seat {
         ground: GroundType::A,

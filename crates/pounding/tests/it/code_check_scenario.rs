@@ -116,8 +116,8 @@ fn with_check(table: &str) -> String {
     )
 }
 
-/// Every requirement equals its formula called with the derived terms: EC8 with `d_es` the
-/// SRSS of the two segments at a joint, LRFD with `L`, `H`, the zone; the gap rules with the
+/// Every requirement equals its formula called with the derived terms: EC8 at a joint the
+/// SRSS of each deck section's (6.11) (§6.6.4(4)), LRFD with `L`, `H`, the zone; the gap rules with the
 /// segments' own periods `2π/ω₁`.
 #[test]
 fn requirements_equal_the_formulas_with_the_derived_terms() {
@@ -135,20 +135,28 @@ fn requirements_equal_the_formulas_with_the_derived_terms() {
             Some(k) => d[k].hypot(d[k + 1]),
             None => d[i],
         };
-        let ec8 = cc::ec8_seat(&Ec8Seat {
+        // EN 1998-2: (6.11) per deck section with its own L and d; the SRSS of the two at a joint
+        let section = |seg: usize| Ec8Seat {
             ground: GroundType::C,
             spectrum: cc::SpectrumType::Type1,
             a_gr: 3.0,
             importance_class: 2,
-            l_eff: e.at.deck_length,
-            d_ed: d_es,
+            l_eff: r.ends[2 * seg].at.deck_length,
+            d_ed: d[seg],
             l_m: 0.4,
             near_fault_factor: 1.0,
-        })
-        .unwrap();
+        };
+        let ec8 = match e.at.joint {
+            Some(k) => {
+                cc::ec8_joint_seat([&section(k), &section(k + 1)])
+                    .unwrap()
+                    .l_ov
+            }
+            None => cc::ec8_seat(&section(i)).unwrap().l_ov,
+        };
         let lrfd = cc::aashto_lrfd_seat(e.at.deck_length, 8.0, 0.0, AashtoZone::Z2, 0.05).unwrap();
         let got = |c: Code| e.codes.iter().find(|(k, _)| *k == c).unwrap().1.value();
-        assert_eq!(got(Code::Ec8), Some(ec8.l_ov), "{}", e.at.end);
+        assert_eq!(got(Code::Ec8), Some(ec8), "{}", e.at.end);
         assert_eq!(got(Code::AashtoLrfd), Some(lrfd));
         let kind = if e.at.joint.is_some() {
             SeatKind::Hinge

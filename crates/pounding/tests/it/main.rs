@@ -3,6 +3,8 @@
 mod analytic;
 mod batch;
 mod code_check;
+mod code_check_angles;
+mod code_check_joint;
 mod code_check_scenario;
 mod common;
 mod contact;

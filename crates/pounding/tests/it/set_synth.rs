@@ -104,7 +104,42 @@ fn synth_manifest_errors_name_the_key_and_its_line() {
         ),
         (
             "[synth]\ncount = 2\nseed = 1\nzeta_g = 1.5\n",
-            &["synth.zeta_g (s.toml:4)", "(0, 1)"],
+            &["synth.zeta_g (s.toml:4)", "[0.01, 1)"],
+        ),
+        // each parameter is checked on its own range before generating, and the key at fault
+        // is named: a too-long duration (it was reported at dt), an absurd filter frequency (a
+        // NaN sample, reported at count), values that made the generator panic or overflow
+        (
+            "[synth]\ncount = 2\nseed = 1\ndt = 0.01\nduration = 1e6\n",
+            &["synth.duration (s.toml:5)", "duration = 1000000", "50000"],
+        ),
+        (
+            "[synth]\ncount = 2\nseed = 1\nomega_f = 1e6\n",
+            &["synth.omega_f (s.toml:4)", "omega_f = 1000000", "Nyquist"],
+        ),
+        (
+            "[synth]\ncount = 2\nseed = 1\ndt = 0.5\nduration = 100\n",
+            &["synth.dt (s.toml:4)", "default omega_g = 15.6", "Nyquist"],
+        ),
+        (
+            "[synth]\ncount = 2\nseed = 1\nomega_g = 1e-300\n",
+            &["synth.omega_g (s.toml:4)", "[0.01, π / dt)"],
+        ),
+        (
+            "[synth]\ncount = 2\nseed = 1\nzeta_f = 1e-40\n",
+            &["synth.zeta_f (s.toml:4)", "[0.01, 1)"],
+        ),
+        (
+            "[synth]\ncount = 2\nseed = 1\ns0 = 1e300\n",
+            &["synth.s0 (s.toml:4)", "(0, 1000]"],
+        ),
+        (
+            "[synth]\ncount = 2\nseed = 1\nepsilon = 0.99\n",
+            &["synth.epsilon (s.toml:4)", "(0, 0.5]"],
+        ),
+        (
+            "[synth]\ncount = 2\nseed = 1\neta = 1e-300\n",
+            &["synth.eta (s.toml:4)", "[1e-6, 1)"],
         ),
         (
             "[synth]\ncount = 2\nseed = 1\npga_g = 0\n",

@@ -40,7 +40,8 @@ peak_force_estimate_n,contact_time_estimate_s,peak_impulse_ns,peak_closing_m,pea
 peak_seat_displacement_m,governing_seat_end,governing_seat_ratio,unseated,energy_balance_error,skipped_reason";
 
 /// Columns of `compare_sites.csv`: one row per law that ran and site (`joint1`, … in bridge
-/// order, then `abutment.start`, `abutment.end` where present), as the `joints` /
+/// order, then `abutment-start`, `abutment-end` where present, the names of `summary.json`'s
+/// `seats[]` and `impacts.csv`), as the `joints` /
 /// `abutments` arrays of a bridge `summary.json`, and the site's rigid peak-force estimate
 /// (empty for a compliance law).
 pub const BRIDGE_COMPARE_SITES_HEADER: &str = "law,site,impacts,peak_contact_force_n,\
@@ -95,7 +96,7 @@ fn sites(ran: &Ran) -> Vec<SiteRow> {
     for (side, a) in s.abutments.iter().enumerate() {
         if let Some(a) = a {
             rows.push((
-                format!("abutment.{}", ABUTMENT_SIDES[side]),
+                format!("abutment-{}", ABUTMENT_SIDES[side]),
                 a.impacts,
                 a.peak_contact_force,
                 a.peak_impulse,
