@@ -303,13 +303,7 @@ fn compare_report_and_the_rigid_estimate() {
     let warning = "too coarse for the contact law";
     assert!(err.contains(warning), "{err}");
     let html = std::fs::read_to_string(out.join("report.html")).unwrap();
-    let warnings = html
-        .split("<h2 id=\"warnings\">")
-        .nth(1)
-        .unwrap()
-        .split("<h2 id=\"skipped\">")
-        .next()
-        .unwrap();
+    let warnings = crate::report_warnings(&html);
     assert!(
         warnings.contains("<h3>bilinear</h3>") && warnings.contains(warning),
         "{warnings}"

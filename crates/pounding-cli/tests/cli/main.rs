@@ -121,3 +121,13 @@ mod study;
 mod study_shapes;
 mod vocab;
 mod warnings;
+
+/// The warnings section of a `compare` report (between its `warnings` and `skipped` headings).
+pub fn report_warnings(html: &str) -> &str {
+    html.split("<h2 id=\"warnings\">")
+        .nth(1)
+        .expect("a warnings section")
+        .split("<h2 id=\"skipped\">")
+        .next()
+        .expect("text")
+}

@@ -56,6 +56,18 @@ fn piers_backwalls_and_keys_write_their_tables_and_loops() {
     assert_eq!(summary["piers"].as_array().unwrap().len(), 2);
     assert_eq!(summary["shear_keys"].as_array().unwrap().len(), 2);
     assert!(summary["abutments"][0]["backwall"]["peak_backfill_force_n"].is_number());
+    // the whole coupled bridge's ten longest periods, longest first
+    let periods: Vec<f64> = summary["model"]["periods_s"]
+        .as_array()
+        .expect("model.periods_s")
+        .iter()
+        .map(|t| t.as_f64().unwrap())
+        .collect();
+    assert_eq!(periods.len(), 10, "{periods:?}");
+    assert!(
+        periods.windows(2).all(|w| w[0] >= w[1]) && periods[9] > 0.0,
+        "{periods:?}"
+    );
     // a plain bridge into the same directory leaves none of them behind
     let (code, _, err) = run_capture(&["simulate", &p("plain.toml"), "--out", &p("o")]);
     assert_eq!(code, Some(0), "{err}");
@@ -68,6 +80,14 @@ fn piers_backwalls_and_keys_write_their_tables_and_loops() {
     ] {
         assert!(!have.contains(f), "stale {f}");
     }
+    // segments on the ground are separate systems: their periods are per segment
+    let plain: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("o/summary.json")).unwrap()).unwrap();
+    assert!(
+        plain["model"].get("periods_s").is_none(),
+        "{}",
+        plain["model"]
+    );
     // a bad pier: exit 2, the key and its line, nothing written
     let (code, _, err) = run_capture(&["simulate", &p("bad.toml"), "--out", &p("b")]);
     assert_eq!(code, Some(2), "{err}");

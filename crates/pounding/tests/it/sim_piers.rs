@@ -568,4 +568,20 @@ fn bearing_dissipation_stays_with_the_segments_and_the_period_is_the_bridges() {
         .sqrt();
     let t1 = 2.0 * std::f64::consts::PI / w1;
     assert!((t.period - t1).abs() <= 1e-9 * t1, "{} vs {t1}", t.period);
+    // every frequency of the whole bridge (summary.json's `model.periods_s`) against the hand
+    // system's
+    let mut hand: Vec<f64> = sym
+        .symmetric_eigenvalues()
+        .iter()
+        .map(|l| l.max(0.0).sqrt())
+        .collect();
+    hand.sort_by(f64::total_cmp);
+    let ours = model
+        .system_frequencies()
+        .unwrap()
+        .expect("a coupled bridge");
+    assert_eq!(ours.len(), 13);
+    for (a, b) in ours.iter().zip(&hand) {
+        assert!((a - b).abs() <= 1e-9 * hand[12], "{ours:?} vs {hand:?}");
+    }
 }

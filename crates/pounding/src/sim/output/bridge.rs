@@ -96,6 +96,9 @@ fn bridge_arrays(
     (joints, abutments, segments)
 }
 
+/// How many of the whole coupled bridge's natural periods `summary.json` lists (longest first).
+pub(crate) const BRIDGE_PERIODS: usize = 10;
+
 /// The `summary.json` of a bridge run: `joints`, `abutments` (`[start, end]`, `null` where
 /// absent) and `segments` arrays in bridge order, the whole-bridge figures, status, ground motion
 /// and model.
@@ -182,6 +185,14 @@ pub(crate) fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> 
             "outer_seat_length_m": json_float(m.outer_seat_length),
         },
     });
+    if let Ok(Some(w)) = m.system_frequencies() {
+        // piers or backwalls couple the segments: the whole bridge's longest periods
+        out["model"]["periods_s"] = w
+            .iter()
+            .take(BRIDGE_PERIODS)
+            .map(|w| json_float(2.0 * std::f64::consts::PI / w))
+            .collect();
+    }
     super::add_run_keys(&mut out, &super::RunKeys::of(sol));
     out["warnings"] =
         super::input_warnings(&setup.problem.ground, sol.dt, sol.time_step_advice.as_ref())
