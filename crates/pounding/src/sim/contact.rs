@@ -330,14 +330,24 @@ pub(crate) fn candidates(bodies: &[SegmentBody], pose: &Pose, joint: &JointGeom)
         StruckFace::new(bodies, pose, joint, joint.b, &sb.start),
         StruckFace::new(bodies, pose, joint, joint.a, &sa.end),
     ];
+    // (element by element: `[T; N]::map` does not always compile to straight-line code)
+    let (ca, cb) = (&sa.end.corners, &sb.start.corners);
     let corners = [
-        sa.end.corners.map(|c| pose.place(bodies, joint.a, &c)),
-        sb.start.corners.map(|c| pose.place(bodies, joint.b, &c)),
+        [
+            pose.place(bodies, joint.a, &ca[0]),
+            pose.place(bodies, joint.a, &ca[1]),
+        ],
+        [
+            pose.place(bodies, joint.b, &cb[0]),
+            pose.place(bodies, joint.b, &cb[1]),
+        ],
     ];
-    let all = ContactCase::ALL.map(|c| {
+    let cand = |i: usize| {
+        let c = ContactCase::ALL[i];
         let (r, k) = case_parts(c);
         Candidate::new(c, corners[r][k], &struck[r])
-    });
+    };
+    let all = [cand(0), cand(1), cand(2), cand(3)];
     let half_width = joint.half_w;
     let tol = 1e-9 * half_width;
     let mut sel = [None, None];
