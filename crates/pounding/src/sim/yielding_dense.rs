@@ -146,9 +146,19 @@ impl DenseImplicit {
         let hth = sc.h * sc.th;
         let what = &sc.dense.as_ref().expect("a coupled scheme").what;
         let (fy, wabs) = (self.fy, &self.wabs);
-        for _ in 0..MAX_ITER {
+        for it in 0..MAX_ITER {
             let qp = Self::end_position(sc, q, u, &x);
             let (r, jac, r_size) = self.end_force(bearings, &qp);
+            // the elastic step from the contact-free estimate: `x = base`, `Π = 0` and the members'
+            // force is the predictor's, so `g = 0` with no product formed
+            if it == 0
+                && jac.is_none()
+                && r == *r_pred
+                && x == *base
+                && pi.iter().all(|p| *p == 0.0)
+            {
+                return (x, r, None, true);
+            }
             let g = what * (&x - base) - (&r - r_pred) * hth - pi;
             // elastic members: J = 0 and Ŵ_t = Ŵ (no product formed)
             let tangent = jac.map(|j| {
