@@ -44,10 +44,47 @@ pub(crate) struct Dense {
     a_q: DMatrix<Real>,
     b_g: DMatrix<Real>,
     mr: DMatrix<Real>,
-    /// `K − K_y`.
-    k_elastic: DMatrix<Real>,
     /// `(h Ŵ⁻¹ P_K, h Ŵ⁻¹ P_C)`.
     g_s: Option<(DMatrix<Real>, DMatrix<Real>)>,
+    /// `M`, `K − K_y`, `C`, `K_y` by rows of their non-zero entries: the products every step
+    /// forms for the energy balance (a bridge's links touch few coordinates each; `Ŵ⁻¹` and the
+    /// operators above are dense).
+    m_rows: Rows,
+    k_elastic_rows: Rows,
+    c_rows: Rows,
+    ky_rows: Rows,
+}
+
+/// A matrix by rows of its non-zero entries, columns ascending.
+#[derive(Debug, Clone)]
+struct Rows {
+    start: Vec<usize>,
+    entries: Vec<(usize, Real)>,
+}
+
+impl Rows {
+    fn of(a: &DMatrix<Real>) -> Self {
+        let mut start = vec![0];
+        let mut entries = Vec::new();
+        for i in 0..a.nrows() {
+            entries.extend(
+                (0..a.ncols())
+                    .filter(|&j| a[(i, j)] != 0.0)
+                    .map(|j| (j, a[(i, j)])),
+            );
+            start.push(entries.len());
+        }
+        Rows { start, entries }
+    }
+
+    /// `out = A v`.
+    fn mul_into(&self, v: &State, out: &mut State) {
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = self.entries[self.start[i]..self.start[i + 1]]
+                .iter()
+                .fold(0.0, |s, (j, a)| s + a * v[*j]);
+        }
+    }
 }
 
 impl Dense {
@@ -69,6 +106,10 @@ impl Dense {
             .as_ref()
             .map(|(pk, pc)| ((&winv * pk) * h, (&winv * pc) * h));
         Ok(Dense {
+            m_rows: Rows::of(&sys.m),
+            k_elastic_rows: Rows::of(&k_elastic),
+            c_rows: Rows::of(&sys.c),
+            ky_rows: Rows::of(&sys.ky),
             g_s,
             sys,
             what,
@@ -77,7 +118,6 @@ impl Dense {
             a_q,
             b_g,
             mr,
-            k_elastic,
         })
     }
 
@@ -114,20 +154,20 @@ impl Dense {
 
     /// `(T, V) = (½ uᵀ M u, ½ qᵀ (K − K_y) q)`, with `mu`, `kq` as scratch.
     pub fn energies(&self, q: &State, u: &State, mu: &mut State, kq: &mut State) -> (Real, Real) {
-        mu.gemv(1.0, &self.sys.m, u, 0.0);
-        kq.gemv(1.0, &self.k_elastic, q, 0.0);
+        self.m_rows.mul_into(u, mu);
+        self.k_elastic_rows.mul_into(q, kq);
         (0.5 * u.dot(mu), 0.5 * q.dot(kq))
     }
 
     /// `vᵀ C v`; `cv` holds `C v`.
     pub fn damping_power(&self, v: &State, cv: &mut State) -> Real {
-        cv.gemv(1.0, &self.sys.c, v, 0.0);
+        self.c_rows.mul_into(v, cv);
         v.dot(cv)
     }
 
     /// `out = K_y v` (the yielding elements' linear part, for their work).
     pub fn ky_mul(&self, v: &State, out: &mut State) {
-        out.gemv(1.0, &self.sys.ky, v, 0.0);
+        self.ky_rows.mul_into(v, out);
     }
 }
 
