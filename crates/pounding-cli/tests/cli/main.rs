@@ -102,6 +102,7 @@ mod lcp;
 mod manifest_csv;
 mod memory_guards;
 mod motion;
+mod motion_limits;
 mod motion_svgm;
 mod pair_batch;
 mod physics_check;
