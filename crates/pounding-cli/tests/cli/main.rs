@@ -84,6 +84,7 @@ mod bridge_batch;
 mod bridge_plots;
 mod check;
 mod compare;
+mod compare_energy;
 mod docs_links;
 mod errors_round3;
 mod fragility;
