@@ -4,7 +4,9 @@
 //! ([`svgm`]): spatially variable motions at several supports.
 
 use anyhow::{Context, Result};
-use pounding::ground_motion::synth::{SynthParams, check_count, synth_source, write_suite};
+use pounding::ground_motion::synth::{
+    SynthParams, check_count, check_seed, check_suite_size, synth_source, write_suite,
+};
 use pounding::output::float_token;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -35,7 +37,8 @@ struct SynthArgs {
     /// Number of records (1 to 10000).
     #[arg(long, value_name = "N")]
     count: usize,
-    /// Random seed: the same seed gives the same files (any thread count).
+    /// Random seed, 0 to 9223372036854775807 (2^63 - 1, the largest integer suite.toml can
+    /// hold): the same seed gives the same files (any thread count).
     #[arg(long, value_name = "S")]
     seed: u64,
     /// Output directory (created if needed).
@@ -82,7 +85,9 @@ fn synth(a: SynthArgs) -> Result<ExitCode> {
     };
     // every flag is checked before the directory is created or locked
     check_count(a.count)?;
+    check_seed(a.seed)?;
     p.check()?;
+    check_suite_size(&p, a.count, a.pairs)?;
     let source = synth_source(&p, a.count, a.seed, a.pairs);
     let _lock = pounding::output::lock_output_dir(&a.out)?;
     let records = write_suite(&a.out, &p, a.count, a.seed, a.pairs, &source)

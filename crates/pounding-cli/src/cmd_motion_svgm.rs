@@ -108,7 +108,8 @@ pub struct SvgmArgs {
     /// Number of realisations (1 to 10000).
     #[arg(long, value_name = "N")]
     count: usize,
-    /// Random seed: the same seed gives the same files (any thread count).
+    /// Random seed, 0 to 9223372036854775807 (2^63 - 1, the largest integer manifest.toml can
+    /// hold): the same seed gives the same files (any thread count).
     #[arg(long, value_name = "S")]
     seed: u64,
     /// Output directory (created if needed).
@@ -245,6 +246,7 @@ pub fn svgm(a: SvgmArgs) -> Result<ExitCode> {
     };
     // every flag is checked (and the coherency factored) before the directory is created
     check_count(a.count)?;
+    pounding::ground_motion::svgm::check_seed(a.seed)?;
     let ids = match &a.condition {
         None => {
             let g = Generator::new(&p)?;

@@ -3,8 +3,8 @@
 //! ([`pounding::sim::compare::agreement`]: per law pounded or not, peak force — computed, or the
 //! rigid law's estimate from the impulse —, closing, penetration, governing seat; the spread
 //! between the laws), then the comparison tables (the CSV files' rows, numbers to 6 significant
-//! digits), the overlay figures, every law's warnings and the skipped laws with their reasons,
-//! the wall time per law and the scenario.
+//! digits), the overlay figures, every law's warnings (with every contact that created energy)
+//! and the skipped laws with their reasons, the wall time per law and the scenario.
 //!
 //! The wall times are the page's only non-deterministic bytes; each stands between `<!--wall-->`
 //! and `<!--/wall-->` (the golden tests mask them).
@@ -223,6 +223,7 @@ fn warnings(h: &mut String, ctx: &Job) {
             list(h, law, &own);
         }
     }
+    any |= energy_contacts(h, ctx);
     if !any {
         h.push_str("<p>No law's run has a warning.</p>\n");
     }
@@ -241,6 +242,43 @@ fn warnings(h: &mut String, ctx: &Job) {
         }
         h.push_str("</ul>\n");
     }
+}
+
+/// Every contact that created energy, per law that ran (the entries of `simulate`'s
+/// `summary.json` `"warnings"` for that law; the law's warning says only their number, total
+/// and largest); whether any law had one.
+fn energy_contacts(h: &mut String, ctx: &Job) -> bool {
+    use pounding::output::float_token;
+    let mut any = false;
+    for r in ctx.runs {
+        let Some(ran) = r.ran() else { continue };
+        let created = ran.setup.run_warnings(&ran.sol);
+        if created.is_empty() {
+            continue;
+        }
+        any = true;
+        let _ = writeln!(
+            h,
+            "<h3>{}: energy created, contact by contact</h3>\n<table>\n<tr><th \
+             class=\"l\">contact</th><th class=\"l\">kind</th><th>impact</th><th>t [s]</th>\
+             <th>energy created [J]</th></tr>",
+            esc(&r.law)
+        );
+        for w in &created {
+            let _ = writeln!(
+                h,
+                "<tr><td class=\"l\">{}</td><td class=\"l\">{}</td><td>{}</td><td>{}</td>\
+                 <td>{}</td></tr>",
+                esc(&w.contact),
+                esc(w.kind),
+                w.impact,
+                float_token(w.time),
+                float_token(w.amount)
+            );
+        }
+        h.push_str("</table>\n");
+    }
+    any
 }
 
 /// The wall time per law (between `<!--wall-->` markers: not deterministic).

@@ -4,7 +4,9 @@
 
 use crate::value_error;
 use numpy::PyArray1;
-use pounding::ground_motion::synth::{SynthParams, check_count, suite, synth_source, write_suite};
+use pounding::ground_motion::synth::{
+    SynthParams, check_count, check_seed, check_suite_size, suite, synth_source, write_suite,
+};
 use pounding::input::rename_flags;
 use pounding::spectrum::{SpectrumRequest, spectrum_csv};
 use pyo3::prelude::*;
@@ -93,7 +95,9 @@ fn motion_synth<'py>(
     };
     // every argument is checked before the directory is created or locked
     check_count(count).map_err(|e| bad(&e))?;
+    check_seed(seed).map_err(|e| bad(&e))?;
     p.check().map_err(|e| bad(&e))?;
+    check_suite_size(&p, count, pairs).map_err(|e| bad(&e))?;
     let records = match out {
         Some(dir) => {
             let lock = pounding::output::lock_output_dir(&dir).map_err(|e| bad(&e))?;

@@ -3,8 +3,8 @@
 //!
 //! ```toml
 //! [synth]
-//! count = 20          # records (1..=10000), required
-//! seed = 1            # random seed (≥ 0), required
+//! count = 20          # records (1..=10000; count × components × samples ≤ 5e7), required
+//! seed = 1            # random seed (0..=2^63 − 1), required
 //! pairs = true        # two horizontal components per record (default false)
 //! dt = 0.01           # sample interval [s] (default 0.01)
 //! duration = 20.0     # [s] (default 20)
@@ -22,7 +22,7 @@
 use super::{Ctx, MetaValue, SetRecord};
 use crate::ground_motion::Record;
 use crate::ground_motion::synth::{
-    SynthError, SynthParams, at2_text, check_count, suite as synth_suite,
+    SynthError, SynthParams, at2_text, check_count, check_suite_size, suite as synth_suite,
 };
 use crate::math::Real;
 use crate::toml_schema::line_col;
@@ -152,11 +152,21 @@ pub(super) fn records(
             at(key, offset)
         ));
     }
+    let pairs = s.pairs.as_ref().is_some_and(|b| *b.get_ref());
     let (Some(count), true) = (count_ok, problems.is_empty()) else {
         return Err(problems);
     };
+    // the whole suite is generated in memory: its size is bounded before anything is generated
+    if let Err(SynthError::InvalidParameter { reason, .. }) = check_suite_size(&p, count, pairs) {
+        let reason = reason
+            .replace("--duration", "duration")
+            .replace("--dt", "dt");
+        return Err(vec![format!(
+            "{}: invalid count = {count}: {reason}",
+            at("count", s.count.span().start)
+        )]);
+    }
     let seed = seed as u64;
-    let pairs = s.pairs.as_ref().is_some_and(|b| *b.get_ref());
     let suite = synth_suite(&p, count, seed, pairs).map_err(|e| vec![e.to_string()])?;
     let read = |id: &str, comp: &str, g: &[Real]| -> Result<Record, Vec<String>> {
         let name = format!("{id}_{comp}.AT2 ([synth] of {})", cx.origin);

@@ -364,3 +364,9 @@ pub fn realisations(
 pub fn check_count(count: usize) -> Result<(), SvgmError> {
     super::synth::check_count(count).map_err(from_synth)
 }
+
+/// Checks `seed ≤` [`super::synth::MAX_SEED`] (`--seed`): the manifest records the seed as a
+/// TOML integer.
+pub fn check_seed(seed: u64) -> Result<(), SvgmError> {
+    super::synth::check_seed(seed).map_err(from_synth)
+}

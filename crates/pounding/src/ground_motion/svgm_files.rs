@@ -2,7 +2,7 @@
 //! (`real_0001.csv`: `t,<id1>,<id2>,…`, accelerations in m/s²), `SVGM.txt`, and the manifest
 //! `manifest.toml` (written last).
 
-use super::{Coherency, Conditioned, Generator, SvgmError, SvgmParams, check_count};
+use super::{Coherency, Conditioned, Generator, SvgmError, SvgmParams, check_count, check_seed};
 use crate::math::Real;
 use crate::output::{float_token as f, push_float_token};
 use std::path::{Path, PathBuf};
@@ -328,6 +328,7 @@ pub fn write_set(
 ) -> Result<Vec<String>, WriteSetError> {
     use rayon::prelude::*;
     check_count(count)?;
+    check_seed(seed)?;
     let p = g.params();
     let io = |path: &Path| {
         let path = path.to_path_buf();

@@ -122,6 +122,13 @@ impl Default for SynthParams {
 pub const MAX_COUNT: usize = 10_000;
 /// Largest number of samples of one component.
 pub const MAX_SAMPLES: usize = 10_000_000;
+/// Largest number of values (records × components × samples) of one suite: the suite is
+/// generated in memory (400 MB of `f64`), five times `motion svgm`'s per-realisation bound
+/// [`super::svgm::MAX_VALUES`]; 10000 pairs of the default 20 s at 0.01 s (4.002e7) fit.
+pub const MAX_SUITE_VALUES: usize = 5 * super::svgm::MAX_VALUES;
+/// Largest seed: the seed is written as a TOML integer (`[record.meta] seed`), and TOML
+/// integers stop at 2^63 − 1.
+pub const MAX_SEED: u64 = i64::MAX as u64;
 /// Fewest steps of `dt` in `duration` (a record of fewer is refused).
 pub const MIN_STEPS: usize = 100;
 /// Longest `--duration` \[s\] (about 14 h: half of [`MAX_SAMPLES`] at the default 0.01 s).
@@ -221,7 +228,9 @@ impl SynthParams {
                 ),
             ));
         }
-        if steps < MIN_STEPS as Real {
+        // the step count rounded as the whole-number check above allows (0.7 / 0.007 is
+        // 100.00000000000001 steps in floating point, 0.007 × 100 is 0.7000000000000001)
+        if steps.round() < MIN_STEPS as Real {
             return Err(bad_real(
                 "--duration",
                 self.duration,
@@ -498,6 +507,46 @@ pub fn check_count(count: usize) -> Result<(), SynthError> {
     Ok(())
 }
 
+/// Checks `seed ≤` [`MAX_SEED`] (`--seed`): a larger seed could not be read back from the
+/// files that record it.
+pub fn check_seed(seed: u64) -> Result<(), SynthError> {
+    if seed > MAX_SEED {
+        return Err(bad(
+            "--seed",
+            seed,
+            &format!(
+                "must lie in 0..={MAX_SEED} (2^63 - 1, the largest integer a TOML file holds: \
+                 the seed is written to the suite's manifest)"
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// Checks that the suite of `count` records (two components each with `pairs`) of the checked
+/// parameters `p` holds at most [`MAX_SUITE_VALUES`] values (`--count`): the whole suite is
+/// generated in memory.
+pub fn check_suite_size(p: &SynthParams, count: usize, pairs: bool) -> Result<(), SynthError> {
+    let components = if pairs { 2 } else { 1 };
+    let samples = p.samples();
+    let values = count.saturating_mul(components).saturating_mul(samples);
+    if values > MAX_SUITE_VALUES {
+        return Err(bad(
+            "--count",
+            count,
+            &format!(
+                "with --dt = {} and --duration = {} gives {count} records x {components} \
+                 component(s) x {samples} samples = {values} values in the suite (generated in \
+                 memory); keep count x components x samples at most {MAX_SUITE_VALUES} (fewer \
+                 records, a shorter --duration or a larger --dt)",
+                crate::output::float_token(p.dt),
+                crate::output::float_token(p.duration)
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// The suite of `count` records (in parallel; the result is independent of the thread count).
 pub fn suite(
     p: &SynthParams,
@@ -507,7 +556,9 @@ pub fn suite(
 ) -> Result<Vec<SynthRecord>, SynthError> {
     use rayon::prelude::*;
     check_count(count)?;
+    check_seed(seed)?;
     p.check()?;
+    check_suite_size(p, count, pairs)?;
     let width = count.to_string().len().max(3);
     Ok((0..count)
         .into_par_iter()

@@ -80,3 +80,4 @@ mod study_vocab;
 mod svgm;
 mod svgm_condition;
 mod synth;
+mod synth_limits;
