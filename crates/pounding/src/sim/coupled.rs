@@ -59,30 +59,33 @@ pub(crate) struct Dense {
 #[derive(Debug, Clone)]
 struct Rows {
     start: Vec<usize>,
-    entries: Vec<(usize, Real)>,
+    col: Vec<usize>,
+    val: Vec<Real>,
 }
 
 impl Rows {
     fn of(a: &DMatrix<Real>) -> Self {
-        let mut start = vec![0];
-        let mut entries = Vec::new();
+        let (mut start, mut col, mut val) = (vec![0], Vec::new(), Vec::new());
         for i in 0..a.nrows() {
-            entries.extend(
-                (0..a.ncols())
-                    .filter(|&j| a[(i, j)] != 0.0)
-                    .map(|j| (j, a[(i, j)])),
-            );
-            start.push(entries.len());
+            for j in (0..a.ncols()).filter(|&j| a[(i, j)] != 0.0) {
+                col.push(j);
+                val.push(a[(i, j)]);
+            }
+            start.push(col.len());
         }
-        Rows { start, entries }
+        Rows { start, col, val }
     }
 
     /// `out = A v`.
     fn mul_into(&self, v: &State, out: &mut State) {
-        for (i, o) in out.iter_mut().enumerate() {
-            *o = self.entries[self.start[i]..self.start[i + 1]]
-                .iter()
-                .fold(0.0, |s, (j, a)| s + a * v[*j]);
+        let v = v.as_slice();
+        for (o, w) in out.iter_mut().zip(self.start.windows(2)) {
+            let (cols, vals) = (&self.col[w[0]..w[1]], &self.val[w[0]..w[1]]);
+            let mut s = 0.0;
+            for (j, a) in cols.iter().zip(vals) {
+                s += a * v[*j];
+            }
+            *o = s;
         }
     }
 }
