@@ -29,6 +29,9 @@ mod sim_run;
 #[path = "sim_records.rs"]
 pub(crate) mod sim_records;
 
+#[path = "sim_accuracy.rs"]
+mod sim_accuracy;
+
 /// Arguments of `pounding simulate`.
 #[derive(clap::Args)]
 pub struct Args {
@@ -108,6 +111,18 @@ pub struct Args {
     /// i mod N = K − 1.
     #[arg(long, value_name = "K/N", requires = "batch")]
     pub shard: Option<String>,
+    /// Estimate the time-discretisation error of every summary quantity from two reruns at
+    /// dt/2 and dt/4 (accuracy.csv, accuracy.json; about 7 times the run's cost).
+    #[arg(long, conflicts_with = "batch")]
+    pub error_estimate: bool,
+    /// Halve dt until the estimated relative error of every governing quantity (seat ratio,
+    /// joint closing and opening, bearing deformation, rotation, contact force, pier drift) is at
+    /// most TOL: `1%` or `0.01`. Implies --error-estimate.
+    #[arg(long, value_name = "TOL", value_parser = parse_tol, conflicts_with = "batch")]
+    pub tol: Option<f64>,
+    /// With --tol: the most halvings of dt (default 3; the finest run is at dt / 2^(N+2)).
+    #[arg(long, value_name = "N", requires = "tol", value_parser = clap::value_parser!(u32).range(0..=8))]
+    pub max_refinements: Option<u32>,
 }
 
 /// The scenario file `path`, or the built-in default.
@@ -118,9 +133,25 @@ pub(crate) fn load_scenario(path: Option<&Path>) -> Result<Scenario> {
     })
 }
 
+/// `--tol`: a relative tolerance, `1%` or `0.01` ([`pounding::sim::accuracy::parse_tol`]).
+fn parse_tol(s: &str) -> Result<f64, String> {
+    pounding::sim::accuracy::parse_tol(s)
+}
+
 /// `--csv-units`: `g` or `m/s2`.
 fn parse_units(s: &str) -> Result<AccelUnits, String> {
     AccelUnits::from_name(s).ok_or_else(|| format!("invalid units {s:?}: use g or m/s2"))
+}
+
+/// `--error-estimate` / `--tol` / `--max-refinements` as the library's settings (`None`: a plain
+/// run).
+pub(crate) fn accuracy_settings(args: &Args) -> Option<pounding::sim::accuracy::AccuracySettings> {
+    let mut a = pounding::sim::accuracy::AccuracySettings::default();
+    if let Some(n) = args.max_refinements {
+        a.max_refinements = n as usize;
+    }
+    a.tol = args.tol;
+    (args.error_estimate || args.tol.is_some()).then_some(a)
 }
 
 /// The scenario with the command line's replacements (`--record`, `--csv-units`,

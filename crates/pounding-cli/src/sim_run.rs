@@ -29,7 +29,21 @@ pub fn run(
     super::note_rounded_duration(setup.settings());
     setup.settings_mut().progress = super::time_estimate();
     let t_sim = Instant::now();
-    let sol = setup.run().map_err(|e| anyhow!("{e}"))?;
+    let (sol, accuracy) = match super::accuracy_settings(args) {
+        None => (setup.run().map_err(|e| anyhow!("{e}"))?, None),
+        Some(a) => {
+            let (sol, run) = pounding::sim::accuracy::run_with_estimate(&setup, a, |dt| {
+                eprintln!("accuracy: running dt = {} s", float_token(dt));
+                super::time_estimate()
+            })
+            .map_err(|e| anyhow!("{e}"))?;
+            // the answer's step and history interval, for the files written from `setup`
+            let k = run.chosen;
+            setup.settings_mut().dt = run.dts[k];
+            setup.settings_mut().history_stride <<= k;
+            (sol, Some(run))
+        }
+    };
     let sim_secs = t_sim.elapsed().as_secs_f64();
     super::print_run_warnings(
         setup.ground(),
@@ -57,6 +71,11 @@ pub fn run(
     let summary =
         pounding::assessment::check_summary::run_summary_json_text(&setup, &sol, scenario);
     wr("summary.json", summary.as_bytes())?;
+    if let Some(run) = &accuracy {
+        wr("accuracy.csv", run.csv().as_bytes())?;
+        let text = serde_json::to_string_pretty(&run.json())? + "\n";
+        wr("accuracy.json", text.as_bytes())?;
+    }
     let tables = sol.tables();
     for t in &tables {
         wr(&t.file_name(), t.csv().as_bytes())?;
@@ -64,6 +83,9 @@ pub fn run(
     let mut files: Vec<String> = ["summary.json", "history.csv", "impacts.csv"]
         .map(String::from)
         .into();
+    if accuracy.is_some() {
+        files.extend(["accuracy.csv", "accuracy.json"].map(String::from));
+    }
     // the plan animation of either form (the two-deck model's is its two-segment bridge)
     let traj = setup.trajectories_json(&sol);
     wr("trajectories.json", traj.as_bytes())?;
@@ -118,6 +140,11 @@ pub fn run(
         ),
         Some(Err(e)) => eprintln!("code check: not evaluated: {e}"),
         None => {}
+    }
+    if let Some(run) = &accuracy
+        && let Some(code) = super::sim_accuracy::print(run, out)
+    {
+        return Ok(code);
     }
     if sol.status != SimStatus::Completed {
         // outputs are written (they show where the run went wrong), but the run did not succeed

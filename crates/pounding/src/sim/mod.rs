@@ -58,6 +58,7 @@
 //! contact law with Newton). A new integrator or contact treatment is a new stepper; a new
 //! monitored quantity goes into the driver and is then reported for every law.
 
+pub mod accuracy;
 pub mod batch;
 pub mod bridge;
 pub mod compare;

@@ -45,6 +45,7 @@ mod scratch;
 mod set_synth;
 mod shapes;
 mod sim;
+mod sim_accuracy;
 mod sim_backwalls;
 mod sim_bearings;
 mod sim_bridge;

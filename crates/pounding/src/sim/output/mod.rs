@@ -88,6 +88,8 @@ pub const SIM_OUTPUTS: &[&str] = &[
     "hysteresis.png",
     "report.html",
     "trajectories.json",
+    "accuracy.csv",
+    "accuracy.json",
 ];
 
 /// The two-deck name of a seated end of the two-deck bridge ([`crate::sim::SEAT_ENDS`]): deck `j` is segment
