@@ -79,6 +79,7 @@ fn help_lists_subcommands() {
     }
 }
 
+mod accuracy;
 mod batch;
 mod bridge_batch;
 mod bridge_plots;
