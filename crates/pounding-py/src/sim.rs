@@ -112,6 +112,8 @@ struct Run {
 #[pyclass(module = "pounding._core", frozen)]
 pub struct SimRun {
     run: Run,
+    /// The text of `accuracy.json` (`error_estimate` / `tol`), else `None`.
+    accuracy: Option<String>,
 }
 
 #[pymethods]
@@ -123,6 +125,10 @@ impl SimRun {
             &self.run.sol,
             (&self.run.scenario.0, &self.run.scenario.1),
         )
+    }
+    /// The text of `accuracy.json` when the run estimated its error, else `None`.
+    fn accuracy_json(&self) -> Option<String> {
+        self.accuracy.clone()
     }
     /// The text of `impacts.csv`.
     fn impacts_csv(&self) -> String {
@@ -192,7 +198,7 @@ impl SimRun {
 /// the only component along y. `scale`, `dt`, `duration`, `law`, `csv_units`, `record_dt` are
 /// the CLI's flags.
 #[pyfunction]
-#[pyo3(signature = (path=None, text=None, origin="scenario", record=None, array=None, csv_units=None, record_dt=None, scale=None, dt=None, duration=None, law=None))]
+#[pyo3(signature = (path=None, text=None, origin="scenario", record=None, array=None, csv_units=None, record_dt=None, scale=None, dt=None, duration=None, law=None, error_estimate=false, tol=None, max_refinements=None))]
 #[allow(clippy::too_many_arguments)]
 fn simulate_run(
     py: Python<'_>,
@@ -207,8 +213,12 @@ fn simulate_run(
     dt: Option<f64>,
     duration: Option<f64>,
     law: Option<String>,
+    error_estimate: bool,
+    tol: Option<&str>,
+    max_refinements: Option<usize>,
 ) -> PyResult<SimRun> {
     let csv_units = units(csv_units)?;
+    let accuracy = accuracy_settings(error_estimate, tol, max_refinements)?;
     let sc = load(path, text, origin)?;
     let batch = array.is_some();
     let flags = Flags {
@@ -241,17 +251,64 @@ fn simulate_run(
         *setup.records_mut() = [r.name.clone(), "none".into()];
     }
     let (setup, sol) = crate::interruptible(py, move || {
-        let sol = setup.run();
+        let sol = match accuracy {
+            None => setup.run().map(|s| (s, None)),
+            Some(a) => pounding::sim::accuracy::run_with_estimate(&setup, a, |_| {
+                Default::default()
+            })
+            .map(|(sol, run)| {
+                // the answer's step and history interval, for what is made from `setup`
+                setup.settings_mut().dt = run.dts[run.chosen];
+                setup.settings_mut().history_stride <<= run.chosen;
+                (sol, Some(run))
+            }),
+        };
         (setup, sol)
     })?;
-    let sol = sol.map_err(value_error)?;
+    let (sol, accuracy) = sol.map_err(value_error)?;
+    let accuracy = accuracy
+        .map(|a| serde_json::to_string_pretty(&a.json()).map(|t| t + "\n"))
+        .transpose()
+        .map_err(value_error)?;
     Ok(SimRun {
         run: Run {
             setup,
             sol,
             scenario,
         },
+        accuracy,
     })
+}
+
+/// `error_estimate` / `tol` (`"1%"` or `"0.01"`, as `--tol`) / `max_refinements` (0 to 8) as
+/// the library's settings; `None` for a plain run.
+fn accuracy_settings(
+    error_estimate: bool,
+    tol: Option<&str>,
+    max_refinements: Option<usize>,
+) -> PyResult<Option<pounding::sim::accuracy::AccuracySettings>> {
+    let mut a = pounding::sim::accuracy::AccuracySettings {
+        tol: tol
+            .map(pounding::sim::accuracy::parse_tol)
+            .transpose()
+            .map_err(|e| value_error(format!("tol: {e}")))?,
+        ..Default::default()
+    };
+    match max_refinements {
+        Some(_) if a.tol.is_none() => {
+            return Err(value_error(
+                "max_refinements applies with tol (the halvings of dt allowed to meet it)",
+            ));
+        }
+        Some(n) if n > 8 => {
+            return Err(value_error(format!(
+                "max_refinements = {n}: at most 8 (the finest run at dt / 1024)"
+            )));
+        }
+        Some(n) => a.max_refinements = n,
+        None => {}
+    }
+    Ok((error_estimate || a.tol.is_some()).then_some(a))
 }
 
 /// Runs a batch: every record (a path, or samples `(name, values, dt)`) at every scale, or every

@@ -225,3 +225,37 @@ def test_piers_backwalls_and_shear_keys_equal_the_cli(cli, root, tmp_path):
         assert list(cols) == lines[0].split(",")
         data = np.array([[float(x) for x in l.split(",")] for l in lines[1:]])
         assert np.array_equal(np.column_stack(list(cols.values())), data), name
+
+
+def test_error_estimate_matches_the_cli(tmp_path, cli):
+    """``error_estimate=True`` gives the CLI's ``accuracy.json`` and the plain run's summary."""
+    import json
+
+    res = pounding.simulate(duration=2.0, error_estimate=True)
+    plain = pounding.simulate(duration=2.0)
+    assert res.summary == plain.summary
+    out = tmp_path / "acc"
+    cli("simulate", "--duration", "2", "--error-estimate", "--out", str(out))
+    assert res.accuracy == json.loads((out / "accuracy.json").read_text())
+    assert res.accuracy["runs_dt_s"] == [1e-3, 5e-4, 2.5e-4]
+    assert plain.accuracy is None
+    import pickle
+
+    assert pickle.loads(pickle.dumps(res)).accuracy == res.accuracy
+    names = [q["quantity"] for q in res.accuracy["quantities"]]
+    assert "max_joint_opening_m" in names and "impacts" in names
+
+
+def test_tol_picks_a_step_and_bad_tolerances_raise():
+    res = pounding.simulate(duration=3.0, dt=4e-3, tol="2%")
+    assert res.accuracy["met"] is True
+    assert res.summary["dt_s"] == res.accuracy["dt_s"] < 4e-3
+    same = pounding.simulate(duration=3.0, dt=4e-3, tol=0.02)
+    assert same.accuracy == res.accuracy
+    for bad in ["1", 1.5, "0%", "x"]:
+        with pytest.raises(ValueError, match="tol"):
+            pounding.simulate(duration=0.5, tol=bad)
+    with pytest.raises(ValueError, match="max_refinements"):
+        pounding.simulate(duration=0.5, max_refinements=2)
+    with pytest.raises(TypeError):
+        pounding.simulate(duration=0.5, tol=True)

@@ -23,10 +23,15 @@ class _StoredRun:
     as the core's ``SimRun``, answering from ``summary.json``, ``history.csv``, ``impacts.csv``."""
 
     def __init__(self, summary_json: str, status: str, warnings: List[str], history_csv: str,
-                 impacts_csv: str, tables: Sequence[Any] = ()) -> None:
+                 impacts_csv: str, tables: Sequence[Any] = (),
+                 accuracy_json: Optional[str] = None) -> None:
         self._summary, self.status, self._warnings = summary_json, status, list(warnings)
         self._history, self._impacts = history_csv, impacts_csv
         self._tables = [(n, list(h), np.array(a, dtype=np.float64)) for n, h, a in tables]
+        self._accuracy = accuracy_json
+
+    def accuracy_json(self) -> Optional[str]:
+        return self._accuracy
 
     def tables(self):
         return [(n, list(h), a.copy()) for n, h, a in self._tables]
@@ -53,9 +58,9 @@ class _StoredRun:
 
 
 def _restore(summary_json, status, warnings_, history_csv, impacts_csv,
-             tables=()) -> "SimulationResult":
+             tables=(), accuracy_json=None) -> "SimulationResult":
     return SimulationResult(_StoredRun(summary_json, status, warnings_, history_csv, impacts_csv,
-                                       tables))
+                                       tables, accuracy_json))
 
 
 class SimulationResult:
@@ -76,6 +81,11 @@ class SimulationResult:
         self.warnings: List[str] = list(run.warnings())
         self._history: Optional[Dict[str, np.ndarray]] = None
         self._tables: Optional[Dict[str, Dict[str, np.ndarray]]] = None
+        acc = run.accuracy_json()
+        #: ``accuracy.json`` as a dict (``error_estimate`` / ``tol``), else ``None``: the step of
+        #: the answer, whether ``tol`` was met, and per quantity its three values, estimated
+        #: error, relative error, observed order and trust word.
+        self.accuracy: Optional[Dict[str, Any]] = None if acc is None else json.loads(acc)
 
     @property
     def ok(self) -> bool:
@@ -169,7 +179,7 @@ class SimulationResult:
         r = self._run
         tables = [(n, h, a.tolist()) for n, h, a in r.tables()]
         return (_restore, (r.summary_json(), self.status, list(self.warnings), r.history_csv(),
-                           r.impacts_csv(), tables))
+                           r.impacts_csv(), tables, r.accuracy_json()))
 
     def __eq__(self, other: object) -> bool:
         """Equal when the status, warnings, the three output texts and the tables are equal."""
@@ -193,6 +203,9 @@ def simulate(
     law: Optional[str] = None,
     csv_units: Optional[str] = None,
     record_dt: Optional[float] = None,
+    error_estimate: bool = False,
+    tol: Any = None,
+    max_refinements: Optional[int] = None,
 ) -> SimulationResult:
     """Run one seismic time history, as ``pounding simulate`` (no files, no figures).
 
@@ -207,6 +220,12 @@ def simulate(
         scale: multiplies the ground-motion scale factors (``--scale``).
         dt, duration, law, csv_units, record_dt: the CLI's ``--dt``, ``--duration``, ``--law``,
             ``--csv-units``, ``--record-dt``.
+        error_estimate: also run at dt/2 and dt/4 and estimate every summary quantity's
+            discretisation error (``--error-estimate``): :attr:`SimulationResult.accuracy`.
+        tol: halve dt until every governing quantity's estimated relative error is at most
+            ``tol`` (``--tol``): ``"1%"``, ``"0.01"`` or ``0.01``; the result is the run at the
+            step that met it (``accuracy["met"]`` says whether one did).
+        max_refinements: with ``tol``, the most halvings of dt (default 3, at most 8).
 
     Returns:
         A :class:`SimulationResult`; a run ending ``Diverged`` (or another untrustworthy status)
@@ -222,7 +241,20 @@ def simulate(
     """
     path, array = record_arg(record)
     _no_record_dt_for_arrays(record_dt, [array])
+    if isinstance(tol, bool) or not (tol is None or isinstance(tol, (str, int, float))):
+        raise TypeError(f"tol must be a number or a string such as '1%', not {type(tol).__name__}")
+    if isinstance(error_estimate, bool) is False:
+        raise TypeError("error_estimate must be True or False")
+    if max_refinements is not None and (
+        isinstance(max_refinements, bool) or not isinstance(max_refinements, int)
+    ):
+        raise TypeError("max_refinements must be an int")
+    if max_refinements is not None and max_refinements < 0:
+        raise ValueError(f"max_refinements = {max_refinements}: must be 0 or more")
     run = _core.simulate_run(
+        error_estimate=error_estimate,
+        tol=None if tol is None else (tol if isinstance(tol, str) else repr(float(tol))),
+        max_refinements=max_refinements,
         record=path, array=array, csv_units=csv_units,
         record_dt=optional_float("record_dt", record_dt), scale=optional_float("scale", scale),
         dt=optional_float("dt", dt), duration=optional_float("duration", duration), law=law,
