@@ -1,0 +1,434 @@
+//! The two-deck model of the original study: two decks (annular sectors in the S arrangement,
+//! or straight / skewed decks of [`crate::shape`]) meeting at one joint, their bearings, damping,
+//! contact law, optional rigid abutments beyond their far ends, and the problem of a run
+//! ([`SimProblem`]). It runs as the bridge of two segments ([`super::bridge::BridgeModel::from_pair`]).
+
+use super::dofs;
+use super::model::{self, DeckBody, LinearSystem};
+use super::options::{DampingModel, JointContact};
+use super::{Bearing, SimError};
+use crate::geometry::ContactCase;
+use crate::ground_motion::GroundMotion;
+use crate::math::{Real, Vector};
+use crate::pair::SArrangement;
+use crate::shape::DeckShape;
+use nalgebra::{Matrix3, Matrix6};
+
+/// The structural model: decks, joint, bearings, damping, contact law, seats.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SimModel {
+    /// The two decks (spec §4); both must have the same width.
+    pub arrangement: SArrangement,
+    /// Joint opening `g ≥ 0` in the reference pose (`M_1 = (0, g)`) \[m\].
+    pub gap: Real,
+    /// Bearings of deck 1 (points relative to `M_1`, reference pose).
+    pub bearings1: Vec<Bearing>,
+    /// Bearings of deck 2 (points relative to `M_2`, reference pose).
+    pub bearings2: Vec<Bearing>,
+    /// Rayleigh damping ratio `ζ ∈ [0, 1)` at each deck's two lowest distinct frequencies.
+    pub damping_ratio: Real,
+    /// Coulomb friction coefficient `μ ≥ 0` at the joint.
+    pub friction: Real,
+    /// Newton restitution coefficient `ε_N ∈ [0, 1]`.
+    pub restitution: Real,
+    /// Seat length `> 0` \[m\]: an end whose seat displacement exceeds it is unseated.
+    pub seat_length: Real,
+    /// Normal contact law of the joint (default: rigid, the LCP impact law).
+    pub contact: JointContact,
+    /// Damping model (default: Rayleigh with [`SimModel::damping_ratio`]).
+    pub damping_model: DampingModel,
+    /// Deck shapes `[deck 1, deck 2]` in the frames of [`crate::shape`] (deck 1 = body frame
+    /// moved by `(0, g)`, deck 2 = body frame turned by π); `None` = the curved decks of
+    /// `arrangement` (which is then the only geometry used). When set, `arrangement` is ignored;
+    /// both joint faces must have the same length so that the decks meet face to face.
+    pub shapes: Option<[DeckShape; 2]>,
+    /// Optional rigid abutment beyond the far end of deck 1 / deck 2.
+    pub abutments: [Option<SimAbutment>; 2],
+}
+
+/// A rigid abutment (the ground) beyond the far end face of a deck.
+///
+/// Its face is the line parallel to the deck's far end face in the reference pose, at distance
+/// `gap` along that face's outward normal `n_out`. Each corner `c_k` of the far face is a contact
+/// (body a = the deck, body b = the ground) with normal `n = −n_out` (into the deck), tangent
+/// `t = perp(n) = (−n_y, n_x)` and signed gap `g_k = (P_k − A)·n`, `A` = far-face midpoint `+ gap
+/// n_out` (reference pose), `P_k` the corner in the current pose; the same impact law
+/// (ε_N, μ) as the joint. The abutment face is taken long enough for both corners.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SimAbutment {
+    /// Gap `≥ 0` between the far end face and the abutment face \[m\].
+    pub gap: Real,
+    /// Seat length `> 0` of that deck end on the abutment \[m\] (replaces
+    /// [`SimModel::seat_length`] for the far end of this deck).
+    pub seat_length: Real,
+}
+
+/// A contact of the simulation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SimContact {
+    /// Corner of one deck's joint face against the other deck's joint face (spec §5.3).
+    Joint(ContactCase),
+    /// Far-face corner `corner ∈ {0, 1}` (the shape's `c0`, `c1`) of deck `deck ∈ {1, 2}` against
+    /// its abutment.
+    Abutment {
+        /// 1 or 2.
+        deck: usize,
+        /// 0 or 1.
+        corner: usize,
+    },
+}
+
+impl SimContact {
+    /// Output name: `deck1-inner`, … (joint, [`ContactCase::name`]) or `abutment1-c0`, ….
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::Joint(c) => c.name(),
+            Self::Abutment { deck, corner } => match (deck, corner) {
+                (1, 0) => "abutment1-c0",
+                (1, _) => "abutment1-c1",
+                (_, 0) => "abutment2-c0",
+                _ => "abutment2-c1",
+            },
+        }
+    }
+}
+
+impl PartialEq<ContactCase> for SimContact {
+    fn eq(&self, other: &ContactCase) -> bool {
+        *self == SimContact::Joint(*other)
+    }
+}
+
+/// The four corners of a deck's two end faces, relative to its face midpoint `M_j`, reference
+/// pose (spec §4): joint face `(±W/2, 0)`, far face at the angle `β`.
+pub fn end_corner_points(arrangement: &SArrangement, deck: usize) -> [Vector; 4] {
+    let d = if deck == 1 {
+        &arrangement.deck1
+    } else {
+        &arrangement.deck2
+    };
+    let body = DeckBody::new(d, deck, 0.0);
+    [
+        body.joint_corners[0] - body.face_mid,
+        body.joint_corners[1] - body.face_mid,
+        body.far_corners[0] - body.face_mid,
+        body.far_corners[1] - body.face_mid,
+    ]
+}
+
+/// The four end-face corners of a deck of any shape relative to its joint-face midpoint `M_j`,
+/// reference pose, global orientation (deck 2 turned by π): `[joint c0, joint c1, far c0, far c1]`.
+pub fn shape_corner_points(shape: &DeckShape, deck: usize) -> [Vector; 4] {
+    let body = DeckBody::from_shape(shape, deck, 0.0);
+    [
+        body.joint_corners[0] - body.face_mid,
+        body.joint_corners[1] - body.face_mid,
+        body.far_corners[0] - body.face_mid,
+        body.far_corners[1] - body.face_mid,
+    ]
+}
+
+impl SimModel {
+    /// A model with the default bearing layout: one bearing of stiffness `k1` (deck 1) / `k2`
+    /// (deck 2) at each of the four end-face corners of each deck.
+    #[allow(clippy::too_many_arguments)]
+    pub fn with_corner_bearings(
+        arrangement: SArrangement,
+        gap: Real,
+        k1: Real,
+        k2: Real,
+        damping_ratio: Real,
+        friction: Real,
+        restitution: Real,
+        seat_length: Real,
+    ) -> Self {
+        let b = |deck: usize, k: Real| {
+            end_corner_points(&arrangement, deck)
+                .into_iter()
+                .map(|point| Bearing {
+                    point,
+                    stiffness: k,
+                })
+                .collect()
+        };
+        SimModel {
+            arrangement,
+            gap,
+            bearings1: b(1, k1),
+            bearings2: b(2, k2),
+            damping_ratio,
+            friction,
+            restitution,
+            seat_length,
+            contact: JointContact::Rigid,
+            damping_model: DampingModel::Rayleigh,
+            shapes: None,
+            abutments: [None, None],
+        }
+    }
+
+    /// A model of two decks of any shape ([`SimModel::shapes`]) with one bearing of stiffness
+    /// `k1` / `k2` at each of the four end-face corners of each deck and no abutments
+    /// (`arrangement` is set to the default curved decks and ignored).
+    #[allow(clippy::too_many_arguments)]
+    pub fn with_shapes(
+        shapes: [DeckShape; 2],
+        gap: Real,
+        k1: Real,
+        k2: Real,
+        damping_ratio: Real,
+        friction: Real,
+        restitution: Real,
+        seat_length: Real,
+    ) -> Self {
+        let b = |deck: usize, k: Real| {
+            shape_corner_points(&shapes[deck - 1], deck)
+                .into_iter()
+                .map(|point| Bearing {
+                    point,
+                    stiffness: k,
+                })
+                .collect()
+        };
+        SimModel {
+            bearings1: b(1, k1),
+            bearings2: b(2, k2),
+            gap,
+            damping_ratio,
+            friction,
+            restitution,
+            seat_length,
+            shapes: Some(shapes),
+            ..Self::default_bridge()
+        }
+    }
+
+    /// Deck masses `[m1, m2]` \[kg\].
+    pub fn masses(&self) -> [Real; 2] {
+        let b = self.bodies();
+        [b[0].mass.mass, b[1].mass.mass]
+    }
+
+    /// The decks' reference-pose bodies (global frame of spec §4).
+    pub fn deck_bodies(&self) -> [DeckBody; 2] {
+        self.bodies()
+    }
+
+    /// The built-in default of `pounding simulate`: R = 100 m, β = 60°, W = 10 m, t = 0.5 m,
+    /// ρ = 2500 kg/m³ (1309 t per deck) for both decks; 4 corner bearings of 2.02e7 N/m (deck 1)
+    /// and 8.97e6 N/m (deck 2); ζ = 5 %; g = 0.05 m; seat 0.4 m; μ = 0.5; ε_N = 0.5.
+    pub fn default_bridge() -> Self {
+        let deck = crate::shape::Deck {
+            radius: 100.0,
+            angle: 60f64.to_radians(),
+            width: 10.0,
+            thickness: 0.5,
+            density: 2500.0,
+        };
+        let arr = SArrangement {
+            deck1: deck,
+            deck2: deck,
+        };
+        Self::with_corner_bearings(arr, 0.05, 2.02e7, 8.97e6, 0.05, 0.5, 0.5, 0.4)
+    }
+
+    /// Validates every parameter (errors name it).
+    pub fn validate(&self) -> Result<(), SimError> {
+        self.validate_options()?;
+        match &self.shapes {
+            None => {
+                model::validate_deck(&self.arrangement.deck1, 1)?;
+                model::validate_deck(&self.arrangement.deck2, 2)?;
+                let (w1, w2) = (self.arrangement.deck1.width, self.arrangement.deck2.width);
+                if w1 != w2 {
+                    return Err(SimError::invalid(
+                        "width (deck 2)",
+                        w2,
+                        &format!("both decks must have the same width (deck 1: {w1})"),
+                    ));
+                }
+            }
+            Some(shapes) => {
+                for (j, sh) in shapes.iter().enumerate() {
+                    validate_shape(sh, j + 1)?;
+                }
+                let b = self.bodies();
+                let (h1, h2) = (b[0].half_face, b[1].half_face);
+                if (h1 - h2).abs() > 1e-9 * h1.max(h2) {
+                    return Err(SimError::invalid(
+                        "joint face length (deck 2)",
+                        2.0 * h2,
+                        &format!(
+                            "the joint faces must have the same length to meet face to face \
+                             (deck 1: {})",
+                            2.0 * h1
+                        ),
+                    ));
+                }
+            }
+        }
+        for (j, a) in self.abutments.iter().enumerate() {
+            if let Some(a) = a {
+                if !(a.gap.is_finite() && a.gap >= 0.0) {
+                    return Err(SimError::invalid(
+                        format!("abutment gap (deck {})", j + 1),
+                        a.gap,
+                        "must be finite and >= 0",
+                    ));
+                }
+                if !(a.seat_length.is_finite() && a.seat_length > 0.0) {
+                    return Err(SimError::invalid(
+                        format!("abutment seat_length (deck {})", j + 1),
+                        a.seat_length,
+                        "must be finite and > 0",
+                    ));
+                }
+            }
+        }
+        let chk = |name: &str, v: Real, ok: bool, reason: &str| {
+            if ok && v.is_finite() {
+                Ok(())
+            } else {
+                Err(SimError::invalid(name, v, reason))
+            }
+        };
+        chk("gap", self.gap, self.gap >= 0.0, "must be >= 0")?;
+        chk(
+            "damping_ratio",
+            self.damping_ratio,
+            (0.0..1.0).contains(&self.damping_ratio),
+            "must lie in [0, 1)",
+        )?;
+        chk("mu", self.friction, self.friction >= 0.0, "must be >= 0")?;
+        chk(
+            "eps_n",
+            self.restitution,
+            (0.0..=1.0).contains(&self.restitution),
+            "must lie in [0, 1]",
+        )?;
+        chk(
+            "seat_length",
+            self.seat_length,
+            self.seat_length > 0.0,
+            "must be > 0",
+        )?;
+        for (j, bs) in [(1, &self.bearings1), (2, &self.bearings2)] {
+            for (i, b) in bs.iter().enumerate() {
+                chk(
+                    &format!("bearing stiffness (deck {j}, bearing {})", i + 1),
+                    b.stiffness,
+                    b.stiffness >= 0.0,
+                    "must be >= 0",
+                )?;
+                // the rotational stiffness k r² must stay finite (1e300 m would overflow it)
+                let kr2 = b.stiffness * (b.point.x * b.point.x + b.point.y * b.point.y);
+                for v in [b.point.x, b.point.y] {
+                    chk(
+                        &format!("bearing point (deck {j}, bearing {})", i + 1),
+                        v,
+                        kr2.is_finite() && v * v < 1e100,
+                        "must be finite, with |coordinate| < 1e50 m and k r² finite",
+                    )?;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    pub(crate) fn bodies(&self) -> [DeckBody; 2] {
+        match &self.shapes {
+            None => [
+                DeckBody::new(&self.arrangement.deck1, 1, self.gap),
+                DeckBody::new(&self.arrangement.deck2, 2, self.gap),
+            ],
+            Some(sh) => [
+                DeckBody::from_shape(&sh[0], 1, self.gap),
+                DeckBody::from_shape(&sh[1], 2, self.gap),
+            ],
+        }
+    }
+
+    /// Assembles `M`, `K`, `C` and the natural frequencies (errors if `ζ > 0` and a deck has no
+    /// stiffness at all).
+    pub fn linear_system(&self) -> Result<LinearSystem, SimError> {
+        self.validate()?;
+        let bodies = self.bodies();
+        let mut mass = Matrix6::zeros();
+        let mut stiffness = Matrix6::zeros();
+        let mut damping = Matrix6::zeros();
+        let mut frequencies = [[0.0; 3]; 2];
+        let mut rayleigh = [(0.0, 0.0); 2];
+        let dofs = dofs::Dofs::plan_rigid(2);
+        for (j, bs) in [&self.bearings1, &self.bearings2].into_iter().enumerate() {
+            let mp = bodies[j].mass;
+            let mj = Matrix3::from_diagonal(&nalgebra::Vector3::new(mp.mass, mp.mass, mp.inertia));
+            let kj = model::bearing_stiffness(&bodies[j], bs);
+            let om = model::deck_frequencies(&mp, &kj);
+            if om.iter().any(|w| !w.is_finite()) {
+                return Err(SimError::invalid(
+                    format!("mass (deck {})", j + 1),
+                    mp.mass,
+                    "the bearing stiffness over this mass (or inertia) overflows; use physical magnitudes",
+                ));
+            }
+            let (a0, a1) =
+                model::rayleigh_coefficients(self.damping_ratio, &om).ok_or_else(|| {
+                    SimError::invalid(
+                        "damping_ratio",
+                        self.damping_ratio,
+                        &format!(
+                            "deck {} has no bearing stiffness, so Rayleigh damping is undefined",
+                            j + 1
+                        ),
+                    )
+                })?;
+            let (cj, a0, a1) = self.damping_of(&mj, &kj, a0, a1);
+            let o = dofs.start(j);
+            mass.fixed_view_mut::<3, 3>(o, o).copy_from(&mj);
+            stiffness.fixed_view_mut::<3, 3>(o, o).copy_from(&kj);
+            damping.fixed_view_mut::<3, 3>(o, o).copy_from(&cj);
+            frequencies[j] = om;
+            rayleigh[j] = (a0, a1);
+        }
+        Ok(LinearSystem {
+            mass,
+            stiffness,
+            damping,
+            frequencies,
+            rayleigh,
+        })
+    }
+}
+
+/// Re-validates one deck shape through its constructor; parameter names get the deck number
+/// (`L1`, `skew2`, `R1`, …; `width`, `thickness`, `density` keep their name).
+fn validate_shape(shape: &DeckShape, j: usize) -> Result<(), SimError> {
+    shape
+        .validate()
+        .map_err(|e| SimError::Geometry(e.for_deck(j)))
+}
+
+/// Everything a run needs besides the settings: model, ground motion, initial state.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SimProblem {
+    /// The structure.
+    pub model: SimModel,
+    /// The ground acceleration.
+    pub ground: GroundMotion,
+    /// Initial displacements `q(0)` (spec §5.1 order) \[m, rad\].
+    pub q0: [Real; 6],
+    /// Initial velocities `u(0)` relative to the ground \[m/s, rad/s\].
+    pub u0: [Real; 6],
+}
+
+impl SimProblem {
+    /// At rest in the reference pose.
+    pub fn at_rest(model: SimModel, ground: GroundMotion) -> Self {
+        Self {
+            model,
+            ground,
+            q0: [0.0; 6],
+            u0: [0.0; 6],
+        }
+    }
+}
