@@ -24,6 +24,7 @@
 //! a verification of all LCP conditions against the original data.
 
 pub mod enumerate;
+pub mod fc2d;
 mod full;
 pub mod io;
 pub mod lemke;

@@ -5,6 +5,9 @@
 //! by Lemke (fixed-size kernels; enumeration, then the frictionless LCP as fallbacks), the
 //! impulses applied `u_{k+1} = u_free + Ŵ⁻¹ W P`, the post-solve law check
 //! ([`crate::law_check::check_laws`]) and the contact dissipation `−½ (γ_k + γ_{k+1})·P`.
+//! More than [`MAX_FIXED_CONTACTS`] active contacts (permanent contact at several joints) are
+//! first given to the block Gauss–Seidel of [`crate::lcp::fc2d`], whose answer is verified
+//! before it is used; Lemke is the fallback.
 #![allow(clippy::needless_range_loop)]
 
 use super::contact::{Direction, State, dot_dir};
@@ -270,6 +273,22 @@ impl RigidStepper {
             a[2 * n + i][n + i] = -1.0;
             b[i] = asm.gam_free[i] + eps(i) * asm.gam_pre[i].min(0.0);
             b[n + i] = asm.gam_free[n + i];
+        }
+        // many contacts at once: the block Gauss–Seidel, verified (Lemke's dense tableau is
+        // O(n²) per pivot and fails on the degenerate problems of permanent contact)
+        if n > MAX_FIXED_CONTACTS {
+            let mus: Vec<Real> = (0..n).map(mu).collect();
+            let mut bb: Vec<Real> = b[..n].to_vec();
+            bb.extend_from_slice(&b[n..2 * n]);
+            let sol = lcp::fc2d::solve_nsgs(g, &bb, &mus, &lcp::fc2d::Fc2dSettings::default());
+            if sol.converged {
+                let mut z = vec![0.0; m];
+                for i in 0..n {
+                    z[i] = sol.p[i];
+                    z[n + i] = sol.p[n + i] + mus[i] * sol.p[i];
+                }
+                return (z, true, true);
+            }
         }
         // without friction at every active contact the tangential rows only say `P_T = 0`
         // (with `μ = 0` the friction-cone rows are degenerate: a rounding-level tangential

@@ -35,6 +35,7 @@ mod impact;
 mod impact_report;
 mod impact_split;
 mod lcp;
+mod lcp_fc2d;
 mod lemke_degenerate;
 mod manifest_csv;
 mod physics_check;
