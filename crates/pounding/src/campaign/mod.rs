@@ -78,6 +78,13 @@ pub enum CampaignError {
     Store(String),
 }
 
+/// The hash of a scenario's text (as stored in `campaign.json`).
+pub fn scenario_fingerprint(text: &str) -> u64 {
+    let mut h = Fnv::default();
+    h.text(text);
+    h.0
+}
+
 /// FNV-1a (64 bits): a stable hash of the campaign's inputs, the same on every machine.
 #[derive(Debug, Clone, Copy)]
 pub struct Fnv(pub u64);

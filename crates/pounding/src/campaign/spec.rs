@@ -174,11 +174,7 @@ impl Campaign {
                 format!("cannot read the scenario {}: {e}", sc_path.display()),
             )
         })?;
-        let scenario_fingerprint = {
-            let mut h = Fnv::default();
-            h.text(scenario.text());
-            h.0
-        };
+        let scenario_fingerprint = super::scenario_fingerprint(scenario.text());
         let set = c.records.as_ref().map(|r| rel(r.get_ref()));
         let mut study = Study::read(scenario, sc_path.parent(), set.as_deref())?;
         match (&c.levels_g, &c.scales) {
