@@ -82,6 +82,7 @@ fn help_lists_subcommands() {
 mod batch;
 mod bridge_batch;
 mod bridge_plots;
+mod campaign;
 mod check;
 mod compare;
 mod compare_energy;
