@@ -161,6 +161,22 @@ impl Store {
         })
     }
 
+    /// The existing store of `c` in `dir`, as a worker of a distributed run joins it: its
+    /// `campaign.json` must describe `c`; nothing is removed (other workers may be writing).
+    pub fn attach(dir: &Path, c: &Campaign) -> Result<Store, CampaignError> {
+        let s = Store::existing(dir)?;
+        if s.meta != Meta::of(c) {
+            return Err(CampaignError::Store(format!(
+                "{} holds another campaign (fingerprint {}, this one {:016x}): every worker must \
+                 read the same spec, scenario and records",
+                dir.display(),
+                s.meta.fingerprint,
+                c.fingerprint
+            )));
+        }
+        Ok(s)
+    }
+
     /// An existing store (`campaign.json` read, nothing changed).
     pub fn existing(dir: &Path) -> Result<Store, CampaignError> {
         Ok(Store {
