@@ -39,17 +39,22 @@ impl Campaign {
     /// order), `progress()` after each run.
     pub fn run_part(&self, p: usize, progress: &(dyn Fn() + Sync)) -> Vec<(RunSpec, RunRow)> {
         let st = &self.study;
-        let settings = summary_settings(&st.setup.settings);
+        let settings: Vec<_> = self
+            .variant_runs
+            .iter()
+            .map(|v| summary_settings(&v.setup.settings))
+            .collect();
         self.part_range(p)
             .into_par_iter()
             .map(|i| {
                 let spec = self.run_spec(i);
+                let v = &self.variant_runs[spec.variant];
                 let row = run_one(
-                    &st.setup.problem,
-                    &settings,
+                    &v.setup.problem,
+                    &settings[spec.variant],
                     &st.set,
                     &self.plan,
-                    &st.limits,
+                    &v.limits,
                     (spec.entry, spec.stripe),
                 );
                 progress();

@@ -25,6 +25,7 @@ pub mod exec;
 pub mod spec;
 pub mod store;
 pub mod table;
+pub mod variants;
 
 pub use spec::{Campaign, RunSpec};
 pub use store::Store;
@@ -70,6 +71,9 @@ pub enum CampaignError {
         /// The cause.
         cause: std::io::Error,
     },
+    /// A bad `[[variant]]` table or override (file, variant, key, line).
+    #[error(transparent)]
+    Variant(#[from] crate::assessment::variant::VariantError),
     /// The output directory (lock, kind).
     #[error(transparent)]
     Output(#[from] crate::output::OutputError),

@@ -30,6 +30,12 @@ type Sp<T> = Option<Spanned<T>>;
 struct File {
     campaign: Option<Spanned<Table<CampaignSec>>>,
     outputs: Option<Spanned<Table<OutputsSec>>>,
+    /// `[[variant]]` tables, read by [`super::variants`].
+    #[allow(dead_code)]
+    variant: Option<toml::Value>,
+    /// `[grid]`, read by [`super::variants`].
+    #[allow(dead_code)]
+    grid: Option<toml::Value>,
 }
 
 #[derive(Deserialize, Default)]
@@ -79,8 +85,10 @@ pub struct Campaign {
     pub study: Study,
     /// The IM of every entry and the stripes.
     pub plan: Plan,
-    /// Variant names (one, [`BASE_VARIANT`], until variants are given).
+    /// Variant names (one, [`BASE_VARIANT`], without `[[variant]]` or `[grid]`).
     pub variants: Vec<String>,
+    /// Each variant's bridge and limit states, in the order of `variants`.
+    pub variant_runs: Vec<super::variants::VariantRun>,
     /// Runs per part.
     pub runs_per_part: usize,
     /// Whether the per-end seat ratios are stored.
@@ -176,6 +184,7 @@ impl Campaign {
         })?;
         let scenario_fingerprint = super::scenario_fingerprint(scenario.text());
         let set = c.records.as_ref().map(|r| rel(r.get_ref()));
+        let base_scenario = scenario.clone();
         let mut study = Study::read(scenario, sc_path.parent(), set.as_deref())?;
         match (&c.levels_g, &c.scales) {
             (Some(_), Some(s)) => {
@@ -222,6 +231,8 @@ impl Campaign {
             ));
         }
         let plan = study.plan()?;
+        let variant_runs =
+            super::variants::variants(text, origin, &sc_path, &base_scenario, &study)?;
         let name = match &c.name {
             Some(n) => n.get_ref().clone(),
             None => path
@@ -233,7 +244,8 @@ impl Campaign {
             name,
             study,
             plan,
-            variants: vec![BASE_VARIANT.to_string()],
+            variants: variant_runs.iter().map(|v| v.name.clone()).collect(),
+            variant_runs,
             runs_per_part,
             seats,
             fingerprint: 0,
@@ -271,8 +283,9 @@ impl Campaign {
         h.text(self.stripe_column());
         h.floats(self.plan.values());
         h.floats(&self.plan.entry_im);
-        for v in &self.variants {
-            h.text(v);
+        for v in &self.variant_runs {
+            h.text(&v.name);
+            h.bytes(&v.fingerprint.to_le_bytes());
         }
         h.bytes(&(self.runs_per_part as u64).to_le_bytes());
         for c in self.column_names() {
