@@ -298,3 +298,67 @@ fn bad_specs_name_file_key_and_line() {
         assert!(!d.join("o").exists(), "case {i}: wrote outputs");
     }
 }
+
+/// The stored columns of a file, without those naming the run (`run`, `id`, `variant`).
+fn results(path: &Path) -> Vec<(String, Values)> {
+    let r = Reader::open(path).unwrap();
+    let mut all = pounding::campaign::table::Columns::default();
+    for g in 0..r.row_groups() {
+        all.append(r.row_group(g, None).unwrap()).unwrap();
+    }
+    all.cols
+        .into_iter()
+        .filter(|(n, _)| !["run", "id", "variant"].contains(&n.as_str()))
+        .collect()
+}
+
+/// Keeps rows `range` of every column.
+fn rows(cols: &[(String, Values)], range: std::ops::Range<usize>) -> Vec<(String, Values)> {
+    let cut = |v: &Values| match v {
+        Values::Int(x) => Values::Int(x[range.clone()].to_vec()),
+        Values::Float(x) => Values::Float(x[range.clone()].to_vec()),
+        Values::Text(x) => Values::Text(x[range.clone()].to_vec()),
+        Values::Bool(x) => Values::Bool(x[range.clone()].to_vec()),
+    };
+    cols.iter().map(|(n, v)| (n.clone(), cut(v))).collect()
+}
+
+#[test]
+fn grid_variants_run_the_overridden_scenarios() {
+    let spec = "[campaign]\nscenario = \"viaduct.toml\"\nruns_per_part = 4\n\n[grid]\n\
+                \"bridge.restrainer_k\" = [2.5e7, 1e8]\n\"bridge.gap\" = [0.02, 0.05]\n";
+    let d = dir_with("grid", spec, 3, 2.0);
+    let p = |s: &str| d.join(s).display().to_string();
+    let out = ok(&["campaign", "run", &p("spec.toml"), "--out", &p("g")]);
+    assert!(out.contains("merged 36 runs"), "{out}");
+    let grid = results(&d.join("g/runs.parquet"));
+    // grid point 2 (the last key fastest: restrainer_k = 1e8, gap = 0.02) is the campaign of
+    // the scenario edited by hand
+    let base = std::fs::read_to_string(d.join("viaduct.toml")).unwrap();
+    let edited = base.replace("restrainer_k = 5.0e7", "restrainer_k = 1.0e8");
+    assert_ne!(edited, base);
+    assert!(edited.contains("gap = 0.02\n"));
+    std::fs::write(d.join("edited.toml"), edited).unwrap();
+    std::fs::write(
+        d.join("edited-spec.toml"),
+        "[campaign]\nscenario = \"edited.toml\"\nruns_per_part = 4\n",
+    )
+    .unwrap();
+    ok(&["campaign", "run", &p("edited-spec.toml"), "--out", &p("e")]);
+    let edited = results(&d.join("e/runs.parquet"));
+    assert_eq!(rows(&grid, 18..27), edited);
+    // and the variants differ from each other (the restrainers act)
+    assert_ne!(rows(&grid, 0..9), rows(&grid, 18..27));
+    // a key the scenario does not know is refused with the spec's line
+    std::fs::write(
+        d.join("bad.toml"),
+        "[campaign]\nscenario = \"viaduct.toml\"\n[grid]\n\"bridge.restrainer_kk\" = [1.0]\n",
+    )
+    .unwrap();
+    let (code, _, err) = run_capture(&["campaign", "run", &p("bad.toml"), "--out", &p("b")]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("bad.toml:4") && err.contains("restrainer_kk"),
+        "{err}"
+    );
+}
