@@ -61,6 +61,9 @@ pub fn run(args: Args) -> Result<ExitCode> {
     match args.command {
         Cmd::Run(a) => run_campaign(a),
         Cmd::Merge(a) => {
+            pounding::output::check_output_dir_free(&a.out)?;
+            // the stores merged may include `out` itself (then its lock is taken once, here)
+            let _lock = pounding::output::lock_output_dir(&a.out)?;
             let m = store::merge(&a.stores, &a.out)?;
             println!("{}", merged_line(&m));
             Ok(exit_of(&m))
@@ -132,7 +135,7 @@ impl Bar {
             Some(b) => b.inc(1),
             None => {
                 let step = self.total.div_ceil(10).max(1);
-                if n % step == 0 || n == self.total {
+                if n.is_multiple_of(step) || n == self.total {
                     let s = self.t0.elapsed().as_secs_f64();
                     let rate = n as f64 / s.max(1e-9);
                     eprintln!(

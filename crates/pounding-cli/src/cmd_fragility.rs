@@ -111,7 +111,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
     }
     let t_runs = Instant::now();
     let rows = match &args.from_store {
-        Some(store) => pounding::campaign::store::study_rows(
+        Some(store) => pounding::campaign::read::study_rows(
             store,
             &st,
             &plan,

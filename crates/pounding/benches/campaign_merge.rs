@@ -130,7 +130,7 @@ fn main() {
     reset_peak();
     let t0 = Instant::now();
     let mut n = 0;
-    store::for_each_group(&m.path, &mut |c| {
+    pounding::campaign::read::for_each_group(&m.path, &mut |c| {
         n += c.rows();
         Ok(())
     })
