@@ -362,3 +362,24 @@ fn grid_variants_run_the_overridden_scenarios() {
         "{err}"
     );
 }
+
+#[test]
+fn the_example_campaign_expands_as_its_comments_say() {
+    let path =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/campaign/viaduct-grid.toml");
+    let c = pounding::campaign::Campaign::load(&path).unwrap();
+    // 3 restrainer stiffnesses × 2 gaps, 20 pairs, 8 stripes
+    assert_eq!(c.variants.len(), 6);
+    assert_eq!(c.runs(), 960);
+    assert_eq!(c.parts(), 30);
+    assert_eq!(
+        c.variants[1],
+        "bridge.restrainer_k=25000000,bridge.gap=0.05"
+    );
+    let ids: std::collections::HashSet<String> = c.expand().into_iter().map(|r| r.id).collect();
+    assert_eq!(ids.len(), 960);
+    assert_eq!(
+        c.run_spec(8 * 20 + 3).id,
+        format!("{}/SYN001/level_g=0.5", c.variants[1])
+    );
+}
