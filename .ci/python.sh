@@ -25,10 +25,10 @@ trap 'rm -rf "$venv"' EXIT
 "$py" -m venv "$venv" >/dev/null 2>&1 || skip "python3 -m venv failed (install python3-venv)"
 export PATH="$venv/bin:$PATH"  # maturin's PEP 517 hook runs the maturin binary from PATH
 # Third-party packages first: failing here means no network / no PyPI, a skip.
-if ! "$venv/bin/pip" install -q "maturin>=1.5,<2" pytest pandas "dask[distributed]" \
+if ! "$venv/bin/pip" install -q "maturin>=1.5,<2" pytest pandas pyarrow "dask[distributed]" \
   > "$venv/pip.log" 2>&1; then
   tail -3 "$venv/pip.log" | sed 's/^/  pip: /'
-  skip "pip could not install maturin, pytest, pandas, dask[distributed] (no network or PyPI?)"
+  skip "pip could not install maturin, pytest, pandas, pyarrow, dask[distributed] (no network or PyPI?)"
 fi
 # Our package: a build failure here is a real failure (no build isolation: the maturin above).
 export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$PWD/target}"

@@ -40,24 +40,33 @@ pub struct Args {
     /// probabilities under the spatially variable motion over the uniform one).
     #[arg(long)]
     pub compare_uniform: bool,
+    /// Fit the runs stored by `pounding campaign run` (a store directory or its runs.parquet)
+    /// instead of running them; the store must hold this scenario's runs of the same record set
+    /// and stripes (checked run by run).
+    #[arg(long, conflicts_with = "compare_uniform")]
+    pub from_store: Option<PathBuf>,
+    /// With --from-store: the campaign variant to fit (default: the only one).
+    #[arg(long, requires = "from_store")]
+    pub variant: Option<String>,
 }
 
 /// Reads the scenario, its `[fragility]` settings, the record set and binds the limit states
 /// ([`Study::read`]); prints the records' warnings.
-fn read(args: &Args) -> Result<Study> {
+fn read(args: &Args) -> Result<(Study, u64)> {
     let scenario = Scenario::load(&args.scenario)?;
+    let fingerprint = pounding::campaign::scenario_fingerprint(scenario.text());
     let st = Study::read(scenario, args.scenario.parent(), args.set.as_deref())?;
     for w in st.record_warnings() {
         eprintln!("warning: {w}");
     }
-    Ok(st)
+    Ok((st, fingerprint))
 }
 
 /// Runs the command.
 pub fn run(args: Args) -> Result<ExitCode> {
     let t0 = Instant::now();
     pounding::input::check_threads(args.threads).map_err(anyhow::Error::msg)?;
-    let st = read(&args)?;
+    let (st, fingerprint) = read(&args)?;
     let uniform = match args.compare_uniform {
         false => None,
         true => Some(st.uniform_counterpart().ok_or_else(|| {
@@ -101,7 +110,16 @@ pub fn run(args: Args) -> Result<ExitCode> {
         pb.set_style(style);
     }
     let t_runs = Instant::now();
-    let rows = pool.install(|| st.run(&plan, &|| pb.inc(1)));
+    let rows = match &args.from_store {
+        Some(store) => pounding::campaign::read::study_rows(
+            store,
+            &st,
+            &plan,
+            fingerprint,
+            args.variant.as_deref(),
+        )?,
+        None => pool.install(|| st.run(&plan, &|| pb.inc(1))),
+    };
     // the uniform counterpart over the same stripes
     let rows_u = uniform
         .as_ref()

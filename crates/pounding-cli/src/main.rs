@@ -5,6 +5,7 @@
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
+mod cmd_campaign;
 mod cmd_check;
 mod cmd_compare;
 mod cmd_fragility;
@@ -56,6 +57,8 @@ enum Command {
     Fragility(cmd_fragility::Args),
     /// Code check of seat lengths (EC8-2, AASHTO LRFD and Guide Spec, Caltrans, JRA) and joint gaps (SRSS, DDC) of a scenario.
     Check(cmd_check::Args),
+    /// Campaigns of many runs (a bridge × a record set × stripes) stored as resumable Parquet parts; local threads, Slurm shards, merge.
+    Campaign(cmd_campaign::Args),
 }
 
 /// The message of a panic raised by `print!`/`eprint!` when standard output or error cannot be
@@ -80,6 +83,7 @@ fn run(cli: Cli) -> ExitCode {
         Command::Motion(a) => cmd_motion::run(a),
         Command::Fragility(a) => cmd_fragility::run(a),
         Command::Check(a) => cmd_check::run(a),
+        Command::Campaign(a) => cmd_campaign::run(a),
     };
     match result {
         Ok(code) => code,

@@ -13,6 +13,7 @@ use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 
 mod assess;
+mod campaign;
 mod compare;
 mod impact;
 mod lcp;
@@ -112,5 +113,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     assess::register(m)?;
     motion::register(m)?;
     compare::register(m)?;
+    campaign::register(m)?;
     Ok(())
 }

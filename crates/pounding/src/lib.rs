@@ -41,6 +41,7 @@
 
 pub mod analytic;
 pub mod assessment;
+pub mod campaign;
 pub mod contact;
 pub mod contact_law;
 pub mod element;

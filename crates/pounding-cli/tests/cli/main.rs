@@ -74,6 +74,7 @@ fn help_lists_subcommands() {
         "motion",
         "fragility",
         "check",
+        "campaign",
     ] {
         assert!(s.contains(sub), "--help lacks {sub}: {s}");
     }
@@ -83,6 +84,7 @@ mod accuracy;
 mod batch;
 mod bridge_batch;
 mod bridge_plots;
+mod campaign;
 mod check;
 mod compare;
 mod compare_energy;

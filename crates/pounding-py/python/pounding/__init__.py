@@ -13,6 +13,8 @@ same numbers (bit for bit), numpy arrays and pandas tables instead of files.
 * :func:`fragility` — fragility curves over a record set (``runs.csv`` rows and the fits of
   ``fragility.csv``/``fragility.json``; optionally those files in a directory);
 * :func:`spectrum` — elastic response spectra, RotD50/RotD100 of pairs (``spectrum.csv`` rows);
+* :mod:`pounding.campaign` — ``run(spec, client)``: campaigns of many runs on threads or a Dask
+  cluster, stored as resumable Parquet parts (``pounding campaign``);
 * :mod:`pounding.motion` — ``synth(count, seed, ...)``: synthetic accelerograms (numpy arrays in
   g; optionally the CLI's ``.AT2`` files and ``suite.toml``).
 
@@ -25,7 +27,7 @@ CLI fails without a result. Numerical trouble is a *status* in the result, never
 Heavy calls release the GIL.
 """
 
-from . import lcp, motion
+from . import campaign, lcp, motion
 from ._assess import FragilityResult, fragility
 from ._compare import ComparisonResult, compare
 from ._core import SolverError, __version__
@@ -35,6 +37,7 @@ from ._spectrum import spectrum
 from ._study import StudyResult, default_study_scenario, study
 
 __all__ = [
+    "campaign",
     "lcp",
     "SolverError",
     "ImpactResult",

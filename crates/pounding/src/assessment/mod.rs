@@ -46,6 +46,7 @@ pub mod run;
 pub mod settings;
 pub mod study;
 pub mod svgm;
+pub mod variant;
 
 /// Largest factor a record may be scaled by (by a level's `L / IM` or an IDA scale): a record
 /// scaled by more is no longer a plausible ground motion of that intensity (practice keeps scale

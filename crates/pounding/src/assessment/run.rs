@@ -147,76 +147,90 @@ pub fn run_all(
     limits: &[BoundLimit],
     progress: &(dyn Fn() + Sync),
 ) -> Vec<RunRow> {
-    let settings = SimSettings {
-        history_stride: usize::MAX,
-        ..settings.clone()
-    };
+    let settings = summary_settings(settings);
     let ns = plan.values().len();
     (0..set.records.len() * ns)
         .into_par_iter()
         .map(|i| {
-            let (a, b) = (i / ns, i % ns);
-            let (im_g, sf) = plan.point(a, b);
-            let e = &set.records[a];
-            let p: Result<BridgeProblem, _> = if e.supports.is_empty() {
-                Ok(entry_problem(base, &e.x, e.y.as_ref(), sf))
-            } else {
-                crate::sim::batch::supports_problem(base, &e.supports, sf)
-            };
-            let mut seats = (Vec::new(), None);
-            let (status, error, lim, warnings) =
-                match p.and_then(|p| simulate(&p, &settings).map(|s| (p, s))) {
-                    Err(err) => (
-                        "error".to_string(),
-                        err.to_string(),
-                        vec![(None, Real::NAN); limits.len()],
-                        0,
-                    ),
-                    Ok((p, sol)) => {
-                        let ok = sol.status == SimStatus::Completed;
-                        if ok {
-                            let s = &sol.summary;
-                            seats = (
-                                s.seats.iter().map(|e| e.ratio).collect(),
-                                (s.governing_seat < s.seats.len()).then_some(s.governing_seat),
-                            );
-                        }
-                        let lim = limits
-                            .iter()
-                            .map(|l| {
-                                if ok {
-                                    l.evaluate(&sol.summary)
-                                } else {
-                                    (None, Real::NAN)
-                                }
-                            })
-                            .collect();
-                        let advice = sol.time_step_advice.as_ref();
-                        let warnings =
-                            crate::sim::output::input_warnings(&p.ground, sol.dt, advice).len()
-                                + crate::sim::output::run_warnings(
-                                    crate::sim::output::Layout::Bridge,
-                                    &sol,
-                                )
-                                .len();
-                        (format!("{:?}", sol.status), String::new(), lim, warnings)
-                    }
-                };
+            let row = run_one(base, &settings, set, plan, limits, (i / ns, i % ns));
             progress();
-            RunRow {
-                record: a,
-                stripe: b,
-                im_g,
-                scale_factor: sf,
-                status,
-                error,
-                limits: lim,
-                warnings,
-                seats: seats.0,
-                governing_seat: seats.1,
-            }
+            row
         })
         .collect()
+}
+
+/// The settings of runs that keep only their summary (no history rows).
+pub fn summary_settings(settings: &SimSettings) -> SimSettings {
+    SimSettings {
+        history_stride: usize::MAX,
+        ..settings.clone()
+    }
+}
+
+/// One run: entry `a` at stripe `b` (`settings` as [`summary_settings`] gives them), its
+/// status, limit states, seat ratios and warnings.
+pub fn run_one(
+    base: &BridgeProblem,
+    settings: &SimSettings,
+    set: &RecordSet,
+    plan: &Plan,
+    limits: &[BoundLimit],
+    (a, b): (usize, usize),
+) -> RunRow {
+    let (im_g, sf) = plan.point(a, b);
+    let e = &set.records[a];
+    let p: Result<BridgeProblem, _> = if e.supports.is_empty() {
+        Ok(entry_problem(base, &e.x, e.y.as_ref(), sf))
+    } else {
+        crate::sim::batch::supports_problem(base, &e.supports, sf)
+    };
+    let mut seats = (Vec::new(), None);
+    let (status, error, lim, warnings) = match p
+        .and_then(|p| simulate(&p, settings).map(|s| (p, s)))
+    {
+        Err(err) => (
+            "error".to_string(),
+            err.to_string(),
+            vec![(None, Real::NAN); limits.len()],
+            0,
+        ),
+        Ok((p, sol)) => {
+            let ok = sol.status == SimStatus::Completed;
+            if ok {
+                let s = &sol.summary;
+                seats = (
+                    s.seats.iter().map(|e| e.ratio).collect(),
+                    (s.governing_seat < s.seats.len()).then_some(s.governing_seat),
+                );
+            }
+            let lim = limits
+                .iter()
+                .map(|l| {
+                    if ok {
+                        l.evaluate(&sol.summary)
+                    } else {
+                        (None, Real::NAN)
+                    }
+                })
+                .collect();
+            let advice = sol.time_step_advice.as_ref();
+            let warnings = crate::sim::output::input_warnings(&p.ground, sol.dt, advice).len()
+                + crate::sim::output::run_warnings(crate::sim::output::Layout::Bridge, &sol).len();
+            (format!("{:?}", sol.status), String::new(), lim, warnings)
+        }
+    };
+    RunRow {
+        record: a,
+        stripe: b,
+        im_g,
+        scale_factor: sf,
+        status,
+        error,
+        limits: lim,
+        warnings,
+        seats: seats.0,
+        governing_seat: seats.1,
+    }
 }
 
 /// `runs.csv`: `record`, the metadata columns (sorted names), `level_g` (stripes) or `scale`

@@ -83,3 +83,4 @@ mod svgm;
 mod svgm_condition;
 mod synth;
 mod synth_limits;
+mod variant;

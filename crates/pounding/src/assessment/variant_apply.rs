@@ -1,0 +1,468 @@
+//! Applying a [`Variant`] to a scenario's text: the edits, the merged text and its line map.
+
+use super::{Step, Variant, VariantError, get, render_path};
+use crate::toml_schema::line_col;
+use std::fmt::Display;
+use toml::de::{DeTable, DeValue};
+
+/// Where a line of the merged text comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Source {
+    /// 1-based line of the base scenario.
+    Base(usize),
+    /// 1-based line of the variants file.
+    Variant(usize),
+}
+
+/// A scenario's text with a variant's overrides applied.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Applied {
+    /// The merged TOML text (the base's lines, with overridden values replaced in place and added
+    /// keys on new lines after their table's header).
+    pub text: String,
+    /// Per 1-based line of `text` (index `line − 1`): its source.
+    lines: Vec<Source>,
+}
+
+impl Applied {
+    /// Rewrites every `{base_origin}:{line}` of `message` (a message about the merged text read
+    /// under the name `base_origin`) to the line's true source: the base's line, or
+    /// `{variants_origin}:{line}` for a line holding a variant's value.
+    pub fn relabel(&self, message: &str, base_origin: &str, variants_origin: &str) -> String {
+        let pat = format!("{base_origin}:");
+        let mut out = String::new();
+        let mut rest = message;
+        while let Some(i) = rest.find(&pat) {
+            out.push_str(&rest[..i]);
+            let after = &rest[i + pat.len()..];
+            let digits = after.chars().take_while(char::is_ascii_digit).count();
+            let src = after[..digits]
+                .parse::<usize>()
+                .ok()
+                .and_then(|l| self.lines.get(l.wrapping_sub(1)));
+            match src {
+                Some(Source::Base(l)) => out.push_str(&format!("{base_origin}:{l}")),
+                Some(Source::Variant(l)) => out.push_str(&format!("{variants_origin}:{l}")),
+                None => out.push_str(&rest[i..i + pat.len() + digits]),
+            }
+            rest = &after[digits..];
+        }
+        out.push_str(rest);
+        out
+    }
+}
+
+enum Edit {
+    /// Replace `start..end` of the base by `text` (the line of the override: `line`).
+    Replace {
+        start: usize,
+        end: usize,
+        text: String,
+        line: usize,
+    },
+    /// Insert the line `key = value` at `at` (a line start).
+    Insert {
+        at: usize,
+        key: String,
+        value: toml::Value,
+        line: usize,
+    },
+}
+
+impl Edit {
+    fn at(&self) -> usize {
+        match self {
+            Edit::Replace { start, .. } => *start,
+            Edit::Insert { at, .. } => *at,
+        }
+    }
+}
+
+impl Variant {
+    /// Applies every override to the scenario text `base` (`variants_origin` names the variants
+    /// file in errors). Errors are those of the paths (module documentation); the result is not
+    /// checked as a scenario ([`Variant::apply_checked`] does).
+    pub fn apply(&self, base: &str, variants_origin: &str) -> Result<Applied, VariantError> {
+        self.apply_first(base, variants_origin, self.overrides.len())
+    }
+
+    /// Applies the overrides and checks the result with `check` (the caller's reading of a
+    /// scenario, e.g. parse, build and validate; it reads the merged text under the base's name
+    /// `base_origin`). When `check` fails, the overrides are applied one more at a time to find
+    /// the first after which it fails: the error names that override (variants file, variant,
+    /// key, its line) and carries `check`'s message with the merged text's lines relabelled to
+    /// their sources ([`Applied::relabel`]). A failure already with no override applied (the
+    /// base itself) is named as the variant's.
+    pub fn apply_checked<E: Display>(
+        &self,
+        base: &str,
+        base_origin: &str,
+        variants_origin: &str,
+        check: impl Fn(&str) -> Result<(), E>,
+    ) -> Result<Applied, VariantError> {
+        let all = self.apply(base, variants_origin)?;
+        let Err(e) = check(&all.text) else {
+            return Ok(all);
+        };
+        for n in 1..=self.overrides.len() {
+            let part = self.apply_first(base, variants_origin, n)?;
+            if let Err(e) = check(&part.text) {
+                let o = &self.overrides[n - 1];
+                return Err(VariantError::Key {
+                    origin: variants_origin.into(),
+                    line: o.line,
+                    variant: self.name.clone(),
+                    key: o.key.clone(),
+                    message: format!(
+                        "{} = {}: {}",
+                        o.key,
+                        o.value,
+                        part.relabel(&e.to_string(), base_origin, variants_origin)
+                    ),
+                });
+            }
+        }
+        Err(VariantError::Key {
+            origin: variants_origin.into(),
+            line: self.line,
+            variant: self.name.clone(),
+            key: "name".into(),
+            message: all.relabel(&e.to_string(), base_origin, variants_origin),
+        })
+    }
+
+    /// The first `n` overrides applied.
+    fn apply_first(
+        &self,
+        base: &str,
+        variants_origin: &str,
+        n: usize,
+    ) -> Result<Applied, VariantError> {
+        let doc = DeTable::parse(base).map_err(|e| VariantError::Syntax {
+            origin: variants_origin.into(),
+            message: format!("the base scenario does not read as TOML: {e}"),
+        })?;
+        let mut edits: Vec<Edit> = Vec::new();
+        for o in &self.overrides[..n] {
+            let err = |message: String| VariantError::Key {
+                origin: variants_origin.into(),
+                line: o.line,
+                variant: self.name.clone(),
+                key: o.key.clone(),
+                message,
+            };
+            match locate(doc.get_ref(), &o.path).map_err(&err)? {
+                Found::Value(start, end) => edits.push(Edit::Replace {
+                    start,
+                    end,
+                    text: o.value.to_string(),
+                    line: o.line,
+                }),
+                Found::Missing { table, at } => {
+                    let rest = &o.path[at..];
+                    let Some(keys) = rest
+                        .iter()
+                        .map(|s| match s {
+                            Step::Key(k) => Some(k.clone()),
+                            Step::Index(_) => None,
+                        })
+                        .collect::<Option<Vec<String>>>()
+                    else {
+                        return Err(err(format!(
+                            "the base scenario has no `{}`: an array element cannot be added",
+                            render_path(&o.path[..at + 1])
+                        )));
+                    };
+                    let offset = header_end(base, &o.path[..table]).ok_or_else(|| {
+                        err(format!(
+                            "the base scenario has no `{}`, and its table `{}` is not written \
+                             under a [header] line there; write the key in the base scenario \
+                             (any value) and override it",
+                            o.key,
+                            render_path(&o.path[..table])
+                        ))
+                    })?;
+                    let value = keys[1..].iter().rev().fold(o.value.clone(), |v, k| {
+                        toml::Value::Table([(k.clone(), v)].into_iter().collect())
+                    });
+                    insert(&mut edits, offset, &keys[0], value, o.line).map_err(err)?;
+                }
+            }
+        }
+        Ok(merge(base, edits))
+    }
+}
+
+/// Adds an insertion, merging it with an earlier one of the same key at the same place.
+fn insert(
+    edits: &mut Vec<Edit>,
+    at: usize,
+    key: &str,
+    value: toml::Value,
+    line: usize,
+) -> Result<(), String> {
+    for e in edits.iter_mut() {
+        if let Edit::Insert {
+            at: a,
+            key: k,
+            value: v,
+            ..
+        } = e
+            && *a == at
+            && k == key
+        {
+            return merge_value(v, value);
+        }
+    }
+    edits.push(Edit::Insert {
+        at,
+        key: key.into(),
+        value,
+        line,
+    });
+    Ok(())
+}
+
+fn merge_value(into: &mut toml::Value, add: toml::Value) -> Result<(), String> {
+    match (into, add) {
+        (toml::Value::Table(a), toml::Value::Table(b)) => {
+            for (k, v) in b {
+                match a.get_mut(&k) {
+                    Some(x) => merge_value(x, v)?,
+                    None => {
+                        a.insert(k, v);
+                    }
+                }
+            }
+            Ok(())
+        }
+        _ => Err("set twice".into()),
+    }
+}
+
+enum Found {
+    /// The value's span.
+    Value(usize, usize),
+    /// `path[at]` is missing from the table at `path[..table]`.
+    Missing { table: usize, at: usize },
+}
+
+/// Finds `path` in the base document.
+fn locate(doc: &DeTable, path: &[Step]) -> Result<Found, String> {
+    let mut t = doc;
+    let mut j = 0;
+    let mut table = 0;
+    while j < path.len() {
+        let Step::Key(k) = &path[j] else {
+            return Err(format!(
+                "`{}` is a table, not an array",
+                render_path(&path[..j])
+            ));
+        };
+        let Some(v) = get(t, k) else {
+            return Ok(Found::Missing { table, at: j });
+        };
+        let mut v = v;
+        j += 1;
+        if let (DeValue::Array(a), Some(Step::Index(i))) = (v.get_ref(), path.get(j)) {
+            v = a.get(*i).ok_or_else(|| {
+                format!(
+                    "the base scenario's `{}` has {} entries: index {i} is beyond them (0-based)",
+                    render_path(&path[..j]),
+                    a.len()
+                )
+            })?;
+            j += 1;
+        }
+        if j == path.len() {
+            return match v.get_ref() {
+                DeValue::Table(_) => Err(format!(
+                    "`{}` is a table in the base scenario: override its keys one by one",
+                    render_path(path)
+                )),
+                DeValue::Array(a) if !a.is_empty() && a.iter().all(|x| x.get_ref().is_table()) => {
+                    Err(format!(
+                        "`{}` is an array of tables in the base scenario: override the keys of \
+                         its elements (`{}[0].KEY`)",
+                        render_path(path),
+                        render_path(path)
+                    ))
+                }
+                _ => Ok(Found::Value(v.span().start, v.span().end)),
+            };
+        }
+        match v.get_ref() {
+            DeValue::Table(x) => {
+                t = x;
+                table = j;
+            }
+            other => {
+                return Err(format!(
+                    "`{}` is a {} in the base scenario, not a table",
+                    render_path(&path[..j]),
+                    other.type_str()
+                ));
+            }
+        }
+    }
+    Ok(Found::Missing {
+        table,
+        at: path.len(),
+    })
+}
+
+/// A header line's table path, normalised (`[[ joint ]]` → `(true, "joint")`), or `None`.
+fn header(line: &str) -> Option<(bool, String)> {
+    let l = line.trim();
+    let l = l.split('#').next().unwrap_or("").trim();
+    let arr = l.starts_with("[[");
+    let inner = l.strip_prefix('[')?.strip_suffix(']')?;
+    let inner = if arr {
+        inner.strip_prefix('[')?.strip_suffix(']')?
+    } else {
+        inner
+    };
+    let name: String = inner
+        .chars()
+        .filter(|c| !c.is_whitespace() && *c != '"' && *c != '\'')
+        .collect();
+    Some((arr, name))
+}
+
+/// Byte offset just after the header line of the table at `path` (the root: 0), or `None` when
+/// the table has no header of its own (defined by dotted keys or inline, or a path this does not
+/// handle: at most one array index, on the first key).
+fn header_end(text: &str, path: &[Step]) -> Option<usize> {
+    if path.is_empty() {
+        return Some(0);
+    }
+    let (arr_name, arr_index, rest): (Option<String>, usize, &[Step]) = match path {
+        [Step::Key(a), Step::Index(i), rest @ ..] => (Some(a.clone()), *i, rest),
+        _ => (None, 0, path),
+    };
+    let keys: Option<Vec<&str>> = rest
+        .iter()
+        .map(|s| match s {
+            Step::Key(k) => Some(k.as_str()),
+            Step::Index(_) => None,
+        })
+        .collect();
+    let keys = keys?;
+    let mut offset = 0;
+    let mut count = 0usize;
+    let mut inside = arr_name.is_none();
+    for l in text.split_inclusive('\n') {
+        let end = offset + l.len();
+        if let Some((is_arr, name)) = header(l) {
+            match &arr_name {
+                Some(a) if is_arr && &name == a => {
+                    inside = count == arr_index;
+                    count += 1;
+                    if inside && keys.is_empty() {
+                        return Some(end);
+                    }
+                }
+                Some(a) => {
+                    let want = format!("{a}.{}", keys.join("."));
+                    if inside && !is_arr && name == want {
+                        return Some(end);
+                    }
+                    if is_arr && !name.starts_with(&format!("{a}.")) {
+                        inside = false;
+                    }
+                }
+                None => {
+                    if !is_arr && name == keys.join(".") {
+                        return Some(end);
+                    }
+                }
+            }
+        }
+        offset = end;
+    }
+    let _ = inside;
+    None
+}
+
+/// The merged text of `base` with `edits` and its line map.
+fn merge(base: &str, mut edits: Vec<Edit>) -> Applied {
+    edits.sort_by_key(Edit::at);
+    let mut text = String::with_capacity(base.len() + 64);
+    let mut lines: Vec<Option<Source>> = vec![None];
+    let push = |text: &mut String,
+                lines: &mut Vec<Option<Source>>,
+                s: &str,
+                src: Source,
+                mark_new: bool| {
+        for (k, piece) in s.split('\n').enumerate() {
+            if k > 0 {
+                text.push('\n');
+                lines.push(mark_new.then_some(src));
+            }
+            text.push_str(piece);
+            let last = lines.last_mut().expect("one line at least");
+            match src {
+                Source::Variant(_) if !piece.is_empty() => *last = Some(src),
+                Source::Base(l) if last.is_none() => *last = Some(Source::Base(l + k)),
+                _ => {}
+            }
+        }
+    };
+    let mut pos = 0;
+    for e in &edits {
+        let start = e.at().max(pos);
+        push(
+            &mut text,
+            &mut lines,
+            &base[pos..start],
+            Source::Base(line_col(base, pos).0),
+            false,
+        );
+        match e {
+            Edit::Replace {
+                end, text: t, line, ..
+            } => {
+                // keep the base's line count: the old value's line breaks follow the new value
+                let breaks = base[start..*end].matches('\n').count();
+                push(&mut text, &mut lines, t, Source::Variant(*line), false);
+                for _ in 0..breaks {
+                    push(&mut text, &mut lines, "\n", Source::Variant(*line), true);
+                }
+                pos = *end;
+            }
+            Edit::Insert {
+                key, value, line, ..
+            } => {
+                let k = if key
+                    .chars()
+                    .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-')
+                {
+                    key.clone()
+                } else {
+                    toml::Value::String(key.clone()).to_string()
+                };
+                push(
+                    &mut text,
+                    &mut lines,
+                    &format!("{k} = {value}\n"),
+                    Source::Variant(*line),
+                    false,
+                );
+                pos = start;
+            }
+        }
+    }
+    push(
+        &mut text,
+        &mut lines,
+        &base[pos..],
+        Source::Base(line_col(base, pos).0),
+        false,
+    );
+    let lines = lines
+        .into_iter()
+        .enumerate()
+        .map(|(i, s)| s.unwrap_or(Source::Base(i + 1)))
+        .collect();
+    Applied { text, lines }
+}

@@ -1,0 +1,371 @@
+//! The campaign store: a directory with `campaign.json` (what the store holds: the campaign's
+//! fingerprint, run and part counts, columns) and `parts/part-NNNNNN.parquet`, one Parquet file
+//! per finished part, written to a temporary name and renamed (a killed run leaves whole parts
+//! and temporaries, never a torn part). A store resumes: the parts present are not run again.
+//! [`merge`] streams the parts of one or more stores (shards) into one `runs.parquet` sorted by
+//! run, part by part (memory: one row group), refusing a missing or conflicting part.
+
+use super::table::{self, Columns, Reader, Values};
+use super::{Campaign, CampaignError};
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+/// The store's description file.
+pub const META: &str = "campaign.json";
+/// The merged file.
+pub const MERGED: &str = "runs.parquet";
+/// The parts' directory.
+pub const PARTS: &str = "parts";
+/// Rows per row group of the merged file (whole parts are gathered up to this).
+pub const ROW_GROUP_ROWS: usize = 65_536;
+const FORMAT: &str = "pounding campaign store 1";
+
+/// `campaign.json`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Meta {
+    /// [`FORMAT`].
+    pub format: String,
+    /// The campaign's name.
+    pub name: String,
+    /// The hash of everything the results depend on (hex).
+    pub fingerprint: String,
+    /// The hash of the scenario's text (hex).
+    pub scenario_fingerprint: String,
+    /// The number of runs.
+    pub runs: usize,
+    /// Runs per part.
+    pub runs_per_part: usize,
+    /// The number of parts.
+    pub parts: usize,
+    /// The stored columns.
+    pub columns: Vec<String>,
+    /// The variants' names.
+    pub variants: Vec<String>,
+}
+
+impl Meta {
+    /// The description of `c`'s store.
+    pub fn of(c: &Campaign) -> Meta {
+        Meta {
+            format: FORMAT.into(),
+            name: c.name.clone(),
+            fingerprint: format!("{:016x}", c.fingerprint),
+            scenario_fingerprint: format!("{:016x}", c.scenario_fingerprint),
+            runs: c.runs(),
+            runs_per_part: c.runs_per_part,
+            parts: c.parts(),
+            columns: c.column_names(),
+            variants: c.variants.clone(),
+        }
+    }
+
+    /// Reads `DIR/campaign.json`.
+    pub fn read(dir: &Path) -> Result<Meta, CampaignError> {
+        let path = dir.join(META);
+        let text = std::fs::read_to_string(&path).map_err(|cause| CampaignError::Io {
+            what: "cannot read the store's description",
+            path: path.clone(),
+            cause,
+        })?;
+        let m: Meta = serde_json::from_str(&text).map_err(|e| {
+            CampaignError::Store(format!(
+                "{}: not a campaign description: {e}",
+                path.display()
+            ))
+        })?;
+        if m.format != FORMAT {
+            return Err(CampaignError::Store(format!(
+                "{}: format {:?}, expected {FORMAT:?}",
+                path.display(),
+                m.format
+            )));
+        }
+        Ok(m)
+    }
+
+    /// The runs of part `p`.
+    pub fn part_range(&self, p: usize) -> std::ops::Range<usize> {
+        let b = self.runs_per_part;
+        (p * b).min(self.runs)..((p + 1) * b).min(self.runs)
+    }
+
+    fn text(&self) -> String {
+        // a struct of strings and numbers always serialises
+        serde_json::to_string_pretty(self).unwrap_or_default() + "\n"
+    }
+}
+
+/// The file name of part `p`.
+pub fn part_name(p: usize) -> String {
+    format!("part-{p:06}.parquet")
+}
+
+fn part_index(name: &str) -> Option<usize> {
+    name.strip_prefix("part-")?
+        .strip_suffix(".parquet")?
+        .parse()
+        .ok()
+}
+
+fn io(what: &'static str, path: &Path) -> impl FnOnce(std::io::Error) -> CampaignError {
+    let path = path.to_path_buf();
+    move |cause| CampaignError::Io { what, path, cause }
+}
+
+/// An opened store of one campaign.
+pub struct Store {
+    /// Its directory.
+    pub dir: PathBuf,
+    /// Its description.
+    pub meta: Meta,
+}
+
+impl Store {
+    /// Opens (or creates) the store of `c` in `dir`: writes `campaign.json`, or checks that the
+    /// one there describes this campaign (else an error: another campaign's results must not be
+    /// mixed in); removes the temporaries of an interrupted run.
+    pub fn open(dir: &Path, c: &Campaign) -> Result<Store, CampaignError> {
+        let meta = Meta::of(c);
+        let parts = dir.join(PARTS);
+        std::fs::create_dir_all(&parts).map_err(io("cannot create", &parts))?;
+        if dir.join(META).exists() {
+            let old = Meta::read(dir)?;
+            if old != meta {
+                return Err(CampaignError::Store(format!(
+                    "{} holds another campaign ({} runs, fingerprint {}; this one: {} runs, \
+                     fingerprint {}): the spec, scenario, records or stripes changed; give \
+                     another --out, or remove it to start again",
+                    dir.display(),
+                    old.runs,
+                    old.fingerprint,
+                    meta.runs,
+                    meta.fingerprint
+                )));
+            }
+        } else {
+            let path = dir.join(META);
+            crate::output::write_atomic(&path, meta.text().as_bytes())
+                .map_err(io("cannot write", &path))?;
+        }
+        for e in std::fs::read_dir(&parts).map_err(io("cannot list", &parts))? {
+            let e = e.map_err(io("cannot list", &parts))?;
+            let name = e.file_name().to_string_lossy().into_owned();
+            if name.starts_with(".part-") && name.ends_with(".tmp") {
+                std::fs::remove_file(e.path()).map_err(io("cannot remove", &e.path()))?;
+            }
+        }
+        Ok(Store {
+            dir: dir.to_path_buf(),
+            meta,
+        })
+    }
+
+    /// The existing store of `c` in `dir`, as a worker of a distributed run joins it: its
+    /// `campaign.json` must describe `c`; nothing is removed (other workers may be writing).
+    pub fn attach(dir: &Path, c: &Campaign) -> Result<Store, CampaignError> {
+        let s = Store::existing(dir)?;
+        if s.meta != Meta::of(c) {
+            return Err(CampaignError::Store(format!(
+                "{} holds another campaign (fingerprint {}, this one {:016x}): every worker must \
+                 read the same spec, scenario and records",
+                dir.display(),
+                s.meta.fingerprint,
+                c.fingerprint
+            )));
+        }
+        Ok(s)
+    }
+
+    /// An existing store (`campaign.json` read, nothing changed).
+    pub fn existing(dir: &Path) -> Result<Store, CampaignError> {
+        Ok(Store {
+            dir: dir.to_path_buf(),
+            meta: Meta::read(dir)?,
+        })
+    }
+
+    /// The path of part `p`.
+    pub fn part_path(&self, p: usize) -> PathBuf {
+        self.dir.join(PARTS).join(part_name(p))
+    }
+
+    /// The parts stored, each checked: a readable Parquet file holding exactly its runs.
+    pub fn stored(&self) -> Result<BTreeMap<usize, PathBuf>, CampaignError> {
+        let parts = self.dir.join(PARTS);
+        let mut out = BTreeMap::new();
+        let list = match std::fs::read_dir(&parts) {
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(out),
+            r => r.map_err(io("cannot list", &parts))?,
+        };
+        for e in list {
+            let e = e.map_err(io("cannot list", &parts))?;
+            let name = e.file_name().to_string_lossy().into_owned();
+            let Some(p) = part_index(&name) else { continue };
+            if p >= self.meta.parts {
+                return Err(CampaignError::Store(format!(
+                    "{}: part {p} of a campaign of {} parts",
+                    e.path().display(),
+                    self.meta.parts
+                )));
+            }
+            self.check_part(p, &e.path())?;
+            out.insert(p, e.path());
+        }
+        Ok(out)
+    }
+
+    /// Checks that the file of part `p` holds exactly that part's runs in order.
+    fn check_part(&self, p: usize, path: &Path) -> Result<(), CampaignError> {
+        let r = Reader::open(path)?;
+        let want = self.meta.part_range(p);
+        let mut got = Vec::with_capacity(want.len());
+        for g in 0..r.row_groups() {
+            if let Some(Values::Int(v)) = r.row_group(g, Some(&["run"]))?.get("run") {
+                got.extend(v.iter().map(|x| x.unwrap_or(-1)));
+            }
+        }
+        let ok =
+            got.len() == want.len() && got.iter().zip(want.clone()).all(|(a, b)| *a == b as i64);
+        if !ok || r.names() != self.meta.columns {
+            return Err(CampaignError::Store(format!(
+                "{}: does not hold runs {}..{} of this campaign with its columns; remove the \
+                 file to run that part again",
+                path.display(),
+                want.start,
+                want.end
+            )));
+        }
+        Ok(())
+    }
+
+    /// Writes part `p` (its Parquet bytes, atomically).
+    pub fn write_part(&self, p: usize, cols: &Columns) -> Result<(), CampaignError> {
+        let bytes = table::to_bytes(cols)?;
+        let path = self.part_path(p);
+        crate::output::write_atomic(&path, &bytes).map_err(io("cannot write", &path))
+    }
+}
+
+/// What a merge wrote.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Merged {
+    /// The merged file.
+    pub path: PathBuf,
+    /// Its rows.
+    pub rows: usize,
+    /// How many runs have each status.
+    pub statuses: BTreeMap<String, usize>,
+}
+
+/// Merges the parts in the stores `dirs` (one campaign: the same `campaign.json`) into
+/// `out/runs.parquet` (and `out/campaign.json`), streaming part by part in run order. Refused:
+/// stores of different campaigns, a part missing from every store (the count and the first
+/// missing parts are named), and a part present in two stores with different bytes.
+pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Merged, CampaignError> {
+    let Some(first) = dirs.first() else {
+        return Err(CampaignError::Store("no store to merge".into()));
+    };
+    let meta = Meta::read(first)?;
+    let mut found: BTreeMap<usize, PathBuf> = BTreeMap::new();
+    for d in dirs {
+        let s = Store::existing(d)?;
+        if s.meta != meta {
+            return Err(CampaignError::Store(format!(
+                "{} and {} hold different campaigns (fingerprints {} and {})",
+                first.display(),
+                d.display(),
+                meta.fingerprint,
+                s.meta.fingerprint
+            )));
+        }
+        for (p, path) in s.stored()? {
+            if let Some(other) = found.get(&p) {
+                let same = std::fs::read(other).map_err(io("cannot read", other))?
+                    == std::fs::read(&path).map_err(io("cannot read", &path))?;
+                if !same {
+                    return Err(CampaignError::Store(format!(
+                        "part {p} is in {} and {} with different contents",
+                        other.display(),
+                        path.display()
+                    )));
+                }
+                continue;
+            }
+            found.insert(p, path);
+        }
+    }
+    let missing: Vec<usize> = (0..meta.parts).filter(|p| !found.contains_key(p)).collect();
+    if !missing.is_empty() {
+        let first: Vec<String> = missing.iter().take(5).map(|p| part_name(*p)).collect();
+        return Err(CampaignError::Store(format!(
+            "{} of {} parts are missing (first: {}); run the missing shards or resume the \
+             campaign first",
+            missing.len(),
+            meta.parts,
+            first.join(", ")
+        )));
+    }
+    std::fs::create_dir_all(out).map_err(io("cannot create", out))?;
+    let path = out.join(MERGED);
+    let tmp = crate::output::TempFile::new(&path).map_err(io("cannot write", &path))?;
+    let file = std::fs::File::create(tmp.path()).map_err(io("cannot create", tmp.path()))?;
+    let mut statuses = BTreeMap::new();
+    let mut w: Option<table::Writer<std::io::BufWriter<std::fs::File>>> = None;
+    let mut file = Some(file);
+    let mut pending = Columns::default();
+    let mut rows = 0;
+    let mut flush = |w: &mut Option<table::Writer<_>>, cols: &mut Columns| {
+        if cols.rows() == 0 {
+            return Ok::<(), CampaignError>(());
+        }
+        if w.is_none() {
+            let f = file
+                .take()
+                .ok_or_else(|| CampaignError::Store("writer".into()))?;
+            *w = Some(table::Writer::new(
+                std::io::BufWriter::new(f),
+                cols.schema()?,
+            )?);
+        }
+        if let Some(w) = w.as_mut() {
+            w.write(cols)?;
+        }
+        *cols = Columns::default();
+        Ok(())
+    };
+    for path in found.values() {
+        let r = Reader::open(path)?;
+        for g in 0..r.row_groups() {
+            let cols = r.row_group(g, None)?;
+            if let Some(Values::Text(s)) = cols.get("status") {
+                for x in s {
+                    *statuses.entry(x.clone().unwrap_or_default()).or_insert(0) += 1;
+                }
+            }
+            rows += cols.rows();
+            pending.append(cols)?;
+        }
+        if pending.rows() >= ROW_GROUP_ROWS {
+            flush(&mut w, &mut pending)?;
+        }
+    }
+    flush(&mut w, &mut pending)?;
+    let Some(w) = w else {
+        return Err(CampaignError::Store("no rows to merge".into()));
+    };
+    let f = w
+        .finish()?
+        .into_inner()
+        .map_err(|e| CampaignError::Store(format!("{}: {e}", path.display())))?;
+    f.sync_all().map_err(io("cannot write", &path))?;
+    drop(f);
+    tmp.commit().map_err(io("cannot write", &path))?;
+    let mp = out.join(META);
+    crate::output::write_atomic(&mp, meta.text().as_bytes()).map_err(io("cannot write", &mp))?;
+    Ok(Merged {
+        path,
+        rows,
+        statuses,
+    })
+}
