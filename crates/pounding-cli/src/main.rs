@@ -19,6 +19,8 @@ mod figures;
 mod fragility_plot;
 mod fragility_report;
 mod fragility_study;
+mod hazard_plot;
+mod hazard_report;
 mod plot_style;
 mod plots;
 mod report;

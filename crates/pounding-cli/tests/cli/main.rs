@@ -90,6 +90,7 @@ mod errors_round3;
 mod fragility;
 mod fragility_censored;
 mod fragility_example;
+mod fragility_hazard;
 mod fragility_report;
 mod fragility_trial;
 mod fuzz;

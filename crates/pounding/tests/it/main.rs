@@ -31,6 +31,7 @@ mod harden;
 mod harden_input;
 mod harden_io;
 mod harden_round2;
+mod hazard;
 mod impact;
 mod impact_report;
 mod impact_split;
