@@ -143,9 +143,12 @@ fn fragility_hazard_flag_reads_a_csv_table() {
     assert!(num(&maf, "upper_tail_hi") == 8e-7 && num(&maf, "p_first_im") < 0.5);
 }
 
+/// (name, scenario, a `--hazard` file (name, text), what stderr must hold).
+type Case = (&'static str, String, Option<(&'static str, &'static str)>, &'static [&'static str]);
+
 #[test]
 fn bad_hazard_input_exits_2_naming_file_key_and_line() {
-    let cases: [(&str, String, Option<(&str, &str)>, &[&str]); 5] = [
+    let cases: [Case; 5] = [
         (
             "decrease",
             scenario(
