@@ -144,7 +144,12 @@ fn fragility_hazard_flag_reads_a_csv_table() {
 }
 
 /// (name, scenario, a `--hazard` file (name, text), what stderr must hold).
-type Case = (&'static str, String, Option<(&'static str, &'static str)>, &'static [&'static str]);
+type Case = (
+    &'static str,
+    String,
+    Option<(&'static str, &'static str)>,
+    &'static [&'static str],
+);
 
 #[test]
 fn bad_hazard_input_exits_2_naming_file_key_and_line() {

@@ -40,6 +40,8 @@ pub mod check_summary;
 mod check_values;
 pub mod check_write;
 pub mod code_check;
+pub mod design;
+pub mod design_write;
 pub mod hazard_input;
 pub mod hazard_study;
 pub mod im;
