@@ -272,14 +272,15 @@ pub fn recommendation(
             continue;
         };
         let v = &design.members[c.member].name;
-        let verb = if better(d) > 0.0 {
-            if stat == Stat::Maf {
+        let lead = if better(d) > 0.0 {
+            let verb = if stat == Stat::Maf {
                 "lowers"
             } else {
                 "raises"
-            }
+            };
+            format!("variant {v} {verb} {what} most")
         } else {
-            "does not improve"
+            format!("no variant improves {what}; the least worse, {v}, changes it")
         };
         let interval = c
             .paired
@@ -296,7 +297,7 @@ pub fn recommendation(
                 )
             });
         out.push(format!(
-            "{name}: variant {v} {verb} {what} most, from {} ({base}) to {} (change {}; {interval})",
+            "{name}: {lead} from {} ({base}) to {} (change {}; {interval})",
             fmt(stat, b0),
             fmt(stat, c.value.unwrap_or(Real::NAN)),
             fmt(stat, d),

@@ -11,6 +11,7 @@ mod contact;
 mod contact_law;
 mod contact_law_keys;
 mod contact_law_linear;
+mod design;
 mod element_bearing;
 mod element_restrainer;
 mod element_substructure;
