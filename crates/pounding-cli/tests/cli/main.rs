@@ -85,6 +85,7 @@ mod bridge_plots;
 mod check;
 mod compare;
 mod compare_energy;
+mod design;
 mod docs_links;
 mod errors_round3;
 mod fragility;
