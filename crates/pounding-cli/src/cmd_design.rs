@@ -24,6 +24,7 @@ pub const DESIGN_OUTPUTS: &[&str] = &[
     "hazard.png",
     "report.html",
     "timing.json",
+    "search.csv",
 ];
 
 /// Arguments of `pounding design`.
@@ -86,6 +87,19 @@ pub fn run(args: Args) -> Result<ExitCode> {
         .install(|| design.fit(&plan, &rows))
         .map_err(|e| anyhow!("fitting: {e}"))?;
     let (stat, comps) = compare(&design, &fits);
+    let searched = match &design.search {
+        None => None,
+        Some(spec) => {
+            eprintln!(
+                "search: {} over {}..{} (each value a full set of runs)",
+                spec.key, spec.range.0, spec.range.1
+            );
+            let r = pool.install(|| {
+                pounding::assessment::design_search::search(&design, spec, &plan, &|| {})
+            })?;
+            Some((spec, r))
+        }
+    };
     let out = &args.out;
     let lock = pounding::output::lock_output_dir(out)?;
     pounding::output::remove_previous_outputs(&lock, DESIGN_OUTPUTS)?;
@@ -121,9 +135,21 @@ pub fn run(args: Args) -> Result<ExitCode> {
         crate::hazard_plot::plot(&out.join("hazard.png"), &base.spec.label(), &curves)
             .map_err(|e| anyhow!("plotting: {e}"))?;
     }
+    if let Some((spec, r)) = &searched {
+        wr(
+            out.join("search.csv"),
+            pounding::assessment::design_search::search_csv(spec, r).as_bytes(),
+        )?;
+    }
     wr(
         out.join("report.html"),
-        crate::design_report::report(&design, &fits, stat, &comps).as_bytes(),
+        crate::design_report::report(
+            &design,
+            &fits,
+            (stat, &comps),
+            searched.as_ref().map(|x| &x.1),
+        )
+        .as_bytes(),
     )?;
     let timing = json!({
         "runs_s": runs_s,
@@ -139,6 +165,9 @@ pub fn run(args: Args) -> Result<ExitCode> {
     print_table(&design, &fits, stat, &comps);
     for s in recommendation(&design, &fits, stat, &comps) {
         println!("{s}");
+    }
+    if let Some((_, r)) = &searched {
+        println!("search: {}", r.verdict);
     }
     let excluded: usize = rows.iter().flatten().filter(|r| !r.trusted()).count();
     if excluded > 0 {

@@ -24,7 +24,12 @@ fn interval(stat: Stat, i: Option<(f64, f64)>) -> String {
 }
 
 /// The page.
-pub(crate) fn report(design: &Design, fits: &[Fits], stat: Stat, comps: &[Comparison]) -> String {
+pub(crate) fn report(
+    design: &Design,
+    fits: &[Fits],
+    (stat, comps): (Stat, &[Comparison]),
+    searched: Option<&pounding::assessment::design_search::SearchResult>,
+) -> String {
     let base = &design.members[0];
     let st = &base.study;
     let mut h = String::with_capacity(1 << 14);
@@ -118,6 +123,14 @@ pub(crate) fn report(design: &Design, fits: &[Fits], stat: Stat, comps: &[Compar
         );
     }
     h.push_str("</table>\n<p>The change is the variant's value minus the as-built bridge's. The paired interval takes the difference replicate by replicate over the same resampled records; the unpaired one pairs independent resamples: the difference between the two widths is what the common records buy.</p>\n");
+    if let Some(r) = searched {
+        let _ = write!(
+            h,
+            "<h2 id=\"search\">Search</h2>\n<p>{}</p>\n<p>Every value run: <a href=\"search.csv\">search.csv</a> ({} evaluations, each a full set of runs on the same records).</p>\n",
+            esc(&r.verdict),
+            r.evaluations.len()
+        );
+    }
     h.push_str("<h2>Figures</h2>\n<p><img src=\"design.png\" alt=\"fragility curves of every variant\" width=\"1100\"></p>\n");
     if design.hazard().is_some() {
         h.push_str("<p><img src=\"hazard.png\" alt=\"deaggregation of the MAF by IM, every variant\" width=\"1100\"></p>\n");

@@ -69,6 +69,51 @@ pub struct Design {
     pub scenario_path: PathBuf,
     /// The as-built bridge first, then the variants in the file's order.
     pub members: Vec<Member>,
+    /// How the studies were read (to read more: [`Design::study_with`]).
+    reader: Reader,
+    /// The `[search]` table, when given.
+    pub search: Option<super::design_search::SearchSpec>,
+}
+
+/// What reading a member's study needs.
+struct Reader {
+    base_text: String,
+    base_origin: String,
+    sdir: PathBuf,
+    origin: String,
+    set: Option<PathBuf>,
+    hazard: Option<PathBuf>,
+    period: Option<super::PeriodChoice>,
+}
+
+impl Reader {
+    fn study(&self, text: &str) -> Result<Study, AssessmentError> {
+        let scn = Scenario::from_toml(text, &self.base_origin)?.with_base_dir(self.sdir.clone());
+        let st = Study::read_at(scn, Some(&self.sdir), self.set.as_deref(), self.period)?;
+        match &self.hazard {
+            Some(h) => st.with_hazard(h),
+            None => Ok(st),
+        }
+    }
+
+    /// The study of variant `v` at the as-built study `base`'s IM and hazard.
+    fn variant_study(&self, v: &Variant, base: &Study) -> Result<Study, DesignError> {
+        check_bridge_only(v, &self.origin)?;
+        let kept: RefCell<Option<Study>> = RefCell::new(None);
+        v.apply_checked(&self.base_text, &self.base_origin, &self.origin, |t| {
+            self.study(t).map(|st| *kept.borrow_mut() = Some(st))
+        })?;
+        let mut st = kept.into_inner().ok_or_else(|| {
+            DesignError::Study(AssessmentError::Invalid(format!(
+                "variant {}: not read",
+                v.name
+            )))
+        })?;
+        st.spec = base.spec;
+        st.period = base.period.clone();
+        st.hazard = base.hazard.clone();
+        Ok(st)
+    }
 }
 
 /// Why a design cannot start.
@@ -99,6 +144,8 @@ struct File {
     design: Option<toml::Spanned<crate::toml_schema::Table<DesignSec>>>,
     #[serde(default, rename = "variant")]
     _variant: serde::de::IgnoredAny,
+    #[serde(default, rename = "search")]
+    _search: serde::de::IgnoredAny,
 }
 
 #[derive(serde::Deserialize, Default)]
@@ -184,20 +231,25 @@ impl Design {
                 format!("cannot read {}: {e}", scenario_path.display()),
             )
         })?;
-        let base_origin = scenario_path.display().to_string();
-        let sdir = scenario_path
-            .parent()
-            .map(Path::to_path_buf)
-            .unwrap_or_default();
-        let read_study = |t: &str| -> Result<Study, AssessmentError> {
-            let scn = Scenario::from_toml(t, &base_origin)?.with_base_dir(sdir.clone());
-            let st = Study::read(scn, Some(&sdir), set)?;
-            match &hazard_path {
-                Some(h) => st.with_hazard(h),
-                None => Ok(st),
-            }
+        let reader = Reader {
+            base_origin: scenario_path.display().to_string(),
+            sdir: scenario_path
+                .parent()
+                .map(Path::to_path_buf)
+                .unwrap_or_default(),
+            base_text,
+            origin: origin.clone(),
+            set: set.map(Path::to_path_buf),
+            hazard: hazard_path,
+            period: None,
         };
-        let base = read_study(&base_text)?;
+        let base = reader.study(&reader.base_text)?;
+        // every variant at the as-built bridge's IM, its period too
+        let reader = Reader {
+            period: (base.spec.kind == super::ImKind::Sa)
+                .then_some(super::PeriodChoice::Given(base.spec.period)),
+            ..reader
+        };
         let mut members = vec![Member {
             name: baseline,
             description: String::new(),
@@ -205,18 +257,7 @@ impl Design {
             study: base,
         }];
         for v in &variants.list {
-            check_bridge_only(v, &origin)?;
-            let kept: RefCell<Option<Study>> = RefCell::new(None);
-            v.apply_checked(&base_text, &base_origin, &origin, |t| {
-                read_study(t).map(|st| *kept.borrow_mut() = Some(st))
-            })?;
-            let Some(mut st) = kept.into_inner() else {
-                continue;
-            };
-            // the as-built study's IM (its period too): the same scale factors for every variant
-            st.spec = members[0].study.spec;
-            st.period = members[0].study.period.clone();
-            st.hazard = members[0].study.hazard.clone();
+            let st = reader.variant_study(v, &members[0].study)?;
             members.push(Member {
                 name: v.name.clone(),
                 description: v.description.clone(),
@@ -228,10 +269,13 @@ impl Design {
                 study: st,
             });
         }
+        let search = super::design_search::SearchSpec::from_design(&text, &origin)?;
         Ok(Design {
             origin,
             scenario_path,
             members,
+            reader,
+            search,
         })
     }
 
@@ -259,6 +303,12 @@ impl Design {
             .zip(rows)
             .map(|(m, r)| m.study.fit(plan, r))
             .collect()
+    }
+
+    /// The study of the as-built bridge with `variant`'s overrides (a variant built in memory,
+    /// e.g. by a search), read as the design's variants are.
+    pub fn study_with(&self, variant: &Variant) -> Result<Study, DesignError> {
+        self.reader.variant_study(variant, &self.members[0].study)
     }
 
     /// The hazard shared by every member, if any.

@@ -80,6 +80,18 @@ impl Study {
         scenario_dir: Option<&Path>,
         set: Option<&Path>,
     ) -> Result<Self, AssessmentError> {
+        Self::read_at(scenario, scenario_dir, set, None)
+    }
+
+    /// [`Study::read`] with the period of `Sa` given (`Some`: instead of `[fragility]
+    /// period_s`; a design's variants use the as-built bridge's, so that every variant is
+    /// compared at the same IM).
+    pub fn read_at(
+        scenario: Scenario,
+        scenario_dir: Option<&Path>,
+        set: Option<&Path>,
+        period: Option<PeriodChoice>,
+    ) -> Result<Self, AssessmentError> {
         let scenario = scenario.for_batch();
         if !scenario.is_bridge() {
             return Err(AssessmentError::Invalid(format!(
@@ -89,7 +101,10 @@ impl Study {
             )));
         }
         let setup = scenario.build_bridge()?;
-        let settings = FragilitySettings::from_scenario(scenario.text(), scenario.origin())?;
+        let mut settings = FragilitySettings::from_scenario(scenario.text(), scenario.origin())?;
+        if let Some(p) = period {
+            settings.period = p;
+        }
         let set_path = match (set, &settings.records) {
             (Some(p), _) => p.to_path_buf(),
             (None, Some(rel)) => scenario_dir.map_or_else(|| rel.clone(), |d| d.join(rel)),

@@ -112,3 +112,37 @@ fn variant_errors_name_the_design_file_and_line() {
         }
     }
 }
+
+#[test]
+fn search_finds_the_smallest_damping_meeting_a_target_and_confirms_it() {
+    let d = scratch_dir("design", "search");
+    files(
+        &d,
+        &format!(
+            "{DESIGN}\n[search]\nkey = \"bridge.damping_ratio\"\nrange = [0.02, 0.4]\n\
+             limit_state = \"bearing\"\ntarget_maf = 1.5e-4\ntolerance = 0.08\n"
+        ),
+    );
+    let design = Design::read(&d.join("design.toml"), None, None).expect("design reads");
+    let spec = design.search.clone().expect("a search");
+    let plan = design.plan().expect("plan");
+    let r = pounding::assessment::design_search::search(&design, &spec, &plan, &|| {})
+        .expect("search runs");
+    eprintln!("{}", r.verdict);
+    let found = r.found.expect("an answer");
+    // the found value's own run meets the target; the confirming run 10 % below does not
+    let at = |v: f64| {
+        r.evaluations
+            .iter()
+            .find(|e| e.value == v)
+            .and_then(|e| e.maf)
+    };
+    assert!(at(found).expect("run at the answer") <= 1.5e-4);
+    let c = r.evaluations.last().expect("confirmation");
+    assert_eq!(c.role, "confirm");
+    assert!((c.value - 0.9 * found).abs() < 1e-15 && c.maf.expect("fit") > 1.5e-4);
+    // every bisection bracket kept the order: values below the answer fail, above it pass
+    for e in &r.evaluations {
+        assert_eq!(e.maf.expect("fit") <= 1.5e-4, e.value >= found, "{e:?}");
+    }
+}
