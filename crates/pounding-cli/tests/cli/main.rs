@@ -74,6 +74,7 @@ fn help_lists_subcommands() {
         "motion",
         "fragility",
         "check",
+        "design",
     ] {
         assert!(s.contains(sub), "--help lacks {sub}: {s}");
     }
