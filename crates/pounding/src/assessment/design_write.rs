@@ -280,7 +280,7 @@ pub fn recommendation(
             };
             format!("variant {v} {verb} {what} most")
         } else {
-            format!("no variant improves {what}; the least worse, {v}, changes it")
+            format!("no variant improves {what}; the best of them, {v}, changes it")
         };
         let interval = c
             .paired

@@ -43,6 +43,7 @@ pub mod code_check;
 pub mod design;
 pub mod design_search;
 pub mod design_write;
+mod hazard_csv;
 pub mod hazard_input;
 pub mod hazard_study;
 pub mod im;
