@@ -49,7 +49,47 @@ impl Applied {
             rest = &after[digits..];
         }
         out.push_str(rest);
-        out
+        self.relabel_toml(&out, variants_origin)
+    }
+
+    /// The TOML reader's own line references of the merged text: `at line N, column C` and the
+    /// `N | text` lines of its excerpt, relabelled to their sources.
+    fn relabel_toml(&self, message: &str, variants_origin: &str) -> String {
+        let src = |n: &str| {
+            n.parse::<usize>()
+                .ok()
+                .and_then(|l| self.lines.get(l.wrapping_sub(1)))
+                .copied()
+        };
+        let mut out = Vec::new();
+        for line in message.split('\n') {
+            let mut l = line.to_string();
+            if let Some(i) = l.find("at line ") {
+                let after = &l[i + 8..];
+                let digits: String = after.chars().take_while(char::is_ascii_digit).collect();
+                let new = match src(&digits) {
+                    Some(Source::Base(b)) => Some(format!("at line {b}")),
+                    Some(Source::Variant(v)) => Some(format!("at {variants_origin}:{v}")),
+                    None => None,
+                };
+                if let Some(new) = new {
+                    l = format!("{}{new}{}", &l[..i], &after[digits.len()..]);
+                }
+            }
+            let trimmed = l.trim_start();
+            let digits: String = trimmed.chars().take_while(char::is_ascii_digit).collect();
+            if !digits.is_empty() && trimmed[digits.len()..].starts_with(" |") {
+                let pad = l.len() - trimmed.len();
+                let n = match src(&digits) {
+                    Some(Source::Base(b)) => b.to_string(),
+                    Some(Source::Variant(v)) => format!("{variants_origin}:{v}"),
+                    None => digits.clone(),
+                };
+                l = format!("{}{n}{}", &l[..pad], &trimmed[digits.len()..]);
+            }
+            out.push(l);
+        }
+        out.join("\n")
     }
 }
 
