@@ -48,6 +48,11 @@ pub struct Args {
     /// With --from-store: the campaign variant to fit (default: the only one).
     #[arg(long, requires = "from_store")]
     pub variant: Option<String>,
+    /// A site hazard curve (a `.csv` table with the header `im_g,rate`, or a `.toml` file with a
+    /// `[hazard]` table) instead of the scenario's `[hazard]`: writes the mean annual frequency
+    /// of every limit state (`maf.csv`, `hazard.csv`, `hazard.png`).
+    #[arg(long)]
+    pub hazard: Option<PathBuf>,
 }
 
 /// Reads the scenario, its `[fragility]` settings, the record set and binds the limit states
@@ -55,7 +60,10 @@ pub struct Args {
 fn read(args: &Args) -> Result<(Study, u64)> {
     let scenario = Scenario::load(&args.scenario)?;
     let fingerprint = pounding::campaign::scenario_fingerprint(scenario.text());
-    let st = Study::read(scenario, args.scenario.parent(), args.set.as_deref())?;
+    let mut st = Study::read(scenario, args.scenario.parent(), args.set.as_deref())?;
+    if let Some(h) = &args.hazard {
+        st = st.with_hazard(h)?;
+    }
     for w in st.record_warnings() {
         eprintln!("warning: {w}");
     }
@@ -159,6 +167,12 @@ pub fn run(args: Args) -> Result<ExitCode> {
         (runs_s, t0, total, &pool),
     )?;
     print_table(&fits);
+    if let Some(m) = st.maf(&fits) {
+        print_maf(&m);
+        for w in pounding::assessment::hazard_study::maf_warnings(&m) {
+            eprintln!("warning: {w}");
+        }
+    }
     for w in fit_warnings(&rows, &fits) {
         eprintln!("warning: {w}");
     }
@@ -194,6 +208,14 @@ fn write_outputs(
     }
     crate::fragility_plot::plot(&out.join("fragility.png"), st, plan, rows, fits)
         .map_err(|e| anyhow!("plotting: {e}"))?;
+    for (name, text) in st.hazard_files(fits) {
+        wr(name, text.as_bytes())?;
+    }
+    if let (Some(h), Some(m)) = (&st.hazard, st.maf(fits)) {
+        let curves = crate::hazard_plot::curves(&h.curve, &fits.rows, &m, "");
+        crate::hazard_plot::plot(&out.join("hazard.png"), &st.spec.label(), &curves)
+            .map_err(|e| anyhow!("plotting: {e}"))?;
+    }
     wr(
         "report.html",
         crate::fragility_report::report(st, plan, rows, fits).as_bytes(),
@@ -209,6 +231,28 @@ fn write_outputs(
         (serde_json::to_string_pretty(&timing)? + "\n").as_bytes(),
     )
     .map_err(|e| anyhow!("{e:#}"))
+}
+
+/// Stdout: per limit state the MAF, its interval and the return period.
+fn print_maf(rows: &[pounding::assessment::hazard_study::MafRow]) {
+    use crate::hazard_report::{sci, years};
+    println!(
+        "{:<20} {:>11} {:>23} {:>14}",
+        "limit state", "MAF_per_yr", "MAF interval", "return_period"
+    );
+    for r in rows {
+        let rate = r.maf.map_or(Real::NAN, |m| m.rate);
+        let i = r
+            .interval
+            .map_or("-".into(), |(a, b)| format!("{}-{}", sci(a), sci(b)));
+        println!(
+            "{:<20} {:>11} {:>23} {:>14}",
+            r.limit_state,
+            sci(rate),
+            i,
+            years(1.0 / rate)
+        );
+    }
 }
 
 /// `lo–hi` of an interval, or `-`.

@@ -54,6 +54,10 @@ pub(crate) fn report(st: &Study, plan: &Plan, rows: &[RunRow], fits: &Fits) -> S
     fit_table(&mut h, rows, fits);
     h.push_str("<h2>Figure</h2>\n<p><img src=\"fragility.png\" alt=\"fragility curves\" width=\"1100\"></p>\n");
     h.push_str("<p>Lines: fitted lognormal curves; points: the fraction of runs exceeding per stripe; bands: pointwise bootstrap intervals over records. A status other than <code>ok</code> means the data have no finite fit, and no curve is drawn.</p>\n");
+    if let (Some(hz), Some(m)) = (&st.hazard, st.maf(fits)) {
+        let w = pounding::assessment::hazard_study::maf_warnings(&m);
+        crate::hazard_report::section(&mut h, hz, &m, &w);
+    }
     if let Some(c) = &st.code_check {
         code_check(&mut h, st, c, rows);
     }

@@ -8,6 +8,7 @@ use std::process::ExitCode;
 mod cmd_campaign;
 mod cmd_check;
 mod cmd_compare;
+mod cmd_design;
 mod cmd_fragility;
 mod cmd_impact;
 mod cmd_lcp;
@@ -16,10 +17,14 @@ mod cmd_simulate;
 mod cmd_spectrum;
 mod cmd_study;
 mod compare_report;
+mod design_plot;
+mod design_report;
 mod figures;
 mod fragility_plot;
 mod fragility_report;
 mod fragility_study;
+mod hazard_plot;
+mod hazard_report;
 mod plot_style;
 mod plots;
 mod report;
@@ -55,6 +60,8 @@ enum Command {
     Motion(cmd_motion::Args),
     /// Fragility study of a bridge: a record set at IM stripes, limit states, fitted lognormal curves.
     Fragility(cmd_fragility::Args),
+    /// Retrofit comparison: variants of one bridge on the same records and stripes, their fragility, MAF and paired differences.
+    Design(cmd_design::Args),
     /// Code check of seat lengths (EC8-2, AASHTO LRFD and Guide Spec, Caltrans, JRA) and joint gaps (SRSS, DDC) of a scenario.
     Check(cmd_check::Args),
     /// Campaigns of many runs (a bridge × a record set × stripes) stored as resumable Parquet parts; local threads, Slurm shards, merge.
@@ -82,6 +89,7 @@ fn run(cli: Cli) -> ExitCode {
         Command::Spectrum(a) => cmd_spectrum::run(a),
         Command::Motion(a) => cmd_motion::run(a),
         Command::Fragility(a) => cmd_fragility::run(a),
+        Command::Design(a) => cmd_design::run(a),
         Command::Check(a) => cmd_check::run(a),
         Command::Campaign(a) => cmd_campaign::run(a),
     };

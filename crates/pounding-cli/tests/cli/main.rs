@@ -75,6 +75,7 @@ fn help_lists_subcommands() {
         "fragility",
         "check",
         "campaign",
+        "design",
     ] {
         assert!(s.contains(sub), "--help lacks {sub}: {s}");
     }
@@ -88,11 +89,13 @@ mod campaign;
 mod check;
 mod compare;
 mod compare_energy;
+mod design;
 mod docs_links;
 mod errors_round3;
 mod fragility;
 mod fragility_censored;
 mod fragility_example;
+mod fragility_hazard;
 mod fragility_report;
 mod fragility_trial;
 mod fuzz;

@@ -30,6 +30,9 @@ pub const OUTPUTS: &[&str] = &[
     "svgm_ratio.csv",
     "runs_uniform.csv",
     "fragility_uniform.csv",
+    "maf.csv",
+    "hazard.csv",
+    "hazard.png",
 ];
 
 /// Everything read and checked before any run.
@@ -54,6 +57,9 @@ pub struct Study {
     /// against the bridge before any run; `Err`: the check could not be evaluated, with the
     /// reason).
     pub code_check: Option<Result<super::CheckReport, String>>,
+    /// The site hazard curve (`[hazard]`, or [`Study::with_hazard`]): the MAF of every limit
+    /// state is computed when present.
+    pub hazard: Option<super::hazard_input::HazardInput>,
 }
 
 /// The fits of every limit state and the IMs of the bootstrap band.
@@ -74,6 +80,18 @@ impl Study {
         scenario_dir: Option<&Path>,
         set: Option<&Path>,
     ) -> Result<Self, AssessmentError> {
+        Self::read_at(scenario, scenario_dir, set, None)
+    }
+
+    /// [`Study::read`] with the period of `Sa` given (`Some`: instead of `[fragility]
+    /// period_s`; a design's variants use the as-built bridge's, so that every variant is
+    /// compared at the same IM).
+    pub fn read_at(
+        scenario: Scenario,
+        scenario_dir: Option<&Path>,
+        set: Option<&Path>,
+        period: Option<PeriodChoice>,
+    ) -> Result<Self, AssessmentError> {
         let scenario = scenario.for_batch();
         if !scenario.is_bridge() {
             return Err(AssessmentError::Invalid(format!(
@@ -83,7 +101,10 @@ impl Study {
             )));
         }
         let setup = scenario.build_bridge()?;
-        let settings = FragilitySettings::from_scenario(scenario.text(), scenario.origin())?;
+        let mut settings = FragilitySettings::from_scenario(scenario.text(), scenario.origin())?;
+        if let Some(p) = period {
+            settings.period = p;
+        }
         let set_path = match (set, &settings.records) {
             (Some(p), _) => p.to_path_buf(),
             (None, Some(rel)) => scenario_dir.map_or_else(|| rel.clone(), |d| d.join(rel)),
@@ -147,6 +168,14 @@ impl Study {
             damping: settings.damping,
             pair: settings.pair_im,
         };
+        let hazard = super::hazard_input::HazardInput::from_toml(
+            scenario.text(),
+            scenario.origin(),
+            scenario_dir.unwrap_or(Path::new(".")),
+        )?;
+        if let Some(h) = &hazard {
+            h.check_against(&spec)?;
+        }
         Ok(Study {
             origin: scenario.origin().to_string(),
             setup,
@@ -157,7 +186,37 @@ impl Study {
             limits,
             spec,
             code_check,
+            hazard,
         })
+    }
+
+    /// Replaces the hazard curve by the one of `path` (`--hazard`: a `.csv` table or a `.toml`
+    /// file with a `[hazard]` table), checked against the study's IM.
+    pub fn with_hazard(mut self, path: &Path) -> Result<Self, AssessmentError> {
+        let h = super::hazard_input::HazardInput::from_path(path)?;
+        h.check_against(&self.spec)?;
+        self.hazard = Some(h);
+        Ok(self)
+    }
+
+    /// With a hazard: the MAF of every limit state ([`super::hazard_study::maf_rows`]).
+    pub fn maf(&self, fits: &Fits) -> Option<Vec<super::hazard_study::MafRow>> {
+        let h = self.hazard.as_ref()?;
+        Some(super::hazard_study::maf_rows(&h.curve, &fits.rows))
+    }
+
+    /// With a hazard: the texts of `maf.csv` and `hazard.csv` (empty without one).
+    pub fn hazard_files(&self, fits: &Fits) -> Vec<(&'static str, String)> {
+        let (Some(h), Some(rows)) = (&self.hazard, self.maf(fits)) else {
+            return Vec::new();
+        };
+        vec![
+            ("maf.csv", super::hazard_study::maf_csv(h, &rows)),
+            (
+                "hazard.csv",
+                super::hazard_study::hazard_csv(h, &fits.rows, &rows),
+            ),
+        ]
     }
 
     /// The scenario's name.
@@ -302,6 +361,9 @@ impl Study {
                 })
                 .collect();
             o.insert("empirical".into(), serde_json::Value::Object(emp));
+            if let (Some(h), Some(m)) = (&self.hazard, self.maf(fits)) {
+                o.insert("hazard".into(), super::hazard_study::hazard_json(h, &m));
+            }
         }
         crate::output::json_without_negative_zero(&mut j);
         // a serde_json::Value of strings, numbers and maps always serialises

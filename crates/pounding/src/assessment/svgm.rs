@@ -36,6 +36,7 @@ impl Study {
             spec: self.spec,
             period: self.period.clone(),
             code_check: self.code_check.clone(),
+            hazard: self.hazard.clone(),
         })
     }
 }

@@ -391,4 +391,6 @@ fn parse_float(s: &str) -> f64 {
 
 #[path = "variant_apply.rs"]
 mod apply;
+#[path = "variant_locate.rs"]
+mod locate;
 pub use apply::Applied;

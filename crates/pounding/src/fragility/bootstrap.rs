@@ -102,6 +102,35 @@ pub struct Bootstrap {
     pub beta: Option<(Real, Real)>,
     /// Pointwise band of `P(exceed | IM)` at the requested IMs, in the order given.
     pub band: Vec<BandPoint>,
+    /// `(θ_b, β_b)` of every replicate, in replicate order (`None`: no finite fit). Replicate
+    /// `b` resamples the records drawn from stream `b` of the seed: two bootstraps with the same
+    /// seed over the same number of records resample the same record indices (paired).
+    pub replicates: Vec<Option<(Real, Real)>>,
+    /// `(θ, β)` with each record left out in turn (the jackknife of the BCa acceleration).
+    pub jackknife: Vec<Option<(Real, Real)>>,
+}
+
+impl Bootstrap {
+    /// The BCa interval ([`bca`]) of any statistic `f(θ, β)` of the fit, from the same replicates
+    /// and jackknife as the intervals of `θ` and `β` (`None` when the data have no fit or fewer
+    /// than two replicates do; replicates or jackknife fits where `f` is not finite are left out).
+    pub fn interval_of(&self, f: &dyn Fn(Real, Real) -> Real) -> Option<(Real, Real)> {
+        let (t, b) = self.fit.params()?;
+        let boot: Vec<Real> = self
+            .replicates
+            .iter()
+            .flatten()
+            .map(|&(t, b)| f(t, b))
+            .filter(|v| v.is_finite())
+            .collect();
+        let jack: Option<Vec<Real>> = self
+            .jackknife
+            .iter()
+            .map(|p| p.map(|(t, b)| f(t, b)).filter(|v| v.is_finite()))
+            .collect();
+        let est = f(t, b);
+        (boot.len() >= 2 && est.is_finite()).then(|| bca(est, boot, jack.as_deref(), self.level))
+    }
 }
 
 /// Bootstraps a multiple-stripe fit over records (rows of `exceeded`); `band_im` are the IMs of
@@ -234,8 +263,9 @@ fn summarise(
 ) -> Bootstrap {
     let ok: Vec<(Real, Real)> = fits.iter().filter_map(Fit::params).collect();
     let failed = fits.len() - ok.len();
+    let jack_all = jack;
     // The acceleration needs every leave-one-out fit; without them it is 0 (bias-corrected only).
-    let jack: Option<Vec<(Real, Real)>> = jack.iter().map(Fit::params).collect();
+    let jack: Option<Vec<(Real, Real)>> = jack_all.iter().map(Fit::params).collect();
     let have = ok.len() >= 2;
     let stat = |f: &dyn Fn((Real, Real)) -> Real| -> Option<(Real, Real)> {
         let (t, b) = fit.params()?;
@@ -261,6 +291,8 @@ fn summarise(
         theta,
         beta,
         band,
+        replicates: fits.iter().map(Fit::params).collect(),
+        jackknife: jack_all.iter().map(Fit::params).collect(),
     }
 }
 

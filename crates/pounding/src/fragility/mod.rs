@@ -30,6 +30,7 @@
 
 pub mod bootstrap;
 pub mod censored;
+pub mod hazard;
 pub mod mle;
 pub mod moments;
 pub mod normal;

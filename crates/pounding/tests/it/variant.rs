@@ -96,6 +96,8 @@ fn refuses_unknown_keys_and_bad_values_naming_the_variant_line() {
         "{e}"
     );
     assert!(e.contains("restrainer_kk"), "{e}");
+    // the TOML reader's own line of the merged text is relabelled to the variants file's
+    assert!(e.contains("at design.toml:5, column"), "{e}");
     // a value out of range: the scenario's message, its line relabelled to the variants file
     let e = err_of("\"bridge.gap\" = -1.0");
     assert!(

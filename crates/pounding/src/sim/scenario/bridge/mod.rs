@@ -104,6 +104,10 @@ pub(crate) struct BridgeRaw {
     /// accepted and not used here.
     #[serde(default, rename = "code_check")]
     pub(crate) _code_check: serde::de::IgnoredAny,
+    /// `[hazard]`: the site hazard curve of `pounding fragility` and `pounding design`
+    /// ([`crate::assessment::hazard_input`]), accepted and not used here.
+    #[serde(default, rename = "hazard")]
+    pub(crate) _hazard: serde::de::IgnoredAny,
 }
 
 #[derive(Deserialize, Default, Clone, Debug)]

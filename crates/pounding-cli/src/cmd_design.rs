@@ -1,0 +1,215 @@
+//! `pounding design DESIGN.toml [--set MANIFEST] [--hazard FILE] [--out DIR] [--threads N]`:
+//! retrofit variants of one bridge run on the same records and stripes
+//! ([`pounding::assessment::design`]), each fitted, compared with the as-built bridge by paired
+//! bootstrap differences; `variants.csv`, `variants.json`, each variant's own fragility files
+//! under `variants/<name>/`, `design.png` and `report.html` in `--out`.
+
+use anyhow::{Context, Result, anyhow};
+use clap::Parser;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use pounding::assessment::design::Design;
+use pounding::assessment::design_write::{compare, recommendation, variants_csv, variants_json};
+use pounding::output::write_atomic;
+use serde_json::json;
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+
+/// The files `design` writes in `--out` (removed before writing); each variant's own files go to
+/// `variants/<name>/`.
+pub const DESIGN_OUTPUTS: &[&str] = &[
+    "variants.csv",
+    "variants.json",
+    "design.png",
+    "hazard.png",
+    "report.html",
+    "timing.json",
+    "search.csv",
+];
+
+/// Arguments of `pounding design`.
+#[derive(Parser, Debug)]
+pub struct Args {
+    /// A design file: `[design] scenario = "BRIDGE.toml"` (a fragility scenario) and
+    /// `[[variant]]` tables of overrides of its keys.
+    pub design: PathBuf,
+    /// The record-set manifest, instead of the scenario's `[fragility] records`.
+    #[arg(long)]
+    pub set: Option<PathBuf>,
+    /// A site hazard curve (`.csv` with header `im_g,rate`, or `.toml` with `[hazard]`), instead
+    /// of the scenario's `[hazard]`: the variants are compared by their mean annual frequency.
+    #[arg(long)]
+    pub hazard: Option<PathBuf>,
+    /// Output directory.
+    #[arg(long, default_value = "out/design")]
+    pub out: PathBuf,
+    /// Worker threads (default: all cores).
+    #[arg(long)]
+    pub threads: Option<usize>,
+}
+
+/// Runs the command.
+pub fn run(args: Args) -> Result<ExitCode> {
+    let t0 = Instant::now();
+    pounding::input::check_threads(args.threads).map_err(anyhow::Error::msg)?;
+    let design = Design::read(&args.design, args.set.as_deref(), args.hazard.as_deref())?;
+    let mut pool = rayon::ThreadPoolBuilder::new();
+    if let Some(n) = args.threads {
+        pool = pool.num_threads(n);
+    }
+    let pool = pool.build().context("cannot start the worker threads")?;
+    let plan = pool.install(|| design.plan())?;
+    pounding::output::check_output_dir_free(&args.out)?;
+    let base = &design.members[0].study;
+    let per = base.set.records.len() * plan.values().len();
+    let total = per * design.members.len();
+    eprintln!(
+        "design: {} bridges ({} and {} variants) x {} entries x {} stripes = {total} runs on {} threads; IM = {}",
+        design.members.len(),
+        design.members[0].name,
+        design.members.len() - 1,
+        base.set.records.len(),
+        plan.values().len(),
+        pool.current_num_threads(),
+        base.spec.label()
+    );
+    let pb = ProgressBar::with_draw_target(Some(total as u64), ProgressDrawTarget::stderr());
+    if let Ok(style) =
+        ProgressStyle::with_template("runs [{elapsed_precise}] {wide_bar} {pos}/{len} ({eta} left)")
+    {
+        pb.set_style(style);
+    }
+    let t_runs = Instant::now();
+    let rows = pool.install(|| design.run(&plan, &|| pb.inc(1)));
+    pb.finish_and_clear();
+    let runs_s = t_runs.elapsed().as_secs_f64();
+    let fits = pool
+        .install(|| design.fit(&plan, &rows))
+        .map_err(|e| anyhow!("fitting: {e}"))?;
+    let (stat, comps) = compare(&design, &fits);
+    let searched = match &design.search {
+        None => None,
+        Some(spec) => {
+            eprintln!(
+                "search: {} over {}..{} (each value a full set of runs)",
+                spec.key, spec.range.0, spec.range.1
+            );
+            let r = pool.install(|| {
+                pounding::assessment::design_search::search(&design, spec, &plan, &|| {})
+            })?;
+            Some((spec, r))
+        }
+    };
+    let out = &args.out;
+    let lock = pounding::output::lock_output_dir(out)?;
+    pounding::output::remove_previous_outputs(&lock, DESIGN_OUTPUTS)?;
+    let wr = |path: PathBuf, bytes: &[u8]| {
+        write_atomic(&path, bytes).with_context(|| format!("cannot write {}", path.display()))
+    };
+    for (m, (mem, r)) in design.members.iter().zip(&rows).enumerate() {
+        let mut files: Vec<(&str, String)> = mem.study.data_files(&plan, r, &fits[m]).into();
+        files.extend(mem.study.hazard_files(&fits[m]));
+        let dir = out.join("variants").join(&mem.name);
+        pounding::assessment::study::write_data_files(&dir, &files)?;
+    }
+    wr(
+        out.join("variants.csv"),
+        variants_csv(&design, &fits, stat, &comps).as_bytes(),
+    )?;
+    wr(
+        out.join("variants.json"),
+        variants_json(&design, &fits, stat, &comps).as_bytes(),
+    )?;
+    crate::design_plot::plot(&out.join("design.png"), &design, &fits)
+        .map_err(|e| anyhow!("plotting: {e}"))?;
+    if let Some(h) = design.hazard() {
+        let curves: Vec<_> = design
+            .members
+            .iter()
+            .zip(&fits)
+            .flat_map(|(m, f)| {
+                let rows = pounding::assessment::hazard_study::maf_rows(&h.curve, &f.rows);
+                crate::hazard_plot::curves(&h.curve, &f.rows, &rows, &format!("{}: ", m.name))
+            })
+            .collect();
+        crate::hazard_plot::plot(&out.join("hazard.png"), &base.spec.label(), &curves)
+            .map_err(|e| anyhow!("plotting: {e}"))?;
+    }
+    if let Some((spec, r)) = &searched {
+        wr(
+            out.join("search.csv"),
+            pounding::assessment::design_search::search_csv(spec, r).as_bytes(),
+        )?;
+    }
+    wr(
+        out.join("report.html"),
+        crate::design_report::report(
+            &design,
+            &fits,
+            (stat, &comps),
+            searched.as_ref().map(|x| &x.1),
+        )
+        .as_bytes(),
+    )?;
+    let timing = json!({
+        "runs_s": runs_s,
+        "wall_time_s": t0.elapsed().as_secs_f64(),
+        "runs": total,
+        "threads": pool.current_num_threads(),
+    });
+    wr(
+        out.join("timing.json"),
+        (serde_json::to_string_pretty(&timing)? + "\n").as_bytes(),
+    )?;
+    drop(lock);
+    print_table(&design, &fits, stat, &comps);
+    for s in recommendation(&design, &fits, stat, &comps) {
+        println!("{s}");
+    }
+    if let Some((_, r)) = &searched {
+        println!("search: {}", r.verdict);
+    }
+    let excluded: usize = rows.iter().flatten().filter(|r| !r.trusted()).count();
+    if excluded > 0 {
+        eprintln!(
+            "error: {excluded} of {total} runs failed or are not trustworthy (status in \
+             variants/<name>/runs.csv): excluded from the fits"
+        );
+        return Ok(ExitCode::from(1));
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Stdout: per member and limit state the statistic, the change and its paired and unpaired
+/// intervals.
+fn print_table(
+    design: &Design,
+    fits: &[pounding::assessment::study::Fits],
+    stat: pounding::assessment::design_write::Stat,
+    comps: &[pounding::assessment::design_write::Comparison],
+) {
+    let g = |x: Option<f64>| x.map_or("-".into(), |v| format!("{v:.4e}"));
+    let i = |x: Option<(f64, f64)>| x.map_or("-".into(), |(a, b)| format!("{a:.3e}..{b:.3e}"));
+    println!(
+        "{:<20} {:<18} {:<10} {:>11} {:>11} {:>23} {:>23}",
+        "variant",
+        "limit state",
+        "status",
+        stat.as_str(),
+        "change",
+        "paired interval",
+        "unpaired interval"
+    );
+    for c in comps {
+        println!(
+            "{:<20} {:<18} {:<10} {:>11} {:>11} {:>23} {:>23}",
+            design.members[c.member].name,
+            fits[c.member].rows[c.limit].limit_state,
+            fits[c.member].rows[c.limit].fit.status(),
+            g(c.value),
+            g(c.diff),
+            i(c.paired),
+            i(c.unpaired)
+        );
+    }
+}

@@ -1,0 +1,324 @@
+//! The `[search]` of a design: one continuous parameter of the bridge (e.g. the restrainers'
+//! stiffness) searched for the value at which a limit state's mean annual frequency meets a
+//! target, on the design's records and stripes.
+//!
+//! ```toml
+//! [search]
+//! key = "bridge.restrainer_k"    # a key path, as a variant's override
+//! range = [1.0e7, 1.0e9]         # > 0; searched on a log scale
+//! limit_state = "joint_opening"
+//! target_maf = 5.0e-5            # per year (the design needs a hazard)
+//! tolerance = 0.05               # stop when the bracket's ends are within 5 % (default)
+//! ```
+//!
+//! Each evaluation is a full set of runs of the bridge with `key = value` (the design's records,
+//! stripes and IM) and a fit. The ends of the range are run first: the MAF at the one end must
+//! meet the target and at the other not (else no answer: the target is met over the whole
+//! range, or nowhere in it). Bisection on `ln value` then narrows the bracket until its ends are
+//! within `tolerance`; the end that meets is the answer — the **smallest** value meeting the
+//! target when the MAF falls as the value rises (the largest, when it rises). A value 10 %
+//! beyond it on the failing side (smaller, or larger) is run to confirm that it does not meet.
+//! Every evaluation is kept; if the MAFs in the order of the values are not monotone, the
+//! search says so instead of answering.
+
+use super::design::{Design, DesignError};
+use super::run::Plan;
+use super::variant::{Override, Variant, VariantError, parse_path};
+use crate::fragility::hazard::maf;
+use crate::math::Real;
+use crate::output::float_token;
+
+/// The `[search]` table.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SearchSpec {
+    /// The key path.
+    pub key: String,
+    /// The range, `lo < hi`, both > 0.
+    pub range: (Real, Real),
+    /// The limit state's name.
+    pub limit_state: String,
+    /// The target MAF \[1/yr\].
+    pub target: Real,
+    /// Relative width at which the bisection stops.
+    pub tolerance: Real,
+    /// 1-based line of `key` in the design file.
+    pub line: usize,
+}
+
+#[derive(serde::Deserialize)]
+struct File {
+    search: Option<toml::Spanned<crate::toml_schema::Table<Sec>>>,
+}
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Sec {
+    key: toml::Spanned<String>,
+    range: toml::Spanned<Vec<Real>>,
+    limit_state: toml::Spanned<String>,
+    target_maf: toml::Spanned<Real>,
+    tolerance: Option<toml::Spanned<Real>>,
+}
+
+impl SearchSpec {
+    /// The `[search]` table of the design file `text` (`None` without one).
+    pub fn from_design(text: &str, origin: &str) -> Result<Option<Self>, DesignError> {
+        let f: File = toml::from_str(text).map_err(|e| VariantError::Syntax {
+            origin: origin.into(),
+            message: crate::input::shorten_lines(&e.to_string(), 200),
+        })?;
+        let Some(s) = f.search else { return Ok(None) };
+        let line = |p: usize| crate::toml_schema::line_col(text, p).0;
+        let err = |p: usize, k: &str, m: &str| DesignError::Key {
+            origin: origin.into(),
+            line: line(p),
+            key: format!("search.{k}"),
+            message: m.into(),
+        };
+        let s = &s.get_ref().0;
+        parse_path(s.key.get_ref()).map_err(|m| err(s.key.span().start, "key", m))?;
+        let r = s.range.get_ref();
+        if !(r.len() == 2 && r[0] > 0.0 && r[1] > r[0] && r[1].is_finite()) {
+            return Err(err(s.range.span().start, "range", "two values 0 < lo < hi"));
+        }
+        let t = *s.target_maf.get_ref();
+        if !(t > 0.0 && t.is_finite()) {
+            return Err(err(
+                s.target_maf.span().start,
+                "target_maf",
+                "must be > 0 (per year)",
+            ));
+        }
+        let tol = s.tolerance.as_ref().map_or(Ok(0.05), |v| {
+            let x = *v.get_ref();
+            if x > 0.0 && x < 1.0 {
+                Ok(x)
+            } else {
+                Err(err(v.span().start, "tolerance", "must lie in (0, 1)"))
+            }
+        })?;
+        Ok(Some(SearchSpec {
+            key: s.key.get_ref().clone(),
+            range: (r[0], r[1]),
+            limit_state: s.limit_state.get_ref().clone(),
+            target: t,
+            tolerance: tol,
+            line: line(s.key.span().start),
+        }))
+    }
+}
+
+/// One evaluation.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Evaluation {
+    /// The parameter's value.
+    pub value: Real,
+    /// The MAF (`None`: no fit; the status says why).
+    pub maf: Option<Real>,
+    /// The fit's status.
+    pub status: String,
+    /// Why it was run: `range`, `bisect` or `confirm`.
+    pub role: &'static str,
+}
+
+/// The outcome of a search.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SearchResult {
+    /// Every evaluation, in the order run.
+    pub evaluations: Vec<Evaluation>,
+    /// The value found (`None`: no answer, see `verdict`).
+    pub found: Option<Real>,
+    /// The verdict in words.
+    pub verdict: String,
+}
+
+/// Runs the search of `spec` on the design's plan (on the current rayon pool).
+pub fn search(
+    design: &Design,
+    spec: &SearchSpec,
+    plan: &Plan,
+    progress: &(dyn Fn() + Sync),
+) -> Result<SearchResult, DesignError> {
+    let base = &design.members[0].study;
+    let Some(hz) = design.hazard() else {
+        return Err(DesignError::Key {
+            origin: design.origin.clone(),
+            line: spec.line,
+            key: "search".into(),
+            message: "a search for a target MAF needs a hazard curve ([hazard] or --hazard)".into(),
+        });
+    };
+    let Some(l) = base
+        .limits
+        .iter()
+        .position(|b| b.state.name == spec.limit_state)
+    else {
+        return Err(DesignError::Key {
+            origin: design.origin.clone(),
+            line: spec.line,
+            key: "search.limit_state".into(),
+            message: format!(
+                "no limit state named {:?} in the scenario",
+                spec.limit_state
+            ),
+        });
+    };
+    let path = parse_path(&spec.key).unwrap_or_default();
+    let eval = |value: Real, role: &'static str| -> Result<Evaluation, DesignError> {
+        let v = Variant {
+            name: format!("search-{}", float_token(value)),
+            description: String::new(),
+            line: spec.line,
+            overrides: vec![Override {
+                key: spec.key.clone(),
+                path: path.clone(),
+                value: toml::Value::Float(value),
+                line: spec.line,
+            }],
+        };
+        let mut st = design.study_with(&v)?;
+        st.settings.bootstrap = 0;
+        let rows = st.run(plan, progress);
+        let fits = st
+            .fit(plan, &rows)
+            .map_err(|e| DesignError::Study(super::AssessmentError::Invalid(e.to_string())))?;
+        let r = &fits.rows[l];
+        Ok(Evaluation {
+            value,
+            maf: r.fit.params().map(|(t, b)| maf(&hz.curve, t, b).rate),
+            status: r.fit.status().to_string(),
+            role,
+        })
+    };
+    let meets = |e: &Evaluation| e.maf.is_some_and(|m| m <= spec.target);
+    let (lo, hi) = spec.range;
+    let mut evs = vec![eval(lo, "range")?, eval(hi, "range")?];
+    let no = |evs: Vec<Evaluation>, why: String| SearchResult {
+        evaluations: evs,
+        found: None,
+        verdict: why,
+    };
+    if let Some(e) = evs.iter().find(|e| e.maf.is_none()) {
+        let why = format!(
+            "no answer: at {} = {} the fit has no MAF ({})",
+            spec.key,
+            float_token(e.value),
+            e.status
+        );
+        return Ok(no(evs, why));
+    }
+    let decreasing = match (meets(&evs[0]), meets(&evs[1])) {
+        (false, true) => true,
+        (true, false) => false,
+        (a, _) => {
+            let why = format!(
+                "no answer: the target {} per year is {} over the range {}..{} (MAF {} and {})",
+                float_token(spec.target),
+                if a {
+                    "met at both ends"
+                } else {
+                    "met at neither end"
+                },
+                float_token(lo),
+                float_token(hi),
+                float_token(evs[0].maf.unwrap_or(Real::NAN)),
+                float_token(evs[1].maf.unwrap_or(Real::NAN)),
+            );
+            return Ok(no(evs, why));
+        }
+    };
+    // bracket: `fail` does not meet, `pass` meets
+    let (mut fail, mut pass) = if decreasing { (lo, hi) } else { (hi, lo) };
+    while (pass / fail).ln().abs() > (1.0 + spec.tolerance).ln() {
+        let mid = (fail * pass).sqrt();
+        let e = eval(mid, "bisect")?;
+        if e.maf.is_none() {
+            let why = format!(
+                "no answer: at {} = {} the fit has no MAF ({})",
+                spec.key,
+                float_token(mid),
+                e.status
+            );
+            evs.push(e);
+            return Ok(no(evs, why));
+        }
+        if meets(&e) {
+            pass = mid
+        } else {
+            fail = mid
+        }
+        evs.push(e);
+    }
+    let beyond = if decreasing { 0.9 * pass } else { pass / 0.9 };
+    let c = eval(beyond, "confirm")?;
+    let confirmed = !meets(&c);
+    evs.push(c);
+    // monotone in the order of the values?
+    let mut sorted: Vec<&Evaluation> = evs.iter().filter(|e| e.maf.is_some()).collect();
+    sorted.sort_by(|a, b| a.value.total_cmp(&b.value));
+    let m: Vec<Real> = sorted.iter().filter_map(|e| e.maf).collect();
+    let monotone = m.windows(2).all(|w| {
+        if decreasing {
+            w[1] <= w[0]
+        } else {
+            w[1] >= w[0]
+        }
+    });
+    if !monotone {
+        let why = format!(
+            "no answer: the MAF of {} is not monotone in {} over the values run (see search.csv); \
+             a bisection would return a wrong answer",
+            spec.limit_state, spec.key
+        );
+        return Ok(no(evs, why));
+    }
+    let side = if decreasing { "smallest" } else { "largest" };
+    let verdict = format!(
+        "{} = {} is the {side} value meeting MAF({}) <= {} per year (MAF {}; within {} %); {} = {} \
+         (10 % {}) gives MAF {}: {}",
+        spec.key,
+        float_token(pass),
+        spec.limit_state,
+        float_token(spec.target),
+        float_token(
+            evs.iter()
+                .find(|e| e.value == pass)
+                .and_then(|e| e.maf)
+                .unwrap_or(Real::NAN)
+        ),
+        float_token(100.0 * spec.tolerance),
+        spec.key,
+        float_token(beyond),
+        if decreasing { "smaller" } else { "larger" },
+        float_token(evs.last().and_then(|e| e.maf).unwrap_or(Real::NAN)),
+        if confirmed {
+            "does not meet the target (confirmed)"
+        } else {
+            "also meets the target: the answer is not confirmed"
+        },
+    );
+    Ok(SearchResult {
+        evaluations: evs,
+        found: confirmed.then_some(pass),
+        verdict,
+    })
+}
+
+/// `search.csv`: `value, maf_per_year, status, meets_target, role`.
+pub fn search_csv(spec: &SearchSpec, r: &SearchResult) -> String {
+    let mut out = format!(
+        "{},maf_per_year,status,meets_target,role\n",
+        crate::output::csv_field(&spec.key)
+    );
+    for e in &r.evaluations {
+        out.push_str(&format!(
+            "{},{},{},{},{}\n",
+            float_token(e.value),
+            float_token(e.maf.unwrap_or(Real::NAN)),
+            e.status,
+            e.maf.is_some_and(|m| m <= spec.target),
+            e.role
+        ));
+    }
+    out
+}
