@@ -83,17 +83,18 @@ fn merged_line(m: &store::Merged) -> String {
 
 /// 1 when some run did not complete (its status is stored), else 0.
 fn exit_of(m: &store::Merged) -> ExitCode {
-    let bad: usize = m
-        .statuses
+    exit_of_statuses(&m.statuses, m.rows)
+}
+
+/// Exit 1 when some of `rows` runs did not complete (`statuses`: runs per status).
+fn exit_of_statuses(statuses: &std::collections::BTreeMap<String, usize>, rows: usize) -> ExitCode {
+    let bad: usize = statuses
         .iter()
         .filter(|(k, _)| k.as_str() != "Completed")
         .map(|(_, n)| n)
         .sum();
     if bad > 0 {
-        eprintln!(
-            "error: {bad} of {} runs failed or are not trustworthy (status column)",
-            m.rows
-        );
+        eprintln!("error: {bad} of {rows} runs failed or are not trustworthy (status column)");
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS
@@ -206,6 +207,10 @@ fn run_campaign(a: RunArgs) -> Result<ExitCode> {
             shard.count,
             a.out.display()
         );
-        Ok(ExitCode::SUCCESS)
+        // this shard's runs (stored now or before): a Slurm task whose runs failed fails
+        let mine: Vec<usize> = (0..c.parts()).filter(|p| shard.contains(*p)).collect();
+        let statuses = st.part_statuses(&mine)?;
+        let rows = statuses.values().sum();
+        Ok(exit_of_statuses(&statuses, rows))
     }
 }

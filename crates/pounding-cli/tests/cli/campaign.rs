@@ -383,3 +383,162 @@ fn the_example_campaign_expands_as_its_comments_say() {
         format!("{}/SYN001/level_g=0.5", c.variants[1])
     );
 }
+
+/// Findings of a fresh-clone hostile trial, each a wrong number or lost results before:
+/// grids with equal values or no keys, overrides of the study's tables, a store written over by
+/// a merge of another campaign, parts adopted without their description, and a variant's runs
+/// fitted through another scenario.
+#[test]
+fn stores_and_grids_refuse_what_would_mix_or_mislabel_runs() {
+    let grid = |g: &str| format!("{SPEC}[grid]\n{g}");
+    let bad: &[(String, &str)] = &[
+        (grid("\"bridge.gap\" = [0.03, 0.03]\n"), "listed twice"),
+        (grid("\"bridge.gap\" = [0.03, 1, 1.0]\n"), "listed twice"),
+        (grid(""), "an empty [grid]"),
+        (
+            format!(
+                "{SPEC}[[variant]]\nname = \"v\"\n[variant.set]\n\"ground_motion.scale_y\" = -2.0\n"
+            ),
+            "[ground_motion] cannot be overridden",
+        ),
+        (
+            grid("\"time.dt\" = [1e-3, 2e-3]\n"),
+            "[time] cannot be overridden",
+        ),
+    ];
+    for (i, (spec, want)) in bad.iter().enumerate() {
+        let d = dir_with("refuse", spec, 2, 1.0);
+        let p = |s: &str| d.join(s).display().to_string();
+        let (code, out, err) = run_capture(&["campaign", "run", &p("spec.toml"), "--out", &p("o")]);
+        assert_eq!(code, Some(2), "case {i}: {out}\n{err}");
+        assert!(err.contains(want), "case {i}: {err}");
+        assert!(!d.join("o").join("parts").exists(), "case {i} wrote parts");
+    }
+    // the keys' order is the file's, whatever a comment before them mentions
+    let spec = grid(
+        "# sweeps \"bridge.gap\" last\n\"bridge.restrainer_k\" = [2.5e7, 5.0e7]\n\"bridge.gap\" = [0.02, 0.05]\n",
+    );
+    let d = dir_with("order", &spec, 1, 1.0);
+    let p = |s: &str| d.join(s).display().to_string();
+    ok(&["campaign", "run", &p("spec.toml"), "--out", &p("s")]);
+    let meta: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(d.join("s").join("campaign.json")).unwrap()).unwrap();
+    let names: Vec<&str> = meta["variants"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_str().unwrap())
+        .collect();
+    assert_eq!(
+        names[..2],
+        [
+            "bridge.restrainer_k=25000000,bridge.gap=0.02",
+            "bridge.restrainer_k=25000000,bridge.gap=0.05"
+        ],
+        "{names:?}"
+    );
+    // a merge into another campaign's store is refused, the store left as it was
+    let d2 = dir_with("other", SPEC, 1, 1.0);
+    let q = |s: &str| d2.join(s).display().to_string();
+    ok(&["campaign", "run", &q("spec.toml"), "--out", &q("base")]);
+    let before = std::fs::read(d2.join("base").join("runs.parquet")).unwrap();
+    let (code, _, err) = run_capture(&["campaign", "merge", &p("s"), "--out", &q("base")]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("holds another campaign"), "{err}");
+    assert_eq!(
+        std::fs::read(d2.join("base").join("runs.parquet")).unwrap(),
+        before
+    );
+    // parts without their description are not adopted
+    std::fs::remove_file(d2.join("base").join("campaign.json")).unwrap();
+    let (code, _, err) = run_capture(&["campaign", "run", &q("spec.toml"), "--out", &q("base")]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("has part files but no campaign.json"), "{err}");
+    // a variant's runs are fitted through the campaign's own scenario only
+    let edited = std::fs::read_to_string(d.join("viaduct.toml"))
+        .unwrap()
+        .replace("limit_m = 0.10", "limit_m = 0.01");
+    std::fs::write(d.join("edited.toml"), edited).unwrap();
+    let (code, _, err) = run_capture(&[
+        "fragility",
+        &p("edited.toml"),
+        "--from-store",
+        &p("s"),
+        "--variant",
+        names[0],
+        "--out",
+        &p("f"),
+    ]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("another scenario text"), "{err}");
+    ok(&[
+        "fragility",
+        &p("viaduct.toml"),
+        "--from-store",
+        &p("s"),
+        "--variant",
+        names[0],
+        "--out",
+        &p("f"),
+    ]);
+}
+
+/// A shard whose runs did not all complete exits 1 (a Slurm array flags the task), as the whole
+/// campaign and its merge do; a shard of completed runs exits 0.
+#[test]
+fn a_shard_with_failed_runs_exits_1() {
+    // a step far too coarse for the Hertz contact at strong stripes: Newton failures
+    let spec =
+        "[campaign]\nscenario = \"viaduct.toml\"\nruns_per_part = 4\nlevels_g = [1.0, 3.0, 6.0]\n";
+    let d = dir_with("shardfail", spec, 4, 3.0);
+    let text = std::fs::read_to_string(d.join("viaduct.toml"))
+        .unwrap()
+        .replace("dt = 2e-3", "dt = 0.02")
+        .replace("seat_length = 0.25", "seat_length = 0.03");
+    std::fs::write(d.join("viaduct.toml"), text).unwrap();
+    std::fs::write(
+        d.join("suite.toml"),
+        "[synth]\ncount = 4\nseed = 1\npairs = true\ndt = 0.01\nduration = 20.0\n",
+    )
+    .unwrap();
+    let p = |s: &str| d.join(s).display().to_string();
+    let mut codes = Vec::new();
+    for k in 1..=3 {
+        let (code, out, err) = run_capture(&[
+            "campaign",
+            "run",
+            &p("spec.toml"),
+            "--out",
+            &p(&format!("s{k}")),
+            "--shard",
+            &format!("{k}/3"),
+        ]);
+        // one part per shard: its statuses decide
+        let part = d
+            .join(format!("s{k}"))
+            .join("parts")
+            .join(format!("part-{:06}.parquet", k - 1));
+        let r = Reader::open(&part).unwrap();
+        let all_completed = match r.row_group(0, Some(&["status"])).unwrap().get("status") {
+            Some(Values::Text(v)) => v.iter().all(|x| x.as_deref() == Some("Completed")),
+            other => panic!("{other:?}"),
+        };
+        let want = if all_completed { 0 } else { 1 };
+        assert_eq!(code, Some(want), "shard {k}: {out}\n{err}");
+        codes.push(want);
+    }
+    assert!(
+        codes.contains(&1),
+        "no run failed: the test needs a coarser step"
+    );
+    let (code, _, err) = run_capture(&[
+        "campaign",
+        "merge",
+        &p("s1"),
+        &p("s2"),
+        &p("s3"),
+        "--out",
+        &p("all"),
+    ]);
+    assert_eq!(code, Some(1), "{err}");
+}

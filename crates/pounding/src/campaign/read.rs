@@ -85,11 +85,12 @@ pub fn study_rows(
                 ))
             })?,
     };
-    if meta.variants.len() == 1
-        && meta.scenario_fingerprint != format!("{scenario_fingerprint:016x}")
-    {
+    // the campaign's base scenario, also with variants: its limit states decided the stored
+    // verdicts (a variant's runs are fitted through the base's file and --variant)
+    if meta.scenario_fingerprint != format!("{scenario_fingerprint:016x}") {
         return Err(CampaignError::Store(format!(
-            "{}: its runs are of another scenario text (fingerprint {}, this scenario's {:016x})",
+            "{}: its runs are of another scenario text (fingerprint {}, this scenario's {:016x}); \
+             give the campaign's own scenario file (with --variant for a variant's runs)",
             path.display(),
             meta.scenario_fingerprint,
             scenario_fingerprint

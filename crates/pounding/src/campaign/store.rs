@@ -129,6 +129,17 @@ impl Store {
         let meta = Meta::of(c);
         let parts = dir.join(PARTS);
         std::fs::create_dir_all(&parts).map_err(io("cannot create", &parts))?;
+        if !dir.join(META).exists()
+            && std::fs::read_dir(&parts).is_ok_and(|mut d| d.next().is_some())
+        {
+            // parts without their description: whose runs they hold cannot be checked
+            return Err(CampaignError::Store(format!(
+                "{} has part files but no {META}: which campaign they belong to cannot be \
+                 checked; give another --out, or remove {} to start again",
+                dir.display(),
+                parts.display()
+            )));
+        }
         if dir.join(META).exists() {
             let old = Meta::read(dir)?;
             if old != meta {
@@ -239,6 +250,23 @@ impl Store {
         Ok(())
     }
 
+    /// How many runs of the stored parts `parts` have each status (the `status` column).
+    pub fn part_statuses(&self, parts: &[usize]) -> Result<BTreeMap<String, usize>, CampaignError> {
+        let mut out = BTreeMap::new();
+        for &p in parts {
+            let path = self.part_path(p);
+            let r = Reader::open(&path)?;
+            for g in 0..r.row_groups() {
+                if let Some(Values::Text(v)) = r.row_group(g, Some(&["status"]))?.get("status") {
+                    for x in v {
+                        *out.entry(x.clone().unwrap_or_default()).or_insert(0) += 1;
+                    }
+                }
+            }
+        }
+        Ok(out)
+    }
+
     /// Writes part `p` (its Parquet bytes, atomically).
     pub fn write_part(&self, p: usize, cols: &Columns) -> Result<(), CampaignError> {
         let bytes = table::to_bytes(cols)?;
@@ -305,6 +333,19 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Merged, CampaignError> {
             meta.parts,
             first.join(", ")
         )));
+    }
+    // `out` may be one of the stores merged, or a new directory; never another campaign's store
+    if out.join(META).exists() {
+        let there = Meta::read(out)?;
+        if there != meta {
+            return Err(CampaignError::Store(format!(
+                "{} holds another campaign (fingerprint {}; the stores merged: {}): give another \
+                 --out",
+                out.display(),
+                there.fingerprint,
+                meta.fingerprint
+            )));
+        }
     }
     std::fs::create_dir_all(out).map_err(io("cannot create", out))?;
     let path = out.join(MERGED);

@@ -64,6 +64,30 @@ fn value_label(v: &toml::Value) -> String {
     }
 }
 
+/// The byte offset of the key `k` of the `[grid]` table starting at `span`: the start of the line
+/// that writes it as a key (quoted with `"` or `'`, or bare), so that a comment or a value that
+/// mentions it does not count; the table's start when not found.
+fn key_position(spec: &str, span: std::ops::Range<usize>, k: &str) -> usize {
+    let mut off = span.start;
+    for (n, line) in spec[span.start.min(spec.len())..]
+        .split_inclusive('\n')
+        .enumerate()
+    {
+        let t = line.trim_start();
+        if n > 0 && t.starts_with('[') {
+            break; // the next table
+        }
+        let rest = [format!("\"{k}\""), format!("'{k}'"), k.to_string()]
+            .into_iter()
+            .find_map(|q| t.strip_prefix(q.as_str()).map(str::to_string));
+        if rest.is_some_and(|r| r.trim_start().starts_with('=')) {
+            return off + (line.len() - t.len());
+        }
+        off += line.len();
+    }
+    span.start
+}
+
 /// The grid's points as variants (empty without a `[grid]`).
 fn grid(spec: &str, origin: &str) -> Result<Vec<Variant>, CampaignError> {
     #[derive(serde::Deserialize)]
@@ -77,12 +101,21 @@ fn grid(spec: &str, origin: &str) -> Result<Vec<Variant>, CampaignError> {
     let Some(t) = g.grid else {
         return Ok(Vec::new());
     };
+    if t.get_ref().is_empty() {
+        return Err(key_err(
+            origin,
+            spec,
+            t.span().start,
+            "grid",
+            "an empty [grid]: give a quoted key path and its values (\"bridge.gap\" = [0.02, 0.05]), \
+             or remove the table"
+                .into(),
+        ));
+    }
     // the keys in the file's order (the table is sorted): by the position of their line
     let mut axes: Vec<(usize, String, Vec<toml::Value>)> = Vec::new();
     for (k, v) in t.get_ref() {
-        let at = spec[t.span().start..]
-            .find(&format!("\"{k}\""))
-            .map_or(t.span().start, |i| t.span().start + i);
+        let at = key_position(spec, t.span(), k);
         let key = format!("grid.\"{k}\"");
         let toml::Value::Array(vals) = v else {
             return Err(key_err(
@@ -105,6 +138,25 @@ fn grid(spec: &str, origin: &str) -> Result<Vec<Variant>, CampaignError> {
             ));
         }
         parse_path(k).map_err(|m| key_err(origin, spec, at, &key, m.to_string()))?;
+        // two equal values would be two variants of one name (and the same runs twice)
+        let labels: Vec<String> = vals.iter().map(value_label).collect();
+        if let Some((i, l)) = labels
+            .iter()
+            .enumerate()
+            .find(|(i, l)| labels[..*i].contains(l))
+        {
+            return Err(key_err(
+                origin,
+                spec,
+                at,
+                &key,
+                format!(
+                    "the value {l} is listed twice (values {} and {})",
+                    labels[..i].iter().position(|x| x == l).map_or(0, |j| j + 1),
+                    i + 1
+                ),
+            ));
+        }
         axes.push((at, k.clone(), vals.clone()));
     }
     axes.sort_by_key(|a| a.0);
@@ -213,13 +265,15 @@ pub fn variants(
         .map(|v| {
             if let Some(o) = v.overrides.iter().find(|o| {
                 matches!(o.path.first(), Some(crate::assessment::variant::Step::Key(k))
-                    if k == "fragility" || k == "limit_state")
+                    if crate::assessment::design::STUDY_TABLES.contains(&k.as_str()))
             }) {
                 return Err(CampaignError::Key {
                     message: format!(
-                        "variant {:?}: a variant changes the bridge, not the study (its IM, \
-                         stripes and limit states are the campaign's)",
-                        v.name
+                        "variant {:?}: a variant changes the bridge, not the study (its ground \
+                         motions, IM, stripes, time step and limit states are the campaign's: \
+                         [{}] cannot be overridden)",
+                        v.name,
+                        o.key.split(['.', '[']).next().unwrap_or_default()
                     ),
                     key: o.key.clone(),
                     origin: origin.to_string(),
