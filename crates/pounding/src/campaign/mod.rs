@@ -25,6 +25,7 @@ pub mod exec;
 pub mod read;
 pub mod spec;
 pub mod store;
+mod store_merge;
 pub mod table;
 pub mod variants;
 

@@ -57,6 +57,13 @@ pub fn study_rows(
     scenario_fingerprint: u64,
     variant: Option<&str>,
 ) -> Result<Vec<crate::assessment::run::RunRow>, CampaignError> {
+    if !path.exists() {
+        return Err(CampaignError::Store(format!(
+            "no campaign store at {} (give the --out directory of `pounding campaign run`, or its \
+             runs.parquet)",
+            path.display()
+        )));
+    }
     let names: Vec<String> = study.limits.iter().map(|l| l.state.name.clone()).collect();
     let ends = study.setup.problem.model.seat_end_names();
     let (r, s) = (study.set.records.len(), plan.values().len());
