@@ -49,6 +49,7 @@ pub mod hazard_study;
 pub mod im;
 pub mod limit;
 pub mod run;
+mod run_fit;
 pub mod settings;
 pub mod study;
 pub mod svgm;
