@@ -1,7 +1,7 @@
 //! `design.png` of `pounding design`: per limit state (one panel each) the fitted fragility curve
 //! and bootstrap band of every variant against the IM, the as-built bridge in black.
 
-use crate::fragility_plot::log_key_points;
+use crate::fragility_plot::{band_polygon, log_key_points};
 use crate::plot_style::{
     BLUE, DrawResult, FAMILY, GREEN, ORANGE, PURPLE, RED, e, register, save_png, series_legend,
 };
@@ -58,19 +58,10 @@ pub(crate) fn plot(path: &Path, design: &Design, fits: &[Fits]) -> DrawResult {
             for (m, f) in fits.iter().enumerate() {
                 let Some(r) = f.rows.get(l) else { continue };
                 let c = COLOURS[m % COLOURS.len()];
-                if let Some(b) = &r.bootstrap {
-                    let band: Vec<(Real, Real, Real)> = b
-                        .band
-                        .iter()
-                        .filter_map(|p| p.interval.map(|(a, z)| (p.im, a, z)))
-                        .collect();
-                    if band.len() > 1 {
-                        let mut poly: Vec<(Real, Real)> = band.iter().map(|p| (p.0, p.2)).collect();
-                        poly.extend(band.iter().rev().map(|p| (p.0, p.1)));
-                        chart
-                            .draw_series(std::iter::once(Polygon::new(poly, c.mix(0.10))))
-                            .map_err(e)?;
-                    }
+                if let Some(poly) = r.bootstrap.as_ref().and_then(band_polygon) {
+                    chart
+                        .draw_series(std::iter::once(Polygon::new(poly, c.mix(0.10))))
+                        .map_err(e)?;
                 }
                 let label = format!("{} ({})", design.members[m].name, r.fit.status());
                 let pts: Vec<(Real, Real)> = f

@@ -19,6 +19,21 @@ pub(crate) use pounding::assessment::study::empirical;
 /// Labels of a log axis over `[lo, hi]`: the 1–2–5 steps of each decade, or the finer
 /// 1–1.5–2–3–5–7 steps when that gives fewer than four labels (a narrow IM range was labelled
 /// only at 1 and 2 g), and the range's ends when even those give fewer than three.
+/// The outline of a fit's bootstrap band (upper edge left to right, lower edge back), or `None`
+/// with fewer than two points with an interval.
+pub(crate) fn band_polygon(b: &pounding::fragility::Bootstrap) -> Option<Vec<(Real, Real)>> {
+    let band: Vec<(Real, Real, Real)> = b
+        .band
+        .iter()
+        .filter_map(|p| p.interval.map(|(a, z)| (p.im, a, z)))
+        .collect();
+    (band.len() > 1).then(|| {
+        let mut poly: Vec<(Real, Real)> = band.iter().map(|p| (p.0, p.2)).collect();
+        poly.extend(band.iter().rev().map(|p| (p.0, p.1)));
+        poly
+    })
+}
+
 pub(crate) fn log_key_points(lo: Real, hi: Real) -> Vec<Real> {
     let mut out = Vec::new();
     if !(lo > 0.0 && hi > lo && hi.is_finite()) {
@@ -105,19 +120,10 @@ pub(crate) fn plot(
             .map_err(e)?;
         for (l, f) in fits.rows.iter().enumerate() {
             let c = COLOURS[l % COLOURS.len()];
-            if let Some(b) = &f.bootstrap {
-                let band: Vec<(Real, Real, Real)> = b
-                    .band
-                    .iter()
-                    .filter_map(|p| p.interval.map(|(a, z)| (p.im, a, z)))
-                    .collect();
-                if band.len() > 1 {
-                    let mut poly: Vec<(Real, Real)> = band.iter().map(|p| (p.0, p.2)).collect();
-                    poly.extend(band.iter().rev().map(|p| (p.0, p.1)));
-                    chart
-                        .draw_series(std::iter::once(Polygon::new(poly, c.mix(0.15))))
-                        .map_err(e)?;
-                }
+            if let Some(poly) = f.bootstrap.as_ref().and_then(band_polygon) {
+                chart
+                    .draw_series(std::iter::once(Polygon::new(poly, c.mix(0.15))))
+                    .map_err(e)?;
             }
             let label = format!("{} ({})", f.limit_state, f.fit.status());
             match f.fit.params() {
