@@ -212,3 +212,38 @@ fn bad_hazard_input_exits_2_naming_file_key_and_line() {
         assert!(!out.exists(), "{name}: wrote {}", out.display());
     }
 }
+
+/// A table whose rates span the whole floating-point range (1e300 to 1e-300 per year) overflows
+/// the integral: the limit state's MAF row says so (`maf_not_finite`), never `ok` with `nan`.
+#[test]
+fn an_overflowing_hazard_table_is_not_an_ok_maf() {
+    let d = scratch_with(
+        "hazard",
+        "overflow",
+        &[
+            ("bridge.toml", &scenario("")),
+            ("set.toml", SET),
+            ("h.csv", "im_g,rate\n0.1,1e300\n0.5,1e-300\n"),
+        ],
+    );
+    let out = d.join("out");
+    let (_, _, err) = run_capture(&[
+        "fragility",
+        d.join("bridge.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--hazard",
+        d.join("h.csv").to_str().unwrap(),
+    ]);
+    let text =
+        std::fs::read_to_string(out.join("maf.csv")).unwrap_or_else(|e| panic!("{e}: {err}"));
+    let rows = text.lines().count() - 1;
+    let mut flagged = 0;
+    for i in 0..rows {
+        let m = csv_row(&text, i);
+        let finite = m["maf_per_year"].parse::<f64>().is_ok_and(f64::is_finite);
+        assert!(m["status"] != "ok" || finite, "{text}");
+        flagged += usize::from(m["status"] == "maf_not_finite");
+    }
+    assert!(flagged > 0, "the table should overflow: {text}");
+}

@@ -36,11 +36,22 @@ pub fn maf_rows(hazard: &HazardCurve, fits: &[FragilityRow]) -> Vec<MafRow> {
                 (None, Some((t, b))) => (maf(hazard, t, b), None),
                 (_, None) => (maf(hazard, Real::NAN, Real::NAN), None),
             };
+            // a hazard table spanning rates beyond the floating-point range can overflow the
+            // integral: never a non-finite MAF under an `ok` status
+            let finite = m.rate.is_finite()
+                && interval
+                    .as_ref()
+                    .is_none_or(|i| i.0.is_finite() && i.1.is_finite());
+            let fitted = r.fit.params().is_some();
             MafRow {
                 limit_state: r.limit_state.clone(),
-                status: r.fit.status().to_string(),
-                maf: r.fit.params().map(|_| m),
-                interval,
+                status: if fitted && !finite {
+                    "maf_not_finite".to_string()
+                } else {
+                    r.fit.status().to_string()
+                },
+                maf: r.fit.params().filter(|_| finite).map(|_| m),
+                interval: interval.filter(|_| finite),
                 level: r.bootstrap.as_ref().map_or(Real::NAN, |b| b.level),
             }
         })
