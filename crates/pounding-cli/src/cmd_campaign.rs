@@ -177,7 +177,7 @@ fn run_campaign(a: RunArgs) -> Result<ExitCode> {
     let (todo, before) = exec::pending(&c, &st, shard)?;
     let runs: usize = todo.iter().map(|p| c.part_range(*p).len()).sum();
     eprintln!(
-        "campaign {}: {} runs in {} parts of {}{}; {} parts stored, {} to run ({} runs) on {} threads",
+        "campaign {}: {} runs in {} parts of {}{}; {} parts stored, {} to run ({} runs) on {}",
         c.name,
         c.runs(),
         c.parts(),
@@ -190,7 +190,7 @@ fn run_campaign(a: RunArgs) -> Result<ExitCode> {
         before,
         todo.len(),
         runs,
-        pool.current_num_threads()
+        crate::cmd_simulate::sim_records::count(pool.current_num_threads(), "thread")
     );
     let bar = Bar::new(runs);
     let done = pool.install(|| exec::run_parts(&c, &st, &todo, &|| bar.inc()));

@@ -48,6 +48,16 @@ pub struct Args {
     /// With --from-store: the campaign variant to fit (default: the only one).
     #[arg(long, requires = "from_store")]
     pub variant: Option<String>,
+    /// With --from-store: the campaign spec that made the store; the runs are then read as the
+    /// campaign made them (its record set and stripes, the variant's own bridge and limit
+    /// states), and the scenario must be the spec's.
+    #[arg(
+        long,
+        value_name = "SPEC",
+        requires = "from_store",
+        conflicts_with = "set"
+    )]
+    pub campaign: Option<PathBuf>,
     /// A site hazard curve (a `.csv` table with the header `im_g,rate`, or a `.toml` file with a
     /// `[hazard]` table) instead of the scenario's `[hazard]`: writes the mean annual frequency
     /// of every limit state (`maf.csv`, `hazard.csv`, `hazard.png`).
@@ -57,24 +67,41 @@ pub struct Args {
 
 /// Reads the scenario, its `[fragility]` settings, the record set and binds the limit states
 /// ([`Study::read`]); prints the records' warnings.
-fn read(args: &Args) -> Result<(Study, u64)> {
+/// With --from-store, the study the store holds ([`pounding::campaign::from_store::store_study`]).
+fn read(args: &Args) -> Result<(Study, u64, Option<Plan>, Option<String>)> {
     let scenario = Scenario::load(&args.scenario)?;
-    let fingerprint = pounding::campaign::scenario_fingerprint(scenario.text());
-    let mut st = Study::read(scenario, args.scenario.parent(), args.set.as_deref())?;
+    let (mut st, fingerprint, plan, variant) = match &args.from_store {
+        Some(store) => {
+            let s = pounding::campaign::from_store::store_study(
+                scenario,
+                &args.scenario,
+                args.set.as_deref(),
+                store,
+                args.campaign.as_deref(),
+                args.variant.as_deref(),
+            )?;
+            (s.study, s.scenario_fingerprint, s.plan, s.variant)
+        }
+        None => {
+            let fingerprint = pounding::campaign::scenario_fingerprint(scenario.text());
+            let st = Study::read(scenario, args.scenario.parent(), args.set.as_deref())?;
+            (st, fingerprint, None, None)
+        }
+    };
     if let Some(h) = &args.hazard {
         st = st.with_hazard(h)?;
     }
     for w in st.record_warnings() {
         eprintln!("warning: {w}");
     }
-    Ok((st, fingerprint))
+    Ok((st, fingerprint, plan, variant))
 }
 
 /// Runs the command.
 pub fn run(args: Args) -> Result<ExitCode> {
     let t0 = Instant::now();
     pounding::input::check_threads(args.threads).map_err(anyhow::Error::msg)?;
-    let (st, fingerprint) = read(&args)?;
+    let (st, fingerprint, planned, variant) = read(&args)?;
     let uniform = match args.compare_uniform {
         false => None,
         true => Some(st.uniform_counterpart().ok_or_else(|| {
@@ -90,7 +117,10 @@ pub fn run(args: Args) -> Result<ExitCode> {
         pool = pool.num_threads(n);
     }
     let pool = pool.build().context("cannot start the worker threads")?;
-    let plan = pool.install(|| st.plan())?;
+    let plan = match planned {
+        Some(p) => p,
+        None => pool.install(|| st.plan())?,
+    };
     pounding::output::check_output_dir_free(&args.out)?;
     let per = st.set.records.len() * plan.values().len();
     let total = per * if uniform.is_some() { 2 } else { 1 };
@@ -124,7 +154,7 @@ pub fn run(args: Args) -> Result<ExitCode> {
             &st,
             &plan,
             fingerprint,
-            args.variant.as_deref(),
+            variant.as_deref(),
         )?,
         None => pool.install(|| st.run(&plan, &|| pb.inc(1))),
     };

@@ -116,9 +116,52 @@ fn campaign_merge<'py>(
     Ok(d)
 }
 
+/// The lock of an output directory (`pounding::output::lock_output_dir`, the CLI's): held while
+/// a campaign runs into the store, so that a second run (another process, the CLI, or this
+/// process again) is refused instead of writing the same parts. Dask workers write parts without
+/// it (the driver holds it); released by `release()`, by leaving a `with` block, or when the
+/// process ends.
+#[pyclass(module = "pounding._core", name = "StoreLock")]
+pub struct PyStoreLock {
+    lock: Option<pounding::output::OutputLock>,
+}
+
+#[pymethods]
+impl PyStoreLock {
+    /// Locks the directory `out` (created if missing); `ValueError` when another run holds it.
+    #[new]
+    fn new(out: PathBuf) -> PyResult<Self> {
+        pounding::output::check_output_dir_free(&out).map_err(value_error)?;
+        let lock = pounding::output::lock_output_dir(&out).map_err(value_error)?;
+        Ok(Self { lock: Some(lock) })
+    }
+
+    /// Whether the lock is still held.
+    #[getter]
+    fn held(&self) -> bool {
+        self.lock.is_some()
+    }
+
+    /// Releases the lock (a second call does nothing).
+    fn release(&mut self) {
+        self.lock = None;
+    }
+
+    fn __enter__(slf: Py<Self>) -> Py<Self> {
+        slf
+    }
+
+    #[pyo3(signature = (*_args))]
+    fn __exit__(&mut self, _args: &Bound<'_, pyo3::types::PyTuple>) -> bool {
+        self.release();
+        false
+    }
+}
+
 /// Registers the campaign functions.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyCampaign>()?;
+    m.add_class::<PyStoreLock>()?;
     m.add_function(wrap_pyfunction!(campaign_merge, m)?)?;
     Ok(())
 }

@@ -58,3 +58,27 @@ def test_dask_local_cluster_of_processes(tmp_path):
         r = pounding.campaign.run(spec, client, out=tmp_path / "dask", parts_per_task=2)
     assert r.tasks == 3 and r.runs == 12
     assert Path(r.path).read_bytes() == Path(local.path).read_bytes()
+
+
+def test_a_locked_store_is_refused(tmp_path, cli):
+    """While one run holds the store (here a StoreLock, as `run` holds it), a second run from
+    Python and the CLI are refused, nothing written; after the release the run goes ahead."""
+    from pounding import _core
+
+    spec = _files(tmp_path)
+    out = tmp_path / "s"
+    lock = _core.StoreLock(str(out))
+    assert lock.held
+    with pytest.raises(ValueError, match="(?i)lock|another"):
+        pounding.campaign.run(spec, out=out, threads=1)
+    with pytest.raises(ValueError, match="(?i)lock|another"):
+        pounding.campaign.merge([out], out)
+    res = cli("campaign", "run", spec, "--out", out, check=False)
+    assert res.returncode != 0
+    assert not (out / "parts").exists() or not any((out / "parts").iterdir())
+    lock.release()
+    assert not lock.held
+    with _core.StoreLock(str(out)) as held:
+        assert held.held
+    r = pounding.campaign.run(spec, out=out, threads=1)
+    assert r.runs == 12 and r.ok

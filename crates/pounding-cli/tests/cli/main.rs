@@ -86,6 +86,7 @@ mod batch;
 mod bridge_batch;
 mod bridge_plots;
 mod campaign;
+mod campaign_read;
 mod check;
 mod compare;
 mod compare_energy;

@@ -91,27 +91,36 @@ def run(spec, client=None, out="out/campaign", *, parts_per_task: Optional[int] 
     spec = os.path.abspath(os.fspath(spec))
     out = os.path.abspath(os.fspath(out))
     c = load(spec)
-    pending = c.prepare(out)
-    tasks = 0
-    if client is None:
-        if pending:
-            c.run_parts(out, pending, threads)
-    else:
-        workers = len(client.scheduler_info().get("workers", {})) or 1
-        batches = _batches(pending, workers, parts_per_task)
-        futures = [
-            client.submit(_run_batch, spec, out, b, threads or 1, retries=retries, pure=False,
-                          key=f"pounding-campaign-{c.fingerprint}-{b[0]}")
-            for b in batches
-        ]
-        client.gather(futures)
-        tasks = len(futures)
-    return merge([out], out, tasks=tasks)
+    # the store is locked for the whole run, as by `pounding campaign run`: a second run into it
+    # (another process, the CLI, or this process) is refused; the workers write parts unlocked
+    with _core.StoreLock(out):
+        pending = c.prepare(out)
+        tasks = 0
+        if client is None:
+            if pending:
+                c.run_parts(out, pending, threads)
+        else:
+            workers = len(client.scheduler_info().get("workers", {})) or 1
+            batches = _batches(pending, workers, parts_per_task)
+            futures = [
+                client.submit(_run_batch, spec, out, b, threads or 1, retries=retries,
+                              pure=False, key=f"pounding-campaign-{c.fingerprint}-{b[0]}")
+                for b in batches
+            ]
+            client.gather(futures)
+            tasks = len(futures)
+        return _merge([out], out, tasks)
 
 
 def merge(stores, out, *, tasks: int = 0) -> CampaignResult:
     """Merges the parts of ``stores`` (e.g. the stores of ``pounding campaign run --shard``)
-    into ``out/runs.parquet``; refused when a part is missing or two stores disagree."""
+    into ``out/runs.parquet``; refused when a part is missing or two stores disagree, and while
+    another run holds ``out``."""
+    with _core.StoreLock(os.fspath(out)):
+        return _merge(stores, out, tasks)
+
+
+def _merge(stores, out, tasks: int) -> CampaignResult:
     m = _core.campaign_merge([os.fspath(s) for s in stores], os.fspath(out))
     return CampaignResult(path=m["path"], runs=m["rows"], statuses=dict(m["statuses"]),
                           tasks=tasks)

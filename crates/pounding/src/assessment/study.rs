@@ -57,6 +57,9 @@ pub struct Study {
     /// against the bridge before any run; `Err`: the check could not be evaluated, with the
     /// reason).
     pub code_check: Option<Result<super::CheckReport, String>>,
+    /// The `[code_check]` input the check was made with (a campaign variant's bridge is checked
+    /// with it again).
+    pub code_check_input: Option<super::CodeCheckInput>,
     /// The site hazard curve (`[hazard]`, or [`Study::with_hazard`]): the MAF of every limit
     /// state is computed when present.
     pub hazard: Option<super::hazard_input::HazardInput>,
@@ -131,15 +134,14 @@ impl Study {
                 (_, e) => e.into(),
             })?;
         // a `[code_check]` table is read (and refused, naming its key) before any run
-        let code_check = if super::CodeCheckInput::is_present(scenario.text()) {
+        let (code_check, code_check_input) = if super::CodeCheckInput::is_present(scenario.text()) {
             let input = super::CodeCheckInput::from_scenario(scenario.text(), scenario.origin())?;
             input.check_segments(setup.problem.model.segments.len())?;
-            Some(
-                super::check_bridge(&setup.problem.model, &input, scenario.origin())
-                    .map_err(|e| e.to_string()),
-            )
+            let report = super::check_bridge(&setup.problem.model, &input, scenario.origin())
+                .map_err(|e| e.to_string());
+            (Some(report), Some(input))
         } else {
-            None
+            (None, None)
         };
         let limits = bind(
             &settings.limit_states,
@@ -186,6 +188,7 @@ impl Study {
             limits,
             spec,
             code_check,
+            code_check_input,
             hazard,
         })
     }

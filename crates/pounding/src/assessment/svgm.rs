@@ -36,6 +36,7 @@ impl Study {
             spec: self.spec,
             period: self.period.clone(),
             code_check: self.code_check.clone(),
+            code_check_input: self.code_check_input.clone(),
             hazard: self.hazard.clone(),
         })
     }

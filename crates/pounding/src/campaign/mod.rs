@@ -22,6 +22,7 @@
 //! results, so any executor (threads, shards, Dask) stores the same bytes.
 
 pub mod exec;
+pub mod from_store;
 pub mod read;
 pub mod spec;
 pub mod store;
