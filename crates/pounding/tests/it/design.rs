@@ -230,3 +230,61 @@ fn restrainer_search_answer_is_confirmed_by_direct_runs() {
     assert_eq!(own(found), Some(at));
     assert_eq!(own(0.9 * found), Some(below));
 }
+
+/// A run of the design example whose compliance Newton iteration fails in one step at
+/// `dt = 2 ms` (the stiff-restrainers variant, SYN009 at 0.5 g) is run again at `dt/2`, where it
+/// completes: the row counts in the fit with the numbers of the finer run, and one more warning.
+#[test]
+fn a_run_with_newton_failures_is_run_again_at_half_the_step() {
+    use pounding::assessment::run::{run_one, summary_settings};
+    use pounding::assessment::study::Study;
+    use pounding::sim::scenario::Scenario;
+    use pounding::sim::{SimSettings, SimStatus, simulate};
+    let d = scratch_dir("design", "refine");
+    let text = include_str!("../../../../examples/design/viaduct5.toml")
+        .replace("restrainer_k = 2.0e7", "restrainer_k = 5.0e7")
+        .replace(
+            "levels_g = [0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.4]",
+            "levels_g = [0.5]",
+        )
+        .replace("bootstrap = 500", "bootstrap = 0");
+    // the example's first nine pairs (each synthetic record depends on the seed and its index)
+    std::fs::write(
+        d.join("suite.toml"),
+        "[synth]\ncount = 9\nseed = 1\npairs = true\n",
+    )
+    .unwrap();
+    let st = Study::read(
+        Scenario::from_toml(&text, "viaduct5.toml").expect("scenario"),
+        Some(&d),
+        None,
+    )
+    .expect("study");
+    let plan = st.plan().expect("plan");
+    let settings = summary_settings(&st.setup.settings);
+    let e = &st.set.records[8];
+    let (_, sf) = plan.point(8, 0);
+    let p = pounding::sim::batch::entry_problem(&st.setup.problem, &e.x, e.y.as_ref(), sf);
+    let coarse = simulate(&p, &settings).expect("runs");
+    assert_eq!(coarse.status, SimStatus::CompletedWithNewtonFailures);
+    let half = SimSettings {
+        dt: settings.dt / 2.0,
+        ..settings.clone()
+    };
+    let fine = simulate(&p, &half).expect("runs");
+    assert_eq!(fine.status, SimStatus::Completed);
+    let plain = run_one(
+        &st.setup.problem,
+        &settings,
+        &st.set,
+        &plan,
+        &st.limits,
+        (8, 0),
+    );
+    assert_eq!(plain.status, "Completed");
+    for (l, (_, ratio)) in st.limits.iter().zip(&plain.limits) {
+        assert_eq!(l.evaluate(&fine.summary).1.to_bits(), ratio.to_bits());
+    }
+    // the refinement is counted among the run's warnings
+    assert!(plain.warnings >= 1);
+}
