@@ -169,15 +169,24 @@ pub fn run(args: Args) -> Result<ExitCode> {
     if let Some((_, r)) = &searched {
         println!("search: {}", r.verdict);
     }
+    let mut failed = false;
+    if let Some(e) = pounding::assessment::design_write::not_finite(&design, &fits, &comps) {
+        eprintln!("error: {e}");
+        failed = true;
+    }
     let excluded: usize = rows.iter().flatten().filter(|r| !r.trusted()).count();
     if excluded > 0 {
         eprintln!(
             "error: {excluded} of {total} runs failed or are not trustworthy (status in \
              variants/<name>/runs.csv): excluded from the fits"
         );
-        return Ok(ExitCode::from(1));
+        failed = true;
     }
-    Ok(ExitCode::SUCCESS)
+    Ok(if failed {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
 }
 
 /// Stdout: per member and limit state the statistic, the change and its paired and unpaired

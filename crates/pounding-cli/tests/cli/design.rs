@@ -154,3 +154,43 @@ fn design_bad_input_exits_2_and_writes_nothing() {
         assert!(!out.exists(), "{name}");
     }
 }
+
+/// A hazard table whose rates overflow the MAF integral: `variants.csv` gives the status
+/// `maf_not_finite` and no value (never `ok` with `nan`), and the command exits 1.
+#[test]
+fn design_with_an_overflowing_hazard_exits_1() {
+    let b = base();
+    let dz = design("\"bridge.gap\" = 0.06");
+    let d = scratch_with(
+        "design",
+        "overflow",
+        &[
+            ("viaduct5.toml", &b),
+            ("suite.toml", SUITE),
+            ("design.toml", &dz),
+            ("h.csv", "im_g,rate\n0.1,1e300\n0.5,1e-300\n"),
+        ],
+    );
+    let out = d.join("out");
+    let (code, _, err) = run_capture(&[
+        "design",
+        d.join("design.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--hazard",
+        d.join("h.csv").to_str().unwrap(),
+    ]);
+    assert_eq!(code, Some(1), "{err}");
+    let vc = std::fs::read_to_string(out.join("variants.csv")).unwrap();
+    let head: Vec<&str> = vc.lines().next().unwrap().split(',').collect();
+    let col = |n: &str| head.iter().position(|h| *h == n).unwrap();
+    let mut flagged = 0;
+    for line in vc.lines().skip(1) {
+        let c: Vec<&str> = line.split(',').collect();
+        let finite = c[col("value")].parse::<f64>().is_ok_and(f64::is_finite);
+        assert!(c[col("status")] != "ok" || finite, "{vc}");
+        flagged += usize::from(c[col("status")] == "maf_not_finite");
+    }
+    assert!(flagged > 0, "the table should overflow: {vc}");
+    assert!(err.contains("maf_not_finite"), "{err}");
+}

@@ -186,10 +186,16 @@ pub fn search(
             .fit(plan, &rows)
             .map_err(|e| DesignError::Study(super::AssessmentError::Invalid(e.to_string())))?;
         let r = &fits.rows[l];
+        let m = r.fit.params().map(|(t, b)| maf(&hz.curve, t, b).rate);
+        let finite = m.is_none_or(Real::is_finite);
         Ok(Evaluation {
             value,
-            maf: r.fit.params().map(|(t, b)| maf(&hz.curve, t, b).rate),
-            status: r.fit.status().to_string(),
+            maf: m.filter(|_| finite),
+            status: if finite {
+                r.fit.status().to_string()
+            } else {
+                super::hazard_study::MAF_NOT_FINITE.to_string()
+            },
             role,
         })
     };
