@@ -41,6 +41,7 @@ enum Failure {
 /// message, or None), `maf_failure` (a MAF that is not finite: the message, or None), `im`,
 /// `period`, `set_path`.
 #[pyfunction]
+#[allow(clippy::too_many_arguments)]
 #[pyo3(signature = (path=None, text=None, origin="scenario", set=None, hazard=None, out=None, threads=None))]
 fn fragility_run<'py>(
     py: Python<'py>,
