@@ -8,7 +8,8 @@ use anyhow::{Context, Result, anyhow};
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use pounding::assessment::design::Design;
-use pounding::assessment::design_write::{compare, recommendation, variants_csv, variants_json};
+use pounding::assessment::design_out;
+use pounding::assessment::design_write::{compare, recommendation};
 use pounding::output::write_atomic;
 use serde_json::json;
 use std::path::PathBuf;
@@ -17,15 +18,7 @@ use std::time::Instant;
 
 /// The files `design` writes in `--out` (removed before writing); each variant's own files go to
 /// `variants/<name>/`.
-pub const DESIGN_OUTPUTS: &[&str] = &[
-    "variants.csv",
-    "variants.json",
-    "design.png",
-    "hazard.png",
-    "report.html",
-    "timing.json",
-    "search.csv",
-];
+pub const DESIGN_OUTPUTS: &[&str] = design_out::OUTPUTS;
 
 /// Arguments of `pounding design`.
 #[derive(Parser, Debug)]
@@ -60,6 +53,8 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let pool = pool.build().context("cannot start the worker threads")?;
     let plan = pool.install(|| design.plan())?;
     pounding::output::check_output_dir_free(&args.out)?;
+    // an earlier run's variants not in this design: refused now if not ours, removed at writing
+    let stale = design_out::stale_variant_dirs(&args.out, &design)?;
     let base = &design.members[0].study;
     let per = base.set.records.len() * plan.values().len();
     let total = per * design.members.len();
@@ -103,23 +98,17 @@ pub fn run(args: Args) -> Result<ExitCode> {
     let out = &args.out;
     let lock = pounding::output::lock_output_dir(out)?;
     pounding::output::remove_previous_outputs(&lock, DESIGN_OUTPUTS)?;
+    let files = design_out::data_files(
+        &design,
+        &plan,
+        &rows,
+        &fits,
+        searched.as_ref().map(|(s, r)| (*s, r)),
+    );
+    design_out::write(out, &files, &stale)?;
     let wr = |path: PathBuf, bytes: &[u8]| {
         write_atomic(&path, bytes).with_context(|| format!("cannot write {}", path.display()))
     };
-    for (m, (mem, r)) in design.members.iter().zip(&rows).enumerate() {
-        let mut files: Vec<(&str, String)> = mem.study.data_files(&plan, r, &fits[m]).into();
-        files.extend(mem.study.hazard_files(&fits[m]));
-        let dir = out.join("variants").join(&mem.name);
-        pounding::assessment::study::write_data_files(&dir, &files)?;
-    }
-    wr(
-        out.join("variants.csv"),
-        variants_csv(&design, &fits, stat, &comps).as_bytes(),
-    )?;
-    wr(
-        out.join("variants.json"),
-        variants_json(&design, &fits, stat, &comps).as_bytes(),
-    )?;
     crate::design_plot::plot(&out.join("design.png"), &design, &fits)
         .map_err(|e| anyhow!("plotting: {e}"))?;
     if let Some(h) = design.hazard() {
@@ -134,12 +123,6 @@ pub fn run(args: Args) -> Result<ExitCode> {
             .collect();
         crate::hazard_plot::plot(&out.join("hazard.png"), &base.spec.label(), &curves)
             .map_err(|e| anyhow!("plotting: {e}"))?;
-    }
-    if let Some((spec, r)) = &searched {
-        wr(
-            out.join("search.csv"),
-            pounding::assessment::design_search::search_csv(spec, r).as_bytes(),
-        )?;
     }
     wr(
         out.join("report.html"),
@@ -169,15 +152,20 @@ pub fn run(args: Args) -> Result<ExitCode> {
     if let Some((_, r)) = &searched {
         println!("search: {}", r.verdict);
     }
-    let excluded: usize = rows.iter().flatten().filter(|r| !r.trusted()).count();
-    if excluded > 0 {
-        eprintln!(
-            "error: {excluded} of {total} runs failed or are not trustworthy (status in \
-             variants/<name>/runs.csv): excluded from the fits"
-        );
-        return Ok(ExitCode::from(1));
+    let mut failed = false;
+    if let Some(e) = pounding::assessment::design_write::not_finite(&design, &fits, &comps) {
+        eprintln!("error: {e}");
+        failed = true;
     }
-    Ok(ExitCode::SUCCESS)
+    if let Some(m) = design_out::excluded_message(&rows) {
+        eprintln!("error: {m}");
+        failed = true;
+    }
+    Ok(if failed {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
 }
 
 /// Stdout: per member and limit state the statistic, the change and its paired and unpaired

@@ -197,10 +197,15 @@ pub fn run(args: Args) -> Result<ExitCode> {
         (runs_s, t0, total, &pool),
     )?;
     print_table(&fits);
+    let mut failed = false;
     if let Some(m) = st.maf(&fits) {
         print_maf(&m);
         for w in pounding::assessment::hazard_study::maf_warnings(&m) {
             eprintln!("warning: {w}");
+        }
+        if let Some(e) = pounding::assessment::hazard_study::maf_failure(&m) {
+            eprintln!("error: {e}");
+            failed = true;
         }
     }
     for w in fit_warnings(&rows, &fits) {
@@ -208,9 +213,13 @@ pub fn run(args: Args) -> Result<ExitCode> {
     }
     if let Some(m) = excluded_message(&rows) {
         eprintln!("error: {m}");
-        return Ok(ExitCode::from(1));
+        failed = true;
     }
-    Ok(ExitCode::SUCCESS)
+    Ok(if failed {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
 }
 
 /// Writes every output into `out` (each file atomically, after the lock): the data files of

@@ -15,6 +15,7 @@ use pyo3::prelude::*;
 mod assess;
 mod campaign;
 mod compare;
+mod design;
 mod impact;
 mod lcp;
 mod motion;
@@ -111,6 +112,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     study::register(m)?;
     sim::register(m)?;
     assess::register(m)?;
+    design::register(m)?;
     motion::register(m)?;
     compare::register(m)?;
     campaign::register(m)?;

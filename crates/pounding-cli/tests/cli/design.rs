@@ -154,3 +154,100 @@ fn design_bad_input_exits_2_and_writes_nothing() {
         assert!(!out.exists(), "{name}");
     }
 }
+
+/// A second design run into the same `--out` removes the folders of the first run's variants it
+/// does not have (the directory never mixes two runs); a folder holding a file `design` does not
+/// write is refused before any run (exit 2) and left as it was.
+#[test]
+fn design_removes_an_earlier_runs_variant_folders() {
+    let b = base();
+    let first = design("\"bridge.gap\" = 0.06");
+    let second = first.replace("name = \"wide\"", "name = \"wider\"");
+    let d = scratch_with(
+        "design",
+        "stale",
+        &[
+            ("viaduct5.toml", &b),
+            ("suite.toml", SUITE),
+            ("first.toml", &first),
+            ("second.toml", &second),
+        ],
+    );
+    let out = d.join("out");
+    let run = |f: &str| {
+        run_capture(&[
+            "design",
+            d.join(f).to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--threads",
+            "2",
+        ])
+    };
+    let (code, _, err) = run("first.toml");
+    assert!(code == Some(0) || code == Some(1), "{err}");
+    assert!(out.join("variants/wide/runs.csv").exists());
+    let (code, _, err) = run("second.toml");
+    assert!(code == Some(0) || code == Some(1), "{err}");
+    assert!(
+        !out.join("variants/wide").exists(),
+        "the first run's variant stayed"
+    );
+    let mut names: Vec<String> = std::fs::read_dir(out.join("variants"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(names, ["as-built", "wider"]);
+    // a foreign file in a stale folder: refused before any run, nothing removed
+    std::fs::create_dir_all(out.join("variants/old")).unwrap();
+    std::fs::write(out.join("variants/old/notes.txt"), "mine").unwrap();
+    std::fs::write(out.join("variants/old/runs.csv"), "x").unwrap();
+    let before = std::fs::read(out.join("variants.csv")).unwrap();
+    let (code, _, err) = run("first.toml");
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("notes.txt") && err.contains("old"), "{err}");
+    assert!(out.join("variants/old/runs.csv").exists());
+    assert!(out.join("variants/wider/runs.csv").exists());
+    assert_eq!(std::fs::read(out.join("variants.csv")).unwrap(), before);
+}
+
+/// A hazard table whose rates overflow the MAF integral: `variants.csv` gives the status
+/// `maf_not_finite` and no value (never `ok` with `nan`), and the command exits 1.
+#[test]
+fn design_with_an_overflowing_hazard_exits_1() {
+    let b = base();
+    let dz = design("\"bridge.gap\" = 0.06");
+    let d = scratch_with(
+        "design",
+        "overflow",
+        &[
+            ("viaduct5.toml", &b),
+            ("suite.toml", SUITE),
+            ("design.toml", &dz),
+            ("h.csv", "im_g,rate\n0.1,1e300\n0.5,1e-300\n"),
+        ],
+    );
+    let out = d.join("out");
+    let (code, _, err) = run_capture(&[
+        "design",
+        d.join("design.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--hazard",
+        d.join("h.csv").to_str().unwrap(),
+    ]);
+    assert_eq!(code, Some(1), "{err}");
+    let vc = std::fs::read_to_string(out.join("variants.csv")).unwrap();
+    let head: Vec<&str> = vc.lines().next().unwrap().split(',').collect();
+    let col = |n: &str| head.iter().position(|h| *h == n).unwrap();
+    let mut flagged = 0;
+    for line in vc.lines().skip(1) {
+        let c: Vec<&str> = line.split(',').collect();
+        let finite = c[col("value")].parse::<f64>().is_ok_and(f64::is_finite);
+        assert!(c[col("status")] != "ok" || finite, "{vc}");
+        flagged += usize::from(c[col("status")] == "maf_not_finite");
+    }
+    assert!(flagged > 0, "the table should overflow: {vc}");
+    assert!(err.contains("maf_not_finite"), "{err}");
+}

@@ -214,7 +214,8 @@ fn bad_hazard_input_exits_2_naming_file_key_and_line() {
 }
 
 /// A table whose rates span the whole floating-point range (1e300 to 1e-300 per year) overflows
-/// the integral: the limit state's MAF row says so (`maf_not_finite`), never `ok` with `nan`.
+/// the integral: the limit state's MAF row says so (`maf_not_finite`), never `ok` with `nan`, and
+/// the command exits 1 (a status that is not a number is a failure, not a success).
 #[test]
 fn an_overflowing_hazard_table_is_not_an_ok_maf() {
     let d = scratch_with(
@@ -227,7 +228,7 @@ fn an_overflowing_hazard_table_is_not_an_ok_maf() {
         ],
     );
     let out = d.join("out");
-    let (_, _, err) = run_capture(&[
+    let (code, _, err) = run_capture(&[
         "fragility",
         d.join("bridge.toml").to_str().unwrap(),
         "--out",
@@ -235,6 +236,8 @@ fn an_overflowing_hazard_table_is_not_an_ok_maf() {
         "--hazard",
         d.join("h.csv").to_str().unwrap(),
     ]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(err.contains("maf_not_finite"), "{err}");
     let text =
         std::fs::read_to_string(out.join("maf.csv")).unwrap_or_else(|e| panic!("{e}: {err}"));
     let rows = text.lines().count() - 1;

@@ -12,6 +12,8 @@ same numbers (bit for bit), numpy arrays and pandas tables instead of files.
 * :func:`check` — the code check of seats and joint gaps (``pounding check``);
 * :func:`fragility` — fragility curves over a record set (``runs.csv`` rows and the fits of
   ``fragility.csv``/``fragility.json``; optionally those files in a directory);
+* :func:`design` — retrofit variants of a bridge on common records, their fragility, mean annual
+  frequency and paired differences, and the search of one parameter (``pounding design``);
 * :func:`spectrum` — elastic response spectra, RotD50/RotD100 of pairs (``spectrum.csv`` rows);
 * :mod:`pounding.campaign` — ``run(spec, client)``: campaigns of many runs on threads or a Dask
   cluster, stored as resumable Parquet parts (``pounding campaign``);
@@ -30,6 +32,7 @@ Heavy calls release the GIL.
 from . import campaign, lcp, motion
 from ._assess import FragilityResult, fragility
 from ._compare import ComparisonResult, compare
+from ._design import DesignResult, design
 from ._core import SolverError, __version__
 from ._impact import ImpactResult, impact
 from ._sim import SimulationResult, batch, check, default_simulate_scenario, simulate
@@ -52,6 +55,8 @@ __all__ = [
     "check",
     "FragilityResult",
     "fragility",
+    "DesignResult",
+    "design",
     "spectrum",
     "motion",
     "default_simulate_scenario",

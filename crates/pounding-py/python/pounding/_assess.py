@@ -25,12 +25,19 @@ class FragilityResult:
             ``theta`` [g] and dispersion ``beta``, their bootstrap intervals, the counts).
         fragility: ``fragility.json`` as a dict (the fits, the IM, the period, the counts of
             records, runs and excluded runs, the empirical fractions per stripe).
-        files: name → exact text of ``runs.csv``, ``fragility.csv`` and ``fragility.json``
-            (byte for byte the CLI's files).
+        files: name → exact text of ``runs.csv``, ``fragility.csv`` and ``fragility.json``,
+            and with a hazard curve ``maf.csv`` and ``hazard.csv`` (byte for byte the CLI's
+            files).
+        maf: with a hazard curve (the scenario's ``[hazard]`` or ``hazard``), the rows of
+            ``maf.csv`` (per limit state the mean annual frequency ``maf_per_year``, its
+            interval, the return period); else ``None``.
         im: the intensity measure, e.g. ``"Sa(1.23 s, 5 %)"`` or ``"PGA"``.
         period: how the fundamental period was found (``period_s = "model"``), else ``None``.
         excluded: the message about runs that failed or are not trustworthy (excluded from the
             fit; the CLI exits 1), or ``None`` when every run completed.
+        maf_failure: the message when a fitted limit state's mean annual frequency is not a
+            finite number (status ``maf_not_finite``: the hazard's rates overflow the integral;
+            the CLI exits 1), else ``None``.
         warnings: the CLI's warnings (records with an implausible PGA, unreliable intervals,
             runs with warnings); also issued as ``UserWarning``.
     """
@@ -43,21 +50,26 @@ class FragilityResult:
     period: Optional[str]
     excluded: Optional[str]
     warnings: List[str]
+    maf: Any = None
+    maf_failure: Optional[str] = None
 
     @property
     def ok(self) -> bool:
-        """``True`` when every run completed (the CLI's exit 0)."""
-        return self.excluded is None
+        """``True`` when every run completed and every fitted MAF is a number (the CLI's
+        exit 0)."""
+        return self.excluded is None and self.maf_failure is None
 
 
 def fragility(
     scenario: Any,
     record_set: Any = None,
     *,
+    hazard: Any = None,
     out: Any = None,
     threads: Optional[int] = None,
 ) -> FragilityResult:
-    """Run a fragility study, as ``pounding fragility SCENARIO [--set MANIFEST] [--out DIR]``.
+    """Run a fragility study, as ``pounding fragility SCENARIO [--set MANIFEST] [--hazard FILE]
+    [--out DIR]``.
 
     Every record (pair) of the set is run on the bridge at every stripe of ``[fragility]``
     (IM levels in g, or IDA scale factors), the limit states are evaluated on each run and a
@@ -73,7 +85,11 @@ def fragility(
         record_set: the record-set manifest (``.toml``, or ``.csv`` with a header row) instead
             of ``[fragility] records`` (``--set``). Entries may name ``builtin:ELC180`` /
             ``builtin:ELC270``.
-        out: a directory to write ``runs.csv``, ``fragility.csv`` and ``fragility.json`` into
+        hazard: a site hazard curve file (``--hazard``: ``.csv`` with the header ``im_g,rate``,
+            or ``.toml`` with a ``[hazard]`` table) instead of the scenario's ``[hazard]``: the
+            mean annual frequency of every limit state (``maf``, ``maf.csv``, ``hazard.csv``).
+        out: a directory to write ``runs.csv``, ``fragility.csv`` and ``fragility.json`` (and
+            with a hazard ``maf.csv``, ``hazard.csv``) into
             (``--out``; created if needed, each file atomically; the figure, report and
             ``timing.json`` of a previous study there are removed, as the CLI replaces them).
             ``None``: nothing is written.
@@ -93,15 +109,17 @@ def fragility(
     if scenario is None:
         raise ValueError("fragility needs a scenario: a bridge with [fragility] and "
                          "[[limit_state]] tables")
-    set_path = _path_arg("record_set", record_set)
-    out_path = _path_arg("out", out)
-    d = _core.fragility_run(set=set_path, out=out_path, threads=thread_count(threads),
-                            **scenario_args(scenario, "fragility"))
-    msgs = list(d["record_warnings"]) + list(d["warnings"])
+    set_path = path_arg("record_set", record_set)
+    hazard_path = path_arg("hazard", hazard)
+    out_path = path_arg("out", out)
+    d = _core.fragility_run(set=set_path, hazard=hazard_path, out=out_path,
+                            threads=thread_count(threads), **scenario_args(scenario, "fragility"))
+    msgs = list(d["record_warnings"]) + list(d["maf_warnings"]) + list(d["warnings"])
     for w in msgs:
         warnings.warn(w, UserWarning, stacklevel=2)
-    if d["excluded"] is not None:
-        warnings.warn(d["excluded"], UserWarning, stacklevel=2)
+    for e in (d["excluded"], d["maf_failure"]):
+        if e is not None:
+            warnings.warn(e, UserWarning, stacklevel=2)
     files = dict(d["files"])
     return FragilityResult(
         runs=csv_table(files["runs.csv"]),
@@ -112,10 +130,12 @@ def fragility(
         period=d["period"],
         excluded=d["excluded"],
         warnings=msgs,
+        maf=csv_table(files["maf.csv"]) if "maf.csv" in files else None,
+        maf_failure=d["maf_failure"],
     )
 
 
-def _path_arg(name: str, p: Any) -> Optional[str]:
+def path_arg(name: str, p: Any) -> Optional[str]:
     """``p`` as a path string (``None`` stays ``None``); ``TypeError`` for anything else."""
     if p is None:
         return None

@@ -78,7 +78,12 @@ def default_simulate_scenario() -> str: ...
 def default_study_scenario() -> str: ...
 def fragility_run(
     path: Optional[str] = None, text: Optional[str] = None, origin: str = "scenario",
-    set: Optional[str] = None, out: Optional[str] = None, threads: Optional[int] = None,
+    set: Optional[str] = None, hazard: Optional[str] = None, out: Optional[str] = None,
+    threads: Optional[int] = None,
+) -> Dict[str, Any]: ...
+def design_run(
+    path: str, set: Optional[str] = None, hazard: Optional[str] = None,
+    out: Optional[str] = None, threads: Optional[int] = None,
 ) -> Dict[str, Any]: ...
 def spectrum_run(
     records: List[str], pair: List[Tuple[str, str]], damping: float, periods: List[float],

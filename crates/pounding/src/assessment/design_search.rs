@@ -18,8 +18,11 @@
 //! within `tolerance`; the end that meets is the answer — the **smallest** value meeting the
 //! target when the MAF falls as the value rises (the largest, when it rises). A value 10 %
 //! beyond it on the failing side (smaller, or larger) is run to confirm that it does not meet.
-//! Every evaluation is kept; if the MAFs in the order of the values are not monotone, the
-//! search says so instead of answering.
+//! Every evaluation is kept. By construction every value run on the failing side of the answer
+//! fails and every value from it on meets; the confirming run is the check of a second
+//! crossing near the answer (if it meets too, no answer). The MAF of a finite record set may
+//! wiggle between close values (one run crossing its limit moves the fit) without crossing the
+//! target twice: the verdict then names the first pair of values whose MAFs go the wrong way.
 
 use super::design::{Design, DesignError};
 use super::run::Plan;
@@ -183,10 +186,16 @@ pub fn search(
             .fit(plan, &rows)
             .map_err(|e| DesignError::Study(super::AssessmentError::Invalid(e.to_string())))?;
         let r = &fits.rows[l];
+        let m = r.fit.params().map(|(t, b)| maf(&hz.curve, t, b).rate);
+        let finite = m.is_none_or(Real::is_finite);
         Ok(Evaluation {
             value,
-            maf: r.fit.params().map(|(t, b)| maf(&hz.curve, t, b).rate),
-            status: r.fit.status().to_string(),
+            maf: m.filter(|_| finite),
+            status: if finite {
+                r.fit.status().to_string()
+            } else {
+                super::hazard_study::MAF_NOT_FINITE.to_string()
+            },
             role,
         })
     };
@@ -253,25 +262,11 @@ pub fn search(
     let c = eval(beyond, "confirm")?;
     let confirmed = !meets(&c);
     evs.push(c);
-    // monotone in the order of the values?
-    let mut sorted: Vec<&Evaluation> = evs.iter().filter(|e| e.maf.is_some()).collect();
-    sorted.sort_by(|a, b| a.value.total_cmp(&b.value));
-    let m: Vec<Real> = sorted.iter().filter_map(|e| e.maf).collect();
-    let monotone = m.windows(2).all(|w| {
-        if decreasing {
-            w[1] <= w[0]
-        } else {
-            w[1] >= w[0]
-        }
-    });
-    if !monotone {
-        let why = format!(
-            "no answer: the MAF of {} is not monotone in {} over the values run (see search.csv); \
-             a bisection would return a wrong answer",
-            spec.limit_state, spec.key
-        );
-        return Ok(no(evs, why));
-    }
+    // By construction every value run below the final bracket's failing end fails and every
+    // value from its passing end on meets: the bisection cannot see a second crossing except
+    // through the confirming run. A MAF that wiggles between values run (the noise of a finite
+    // record set) is named in the verdict, not refused.
+    let wiggle = non_monotone(&evs, decreasing);
     let side = if decreasing { "smallest" } else { "largest" };
     let verdict = format!(
         "{} = {} is the {side} value meeting MAF({}) <= {} per year (MAF {}; within {} %); {} = {} \
@@ -296,12 +291,44 @@ pub fn search(
         } else {
             "also meets the target: the answer is not confirmed"
         },
-    );
+    ) + &wiggle
+        .map(|(a, b)| {
+            format!(
+                "; note: the MAF is not monotone over the values run ({} at {} = {}, {} at {}: \
+                 the noise of a finite record set), see search.csv",
+                float_token(a.1),
+                spec.key,
+                float_token(a.0),
+                float_token(b.1),
+                float_token(b.0)
+            )
+        })
+        .unwrap_or_default();
     Ok(SearchResult {
         evaluations: evs,
         found: confirmed.then_some(pass),
         verdict,
     })
+}
+
+/// The first pair of neighbouring values (in the order of the values) whose MAFs go the wrong
+/// way (`(value, maf)` each), if any.
+fn non_monotone(evs: &[Evaluation], decreasing: bool) -> Option<((Real, Real), (Real, Real))> {
+    let mut sorted: Vec<(Real, Real)> = evs
+        .iter()
+        .filter_map(|e| e.maf.map(|m| (e.value, m)))
+        .collect();
+    sorted.sort_by(|a, b| a.0.total_cmp(&b.0));
+    sorted
+        .windows(2)
+        .find(|w| {
+            if decreasing {
+                w[1].1 > w[0].1
+            } else {
+                w[1].1 < w[0].1
+            }
+        })
+        .map(|w| (w[0], w[1]))
 }
 
 /// `search.csv`: `value, maf_per_year, status, meets_target, role`.

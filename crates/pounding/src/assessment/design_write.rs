@@ -2,6 +2,7 @@
 //! unpaired bootstrap differences, `variants.csv`, `variants.json` and the recommendation in words.
 
 use super::design::Design;
+use super::hazard_study::MAF_NOT_FINITE;
 use super::study::Fits;
 use crate::fragility::bootstrap::bca;
 use crate::fragility::hazard::{HazardCurve, maf};
@@ -46,6 +47,9 @@ pub struct Comparison {
     pub paired: Option<(Real, Real)>,
     /// Interval of the difference from independent replicates.
     pub unpaired: Option<(Real, Real)>,
+    /// The fit's status, or [`MAF_NOT_FINITE`] when the fit's statistic is not a finite number
+    /// (then `value`, `interval` and the differences are `None`).
+    pub status: String,
 }
 
 /// The statistic of `(θ, β)`.
@@ -89,9 +93,23 @@ pub fn compare(design: &Design, fits: &[Fits]) -> (Stat, Vec<Comparison>) {
     for (m, fm) in fits.iter().enumerate() {
         for (l, r) in fm.rows.iter().enumerate() {
             let base = &fits[0].rows[l];
-            let value = r.fit.params().map(|(t, b)| f(t, b));
+            let raw = r.fit.params().map(|(t, b)| f(t, b));
             let interval = r.bootstrap.as_ref().and_then(|b| b.interval_of(&f));
-            let b0 = base.fit.params().map(|(t, b)| f(t, b));
+            // never a non-finite statistic under the fit's `ok`
+            let finite = raw.is_none_or(Real::is_finite)
+                && interval.is_none_or(|(a, z)| a.is_finite() && z.is_finite());
+            let value = raw.filter(|_| finite);
+            let interval = interval.filter(|_| finite);
+            let status = if finite {
+                r.fit.status().to_string()
+            } else {
+                MAF_NOT_FINITE.to_string()
+            };
+            let b0 = base
+                .fit
+                .params()
+                .map(|(t, b)| f(t, b))
+                .filter(|v| v.is_finite());
             let diff = (m > 0).then(|| Some(value? - b0?)).flatten();
             let (paired, unpaired) = match (diff, &r.bootstrap, &base.bootstrap) {
                 (Some(d), Some(bv), Some(bb)) => (
@@ -108,10 +126,32 @@ pub fn compare(design: &Design, fits: &[Fits]) -> (Stat, Vec<Comparison>) {
                 diff,
                 paired,
                 unpaired,
+                status,
             });
         }
     }
     (stat, out)
+}
+
+/// The error of comparisons whose statistic is not finite (`None`: every fitted one is).
+pub fn not_finite(design: &Design, fits: &[Fits], comps: &[Comparison]) -> Option<String> {
+    let bad: Vec<String> = comps
+        .iter()
+        .filter(|c| c.status == MAF_NOT_FINITE)
+        .map(|c| {
+            format!(
+                "{} / {}",
+                design.members[c.member].name, fits[c.member].rows[c.limit].limit_state
+            )
+        })
+        .collect();
+    (!bad.is_empty()).then(|| {
+        format!(
+            "the mean annual frequency of {} is not a finite number (status {MAF_NOT_FINITE}: \
+             the hazard curve's rates overflow the integral); no MAF is given",
+            bad.join(", ")
+        )
+    })
 }
 
 /// `variants.csv` columns.
@@ -165,7 +205,7 @@ pub fn variants_csv(design: &Design, fits: &[Fits], stat: Stat, comps: &[Compari
             "{},{},{},{},{},{},{}\n",
             csv_field(&design.members[c.member].name),
             csv_field(&r.limit_state),
-            r.fit.status(),
+            c.status,
             nums.join(","),
             stat.as_str(),
             rest.join(","),
@@ -193,7 +233,7 @@ pub fn variants_json(design: &Design, fits: &[Fits], stat: Stat, comps: &[Compar
                         i.map_or(Value::Null, |(a, z)| json!([json_float(a), json_float(z)]))
                     };
                     json!({
-                        "limit_state": r.limit_state, "status": r.fit.status(),
+                        "limit_state": r.limit_state, "status": c.status,
                         "theta": t, "beta": b, "theta_interval": [tl, th], "beta_interval": [bl, bh],
                         "value": json_float(c.value.unwrap_or(Real::NAN)),
                         "interval": pair(c.interval),

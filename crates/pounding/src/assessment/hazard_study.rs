@@ -25,6 +25,26 @@ pub struct MafRow {
     pub level: Real,
 }
 
+/// The status of a fitted limit state whose MAF is not a finite number (a hazard table whose
+/// rates overflow the integral): no MAF is given, and the command exits 1.
+pub const MAF_NOT_FINITE: &str = "maf_not_finite";
+
+/// The error of rows whose MAF is not finite (`None`: every fitted MAF is a number).
+pub fn maf_failure(rows: &[MafRow]) -> Option<String> {
+    let bad: Vec<&str> = rows
+        .iter()
+        .filter(|r| r.status == MAF_NOT_FINITE)
+        .map(|r| r.limit_state.as_str())
+        .collect();
+    (!bad.is_empty()).then(|| {
+        format!(
+            "the mean annual frequency of {} is not a finite number (status {MAF_NOT_FINITE}: \
+             the hazard curve's rates overflow the integral); no MAF is given",
+            bad.join(", ")
+        )
+    })
+}
+
 /// The MAF of every fitted limit state under `hazard`.
 pub fn maf_rows(hazard: &HazardCurve, fits: &[FragilityRow]) -> Vec<MafRow> {
     fits.iter()
@@ -46,7 +66,7 @@ pub fn maf_rows(hazard: &HazardCurve, fits: &[FragilityRow]) -> Vec<MafRow> {
             MafRow {
                 limit_state: r.limit_state.clone(),
                 status: if fitted && !finite {
-                    "maf_not_finite".to_string()
+                    MAF_NOT_FINITE.to_string()
                 } else {
                     r.fit.status().to_string()
                 },

@@ -41,6 +41,7 @@ mod check_values;
 pub mod check_write;
 pub mod code_check;
 pub mod design;
+pub mod design_out;
 pub mod design_search;
 pub mod design_write;
 mod hazard_csv;
