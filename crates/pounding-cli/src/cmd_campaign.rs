@@ -104,6 +104,7 @@ fn exit_of_statuses(statuses: &std::collections::BTreeMap<String, usize>, rows: 
 /// A progress bar with rate and ETA when stderr is a terminal; otherwise a plain line every
 /// 10 % of the runs.
 struct Bar {
+    what: &'static str,
     bar: Option<ProgressBar>,
     done: AtomicUsize,
     total: usize,
@@ -111,18 +112,20 @@ struct Bar {
 }
 
 impl Bar {
-    fn new(total: usize) -> Self {
+    /// A bar of `total` steps of `what` (`runs`, `variants`).
+    fn new(total: usize, what: &'static str) -> Self {
         let bar = std::io::stderr().is_terminal().then(|| {
             let pb =
                 ProgressBar::with_draw_target(Some(total as u64), ProgressDrawTarget::stderr());
-            if let Ok(style) = ProgressStyle::with_template(
-                "runs [{elapsed_precise}] {wide_bar} {pos}/{len} {per_sec} ({eta} left)",
-            ) {
+            if let Ok(style) = ProgressStyle::with_template(&format!(
+                "{what} [{{elapsed_precise}}] {{wide_bar}} {{pos}}/{{len}} {{per_sec}} ({{eta}} left)"
+            )) {
                 pb.set_style(style);
             }
             pb
         });
         Bar {
+            what,
             bar,
             done: AtomicUsize::new(0),
             total,
@@ -140,7 +143,8 @@ impl Bar {
                     let s = self.t0.elapsed().as_secs_f64();
                     let rate = n as f64 / s.max(1e-9);
                     eprintln!(
-                        "runs: {n}/{} ({rate:.1}/s, {:.0} s left)",
+                        "{}: {n}/{} ({rate:.1}/s, {:.0} s left)",
+                        self.what,
                         self.total,
                         (self.total - n) as f64 / rate
                     );
@@ -167,7 +171,19 @@ fn run_campaign(a: RunArgs) -> Result<ExitCode> {
         pool = pool.num_threads(n);
     }
     let pool = pool.build().context("cannot start the worker threads")?;
-    let c = pool.install(|| Campaign::load(&a.spec))?;
+    // a large grid takes a while to build (each variant's scenario is read and built): shown
+    // from 100 variants on
+    let variants = std::sync::OnceLock::new();
+    let c = pool.install(|| {
+        Campaign::load_with_progress(&a.spec, &|_, total| {
+            if total >= 100 {
+                variants.get_or_init(|| Bar::new(total, "variants")).inc();
+            }
+        })
+    })?;
+    if let Some(b) = variants.get() {
+        b.finish();
+    }
     for w in c.study.record_warnings() {
         eprintln!("warning: {w}");
     }
@@ -192,7 +208,7 @@ fn run_campaign(a: RunArgs) -> Result<ExitCode> {
         runs,
         crate::cmd_simulate::sim_records::count(pool.current_num_threads(), "thread")
     );
-    let bar = Bar::new(runs);
+    let bar = Bar::new(runs, "runs");
     let done = pool.install(|| exec::run_parts(&c, &st, &todo, &|| bar.inc()));
     bar.finish();
     done?;

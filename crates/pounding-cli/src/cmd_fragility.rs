@@ -91,6 +91,13 @@ fn read(args: &Args) -> Result<(Study, u64, Option<Plan>, Option<String>)> {
     if let Some(h) = &args.hazard {
         st = st.with_hazard(h)?;
     }
+    if args.variant.is_some() && args.campaign.is_none() {
+        eprintln!(
+            "warning: --variant without --campaign: the verdicts are the variant's, but the \
+             report and the code check describe the scenario's own bridge (give --campaign SPEC \
+             to read the variant's bridge)"
+        );
+    }
     for w in st.record_warnings() {
         eprintln!("warning: {w}");
     }

@@ -61,10 +61,21 @@ impl PyCampaign {
 
     /// Opens (or creates) the store in `out` (as `campaign run` does: `campaign.json` written or
     /// checked, temporaries of an interrupted run removed) and returns the parts not yet stored.
-    fn prepare(&self, py: Python<'_>, out: PathBuf) -> PyResult<Vec<usize>> {
+    /// Refused while another run holds `out`'s lock, unless `lock` is this caller's lock of `out`
+    /// (as `run` holds it).
+    #[pyo3(signature = (out, lock=None))]
+    fn prepare(
+        &self,
+        py: Python<'_>,
+        out: PathBuf,
+        lock: Option<PyRef<'_, PyStoreLock>>,
+    ) -> PyResult<Vec<usize>> {
         let c = &self.inner;
+        let ours = lock.is_some_and(|l| l.lock.as_ref().is_some_and(|l| l.dir() == out));
         let r = crate::heavy(py, || {
-            pounding::output::check_output_dir_free(&out).map_err(|e| e.to_string())?;
+            if !ours {
+                pounding::output::check_output_dir_free(&out).map_err(|e| e.to_string())?;
+            }
             let st = Store::open(&out, c).map_err(|e| e.to_string())?;
             exec::pending(c, &st, pounding::shard::Shard::ALL)
                 .map(|(todo, _)| todo)

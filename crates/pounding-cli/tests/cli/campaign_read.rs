@@ -241,3 +241,37 @@ fn a_store_read_through_its_spec_equals_the_direct_study_and_counts_seat_demands
     assert_ne!(code, Some(0));
     assert!(err.contains("another campaign"), "{err}");
 }
+
+/// Messages a trial found unclear: the spec's own record set that cannot be read names the
+/// spec's key and line; an infinite stripe is "not a finite number"; an empty name is refused.
+#[test]
+fn spec_messages_name_the_spec_key() {
+    let f = files();
+    let refs: Vec<(&str, &str)> = f.iter().map(|(a, b)| (*a, b.as_str())).collect();
+    let d = scratch_with("campaign-read", "messages", &refs);
+    let p = |s: &str| d.join(s).display().to_string();
+    for (spec, want) in [
+        (
+            "[campaign]\nscenario = \"viaduct.toml\"\nrecords = \"nope.toml\"\n",
+            "`campaign.records` (",
+        ),
+        (
+            "[campaign]\nscenario = \"viaduct.toml\"\nrecords = \"suite3.toml\"\n\
+             levels_g = [0.1, inf]\n",
+            "inf is not a finite number",
+        ),
+        (
+            "[campaign]\nscenario = \"viaduct.toml\"\nrecords = \"suite3.toml\"\nname = \" \"\n",
+            "the name is empty",
+        ),
+    ] {
+        std::fs::write(d.join("bad.toml"), spec).unwrap();
+        let (code, _, err) = run_capture(&["campaign", "run", &p("bad.toml"), "--out", &p("o")]);
+        assert_eq!(code, Some(2), "{spec}: {err}");
+        assert!(
+            err.contains(want) && err.contains("bad.toml:"),
+            "{spec}: {err}"
+        );
+        assert!(!d.join("o").exists(), "nothing written");
+    }
+}

@@ -93,8 +93,8 @@ def run(spec, client=None, out="out/campaign", *, parts_per_task: Optional[int] 
     c = load(spec)
     # the store is locked for the whole run, as by `pounding campaign run`: a second run into it
     # (another process, the CLI, or this process) is refused; the workers write parts unlocked
-    with _core.StoreLock(out):
-        pending = c.prepare(out)
+    with _core.StoreLock(out) as lock:
+        pending = c.prepare(out, lock)
         tasks = 0
         if client is None:
             if pending:

@@ -123,7 +123,12 @@ fn stripes(cx: &Cx, key: &str, v: &Spanned<Vec<Real>>) -> Result<Vec<Real>, Camp
         return Err(cx.err(key, v, "give at least one value".into()));
     }
     if let Some(bad) = x.iter().find(|x| !(x.is_finite() && **x > 0.0)) {
-        return Err(cx.err(key, v, format!("{bad} is not a number > 0")));
+        let what = if bad.is_finite() {
+            "not > 0"
+        } else {
+            "not a finite number"
+        };
+        return Err(cx.err(key, v, format!("{bad} is {what}: give finite values > 0")));
     }
     if x.windows(2).any(|w| w[1] <= w[0]) {
         return Err(cx.err(key, v, "the values must increase strictly".into()));
@@ -135,13 +140,29 @@ impl Campaign {
     /// Reads the spec at `path`, its scenario, record set and limit states, and computes the IM
     /// plan (on the current rayon pool).
     pub fn load(path: &Path) -> Result<Self, CampaignError> {
+        Self::load_with_progress(path, &|_, _| {})
+    }
+
+    /// [`Campaign::load`], calling `progress(built, variants)` as the variants' scenarios are
+    /// read and built (in parallel on the current rayon pool; each takes about as long as
+    /// reading the scenario: tens of milliseconds).
+    pub fn load_with_progress(
+        path: &Path,
+        progress: &(dyn Fn(usize, usize) + Sync),
+    ) -> Result<Self, CampaignError> {
         let text = crate::input::read_text(path, "campaign spec", crate::input::SCENARIO_LIMIT)
             .map_err(|cause| CampaignError::Io {
                 what: "cannot read the campaign spec",
                 path: path.to_path_buf(),
                 cause,
             })?;
-        Self::from_toml(&text, &path.display().to_string(), path.parent(), path)
+        Self::read(
+            &text,
+            &path.display().to_string(),
+            path.parent(),
+            path,
+            progress,
+        )
     }
 
     /// Reads a spec from its `text` named `origin`; paths in it are relative to `dir`.
@@ -150,6 +171,16 @@ impl Campaign {
         origin: &str,
         dir: Option<&Path>,
         path: &Path,
+    ) -> Result<Self, CampaignError> {
+        Self::read(text, origin, dir, path, &|_, _| {})
+    }
+
+    fn read(
+        text: &str,
+        origin: &str,
+        dir: Option<&Path>,
+        path: &Path,
+        progress: &(dyn Fn(usize, usize) + Sync),
     ) -> Result<Self, CampaignError> {
         let cx = Cx { origin, text };
         let f: File = toml::from_str(text).map_err(|e| CampaignError::Syntax {
@@ -185,7 +216,19 @@ impl Campaign {
         let scenario_fingerprint = super::scenario_fingerprint(scenario.text());
         let set = c.records.as_ref().map(|r| rel(r.get_ref()));
         let base_scenario = scenario.clone();
-        let mut study = Study::read(scenario, sc_path.parent(), set.as_deref())?;
+        let mut study = Study::read(scenario, sc_path.parent(), set.as_deref()).map_err(|e| {
+            match (e, &c.records) {
+                // the spec's record set cannot be read: name the spec's key
+                (
+                    crate::assessment::AssessmentError::Set(
+                        e @ (crate::ground_motion::set::SetError::Read { .. }
+                        | crate::ground_motion::set::SetError::Extension { .. }),
+                    ),
+                    Some(r),
+                ) => cx.err("campaign.records", r, e.to_string()),
+                (e, _) => e.into(),
+            }
+        })?;
         match (&c.levels_g, &c.scales) {
             (Some(_), Some(s)) => {
                 return Err(cx.err(
@@ -232,8 +275,11 @@ impl Campaign {
         }
         let plan = study.plan()?;
         let variant_runs =
-            super::variants::variants(text, origin, &sc_path, &base_scenario, &study)?;
+            super::variants::variants(text, origin, &sc_path, &base_scenario, &study, progress)?;
         let name = match &c.name {
+            Some(n) if n.get_ref().trim().is_empty() => {
+                return Err(cx.err("campaign.name", n, "the name is empty".into()));
+            }
             Some(n) => n.get_ref().clone(),
             None => path
                 .file_stem()

@@ -29,6 +29,7 @@ use crate::assessment::variant::{Override, Variant, Variants, parse_path};
 use crate::output::float_token;
 use crate::sim::scenario::{BridgeSetup, Scenario};
 use crate::toml_schema::line_col;
+use rayon::prelude::*;
 use std::path::Path;
 
 /// Largest number of variants of one campaign.
@@ -204,12 +205,15 @@ fn grid(spec: &str, origin: &str) -> Result<Vec<Variant>, CampaignError> {
 
 /// The variants of the spec `spec` (named `origin`) over the base `scenario` at `path`, whose
 /// study is `base`: one `base` variant when the spec has neither `[[variant]]` nor `[grid]`.
+/// The variants are built in parallel on the current rayon pool, `progress(built, total)` after
+/// each; the first failing variant in the spec's order is the error, whatever the threads.
 pub fn variants(
     spec: &str,
     origin: &str,
     path: &Path,
     scenario: &Scenario,
     base: &Study,
+    progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<Vec<VariantRun>, CampaignError> {
     let has_list = toml::from_str::<toml::Table>(spec).is_ok_and(|t| t.contains_key("variant"));
     let list = if has_list {
@@ -260,8 +264,10 @@ pub fn variants(
         crate::assessment::check_tables(&sc, None)?;
         Ok(sc.build_bridge()?)
     };
-    combos
-        .iter()
+    let built = std::sync::atomic::AtomicUsize::new(0);
+    let total = combos.len();
+    let runs: Vec<Result<VariantRun, CampaignError>> = combos
+        .par_iter()
         .map(|v| {
             if let Some(o) = v.overrides.iter().find(|o| {
                 matches!(o.path.first(), Some(crate::assessment::variant::Step::Key(k))
@@ -280,9 +286,18 @@ pub fn variants(
                     line: Some(o.line),
                 });
             }
-            let applied =
-                v.apply_checked(base_text, &sc_origin, origin, |t| read(t).map(|_| ()))?;
-            let setup = read(&applied.text)?;
+            // the first check reads the whole variant: keep its setup (read once, not twice)
+            let first = std::sync::Mutex::new(None);
+            let applied = v.apply_checked(base_text, &sc_origin, origin, |t| {
+                read(t).map(|s| {
+                    let mut f = first.lock().unwrap_or_else(|e| e.into_inner());
+                    f.get_or_insert(s);
+                })
+            })?;
+            let setup = match first.into_inner().unwrap_or_else(|e| e.into_inner()) {
+                Some(s) => s,
+                None => read(&applied.text)?,
+            };
             let limits = bind(
                 &base.settings.limit_states,
                 &setup.problem.model,
@@ -302,6 +317,10 @@ pub fn variants(
             }
             let mut h = Fnv::default();
             h.text(&applied.text);
+            progress(
+                built.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1,
+                total,
+            );
             Ok(VariantRun {
                 name: v.name.clone(),
                 setup,
@@ -309,5 +328,6 @@ pub fn variants(
                 fingerprint: h.0,
             })
         })
-        .collect()
+        .collect();
+    runs.into_iter().collect()
 }
