@@ -312,6 +312,20 @@ fn code_check(h: &mut String, st: &Study, c: &Result<CheckReport, String>, rows:
         }
     };
     let seat_ends = st.setup.problem.model.seat_end_names();
+    if rows.iter().any(|r| r.trusted()) && rows.iter().all(|r| !r.trusted() || r.seats.is_empty()) {
+        // a store written with `[outputs] seats = false`: no demand to set against the seats
+        let _ = writeln!(
+            h,
+            "<p>Code verdict: <strong>{}</strong> — {} of {} seated ends are shorter than a code \
+             requires (<code>pounding check</code> gives the full table). The runs' seat \
+             displacements were not stored (<code>[outputs] seats = false</code>): they are not \
+             compared with the seats here.</p>",
+            overall(r),
+            r.failing_ends(),
+            r.ends.len()
+        );
+        return;
+    }
     let ends = against_runs(r, &seat_ends, rows);
     let beyond_code: usize = ends.iter().filter_map(|e| e.beyond_code).sum();
     let _ = writeln!(

@@ -82,3 +82,20 @@ def test_a_locked_store_is_refused(tmp_path, cli):
         assert held.held
     r = pounding.campaign.run(spec, out=out, threads=1)
     assert r.runs == 12 and r.ok
+
+
+def test_an_edited_spec_is_read_again_and_bad_threads_write_nothing(tmp_path):
+    """Found by a trial: `run` reused a cached campaign after its spec was edited (the old
+    spec ran); `threads=0` wrote the store before it was refused."""
+    import json
+
+    spec = _files(tmp_path)
+    pounding.campaign.run(spec, out=tmp_path / "a", threads=1)
+    spec.write_text(spec.read_text().replace("runs_per_part = 2", "runs_per_part = 3"))
+    pounding.campaign.run(spec, out=tmp_path / "b", threads=1)
+    meta = [json.loads((tmp_path / d / "campaign.json").read_text()) for d in ("a", "b")]
+    assert meta[0]["runs_per_part"] == 2 and meta[1]["runs_per_part"] == 3
+    assert meta[0]["fingerprint"] != meta[1]["fingerprint"]
+    with pytest.raises(ValueError, match="threads"):
+        pounding.campaign.run(spec, out=tmp_path / "c", threads=0)
+    assert not (tmp_path / "c").exists()

@@ -275,3 +275,86 @@ fn spec_messages_name_the_spec_key() {
         assert!(!d.join("o").exists(), "nothing written");
     }
 }
+
+/// Found by a fresh-clone trial: a store of one variant that is not the scenario's own bridge
+/// was read as that bridge without `--campaign` (wrong seat demands, exit 0); a store without
+/// seat ratios gave counts of 0 runs; a variant could be named `base`.
+#[test]
+fn stores_that_are_not_the_scenarios_bridge_are_refused() {
+    let f = files();
+    let refs: Vec<(&str, &str)> = f.iter().map(|(a, b)| (*a, b.as_str())).collect();
+    let d = scratch_with("campaign-read", "refusals", &refs);
+    let p = |s: &str| d.join(s).display().to_string();
+    let one = "[campaign]\nscenario = \"viaduct.toml\"\nrecords = \"suite3.toml\"\n\
+               levels_g = [0.4]\n[[variant]]\nname = \"short\"\n[variant.set]\n\
+               \"bridge.seat_length\" = 0.1\n";
+    std::fs::write(d.join("one.toml"), one).unwrap();
+    ok(&["campaign", "run", &p("one.toml"), "--out", &p("s1")]);
+    for cmd in ["check", "fragility"] {
+        let (code, _, err) = run_capture(&[
+            cmd,
+            &p("viaduct.toml"),
+            "--from-store",
+            &p("s1"),
+            "--out",
+            &p("o1"),
+        ]);
+        assert_ne!(code, Some(0), "{cmd}: {err}");
+        assert!(
+            err.contains("not the scenario's own bridge"),
+            "{cmd}: {err}"
+        );
+    }
+    // through its spec it is read
+    ok(&[
+        "check",
+        &p("viaduct.toml"),
+        "--from-store",
+        &p("s1"),
+        "--campaign",
+        &p("one.toml"),
+        "--variant",
+        "short",
+    ]);
+    // `base` is reserved
+    std::fs::write(
+        d.join("base.toml"),
+        one.replace("name = \"short\"", "name = \"base\""),
+    )
+    .unwrap();
+    let (code, _, err) = run_capture(&["campaign", "run", &p("base.toml"), "--out", &p("s2")]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("reserved") && err.contains("base.toml:"),
+        "{err}"
+    );
+    // a store without seat ratios has no seat demand to count
+    let noseats = "[campaign]\nscenario = \"viaduct.toml\"\nrecords = \"suite3.toml\"\n\
+                   levels_g = [0.4]\n[outputs]\nseats = false\n";
+    std::fs::write(d.join("noseats.toml"), noseats).unwrap();
+    ok(&["campaign", "run", &p("noseats.toml"), "--out", &p("s3")]);
+    let (code, _, err) = run_capture(&[
+        "check",
+        &p("viaduct.toml"),
+        "--from-store",
+        &p("s3"),
+        "--campaign",
+        &p("noseats.toml"),
+    ]);
+    assert_ne!(code, Some(0), "{err}");
+    assert!(err.contains("no seat ratios"), "{err}");
+    // a store path that does not exist is named
+    let (code, _, err) = run_capture(&[
+        "check",
+        &p("viaduct.toml"),
+        "--from-store",
+        &p("nosuch"),
+        "--campaign",
+        &p("noseats.toml"),
+    ]);
+    assert_ne!(code, Some(0));
+    assert!(
+        err.contains("no campaign store at") && err.contains("nosuch"),
+        "{err}"
+    );
+}

@@ -52,9 +52,21 @@ class CampaignResult:
 
 
 @functools.lru_cache(maxsize=4)
+def _load(spec: str, stamp: Any) -> "_core.Campaign":
+    return _core.Campaign(spec)
+
+
 def load(spec: str) -> "_core.Campaign":
-    """The campaign of ``spec`` (read and planned once per process: workers reuse it)."""
-    return _core.Campaign(os.fspath(spec))
+    """The campaign of ``spec``, read and planned once per process while the spec file is
+    unchanged (workers reuse it; an edited spec is read again — its scenario and records are
+    checked by the store's fingerprint)."""
+    spec = os.fspath(spec)
+    try:
+        st = os.stat(spec)
+        stamp = (st.st_mtime_ns, st.st_size, st.st_ino)
+    except OSError:
+        stamp = None  # the reader reports the missing file
+    return _load(spec, stamp)
 
 
 def _run_batch(spec: str, out: str, parts: List[int], threads: int) -> int:
@@ -90,7 +102,11 @@ def run(spec, client=None, out="out/campaign", *, parts_per_task: Optional[int] 
     """
     spec = os.path.abspath(os.fspath(spec))
     out = os.path.abspath(os.fspath(out))
-    c = load(spec)
+    if threads is not None and (not isinstance(threads, int) or threads < 1):
+        raise ValueError(f"threads = {threads!r}: give a whole number >= 1 (or None)")
+    # read afresh: an edited scenario or record must not run from a cached campaign (workers
+    # use the cache; a stale one is refused by the store's fingerprint)
+    c = _core.Campaign(spec)
     # the store is locked for the whole run, as by `pounding campaign run`: a second run into it
     # (another process, the CLI, or this process) is refused; the workers write parts unlocked
     with _core.StoreLock(out) as lock:

@@ -31,10 +31,20 @@ impl Campaign {
         store: &Path,
         variant: Option<&str>,
     ) -> Result<(Study, Plan, String), CampaignError> {
+        if !store.exists() {
+            return Err(CampaignError::Store(format!(
+                "no campaign store at {} (give the --out directory of `pounding campaign run`, \
+                 or its runs.parquet)",
+                store.display()
+            )));
+        }
         let dir = if store.is_dir() {
             store.to_path_buf()
         } else {
-            store.parent().unwrap_or(Path::new(".")).to_path_buf()
+            match store.parent() {
+                Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+                _ => Path::new(".").to_path_buf(),
+            }
         };
         let meta = Meta::read(&dir)?;
         if meta.fingerprint != format!("{:016x}", self.fingerprint) {
@@ -83,7 +93,7 @@ impl Campaign {
 }
 
 /// At most 5 names, then how many more.
-fn shortened(names: &[String]) -> String {
+pub(super) fn shortened(names: &[String]) -> String {
     let mut s = names.iter().take(5).cloned().collect::<Vec<_>>().join(", ");
     if names.len() > 5 {
         s.push_str(&format!(", … {} more", names.len() - 5));
@@ -180,7 +190,7 @@ pub fn seat_exceedance(
     for e in &report.ends {
         let Some(k) = ends.iter().position(|n| *n == e.at.end) else {
             return Err(CampaignError::Store(format!(
-                "the store has no seat ratio of {} (stored with [outputs] seats = false?)",
+                "the bridge has no seated end {} (another bridge than the store's?)",
                 e.at.end
             )));
         };
@@ -198,7 +208,11 @@ pub fn seat_exceedance(
                 let (mut runs, mut exceeded) = (0, 0);
                 for r in rows.iter().filter(|r| r.stripe == b && r.trusted()) {
                     let Some(ratio) = r.seats.get(k) else {
-                        continue; // a trusted run always has its seats; none stored: not counted
+                        return Err(CampaignError::Store(
+                            "the store has no seat ratios (its campaign was run with [outputs] \
+                             seats = false): there is no seat demand to count"
+                                .into(),
+                        ));
                     };
                     runs += 1;
                     exceeded += usize::from(ratio * e.at.seat_length > seat_m);

@@ -73,12 +73,13 @@ pub fn study_rows(
         path.parent().unwrap_or(Path::new(".")).to_path_buf()
     })?;
     let v = match variant {
-        None if meta.variants.len() == 1 => 0,
+        // a campaign without variants: its runs are the scenario's own bridge
+        None if meta.variants == [super::spec::BASE_VARIANT] => 0,
         None => {
             return Err(CampaignError::Store(format!(
-                "the store holds {} variants ({}): name one",
-                meta.variants.len(),
-                meta.variants.join(", ")
+                "the store holds the campaign's variants ({}), not the scenario's own bridge: give \
+                 --campaign SPEC (the spec that made it) and --variant NAME",
+                super::from_store::shortened(&meta.variants)
             )));
         }
         Some(name) => meta

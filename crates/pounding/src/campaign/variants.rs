@@ -249,6 +249,18 @@ pub fn variants(
             })
             .collect(),
     };
+    if let Some(v) = combos.iter().find(|v| v.name == super::spec::BASE_VARIANT) {
+        return Err(CampaignError::Key {
+            message: format!(
+                "the name {:?} is reserved for the runs of a campaign without variants (a store \
+                 of them is read as the scenario's own bridge): name the variant otherwise",
+                v.name
+            ),
+            key: "variant.name".into(),
+            origin: origin.to_string(),
+            line: Some(v.line),
+        });
+    }
     if combos.len() > MAX_VARIANTS {
         return Err(CampaignError::Store(format!(
             "{origin}: {} variants, more than {MAX_VARIANTS}",
