@@ -6,13 +6,14 @@ use super::error::{ParamKey, ScenarioError, Section};
 pub(super) use super::ground::build_ground;
 use super::sections::{DecksSec, Raw};
 use super::{Scenario, SimSetup, Src};
-use crate::geometry::GeometryError;
-use crate::ground_motion::{GroundMotion, GroundMotionError};
+use crate::geometry::{GeometryError, ShapeParam};
+use crate::ground_motion::{GroundMotion, GroundMotionError, MotionParam};
 use crate::math::{Real, Vector};
 use crate::output::float_token;
 use crate::pair::SArrangement;
 use crate::shape::Deck;
 use crate::shape::{DeckShape, SkewedDeck, StraightDeck};
+use crate::sim::param::{ParamPath, Setting, TwoDeckParam};
 use crate::sim::{
     Bearing, DampingModel, JointContact, SimAbutment, SimError, SimModel, SimProblem, SimSettings,
 };
@@ -24,26 +25,79 @@ pub(super) const fn time(key: &'static str) -> ParamKey {
     ParamKey::new(Section::Time, key)
 }
 
-/// A library error located at the scenario key that sets the parameter it names.
+/// A library error located at the scenario key that sets the parameter it concerns (its typed
+/// path, [`key_of_error`]).
 pub(super) fn sim_error(src: &Src, e: SimError) -> ScenarioError {
-    let name = match &e {
-        SimError::InvalidParameter { name, .. } => Some(name.as_str()),
-        SimError::Geometry(GeometryError::InvalidParameter { name, .. }) => Some(name.as_str()),
-        SimError::GroundMotion(GroundMotionError::InvalidParameter { name, .. }) => {
-            Some(name.as_str())
-        }
-        _ => None,
-    };
-    // A deck's mass is set by `massJ` when given, else derived from the geometry and density.
-    let key = match name {
-        Some("mass (deck 1)") => Some(mass_key(src, 1)),
-        Some("mass (deck 2)") => Some(mass_key(src, 2)),
-        Some(n) => ParamKey::of_model_parameter(n),
-        None => None,
-    };
-    match key {
+    match key_of_error(src, &e) {
         Some(key) => src.invalid(e.to_string(), key),
         None => ScenarioError::Model(Box::new(e)),
+    }
+}
+
+/// The two-deck scenario key that sets the parameter of a library error, from the error's typed
+/// path ([`ParamPath`], [`ShapeParam`], [`MotionParam`]); `None` for parameters no key sets.
+fn key_of_error(src: &Src, e: &SimError) -> Option<ParamKey> {
+    use Section::{Abutments, Bearings, Decks, Joint};
+    let of = ParamKey::of_deck;
+    // the two keys of a per-deck parameter, by deck
+    let per_deck = |section, keys: [&'static str; 2], deck: Option<u8>| match deck {
+        Some(d @ (1 | 2)) => Some(of(section, keys[d as usize - 1], d)),
+        _ => None,
+    };
+    match e {
+        SimError::InvalidParameter { path, .. } => match path {
+            ParamPath::Setting(s) => Some(time(match s {
+                Setting::Dt => "dt",
+                Setting::Duration => "duration",
+                Setting::HistoryStride => "history_every",
+            })),
+            &ParamPath::TwoDeck { param, deck, .. } => match param {
+                TwoDeckParam::Gap => Some(ParamKey::new(Joint, "gap")),
+                TwoDeckParam::SeatLength => Some(ParamKey::new(Joint, "seat_length")),
+                TwoDeckParam::Mu => Some(ParamKey::new(Joint, "mu")),
+                TwoDeckParam::EpsN => Some(ParamKey::new(Joint, "eps_n")),
+                TwoDeckParam::DampingRatio => Some(ParamKey::new(Bearings, "damping_ratio")),
+                TwoDeckParam::Width | TwoDeckParam::JointFace => Some(ParamKey {
+                    section: Decks,
+                    key: "width",
+                    deck,
+                }),
+                // a deck's mass is set by `massJ` when given, else derived from its density
+                TwoDeckParam::Mass => deck
+                    .filter(|d| matches!(d, 1 | 2))
+                    .map(|d| mass_key(src, d)),
+                TwoDeckParam::AbutmentGap => per_deck(Abutments, ["gap1", "gap2"], deck),
+                TwoDeckParam::AbutmentSeat => {
+                    per_deck(Abutments, ["seat_length1", "seat_length2"], deck)
+                }
+                TwoDeckParam::BearingStiffness => {
+                    per_deck(Bearings, ["stiffness1", "stiffness2"], deck)
+                }
+                TwoDeckParam::BearingPoint => per_deck(Bearings, ["points1", "points2"], deck),
+            },
+            _ => None,
+        },
+        SimError::Geometry(GeometryError::InvalidParameter { param, deck, .. }) => {
+            let deck = deck.and_then(|d| u8::try_from(d).ok());
+            match param {
+                ShapeParam::Radius => per_deck(Decks, ["R1", "R2"], deck),
+                ShapeParam::Angle => per_deck(Decks, ["beta1_deg", "beta2_deg"], deck),
+                ShapeParam::Length => per_deck(Decks, ["L1", "L2"], deck),
+                ShapeParam::Skew => per_deck(Decks, ["skew_deg", "skew_deg"], deck),
+                ShapeParam::Width => Some(ParamKey::new(Decks, "width")),
+                ShapeParam::Thickness => Some(ParamKey::new(Decks, "thickness")),
+                ShapeParam::Density => Some(ParamKey::new(Decks, "density")),
+                ShapeParam::Gap => Some(ParamKey::new(Joint, "gap")),
+                ShapeParam::Other => None,
+            }
+        }
+        SimError::GroundMotion(GroundMotionError::InvalidParameter { param, .. }) => match param {
+            MotionParam::ScaleY => Some(ParamKey::new(Section::GroundMotion, "scale_y")),
+            MotionParam::ScaleX => Some(ParamKey::new(Section::GroundMotion, "scale_x")),
+            MotionParam::Incidence => Some(ParamKey::new(Section::GroundMotion, "incidence_deg")),
+            MotionParam::Other => None,
+        },
+        _ => None,
     }
 }
 
