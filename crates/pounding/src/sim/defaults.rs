@@ -43,3 +43,9 @@ pub const CSV_UNITS: &str = "g";
 pub const DT: Real = 1e-3;
 /// A scenario's `[time] history_every`: every n-th step is kept in the histories.
 pub const HISTORY_EVERY: i64 = 10;
+/// [`super::SimSettings::history_stride`] of a run built in code (every step kept).
+pub const HISTORY_STRIDE: usize = 1;
+/// `θ` of the smooth part (the trapezoidal rule).
+pub const THETA: Real = 0.5;
+/// The approach velocity above which a contact's impulse counts as an impact \[m/s\].
+pub const IMPACT_VELOCITY: Real = 1e-3;

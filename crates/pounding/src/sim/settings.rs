@@ -32,9 +32,9 @@ impl Default for SimSettings {
         Self {
             dt: super::defaults::DT,
             duration: None,
-            theta: 0.5,
-            impact_velocity: 1e-3,
-            history_stride: 1,
+            theta: super::defaults::THETA,
+            impact_velocity: super::defaults::IMPACT_VELOCITY,
+            history_stride: super::defaults::HISTORY_STRIDE,
             lemke: LemkeSettings::default(),
             progress: Progress::default(),
         }
