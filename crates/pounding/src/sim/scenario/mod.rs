@@ -19,6 +19,7 @@ mod build;
 mod contact;
 mod error;
 mod ground;
+mod model_keys;
 mod sections;
 mod setup;
 mod site_contact;
