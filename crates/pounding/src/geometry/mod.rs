@@ -255,9 +255,15 @@ pub fn is_first_contact(case: ContactCase, theta1: Real, theta2: Real) -> bool {
 /// The degeneracy of a pose, if any (`θ1 = θ2` first, then `θ1 = −θ2`), within
 /// [`DEGENERACY_TOLERANCE`].
 pub fn degeneracy(theta1: Real, theta2: Real) -> Option<Degeneracy> {
-    if (theta1 - theta2).abs() <= DEGENERACY_TOLERANCE {
+    degeneracy_within(theta1, theta2, DEGENERACY_TOLERANCE)
+}
+
+/// The degeneracy of a pose within `tol` (the angles and `tol` in one unit):
+/// `|θ1 − θ2| ≤ tol` → parallel faces, then `|θ1 + θ2| ≤ tol` → corner meets corner.
+pub fn degeneracy_within(theta1: Real, theta2: Real, tol: Real) -> Option<Degeneracy> {
+    if (theta1 - theta2).abs() <= tol {
         Some(Degeneracy::ParallelFaces)
-    } else if (theta1 + theta2).abs() <= DEGENERACY_TOLERANCE {
+    } else if (theta1 + theta2).abs() <= tol {
         Some(Degeneracy::CornerCorner)
     } else {
         None
