@@ -22,7 +22,7 @@ use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
 use pounding::sim::bridge::BridgeSolution;
 use pounding::sim::compare::{CompareFlags, Comparison, LawRun, not_completed};
-use pounding::sim::output::{COMPARE_OUTPUTS, compare_csv, compare_table};
+use pounding::sim::output::{compare_outputs, compare_tables};
 use pounding::sim::scenario::Setup;
 use serde_json::json;
 use std::path::{Path, PathBuf};
@@ -136,13 +136,13 @@ pub fn run(args: Args) -> Result<ExitCode> {
         t_start,
     };
     if cmp.bridge {
-        bridge::write_outputs(&ctx)?;
+        write_outputs(&ctx, true, |out| bridge::draw(out, &runs))?;
     } else {
         let gap0 = match cmp.first_setup() {
             Some(Setup::TwoDecks(s)) => s.problem.model.gap,
             _ => 0.0,
         };
-        write_outputs(&ctx, gap0)?;
+        write_outputs(&ctx, false, |out| draw(out, &runs, gap0))?;
     }
     // Like `simulate`: a law whose run did not complete is written, then reported with exit 1.
     let bad = not_completed(&runs);
@@ -221,17 +221,48 @@ pub(crate) fn write(out: &Path, name: &str, bytes: &[u8]) -> Result<()> {
         .with_context(|| format!("cannot write {}", out.join(name).display()))
 }
 
-/// Writes `compare.csv`, the table on stdout, the plots, `report.html` and `timing.json` into
-/// the locked `out`.
-fn write_outputs(ctx: &Job, gap0: Real) -> Result<()> {
+/// The one writer of a comparison's files, either form: locks `out`, clears every file a
+/// comparison of either form writes, writes the library's tables ([`compare_tables`]: the
+/// CSV files and the table on stdout), then the figures `draw` makes (file, caption), then
+/// `report.html` and `timing.json` (last; with the skipped laws for a bridge).
+fn write_outputs(
+    ctx: &Job,
+    bridge: bool,
+    draw: impl FnOnce(&Path) -> Result<Vec<(&'static str, String)>>,
+) -> Result<()> {
     let out = ctx.out;
     let lock = pounding::output::lock_output_dir(out)?;
-    pounding::output::remove_previous_outputs(&lock, COMPARE_OUTPUTS)?;
-    let csv = compare_csv(ctx.runs);
-    write(out, "compare.csv", csv.as_bytes())?;
-    print!("{}", compare_table(ctx.runs));
-    let ran: Vec<Ran> = ctx
-        .runs
+    let previous: Vec<&str> = compare_outputs().collect();
+    pounding::output::remove_previous_outputs(&lock, &previous)?;
+    let (tables, text) = compare_tables(ctx.runs, bridge);
+    for t in &tables {
+        write(out, t.name, t.csv.as_bytes())?;
+    }
+    print!("{text}");
+    let figures = draw(out)?;
+    let figures: Vec<(&str, &str)> = figures.iter().map(|(f, c)| (*f, c.as_str())).collect();
+    let mut files: Vec<&str> = tables.iter().map(|t| t.name).collect();
+    files.push("timing.json");
+    let page = crate::compare_report::Page {
+        ctx,
+        files: &files,
+        tables: tables.into_iter().map(|t| (t.title, t.csv)).collect(),
+        figures: &figures,
+    };
+    write(
+        out,
+        "report.html",
+        crate::compare_report::html(&page).as_bytes(),
+    )?;
+    write(out, "timing.json", timing_json(ctx, bridge)?.as_bytes())?;
+    eprintln!("outputs in {}", out.display());
+    drop(lock);
+    Ok(())
+}
+
+/// The two-deck figures, `joint_gap.png` and `contact_force.png`, of every law that ran.
+fn draw(out: &Path, runs: &[LawRun], gap0: Real) -> Result<Vec<(&'static str, String)>> {
+    let ran: Vec<Ran> = runs
         .iter()
         .filter_map(|r| {
             Some(Ran {
@@ -241,27 +272,18 @@ fn write_outputs(ctx: &Job, gap0: Real) -> Result<()> {
         })
         .collect();
     plots::plots(out, &ran, gap0).map_err(|e| anyhow!("plotting: {e}"))?;
-    let page = crate::compare_report::Page {
-        ctx,
-        files: &["compare.csv", "timing.json"],
-        tables: vec![("Per law (compare.csv)", csv)],
-        figures: &[
-            (
-                "joint_gap.png",
-                "Joint gap (the smaller of the two ends) by contact law: the whole run and a zoom around the largest contact event.",
-            ),
-            (
-                "contact_force.png",
-                "Total joint contact force of the compliance laws (rigid contact has impulses only: its estimate is in the table).",
-            ),
-        ],
-    };
-    write(
-        out,
-        "report.html",
-        crate::compare_report::html(&page).as_bytes(),
-    )?;
-    write(out, "timing.json", timing_json(ctx, false)?.as_bytes())?;
-    eprintln!("outputs in {}", out.display());
-    Ok(())
+    Ok(vec![
+        (
+            "joint_gap.png",
+            "Joint gap (the smaller of the two ends) by contact law: the whole run and a zoom \
+             around the largest contact event."
+                .into(),
+        ),
+        (
+            "contact_force.png",
+            "Total joint contact force of the compliance laws (rigid contact has impulses only: \
+             its estimate is in the table)."
+                .into(),
+        ),
+    ])
 }

@@ -76,15 +76,11 @@ pub(crate) fn compare_run(
 
 /// The texts and lists of [`CompareOut`] from the runs.
 fn outputs(runs: &[LawRun], bridge: bool) -> CompareOut {
-    let (csv, sites, table) = if bridge {
-        (
-            so::bridge_compare_csv(runs),
-            Some(so::bridge_compare_sites_csv(runs)),
-            so::bridge_compare_table(runs),
-        )
-    } else {
-        (so::compare_csv(runs), None, so::compare_table(runs))
-    };
+    // the library's one writer of either form: compare.csv, then a bridge's compare_sites.csv
+    let (tables, table) = so::compare_tables(runs, bridge);
+    let mut tables = tables.into_iter().map(|t| t.csv);
+    let csv = tables.next().unwrap_or_default();
+    let sites = tables.next();
     let mut skipped = Vec::new();
     let mut warnings = Vec::new();
     let mut seconds = Vec::new();

@@ -561,6 +561,20 @@ impl Assembled {
 /// The `3n × 3n` LCP matrix and vector of spec §8 (row-major), from `G` (2n × 2n, row-major,
 /// blocks `[N..., T...]`), the laws and `γ⁻`.
 pub fn impact_lcp(g: &[Real], laws: &[ImpactLaw], gamma_pre: &[Real]) -> (Vec<Real>, Vec<Real>) {
+    impact_lcp_free(g, laws, gamma_pre, gamma_pre)
+}
+
+/// [`impact_lcp`] of a time step: the velocities the impulses act on are the free velocities
+/// `γ_free` at the end of the step (without contact impulses), so `b_N = γ_N,free + ε_N min(γ_N⁻,
+/// 0)`, `b_T = γ_T,free` (spec §8 with `γ_free = γ⁻` for an isolated impact). The one assembly
+/// of the impact LCP: the single impact here and every step of the simulator's rigid stepper
+/// (`sim/rigid.rs`).
+pub(crate) fn impact_lcp_free(
+    g: &[Real],
+    laws: &[ImpactLaw],
+    gamma_pre: &[Real],
+    gamma_free: &[Real],
+) -> (Vec<Real>, Vec<Real>) {
     let n = laws.len();
     let k = 2 * n;
     let d = 3 * n;
@@ -579,15 +593,14 @@ pub fn impact_lcp(g: &[Real], laws: &[ImpactLaw], gamma_pre: &[Real]) -> (Vec<Re
         a[(n + i) * d + 2 * n + i] = 1.0;
         a[(2 * n + i) * d + i] = 2.0 * laws[i].mu();
         a[(2 * n + i) * d + n + i] = -1.0;
-        let gn = gamma_pre[i];
-        b[i] = gn + laws[i].eps() * gn.min(0.0);
-        b[n + i] = gamma_pre[n + i];
+        b[i] = gamma_free[i] + laws[i].eps() * gamma_pre[i].min(0.0);
+        b[n + i] = gamma_free[n + i];
     }
     (a, b)
 }
 
 /// `(Λ_N, Λ_T)` (length 2n, blocks `[N..., T...]`) from an LCP solution `x = (Λ_N, Λ_TR, γ_TL)`.
-fn impulses(z: &[Real], laws: &[ImpactLaw]) -> Vec<Real> {
+pub(crate) fn impulses(z: &[Real], laws: &[ImpactLaw]) -> Vec<Real> {
     let n = laws.len();
     let mut l = vec![0.0; 2 * n];
     for i in 0..n {

@@ -56,7 +56,7 @@
 use crate::contact::{Delassus, delassus_with, force_directions};
 use crate::geometry::{
     ContactCase, ContactDetection, DEGENERACY_TOLERANCE, DeckId, Degeneracy, GeometryError,
-    ImpactConfiguration, MassProperties, SigmaMode, degeneracy, is_first_contact,
+    ImpactConfiguration, MassProperties, ShapeParam, SigmaMode, degeneracy, is_first_contact,
 };
 use crate::math::{Real, Vector};
 use crate::shape::{Deck, DeckEnd, DeckShape};
@@ -89,11 +89,11 @@ impl DeckPair {
             let w = c0.x;
             let tol = 1e-12 * w.abs().max(1.0);
             if !(w > 0.0 && c0.y.abs() <= tol && c1.y.abs() <= tol && (c1.x + w).abs() <= tol) {
-                return Err(GeometryError::InvalidParameter {
-                    name: format!("deck{i}"),
-                    value: w,
-                    reason: "the joint face must be centred on the body origin along +x".into(),
-                });
+                return Err(GeometryError::named(
+                    &format!("deck{i}"),
+                    w,
+                    "the joint face must be centred on the body origin along +x",
+                ));
             }
         }
         Ok(Self { deck1, deck2 })
@@ -311,7 +311,7 @@ impl SArrangement {
     pub fn new(deck1: Deck, deck2: Deck) -> Result<Self, GeometryError> {
         if deck1.width != deck2.width {
             return Err(GeometryError::invalid(
-                "width",
+                ShapeParam::Width,
                 deck2.width,
                 &format!(
                     "both decks must share the width (deck 1 has {})",
@@ -323,7 +323,7 @@ impl SArrangement {
         let rt2 = deck2.density * deck2.thickness;
         if (rt1 - rt2).abs() > 1e-12 * rt1.abs().max(rt2.abs()) {
             return Err(GeometryError::invalid(
-                "thickness",
+                ShapeParam::Thickness,
                 deck2.thickness,
                 &format!("both decks must share density*thickness (deck 1: {rt1}, deck 2: {rt2})"),
             ));

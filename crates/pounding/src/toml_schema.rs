@@ -1,6 +1,8 @@
 //! Strict shapes for scenario files read with `serde` and `toml`, and the one locator of keys and
-//! lines ([`line_col`], [`key_on_line`], [`line_of_key`]) that `study` and `simulate` use in
-//! their error messages.
+//! lines that every scenario, study, fragility, design and campaign file uses in its error
+//! messages: a value read with its span is placed by [`line_col`]; a key known by its name by
+//! [`key_span`] (and [`line_of_key`] over it), from the parsed document, never by scanning
+//! lines; a parser's error position is named by [`key_on_line`].
 //!
 //! `serde`'s derived `Deserialize` for a struct accepts a *sequence* as well as a map: the values
 //! are taken as the fields in declaration order. In a scenario file that turns a slip of the pen
@@ -14,6 +16,9 @@
 use serde::de::{self, Deserialize, Deserializer, MapAccess, SeqAccess, Visitor};
 use std::fmt;
 use std::marker::PhantomData;
+use std::ops::Range;
+use toml::Spanned;
+use toml::de::{DeString, DeTable, DeValue};
 
 /// A `T` that may only be written as a TOML table (inline `{ ... }` or a `[section]`), never as
 /// an array.
@@ -130,24 +135,45 @@ pub fn key_on_line(text: &str, pos: usize) -> Option<String> {
     })
 }
 
-/// 1-based line on which `key` is written in `[section]` of `text` (`key = …`, the key bare or
-/// quoted), or `None` when the file does not set it (commented-out keys do not count).
-pub fn line_of_key(text: &str, section: &str, key: &str) -> Option<usize> {
-    let mut cur = "";
-    for (i, raw) in text.lines().enumerate() {
-        let l = raw.trim();
-        if l.starts_with('[') {
-            cur = l.trim_matches(|c| c == '[' || c == ']').trim();
-            continue;
+/// The span of the key at `path` in the TOML `text` (the names of the tables it lies in, then
+/// the key itself, each as written, unquoted: `["grid", "bridge.gap"]`), however the file
+/// writes it (under a `[table]` header, as a dotted key, in an inline table); `None` when the
+/// text does not set it or is not TOML. The one locator of a key by name: every
+/// "file:line" of a key that was not read with its own span comes from here.
+pub fn key_span(text: &str, path: &[&str]) -> Option<Range<usize>> {
+    let doc = DeTable::parse(text).ok()?;
+    let mut table = doc.get_ref();
+    for (i, name) in path.iter().enumerate() {
+        let (key, value) = entry(table, name)?;
+        if i + 1 == path.len() {
+            return Some(key.span());
         }
-        if cur == section
-            && let Some((k, _)) = l.split_once('=')
-            && k.trim().trim_matches('"') == key
-        {
-            return Some(i + 1);
+        match value.get_ref() {
+            DeValue::Table(t) => table = t,
+            _ => return None,
         }
     }
     None
+}
+
+/// The entry `key` of a parsed table (`toml::de::DeTable`): its key and its value, each with
+/// its span.
+pub fn entry<'a, 'i>(
+    table: &'a DeTable<'i>,
+    key: &str,
+) -> Option<(&'a Spanned<DeString<'i>>, &'a Spanned<DeValue<'i>>)> {
+    table.iter().find(|(k, _)| k.get_ref().as_ref() == key)
+}
+
+/// 1-based line on which `key` is written in `[section]` of `text` (`""`: the root table), or
+/// `None` when the file does not set it (commented-out keys do not count); [`key_span`].
+pub fn line_of_key(text: &str, section: &str, key: &str) -> Option<usize> {
+    let path: &[&str] = if section.is_empty() {
+        &[key]
+    } else {
+        &[section, key]
+    };
+    key_span(text, path).map(|s| line_col(text, s.start).0)
 }
 
 #[cfg(test)]
@@ -202,6 +228,15 @@ mod tests {
         assert_eq!(line_of_key(t, "decks", "dt"), None);
         assert_eq!(line_of_key(t, "time", "dt"), Some(7));
         assert_eq!(line_of_key(t, "", "a"), Some(1));
+        // dotted keys and inline tables are found as well; a key in a string is not a key
+        let t2 = "s = \"[decks]\\nR1 = 1\"\ndecks.R1 = 3\ntime = { dt = 1e-3 }\n";
+        assert_eq!(line_of_key(t2, "decks", "R1"), Some(2));
+        assert_eq!(line_of_key(t2, "time", "dt"), Some(3));
+        assert_eq!(
+            key_span("[grid]\n\"bridge.gap\" = [1]\n", &["grid", "bridge.gap"]),
+            Some(7..19)
+        );
+        assert_eq!(line_of_key("not toml [", "decks", "R1"), None);
         let pos = t.find("100.0").unwrap();
         assert_eq!(line_col(t, pos), (4, 6));
         assert_eq!(key_on_line(t, pos).as_deref(), Some("decks.R1"));

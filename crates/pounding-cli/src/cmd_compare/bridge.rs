@@ -6,61 +6,31 @@
 //! for its stiffness or a calibration it lacks) is skipped with the reason, on stderr and in
 //! `compare.csv`; when every law is refused the first error is reported (exit 2).
 //!
-//! Writes `compare.csv` and `compare_sites.csv` (library writers,
-//! [`pounding::sim::output::bridge_compare_csv`]), the table on stdout, `joint_gap.png` (one
-//! panel per site, in `compare_sites.csv`'s order: each joint's smaller end gap over time, then
-//! each abutment's gap, one curve per law), `report.html` and `timing.json` (last). Exit 1 when
-//! a law that ran did not complete.
+//! Its files are written by the one writer of either form ([`super::write_outputs`] over the
+//! library's [`pounding::sim::output::compare_tables`]: `compare.csv`, `compare_sites.csv`, the
+//! table on stdout, `report.html`, `timing.json` last); this module draws its figure,
+//! `joint_gap.png` (one panel per site, in `compare_sites.csv`'s order: each joint's smaller end
+//! gap over time, then each abutment's gap, one curve per law). Exit 1 when a law that ran did
+//! not complete.
 
 use super::plots::{R, panel};
-use super::{Job, timing_json, write};
 use anyhow::{Result, anyhow};
 use pounding::math::Real;
 use pounding::sim::bridge::{ABUTMENT_SIDES, BridgeSolution};
 use pounding::sim::compare::LawRun;
-use pounding::sim::output::{
-    BRIDGE_COMPARE_OUTPUTS, COMPARE_OUTPUTS, bridge_compare_csv, bridge_compare_sites_csv,
-    bridge_compare_table,
-};
 use std::path::Path;
 
-/// Writes the CSV files, the table, the plot, `report.html` and `timing.json` into the locked
-/// `out`.
-pub(super) fn write_outputs(ctx: &Job) -> Result<()> {
-    let out = ctx.out;
-    let lock = pounding::output::lock_output_dir(out)?;
-    pounding::output::remove_previous_outputs(&lock, BRIDGE_COMPARE_OUTPUTS)?;
-    pounding::output::remove_previous_outputs(&lock, COMPARE_OUTPUTS)?;
-    let csv = bridge_compare_csv(ctx.runs);
-    let sites = bridge_compare_sites_csv(ctx.runs);
-    write(out, "compare.csv", csv.as_bytes())?;
-    write(out, "compare_sites.csv", sites.as_bytes())?;
-    print!("{}", bridge_compare_table(ctx.runs));
-    let panels = gap_sites(ctx.runs);
-    plot_gaps(out, ctx.runs, &panels).map_err(|e| anyhow!("plotting: {e}"))?;
+/// The bridge's figure, `joint_gap.png`: one panel per site, one curve per law.
+pub(super) fn draw(out: &Path, runs: &[LawRun]) -> Result<Vec<(&'static str, String)>> {
+    let panels = gap_sites(runs);
+    plot_gaps(out, runs, &panels).map_err(|e| anyhow!("plotting: {e}"))?;
     let names: Vec<String> = panels.iter().map(|s| s.name()).collect();
     let caption = format!(
         "The gap of each site by contact law, one panel per site ({}): a joint's is the smaller \
          of its two end gaps, an abutment's the smaller of its corner gaps.",
         names.join(", ")
     );
-    let page = crate::compare_report::Page {
-        ctx,
-        files: &["compare.csv", "compare_sites.csv", "timing.json"],
-        tables: vec![
-            ("Per law (compare.csv)", csv),
-            ("Per joint and abutment (compare_sites.csv)", sites),
-        ],
-        figures: &[("joint_gap.png", caption.as_str())],
-    };
-    write(
-        out,
-        "report.html",
-        crate::compare_report::html(&page).as_bytes(),
-    )?;
-    write(out, "timing.json", timing_json(ctx, true)?.as_bytes())?;
-    eprintln!("outputs in {}", out.display());
-    Ok(())
+    Ok(vec![("joint_gap.png", caption)])
 }
 
 /// A panel of `joint_gap.png`: a joint (0-based) or an abutment (0 start, 1 end).

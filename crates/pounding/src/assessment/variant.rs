@@ -303,11 +303,9 @@ fn valid_name(s: &str) -> bool {
             .all(|c| c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.'))
 }
 
-/// The entry `key` of a table.
+/// The value of the entry `key` of a table ([`crate::toml_schema::entry`]).
 fn get<'a, 'i>(t: &'a DeTable<'i>, key: &str) -> Option<&'a Spanned<DeValue<'i>>> {
-    t.iter()
-        .find(|(k, _)| k.get_ref().as_ref() == key)
-        .map(|(_, v)| v)
+    crate::toml_schema::entry(t, key).map(|(_, v)| v)
 }
 
 /// Parses `a.b[2].c` into steps.

@@ -28,7 +28,7 @@ use crate::assessment::study::Study;
 use crate::assessment::variant::{Override, Variant, Variants, parse_path};
 use crate::output::float_token;
 use crate::sim::scenario::{BridgeSetup, Scenario};
-use crate::toml_schema::line_col;
+use crate::toml_schema::{key_span, line_col};
 use rayon::prelude::*;
 use std::path::Path;
 
@@ -65,30 +65,6 @@ fn value_label(v: &toml::Value) -> String {
     }
 }
 
-/// The byte offset of the key `k` of the `[grid]` table starting at `span`: the start of the line
-/// that writes it as a key (quoted with `"` or `'`, or bare), so that a comment or a value that
-/// mentions it does not count; the table's start when not found.
-fn key_position(spec: &str, span: std::ops::Range<usize>, k: &str) -> usize {
-    let mut off = span.start;
-    for (n, line) in spec[span.start.min(spec.len())..]
-        .split_inclusive('\n')
-        .enumerate()
-    {
-        let t = line.trim_start();
-        if n > 0 && t.starts_with('[') {
-            break; // the next table
-        }
-        let rest = [format!("\"{k}\""), format!("'{k}'"), k.to_string()]
-            .into_iter()
-            .find_map(|q| t.strip_prefix(q.as_str()).map(str::to_string));
-        if rest.is_some_and(|r| r.trim_start().starts_with('=')) {
-            return off + (line.len() - t.len());
-        }
-        off += line.len();
-    }
-    span.start
-}
-
 /// The grid's points as variants (empty without a `[grid]`).
 fn grid(spec: &str, origin: &str) -> Result<Vec<Variant>, CampaignError> {
     #[derive(serde::Deserialize)]
@@ -116,7 +92,8 @@ fn grid(spec: &str, origin: &str) -> Result<Vec<Variant>, CampaignError> {
     // the keys in the file's order (the table is sorted): by the position of their line
     let mut axes: Vec<(usize, String, Vec<toml::Value>)> = Vec::new();
     for (k, v) in t.get_ref() {
-        let at = key_position(spec, t.span(), k);
+        // the key's own place (a comment or a value that mentions it does not count)
+        let at = key_span(spec, &["grid", k]).map_or(t.span().start, |s| s.start);
         let key = format!("grid.\"{k}\"");
         let toml::Value::Array(vals) = v else {
             return Err(key_err(

@@ -59,11 +59,27 @@ pub enum GroundMotionError {
     InvalidParameter {
         /// Parameter name.
         name: String,
+        /// The parameter, typed ([`MotionParam::Other`] for a record's own samples).
+        param: MotionParam,
         /// The offending value.
         value: Real,
         /// What was expected.
         reason: String,
     },
+}
+
+/// Which parameter of a [`GroundMotion`] a [`GroundMotionError::InvalidParameter`] concerns, typed
+/// so that a front end maps it to its own key without reading the message.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum MotionParam {
+    /// [`GroundMotion::scale_y`].
+    ScaleY,
+    /// [`GroundMotion::scale_x`].
+    ScaleX,
+    /// [`GroundMotion::incidence`].
+    Incidence,
+    /// A record's samples or sample interval (named in the message).
+    Other,
 }
 
 /// Units of the acceleration values in a record file.
@@ -192,6 +208,7 @@ impl Record {
         let name = name.into();
         let bad = |what: &str, v: Real, reason: &str| GroundMotionError::InvalidParameter {
             name: format!("{name}: {what}"),
+            param: MotionParam::Other,
             value: v,
             reason: reason.to_string(),
         };
@@ -258,6 +275,7 @@ impl Record {
         if !(dt.is_finite() && dt > 0.0) {
             return Err(GroundMotionError::InvalidParameter {
                 name: format!("{name}: dt"),
+                param: MotionParam::Other,
                 value: dt,
                 reason: "must be finite and > 0".into(),
             });
@@ -457,14 +475,15 @@ impl GroundMotion {
 
     /// Checks that the scale factors and the angle are finite.
     pub fn validate(&self) -> Result<(), GroundMotionError> {
-        for (name, v) in [
-            ("scale_y", self.scale_y),
-            ("scale_x", self.scale_x),
-            ("incidence", self.incidence),
+        for (name, param, v) in [
+            ("scale_y", MotionParam::ScaleY, self.scale_y),
+            ("scale_x", MotionParam::ScaleX, self.scale_x),
+            ("incidence", MotionParam::Incidence, self.incidence),
         ] {
             if !v.is_finite() {
                 return Err(GroundMotionError::InvalidParameter {
                     name: name.into(),
+                    param,
                     value: v,
                     reason: "must be finite".into(),
                 });
@@ -473,6 +492,7 @@ impl GroundMotion {
         if self.incidence.abs() > 2.0 * std::f64::consts::PI * (1.0 + 1e-12) {
             return Err(GroundMotionError::InvalidParameter {
                 name: "incidence".into(),
+                param: MotionParam::Incidence,
                 value: self.incidence.to_degrees(),
                 reason: "must lie in [-360, 360] deg".into(),
             });

@@ -105,10 +105,14 @@ fn rename(e: GeometryError, from: &str, to: &str) -> GeometryError {
     match e {
         GeometryError::InvalidParameter {
             name,
+            param,
+            deck,
             value,
             reason,
         } => GeometryError::InvalidParameter {
             name: if name == from { to.to_string() } else { name },
+            param,
+            deck,
             value,
             reason,
         },

@@ -6,7 +6,7 @@ use super::common::{
     SingleImpactReport, corner_contacts, invalid, readable, xy,
 };
 use crate::analytic::{self, ImpactLaw};
-use crate::geometry::GeometryError;
+use crate::geometry::{GeometryError, ShapeParam};
 use crate::impact::{self, ContactMode, ImpactSettings};
 use crate::lcp::LemkeSettings;
 use crate::math::Vector;
@@ -74,7 +74,7 @@ impl ShapeSpec {
                 if !(skew_deg.is_finite() && (0.0..90.0).contains(&skew_deg)) =>
             {
                 return Err(GeometryError::invalid(
-                    "skew",
+                    ShapeParam::Skew,
                     skew_deg,
                     "the skew angle must lie in [0, 90) degrees",
                 ));

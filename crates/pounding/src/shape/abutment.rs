@@ -13,7 +13,7 @@
 use super::{DeckEnd, DeckShape};
 use crate::analytic::ImpactLaw;
 use crate::contact::{BodyArms, Delassus, delassus_of_bodies};
-use crate::geometry::GeometryError;
+use crate::geometry::{GeometryError, ShapeParam};
 use crate::impact::{ContactSpec, ImpactError, ImpactProblem, RigidBody};
 use crate::math::{Real, Vector, cross, perp};
 
@@ -32,7 +32,7 @@ impl Abutment {
     pub fn new(end: DeckEnd, gap: Real) -> Result<Self, GeometryError> {
         if !(gap.is_finite() && gap >= 0.0) {
             return Err(GeometryError::invalid(
-                "gap",
+                ShapeParam::Gap,
                 gap,
                 "the abutment gap must be finite and >= 0",
             ));

@@ -7,7 +7,7 @@
 //! interior angles are right angles.
 
 use super::{DeckEnd, EndFace, Shape};
-use crate::geometry::{GeometryError, MassProperties, check_derived};
+use crate::geometry::{GeometryError, MassProperties, ShapeParam, check_derived};
 use crate::math::{Real, Vector};
 
 /// A curved deck: the plane annular sector of centre-line radius `radius` spanning `angle` (spec §2).
@@ -42,14 +42,14 @@ impl Deck {
     ) -> Result<Self, GeometryError> {
         if !(width.is_finite() && width > 0.0) {
             return Err(GeometryError::invalid(
-                "width",
+                ShapeParam::Width,
                 width,
                 "must be finite and > 0",
             ));
         }
         if !(radius.is_finite() && radius > 0.5 * width) {
             return Err(GeometryError::invalid(
-                "R",
+                ShapeParam::Radius,
                 radius,
                 &format!(
                     "the centre-line radius must be finite and > W/2 = {}",
@@ -59,21 +59,21 @@ impl Deck {
         }
         if !(angle.is_finite() && angle > 0.0 && angle < std::f64::consts::TAU) {
             return Err(GeometryError::invalid(
-                "beta",
+                ShapeParam::Angle,
                 angle,
                 "the curve angle must lie in (0, 360) degrees",
             ));
         }
         if !(thickness.is_finite() && thickness > 0.0) {
             return Err(GeometryError::invalid(
-                "thickness",
+                ShapeParam::Thickness,
                 thickness,
                 "must be finite and > 0",
             ));
         }
         if !(density.is_finite() && density > 0.0) {
             return Err(GeometryError::invalid(
-                "density",
+                ShapeParam::Density,
                 density,
                 "must be finite and > 0",
             ));
@@ -87,11 +87,11 @@ impl Deck {
         };
         let p = deck.mass_properties();
         let (r, b, w, t, d) = (
-            ("R", radius, radius),
-            ("beta", angle, angle),
-            ("width", width, width),
-            ("thickness", thickness, thickness),
-            ("density", density, density),
+            (ShapeParam::Radius, radius, radius),
+            (ShapeParam::Angle, angle, angle),
+            (ShapeParam::Width, width, width),
+            (ShapeParam::Thickness, thickness, thickness),
+            (ShapeParam::Density, density, density),
         );
         check_derived("area", p.area, &[r, b, w])?;
         check_derived("mass", p.mass, &[t, d, r, b, w])?;

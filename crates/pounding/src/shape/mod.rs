@@ -59,11 +59,11 @@ pub use curved::{Deck, SectorCentroid};
 pub use skewed::SkewedDeck;
 pub use straight::StraightDeck;
 
-use crate::geometry::{GeometryError, MassProperties};
+use crate::geometry::{GeometryError, MassProperties, ShapeParam};
 use crate::math::{Real, Vector};
 
 /// `v` must be finite and `> 0`; the error names `name`.
-pub(crate) fn positive(name: &str, v: Real) -> Result<(), GeometryError> {
+pub(crate) fn positive(name: ShapeParam, v: Real) -> Result<(), GeometryError> {
     if v.is_finite() && v > 0.0 {
         Ok(())
     } else {
@@ -226,7 +226,7 @@ impl DeckShape {
                 SkewedDeck::new(length, d.width, d.skew, d.thickness, d.density).map(Self::Skewed)
             }
             Self::Curved(_) => Err(GeometryError::invalid(
-                "length",
+                ShapeParam::Length,
                 length,
                 "a curved deck has no axis length (give R and beta)",
             )),

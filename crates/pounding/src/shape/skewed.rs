@@ -11,7 +11,7 @@
 
 use super::{DeckEnd, EndFace, Shape, positive};
 use crate::analytic::ImpactLaw;
-use crate::geometry::{GeometryError, MassProperties, check_derived};
+use crate::geometry::{GeometryError, MassProperties, ShapeParam, check_derived};
 use crate::math::{Real, Vector};
 
 /// A skewed deck: a parallelogram with end faces along the joint line (x) and the axis turned by
@@ -42,17 +42,17 @@ impl SkewedDeck {
         thickness: Real,
         density: Real,
     ) -> Result<Self, GeometryError> {
-        positive("length", length)?;
-        positive("width", width)?;
+        positive(ShapeParam::Length, length)?;
+        positive(ShapeParam::Width, width)?;
         if !(skew.is_finite() && (0.0..std::f64::consts::FRAC_PI_2).contains(&skew)) {
             return Err(GeometryError::invalid(
-                "skew",
+                ShapeParam::Skew,
                 skew.to_degrees(),
                 "the skew angle must lie in [0, 90) degrees",
             ));
         }
-        positive("thickness", thickness)?;
-        positive("density", density)?;
+        positive(ShapeParam::Thickness, thickness)?;
+        positive(ShapeParam::Density, density)?;
         let deck = Self {
             length,
             width,
@@ -69,12 +69,16 @@ impl SkewedDeck {
     pub(super) fn check_mass_properties(&self) -> Result<(), GeometryError> {
         let p = self.mass_properties();
         let (l, w, t, d) = (
-            ("length", self.length, self.length),
-            ("width", self.width, self.width),
-            ("thickness", self.thickness, self.thickness),
-            ("density", self.density, self.density),
+            (ShapeParam::Length, self.length, self.length),
+            (ShapeParam::Width, self.width, self.width),
+            (ShapeParam::Thickness, self.thickness, self.thickness),
+            (ShapeParam::Density, self.density, self.density),
         );
-        let sk = ("skew", self.skew.to_degrees(), 1.0 / self.skew.cos());
+        let sk = (
+            ShapeParam::Skew,
+            self.skew.to_degrees(),
+            1.0 / self.skew.cos(),
+        );
         check_derived("area", p.area, &[l, w])?;
         check_derived("mass", p.mass, &[t, d, l, w])?;
         check_derived("inertia", p.inertia, &[l, w, sk, t, d])

@@ -4,7 +4,7 @@
 //! are named `c0` (joint face: `(W/2, 0)`) and `c1`.
 
 use super::{DeckEnd, EndFace, Shape, SkewedDeck, positive};
-use crate::geometry::{GeometryError, MassProperties};
+use crate::geometry::{GeometryError, MassProperties, ShapeParam};
 use crate::math::{Real, Vector};
 
 /// A straight deck: the rectangle `[−W/2, W/2] × [0, L]` in the body frame (module docs).
@@ -29,10 +29,10 @@ impl StraightDeck {
         thickness: Real,
         density: Real,
     ) -> Result<Self, GeometryError> {
-        positive("length", length)?;
-        positive("width", width)?;
-        positive("thickness", thickness)?;
-        positive("density", density)?;
+        positive(ShapeParam::Length, length)?;
+        positive(ShapeParam::Width, width)?;
+        positive(ShapeParam::Thickness, thickness)?;
+        positive(ShapeParam::Density, density)?;
         let deck = Self {
             length,
             width,

@@ -170,12 +170,11 @@ pub fn supports_problem<P: Problem>(
     scale: Real,
 ) -> Result<P, SimError> {
     if *base.supports() != SupportExcitation::Uniform {
-        return Err(SimError::InvalidArgument {
-            name: "ground_motion.v_app".into(),
-            reason: "the scenario's own support motion (wave passage) cannot be combined with a \
-                     support-motion entry, which gives every support its motion"
-                .into(),
-        });
+        return Err(SimError::argument(
+            "ground_motion.v_app",
+            "the scenario's own support motion (wave passage) cannot be combined with a \
+                     support-motion entry, which gives every support its motion",
+        ));
     }
     let ground = |r: &Record| entry_ground(base.ground(), r, None, scale);
     let start = supports
@@ -318,13 +317,13 @@ pub fn check_support_entries<P: Problem>(
             (None, Some((c, _))) => format!("has a column `{c}`, which is not a support"),
             (None, None) => continue,
         };
-        return Err(SimError::InvalidArgument {
-            name: format!("record {:?}", r.name),
-            reason: format!(
+        return Err(SimError::argument(
+            format!("record {:?}", r.name),
+            format!(
                 "its support-motion file {problem} of the bridge (its supports: {})",
                 lines.join(", ")
             ),
-        });
+        ));
     }
     Ok(())
 }

@@ -94,11 +94,9 @@ impl Dense {
     /// The operators (errors name `dt` when `Ŵ` is singular).
     pub fn new(sys: Coupled, h: Real, th: Real) -> Result<Self, SimError> {
         let what = &sys.m + &sys.c * (h * th) + &sys.k * (h * h * th * th);
-        let winv = what
-            .clone()
-            .lu()
-            .try_inverse()
-            .ok_or_else(|| SimError::invalid("dt", h, "iteration matrix is singular"))?;
+        let winv = what.clone().lu().try_inverse().ok_or_else(|| {
+            SimError::invalid(super::param::Setting::Dt, h, "iteration matrix is singular")
+        })?;
         let mr = &sys.m * &sys.r;
         let a_u = -(&winv * (&sys.c + &sys.k * (h * th))) * h;
         let a_q = -(&winv * &sys.k) * h;

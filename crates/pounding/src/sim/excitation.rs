@@ -212,28 +212,28 @@ impl SupportMotion {
                 let mut out = Vec::with_capacity(lines.len());
                 for l in &lines {
                     let Some(r) = recs.iter().find(|r| r.id == l.id) else {
-                        return Err(SimError::InvalidArgument {
-                            name: "ground_motion.supports".into(),
-                            reason: format!(
+                        return Err(SimError::argument(
+                            "ground_motion.supports",
+                            format!(
                                 "no motion for support `{}` (the bridge's supports: {})",
                                 l.id,
                                 ids(&lines)
                             ),
-                        });
+                        ));
                     };
                     r.ground.validate()?;
                     let same = r.ground == *ground;
                     out.push(((!same).then(|| GroundKinematics::new(&r.ground)), 0.0));
                 }
                 if let Some(r) = recs.iter().find(|r| !lines.iter().any(|l| l.id == r.id)) {
-                    return Err(SimError::InvalidArgument {
-                        name: "ground_motion.supports".into(),
-                        reason: format!(
+                    return Err(SimError::argument(
+                        "ground_motion.supports",
+                        format!(
                             "the bridge has no support `{}` (its supports: {})",
                             r.id,
                             ids(&lines)
                         ),
-                    });
+                    ));
                 }
                 out
             }

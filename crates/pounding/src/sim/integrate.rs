@@ -20,6 +20,7 @@ use super::bridge::{BridgeModel, abut_key, check, joint_key};
 use super::contact::State;
 use super::driver::{self};
 use super::excitation::{SupportExcitation, SupportMotion};
+use super::param::{BridgeKey, BridgeTable};
 use super::scheme::BodySystem;
 use super::view::Bridge;
 use super::{JointContact, SimError, SimSettings, compliance, rigid};
@@ -148,18 +149,20 @@ pub(crate) fn integrate(
 /// Refuses what the supports' own motions do not reach: the segments' dashpots to "the ground"
 /// (which ground, when each support moves its own way?).
 pub(crate) fn check_apart(model: &BridgeModel) -> Result<(), SimError> {
-    let refuse = |name: String, what: &str| SimError::InvalidArgument {
-        name,
-        reason: format!(
-            "{what} is not supported when the supports move apart (wave passage or a motion per \
-             support); run it under a uniform ground motion"
-        ),
+    let refuse = |name: BridgeKey, what: &str| {
+        SimError::argument(
+            name,
+            format!(
+                "{what} is not supported when the supports move apart (wave passage or a motion \
+                 per support); run it under a uniform ground motion"
+            ),
+        )
     };
     if model.damping_model == super::DampingModel::TranslationalDashpots
         && model.damping_ratio > 0.0
     {
         return Err(refuse(
-            "bridge.damping".into(),
+            BridgeKey::new(BridgeTable::Bridge, "damping"),
             "`dashpots` damping (each segment's dashpots to one ground; use `rayleigh` or the \
              bearings' `bearing_damping`)",
         ));
@@ -190,7 +193,7 @@ impl BridgeModel {
             if let JointContact::Compliance(cc) = c {
                 let v = cc.friction_velocity;
                 check(
-                    name.replace(".law", ".friction_velocity"),
+                    BridgeKey::new(name.table, "friction_velocity"),
                     v,
                     v > 0.0,
                     "must be finite and > 0",
@@ -210,7 +213,7 @@ impl BridgeModel {
         kinds: &SiteKinds,
         settings: &SimSettings,
     ) -> Result<rigid::RigidStepper, SimError> {
-        let law = |name: String, mu: Real, eps: Real| {
+        let law = |name: BridgeKey, mu: Real, eps: Real| {
             ImpactLaw::new(mu, eps).map_err(|_| SimError::invalid(name, mu, "invalid impact law"))
         };
         let none = ImpactLaw::new(0.0, 0.0).expect("valid");
@@ -253,7 +256,7 @@ impl BridgeModel {
     > {
         let mut sites = Vec::new();
         let mut vr = Real::INFINITY;
-        let mut law_of = |name: String, c: &JointContact, mu: Real| -> Result<_, SimError> {
+        let mut law_of = |name: BridgeKey, c: &JointContact, mu: Real| -> Result<_, SimError> {
             let JointContact::Compliance(cc) = c else {
                 unreachable!("a compliance site")
             };

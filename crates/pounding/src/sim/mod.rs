@@ -65,6 +65,7 @@ pub mod compare;
 pub mod compliance;
 pub mod contact;
 mod coupled;
+pub mod defaults;
 pub mod dofs;
 mod driver;
 mod elements;
@@ -75,6 +76,7 @@ pub mod model;
 mod observer;
 pub mod options;
 pub mod output;
+pub mod param;
 mod peaks;
 pub mod problem;
 mod rigid;
@@ -109,8 +111,10 @@ pub enum SimError {
     /// A parameter is out of range or not finite; the message names it.
     #[error("invalid {name} = {}: {reason}", crate::output::float_token(*value))]
     InvalidParameter {
-        /// Parameter name as the user knows it.
+        /// Parameter name as the user knows it (the text of `path`).
         name: String,
+        /// The parameter, typed ([`param::ParamPath`]): what a front end maps to its key.
+        path: param::ParamPath,
         /// The offending value.
         value: Real,
         /// What was expected.
@@ -119,8 +123,10 @@ pub enum SimError {
     /// A non-numeric argument is malformed (e.g. `--shard K/N`); the message names it.
     #[error("invalid {name}: {reason}")]
     InvalidArgument {
-        /// Argument name as the user knows it.
+        /// Argument name as the user knows it (the text of `path`).
         name: String,
+        /// The argument, typed ([`param::ParamPath`]).
+        path: param::ParamPath,
         /// What is wrong and what was expected.
         reason: String,
     },
@@ -133,11 +139,33 @@ pub enum SimError {
 }
 
 impl SimError {
-    pub(crate) fn invalid(name: impl Into<String>, value: Real, reason: &str) -> Self {
+    /// An invalid parameter `path` of value `value`.
+    pub(crate) fn invalid(path: impl Into<param::ParamPath>, value: Real, reason: &str) -> Self {
+        let path = path.into();
         Self::InvalidParameter {
-            name: name.into(),
+            name: path.to_string(),
+            path,
             value,
             reason: reason.to_string(),
+        }
+    }
+
+    /// A malformed argument `path`.
+    pub(crate) fn argument(path: impl Into<param::ParamPath>, reason: impl Into<String>) -> Self {
+        let path = path.into();
+        Self::InvalidArgument {
+            name: path.to_string(),
+            path,
+            reason: reason.into(),
+        }
+    }
+
+    /// The parameter the error concerns, if it is one of [`SimError::InvalidParameter`] or
+    /// [`SimError::InvalidArgument`].
+    pub fn path(&self) -> Option<&param::ParamPath> {
+        match self {
+            Self::InvalidParameter { path, .. } | Self::InvalidArgument { path, .. } => Some(path),
+            _ => None,
         }
     }
 }

@@ -70,12 +70,11 @@ impl super::SimModel {
             return Ok(());
         };
         if self.abutments.iter().any(Option::is_some) {
-            return Err(SimError::InvalidArgument {
-                name: "contact_law".into(),
-                reason: "abutments ([abutments]) are only supported with rigid contact \
-                         ([contact] law = \"rigid\")"
-                    .into(),
-            });
+            return Err(SimError::argument(
+                "contact_law",
+                "abutments ([abutments]) are only supported with rigid contact \
+                         ([contact] law = \"rigid\")",
+            ));
         }
         {
             let v = c.friction_velocity;
@@ -285,7 +284,7 @@ impl super::SimSettings {
             None => "shorten the run or use a larger dt".to_string(),
         };
         Err(SimError::invalid(
-            "history_stride",
+            super::param::Setting::HistoryStride,
             self.history_stride as Real,
             &format!(
                 "a run of {n} steps keeping every {}-th step needs an estimated {:.1} GiB, more \

@@ -110,10 +110,10 @@ impl Problem for BridgeProblem {
         let n = self.model.dofs().len();
         for (name, v) in [("q0", &self.q0), ("u0", &self.u0)] {
             if v.len() != n {
-                return Err(SimError::InvalidArgument {
-                    name: name.into(),
-                    reason: format!("must have {n} entries (3 per segment), found {}", v.len()),
-                });
+                return Err(SimError::argument(
+                    name,
+                    format!("must have {n} entries (3 per segment), found {}", v.len()),
+                ));
             }
             finite(name, v)?;
         }
@@ -166,12 +166,11 @@ impl Problem for SimProblem {
         finite("u0", &self.u0)
     }
     fn with_motion(&self, _: GroundMotion, _: SupportExcitation) -> Result<Self, SimError> {
-        Err(SimError::InvalidArgument {
-            name: "supports".into(),
-            reason: "a two-deck file's supports all move with its ground motion: a motion per \
-                     support needs a bridge file ([[segment]] tables)"
-                .into(),
-        })
+        Err(SimError::argument(
+            "supports",
+            "a two-deck file's supports all move with its ground motion: a motion per \
+                     support needs a bridge file ([[segment]] tables)",
+        ))
     }
     fn with_ground(&self, ground: GroundMotion) -> Self {
         SimProblem {

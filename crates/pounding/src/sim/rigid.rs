@@ -35,33 +35,33 @@ struct ActiveContact {
     face: [Real; 4],
 }
 
-/// Lemke on the leading `N × N` block of `a` (fixed-size kernel).
+/// Lemke on the `N × N` row-major `a` (fixed-size kernel).
 fn lemke_block<const N: usize>(
-    a: &[Vec<Real>],
+    a: &[Real],
     b: &[Real],
     settings: &LemkeSettings,
 ) -> Option<Vec<Real>> {
     let mut aa = [[0.0; N]; N];
     let mut bb = [0.0; N];
     for i in 0..N {
-        aa[i].copy_from_slice(&a[i][..N]);
+        aa[i].copy_from_slice(&a[i * N..(i + 1) * N]);
         bb[i] = b[i];
     }
     let s = lcp::solve_fixed::<N>(&aa, &bb, settings);
     (s.status == LcpStatus::Solved).then(|| s.z.to_vec())
 }
 
-/// Solves the contact LCP of size `3n` for `x = (P_N, P_TR, γ_TL)` (spec §8): the fixed kernels
-/// for `n ≤ 6`, the dynamic one above, enumeration as the fallback.
+/// Solves the contact LCP of size `3n` (`a` row-major) for `x = (P_N, P_TR, γ_TL)` (spec §8):
+/// the fixed kernels for `n ≤ 6`, the dynamic one above, enumeration as the fallback.
 /// Returns `(x, lemke_ok, any_ok)`.
 fn solve_contact_lcp(
     n: usize,
-    a: &[Vec<Real>],
+    a: &[Real],
     b: &[Real],
     settings: &LemkeSettings,
 ) -> (Vec<Real>, bool, bool) {
     let m = 3 * n;
-    let rows = || -> Vec<Real> { (0..m).flat_map(|i| a[i][..m].to_vec()).collect() };
+    let rows = || a.to_vec();
     let sol = match n {
         1 => lemke_block::<3>(a, b, settings),
         2 => lemke_block::<6>(a, b, settings),
@@ -257,23 +257,11 @@ impl RigidStepper {
     fn solve(&mut self, asm: &Assembled, active: &[ActiveContact]) -> (Vec<Real>, bool, bool) {
         let (n, g) = (asm.n, &asm.g);
         let mu = |j: usize| active[j].law.mu();
-        let eps = |i: usize| active[i].law.eps();
         let m = 3 * n;
-        let mut a = vec![vec![0.0; m]; m];
-        let mut b = vec![0.0; m];
-        for i in 0..n {
-            for j in 0..n {
-                a[i][j] = g[i][j] - g[i][n + j] * mu(j);
-                a[i][n + j] = g[i][n + j];
-                a[n + i][j] = g[n + i][j] - g[n + i][n + j] * mu(j);
-                a[n + i][n + j] = g[n + i][n + j];
-            }
-            a[n + i][2 * n + i] = 1.0;
-            a[2 * n + i][i] = 2.0 * mu(i);
-            a[2 * n + i][n + i] = -1.0;
-            b[i] = asm.gam_free[i] + eps(i) * asm.gam_pre[i].min(0.0);
-            b[n + i] = asm.gam_free[n + i];
-        }
+        // the one assembly of the impact LCP (`impact.rs`), on the step's free velocities
+        let laws: Vec<ImpactLaw> = active.iter().map(|a| a.law).collect();
+        let g_rows: Vec<Real> = g.iter().flatten().copied().collect();
+        let (a, b) = crate::impact::impact_lcp_free(&g_rows, &laws, &asm.gam_pre, &asm.gam_free);
         // many contacts at once: the block Gauss–Seidel, verified (Lemke's dense tableau is
         // O(n²) per pivot and fails on the degenerate problems of permanent contact)
         if n > MAX_FIXED_CONTACTS {
@@ -325,14 +313,14 @@ impl RigidStepper {
         mu: &dyn Fn(usize) -> Real,
     ) -> (Vec<Real>, bool, bool) {
         let m = 3 * n;
-        let mut a0 = vec![vec![0.0; m]; m];
+        let mut a0 = vec![0.0; m * m];
         let mut b0 = vec![0.0; m];
         for i in 0..n {
-            a0[i][..n].copy_from_slice(&g[i][..n]);
+            a0[i * m..i * m + n].copy_from_slice(&g[i][..n]);
             b0[i] = b[i];
             // decouple the dummy rows: z = 0, w = 1
-            a0[n + i][n + i] = 1.0;
-            a0[2 * n + i][2 * n + i] = 1.0;
+            a0[(n + i) * m + n + i] = 1.0;
+            a0[(2 * n + i) * m + 2 * n + i] = 1.0;
             b0[n + i] = 1.0;
             b0[2 * n + i] = 1.0;
         }
@@ -443,13 +431,9 @@ impl RigidStepper {
 impl RigidStepper {
     /// The impulses `P = (P_N, P_T)` of the LCP solution `z`, added to `u` as `Ŵ⁻¹ W P`.
     fn impulses(asm: &Assembled, active: &[ActiveContact], z: &[Real], u: &mut State) -> Vec<Real> {
-        let (n, nc) = (active.len(), 2 * active.len());
-        let mut p = vec![0.0; nc];
-        for i in 0..n {
-            p[i] = z[i];
-            p[n + i] = z[n + i] - active[i].law.mu() * z[i];
-        }
-        for i in 0..nc {
+        let laws: Vec<ImpactLaw> = active.iter().map(|a| a.law).collect();
+        let p = crate::impact::impulses(z, &laws);
+        for i in 0..p.len() {
             *u += &asm.wiw[i] * p[i];
         }
         p

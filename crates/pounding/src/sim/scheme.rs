@@ -119,10 +119,9 @@ impl Scheme {
             // which has the same bits for θ = ½ (scaling by powers of two is exact).
             let what = mm + cc * (h * th) + kk * (h * h * th * th);
             // LU, as the dense inverse of the block-diagonal matrix (not the 3 × 3 cofactor form)
-            let winv = what
-                .lu()
-                .try_inverse()
-                .ok_or_else(|| SimError::invalid("dt", h, "iteration matrix is singular"))?;
+            let winv = what.lu().try_inverse().ok_or_else(|| {
+                SimError::invalid(super::param::Setting::Dt, h, "iteration matrix is singular")
+            })?;
             // u_free = u + A_u u + A_q q + B_g ā,  B_g = −h Ŵ⁻¹ M r
             let mut mr = Matrix3x2::zeros();
             mr[(0, 0)] = mm[(0, 0)];

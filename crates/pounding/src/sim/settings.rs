@@ -2,6 +2,7 @@
 //! ([`Progress`]).
 
 use super::SimError;
+use super::param::Setting;
 use crate::lcp::LemkeSettings;
 use crate::math::Real;
 
@@ -29,11 +30,11 @@ pub struct SimSettings {
 impl Default for SimSettings {
     fn default() -> Self {
         Self {
-            dt: 1e-3,
+            dt: super::defaults::DT,
             duration: None,
-            theta: 0.5,
-            impact_velocity: 1e-3,
-            history_stride: 1,
+            theta: super::defaults::THETA,
+            impact_velocity: super::defaults::IMPACT_VELOCITY,
+            history_stride: super::defaults::HISTORY_STRIDE,
             lemke: LemkeSettings::default(),
             progress: Progress::default(),
         }
@@ -81,15 +82,29 @@ impl PartialEq for Progress {
 }
 
 impl SimSettings {
+    /// The one check of a time step `dt`: finite and `> 0` (the error's path is
+    /// [`Setting::Dt`], its message `invalid dt = …: must be finite and > 0`). Every entry that
+    /// takes a step calls it: [`SimSettings::validate`] (so [`super::simulate`], a scenario's
+    /// `[time] dt` and `simulate --dt`) and `compare --dt` ([`super::compare::CompareFlags`]).
+    pub fn check_dt(dt: Real) -> Result<(), SimError> {
+        if dt.is_finite() && dt > 0.0 {
+            Ok(())
+        } else {
+            Err(SimError::invalid(Setting::Dt, dt, "must be finite and > 0"))
+        }
+    }
+
     /// Validates the settings (errors name the parameter).
     pub fn validate(&self) -> Result<(), SimError> {
-        if !(self.dt.is_finite() && self.dt > 0.0) {
-            return Err(SimError::invalid("dt", self.dt, "must be finite and > 0"));
-        }
+        Self::check_dt(self.dt)?;
         if let Some(d) = self.duration
             && !(d.is_finite() && d > 0.0)
         {
-            return Err(SimError::invalid("duration", d, "must be finite and > 0"));
+            return Err(SimError::invalid(
+                Setting::Duration,
+                d,
+                "must be finite and > 0",
+            ));
         }
         if !(self.theta.is_finite() && (0.5..=1.0).contains(&self.theta)) {
             return Err(SimError::invalid(
@@ -106,7 +121,11 @@ impl SimSettings {
             ));
         }
         if self.history_stride == 0 {
-            return Err(SimError::invalid("history_stride", 0.0, "must be >= 1"));
+            return Err(SimError::invalid(
+                Setting::HistoryStride,
+                0.0,
+                "must be >= 1",
+            ));
         }
         Ok(())
     }
@@ -117,7 +136,7 @@ impl SimSettings {
         let n = ((duration / self.dt) - 1e-9).ceil().max(1.0);
         if n.is_nan() || n > MAX_STEPS as Real {
             return Err(SimError::invalid(
-                "dt",
+                Setting::Dt,
                 self.dt,
                 &format!(
                     "duration / dt = {} s / {} s = {} steps is more than the limit {MAX_STEPS}",

@@ -62,12 +62,11 @@ impl Support {
 pub(crate) fn check_uniform(supports: &[Support]) -> Result<(), SimError> {
     match supports.iter().find(|s| s.motion != SupportMotion::Ground) {
         None => Ok(()),
-        Some(s) => Err(SimError::InvalidArgument {
-            name: format!("support {}", s.name),
-            reason: "has a motion of its own; only a ground motion shared by every support is \
-                     supported"
-                .into(),
-        }),
+        Some(s) => Err(SimError::argument(
+            format!("support {}", s.name),
+            "has a motion of its own; only a ground motion shared by every support is \
+                     supported",
+        )),
     }
 }
 

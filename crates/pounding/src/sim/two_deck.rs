@@ -6,6 +6,7 @@
 use super::dofs;
 use super::model::{self, DeckBody, LinearSystem};
 use super::options::{DampingModel, JointContact};
+use super::param::{ParamPath, TwoDeckParam};
 use super::{Bearing, SimError};
 use crate::geometry::ContactCase;
 use crate::ground_motion::GroundMotion;
@@ -218,18 +219,29 @@ impl SimModel {
     /// ρ = 2500 kg/m³ (1309 t per deck) for both decks; 4 corner bearings of 2.02e7 N/m (deck 1)
     /// and 8.97e6 N/m (deck 2); ζ = 5 %; g = 0.05 m; seat 0.4 m; μ = 0.5; ε_N = 0.5.
     pub fn default_bridge() -> Self {
+        use super::defaults as d;
         let deck = crate::shape::Deck {
-            radius: 100.0,
-            angle: 60f64.to_radians(),
-            width: 10.0,
-            thickness: 0.5,
-            density: 2500.0,
+            radius: d::RADIUS,
+            angle: d::ANGLE_DEG.to_radians(),
+            width: d::WIDTH,
+            thickness: d::THICKNESS,
+            density: d::DENSITY,
         };
         let arr = SArrangement {
             deck1: deck,
             deck2: deck,
         };
-        Self::with_corner_bearings(arr, 0.05, 2.02e7, 8.97e6, 0.05, 0.5, 0.5, 0.4)
+        let [k1, k2] = d::BEARING_STIFFNESS;
+        Self::with_corner_bearings(
+            arr,
+            d::GAP,
+            k1,
+            k2,
+            d::DAMPING_RATIO,
+            d::MU,
+            d::EPS_N,
+            d::SEAT_LENGTH,
+        )
     }
 
     /// Validates every parameter (errors name it).
@@ -242,7 +254,7 @@ impl SimModel {
                 let (w1, w2) = (self.arrangement.deck1.width, self.arrangement.deck2.width);
                 if w1 != w2 {
                     return Err(SimError::invalid(
-                        "width (deck 2)",
+                        ParamPath::deck(TwoDeckParam::Width, 2),
                         w2,
                         &format!("both decks must have the same width (deck 1: {w1})"),
                     ));
@@ -256,7 +268,7 @@ impl SimModel {
                 let (h1, h2) = (b[0].half_face, b[1].half_face);
                 if (h1 - h2).abs() > 1e-9 * h1.max(h2) {
                     return Err(SimError::invalid(
-                        "joint face length (deck 2)",
+                        ParamPath::deck(TwoDeckParam::JointFace, 2),
                         2.0 * h2,
                         &format!(
                             "the joint faces must have the same length to meet face to face \
@@ -271,43 +283,53 @@ impl SimModel {
             if let Some(a) = a {
                 if !(a.gap.is_finite() && a.gap >= 0.0) {
                     return Err(SimError::invalid(
-                        format!("abutment gap (deck {})", j + 1),
+                        ParamPath::deck(TwoDeckParam::AbutmentGap, j as u8 + 1),
                         a.gap,
                         "must be finite and >= 0",
                     ));
                 }
                 if !(a.seat_length.is_finite() && a.seat_length > 0.0) {
                     return Err(SimError::invalid(
-                        format!("abutment seat_length (deck {})", j + 1),
+                        ParamPath::deck(TwoDeckParam::AbutmentSeat, j as u8 + 1),
                         a.seat_length,
                         "must be finite and > 0",
                     ));
                 }
             }
         }
-        let chk = |name: &str, v: Real, ok: bool, reason: &str| {
+        let chk = |name: ParamPath, v: Real, ok: bool, reason: &str| {
             if ok && v.is_finite() {
                 Ok(())
             } else {
                 Err(SimError::invalid(name, v, reason))
             }
         };
-        chk("gap", self.gap, self.gap >= 0.0, "must be >= 0")?;
         chk(
-            "damping_ratio",
+            ParamPath::pair(TwoDeckParam::Gap),
+            self.gap,
+            self.gap >= 0.0,
+            "must be >= 0",
+        )?;
+        chk(
+            ParamPath::pair(TwoDeckParam::DampingRatio),
             self.damping_ratio,
             (0.0..1.0).contains(&self.damping_ratio),
             "must lie in [0, 1)",
         )?;
-        chk("mu", self.friction, self.friction >= 0.0, "must be >= 0")?;
         chk(
-            "eps_n",
+            ParamPath::pair(TwoDeckParam::Mu),
+            self.friction,
+            self.friction >= 0.0,
+            "must be >= 0",
+        )?;
+        chk(
+            ParamPath::pair(TwoDeckParam::EpsN),
             self.restitution,
             (0.0..=1.0).contains(&self.restitution),
             "must lie in [0, 1]",
         )?;
         chk(
-            "seat_length",
+            ParamPath::pair(TwoDeckParam::SeatLength),
             self.seat_length,
             self.seat_length > 0.0,
             "must be > 0",
@@ -315,7 +337,11 @@ impl SimModel {
         for (j, bs) in [(1, &self.bearings1), (2, &self.bearings2)] {
             for (i, b) in bs.iter().enumerate() {
                 chk(
-                    &format!("bearing stiffness (deck {j}, bearing {})", i + 1),
+                    ParamPath::TwoDeck {
+                        param: TwoDeckParam::BearingStiffness,
+                        deck: Some(j),
+                        bearing: Some(i + 1),
+                    },
                     b.stiffness,
                     b.stiffness >= 0.0,
                     "must be >= 0",
@@ -324,7 +350,11 @@ impl SimModel {
                 let kr2 = b.stiffness * (b.point.x * b.point.x + b.point.y * b.point.y);
                 for v in [b.point.x, b.point.y] {
                     chk(
-                        &format!("bearing point (deck {j}, bearing {})", i + 1),
+                        ParamPath::TwoDeck {
+                            param: TwoDeckParam::BearingPoint,
+                            deck: Some(j),
+                            bearing: Some(i + 1),
+                        },
                         v,
                         kr2.is_finite() && v * v < 1e100,
                         "must be finite, with |coordinate| < 1e50 m and k r² finite",
@@ -366,7 +396,7 @@ impl SimModel {
             let om = model::deck_frequencies(&mp, &kj);
             if om.iter().any(|w| !w.is_finite()) {
                 return Err(SimError::invalid(
-                    format!("mass (deck {})", j + 1),
+                    ParamPath::deck(TwoDeckParam::Mass, j as u8 + 1),
                     mp.mass,
                     "the bearing stiffness over this mass (or inertia) overflows; use physical magnitudes",
                 ));
@@ -374,7 +404,7 @@ impl SimModel {
             let (a0, a1) =
                 model::rayleigh_coefficients(self.damping_ratio, &om).ok_or_else(|| {
                     SimError::invalid(
-                        "damping_ratio",
+                        ParamPath::pair(TwoDeckParam::DampingRatio),
                         self.damping_ratio,
                         &format!(
                             "deck {} has no bearing stiffness, so Rayleigh damping is undefined",

@@ -88,13 +88,7 @@ impl Cell {
 /// (the grids are `start + i·step`, so ±θ may differ from an exact mirror by rounding):
 /// `|θ1 − θ2| ≤ tol` → parallel faces, `|θ1 + θ2| ≤ tol` → corner meets corner.
 pub fn grid_degeneracy(theta1_deg: Real, theta2_deg: Real, tol_deg: Real) -> Option<Degeneracy> {
-    if (theta1_deg - theta2_deg).abs() <= tol_deg {
-        Some(Degeneracy::ParallelFaces)
-    } else if (theta1_deg + theta2_deg).abs() <= tol_deg {
-        Some(Degeneracy::CornerCorner)
-    } else {
-        None
-    }
+    crate::geometry::degeneracy_within(theta1_deg, theta2_deg, tol_deg)
 }
 
 /// Computes one cell (angles in degrees). Degenerate grid points are detected with

@@ -11,7 +11,7 @@ use super::cell::{Cell, compute_cell_in};
 use super::scenario::Scenario;
 use super::scenario::StudyShape;
 use crate::analytic::ImpactLaw;
-use crate::geometry::{ContactCase, GeometryError};
+use crate::geometry::{ContactCase, GeometryError, ShapeParam};
 use crate::math::Real;
 use crate::pair::{DeckPair, SArrangement};
 use crate::shape::{Deck, DeckShape, SkewedDeck, StraightDeck};
@@ -207,20 +207,13 @@ impl Scenario {
             shape => {
                 let (w, t, rho) = (self.width, self.thickness, self.density);
                 let deck = |l: Real, i: usize| -> Result<DeckShape, StudyError> {
+                    // deck i's axis length is `L{i}`; the other names stay the study's
                     let named = |e: GeometryError| match e {
                         GeometryError::InvalidParameter {
-                            name,
-                            value,
-                            reason,
-                        } => GeometryError::InvalidParameter {
-                            name: if name == "length" {
-                                format!("L{i}")
-                            } else {
-                                name
-                            },
-                            value,
-                            reason,
-                        },
+                            param: ShapeParam::Length,
+                            ..
+                        } => e.for_deck(i),
+                        e => e,
                     };
                     Ok(if shape == StudyShape::Straight {
                         DeckShape::Straight(StraightDeck::new(l, w, t, rho).map_err(named)?)

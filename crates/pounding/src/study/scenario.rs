@@ -940,6 +940,7 @@ fn check_deck_mass_properties(
             name,
             value,
             reason,
+            ..
         })) = results.into_iter().find(Result::is_err)
         {
             let (key, span) = key_of(&name, j);

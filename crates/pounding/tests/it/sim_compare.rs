@@ -126,7 +126,12 @@ fn flags_are_checked_first_with_the_cli_messages() {
     assert_eq!(err(flags(&[])).to_string(), "--laws is empty");
     let mut f = flags(&["rigid"]);
     f.dt = Some(0.0);
-    assert_eq!(err(f).to_string(), "invalid --dt 0: must be finite and > 0");
+    // the one check of a step, said as `simulate --dt` says it
+    assert_eq!(
+        err(f).to_string(),
+        "invalid dt = 0: must be finite and > 0 — set by --dt (command line, in place of `[time] \
+         dt`)"
+    );
     // a two-deck scenario with abutments refuses a compliance law: the law is named
     let sc = Scenario::from_toml("[abutments]\ngap1 = 0.05\ngap2 = 0.05\n", "ab.toml").unwrap();
     let e = Comparison::prepare(sc, &flags(&["rigid", "kelvin"])).unwrap_err();

@@ -278,3 +278,50 @@ fn writers_rows_match_their_headers() {
         format!("{BATCH_HEADER}\n")
     );
 }
+
+/// Errors carry typed parameter paths (the message's name is their text), and the scenario maps
+/// them to the keys that set them, wherever the file writes the key (a dotted key included).
+#[test]
+fn typed_paths_name_the_keys_however_the_file_writes_them() {
+    use pounding::sim::param::{ParamPath, TwoDeckParam};
+    use pounding::sim::{SimError, SimModel};
+    let mut m = SimModel::default_bridge();
+    m.bearings2[0].stiffness = -1.0;
+    let e = m.validate().unwrap_err();
+    let path = ParamPath::TwoDeck {
+        param: TwoDeckParam::BearingStiffness,
+        deck: Some(2),
+        bearing: Some(1),
+    };
+    assert_eq!(e.path(), Some(&path));
+    let SimError::InvalidParameter { name, .. } = &e else {
+        panic!("{e:?}")
+    };
+    assert_eq!(name, "bearing stiffness (deck 2, bearing 1)");
+    assert_eq!(path.to_string(), *name);
+    // the same key written three ways: a [section] line, a dotted key, an inline table
+    for (text, line) in [
+        ("[bearings]\nstiffness2 = -1\n", 2),
+        ("# bearings\nbearings.stiffness2 = -1\n", 2),
+        ("\n\nbearings = { stiffness2 = -1 }\n", 3),
+    ] {
+        let e = err(text);
+        let ScenarioError::Invalid { at, .. } = &e else {
+            panic!("{text}: {e:?}")
+        };
+        assert_eq!(
+            at[0].key,
+            ParamKey::of_deck(Section::Bearings, "stiffness2", 2)
+        );
+        assert_eq!(at[0].line, Some(line), "{text}: {e}");
+        assert!(e.to_string().contains(&format!("(t.toml:{line})")), "{e}");
+    }
+    // a time step is checked once, and `compare --dt` says it as `simulate --dt` does
+    let flag = Scenario::check_dt_flag(0.0).unwrap_err().to_string();
+    let sim = Scenario::default()
+        .with_dt(0.0)
+        .build()
+        .unwrap_err()
+        .to_string();
+    assert_eq!(flag, sim);
+}

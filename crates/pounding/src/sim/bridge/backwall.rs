@@ -98,12 +98,11 @@ impl BridgeModel {
                 ));
             }
             if w.backfill.is_none() && w.piles.is_none() {
-                return Err(SimError::InvalidArgument {
-                    name: key("mass"),
-                    reason: "a backwall with neither backfill nor piles behind it is free to fly \
-                             off: give its backfill or its piles"
-                        .into(),
-                });
+                return Err(SimError::argument(
+                    key("mass"),
+                    "a backwall with neither backfill nor piles behind it is free to fly \
+                             off: give its backfill or its piles",
+                ));
             }
         }
         Ok(())

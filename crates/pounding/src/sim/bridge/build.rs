@@ -7,7 +7,7 @@ use super::*;
 
 impl BridgeModel {
     /// The contact laws of the joints and the present abutments, in that order.
-    pub(crate) fn contacts(&self) -> impl Iterator<Item = (String, &JointContact)> {
+    pub(crate) fn contacts(&self) -> impl Iterator<Item = (BridgeKey, &JointContact)> {
         let joints = self
             .joints
             .iter()

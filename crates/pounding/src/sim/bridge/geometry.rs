@@ -42,7 +42,7 @@ impl BridgeModel {
             if dt * w > 1.0 {
                 let total: Real = j.restrainers.iter().map(|r| r.k).sum();
                 return Err(SimError::invalid(
-                    "dt",
+                    crate::sim::param::Setting::Dt,
                     dt,
                     &format!(
                         "the restrainer of {} (k = {} N/m in total between segments of {} and {} \
@@ -81,10 +81,10 @@ impl BridgeModel {
         let points = self.bearing_points();
         for (i, pts) in points.iter().enumerate() {
             if let Some(b) = pts.iter().position(|p| !on_polygon(*p, &outlines[i])) {
-                return Err(SimError::InvalidArgument {
-                    name: seg_key(i, "bearing_points"),
-                    reason: format!("bearing {} lies outside segment[{i}]", b + 1),
-                });
+                return Err(SimError::argument(
+                    seg_key(i, "bearing_points"),
+                    format!("bearing {} lies outside segment[{i}]", b + 1),
+                ));
             }
         }
         for (k, j) in self.joints.iter().enumerate() {
@@ -230,13 +230,13 @@ impl BridgeModel {
                     continue;
                 }
                 if polygons_overlap(&outlines[i], &outlines[j]) {
-                    return Err(SimError::InvalidArgument {
-                        name: seg_key(j, "shape"),
-                        reason: format!(
+                    return Err(SimError::argument(
+                        seg_key(j, "shape"),
+                        format!(
                             "segment[{j}] overlaps segment[{i}] in plan: the bridge closes on \
                              itself (check the curve angles, radii and curve directions)"
                         ),
-                    });
+                    ));
                 }
             }
         }

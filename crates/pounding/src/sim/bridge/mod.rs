@@ -46,6 +46,7 @@ pub use super::solution::{
 use super::contact::JointGeom;
 use super::dofs::Dofs;
 use super::model::{EndFace, SegmentBody, deck_frequencies, rayleigh_coefficients};
+use super::param::{BridgeKey, BridgeTable, ParamPath};
 use super::scheme::BodySystem;
 use super::support::{Attachment, Support};
 use super::view::{AbutmentFace, Bridge, SeatEnd, SeatSupport};
@@ -285,17 +286,22 @@ pub struct BridgeModel {
 
 /// `segment[i].key`, `joint[k].key`, `abutment.start.key` (0-based indices, as in the arrays of
 /// a scenario).
-fn seg_key(i: usize, key: &str) -> String {
-    format!("segment[{i}].{key}")
+fn seg_key(i: usize, key: &str) -> BridgeKey {
+    BridgeKey::new(BridgeTable::Segment(i), key)
 }
-pub(super) fn joint_key(k: usize, key: &str) -> String {
-    format!("joint[{k}].{key}")
+pub(super) fn joint_key(k: usize, key: &str) -> BridgeKey {
+    BridgeKey::new(BridgeTable::Joint(k), key)
 }
-pub(super) fn abut_key(side: usize, key: &str) -> String {
-    format!("abutment.{}.{key}", ABUTMENT_SIDES[side])
+pub(super) fn abut_key(side: usize, key: &str) -> BridgeKey {
+    BridgeKey::new(BridgeTable::Abutment(side), key)
 }
 
-pub(super) fn check(name: String, v: Real, ok: bool, reason: &str) -> Result<(), SimError> {
+pub(super) fn check(
+    name: impl Into<ParamPath>,
+    v: Real,
+    ok: bool,
+    reason: &str,
+) -> Result<(), SimError> {
     if ok && v.is_finite() {
         Ok(())
     } else {
@@ -309,20 +315,20 @@ impl BridgeModel {
     pub fn validate(&self) -> Result<(), SimError> {
         let n = self.segments.len();
         if n == 0 {
-            return Err(SimError::InvalidArgument {
-                name: "segment".into(),
-                reason: "a bridge needs at least one segment".into(),
-            });
+            return Err(SimError::argument(
+                "segment",
+                "a bridge needs at least one segment",
+            ));
         }
         if self.joints.len() + 1 != n {
-            return Err(SimError::InvalidArgument {
-                name: "joint".into(),
-                reason: format!(
+            return Err(SimError::argument(
+                "joint",
+                format!(
                     "{n} segments need {} joints, found {}",
                     n - 1,
                     self.joints.len()
                 ),
-            });
+            ));
         }
         self.validate_segments()?;
         self.validate_joints()?;
@@ -330,13 +336,13 @@ impl BridgeModel {
         self.validate_backwalls()?;
         self.validate_piers()?;
         check(
-            "outer_seat_length".into(),
+            "outer_seat_length",
             self.outer_seat_length,
             self.outer_seat_length > 0.0,
             "must be > 0",
         )?;
         check(
-            "damping_ratio".into(),
+            "damping_ratio",
             self.damping_ratio,
             (0.0..1.0).contains(&self.damping_ratio),
             "must lie in [0, 1)",
@@ -350,9 +356,8 @@ impl BridgeModel {
     /// Shapes, bearings and yield of every segment.
     fn validate_segments(&self) -> Result<(), SimError> {
         for (i, s) in self.segments.iter().enumerate() {
-            s.shape.validate().map_err(|e| SimError::InvalidArgument {
-                name: seg_key(i, "shape"),
-                reason: format!("invalid shape: {e}"),
+            s.shape.validate().map_err(|e| {
+                SimError::argument(seg_key(i, "shape"), format!("invalid shape: {e}"))
             })?;
             for (b, br) in s.bearings.iter().enumerate() {
                 let kr2 = br.stiffness * br.point.norm_squared();
@@ -420,9 +425,11 @@ impl BridgeModel {
                     r.fy,
                     crate::element::restrainer::SlackGrowth::Permanent,
                 )
-                .map_err(|e| SimError::InvalidArgument {
-                    name: joint_key(k, &format!("restrainer_{}", e.key())),
-                    reason: e.to_string(),
+                .map_err(|e| {
+                    SimError::argument(
+                        joint_key(k, &format!("restrainer_{}", e.key())),
+                        e.to_string(),
+                    )
                 })?;
             }
             check(joint_key(k, "gap"), j.gap, j.gap >= 0.0, "must be >= 0")?;
@@ -455,9 +462,9 @@ impl BridgeModel {
                 a.shape.end_face(DeckEnd::Far).length()
             };
             if (wa - wb).abs() > 1e-9 * wa.max(wb) {
-                return Err(SimError::InvalidArgument {
-                    name: seg_key(k + 1, "width"),
-                    reason: format!(
+                return Err(SimError::argument(
+                    seg_key(k + 1, "width"),
+                    format!(
                         "segment[{}] meets segment[{k}] at joint[{k}] with a face {} m long, but \
                          segment[{k}]'s face there is {} m long: the two faces of a joint must have \
                          the same length (a skewed segment's end faces are width / cos(skew) long; \
@@ -466,7 +473,7 @@ impl BridgeModel {
                         crate::output::float_token(wb),
                         crate::output::float_token(wa)
                     ),
-                });
+                ));
             }
         }
         Ok(())

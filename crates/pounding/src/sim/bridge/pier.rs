@@ -62,8 +62,8 @@ pub struct Pier {
 }
 
 /// `pier[p].key`.
-pub(crate) fn pier_key(p: usize, key: &str) -> String {
-    format!("pier[{p}].{key}")
+pub(crate) fn pier_key(p: usize, key: &str) -> BridgeKey {
+    BridgeKey::new(BridgeTable::Pier(p), key)
 }
 
 impl BridgeModel {
@@ -73,21 +73,21 @@ impl BridgeModel {
         for (p, pier) in self.piers.iter().enumerate() {
             let j = pier.joint;
             if j >= self.joints.len() {
-                return Err(SimError::InvalidArgument {
-                    name: pier_key(p, "joint"),
-                    reason: format!(
+                return Err(SimError::argument(
+                    pier_key(p, "joint"),
+                    format!(
                         "there is no joint {} (the bridge has {}); a pier carries a joint between \
                          two segments",
                         j + 1,
                         self.joints.len()
                     ),
-                });
+                ));
             }
             if let Some(q) = self.piers[..p].iter().position(|o| o.joint == j) {
-                return Err(SimError::InvalidArgument {
-                    name: pier_key(p, "joint"),
-                    reason: format!("joint {} already has a pier (pier[{q}])", j + 1),
-                });
+                return Err(SimError::argument(
+                    pier_key(p, "joint"),
+                    format!("joint {} already has a pier (pier[{q}])", j + 1),
+                ));
             }
             let m = pier.cap_mass;
             check(
@@ -105,12 +105,8 @@ impl BridgeModel {
             )?;
             if let Some(fy) = c.fy {
                 check(pier_key(p, "fy"), fy, fy > 0.0, "must be finite and > 0")?;
-                crate::element::bearing::BilinearBearing::new(c.k0, fy, c.b).map_err(|e| {
-                    SimError::InvalidArgument {
-                        name: pier_key(p, e.key()),
-                        reason: e.to_string(),
-                    }
-                })?;
+                crate::element::bearing::BilinearBearing::new(c.k0, fy, c.b)
+                    .map_err(|e| SimError::argument(pier_key(p, e.key()), e.to_string()))?;
             }
             check(
                 pier_key(p, "b"),
@@ -139,14 +135,14 @@ impl BridgeModel {
         for (p, pier) in self.piers.iter().enumerate() {
             let carried = on.iter().flatten().any(|b| *b == Some(p));
             if !carried {
-                return Err(SimError::InvalidArgument {
-                    name: pier_key(p, "joint"),
-                    reason: format!(
+                return Err(SimError::argument(
+                    pier_key(p, "joint"),
+                    format!(
                         "no bearing sits on this pier: give the segments at joint {} bearings \
                          near that joint",
                         pier.joint + 1
                     ),
-                });
+                ));
             }
         }
         Ok(())
@@ -179,14 +175,14 @@ impl BridgeModel {
                 let ds = (p - b.start.mid).dot(&b.start.inward).abs();
                 let de = (p - b.end.mid).dot(&b.end.inward).abs();
                 if (ds - de).abs() <= 1e-9 * (ds + de) {
-                    return Err(SimError::InvalidArgument {
-                        name: seg_key(i, "bearing_points"),
-                        reason: format!(
+                    return Err(SimError::argument(
+                        seg_key(i, "bearing_points"),
+                        format!(
                             "bearing {} is as far from the segment's start as from its end, so \
                              it belongs to neither end's pier; place it nearer one end",
                             k + 1
                         ),
-                    });
+                    ));
                 }
                 seg.push(if ds < de { ends[0] } else { ends[1] });
             }

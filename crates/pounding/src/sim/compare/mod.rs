@@ -19,7 +19,6 @@ use super::output::{InputWarning, PeakEstimate, SiteKey, input_warnings, warning
 use super::scenario::{Scenario, ScenarioError, Setup};
 use super::{Problem, Progress, SimStatus};
 use crate::math::Real;
-use crate::output::float_token;
 use crate::sim::bridge::BridgeSolution;
 use std::collections::BTreeMap;
 use std::time::Instant;
@@ -46,9 +45,6 @@ pub enum CompareError {
     /// No law.
     #[error("--laws is empty")]
     Empty,
-    /// A time step that is not finite and positive.
-    #[error("invalid --dt {}: must be finite and > 0", float_token(*.0))]
-    Dt(Real),
     /// The scenario (a `[contact]` key no compared law reads, …).
     #[error(transparent)]
     Scenario(#[from] ScenarioError),
@@ -121,10 +117,8 @@ impl CompareFlags {
         if laws.is_empty() {
             return Err(CompareError::Empty);
         }
-        if let Some(dt) = self.dt
-            && !(dt.is_finite() && dt > 0.0)
-        {
-            return Err(CompareError::Dt(dt));
+        if let Some(dt) = self.dt {
+            Scenario::check_dt_flag(dt)?;
         }
         Ok(laws)
     }

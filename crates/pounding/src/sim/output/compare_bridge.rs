@@ -9,7 +9,7 @@
 //! joint's opening at an abutment, the figures of a skipped law. Numbers are [`float_token`]s.
 
 use super::batch::field;
-use super::compare::{ESTIMATE_NOTE, estimate_cell};
+use super::compare::{COMPARE_OUTPUTS, ESTIMATE_NOTE, compare_csv, compare_table, estimate_cell};
 use super::{PeakEstimate, SiteKey};
 use crate::math::Real;
 use crate::output::{fixed, float_token};
@@ -26,6 +26,53 @@ pub const BRIDGE_COMPARE_OUTPUTS: &[&str] = &[
     "compare_sites.csv",
     "joint_gap.png",
 ];
+
+/// A CSV table of `pounding compare`: its file name, its title in `report.html` and its bytes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CompareTable {
+    /// The file name (`compare.csv`, `compare_sites.csv`).
+    pub name: &'static str,
+    /// The table's title in the report.
+    pub title: &'static str,
+    /// The CSV text.
+    pub csv: String,
+}
+
+/// The one writer of a comparison's tables, either form: its CSV tables in the order written
+/// and the readable table printed on stdout. A bridge has `compare.csv` (its own columns,
+/// [`BRIDGE_COMPARE_HEADER`]) and `compare_sites.csv`; the two-deck preset keeps its
+/// `compare.csv` columns ([`super::COMPARE_HEADER`]).
+pub fn compare_tables(runs: &[LawRun], bridge: bool) -> (Vec<CompareTable>, String) {
+    let per_law = |csv| CompareTable {
+        name: "compare.csv",
+        title: "Per law (compare.csv)",
+        csv,
+    };
+    if !bridge {
+        return (vec![per_law(compare_csv(runs))], compare_table(runs));
+    }
+    let sites = CompareTable {
+        name: "compare_sites.csv",
+        title: "Per joint and abutment (compare_sites.csv)",
+        csv: bridge_compare_sites_csv(runs),
+    };
+    (
+        vec![per_law(bridge_compare_csv(runs)), sites],
+        bridge_compare_table(runs),
+    )
+}
+
+/// Every file a comparison of either form may have written, cleared before a new one writes.
+pub fn compare_outputs() -> impl Iterator<Item = &'static str> {
+    BRIDGE_COMPARE_OUTPUTS
+        .iter()
+        .chain(
+            COMPARE_OUTPUTS
+                .iter()
+                .filter(|f| !BRIDGE_COMPARE_OUTPUTS.contains(f)),
+        )
+        .copied()
+}
 
 /// Columns of the bridge `compare.csv`: per law its status (`Completed`, … or `skipped`), steps,
 /// impacts of the whole bridge, the largest contact force computed by a compliance law over all

@@ -4,17 +4,18 @@
 use super::contact::{FileKeys, build_contact};
 use super::error::{ParamKey, ScenarioError, Section};
 pub(super) use super::ground::build_ground;
+use super::model_keys::scaled_mass_error;
+pub(super) use super::model_keys::sim_error;
 use super::sections::{DecksSec, Raw};
 use super::{Scenario, SimSetup, Src};
-use crate::geometry::GeometryError;
-use crate::ground_motion::{GroundMotion, GroundMotionError};
+use crate::ground_motion::GroundMotion;
 use crate::math::{Real, Vector};
 use crate::output::float_token;
 use crate::pair::SArrangement;
 use crate::shape::Deck;
 use crate::shape::{DeckShape, SkewedDeck, StraightDeck};
 use crate::sim::{
-    Bearing, DampingModel, JointContact, SimAbutment, SimError, SimModel, SimProblem, SimSettings,
+    Bearing, DampingModel, JointContact, SimAbutment, SimModel, SimProblem, SimSettings,
 };
 
 const fn decks(key: &'static str) -> ParamKey {
@@ -22,64 +23,6 @@ const fn decks(key: &'static str) -> ParamKey {
 }
 pub(super) const fn time(key: &'static str) -> ParamKey {
     ParamKey::new(Section::Time, key)
-}
-
-/// A library error located at the scenario key that sets the parameter it names.
-pub(super) fn sim_error(src: &Src, e: SimError) -> ScenarioError {
-    let name = match &e {
-        SimError::InvalidParameter { name, .. } => Some(name.as_str()),
-        SimError::Geometry(GeometryError::InvalidParameter { name, .. }) => Some(name.as_str()),
-        SimError::GroundMotion(GroundMotionError::InvalidParameter { name, .. }) => {
-            Some(name.as_str())
-        }
-        _ => None,
-    };
-    // A deck's mass is set by `massJ` when given, else derived from the geometry and density.
-    let key = match name {
-        Some("mass (deck 1)") => Some(mass_key(src, 1)),
-        Some("mass (deck 2)") => Some(mass_key(src, 2)),
-        Some(n) => ParamKey::of_model_parameter(n),
-        None => None,
-    };
-    match key {
-        Some(key) => src.invalid(e.to_string(), key),
-        None => ScenarioError::Model(Box::new(e)),
-    }
-}
-
-/// [`sim_error`] for the model after `massJ` scaled the densities: a density that is no longer a
-/// normal number comes from the mass given, not from `density`.
-fn scaled_mass_error(src: &Src, e: SimError) -> ScenarioError {
-    let mut err = sim_error(src, e);
-    if let ScenarioError::Invalid { at, .. } = &mut err
-        && at.len() == 1
-        && at[0].key.section == Section::Decks
-        && at[0].key.key == "density"
-    {
-        let given: Vec<_> = [1, 2]
-            .into_iter()
-            .map(|j| ParamKey::of_deck(Section::Decks, if j == 1 { "mass1" } else { "mass2" }, j))
-            .filter(|&k| src.is_set(k))
-            .map(|k| src.at(k))
-            .collect();
-        if !given.is_empty() {
-            *at = given;
-        }
-    }
-    err
-}
-
-fn mass_key(src: &Src, deck: u8) -> ParamKey {
-    let key = ParamKey::of_deck(
-        Section::Decks,
-        if deck == 1 { "mass1" } else { "mass2" },
-        deck,
-    );
-    if src.is_set(key) {
-        key
-    } else {
-        ParamKey::of_deck(Section::Decks, "density", deck)
-    }
 }
 
 /// The deck shapes of `[decks]`: `None` for `shape = "curved"` (the S arrangement of `R1 R2

@@ -80,6 +80,10 @@ impl ParamKey {
     /// [`crate::ground_motion::GroundMotion::validate`] and the deck geometry checks), or `None`
     /// for parameters that no scenario key sets. Deck masses (`mass (deck J)`) are not mapped
     /// here: they are set by `massJ` or by `density` (see the scenario's `build`).
+    ///
+    /// For callers that hold only a parameter's name: the scenario itself maps the typed path
+    /// every error carries ([`crate::sim::param::ParamPath`], `GeometryError`'s `param`,
+    /// `GroundMotionError`'s `param`), never a name read back from a message.
     pub fn of_model_parameter(name: &str) -> Option<ParamKey> {
         use Section::*;
         // "name (deck J[, bearing I])" → ("name", Some(J))

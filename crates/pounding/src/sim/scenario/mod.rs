@@ -19,6 +19,7 @@ mod build;
 mod contact;
 mod error;
 mod ground;
+mod model_keys;
 mod sections;
 mod setup;
 mod site_contact;
@@ -299,6 +300,21 @@ impl Scenario {
     pub fn with_dt(mut self, dt: Real) -> Self {
         self.raw.time.0.dt = dt;
         self.with_flag(build::time("dt"), "--dt")
+    }
+
+    /// The one check of a time step `dt` given on the command line as `--dt`
+    /// ([`SimSettings::check_dt`]), said as `simulate --dt` says it (`invalid dt = 0: must be
+    /// finite and > 0 — set by --dt (command line, in place of `[time] dt`)`), before any
+    /// scenario is built (`pounding compare --dt`).
+    pub fn check_dt_flag(dt: Real) -> Result<(), ScenarioError> {
+        let src = Src {
+            origin: String::new(),
+            text: String::new(),
+            dir: PathBuf::new(),
+            builtin: false,
+            flags: vec![(build::time("dt"), "--dt")],
+        };
+        SimSettings::check_dt(dt).map_err(|e| build::sim_error(&src, e))
     }
 
     /// Replaces `[time] duration` by `duration` \[s\] (`pounding simulate --duration`).

@@ -1,7 +1,8 @@
 //! The sections of a `simulate` scenario file as read by `serde` (every key optional, unknown keys
 //! refused, sections only as tables) and their defaults, which are the values of
-//! [`DEFAULT_SCENARIO_TOML`].
+//! [`DEFAULT_SCENARIO_TOML`] (the values of [`crate::sim::defaults`]; a test checks the text).
 
+use crate::sim::defaults as d;
 use crate::toml_schema::{Exact, Table};
 use serde::Deserialize;
 
@@ -189,17 +190,17 @@ pub(crate) struct DecksSec {
 impl Default for DecksSec {
     fn default() -> Self {
         Self {
-            shape: "curved".into(),
+            shape: d::SHAPE.into(),
             L1: None,
             L2: None,
             skew_deg: None,
-            R1: 100.0,
-            R2: 100.0,
-            beta1_deg: 60.0,
-            beta2_deg: 60.0,
-            width: 10.0,
-            thickness: 0.5,
-            density: 2500.0,
+            R1: d::RADIUS,
+            R2: d::RADIUS,
+            beta1_deg: d::ANGLE_DEG,
+            beta2_deg: d::ANGLE_DEG,
+            width: d::WIDTH,
+            thickness: d::THICKNESS,
+            density: d::DENSITY,
             mass1: None,
             mass2: None,
         }
@@ -217,10 +218,10 @@ pub(crate) struct JointSec {
 impl Default for JointSec {
     fn default() -> Self {
         Self {
-            gap: 0.05,
-            seat_length: 0.4,
-            mu: 0.5,
-            eps_n: 0.5,
+            gap: d::GAP,
+            seat_length: d::SEAT_LENGTH,
+            mu: d::MU,
+            eps_n: d::EPS_N,
         }
     }
 }
@@ -241,12 +242,12 @@ pub(crate) struct BearingsSec {
 impl Default for BearingsSec {
     fn default() -> Self {
         Self {
-            stiffness1: 2.02e7,
-            stiffness2: 8.97e6,
-            damping_ratio: 0.05,
+            stiffness1: d::BEARING_STIFFNESS[0],
+            stiffness2: d::BEARING_STIFFNESS[1],
+            damping_ratio: d::DAMPING_RATIO,
             points1: None,
             points2: None,
-            damping: "rayleigh".into(),
+            damping: d::DAMPING.into(),
             allow_mechanism: false,
         }
     }
@@ -273,12 +274,12 @@ pub(crate) struct GroundSec {
 impl Default for GroundSec {
     fn default() -> Self {
         Self {
-            record_y: "builtin:ELC180".into(),
-            record_x: "builtin:ELC270".into(),
+            record_y: d::RECORDS[0].into(),
+            record_x: d::RECORDS[1].into(),
             scale_y: 1.0,
             scale_x: 1.0,
             incidence_deg: 0.0,
-            csv_units: "g".into(),
+            csv_units: d::CSV_UNITS.into(),
             record_dt: None,
             v_app: None,
             wave_direction_deg: None,
@@ -298,9 +299,47 @@ pub(crate) struct TimeSec {
 impl Default for TimeSec {
     fn default() -> Self {
         Self {
-            dt: 1e-3,
+            dt: d::DT,
             duration: None,
-            history_every: 10,
+            history_every: d::HISTORY_EVERY,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The commented default scenario shows the values of `sim::defaults`, which an omitted key
+    /// takes.
+    #[test]
+    fn default_scenario_text_shows_the_defaults() {
+        let raw: Raw = toml::from_str(DEFAULT_SCENARIO_TOML).unwrap();
+        let (dk, j, b) = (&raw.decks.0, &raw.joint.0, &raw.bearings.0);
+        let (g, t) = (&raw.ground_motion.0, &raw.time.0);
+        let two = |x: f64| (x, x);
+        assert_eq!((dk.R1, dk.R2), two(d::RADIUS));
+        assert_eq!((dk.beta1_deg, dk.beta2_deg), two(d::ANGLE_DEG));
+        let dims = (dk.width, dk.thickness, dk.density);
+        assert_eq!(dims, (d::WIDTH, d::THICKNESS, d::DENSITY));
+        let joint = (j.gap, j.seat_length, j.mu, j.eps_n);
+        assert_eq!(joint, (d::GAP, d::SEAT_LENGTH, d::MU, d::EPS_N));
+        assert_eq!([b.stiffness1, b.stiffness2], d::BEARING_STIFFNESS);
+        assert_eq!(b.damping_ratio, d::DAMPING_RATIO);
+        assert_eq!([g.record_y.as_str(), g.record_x.as_str()], d::RECORDS);
+        assert_eq!(g.csv_units, d::CSV_UNITS);
+        assert_eq!((t.dt, t.history_every), (d::DT, d::HISTORY_EVERY));
+        let dflt = Raw::default();
+        assert_eq!(format!("{:?}", raw.decks), format!("{:?}", dflt.decks));
+        assert_eq!(format!("{:?}", raw.joint), format!("{:?}", dflt.joint));
+        assert_eq!(
+            format!("{:?}", raw.bearings),
+            format!("{:?}", dflt.bearings)
+        );
+        assert_eq!(
+            format!("{:?}", raw.ground_motion),
+            format!("{:?}", dflt.ground_motion)
+        );
+        assert_eq!(format!("{:?}", raw.time), format!("{:?}", dflt.time));
     }
 }

@@ -59,7 +59,9 @@ use crate::shape::{Deck, DeckShape, SkewedDeck, StraightDeck};
 use crate::sim::bridge::{
     BearingYield, BridgeAbutment, BridgeModel, BridgeProblem, Joint, RestrainerSpec, Segment,
 };
+use crate::sim::defaults;
 use crate::sim::excitation::SupportExcitation;
+use crate::sim::param::{BridgeTable, ParamPath};
 use crate::sim::{DampingModel, JointContact, SimSettings, simulate};
 use crate::toml_schema::{Table, line_col};
 use serde::Deserialize;
@@ -311,7 +313,7 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
     let damping_ratio = v.num(
         bk("damping_ratio"),
         &b.damping_ratio,
-        Some(0.05),
+        Some(defaults::DAMPING_RATIO),
         |x| (0.0..1.0).contains(&x),
         "must lie in [0, 1)",
     )?;
@@ -330,22 +332,19 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
             ));
         }
     };
-    let outer_seat_length = v.seat(bk("outer_seat_length"), &b.outer_seat_length, Some(0.4))?;
-    let d_gap = v.gap(bk("gap"), &b.gap, Some(0.05))?;
-    let d_mu = v.nonneg(bk("mu"), &b.mu, Some(0.5))?;
-    let d_eps = v.unit(bk("eps_n"), &b.eps_n, Some(0.5))?;
-    let d_seat = v.seat(bk("seat_length"), &b.seat_length, Some(0.4))?;
+    let outer = Some(defaults::OUTER_SEAT_LENGTH);
+    let outer_seat_length = v.seat(bk("outer_seat_length"), &b.outer_seat_length, outer)?;
+    let d_gap = v.gap(bk("gap"), &b.gap, Some(defaults::GAP))?;
+    let d_mu = v.nonneg(bk("mu"), &b.mu, Some(defaults::MU))?;
+    let d_eps = v.unit(bk("eps_n"), &b.eps_n, Some(defaults::EPS_N))?;
+    let d_seat = v.seat(
+        bk("seat_length"),
+        &b.seat_length,
+        Some(defaults::SEAT_LENGTH),
+    )?;
     if raw.segment.is_empty() {
         // `segment = []`: name the line that says so
-        let line = v
-            .text
-            .lines()
-            .position(|l| {
-                let l = l.trim_start();
-                l.strip_prefix("segment")
-                    .is_some_and(|r| r.trim_start().starts_with('='))
-            })
-            .map(|k| k + 1);
+        let line = crate::toml_schema::line_of_key(v.text, "", "segment");
         return Err(v.err(
             "segment".into(),
             line,
@@ -414,13 +413,10 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
         model.validate().map_err(|e| model_error(&v, raw, e))?;
         check_mechanism(&v, raw, &model)
     })?;
+    // the step the restrainers and backwalls need: said at `[time] dt` (or `--dt`)
     model
         .check_time_step(settings.dt)
-        .map_err(|e| ScenarioError::Invalid {
-            message: e.to_string(),
-            at: vec![sc.src.at(super::ParamKey::new(super::Section::Time, "dt"))],
-            note: String::new(),
-        })?;
+        .map_err(|e| sc.src.invalid(e.to_string(), super::build::time("dt")))?;
     Ok(BridgeSetup {
         problem: BridgeProblem {
             supports,

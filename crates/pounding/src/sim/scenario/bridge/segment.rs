@@ -19,17 +19,18 @@ pub(super) fn segment_shape(
         .map_or("straight", |x| x.get_ref().as_str());
     // a shape's own check names the parameter as the shape knows it: the key the user wrote
     let geo = |fallback: &str, e: crate::geometry::GeometryError| {
-        let crate::geometry::GeometryError::InvalidParameter { name, .. } = &e;
-        let key = match name.as_str() {
-            "R" => "R",
-            "beta" => "beta_deg",
-            "skew" => "skew_deg",
-            "length" => "L",
-            "width" => "width",
-            "thickness" => "thickness",
-            "density" if s.mass.is_some() => "mass",
-            "density" => "density",
-            _ => fallback,
+        use crate::geometry::ShapeParam;
+        let crate::geometry::GeometryError::InvalidParameter { param, .. } = &e;
+        let key = match param {
+            ShapeParam::Radius => "R",
+            ShapeParam::Angle => "beta_deg",
+            ShapeParam::Skew => "skew_deg",
+            ShapeParam::Length => "L",
+            ShapeParam::Width => "width",
+            ShapeParam::Thickness => "thickness",
+            ShapeParam::Density if s.mass.is_some() => "mass",
+            ShapeParam::Density => "density",
+            ShapeParam::Gap | ShapeParam::Other => fallback,
         };
         v.err(
             sk(key),
@@ -263,9 +264,9 @@ pub(super) fn segment(
     default_left: bool,
 ) -> Result<Segment, ScenarioError> {
     let sk = |key: &str| format!("segment[{i}].{key}");
-    let width = v.dim(sk("width"), &s.width, Some(10.0))?;
-    let thickness = v.dim(sk("thickness"), &s.thickness, Some(0.5))?;
-    let density = v.pos(sk("density"), &s.density, Some(2500.0))?;
+    let width = v.dim(sk("width"), &s.width, Some(defaults::WIDTH))?;
+    let thickness = v.dim(sk("thickness"), &s.thickness, Some(defaults::THICKNESS))?;
+    let density = v.pos(sk("density"), &s.density, Some(defaults::DENSITY))?;
     let (mut shape, mirrored) = segment_shape(v, i, s, default_left, (width, thickness, density))?;
     if let (Some(ms), Some(_)) = (&s.mass, &s.density) {
         return Err(v.err(

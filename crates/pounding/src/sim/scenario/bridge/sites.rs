@@ -290,62 +290,57 @@ pub(super) fn segment_key_line(v: &Val, t: &SegmentSec, key: &str) -> Option<usi
     }
 }
 
-/// A model error (named `segment[i].key`, `joint[k].key`, `abutment.side.key`, `bridge.key`) with
-/// the line of that key, or of its table when the key is not written there.
+/// A model error (its typed path a [`BridgeKey`]: `segment[i].key`, `joint[k].key`,
+/// `abutment.side.key`, `pier[p].key`, `bridge.key`) with the line of that key, or of its table
+/// when the key is not written there.
 pub(super) fn model_error(v: &Val, raw: &BridgeRaw, e: crate::sim::SimError) -> ScenarioError {
-    use crate::sim::SimError;
-    let (name, message) = match &e {
-        SimError::InvalidParameter { name, .. } | SimError::InvalidArgument { name, .. } => {
-            (name.clone(), e.to_string())
+    let Some(ParamPath::Bridge(path)) = e.path() else {
+        return match e.path() {
+            // a parameter known by its name only: named as it is, with no line
+            Some(p) => v.err(p.to_string(), None, e.to_string()),
+            None => ScenarioError::Model(Box::new(e)),
+        };
+    };
+    let key = path.leaf();
+    let line = match path.table {
+        BridgeTable::Segment(i) => {
+            let seg = raw.segment.get(i);
+            let own = seg.and_then(|t| segment_key_line(v, t.get_ref(), key));
+            own.or(seg.map(|t| v.line(t)))
         }
-        _ => return ScenarioError::Model(Box::new(e)),
-    };
-    let index = |prefix: &str| -> Option<usize> {
-        let rest = name.strip_prefix(prefix)?;
-        rest.split(']').next()?.parse().ok()
-    };
-    let line = if let Some(i) = index("segment[") {
-        let seg = raw.segment.get(i);
-        let key = name.rsplit('.').next().unwrap_or_default();
-        let own = seg.and_then(|t| segment_key_line(v, t.get_ref(), key));
-        own.or(seg.map(|t| v.line(t)))
-    } else if let Some(k) = index("joint[") {
         // faces of different widths: the `width` of the segment after the joint (or before it),
         // else that segment's table; other joint keys: the joint's table
-        let width = |i: usize| {
-            raw.segment
-                .get(i)
-                .and_then(|t| t.get_ref().width.as_ref().map(|w| v.line(w)))
-        };
-        if name.ends_with(".width") {
+        BridgeTable::Joint(k) if key == "width" => {
+            let width = |i: usize| {
+                raw.segment
+                    .get(i)
+                    .and_then(|t| t.get_ref().width.as_ref().map(|w| v.line(w)))
+            };
             width(k + 1)
                 .or_else(|| width(k))
                 .or_else(|| raw.segment.get(k + 1).map(|t| v.line(t)))
-        } else {
-            let own = |j: Option<&JointSec>, b: &BridgeSec| match name.rsplit('.').next() {
-                Some("restrainer_offsets") => j
+        }
+        BridgeTable::Joint(k) => {
+            let (j, b) = (raw.joint.get(k).map(|j| j.get_ref()), &raw.bridge);
+            let own = match key {
+                "restrainer_offsets" => j
                     .and_then(|j| j.restrainer_offsets.as_ref())
                     .or(b.restrainer_offsets.as_ref())
                     .map(|x| v.line(x)),
-                Some("restrainer_depth") => j
+                "restrainer_depth" => j
                     .and_then(|j| j.restrainer_depth.as_ref())
                     .or(b.restrainer_depth.as_ref())
                     .map(|x| v.line(x)),
                 _ => None,
             };
-            own(raw.joint.get(k).map(|j| j.get_ref()), &raw.bridge)
-                .or(raw.joint.get(k).map(|t| v.line(t)))
+            own.or(raw.joint.get(k).map(|t| v.line(t)))
                 .or_else(|| raw.segment.get(k + 1).map(|t| v.line(t)))
         }
-    } else if let Some(p) = index("pier[") {
-        let key = name.rsplit('.').next().unwrap_or_default();
-        super::pier::pier_line(v, &raw.pier, p, key)
-    } else if name == "bridge.damping" {
-        raw.bridge.damping.as_ref().map(|x| v.line(x))
-    } else {
-        None
+        BridgeTable::Pier(p) => super::pier::pier_line(v, &raw.pier, p, key),
+        BridgeTable::Bridge if key == "damping" => raw.bridge.damping.as_ref().map(|x| v.line(x)),
+        BridgeTable::Bridge | BridgeTable::Abutment(_) => None,
     };
-    v.err(name, line, message)
+    v.err(path.to_string(), line, e.to_string())
 }
 
 /// The restrainer of joint `k` from its keys or the `[bridge]` defaults: present when

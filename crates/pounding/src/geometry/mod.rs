@@ -11,82 +11,10 @@
 //! of decks (and the curved S arrangement, its preset) in [`crate::pair`].
 
 use crate::math::{Real, Vector};
-use thiserror::Error;
 
-/// Invalid geometric input.
-#[derive(Debug, Error, Clone, PartialEq)]
-pub enum GeometryError {
-    /// A parameter is out of its valid range or not finite; the message names the parameter.
-    #[error("invalid {name} = {}: {reason}", crate::output::float_token(*value))]
-    InvalidParameter {
-        /// Parameter name as the user knows it (e.g. `R1`, `beta2`, `width`).
-        name: String,
-        /// The offending value.
-        value: Real,
-        /// What was expected.
-        reason: String,
-    },
-}
-
-impl GeometryError {
-    pub(crate) fn invalid(name: &str, value: Real, reason: &str) -> Self {
-        Self::InvalidParameter {
-            name: name.to_string(),
-            value,
-            reason: reason.to_string(),
-        }
-    }
-
-    /// The same error with the deck index appended to per-deck parameter names
-    /// (`R` → `R1`, `beta` → `beta2`, `skew` → `skew1`, `length` → `L2`); shared parameters
-    /// (`width`, `thickness`, `density`) keep their name.
-    pub fn for_deck(self, index: usize) -> Self {
-        match self {
-            Self::InvalidParameter {
-                name,
-                value,
-                reason,
-            } => {
-                let name = match name.as_str() {
-                    "R" | "beta" | "skew" => format!("{name}{index}"),
-                    "length" => format!("L{index}"),
-                    _ => name,
-                };
-                Self::InvalidParameter {
-                    name,
-                    value,
-                    reason,
-                }
-            }
-        }
-    }
-}
-
-/// Checks a derived mass property (`area`, `mass`, `inertia`): it must be a finite, positive,
-/// normal (not subnormal) number. Otherwise the error names the parameter most likely to have
-/// caused the overflow or underflow: among `candidates` `(name, reported value, magnitude)`, the
-/// one whose magnitude is farthest from 1 on a log scale.
-pub(crate) fn check_derived(
-    quantity: &str,
-    value: Real,
-    candidates: &[(&str, Real, Real)],
-) -> Result<(), GeometryError> {
-    if value.is_normal() && value > 0.0 {
-        return Ok(());
-    }
-    let (name, reported, _) = candidates
-        .iter()
-        .copied()
-        .max_by(|a, b| a.2.abs().ln().abs().total_cmp(&b.2.abs().ln().abs()))
-        .unwrap_or(("?", Real::NAN, 1.0));
-    Err(GeometryError::invalid(
-        name,
-        reported,
-        &format!(
-            "the derived {quantity} = {value:e} is not a finite, positive, normal number (overflow or underflow); use a value of a physical magnitude"
-        ),
-    ))
-}
+mod error;
+pub(crate) use error::check_derived;
+pub use error::{GeometryError, ShapeParam};
 
 /// Mass properties of a plane rigid body (a deck) in its body frame: the one mass-property type
 /// of the crate (like parry's `MassProperties`). Every deck shape returns it
@@ -249,7 +177,7 @@ pub fn validate_rotation(name: &str, theta: Real) -> Result<(), GeometryError> {
     if theta.is_finite() && theta.abs() < MAX_ROTATION {
         Ok(())
     } else {
-        Err(GeometryError::invalid(
+        Err(GeometryError::named(
             &format!("{name} [deg]"),
             theta.to_degrees(),
             "the rotation must be finite with |theta| < 90 degrees",
@@ -327,9 +255,15 @@ pub fn is_first_contact(case: ContactCase, theta1: Real, theta2: Real) -> bool {
 /// The degeneracy of a pose, if any (`θ1 = θ2` first, then `θ1 = −θ2`), within
 /// [`DEGENERACY_TOLERANCE`].
 pub fn degeneracy(theta1: Real, theta2: Real) -> Option<Degeneracy> {
-    if (theta1 - theta2).abs() <= DEGENERACY_TOLERANCE {
+    degeneracy_within(theta1, theta2, DEGENERACY_TOLERANCE)
+}
+
+/// The degeneracy of a pose within `tol` (the angles and `tol` in one unit):
+/// `|θ1 − θ2| ≤ tol` → parallel faces, then `|θ1 + θ2| ≤ tol` → corner meets corner.
+pub fn degeneracy_within(theta1: Real, theta2: Real, tol: Real) -> Option<Degeneracy> {
+    if (theta1 - theta2).abs() <= tol {
         Some(Degeneracy::ParallelFaces)
-    } else if (theta1 + theta2).abs() <= DEGENERACY_TOLERANCE {
+    } else if (theta1 + theta2).abs() <= tol {
         Some(Degeneracy::CornerCorner)
     } else {
         None
