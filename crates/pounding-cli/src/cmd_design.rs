@@ -55,17 +55,18 @@ pub fn run(args: Args) -> Result<ExitCode> {
     pounding::output::check_output_dir_free(&args.out)?;
     // an earlier run's variants not in this design: refused now if not ours, removed at writing
     let stale = design_out::stale_variant_dirs(&args.out, &design)?;
+    use crate::cmd_simulate::sim_records::count;
     let base = &design.members[0].study;
     let per = base.set.records.len() * plan.values().len();
     let total = per * design.members.len();
     eprintln!(
-        "design: {} bridges ({} and {} variants) x {} entries x {} stripes = {total} runs on {} threads; IM = {}",
+        "design: {} bridges ({} and {}) x {} x {} = {total} runs on {}; IM = {}",
         design.members.len(),
         design.members[0].name,
-        design.members.len() - 1,
-        base.set.records.len(),
-        plan.values().len(),
-        pool.current_num_threads(),
+        count(design.members.len() - 1, "variant"),
+        count(base.set.records.len(), "entry").replace("entrys", "entries"),
+        count(plan.values().len(), "stripe"),
+        count(pool.current_num_threads(), "thread"),
         base.spec.label()
     );
     let pb = ProgressBar::with_draw_target(Some(total as u64), ProgressDrawTarget::stderr());

@@ -35,6 +35,7 @@ fn files() -> Vec<(&'static str, String)> {
     assert!(short.contains("\nseat_length = 0.02\n"));
     vec![
         ("viaduct.toml", scenario),
+        ("suite.toml", suite.clone()), // the scenario's own record set
         ("suite3.toml", suite),
         ("spec.toml", spec),
         ("short.toml", short),
@@ -224,7 +225,7 @@ fn a_store_read_through_its_spec_equals_the_direct_study_and_counts_seat_demands
     );
     std::fs::write(
         d.join("other.toml"),
-        f[2].1
+        f[3].1
             .replace("levels_g = [0.4, 1.2]", "levels_g = [0.4, 1.3]"),
     )
     .unwrap();
