@@ -62,6 +62,10 @@ pub fn run(args: Args) -> Result<ExitCode> {
         Cmd::Run(a) => run_campaign(a),
         Cmd::Merge(a) => {
             pounding::output::check_output_dir_free(&a.out)?;
+            // every store is a store before `out` is created (a bad path leaves nothing behind)
+            for s in &a.stores {
+                store::Meta::read(s)?;
+            }
             // the stores merged may include `out` itself (then its lock is taken once, here)
             let _lock = pounding::output::lock_output_dir(&a.out)?;
             let m = store::merge(&a.stores, &a.out)?;

@@ -275,6 +275,24 @@ fn spec_messages_name_the_spec_key() {
         );
         assert!(!d.join("o").exists(), "nothing written");
     }
+    // a bad variant name is not reported as a variant named ""
+    std::fs::write(
+        d.join("bad.toml"),
+        "[campaign]\nscenario = \"viaduct.toml\"\nrecords = \"suite3.toml\"\n[[variant]]\n\
+         name = \"x/y\"\n[variant.set]\n\"bridge.gap\" = 0.03\n",
+    )
+    .unwrap();
+    let (code, _, err) = run_capture(&["campaign", "run", &p("bad.toml"), "--out", &p("o")]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("bad.toml:5") && err.contains("variant[0].name"),
+        "{err}"
+    );
+    assert!(!err.contains("variant \"\""), "{err}");
+    // a merge of a path that is no store leaves no --out behind
+    let (code, _, err) = run_capture(&["campaign", "merge", &p("nosuch"), "--out", &p("m")]);
+    assert_ne!(code, Some(0), "{err}");
+    assert!(!d.join("m").exists(), "{err}");
 }
 
 /// Found by a fresh-clone trial: a store of one variant that is not the scenario's own bridge

@@ -86,7 +86,10 @@ pub enum VariantError {
         message: String,
     },
     /// A bad entry of the variants file (a key of a `[[variant]]` table or an override).
-    #[error("{origin}:{line}: variant {variant:?}: `{key}`: {message}")]
+    #[error(
+        "{origin}:{line}: {}`{key}`: {message}",
+        if variant.is_empty() { String::new() } else { format!("variant {variant:?}: ") }
+    )]
     Key {
         /// The variants file.
         origin: String,
