@@ -20,7 +20,7 @@ const NAMES: &[(&str, &str)] = &[
 ];
 
 /// `ValueError` with the library's message, the CLI's flags named as the Python arguments.
-fn input_error(e: impl std::fmt::Display) -> PyErr {
+pub(crate) fn input_error(e: impl std::fmt::Display) -> PyErr {
     value_error(rename_flags(&e.to_string(), NAMES))
 }
 

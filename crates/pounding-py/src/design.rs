@@ -3,28 +3,17 @@
 //! `variants/<name>/` files) and, with `out`, those files written as the CLI writes them
 //! ([`pounding::assessment::design_out`], the CLI's code path).
 
-use crate::value_error;
 use pounding::assessment::design::Design;
 use pounding::assessment::design_out;
 use pounding::assessment::design_search::search;
 use pounding::assessment::design_write::{compare, not_finite, recommendation};
-use pounding::input::rename_flags;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::path::PathBuf;
 
-/// The CLI's flags of `pounding design` and the Python arguments that give them.
-const NAMES: &[(&str, &str)] = &[
-    ("--set", "record_set"),
-    ("--hazard", "hazard"),
-    ("--out", "out"),
-    ("--threads", "threads"),
-];
-
-/// `ValueError` with the library's message, the CLI's flags named as the Python arguments.
-fn input_error(e: impl std::fmt::Display) -> PyErr {
-    value_error(rename_flags(&e.to_string(), NAMES))
-}
+// `pounding design` has the flags of `pounding fragility` (--set, --hazard, --out, --threads):
+// its errors name them as the same Python arguments
+use crate::assess::input_error;
 
 /// Runs the design file `path` (`set` instead of the scenario's record set, `hazard` instead
 /// of its `[hazard]`) on `threads` workers; with `out`, writes the data files there (an earlier
