@@ -331,22 +331,7 @@ impl CaltransBackwall {
 /// dissipation.
 pub type BackfillElement = super::Held<HyperbolicGap>;
 
-impl super::UniaxialLaw for HyperbolicGap {
-    type State = HyperbolicGapState;
-    type Response = HyperbolicGapResponse;
-    fn initial_state(&self) -> HyperbolicGapState {
-        HyperbolicGap::initial_state(self)
-    }
-    fn response(&self, u: Real, committed: &HyperbolicGapState) -> HyperbolicGapResponse {
-        HyperbolicGap::response(self, u, committed)
-    }
-    fn stored_energy(&self, state: &HyperbolicGapState) -> Real {
-        HyperbolicGap::stored_energy(self, state)
-    }
-    fn accepted(r: &HyperbolicGapResponse) -> (HyperbolicGapState, Real) {
-        (r.trial, r.dissipation)
-    }
-}
+uniaxial_law!(HyperbolicGap, HyperbolicGapState, HyperbolicGapResponse);
 
 #[cfg(test)]
 mod tests {

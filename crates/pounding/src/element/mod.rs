@@ -40,6 +40,29 @@
 //! `slack`, `kmax`, `kur`, `rf`, `fult`, `gap`, `height`, `width`, `skew`) — the same key a scenario file uses — so a scenario reader can prefix file and line
 //! via [`ElementError::key`].
 
+/// Implements [`UniaxialLaw`] for a law whose inherent `initial_state`, `response` and
+/// `stored_energy` have the trait's signatures and whose response has `trial` and `dissipation`.
+macro_rules! uniaxial_law {
+    ($law:ty, $state:ty, $response:ty) => {
+        impl super::UniaxialLaw for $law {
+            type State = $state;
+            type Response = $response;
+            fn initial_state(&self) -> $state {
+                <$law>::initial_state(self)
+            }
+            fn response(&self, u: Real, committed: &$state) -> $response {
+                <$law>::response(self, u, committed)
+            }
+            fn stored_energy(&self, state: &$state) -> Real {
+                <$law>::stored_energy(self, state)
+            }
+            fn accepted(r: &$response) -> ($state, Real) {
+                (r.trial, r.dissipation)
+            }
+        }
+    };
+}
+
 pub mod backfill;
 pub mod bearing;
 pub mod restrainer;

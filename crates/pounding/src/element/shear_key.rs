@@ -145,19 +145,4 @@ impl ShearKey {
 /// plastic dissipation.
 pub type ShearKeyElement = super::Held<ShearKey>;
 
-impl super::UniaxialLaw for ShearKey {
-    type State = ShearKeyState;
-    type Response = ShearKeyResponse;
-    fn initial_state(&self) -> ShearKeyState {
-        ShearKey::initial_state(self)
-    }
-    fn response(&self, u: Real, committed: &ShearKeyState) -> ShearKeyResponse {
-        ShearKey::response(self, u, committed)
-    }
-    fn stored_energy(&self, state: &ShearKeyState) -> Real {
-        ShearKey::stored_energy(self, state)
-    }
-    fn accepted(r: &ShearKeyResponse) -> (ShearKeyState, Real) {
-        (r.trial, r.dissipation)
-    }
-}
+uniaxial_law!(ShearKey, ShearKeyState, ShearKeyResponse);
