@@ -25,7 +25,7 @@ fn a_bridge_run_or_comparison_too_large_for_memory_is_refused_naming_the_way_aro
             ),
             (
                 "ok.toml",
-                &bridge(200, "dt = 5e-4\nhistory_every = 5\nduration = 0.01\n"),
+                &bridge(200, "dt = 5e-4\nhistory_every = 6\nduration = 0.01\n"),
             ),
         ],
     );
@@ -33,7 +33,7 @@ fn a_bridge_run_or_comparison_too_large_for_memory_is_refused_naming_the_way_aro
     let (code, _, err) = run_capture(&["simulate", &p("sim.toml"), "--out", &p("o1")]);
     assert_eq!(code, Some(2), "{err}");
     assert!(
-        err.contains("run too large") && err.contains("history_every >= 5"),
+        err.contains("run too large") && err.contains("history_every >= 6"),
         "{err}"
     );
     assert!(!d.join("o1").exists(), "nothing written");

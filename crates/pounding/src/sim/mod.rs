@@ -1,24 +1,25 @@
-//! Seismic time-history simulation of two decks with rigid-impact pounding.
+//! Seismic time-history simulation of bridges of rigid deck segments with pounding.
 //!
 //! # Model
-//! Two rigid decks (by default annular sectors in the S arrangement, spec §2–§4; or straight /
-//! skewed decks of [`crate::shape`] meeting face to face, see [`SimModel::shapes`]), optionally
-//! with rigid abutments beyond their far ends ([`SimAbutment`]), 3 in-plane DOF each,
-//! `q = (x1, y1, θ1, x2, y2, θ2)` (spec §5.1: centroid displacements from the reference pose with
-//! `M_1 = (0, g)`, `M_2 = (0, 0)`, rotations about the centroids), `M = diag(m1, m1, I1, m2, m2, I2)`.
+//! A bridge ([`bridge::BridgeModel`]) is a chain of rigid deck segments (straight, skewed or
+//! curved plan shapes of [`crate::shape`]), each with 3 in-plane DOF `(x, y, θ)` (centroid
+//! displacements from the reference pose, rotation about the centroid), meeting at joints, with
+//! optional abutments at the two ends; substructure bodies with other DOF counts (pier caps,
+//! backwalls) join it through one DOF map ([`dofs::Dofs`]). The two-deck model of the original
+//! study is a preset that expands into the bridge of two segments ([`SimModel`],
+//! [`bridge::BridgeModel::from_pair`]).
 //!
-//! * **Bearings** ([`Bearing`]): linear springs of equal stiffness in x and y at body points, with
-//!   linearised kinematics `u_p = u_G + θ ẑ × r_p`; default: the two corners of each end face.
-//! * **Damping**: Rayleigh per deck, `C_j = a_0 M_j + a_1 K_j`, ratio `ζ` at that deck's two lowest
-//!   distinct natural frequencies ([`model::rayleigh_coefficients`]).
-//! * **Ground motion** ([`crate::ground_motion::GroundMotion`]): effective load `F(t) = −M r a_g(t)` with `r` mapping the
-//!   ground acceleration onto both decks' centroid translations (no rotational component).
-//!   All displacements are relative to the ground.
-//! * **Contacts**: each corner of each deck's joint face against the other deck's face, gaps from
-//!   the current pose with exact rotations ([`contact`] module doc); each far-face corner of a
-//!   deck with an abutment against the abutment face (body b = the ground, [`SimAbutment`]);
-//!   Newton impact law with Coulomb friction in the LCP form of spec §8, the same `ε_N`, `μ` at
-//!   every contact. At most 6 contacts (LCP size ≤ 18) are active at once.
+//! * **Links** between two attachments, each a body point or a support (`support.rs`): bearings
+//!   (linear or yielding, with linearised kinematics `u_p = u_G + θ ẑ × r_p`), dashpots,
+//!   restrainers, pier columns, backfill, piles, shear keys ([`crate::element`]).
+//! * **Damping**: Rayleigh per segment (or of the whole coupled system), or dashpots.
+//! * **Ground motion** ([`crate::ground_motion::GroundMotion`]): effective load `F(t) = −M r a_g(t)`;
+//!   displacements are relative to a reference motion, and supports may move apart from it
+//!   ([`excitation`]).
+//! * **Contact sites**: each joint (the corners of each end face against the other face, gaps
+//!   from the current pose with exact rotations, [`contact`]) and each abutment, each with its own
+//!   law: the rigid Newton–Coulomb impact law (an LCP over every active contact) or a compliance
+//!   law of [`crate::contact_law`]; rigid and compliance sites mix in one bridge.
 //!
 //! # Scheme: Moreau–Jean time stepping (θ-method + velocity-level LCP)
 //! With step `h`, `t_k = k h`, and `θ = ½` by default:
@@ -31,7 +32,7 @@
 //! `u_free = u_k + Ŵ⁻¹ h (−C u_k − K (q_k + hθ u_k) + (1−θ)F_k + θF_{k+1})` and
 //! `u_{k+1} = u_free + Ŵ⁻¹ W P`. The force directions `W = [w_N, w_T]` are evaluated at `q_k`.
 //! Contact `i` is *active* if its corner lies over the other face and its predicted gap
-//! `g_i(q_k) + h γ_N,i(u_k) ≤ 0`. For the active set the impulses `P` solve the LCP of spec §8 with
+//! `g_i(q_k) + h γ_N,i(u_k) ≤ 0`. For the active set the impulses `P` solve the impact LCP of [`crate::impact`] with
 //! the Delassus matrix `G = Wᵀ Ŵ⁻¹ W`, `γ⁻ := Wᵀ u_k` in the Newton law and `γ_free := Wᵀ u_free`:
 //! ```text
 //! b = ( γ_N,free + ε min(γ_N⁻, 0) ,  γ_T,free ,  0 )
@@ -40,7 +41,7 @@
 //! (Restitution acts only on an approaching contact; an active but receding contact — possible
 //! after a small overlap — must merely not start approaching, as in [`crate::impact`].)
 //! For an isolated impact (`h → 0`, `γ_free → γ⁻`, `Ŵ → M`) this is exactly the single-impact LCP
-//! of spec §8. The smooth part is the trapezoidal rule (θ = ½): second order, A-stable, no numerical
+//! of [`crate::impact`]. The smooth part is the trapezoidal rule (θ = ½): second order, A-stable, no numerical
 //! damping; with impacts the scheme is first order in the event time.
 //!
 //! # Energy
@@ -52,11 +53,13 @@
 //! scaling slip shows at O(1)); for `θ > ½` it measures the scheme's numerical dissipation.
 //!
 //! # Code layout
-//! [`simulate`] validates, builds the time grid and iteration matrices and hands the loop to the
-//! time-stepping driver (`driver.rs`: monitors, energy bookkeeping, history, summary), which
-//! calls one stepper per step: `rigid.rs` (the scheme above) or [`compliance`] (a compliance
-//! contact law with Newton). A new integrator or contact treatment is a new stepper; a new
-//! monitored quantity goes into the driver and is then reported for every law.
+//! [`simulate`] checks a [`Problem`] and hands the whole run to an integrator
+//! (`integrate.rs`: the `Integrator` trait, Moreau–Jean today). Its loop (`driver.rs`:
+//! energy bookkeeping, divergence, history; monitors in `peaks.rs`) calls one stepper per step —
+//! `rigid.rs` (the scheme above), [`compliance`] (trapezoid + Newton over the contact sites) or
+//! `mixed.rs` (both) — and hands each kept step to the observers (`observer.rs`), whose typed
+//! tables ([`table::Table`]) the front ends write. A new output is an observer; a new integrator
+//! implements the trait; `docs/architecture.md` lists the files each addition touches.
 
 pub mod accuracy;
 pub mod batch;
