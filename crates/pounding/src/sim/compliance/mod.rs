@@ -112,6 +112,22 @@ impl EndEval {
         }
     }
 
+    /// A present end open by more than [`CLOSURE_WINDOW`] at penetration `delta < 0`, without
+    /// its force directions: what [`ComplianceStepper::end_eval`] gives there (`F = 0`, no
+    /// stiffness, the law's open state `δ_c = δ`; every law's evaluation at `δ ≤ 0`, whatever
+    /// `δ̇`), with `w_N = w_T = 0`, which only the impact records and the closure step read
+    /// (neither reads a lean end: [`ComplianceStepper::may_skip`]).
+    fn lean(case: Option<ContactCase>, delta: Real, face: Option<(Real, Real)>) -> Self {
+        EndEval {
+            present: true,
+            case,
+            delta,
+            state: LawState::open_at(delta),
+            face,
+            ..Self::open()
+        }
+    }
+
     /// An end without a contact.
     fn open() -> Self {
         EndEval {
@@ -131,9 +147,20 @@ impl EndEval {
     }
 }
 
+/// The closure step's window: ends within this penetration of `δ = 0` \[m\] may be held there
+/// ([`ComplianceStepper::closure_step`]).
+pub(crate) const CLOSURE_WINDOW: Real = 1e-6;
+
 /// `R = Σ_e (w_N f_N + w_T f_T)` over every end, `n` generalised coordinates.
 fn gen_force(ends: &[EndEval], n: usize) -> State {
     let mut r = State::zeros(n);
+    gen_force_into(ends, &mut r);
+    r
+}
+
+/// [`gen_force`] into `r` (overwritten; its length is the number of coordinates).
+fn gen_force_into(ends: &[EndEval], r: &mut State) {
+    r.fill(0.0);
     for e in ends {
         if e.f_n == 0.0 && e.f_t == 0.0 {
             // an open end adds nothing (its `+ 0` terms could change only a zero's sign)
@@ -142,7 +169,6 @@ fn gen_force(ends: &[EndEval], n: usize) -> State {
         e.wn.axpy(e.f_n, r.as_mut_slice());
         e.wt.axpy(e.f_t, r.as_mut_slice());
     }
-    r
 }
 
 /// The fixed data of one step's iteration: `q_k`, `u_k`, the scheme (for `Ŵ⁻¹`) and
@@ -192,12 +218,17 @@ pub(crate) struct ComplianceStepper {
     forces: Vec<[Real; 2]>,
     /// `R_k`.
     r_k: State,
+    /// Scratch of [`Self::commit`]: `R_{k+1}` and `ū` (allocated once).
+    r_new: State,
+    u_mid: State,
     site_in_contact: Vec<bool>,
     open_imp: Vec<Option<OpenImpact>>,
     d_cont: Real,
     stats: StepperStats,
     /// The pose of a trial state (storage reused from one evaluation to the next).
     pose: std::cell::RefCell<Pose>,
+    /// The trial `q_{k+1}` (storage reused likewise).
+    q_trial: std::cell::RefCell<State>,
 }
 
 impl ComplianceStepper {
@@ -244,6 +275,8 @@ impl ComplianceStepper {
             ends: vec![EndEval::open(); n_ends],
             forces: vec![[0.0; 2]; sites.len()],
             r_k: State::zeros(n),
+            r_new: State::zeros(n),
+            u_mid: State::zeros(n),
             site_in_contact: vec![false; sites.len()],
             open_imp: vec![None; n_ends],
             d_cont: 0.0,
@@ -252,13 +285,14 @@ impl ComplianceStepper {
                 ..StepperStats::default()
             },
             pose: std::cell::RefCell::new(Pose::new(&bridge.bodies, &bridge.dofs, q0.as_slice())),
+            q_trial: std::cell::RefCell::new(State::zeros(n)),
             sites,
         };
-        let first = s.eval_ends(q0, u0, &s.states, None);
+        let first = s.eval_ends(q0, u0, &s.states, None, true);
         for (st, f) in s.states.iter_mut().zip(&first) {
             *st = LawState::open_at(f.delta.min(0.0));
         }
-        s.ends = s.eval_ends(q0, u0, &s.states, None);
+        s.ends = s.eval_ends(q0, u0, &s.states, None, true);
         for (st, e) in s.states.iter_mut().zip(&s.ends) {
             *st = e.state;
         }
@@ -312,14 +346,25 @@ impl ComplianceStepper {
         }
     }
 
+    /// Whether end `e` at penetration `delta` may be evaluated without its force directions
+    /// ([`EndEval::lean`]): open by more than the closure step's window (every law gives
+    /// `F = 0`, `∂F = 0` and the open state at `δ ≤ 0`, whatever `δ̇`) and no impact of its own
+    /// in progress (whose closing reads the end's velocities).
+    #[inline]
+    fn may_skip(&self, e: usize, delta: Real) -> bool {
+        delta < -CLOSURE_WINDOW && self.open_imp[e].is_none()
+    }
+
     /// Evaluates every end at `(q, u)` from the committed `states`; an abutment's face moved
-    /// with its support by `ground`.
+    /// with its support by `ground`. `full`: every end with its force directions (else the
+    /// ends far open without them, [`Self::may_skip`]: nothing reads them).
     fn eval_ends(
         &self,
         q: &State,
         u: &State,
         states: &[LawState],
         ground: Ground<'_>,
+        full: bool,
     ) -> Vec<EndEval> {
         let dofs = &self.dofs;
         let mut pose = self.pose.borrow_mut();
@@ -330,6 +375,10 @@ impl ComplianceStepper {
             let jf = candidates(&self.bodies, pose, jg);
             for e in 0..2 {
                 let ev = match jf.sel[e] {
+                    Some(i) if !full && self.may_skip(out.len(), -jf.cands[i].gap) => {
+                        let c = jf.cands[i];
+                        EndEval::lean(Some(c.case), -c.gap, None)
+                    }
                     Some(i) => {
                         let c = jf.cands[i];
                         let (wn, wt) = c.force_directions(pose, jg);
@@ -367,6 +416,10 @@ impl ComplianceStepper {
                 let r = pc - pose.g[j];
                 let dir = |v: crate::math::Vector| ab.direction(v, &r);
                 let delta = -((pc - ab.point).dot(&nn) + shift);
+                if !full && self.may_skip(out.len(), delta) {
+                    out.push(EndEval::lean(None, delta, face));
+                    continue;
+                }
                 let (wn, wt) = (dir(nn).sparse(dofs), dir(tn).sparse(dofs));
                 out.push(self.end_eval(out.len(), states, None, wn, wt, (delta, u, face)));
             }
@@ -440,15 +493,21 @@ impl ComplianceStepper {
             // the iterate with the smallest residual was kept
             Solved::Failed => self.stats.newton_failures += 1,
         }
-        let r_new = gen_force(&ev, un.len());
-        let u_mid = (inp.u + &un) * 0.5;
+        let mut r_new = std::mem::take(&mut self.r_new);
+        gen_force_into(&ev, &mut r_new);
+        let mut u_mid = std::mem::take(&mut self.u_mid);
+        for (m, (a, b)) in u_mid.iter_mut().zip(inp.u.iter().zip(un.iter())) {
+            *m = (a + b) * 0.5;
+        }
         // no force at either end of the step (most steps): no contact work
         if !(r_new.iter().all(|r| *r == 0.0) && self.r_k.iter().all(|r| *r == 0.0)) {
             let rbar = &self.r_k * (1.0 - th) + &r_new * th;
             self.d_cont -= h * u_mid.dot(&rbar);
         }
         self.track_impacts(log, inp.t_next, inp.u, &un, &u_mid, &ev);
-        self.r_k = r_new;
+        self.u_mid = u_mid;
+        // the old `R_k` is the next step's scratch
+        self.r_new = std::mem::replace(&mut self.r_k, r_new);
         let penetration = ev
             .iter()
             .map(|e| e.delta)
