@@ -68,8 +68,11 @@ impl Rows {
         let (mut len, mut entries) = (Vec::new(), Vec::new());
         for i in 0..a.nrows() {
             let before = entries.len();
-            entries
-                .extend((0..a.ncols()).filter_map(|j| (a[(i, j)] != 0.0).then(|| (j, a[(i, j)]))));
+            entries.extend(
+                (0..a.ncols())
+                    .filter(|&j| a[(i, j)] != 0.0)
+                    .map(|j| (j, a[(i, j)])),
+            );
             len.push(entries.len() - before);
         }
         Rows { len, entries }
