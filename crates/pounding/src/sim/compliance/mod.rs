@@ -177,7 +177,7 @@ struct Trial<'a> {
     q: &'a State,
     u: &'a State,
     winv: Winv<'a>,
-    base: State,
+    base: std::borrow::Cow<'a, State>,
     /// The supports' offsets and velocities at `t_{k+1}` (when they move apart).
     ground: Ground<'a>,
 }
@@ -227,6 +227,8 @@ pub(crate) struct ComplianceStepper {
     stats: StepperStats,
     /// The pose of a trial state (storage reused from one evaluation to the next).
     pose: std::cell::RefCell<Pose>,
+    /// Per body: whether a contact end reads its pose (a joint's segments, an abutment's).
+    posed: Vec<bool>,
     /// The trial `q_{k+1}` (storage reused likewise).
     q_trial: std::cell::RefCell<State>,
 }
@@ -262,6 +264,13 @@ impl ComplianceStepper {
             (Some(m), Some(site)) => law_time_step_advice(site.law.law(), h, m, 1.0).ok(),
             _ => None,
         };
+        let mut posed = vec![false; bridge.bodies.len()];
+        for j in &joints {
+            (posed[j.a], posed[j.b]) = (true, true);
+        }
+        for ab in &abutments {
+            posed[ab.body] = true;
+        }
         let mut s = ComplianceStepper {
             bodies: bridge.bodies.clone(),
             dofs: bridge.dofs.clone(),
@@ -286,6 +295,7 @@ impl ComplianceStepper {
             },
             pose: std::cell::RefCell::new(Pose::new(&bridge.bodies, &bridge.dofs, q0.as_slice())),
             q_trial: std::cell::RefCell::new(State::zeros(n)),
+            posed,
             sites,
         };
         let first = s.eval_ends(q0, u0, &s.states, None, true);
@@ -368,7 +378,7 @@ impl ComplianceStepper {
     ) -> Vec<EndEval> {
         let dofs = &self.dofs;
         let mut pose = self.pose.borrow_mut();
-        pose.set(&self.bodies, dofs, q.as_slice());
+        set_pose(&mut pose, (&self.bodies, dofs), q.as_slice(), &self.posed);
         let pose = &*pose;
         let mut out = Vec::with_capacity(states.len());
         for jg in &self.joints {
@@ -435,6 +445,32 @@ impl ComplianceStepper {
     }
 }
 
+/// [`Pose::set`] for the bodies with `posed[j]` (the others keep a placeholder: the reference
+/// pose, never read).
+fn set_pose(
+    pose: &mut Pose,
+    (bodies, dofs): (&[SegmentBody], &super::dofs::Dofs),
+    q: &[Real],
+    posed: &[bool],
+) {
+    pose.d.clear();
+    pose.sc.clear();
+    pose.g.clear();
+    for (j, b) in bodies.iter().enumerate() {
+        if !posed[j] {
+            pose.d.push(crate::math::Vector::zeros());
+            pose.sc.push((0.0, 1.0));
+            pose.g.push(b.centroid);
+            continue;
+        }
+        let [x, y, th] = dofs.plan_of(j, q);
+        let d = crate::math::Vector::new(x, y);
+        pose.d.push(d);
+        pose.sc.push(th.sin_cos());
+        pose.g.push(b.centroid + d);
+    }
+}
+
 /// How a step's contact forces were found.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Solved {
@@ -452,12 +488,12 @@ impl ComplianceStepper {
         let (h, th, hth) = (self.h, self.th, self.hth);
         // no force at t_k (most steps): the base and the first guess are `u_free`
         let (base, guess) = if self.r_k.iter().all(|r| *r == 0.0) {
-            (inp.u_free.clone(), inp.u_free.clone())
+            (std::borrow::Cow::Borrowed(inp.u_free), inp.u_free.clone())
         } else {
             let wr = inp.winv.mul(&self.r_k);
             let base = inp.u_free + &wr * (h * (1.0 - th));
             let guess = &base + &wr * hth;
-            (base, guess)
+            (std::borrow::Cow::Owned(base), guess)
         };
         let tr = Trial {
             q: inp.q,

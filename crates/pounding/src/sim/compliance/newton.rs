@@ -81,7 +81,7 @@ impl ComplianceStepper {
 
     /// The residual `r(u) = u − base − hθ Ŵ⁻¹ R(u)`.
     pub(super) fn resid(&self, tr: &Trial, un: &State, ev: &[EndEval]) -> State {
-        un - &tr.base - tr.winv.mul(&gen_force(ev, un.len())) * self.hth
+        un - &*tr.base - tr.winv.mul(&gen_force(ev, un.len())) * self.hth
     }
 
     /// Newton with backtracking on `r(u) = 0` from `un`; returns the converged iterate or, if
@@ -89,7 +89,7 @@ impl ComplianceStepper {
     pub(super) fn newton(&self, tr: &Trial, mut un: State) -> (bool, State, Vec<EndEval>) {
         let mut ev = self.eval_at(tr, &un);
         // no force at the first guess `base` (an open step): `r = 0` exactly, no product formed
-        if un == tr.base
+        if un == *tr.base
             && un.iter().all(|x| x.is_finite())
             && ev.iter().all(|e| e.f_n == 0.0 && e.f_t == 0.0)
         {
@@ -219,7 +219,7 @@ impl ComplianceStepper {
         for _ in 0..30 {
             let mut ev = self.eval_with(tr, &un, true);
             self.hold(&mut ev, &held, &lam, &un);
-            let r_u = &un - &tr.base - tr.winv.mul(&gen_force(&ev, nq)) * hth;
+            let r_u = &un - &*tr.base - tr.winv.mul(&gen_force(&ev, nq)) * hth;
             let mut r = State::zeros(n);
             r.rows_mut(0, nq).copy_from(&r_u);
             for (i, &e) in held.iter().enumerate() {
