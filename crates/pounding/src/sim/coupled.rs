@@ -55,35 +55,39 @@ pub(crate) struct Dense {
     ky_rows: Rows,
 }
 
-/// A matrix by rows of its non-zero entries, columns ascending.
+/// A matrix by rows of its non-zero entries, columns ascending: `len[i]` entries `(j, a_ij)` of
+/// row `i` after those of the rows before it.
 #[derive(Debug, Clone)]
 struct Rows {
-    start: Vec<usize>,
-    col: Vec<usize>,
-    val: Vec<Real>,
+    len: Vec<usize>,
+    entries: Vec<(usize, Real)>,
 }
 
 impl Rows {
     fn of(a: &DMatrix<Real>) -> Self {
-        let (mut start, mut col, mut val) = (vec![0], Vec::new(), Vec::new());
+        let (mut len, mut entries) = (Vec::new(), Vec::new());
         for i in 0..a.nrows() {
-            for j in (0..a.ncols()).filter(|&j| a[(i, j)] != 0.0) {
-                col.push(j);
-                val.push(a[(i, j)]);
-            }
-            start.push(col.len());
+            let before = entries.len();
+            entries.extend(
+                (0..a.ncols())
+                    .filter(|&j| a[(i, j)] != 0.0)
+                    .map(|j| (j, a[(i, j)])),
+            );
+            len.push(entries.len() - before);
         }
-        Rows { start, col, val }
+        Rows { len, entries }
     }
 
-    /// `out = A v`.
+    /// `out = A v` (per row `Σ_j a_ij v_j` from `0`, columns ascending).
     fn mul_into(&self, v: &State, out: &mut State) {
         let v = v.as_slice();
-        for (o, w) in out.iter_mut().zip(self.start.windows(2)) {
-            let (cols, vals) = (&self.col[w[0]..w[1]], &self.val[w[0]..w[1]]);
+        let mut rest = self.entries.as_slice();
+        for (o, &n) in out.iter_mut().zip(&self.len) {
+            let (row, tail) = rest.split_at(n);
+            rest = tail;
             let mut s = 0.0;
-            for (j, a) in cols.iter().zip(vals) {
-                s += a * v[*j];
+            for &(j, a) in row {
+                s += a * v[j];
             }
             *o = s;
         }

@@ -55,6 +55,8 @@ pub(crate) struct StepForce {
     /// `R(q_k)` and its bearings' part.
     r0: State,
     rb0: State,
+    /// The committed plastic displacements `rb0` was formed from (one per yielding member).
+    up0: Vec<Vector>,
     /// `R̃(q_k + h u_k)` and its bearings' part.
     r1: State,
     pub(super) rb1: State,
@@ -82,6 +84,7 @@ impl StepForce {
             },
             r0: z(),
             rb0: z(),
+            up0: Vec::new(),
             r1: z(),
             rb1: z(),
             rc: z(),
@@ -282,7 +285,19 @@ impl Elements {
         for i in 0..q.len() {
             f.pred[i] = q[i] + u[i] * h;
         }
-        self.bearing_force(q, false, &mut f.rb0);
+        // `R(q_k)` of the bearings depends on their committed plastic displacements only:
+        // formed again when one of them has changed (a member flowed in the last step)
+        let fresh = f.up0.len() == self.bearings.len()
+            && self
+                .bearings
+                .iter()
+                .zip(&f.up0)
+                .all(|(b, u)| b.state.u_p == *u);
+        if !fresh {
+            self.bearing_force(q, false, &mut f.rb0);
+            f.up0.clear();
+            f.up0.extend(self.bearings.iter().map(|b| b.state.u_p));
+        }
         self.bearing_force(&f.pred, true, &mut f.rb1);
         // the cables' terms are added after the bearings', entry by entry, as one sum
         f.r0.copy_from(&f.rb0);

@@ -204,8 +204,17 @@ impl Implicit {
         for _ in 0..MAX_ITER {
             let qp = Self::end_position(sc, q, u, j, &x);
             let (r, jac, _, r_size) = Self::end_force(bearings, idx, &qp);
-            let g = what * (x - base) - (r - r_pred) * hth - pi;
             let wt = what - jac * (hth * hth);
+            // the elastic step from the contact-free estimate: `x = base`, `Π = 0` and the
+            // bearings' force is the predictor's, so `g = 0` exactly (no product formed)
+            if x == *base
+                && x.iter().chain(r.iter()).all(|v| v.is_finite())
+                && r == *r_pred
+                && *pi == Vector3::zeros()
+            {
+                return (x, r, jac, wt, true);
+            }
+            let g = what * (x - base) - (r - r_pred) * hth - pi;
             // converged: each entry of `g` (an impulse) below 1e-12 of the yield impulse
             // `hθ fy`, or at its rounding floor: the size of its terms (`Ŵ` times the
             // resolution of `x` and `base`, the bearings' forces and moments term by term),

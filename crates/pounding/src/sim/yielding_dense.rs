@@ -35,6 +35,9 @@ pub(crate) struct DenseImplicit {
     rf: State,
     /// `J` of the contact-free end (`None`: no element flows there, `J = 0`).
     jac: Option<DMatrix<Real>>,
+    /// Scratch of [`Self::elastic_free`]: `q⁺` and `R̃`.
+    qp: State,
+    r_scratch: State,
 }
 
 /// What one Newton solve returns: `x`, `R̃`, `J` and `Ŵ_t` at it (`None`: no element flows,
@@ -83,6 +86,8 @@ impl DenseImplicit {
             xf: State::zeros(n),
             rf: State::zeros(n),
             jac: None,
+            qp: State::zeros(n),
+            r_scratch: State::zeros(n),
         }
     }
 
@@ -238,6 +243,9 @@ impl DenseImplicit {
         u_free: &mut State,
         f: &StepForce,
     ) -> (bool, bool) {
+        if self.elastic_free(sc, bearings, (q, u), u_free, f) {
+            return (false, false);
+        }
         let base = u_free.clone();
         let pi = State::zeros(base.len());
         let (x, r, tangent, ok) =
@@ -260,6 +268,49 @@ impl DenseImplicit {
         (flows, !ok)
     }
 
+    /// The elastic contact-free step, allocating nothing: when no member flows at the end of
+    /// the contact-free estimate `u_free` and their force there is the predictor's, `g = 0` at
+    /// the first iterate ([`Self::newton`]'s first test, whose outcome this reproduces bit for
+    /// bit: `x = u_free`, `R̃` as [`Self::end_force`] sums it, `J = 0`); `false` (nothing
+    /// changed) otherwise.
+    fn elastic_free(
+        &mut self,
+        sc: &Scheme,
+        bearings: &[YieldingBearing],
+        (q, u): (&State, &State),
+        u_free: &State,
+        f: &StepForce,
+    ) -> bool {
+        let th = sc.th;
+        // (the first test compares `x = u_free` with itself: false with a NaN)
+        if u_free.iter().any(|v| v.is_nan()) {
+            return false;
+        }
+        for (i, p) in self.qp.iter_mut().enumerate() {
+            *p = q[i] + (u[i] * (1.0 - th) + u_free[i] * th) * sc.h;
+        }
+        self.r_scratch.fill(0.0);
+        for (b, op) in bearings.iter().zip(&self.ops) {
+            let d = Self::apply(op, &self.qp) - b.ground_offset();
+            let resp = b.law.response(&d, &b.state);
+            if resp.yielding {
+                return false;
+            }
+            let fp = (1.0 - b.law.b()) * b.law.k0() * resp.trial.u_p;
+            for &(i, l) in op {
+                self.r_scratch[i] += l[0] * fp.x + l[1] * fp.y;
+            }
+        }
+        if self.r_scratch != f.rb1 {
+            return false;
+        }
+        self.ub.copy_from(u_free);
+        self.xf.copy_from(u_free);
+        self.rf.copy_from(&self.r_scratch);
+        self.jac = None;
+        true
+    }
+
     /// After the contact step ([`super::yielding::Implicit::finish_step`]); returns the change
     /// of the contact energy term, whether the end velocity was corrected and whether Newton
     /// failed.
@@ -271,6 +322,15 @@ impl DenseImplicit {
         u_new: &mut State,
         f: &mut StepForce,
     ) -> (Real, bool, bool) {
+        if *u_new == self.xf {
+            // the contact-free end: its force `R̃` as solved, no product formed
+            for i in 0..u_new.len() {
+                let d = (self.rf[i] - f.rb1[i]) * sc.th;
+                f.rb[i] += d;
+                f.r[i] += d;
+            }
+            return (0.0, false, false);
+        }
         let r_pred = f.rb1.clone();
         let (mut d_contact, mut corrected, mut failed) = (0.0, false, false);
         let r_end = if *u_new == self.xf {

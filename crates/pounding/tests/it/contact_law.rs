@@ -12,7 +12,7 @@ use pounding::contact_law::sharing::JointLaw;
 use pounding::contact_law::timestep::{law_time_step_advice, time_step_advice};
 use pounding::contact_law::{
     BilinearImpact, ContactLaw, ContactLawError, Hertz, HertzDamp, HertzDamping, Jankowski,
-    KelvinVoigt, LawState, units,
+    KelvinVoigt, LawState, LinearSpring, units,
 };
 use proptest::prelude::*;
 use std::f64::consts::PI;
@@ -1060,5 +1060,53 @@ fn opensees_1d_bilinear_cross_check() {
             if quirk { "" } else { " (no first-step quirk)" },
             f / 1e6
         );
+    }
+}
+
+/// Every law is open at `δ ≤ 0` whatever the rate `δ̇` and the committed state: no force, no
+/// stiffness or damping, the open state `δ_c = δ` (the compliance stepper evaluates far-open
+/// ends without their force directions, i.e. without `δ̇`, on this property).
+#[test]
+fn every_law_is_open_at_non_positive_penetration_whatever_the_rate() {
+    let laws: Vec<ContactLaw> = vec![
+        KelvinVoigt::new(1e9, 1e6).unwrap().into(),
+        Hertz::new(1e11).unwrap().into(),
+        HertzDamp::new(1e11, HertzDamping::Constant { zeta: 5e10 })
+            .unwrap()
+            .into(),
+        HertzDamp::new(
+            1e11,
+            HertzDamping::PerImpact {
+                chi: 0.6,
+                min_velocity: 1e-3,
+            },
+        )
+        .unwrap()
+        .into(),
+        Jankowski::new(1e11, 0.4, 1e6).unwrap().into(),
+        BilinearImpact::new(1e9, 2e8, 2e-4).unwrap().into(),
+        LinearSpring::new(1e9).unwrap().into(),
+    ];
+    for law in laws {
+        // committed: open, and closed in an impact (approaching, then receding)
+        let closed = law.evaluate(&LawState::default(), 1e-4, 0.5).state;
+        let receding = law.evaluate(&closed, 5e-5, -0.5).state;
+        for state in [
+            LawState::default(),
+            LawState::open_at(-0.01),
+            closed,
+            receding,
+        ] {
+            for delta in [-1e-2, -1e-6, -1e-12, 0.0] {
+                let first = law.evaluate(&state, delta, 0.0);
+                for rate in [-3.0, -1e-3, 1e-3, 2.0] {
+                    let ev = law.evaluate(&state, delta, rate);
+                    assert_eq!(ev, first, "{} at δ = {delta}, δ̇ = {rate}", law.name());
+                }
+                assert_eq!(first.force, 0.0, "{}", law.name());
+                assert_eq!((first.stiffness, first.damping), (0.0, 0.0));
+                assert_eq!(first.state, LawState::open_at(delta), "{}", law.name());
+            }
+        }
     }
 }

@@ -112,6 +112,22 @@ impl EndEval {
         }
     }
 
+    /// A present end open by more than [`CLOSURE_WINDOW`] at penetration `delta < 0`, without
+    /// its force directions: what [`ComplianceStepper::end_eval`] gives there (`F = 0`, no
+    /// stiffness, the law's open state `δ_c = δ`; every law's evaluation at `δ ≤ 0`, whatever
+    /// `δ̇`), with `w_N = w_T = 0`, which only the impact records and the closure step read
+    /// (neither reads a lean end: [`ComplianceStepper::may_skip`]).
+    fn lean(case: Option<ContactCase>, delta: Real, face: Option<(Real, Real)>) -> Self {
+        EndEval {
+            present: true,
+            case,
+            delta,
+            state: LawState::open_at(delta),
+            face,
+            ..Self::open()
+        }
+    }
+
     /// An end without a contact.
     fn open() -> Self {
         EndEval {
@@ -131,9 +147,20 @@ impl EndEval {
     }
 }
 
+/// The closure step's window: ends within this penetration of `δ = 0` \[m\] may be held there
+/// ([`ComplianceStepper::closure_step`]).
+pub(crate) const CLOSURE_WINDOW: Real = 1e-6;
+
 /// `R = Σ_e (w_N f_N + w_T f_T)` over every end, `n` generalised coordinates.
 fn gen_force(ends: &[EndEval], n: usize) -> State {
     let mut r = State::zeros(n);
+    gen_force_into(ends, &mut r);
+    r
+}
+
+/// [`gen_force`] into `r` (overwritten; its length is the number of coordinates).
+fn gen_force_into(ends: &[EndEval], r: &mut State) {
+    r.fill(0.0);
     for e in ends {
         if e.f_n == 0.0 && e.f_t == 0.0 {
             // an open end adds nothing (its `+ 0` terms could change only a zero's sign)
@@ -142,7 +169,6 @@ fn gen_force(ends: &[EndEval], n: usize) -> State {
         e.wn.axpy(e.f_n, r.as_mut_slice());
         e.wt.axpy(e.f_t, r.as_mut_slice());
     }
-    r
 }
 
 /// The fixed data of one step's iteration: `q_k`, `u_k`, the scheme (for `Ŵ⁻¹`) and
@@ -151,7 +177,7 @@ struct Trial<'a> {
     q: &'a State,
     u: &'a State,
     winv: Winv<'a>,
-    base: State,
+    base: std::borrow::Cow<'a, State>,
     /// The supports' offsets and velocities at `t_{k+1}` (when they move apart).
     ground: Ground<'a>,
 }
@@ -192,12 +218,19 @@ pub(crate) struct ComplianceStepper {
     forces: Vec<[Real; 2]>,
     /// `R_k`.
     r_k: State,
+    /// Scratch of [`Self::commit`]: `R_{k+1}` and `ū` (allocated once).
+    r_new: State,
+    u_mid: State,
     site_in_contact: Vec<bool>,
     open_imp: Vec<Option<OpenImpact>>,
     d_cont: Real,
     stats: StepperStats,
     /// The pose of a trial state (storage reused from one evaluation to the next).
     pose: std::cell::RefCell<Pose>,
+    /// Per body: whether a contact end reads its pose (a joint's segments, an abutment's).
+    posed: Vec<bool>,
+    /// The trial `q_{k+1}` (storage reused likewise).
+    q_trial: std::cell::RefCell<State>,
 }
 
 impl ComplianceStepper {
@@ -231,6 +264,13 @@ impl ComplianceStepper {
             (Some(m), Some(site)) => law_time_step_advice(site.law.law(), h, m, 1.0).ok(),
             _ => None,
         };
+        let mut posed = vec![false; bridge.bodies.len()];
+        for j in &joints {
+            (posed[j.a], posed[j.b]) = (true, true);
+        }
+        for ab in &abutments {
+            posed[ab.body] = true;
+        }
         let mut s = ComplianceStepper {
             bodies: bridge.bodies.clone(),
             dofs: bridge.dofs.clone(),
@@ -244,6 +284,8 @@ impl ComplianceStepper {
             ends: vec![EndEval::open(); n_ends],
             forces: vec![[0.0; 2]; sites.len()],
             r_k: State::zeros(n),
+            r_new: State::zeros(n),
+            u_mid: State::zeros(n),
             site_in_contact: vec![false; sites.len()],
             open_imp: vec![None; n_ends],
             d_cont: 0.0,
@@ -252,13 +294,15 @@ impl ComplianceStepper {
                 ..StepperStats::default()
             },
             pose: std::cell::RefCell::new(Pose::new(&bridge.bodies, &bridge.dofs, q0.as_slice())),
+            q_trial: std::cell::RefCell::new(State::zeros(n)),
+            posed,
             sites,
         };
-        let first = s.eval_ends(q0, u0, &s.states, None);
+        let first = s.eval_ends(q0, u0, &s.states, None, true);
         for (st, f) in s.states.iter_mut().zip(&first) {
             *st = LawState::open_at(f.delta.min(0.0));
         }
-        s.ends = s.eval_ends(q0, u0, &s.states, None);
+        s.ends = s.eval_ends(q0, u0, &s.states, None, true);
         for (st, e) in s.states.iter_mut().zip(&s.ends) {
             *st = e.state;
         }
@@ -312,24 +356,39 @@ impl ComplianceStepper {
         }
     }
 
+    /// Whether end `e` at penetration `delta` may be evaluated without its force directions
+    /// ([`EndEval::lean`]): open by more than the closure step's window (every law gives
+    /// `F = 0`, `∂F = 0` and the open state at `δ ≤ 0`, whatever `δ̇`) and no impact of its own
+    /// in progress (whose closing reads the end's velocities).
+    #[inline]
+    fn may_skip(&self, e: usize, delta: Real) -> bool {
+        delta < -CLOSURE_WINDOW && self.open_imp[e].is_none()
+    }
+
     /// Evaluates every end at `(q, u)` from the committed `states`; an abutment's face moved
-    /// with its support by `ground`.
+    /// with its support by `ground`. `full`: every end with its force directions (else the
+    /// ends far open without them, [`Self::may_skip`]: nothing reads them).
     fn eval_ends(
         &self,
         q: &State,
         u: &State,
         states: &[LawState],
         ground: Ground<'_>,
+        full: bool,
     ) -> Vec<EndEval> {
         let dofs = &self.dofs;
         let mut pose = self.pose.borrow_mut();
-        pose.set(&self.bodies, dofs, q.as_slice());
+        set_pose(&mut pose, (&self.bodies, dofs), q.as_slice(), &self.posed);
         let pose = &*pose;
         let mut out = Vec::with_capacity(states.len());
         for jg in &self.joints {
             let jf = candidates(&self.bodies, pose, jg);
             for e in 0..2 {
                 let ev = match jf.sel[e] {
+                    Some(i) if !full && self.may_skip(out.len(), -jf.cands[i].gap) => {
+                        let c = jf.cands[i];
+                        EndEval::lean(Some(c.case), -c.gap, None)
+                    }
                     Some(i) => {
                         let c = jf.cands[i];
                         let (wn, wt) = c.force_directions(pose, jg);
@@ -367,6 +426,10 @@ impl ComplianceStepper {
                 let r = pc - pose.g[j];
                 let dir = |v: crate::math::Vector| ab.direction(v, &r);
                 let delta = -((pc - ab.point).dot(&nn) + shift);
+                if !full && self.may_skip(out.len(), delta) {
+                    out.push(EndEval::lean(None, delta, face));
+                    continue;
+                }
                 let (wn, wt) = (dir(nn).sparse(dofs), dir(tn).sparse(dofs));
                 out.push(self.end_eval(out.len(), states, None, wn, wt, (delta, u, face)));
             }
@@ -379,6 +442,32 @@ impl ComplianceStepper {
         for (k, f) in self.forces.iter_mut().enumerate() {
             *f = [self.ends[2 * k].f_n, self.ends[2 * k + 1].f_n];
         }
+    }
+}
+
+/// [`Pose::set`] for the bodies with `posed[j]` (the others keep a placeholder: the reference
+/// pose, never read).
+fn set_pose(
+    pose: &mut Pose,
+    (bodies, dofs): (&[SegmentBody], &super::dofs::Dofs),
+    q: &[Real],
+    posed: &[bool],
+) {
+    pose.d.clear();
+    pose.sc.clear();
+    pose.g.clear();
+    for (j, b) in bodies.iter().enumerate() {
+        if !posed[j] {
+            pose.d.push(crate::math::Vector::zeros());
+            pose.sc.push((0.0, 1.0));
+            pose.g.push(b.centroid);
+            continue;
+        }
+        let [x, y, th] = dofs.plan_of(j, q);
+        let d = crate::math::Vector::new(x, y);
+        pose.d.push(d);
+        pose.sc.push(th.sin_cos());
+        pose.g.push(b.centroid + d);
     }
 }
 
@@ -399,12 +488,12 @@ impl ComplianceStepper {
         let (h, th, hth) = (self.h, self.th, self.hth);
         // no force at t_k (most steps): the base and the first guess are `u_free`
         let (base, guess) = if self.r_k.iter().all(|r| *r == 0.0) {
-            (inp.u_free.clone(), inp.u_free.clone())
+            (std::borrow::Cow::Borrowed(inp.u_free), inp.u_free.clone())
         } else {
             let wr = inp.winv.mul(&self.r_k);
             let base = inp.u_free + &wr * (h * (1.0 - th));
             let guess = &base + &wr * hth;
-            (base, guess)
+            (std::borrow::Cow::Owned(base), guess)
         };
         let tr = Trial {
             q: inp.q,
@@ -440,15 +529,21 @@ impl ComplianceStepper {
             // the iterate with the smallest residual was kept
             Solved::Failed => self.stats.newton_failures += 1,
         }
-        let r_new = gen_force(&ev, un.len());
-        let u_mid = (inp.u + &un) * 0.5;
+        let mut r_new = std::mem::take(&mut self.r_new);
+        gen_force_into(&ev, &mut r_new);
+        let mut u_mid = std::mem::take(&mut self.u_mid);
+        for (m, (a, b)) in u_mid.iter_mut().zip(inp.u.iter().zip(un.iter())) {
+            *m = (a + b) * 0.5;
+        }
         // no force at either end of the step (most steps): no contact work
         if !(r_new.iter().all(|r| *r == 0.0) && self.r_k.iter().all(|r| *r == 0.0)) {
             let rbar = &self.r_k * (1.0 - th) + &r_new * th;
             self.d_cont -= h * u_mid.dot(&rbar);
         }
         self.track_impacts(log, inp.t_next, inp.u, &un, &u_mid, &ev);
-        self.r_k = r_new;
+        self.u_mid = u_mid;
+        // the old `R_k` is the next step's scratch
+        self.r_new = std::mem::replace(&mut self.r_k, r_new);
         let penetration = ev
             .iter()
             .map(|e| e.delta)

@@ -58,25 +58,43 @@ pub(super) fn solve_small(s: DMatrix<Real>, y: State) -> Option<State> {
 }
 
 impl ComplianceStepper {
-    /// `q_{k+1}` for the trial `u_{k+1} = un`.
-    pub(super) fn q_of(&self, tr: &Trial, un: &State) -> State {
-        tr.q + (tr.u * (1.0 - self.th) + un * self.th) * self.h
+    /// `q_{k+1} = q_k + h ((1−θ) u_k + θ u_{k+1})` for the trial `u_{k+1} = un`, into `out`
+    /// (entry by entry the operations of the whole-vector expression).
+    pub(super) fn q_of_into(&self, tr: &Trial, un: &State, out: &mut State) {
+        let (th, h) = (self.th, self.h);
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = tr.q[i] + (tr.u[i] * (1.0 - th) + un[i] * th) * h;
+        }
     }
 
-    /// The ends at the trial `un`.
+    /// The ends at the trial `un` (the far-open ones lean: [`ComplianceStepper::may_skip`]).
     pub(super) fn eval_at(&self, tr: &Trial, un: &State) -> Vec<EndEval> {
-        self.eval_ends(&self.q_of(tr, un), un, &self.states, tr.ground)
+        self.eval_with(tr, un, false)
+    }
+
+    /// The ends at the trial `un`, each with its force directions if `full`.
+    pub(super) fn eval_with(&self, tr: &Trial, un: &State, full: bool) -> Vec<EndEval> {
+        let mut q = self.q_trial.borrow_mut();
+        self.q_of_into(tr, un, &mut q);
+        self.eval_ends(&q, un, &self.states, tr.ground, full)
     }
 
     /// The residual `r(u) = u − base − hθ Ŵ⁻¹ R(u)`.
     pub(super) fn resid(&self, tr: &Trial, un: &State, ev: &[EndEval]) -> State {
-        un - &tr.base - tr.winv.mul(&gen_force(ev, un.len())) * self.hth
+        un - &*tr.base - tr.winv.mul(&gen_force(ev, un.len())) * self.hth
     }
 
     /// Newton with backtracking on `r(u) = 0` from `un`; returns the converged iterate or, if
     /// none, the one with the smallest residual (`converged = false`).
     pub(super) fn newton(&self, tr: &Trial, mut un: State) -> (bool, State, Vec<EndEval>) {
         let mut ev = self.eval_at(tr, &un);
+        // no force at the first guess `base` (an open step): `r = 0` exactly, no product formed
+        if un == *tr.base
+            && un.iter().all(|x| x.is_finite())
+            && ev.iter().all(|e| e.f_n == 0.0 && e.f_t == 0.0)
+        {
+            return (true, un, ev);
+        }
         let mut r = self.resid(tr, &un, &ev);
         // the iterate with the smallest residual so far: the current one (`None`) until a worse
         // one replaces it, and only then copied
@@ -189,7 +207,7 @@ impl ComplianceStepper {
         ev0: &[EndEval],
     ) -> Option<(State, Vec<EndEval>)> {
         let held: Vec<usize> = (0..ev0.len())
-            .filter(|&e| ev0[e].present && ev0[e].delta.abs() < 1e-6)
+            .filter(|&e| ev0[e].present && ev0[e].delta.abs() < super::CLOSURE_WINDOW)
             .collect();
         if held.is_empty() {
             return None;
@@ -199,9 +217,9 @@ impl ComplianceStepper {
         let mut un = u0.clone();
         let mut lam: Vec<Real> = held.iter().map(|&e| ev0[e].f_n).collect();
         for _ in 0..30 {
-            let mut ev = self.eval_at(tr, &un);
+            let mut ev = self.eval_with(tr, &un, true);
             self.hold(&mut ev, &held, &lam, &un);
-            let r_u = &un - &tr.base - tr.winv.mul(&gen_force(&ev, nq)) * hth;
+            let r_u = &un - &*tr.base - tr.winv.mul(&gen_force(&ev, nq)) * hth;
             let mut r = State::zeros(n);
             r.rows_mut(0, nq).copy_from(&r_u);
             for (i, &e) in held.iter().enumerate() {
@@ -242,7 +260,7 @@ impl ComplianceStepper {
         held: &[usize],
         lam: &[Real],
     ) -> Option<(State, Vec<EndEval>)> {
-        let mut ev = self.eval_at(tr, &un);
+        let mut ev = self.eval_with(tr, &un, true);
         for (i, &e) in held.iter().enumerate() {
             let ddot = -ev[e].rel(&un).0;
             let f_hi = self.sites[e / 2]
