@@ -79,6 +79,7 @@ pub mod output;
 pub mod param;
 mod peaks;
 pub mod problem;
+pub mod projection;
 mod rigid;
 pub mod scenario;
 mod scheme;
@@ -237,6 +238,11 @@ pub struct Energy {
     /// Work done on the nonlinear elements of a bridge (yielding bearings beyond `½ qᵀ K q`,
     /// restrainers) since t = 0 (`sim::bridge`; 0 without any).
     pub elements: Real,
+    /// Work done on the structure by the position projection since t = 0
+    /// ([`projection`]; 0 without it): the change of `½ qᵀ K q` plus the work done on the
+    /// nonlinear elements over the corrections `Δq`. The balance reads
+    /// `E_0 + W_in + W_proj = T + V + D_viscous + D_contact + W_elements`.
+    pub projection: Real,
 }
 
 /// The two-deck names of the four seated ends ([`output::pair_seat_name`]).
