@@ -44,7 +44,7 @@ pub const DEFAULT_TOLERANCE: Real = 1e-11;
 /// Most passes (linearised solves) of one step's projection.
 pub const MAX_PASSES: usize = 20;
 
-/// What a run's projection did ([`super::BridgeSummary::projection`]).
+/// What a run's projection did ([`super::bridge::BridgeSummary::projection`]).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct ProjectionStats {
     /// Steps whose end position was corrected.
