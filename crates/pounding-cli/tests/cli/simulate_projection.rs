@@ -75,3 +75,31 @@ fn projection_key_must_be_a_boolean() {
     assert!(err.contains("boolean"), "{err}");
     assert!(!o.exists());
 }
+
+#[test]
+fn a_batch_runs_with_the_projection() {
+    let d = scratch_dir("simproj", "batch");
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let rec = root.join("data/records/RSN6_IMPVALL.I_I-ELC180-hor1.AT2");
+    let pen = |flag: Option<&str>, n: &str| -> Vec<f64> {
+        let o = d.join(n);
+        let mut a = vec!["simulate", "--duration", "20", "--records"];
+        a.push(rec.to_str().unwrap());
+        a.extend_from_slice(&["--scales", "1,1.5", "--out", o.to_str().unwrap()]);
+        a.extend(flag);
+        let (code, _, err) = run_capture(&a);
+        assert_eq!(code, Some(0), "{err}");
+        let text = std::fs::read_to_string(o.join("batch.csv")).unwrap();
+        let mut lines = text.lines();
+        let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+        let col = head.iter().position(|c| *c == "max_penetration_m").unwrap();
+        lines
+            .map(|l| l.split(',').nth(col).unwrap().parse().unwrap())
+            .collect()
+    };
+    let plain = pen(None, "plain");
+    let projected = pen(Some("--projection"), "projected");
+    assert_eq!(plain.len(), 2);
+    assert!(plain.iter().all(|p| *p > 1e-10), "{plain:?}");
+    assert!(projected.iter().all(|p| *p <= 1e-10), "{projected:?}");
+}
