@@ -357,7 +357,7 @@ pub(crate) struct RunResult {
     pub max_input_energy: Real,
     /// The observers' tables (or what they are derived from).
     pub tables: Vec<TableSource>,
-    /// What the position projection did (`None`: not asked for, or no rigid site).
+    /// What the position projection did (`None`: not asked for).
     pub projection: Option<super::projection::ProjectionStats>,
 }
 
@@ -395,10 +395,12 @@ pub(crate) fn run<S: Stepper>(
         o.reserve(rows);
     }
     let mut log = ImpactLog::default();
-    let mut projector = stepper
-        .projected_sites()
-        .filter(|_| settings.projection)
-        .map(|s| Projector::new(sc, s, settings.projection_tolerance, &settings.lemke));
+    // a run without rigid sites projects nothing, and says so
+    let mut projector = settings.projection.then(|| {
+        let sites = stepper.projected_sites();
+        let sites = sites.unwrap_or_else(|| super::projection::Sites::none(bridge.joints.len()));
+        Projector::new(sc, sites, settings.projection_tolerance, &settings.lemke)
+    });
     if projector.is_some() {
         ledger.proj = Some(0.0);
     }

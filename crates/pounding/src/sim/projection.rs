@@ -70,6 +70,16 @@ pub(crate) struct Sites {
     pub abutments: [bool; 2],
 }
 
+impl Sites {
+    /// No site (a bridge without rigid sites).
+    pub fn none(joints: usize) -> Self {
+        Self {
+            joints: vec![false; joints],
+            abutments: [false; 2],
+        }
+    }
+}
+
 /// `M⁻¹`: one `3 × 3` block per segment, or dense (a coupled system); `Singular` when `M` has
 /// no inverse (no correction is then possible: every step that needs one is a failure).
 enum MassInverse {

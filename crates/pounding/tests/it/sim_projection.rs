@@ -192,3 +192,20 @@ fn projection_key_reads_as_a_boolean() {
         "{err}"
     );
 }
+
+/// A compliance-law run asked for the projection projects nothing (its penetration is the law's
+/// deformation): the same histories, and its summary says no step was corrected.
+#[test]
+fn a_compliance_run_is_not_projected() {
+    let sc = scenario(None, &same).with_law_replacing("hertz");
+    let (off, on) = (run(&sc, false, 20.0, None), run(&sc, true, 20.0, None));
+    assert!(off.q == on.q && off.energy == on.energy);
+    let p = on.summary.projection.expect("reported");
+    assert_eq!((p.corrected_steps, p.failures), (0, 0));
+    assert_eq!(on.summary.max_overlap, 0.0);
+    assert!(
+        on.summary.peak_penetration > 1e-6,
+        "{}",
+        on.summary.peak_penetration
+    );
+}
