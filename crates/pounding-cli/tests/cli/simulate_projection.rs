@@ -40,6 +40,26 @@ fn projection_flag_and_key_keep_the_rigid_gaps_closed() {
     assert!(p["corrected_steps"].as_u64().unwrap() > 0, "{p}");
     assert_eq!(p["failures"].as_u64(), Some(0));
     assert!(p["max_overlap_before_m"].as_f64().unwrap() > 1e-10);
+    // history.csv carries the projection's work, and its last row's balance closes with it
+    let hist = std::fs::read_to_string(out("flag").join("history.csv")).unwrap();
+    let head: Vec<&str> = hist.lines().next().unwrap().split(',').collect();
+    let last: Vec<f64> = hist
+        .lines()
+        .last()
+        .unwrap()
+        .split(',')
+        .map(|x| x.parse().unwrap())
+        .collect();
+    let col = |name: &str| last[head.iter().position(|c| *c == name).expect(name)];
+    assert_eq!(col("projection_work_J"), w);
+    let balance = col("input_energy_J") + col("projection_work_J")
+        - (col("kinetic_energy_J")
+            + col("strain_energy_J")
+            + col("viscous_dissipation_J")
+            + col("contact_dissipation_J"));
+    assert!(balance.abs() < 1e-10 * input, "{balance}");
+    let plain_hist = std::fs::read_to_string(out("plain").join("history.csv")).unwrap();
+    assert!(!plain_hist.lines().next().unwrap().contains("projection"));
     // the key: the same files as the flag
     let (code, text, _) = run_capture(&["simulate", "--print-default"]);
     assert_eq!(code, Some(0));
