@@ -255,7 +255,9 @@ pub enum SimStatus {
     Completed,
     /// All steps done, but some contact LCPs were not solved by Lemke nor by enumeration (in those
     /// steps the frictionless LCP was used), or a solution failed the post-solve checks of the
-    /// impact laws on the recovered velocities (see [`bridge::BridgeSolution::lcp_failures`]).
+    /// impact laws on the recovered velocities (see [`bridge::BridgeSolution::lcp_failures`]),
+    /// or a step's position projection left a gap below its tolerance
+    /// ([`projection::ProjectionStats::failures`]).
     CompletedWithLcpFailures,
     /// The state or an energy of the bookkeeping became non-finite; the run stopped.
     Diverged,
