@@ -17,6 +17,7 @@ mod bridge;
 mod plots;
 
 use crate::cmd_simulate;
+use crate::compare_report::Job;
 use anyhow::{Context, Result, anyhow};
 use pounding::math::Real;
 use pounding::output::{float_token, write_atomic};
@@ -80,16 +81,6 @@ impl Args {
 pub(crate) struct Ran<'a> {
     law: &'a str,
     sol: &'a BridgeSolution,
-}
-
-/// What the writers of either form need: the output directory, the runs, the scenario (name
-/// and text) and flags as given, the start time.
-pub(crate) struct Job<'a> {
-    pub(crate) out: &'a Path,
-    pub(crate) runs: &'a [LawRun],
-    pub(crate) scenario: (&'a str, &'a str),
-    pub(crate) flags: Vec<String>,
-    pub(crate) t_start: Instant,
 }
 
 /// Runs `pounding compare`: checks `--laws` and `--dt`, builds and validates every law's run

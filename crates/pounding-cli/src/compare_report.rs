@@ -9,11 +9,23 @@
 //! The wall times are the page's only non-deterministic bytes; each stands between `<!--wall-->`
 //! and `<!--/wall-->` (the golden tests mask them).
 
-use crate::cmd_compare::Job;
 use crate::report::{CSS, esc};
 use crate::sim_report::sig6_of;
+use pounding::sim::compare::LawRun;
 use pounding::sim::compare::agreement;
 use std::fmt::Write;
+use std::path::Path;
+use std::time::Instant;
+
+/// What the writers of either form need: the output directory, the runs, the scenario (name
+/// and text) and flags as given, the start time.
+pub(crate) struct Job<'a> {
+    pub(crate) out: &'a Path,
+    pub(crate) runs: &'a [LawRun],
+    pub(crate) scenario: (&'a str, &'a str),
+    pub(crate) flags: Vec<String>,
+    pub(crate) t_start: Instant,
+}
 
 /// What the page shows besides the runs.
 pub(crate) struct Page<'a> {

@@ -93,7 +93,7 @@ pub fn report_html(input: &ReportInput, summary_json: &str) -> String {
             ""
         }
     );
-    crate::sim_report_verdict::section(&mut h, input, &summary);
+    crate::sim_report_verdict::section(&mut h, input.verdict, input.code_check.as_ref(), &summary);
     warnings(&mut h, &summary);
     if let Some(c) = &input.code_check {
         h.push_str(&c.html);

@@ -105,7 +105,7 @@ pub(crate) fn gaps_and_omissions(r: &CheckReport) -> String {
         }
         h.push_str("</table>\n");
     }
-    for o in pounding::assessment::check_summary::omissions(r) {
+    for o in pounding::assessment::check_write::omissions(r) {
         let _ = writeln!(h, "<p>Not included: {}.</p>", esc(&o));
     }
     h

@@ -3,21 +3,27 @@
 //! warnings and the code check's verdict (with a link to its section).
 
 use crate::report::esc;
-use crate::sim_report::ReportInput;
+use crate::sim_report_check::CodeCheckSection;
+use pounding::sim::output::VerdictLine;
 use serde_json::Value;
 use std::fmt::Write;
 
 /// The verdict: one row per question the run answers, the alarming ones in red, then the number
 /// of warnings and whether a code check follows.
-pub fn section(h: &mut String, input: &ReportInput, summary: &Value) {
-    if input.verdict.is_empty() {
+pub fn section(
+    h: &mut String,
+    verdict: &[VerdictLine],
+    code_check: Option<&CodeCheckSection>,
+    summary: &Value,
+) {
+    if verdict.is_empty() {
         return;
     }
     h.push_str(
         "<h2 id=\"verdict\">Verdict</h2>\n<table class=\"verdict\">\n<style>table.verdict \
          td{text-align:left}</style>\n",
     );
-    for l in input.verdict {
+    for l in verdict {
         let _ = writeln!(
             h,
             "<tr><th>{}</th><td{}>{}</td></tr>",
@@ -45,7 +51,7 @@ pub fn section(h: &mut String, input: &ReportInput, summary: &Value) {
             format!("{n} (see <a href=\"#warnings\">Warnings</a>).")
         }
     );
-    if let Some(c) = &input.code_check {
+    if let Some(c) = code_check {
         let alarm = if c.verdict.starts_with("FAIL") {
             " class=\"v-contradicted\""
         } else {

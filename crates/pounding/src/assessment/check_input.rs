@@ -113,7 +113,7 @@ pub struct CodeCheckInput {
     pub jra_ground: JraGround,
     /// The codes that apply (the others are not evaluated and do not govern): every code by
     /// default.
-    pub codes: Vec<super::check::Code>,
+    pub codes: Vec<super::code_check::Code>,
     /// The keys the file sets (the others are at their [`DEFAULTS`]).
     pub given: Vec<&'static str>,
     /// Where the per-segment keys are written, for [`CodeCheckInput::check_segments`].

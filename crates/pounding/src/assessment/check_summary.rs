@@ -6,7 +6,7 @@
 
 use super::check::{CODES, CheckReport, Code};
 use super::check_run::against_run;
-use super::check_write::{ec8_sections_json, overall};
+use super::check_write::{ec8_sections_json, omissions, overall};
 use super::{CodeCheckInput, check_bridge};
 use crate::output::json_float;
 use crate::sim::bridge::{BridgeModel, SeatSummary};
@@ -41,21 +41,6 @@ pub fn code_counts(r: &CheckReport, code: Code) -> (usize, usize) {
         })
         .collect();
     (vals.iter().filter(|&&f| f).count(), vals.len())
-}
-
-/// What the check does not include, for the reader: JRA's curved-bridge rotation term on a
-/// bridge with curved segments.
-pub fn omissions(r: &CheckReport) -> Vec<String> {
-    let curved = r.ends.iter().any(|e| e.at.subtended_deg.is_some());
-    let mut out = Vec::new();
-    if curved {
-        out.push(
-            "JRA: the curved-bridge rotation term is not included (the segments' subtended \
-             angles are reported only)"
-                .to_string(),
-        );
-    }
-    out
 }
 
 /// The verdict in one sentence: `FAIL: 8 of 8 seated ends are shorter than a code requires

@@ -21,7 +21,9 @@
 
 use thiserror::Error;
 
+mod codes;
 mod gap;
+pub use codes::{CODES, Code};
 pub use gap::{cqc_rho, gap_ddc, gap_srss};
 
 const INCH: f64 = 0.0254;

@@ -31,6 +31,7 @@
 //! the as-built bridge (independent resamples of the records), the same way.
 
 use super::AssessmentError;
+pub use super::design_file::DesignError;
 use super::hazard_input::HazardInput;
 use super::run::{Plan, RunRow};
 use super::study::{Fits, Study};
@@ -72,7 +73,7 @@ pub struct Design {
     /// How the studies were read (to read more: [`Design::study_with`]).
     reader: Reader,
     /// The `[search]` table, when given.
-    pub search: Option<super::design_search::SearchSpec>,
+    pub search: Option<super::design_file::SearchSpec>,
 }
 
 /// What reading a member's study needs.
@@ -114,29 +115,6 @@ impl Reader {
         st.hazard = base.hazard.clone();
         Ok(st)
     }
-}
-
-/// Why a design cannot start.
-#[derive(Debug, thiserror::Error)]
-pub enum DesignError {
-    /// The design file: syntax, keys, a variant's override.
-    #[error(transparent)]
-    Variant(#[from] VariantError),
-    /// The as-built study.
-    #[error(transparent)]
-    Study(#[from] AssessmentError),
-    /// A `[design]` key.
-    #[error("{origin}:{line}: `{key}`: {message}")]
-    Key {
-        /// The design file.
-        origin: String,
-        /// 1-based line (1 when the key is missing).
-        line: usize,
-        /// The key.
-        key: String,
-        /// What is wrong.
-        message: String,
-    },
 }
 
 #[derive(serde::Deserialize)]
@@ -269,7 +247,7 @@ impl Design {
                 study: st,
             });
         }
-        let search = super::design_search::SearchSpec::from_design(&text, &origin)?;
+        let search = super::design_file::SearchSpec::from_design(&text, &origin)?;
         Ok(Design {
             origin,
             scenario_path,

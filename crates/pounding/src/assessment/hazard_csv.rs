@@ -2,7 +2,6 @@
 //! ([`super::hazard_input`]).
 
 use super::AssessmentError;
-use super::hazard_input::key_err;
 use crate::fragility::hazard::HazardCurve;
 use crate::math::Real;
 
@@ -53,11 +52,16 @@ pub fn read_csv(text: &str, origin: &str) -> Result<HazardCurve, AssessmentError
         .map(|(i, l)| (i + 1, l.trim().trim_start_matches('\u{feff}')))
         .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
     let Some((hl, header)) = rows.next() else {
-        return Err(key_err(origin, "header", None, "empty hazard file".into()));
+        return Err(AssessmentError::key(
+            origin,
+            "header",
+            None,
+            "empty hazard file".into(),
+        ));
     };
     let cols: Vec<&str> = header.split(',').map(str::trim).collect();
     let [im_col, rate_col] = cols[..] else {
-        return Err(key_err(
+        return Err(AssessmentError::key(
             origin,
             "header",
             Some(hl),
@@ -67,7 +71,7 @@ pub fn read_csv(text: &str, origin: &str) -> Result<HazardCurve, AssessmentError
     match im_col.strip_prefix("im_") {
         Some("g") => {}
         Some(u) => {
-            return Err(key_err(
+            return Err(AssessmentError::key(
                 origin,
                 im_col,
                 Some(hl),
@@ -78,7 +82,7 @@ pub fn read_csv(text: &str, origin: &str) -> Result<HazardCurve, AssessmentError
             ));
         }
         None => {
-            return Err(key_err(
+            return Err(AssessmentError::key(
                 origin,
                 im_col,
                 Some(hl),
@@ -87,7 +91,7 @@ pub fn read_csv(text: &str, origin: &str) -> Result<HazardCurve, AssessmentError
         }
     }
     if rate_col != "rate" {
-        return Err(key_err(
+        return Err(AssessmentError::key(
             origin,
             rate_col,
             Some(hl),
@@ -99,7 +103,7 @@ pub fn read_csv(text: &str, origin: &str) -> Result<HazardCurve, AssessmentError
     for (ln, l) in rows {
         let cells: Vec<&str> = l.split(',').map(str::trim).collect();
         if cells.len() != 2 {
-            return Err(key_err(
+            return Err(AssessmentError::key(
                 origin,
                 "row",
                 Some(ln),
@@ -107,15 +111,16 @@ pub fn read_csv(text: &str, origin: &str) -> Result<HazardCurve, AssessmentError
             ));
         }
         let num = |c: &str, col: &str| {
-            c.parse::<Real>()
-                .map_err(|_| key_err(origin, col, Some(ln), format!("not a number: {c:?}")))
+            c.parse::<Real>().map_err(|_| {
+                AssessmentError::key(origin, col, Some(ln), format!("not a number: {c:?}"))
+            })
         };
         pts.push((num(cells[0], im_col)?, num(cells[1], rate_col)?));
         lines.push(ln);
     }
     check_points(&pts).map_err(|(col, i, m)| {
         let c = if col == "im" { im_col } else { rate_col };
-        key_err(origin, c, lines.get(i).copied().or(Some(hl)), m)
+        AssessmentError::key(origin, c, lines.get(i).copied().or(Some(hl)), m)
     })?;
     Ok(HazardCurve::Table {
         im: pts.iter().map(|p| p.0).collect(),

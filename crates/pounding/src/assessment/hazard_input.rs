@@ -78,20 +78,6 @@ impl Cx<'_> {
     }
 }
 
-pub(crate) fn key_err(
-    origin: &str,
-    key: &str,
-    line: Option<usize>,
-    message: String,
-) -> AssessmentError {
-    AssessmentError::Key {
-        message,
-        key: key.into(),
-        origin: origin.into(),
-        line,
-    }
-}
-
 impl HazardInput {
     /// The `[hazard]` table of the TOML `text` named `origin` (`None` when it has none); a
     /// `file` is relative to `dir`.
@@ -137,7 +123,7 @@ impl HazardInput {
         );
         let unit_of = |u: &Sp<String>| -> Result<(), AssessmentError> {
             match u {
-                None => Err(key_err(
+                None => Err(AssessmentError::key(
                     origin,
                     "hazard.im_unit",
                     cx.line(&sec),
@@ -162,7 +148,7 @@ impl HazardInput {
             s.file.is_some(),
         ];
         if given.iter().filter(|&&g| g).count() != 1 {
-            return Err(key_err(
+            return Err(AssessmentError::key(
                 origin,
                 "hazard",
                 cx.line(&sec),
@@ -190,7 +176,7 @@ impl HazardInput {
             unit_of(&s.im_unit)?;
             let get = |k: &str, v: &Sp<Real>| -> Result<Real, AssessmentError> {
                 let Some(v) = v else {
-                    return Err(key_err(
+                    return Err(AssessmentError::key(
                         origin,
                         &format!("hazard.{k}"),
                         cx.line(&sec),
@@ -213,7 +199,7 @@ impl HazardInput {
         } else {
             unit_of(&s.im_unit)?;
             let (Some(im), Some(rate)) = (&s.im, &s.rate) else {
-                return Err(key_err(
+                return Err(AssessmentError::key(
                     origin,
                     if s.im.is_none() {
                         "hazard.im"
@@ -301,7 +287,7 @@ impl HazardInput {
         };
         let (origin, line) = &self.measure_at;
         if kind != spec.kind {
-            return Err(key_err(
+            return Err(AssessmentError::key(
                 origin,
                 "hazard.measure",
                 *line,
@@ -317,7 +303,7 @@ impl HazardInput {
             && kind == ImKind::Sa
             && ((t - spec.period) / spec.period).abs() > 0.05
         {
-            return Err(key_err(
+            return Err(AssessmentError::key(
                 origin,
                 "hazard.period_s",
                 *line,

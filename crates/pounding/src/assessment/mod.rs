@@ -41,6 +41,7 @@ mod check_values;
 pub mod check_write;
 pub mod code_check;
 pub mod design;
+pub mod design_file;
 pub mod design_out;
 pub mod design_search;
 pub mod design_write;
@@ -153,4 +154,16 @@ pub enum AssessmentError {
         /// The IM's label.
         im: String,
     },
+}
+
+impl AssessmentError {
+    /// A bad or missing value of `key` set at `line` (`None`: not written) of `origin`.
+    pub(crate) fn key(origin: &str, key: &str, line: Option<usize>, message: String) -> Self {
+        AssessmentError::Key {
+            message,
+            key: key.into(),
+            origin: origin.into(),
+            line,
+        }
+    }
 }

@@ -20,8 +20,7 @@ pub const DEFAULT_RUNS_PER_PART: usize = 64;
 pub const MAX_RUNS_PER_PART: usize = 100_000;
 /// Largest number of runs of one campaign.
 pub const MAX_RUNS: usize = 100_000_000;
-/// The name of the one variant of a campaign without variants.
-pub const BASE_VARIANT: &str = "base";
+pub use super::variants::BASE_VARIANT;
 
 type Sp<T> = Option<Spanned<T>>;
 

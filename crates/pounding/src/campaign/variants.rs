@@ -34,6 +34,8 @@ use std::path::Path;
 
 /// Largest number of variants of one campaign.
 pub const MAX_VARIANTS: usize = 100_000;
+/// The name of the one variant of a campaign without variants.
+pub const BASE_VARIANT: &str = "base";
 
 /// One variant, ready to run.
 pub struct VariantRun {
@@ -205,7 +207,7 @@ pub fn variants(
         let mut h = Fnv::default();
         h.text(base_text);
         return Ok(vec![VariantRun {
-            name: super::spec::BASE_VARIANT.into(),
+            name: BASE_VARIANT.into(),
             setup: base.setup.clone(),
             limits: base.limits.clone(),
             fingerprint: h.0,
@@ -226,7 +228,7 @@ pub fn variants(
             })
             .collect(),
     };
-    if let Some(v) = combos.iter().find(|v| v.name == super::spec::BASE_VARIANT) {
+    if let Some(v) = combos.iter().find(|v| v.name == BASE_VARIANT) {
         return Err(CampaignError::Key {
             message: format!(
                 "the name {:?} is reserved for the runs of a campaign without variants (a store \

@@ -329,48 +329,9 @@ impl CaltransBackwall {
 
 /// A backfill spring as a driver holds it: the law, the committed state and the accumulated
 /// dissipation.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct BackfillElement {
-    law: HyperbolicGap,
-    committed: HyperbolicGapState,
-    dissipated: Real,
-}
+pub type BackfillElement = super::Held<HyperbolicGap>;
 
-impl BackfillElement {
-    /// A virgin backfill spring.
-    pub fn new(law: HyperbolicGap) -> Self {
-        BackfillElement {
-            law,
-            committed: law.initial_state(),
-            dissipated: 0.0,
-        }
-    }
-    /// The law.
-    pub fn law(&self) -> &HyperbolicGap {
-        &self.law
-    }
-    /// The committed state.
-    pub fn committed(&self) -> &HyperbolicGapState {
-        &self.committed
-    }
-    /// Trial response at deformation `u` (pure).
-    pub fn trial(&self, u: Real) -> HyperbolicGapResponse {
-        self.law.response(u, &self.committed)
-    }
-    /// Accepts a trial response computed from the current committed state.
-    pub fn commit(&mut self, response: &HyperbolicGapResponse) {
-        self.committed = response.trial;
-        self.dissipated += response.dissipation;
-    }
-    /// Stored energy at the committed state \[J\].
-    pub fn stored_energy(&self) -> Real {
-        self.law.stored_energy(&self.committed)
-    }
-    /// Dissipation accumulated over the committed steps \[J\].
-    pub fn dissipated(&self) -> Real {
-        self.dissipated
-    }
-}
+uniaxial_law!(HyperbolicGap, HyperbolicGapState, HyperbolicGapResponse);
 
 #[cfg(test)]
 mod tests {

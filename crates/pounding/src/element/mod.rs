@@ -18,7 +18,8 @@
 //! `response` never mutates anything (safe to call in parallel, any number of times per step).
 //! The state types are `Copy`; [`bearing::BearingElement`], [`restrainer::RestrainerElement`],
 //! [`backfill::BackfillElement`] and [`shear_key::ShearKeyElement`] are small holders (law + committed state + accumulated dissipation) for a driver that prefers
-//! `trial`/`commit` methods.
+//! `trial`/`commit` methods; the last two are the one generic holder [`Held`] of a
+//! [`UniaxialLaw`].
 //!
 //! # Energy
 //! Every law reports its *stored* (recoverable, elastic) energy `E(state)` and the *plastic
@@ -39,6 +40,29 @@
 //! `slack`, `kmax`, `kur`, `rf`, `fult`, `gap`, `height`, `width`, `skew`) — the same key a scenario file uses — so a scenario reader can prefix file and line
 //! via [`ElementError::key`].
 
+/// Implements [`UniaxialLaw`] for a law whose inherent `initial_state`, `response` and
+/// `stored_energy` have the trait's signatures and whose response has `trial` and `dissipation`.
+macro_rules! uniaxial_law {
+    ($law:ty, $state:ty, $response:ty) => {
+        impl super::UniaxialLaw for $law {
+            type State = $state;
+            type Response = $response;
+            fn initial_state(&self) -> $state {
+                <$law>::initial_state(self)
+            }
+            fn response(&self, u: Real, committed: &$state) -> $response {
+                <$law>::response(self, u, committed)
+            }
+            fn stored_energy(&self, state: &$state) -> Real {
+                <$law>::stored_energy(self, state)
+            }
+            fn accepted(r: &$response) -> ($state, Real) {
+                (r.trial, r.dissipation)
+            }
+        }
+    };
+}
+
 pub mod backfill;
 pub mod bearing;
 pub mod restrainer;
@@ -51,6 +75,69 @@ pub use shear_key::{ShearKey, ShearKeyElement, ShearKeyResponse, ShearKeyState};
 
 use crate::math::Real;
 use thiserror::Error;
+
+/// A rate-independent law of one deformation in the functional form of this module:
+/// `response(u, &committed)` gives the trial state and the step's dissipation.
+pub trait UniaxialLaw: Copy {
+    /// The committed history variables.
+    type State: Copy + PartialEq + std::fmt::Debug;
+    /// A trial response (force, tangent, trial state, dissipation).
+    type Response;
+    /// The virgin state.
+    fn initial_state(&self) -> Self::State;
+    /// Trial response at deformation `u` from the committed state (pure).
+    fn response(&self, u: Real, committed: &Self::State) -> Self::Response;
+    /// Stored (recoverable) energy of a state \[J\].
+    fn stored_energy(&self, state: &Self::State) -> Real;
+    /// What committing `response` keeps: its trial state and its step dissipation \[J\].
+    fn accepted(response: &Self::Response) -> (Self::State, Real);
+}
+
+/// A law as a driver holds it: the law, the committed state and the dissipation accumulated
+/// over the committed steps.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Held<L: UniaxialLaw> {
+    law: L,
+    committed: L::State,
+    dissipated: Real,
+}
+
+impl<L: UniaxialLaw> Held<L> {
+    /// A virgin element.
+    pub fn new(law: L) -> Self {
+        Held {
+            law,
+            committed: law.initial_state(),
+            dissipated: 0.0,
+        }
+    }
+    /// The law.
+    pub fn law(&self) -> &L {
+        &self.law
+    }
+    /// The committed state.
+    pub fn committed(&self) -> &L::State {
+        &self.committed
+    }
+    /// Trial response at deformation `u` (pure).
+    pub fn trial(&self, u: Real) -> L::Response {
+        self.law.response(u, &self.committed)
+    }
+    /// Accepts a trial response computed from the current committed state.
+    pub fn commit(&mut self, response: &L::Response) {
+        let (state, dissipation) = L::accepted(response);
+        self.committed = state;
+        self.dissipated += dissipation;
+    }
+    /// Stored energy at the committed state \[J\].
+    pub fn stored_energy(&self) -> Real {
+        self.law.stored_energy(&self.committed)
+    }
+    /// Dissipation accumulated over the committed steps \[J\].
+    pub fn dissipated(&self) -> Real {
+        self.dissipated
+    }
+}
 
 /// Bad element input: a parameter that is not finite or outside its range.
 #[derive(Debug, Error, Clone, PartialEq)]

@@ -143,45 +143,6 @@ impl ShearKey {
 
 /// A shear-key pair as a driver holds it: the law, the committed state and the accumulated
 /// plastic dissipation.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ShearKeyElement {
-    law: ShearKey,
-    committed: ShearKeyState,
-    dissipated: Real,
-}
+pub type ShearKeyElement = super::Held<ShearKey>;
 
-impl ShearKeyElement {
-    /// A virgin pair of keys at `v = 0`.
-    pub fn new(law: ShearKey) -> Self {
-        ShearKeyElement {
-            law,
-            committed: law.initial_state(),
-            dissipated: 0.0,
-        }
-    }
-    /// The law.
-    pub fn law(&self) -> &ShearKey {
-        &self.law
-    }
-    /// The committed state.
-    pub fn committed(&self) -> &ShearKeyState {
-        &self.committed
-    }
-    /// Trial response at deformation `v` (pure).
-    pub fn trial(&self, v: Real) -> ShearKeyResponse {
-        self.law.response(v, &self.committed)
-    }
-    /// Accepts a trial response computed from the current committed state.
-    pub fn commit(&mut self, response: &ShearKeyResponse) {
-        self.committed = response.trial;
-        self.dissipated += response.dissipation;
-    }
-    /// Stored energy at the committed state \[J\].
-    pub fn stored_energy(&self) -> Real {
-        self.law.stored_energy(&self.committed)
-    }
-    /// Plastic dissipation accumulated over the committed steps \[J\].
-    pub fn dissipated(&self) -> Real {
-        self.dissipated
-    }
-}
+uniaxial_law!(ShearKey, ShearKeyState, ShearKeyResponse);

@@ -42,7 +42,6 @@
 //!   variable ground motion, `pounding motion svgm`), the reference the run's ground motion.
 
 use super::SimError;
-use super::bridge::BridgeModel;
 use crate::ground_motion::GroundMotion;
 use crate::ground_motion::integral::GroundKinematics;
 use crate::math::{Real, Vector};
@@ -103,61 +102,6 @@ pub struct SupportLine {
     pub position: Vector,
 }
 
-impl BridgeModel {
-    /// The bridge's support lines, in order along the chain (module doc).
-    pub fn support_lines(&self) -> Vec<SupportLine> {
-        let bodies = self.layout();
-        let n = bodies.len();
-        let mut out = Vec::with_capacity(n + 1);
-        for s in 0..=n {
-            let (id, position) = match s {
-                0 => ("start".to_string(), bodies[0].start.mid),
-                s if s == n => ("end".to_string(), bodies[n - 1].end.mid),
-                s => (
-                    format!("joint{s}"),
-                    (bodies[s - 1].end.mid + bodies[s].start.mid) * 0.5,
-                ),
-            };
-            out.push(SupportLine { id, position });
-        }
-        out
-    }
-
-    /// Each support line's id and its distance \[m\] from the `start` line along the default
-    /// direction of a wave (from the `start` line toward the `end` one): the positions of
-    /// `pounding motion svgm --bridge`.
-    pub fn support_distances(&self) -> Vec<(String, Real)> {
-        let lines = self.support_lines();
-        let (p0, p1) = (lines[0].position, lines[lines.len() - 1].position);
-        let e = (p1 - p0) / (p1 - p0).norm();
-        lines
-            .into_iter()
-            // to the nanometre: the layout's sums leave rounding in the last digits
-            .map(|l| (l.id, ((l.position - p0).dot(&e) * 1e9).round() / 1e9))
-            .collect()
-    }
-
-    /// The support line under each bearing of each segment: the line of the segment end it
-    /// belongs to (the nearer one).
-    pub(crate) fn bearing_lines(&self) -> Vec<Vec<usize>> {
-        let bodies = self.layout();
-        self.bearing_points()
-            .iter()
-            .enumerate()
-            .map(|(i, pts)| {
-                let b = &bodies[i];
-                pts.iter()
-                    .map(|p| {
-                        let ds = (p - b.start.mid).dot(&b.start.inward).abs();
-                        let de = (p - b.end.mid).dot(&b.end.inward).abs();
-                        if ds <= de { i } else { i + 1 }
-                    })
-                    .collect()
-            })
-            .collect()
-    }
-}
-
 /// The supports' motion relative to the reference, evaluated at any time.
 #[derive(Debug, Clone)]
 pub(crate) struct SupportMotion {
@@ -167,14 +111,14 @@ pub(crate) struct SupportMotion {
 }
 
 impl SupportMotion {
-    /// The motion of `excitation` on `model` with reference `ground`; `None` when every
+    /// The motion of `excitation` on the support lines `lines` (`BridgeModel::support_lines`) with
+    /// reference `ground`; `None` when every
     /// support moves with the reference (uniform). Errors name the key at fault.
     pub fn new(
-        model: &BridgeModel,
+        lines: &[SupportLine],
         ground: &GroundMotion,
         excitation: &SupportExcitation,
     ) -> Result<Option<Self>, SimError> {
-        let lines = model.support_lines();
         let per_line = match excitation {
             SupportExcitation::Uniform => return Ok(None),
             SupportExcitation::WavePassage { v_app, .. } => {
@@ -186,7 +130,7 @@ impl SupportMotion {
                         "must be > 0 (m/s; inf for no wave passage)",
                     ));
                 }
-                match excitation.wave_delays(&lines) {
+                match excitation.wave_delays(lines) {
                     None => return Ok(None),
                     Some((_, delays)) => {
                         let longest = delays.iter().copied().fold(0.0, Real::max);
@@ -210,14 +154,14 @@ impl SupportMotion {
             }
             SupportExcitation::Records(recs) => {
                 let mut out = Vec::with_capacity(lines.len());
-                for l in &lines {
+                for l in lines {
                     let Some(r) = recs.iter().find(|r| r.id == l.id) else {
                         return Err(SimError::argument(
                             "ground_motion.supports",
                             format!(
                                 "no motion for support `{}` (the bridge's supports: {})",
                                 l.id,
-                                ids(&lines)
+                                ids(lines)
                             ),
                         ));
                     };
@@ -231,7 +175,7 @@ impl SupportMotion {
                         format!(
                             "the bridge has no support `{}` (its supports: {})",
                             r.id,
-                            ids(&lines)
+                            ids(lines)
                         ),
                     ));
                 }

@@ -126,7 +126,7 @@ pub(crate) fn integrate(
     // relative coordinates: every support moves with the one ground motion (support.rs), or
     // each its own motion relative to it (excitation.rs)
     super::support::check_uniform(&bridge.supports)?;
-    let motion = SupportMotion::new(model, ground, excitation)?;
+    let motion = SupportMotion::new(&model.support_lines(), ground, excitation)?;
     if motion.is_some() {
         check_apart(model)?;
     }

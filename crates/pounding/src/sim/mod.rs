@@ -71,6 +71,7 @@ mod driver;
 mod elements;
 pub mod excitation;
 pub(crate) mod integrate;
+mod line_search;
 mod mixed;
 pub mod model;
 mod observer;

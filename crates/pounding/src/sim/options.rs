@@ -148,14 +148,6 @@ pub fn history_rows(n_steps: usize, history_stride: usize) -> u64 {
     (n / s).saturating_add(1 + u64::from(!n.is_multiple_of(s)))
 }
 
-/// Estimated peak memory \[bytes\] of a two-deck run of `n_steps` steps keeping every
-/// `history_stride`-th step: the bridge estimate [`bridge_run_memory_bytes`] of two segments (the
-/// two-deck model runs as that bridge, with its trace and its observers' tables). Impact records
-/// (one per impact, not bounded by the step count) and allocator slack are not counted.
-pub fn run_memory_bytes(n_steps: usize, history_stride: usize) -> u64 {
-    bridge_run_memory_bytes(n_steps, history_stride, 2)
-}
-
 /// Bytes per kept history row of a bridge of `n_segments` segments (`J = N − 1` joints): the
 /// driver's trace (`t`, `q` and `u` of `3N` each, four candidate gaps, two end gaps, a slip and
 /// two end forces per joint, two abutment gaps, the energies) and the observers' tables
@@ -180,9 +172,11 @@ pub fn history_row_bytes(n_segments: usize) -> u64 {
 /// Bearings per segment assumed by [`history_row_bytes`] (four corner bearings, the default).
 pub const ESTIMATED_BEARINGS: u64 = 4;
 
-/// [`run_memory_bytes`] of a bridge of `n_segments` segments (the history row of
-/// [`history_row_bytes`]); the two-deck model is `n_segments = 2`.
-pub fn bridge_run_memory_bytes(n_steps: usize, history_stride: usize, n_segments: usize) -> u64 {
+/// Estimated peak memory \[bytes\] of a run of a bridge of `n_segments` segments (the two-deck
+/// model is `n_segments = 2`) over `n_steps` steps keeping every `history_stride`-th step: the
+/// ground motion's samples and the kept rows of [`history_row_bytes`]. Impact records (one per
+/// impact, not bounded by the step count) and allocator slack are not counted.
+pub fn run_memory_bytes(n_steps: usize, history_stride: usize, n_segments: usize) -> u64 {
     (n_steps as u64)
         .saturating_add(1)
         .saturating_mul(GROUND_BYTES_PER_STEP)
@@ -193,7 +187,7 @@ pub fn bridge_run_memory_bytes(n_steps: usize, history_stride: usize, n_segments
 
 /// The estimated memory of several runs held at once (a comparison keeps every law's history
 /// until it writes): each `(n_steps, history_stride, n_segments)` by
-/// [`bridge_run_memory_bytes`]. An error message (naming the limit and the ways around it) when
+/// [`run_memory_bytes`]. An error message (naming the limit and the ways around it) when
 /// the sum exceeds [`MAX_RUN_MEMORY_BYTES`].
 pub fn check_runs_memory(runs: &[(usize, usize, usize)]) -> Result<u64, String> {
     let bytes = runs_memory_bytes(runs);
@@ -213,7 +207,7 @@ pub fn check_runs_memory(runs: &[(usize, usize, usize)]) -> Result<u64, String> 
 
 fn runs_memory_bytes(runs: &[(usize, usize, usize)]) -> u64 {
     runs.iter().fold(0u64, |acc, &(n, s, segs)| {
-        acc.saturating_add(bridge_run_memory_bytes(n, s, segs))
+        acc.saturating_add(run_memory_bytes(n, s, segs))
     })
 }
 
@@ -236,11 +230,12 @@ pub fn runs_history_stride(runs: &[(usize, usize)], from: usize) -> Result<usize
     }
 }
 
-/// The smallest history stride whose [`bridge_run_memory_bytes`] is at most
-/// [`MAX_RUN_MEMORY_BYTES`] (`None` if even the first and last step are too much).
-pub fn min_bridge_history_stride(n_steps: usize, n_segments: usize) -> Option<usize> {
+/// The smallest history stride whose [`run_memory_bytes`] is at most
+/// [`MAX_RUN_MEMORY_BYTES`] (`None` if even keeping only the first and last step is too much;
+/// the estimate does not increase with the stride).
+pub fn min_history_stride(n_steps: usize, n_segments: usize) -> Option<usize> {
     smallest_stride(n_steps, |s| {
-        bridge_run_memory_bytes(n_steps, s, n_segments) <= MAX_RUN_MEMORY_BYTES
+        run_memory_bytes(n_steps, s, n_segments) <= MAX_RUN_MEMORY_BYTES
     })
 }
 
@@ -259,27 +254,18 @@ fn smallest_stride(n_steps: usize, ok: impl Fn(usize) -> bool) -> Option<usize> 
     Some(lo)
 }
 
-/// The smallest history stride whose [`run_memory_bytes`] for `n_steps` is at most
-/// [`MAX_RUN_MEMORY_BYTES`] (`None` if even keeping only the first and last step is too much).
-pub fn min_history_stride(n_steps: usize) -> Option<usize> {
-    // the estimate does not increase with the stride
-    smallest_stride(n_steps, |s| {
-        run_memory_bytes(n_steps, s) <= MAX_RUN_MEMORY_BYTES
-    })
-}
-
 impl super::SimSettings {
     /// Refuses a run of `duration` seconds whose [`run_memory_bytes`] exceeds
     /// [`MAX_RUN_MEMORY_BYTES`] (an error naming `history_stride` with the smallest stride that
     /// fits); also refuses what [`super::SimSettings::step_count`] refuses. Returns the estimate.
-    pub fn check_memory(&self, duration: Real) -> Result<u64, SimError> {
+    pub fn check_memory(&self, duration: Real, n_segments: usize) -> Result<u64, SimError> {
         let n = self.step_count(duration)?;
-        let bytes = run_memory_bytes(n, self.history_stride);
+        let bytes = run_memory_bytes(n, self.history_stride, n_segments);
         if bytes <= MAX_RUN_MEMORY_BYTES {
             return Ok(bytes);
         }
         let gib = |b: u64| b as Real / (1u64 << 30) as Real;
-        let advice = match min_history_stride(n) {
+        let advice = match min_history_stride(n, n_segments) {
             Some(s) => format!("keep fewer history rows: a history stride of at least {s}"),
             None => "shorten the run or use a larger dt".to_string(),
         };

@@ -8,6 +8,9 @@
 
 use std::fmt;
 
+/// Which abutment: the names of the two sides, `start` and `end`, in keys and files.
+pub const ABUTMENT_SIDES: [&str; 2] = ["start", "end"];
+
 /// A run setting of [`super::SimSettings`] that a scenario sets.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Setting {
@@ -127,7 +130,7 @@ impl fmt::Display for BridgeKey {
             BridgeTable::Segment(i) => write!(f, "segment[{i}].{key}"),
             BridgeTable::Joint(k) => write!(f, "joint[{k}].{key}"),
             BridgeTable::Abutment(s) => {
-                write!(f, "abutment.{}.{key}", super::bridge::ABUTMENT_SIDES[s])
+                write!(f, "abutment.{}.{key}", ABUTMENT_SIDES[s])
             }
             BridgeTable::Pier(p) => write!(f, "pier[{p}].{key}"),
         }

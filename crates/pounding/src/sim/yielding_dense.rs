@@ -217,12 +217,12 @@ impl DenseImplicit {
         let what = &sc.dense.as_ref().expect("a coupled scheme").what;
         let quad = d.dot(&(what * d));
         let q0 = Self::end_position(sc, q, u, x);
-        super::yielding::armijo(slope, quad, |t| {
+        super::line_search::armijo(slope, quad, |t| {
             let dq = d * (hth * t);
             let mut dpsi = 0.0;
             for (b, op) in bearings.iter().zip(&self.ops) {
                 let u0 = Self::apply(op, &q0) - b.ground_offset();
-                dpsi += super::yielding::psi_change(b, u0, Self::apply(op, &dq));
+                dpsi += super::line_search::psi_change(b, u0, Self::apply(op, &dq));
             }
             dpsi
         })

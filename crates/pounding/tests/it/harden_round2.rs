@@ -82,24 +82,24 @@ fn runs_beyond_the_memory_limit_are_refused_with_the_stride_that_fits() {
         history_stride: 1,
         ..SimSettings::default()
     };
-    let err = settings.check_memory(5000.0).unwrap_err();
+    let err = settings.check_memory(5000.0, 2).unwrap_err();
     let SimError::InvalidParameter { name, reason, .. } = &err else {
         panic!("{err}");
     };
     assert_eq!(name, "history_stride");
-    let s = min_history_stride(5_000_000).unwrap();
+    let s = min_history_stride(5_000_000, 2).unwrap();
     assert!(s > 1 && reason.contains(&format!("at least {s}")), "{err}");
-    assert!(run_memory_bytes(5_000_000, s) <= MAX_RUN_MEMORY_BYTES);
-    assert!(run_memory_bytes(5_000_000, s - 1) > MAX_RUN_MEMORY_BYTES);
+    assert!(run_memory_bytes(5_000_000, s, 2) <= MAX_RUN_MEMORY_BYTES);
+    assert!(run_memory_bytes(5_000_000, s - 1, 2) > MAX_RUN_MEMORY_BYTES);
     settings.history_stride = s;
-    assert!(settings.check_memory(5000.0).is_ok());
+    assert!(settings.check_memory(5000.0, 2).is_ok());
     // the El Centro default run is far below the limit
     settings.history_stride = 10;
-    assert!(settings.check_memory(53.76).unwrap() < 100 << 20);
+    assert!(settings.check_memory(53.76, 2).unwrap() < 100 << 20);
     // near the step limit, the ground samples alone do not fit: no stride helps
-    assert_eq!(min_history_stride(pounding::sim::MAX_STEPS), None);
+    assert_eq!(min_history_stride(pounding::sim::MAX_STEPS, 2), None);
     // the estimate never overflows
-    assert_eq!(run_memory_bytes(usize::MAX, 1), u64::MAX);
+    assert_eq!(run_memory_bytes(usize::MAX, 1, 2), u64::MAX);
 }
 
 /// Compared runs held at once keep the finest history that fits: their own stride when it

@@ -3,7 +3,7 @@
 //! shape of the written files.
 
 use pounding::sim::output::{
-    BATCH_HEADER, COMPARE_HEADER, History, Layout, batch_csv, compare_csv, impacts_csv,
+    BATCH_HEADER, COMPARE_HEADER, History, Layout, batch_csv, compare_tables, impacts_csv,
 };
 use pounding::sim::scenario::{
     DEFAULT_SCENARIO_TOML, LAW_NAMES, ParamKey, Scenario, ScenarioError, Section,
@@ -265,10 +265,16 @@ fn writers_rows_match_their_headers() {
         seconds: 0.0,
         warnings: Vec::new(),
     };
-    let c = compare_csv(&[pounding::sim::compare::LawRun {
-        law: "rigid".into(),
-        outcome: Ok(ran),
-    }]);
+    let c = compare_tables(
+        &[pounding::sim::compare::LawRun {
+            law: "rigid".into(),
+            outcome: Ok(ran),
+        }],
+        false,
+    )
+    .0
+    .remove(0)
+    .csv;
     assert_eq!(
         c.lines().nth(1).unwrap().split(',').count(),
         COMPARE_HEADER.split(',').count()

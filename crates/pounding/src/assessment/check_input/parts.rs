@@ -1,8 +1,8 @@
 //! The `[code_check]` keys read apart from the site and hazard ones: the US and Japanese
 //! codes' categories, the in-span hinges and the codes that apply.
 
-use super::super::check::{CODES, Code};
 use super::super::code_check::{AashtoZone, JraGround, Sdc};
+use super::super::code_check::{CODES, Code};
 use super::{AssessmentError, Cx, Sec};
 use crate::math::Real;
 

@@ -61,6 +61,7 @@ mod backwall;
 mod build;
 mod geometry;
 mod pier;
+mod supports;
 pub use backwall::{Backwall, Piles};
 pub(crate) use geometry::placement;
 use geometry::*;
@@ -262,8 +263,7 @@ pub struct BridgeAbutment {
     pub shear_keys: Option<crate::element::shear_key::ShearKey>,
 }
 
-/// Which abutment.
-pub const ABUTMENT_SIDES: [&str; 2] = ["start", "end"];
+pub use crate::sim::param::ABUTMENT_SIDES;
 
 /// A whole bridge.
 #[derive(Debug, Clone, PartialEq)]

@@ -8,7 +8,7 @@
 //! fits the history sampling of all runs into memory; [`Comparison::run`] runs them in turn.
 //! The two-deck model runs every law or none (a law it refuses is an error); a bridge skips a
 //! law it refuses, with the reason, unless it refuses every law. The files are written by
-//! [`crate::sim::output::compare_csv`] and its neighbours; [`agreement`] answers "do the laws
+//! [`crate::sim::output::compare_tables`]; [`agreement`] answers "do the laws
 //! agree?" in a few sentences.
 
 mod agree;

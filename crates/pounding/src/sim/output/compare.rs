@@ -33,7 +33,7 @@ fn estimate_pair(e: Option<PeakEstimate>) -> (Real, Real) {
 
 /// `compare.csv`: [`COMPARE_HEADER`], then one row per law that ran (the two-deck model runs
 /// every law).
-pub fn compare_csv(runs: &[LawRun]) -> String {
+pub(super) fn compare_csv(runs: &[LawRun]) -> String {
     let mut s = String::from(COMPARE_HEADER);
     s.push('\n');
     for r in runs {
@@ -72,7 +72,7 @@ pub fn compare_csv(runs: &[LawRun]) -> String {
 }
 
 /// The readable table `pounding compare` prints: one line per law that ran.
-pub fn compare_table(runs: &[LawRun]) -> String {
+pub(super) fn compare_table(runs: &[LawRun]) -> String {
     let mut s = format!(
         "{:<11} {:>7} {:>11} {:>14} {:>10} {:>11} {:>17} {:>9} {:>9}\n",
         "law",

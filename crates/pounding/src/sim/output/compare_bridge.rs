@@ -158,7 +158,7 @@ fn sites(ran: &Ran) -> Vec<SiteRow> {
 }
 
 /// The bridge `compare.csv`: [`BRIDGE_COMPARE_HEADER`], then one row per `(law, run)`.
-pub fn bridge_compare_csv(runs: &[LawRun]) -> String {
+pub(super) fn bridge_compare_csv(runs: &[LawRun]) -> String {
     let mut out = String::from(BRIDGE_COMPARE_HEADER);
     out.push('\n');
     for run in runs {
@@ -209,7 +209,7 @@ pub fn bridge_compare_csv(runs: &[LawRun]) -> String {
 
 /// `compare_sites.csv`: [`BRIDGE_COMPARE_SITES_HEADER`], then one row per site of every law
 /// that ran (skipped laws have no rows; `compare.csv` says why).
-pub fn bridge_compare_sites_csv(runs: &[LawRun]) -> String {
+pub(super) fn bridge_compare_sites_csv(runs: &[LawRun]) -> String {
     let mut out = String::from(BRIDGE_COMPARE_SITES_HEADER);
     out.push('\n');
     for run in runs {
@@ -238,7 +238,7 @@ pub fn bridge_compare_sites_csv(runs: &[LawRun]) -> String {
 
 /// The readable table `pounding compare` prints for a bridge: one line per law and site
 /// (forces in MN, `-` for rigid contact), then the skipped laws with their reasons.
-pub fn bridge_compare_table(runs: &[LawRun]) -> String {
+pub(super) fn bridge_compare_table(runs: &[LawRun]) -> String {
     let mut s = format!(
         "{:<11} {:<15} {:>7} {:>11} {:>14} {:>13} {:>11} {:>11}\n",
         "law",

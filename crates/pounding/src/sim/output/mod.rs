@@ -30,11 +30,10 @@ pub use bridge_plan::{
     BridgePlan, CornerPaths, bridge_plan, corner_paths, joint_openings, plan_exaggeration,
     segment_displacements,
 };
-pub use compare::{COMPARE_HEADER, COMPARE_OUTPUTS, compare_csv, compare_table};
+pub use compare::{COMPARE_HEADER, COMPARE_OUTPUTS};
 pub use compare_bridge::{
     BRIDGE_COMPARE_HEADER, BRIDGE_COMPARE_OUTPUTS, BRIDGE_COMPARE_SITES_HEADER, CompareTable,
-    bridge_compare_csv, bridge_compare_sites_csv, bridge_compare_table, compare_outputs,
-    compare_tables,
+    compare_outputs, compare_tables,
 };
 pub use estimate::{PeakEstimate, SiteKey, peak_force_estimates};
 pub(crate) use estimate::{largest_estimate, peak_estimate_json, rigid_estimate, setup_estimates};

@@ -4,8 +4,8 @@
 use super::contact::{FileKeys, build_contact};
 use super::error::{ParamKey, ScenarioError, Section};
 pub(super) use super::ground::build_ground;
-use super::model_keys::scaled_mass_error;
 pub(super) use super::model_keys::sim_error;
+use super::model_keys::{scaled_mass_error, time};
 use super::sections::{DecksSec, Raw};
 use super::{Scenario, SimSetup, Src};
 use crate::ground_motion::GroundMotion;
@@ -20,9 +20,6 @@ use crate::sim::{
 
 const fn decks(key: &'static str) -> ParamKey {
     ParamKey::new(Section::Decks, key)
-}
-pub(super) const fn time(key: &'static str) -> ParamKey {
-    ParamKey::new(Section::Time, key)
 }
 
 /// The deck shapes of `[decks]`: `None` for `shape = "curved"` (the S arrangement of `R1 R2
@@ -431,14 +428,12 @@ pub(super) fn build_settings(
                 note: String::new(),
             }
         })?;
-        use crate::sim::options::{
-            MAX_RUN_MEMORY_BYTES, bridge_run_memory_bytes, min_bridge_history_stride,
-        };
+        use crate::sim::options::{MAX_RUN_MEMORY_BYTES, min_history_stride, run_memory_bytes};
         let n = settings.step_count(d).unwrap_or(usize::MAX);
-        let bytes = bridge_run_memory_bytes(n, settings.history_stride, n_segments);
+        let bytes = run_memory_bytes(n, settings.history_stride, n_segments);
         if !sc.batch && bytes > MAX_RUN_MEMORY_BYTES {
             let gib = |b: u64| b as Real / (1u64 << 30) as Real;
-            let advice = match min_bridge_history_stride(n, n_segments) {
+            let advice = match min_history_stride(n, n_segments) {
                 Some(s) => format!("set history_every >= {s} (or shorten the run)"),
                 None => "shorten the run or use a larger dt".into(),
             };

@@ -147,11 +147,48 @@ impl fmt::Display for ParamKey {
     }
 }
 
+/// The key a [`KeyRef`] points at: a key of the two-deck form's sections, or a key path of a
+/// bridge scenario (`segment[2].L`, `joint1.contact.k`, `abutment.start.backwall.kmax`: array
+/// indices 0-based, in the file's order).
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub enum Key {
+    /// A `[section] key` of the two-deck form, `[ground_motion]`, `[time]` or `[contact]`.
+    Param(ParamKey),
+    /// A bridge scenario's key path.
+    Path(String),
+}
+
+impl Key {
+    /// The typed key, if it is one.
+    pub fn param(&self) -> Option<ParamKey> {
+        match self {
+            Key::Param(k) => Some(*k),
+            Key::Path(_) => None,
+        }
+    }
+}
+
+impl PartialEq<ParamKey> for Key {
+    fn eq(&self, other: &ParamKey) -> bool {
+        self.param() == Some(*other)
+    }
+}
+
+impl fmt::Display for Key {
+    /// "`[section] key`" or "`path`".
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Key::Param(k) => k.fmt(f),
+            Key::Path(p) => write!(f, "`{p}`"),
+        }
+    }
+}
+
 /// Where a key's value comes from: the file and line that set it, or the default.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct KeyRef {
     /// The key.
-    pub key: ParamKey,
+    pub key: Key,
     /// The scenario's name in messages (its path, or `built-in default`).
     pub origin: String,
     /// 1-based line that sets the key, `None` when the file does not set it (the default applies).
@@ -164,9 +201,19 @@ impl KeyRef {
     /// Locates `key` in the scenario `text` named `origin`.
     pub fn locate(key: ParamKey, origin: &str, text: &str) -> Self {
         Self {
-            key,
+            key: Key::Param(key),
             origin: origin.to_string(),
             line: line_of_key(text, key.section.name(), key.key),
+            flag: None,
+        }
+    }
+
+    /// A bridge scenario's key `path`, set at `line` of `origin` (`None`: not set; the default).
+    pub fn path(path: String, origin: &str, line: Option<usize>) -> Self {
+        Self {
+            key: Key::Path(path),
+            origin: origin.to_string(),
+            line,
             flag: None,
         }
     }
@@ -266,30 +313,24 @@ pub enum ScenarioError {
     /// A model error of a parameter that no scenario key sets.
     #[error(transparent)]
     Model(Box<SimError>),
-    /// A bad value in a bridge scenario (`[[segment]]`, `[[joint]]`, `[abutment.*]`, `[bridge]`):
-    /// the key with its array index, e.g. `segment[2].L`, and its line.
-    #[error("{message} — set by `{key}` ({})", match line { Some(l) => format!("{origin}:{l}"), None => format!("not set in {origin}; default") })]
-    Bridge {
-        /// What is wrong.
-        message: String,
-        /// The key, e.g. `segment[2].L` (0-based array index, as in the file's order).
-        key: String,
-        /// The scenario's name.
-        origin: String,
-        /// 1-based line, `None` when the default applies.
-        line: Option<usize>,
-    },
 }
 
 impl ScenarioError {
-    /// The keys the error points at (empty for errors of the file as a whole or of flags).
+    /// The typed keys the error points at (empty for errors of the file as a whole or of flags,
+    /// and for a bridge's key paths: see [`ScenarioError::key_refs`]).
     pub fn keys(&self) -> Vec<ParamKey> {
+        self.key_refs()
+            .iter()
+            .filter_map(|k| k.key.param())
+            .collect()
+    }
+
+    /// Every key the error points at, with where it is set.
+    pub fn key_refs(&self) -> &[KeyRef] {
         match self {
-            ScenarioError::Invalid { at, .. } | ScenarioError::Key { at, .. } => {
-                at.iter().map(|k| k.key).collect()
-            }
-            ScenarioError::Record { at, .. } => vec![at.key],
-            _ => Vec::new(),
+            ScenarioError::Invalid { at, .. } | ScenarioError::Key { at, .. } => at,
+            ScenarioError::Record { at, .. } => std::slice::from_ref(at),
+            _ => &[],
         }
     }
 }

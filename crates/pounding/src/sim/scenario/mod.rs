@@ -30,7 +30,7 @@ pub use contact::{
     DEFAULT_A, DEFAULT_DELTA_M, DEFAULT_K, DEFAULT_MIN_VELOCITY, LAW_NAMES, contact_keys,
     default_k_h,
 };
-pub use error::{KeyRef, ParamKey, ScenarioError, Section};
+pub use error::{Key, KeyRef, ParamKey, ScenarioError, Section};
 pub use sections::DEFAULT_SCENARIO_TOML;
 pub use setup::Setup;
 
@@ -100,12 +100,13 @@ pub struct Scenario {
     bridge: Option<Box<bridge::BridgeRaw>>,
 }
 
-/// A validated run: everything [`crate::sim::simulate`] needs, and what the writers of
-/// [`crate::sim::output`] report about the input.
+/// A validated run of a problem `P`: everything [`crate::sim::simulate`] needs, and what the
+/// writers of [`crate::sim::output`] report about the input. Either form has one
+/// ([`SimSetup`]: the two-deck preset, [`BridgeSetup`]: a bridge of `[[segment]]`s).
 #[derive(Debug, Clone)]
-pub struct SimSetup {
+pub struct RunSetup<P> {
     /// The model, the ground motion and the (rest) initial state.
-    pub problem: SimProblem,
+    pub problem: P,
     /// Step size, duration, history stride.
     pub settings: SimSettings,
     /// The ground-motion specifications as given (`summary.json`'s `record_y`, `record_x`):
@@ -114,6 +115,16 @@ pub struct SimSetup {
     /// Units of `.csv` records (`[ground_motion] csv_units`).
     pub units: AccelUnits,
 }
+
+impl<P: super::Problem> RunSetup<P> {
+    /// Runs it ([`crate::sim::simulate`]).
+    pub fn run(&self) -> Result<super::bridge::BridgeSolution, super::SimError> {
+        super::simulate(&self.problem, &self.settings)
+    }
+}
+
+/// The run of a two-deck scenario.
+pub type SimSetup = RunSetup<SimProblem>;
 
 impl Default for Scenario {
     /// The built-in default ([`DEFAULT_SCENARIO_TOML`], named `built-in default` in messages).
@@ -299,7 +310,7 @@ impl Scenario {
     /// flag. Checked by [`Scenario::build`] / [`Scenario::build_bridge`] like the key.
     pub fn with_dt(mut self, dt: Real) -> Self {
         self.raw.time.0.dt = dt;
-        self.with_flag(build::time("dt"), "--dt")
+        self.with_flag(model_keys::time("dt"), "--dt")
     }
 
     /// The one check of a time step `dt` given on the command line as `--dt`
@@ -312,7 +323,7 @@ impl Scenario {
             text: String::new(),
             dir: PathBuf::new(),
             builtin: false,
-            flags: vec![(build::time("dt"), "--dt")],
+            flags: vec![(model_keys::time("dt"), "--dt")],
         };
         SimSettings::check_dt(dt).map_err(|e| build::sim_error(&src, e))
     }
@@ -327,7 +338,7 @@ impl Scenario {
     /// Replaces `[time] duration` by `duration` \[s\] (`pounding simulate --duration`).
     pub fn with_duration(mut self, duration: Real) -> Self {
         self.raw.time.0.duration = Some(duration);
-        self.with_flag(build::time("duration"), "--duration")
+        self.with_flag(model_keys::time("duration"), "--duration")
     }
 
     /// Errors about `key` name the command-line `flag` that replaced it (e.g. after

@@ -4,12 +4,16 @@
 //! read back).
 
 use super::Src;
-use super::build::time;
 use super::error::{ParamKey, ScenarioError, Section};
 use crate::geometry::{GeometryError, ShapeParam};
 use crate::ground_motion::{GroundMotionError, MotionParam};
 use crate::sim::SimError;
 use crate::sim::param::{ParamPath, Setting, TwoDeckParam};
+
+/// The `[time]` key `key`.
+pub(super) const fn time(key: &'static str) -> ParamKey {
+    ParamKey::new(Section::Time, key)
+}
 
 /// A library error located at the scenario key that sets the parameter it concerns (its typed
 /// path, [`key_of_error`]).
@@ -93,8 +97,10 @@ pub(super) fn scaled_mass_error(src: &Src, e: SimError) -> ScenarioError {
     let mut err = sim_error(src, e);
     if let ScenarioError::Invalid { at, .. } = &mut err
         && at.len() == 1
-        && at[0].key.section == Section::Decks
-        && at[0].key.key == "density"
+        && at[0]
+            .key
+            .param()
+            .is_some_and(|k| k.section == Section::Decks && k.key == "density")
     {
         let given: Vec<_> = [1, 2]
             .into_iter()

@@ -14,7 +14,7 @@
 
 use super::Src;
 use super::contact::{ContactKeys, ContactSec, FileKeys, contact, given, keys_read, section_keys};
-use super::error::ScenarioError;
+use super::error::{KeyRef, ScenarioError};
 use crate::contact_law::registry::{self, CALIBRATION_KEY};
 use crate::toml_schema::line_col;
 use std::collections::BTreeMap;
@@ -50,11 +50,10 @@ impl SiteContact<'_> {
         format!("{}.contact.{key}", self.site)
     }
     fn error(&self, key: &str, line: Option<usize>, message: String) -> ScenarioError {
-        ScenarioError::Bridge {
+        ScenarioError::Invalid {
             message,
-            key: self.key(key),
-            origin: self.src.origin.clone(),
-            line,
+            at: vec![KeyRef::path(self.key(key), &self.src.origin, line)],
+            note: String::new(),
         }
     }
 

@@ -227,7 +227,7 @@ pub(in crate::sim::scenario) fn check_motion(
         SupportExcitation::WavePassage { .. } => "v_app",
         SupportExcitation::Records(_) => "supports_y",
     };
-    crate::sim::excitation::SupportMotion::new(model, reference, supports)
+    crate::sim::excitation::SupportMotion::new(&model.support_lines(), reference, supports)
         .map(|_| ())
         .map_err(|e| {
             let src = &sc.src;

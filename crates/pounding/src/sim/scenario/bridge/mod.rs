@@ -51,8 +51,8 @@ use super::build::{build_ground, build_settings};
 use super::contact::{FileKeys, build_contact, check_contact_keys};
 use super::sections::{GroundSec, TimeSec};
 use super::site_contact::{SiteContact, SiteTable, resolve};
-use super::{Scenario, ScenarioError};
-use crate::ground_motion::AccelUnits;
+use super::{KeyRef, Scenario, ScenarioError};
+
 use crate::math::Real;
 use crate::output::float_token;
 use crate::shape::{Deck, DeckShape, SkewedDeck, StraightDeck};
@@ -62,7 +62,7 @@ use crate::sim::bridge::{
 use crate::sim::defaults;
 use crate::sim::excitation::SupportExcitation;
 use crate::sim::param::{BridgeTable, ParamPath};
-use crate::sim::{DampingModel, JointContact, SimSettings, simulate};
+use crate::sim::{DampingModel, JointContact};
 use crate::toml_schema::{Table, line_col};
 use serde::Deserialize;
 use toml::Spanned;
@@ -191,26 +191,8 @@ struct AbutmentSec {
     shear_keys: Option<Spanned<backwall::ShearKeysSec>>,
 }
 
-/// What [`Scenario::build_bridge`] returns: the problem and settings of
-/// [`crate::sim::bridge::simulate`] and what the records were.
-#[derive(Debug, Clone)]
-pub struct BridgeSetup {
-    /// The bridge, its ground motion, at rest.
-    pub problem: BridgeProblem,
-    /// Step, duration, history stride.
-    pub settings: SimSettings,
-    /// The records used `[record_y, record_x]` as written.
-    pub records: [String; 2],
-    /// Units of CSV records.
-    pub units: AccelUnits,
-}
-
-impl BridgeSetup {
-    /// Runs it.
-    pub fn run(&self) -> Result<crate::sim::bridge::BridgeSolution, crate::sim::SimError> {
-        simulate(&self.problem, &self.settings)
-    }
-}
+/// The run of a bridge scenario.
+pub type BridgeSetup = super::RunSetup<BridgeProblem>;
 
 /// Reads the value of `v` or the default `d`, with the key's line for errors.
 struct Val<'a> {
@@ -223,11 +205,10 @@ impl Val<'_> {
         line_col(self.text, s.span().start).0
     }
     fn err(&self, key: String, line: Option<usize>, message: String) -> ScenarioError {
-        ScenarioError::Bridge {
+        ScenarioError::Invalid {
             message,
-            key,
-            origin: self.origin.to_string(),
-            line,
+            at: vec![KeyRef::path(key, self.origin, line)],
+            note: String::new(),
         }
     }
     /// [`Val::num`] of a value that must be `> 0`.
@@ -416,7 +397,7 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
     // the step the restrainers and backwalls need: said at `[time] dt` (or `--dt`)
     model
         .check_time_step(settings.dt)
-        .map_err(|e| sc.src.invalid(e.to_string(), super::build::time("dt")))?;
+        .map_err(|e| sc.src.invalid(e.to_string(), super::model_keys::time("dt")))?;
     Ok(BridgeSetup {
         problem: BridgeProblem {
             supports,
