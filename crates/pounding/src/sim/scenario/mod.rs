@@ -332,7 +332,7 @@ impl Scenario {
     /// `pounding simulate --projection`; [`crate::sim::projection`]).
     pub fn with_projection(mut self) -> Self {
         self.raw.time.0.projection = true;
-        self.with_flag(build::time("projection"), "--projection")
+        self.with_flag(model_keys::time("projection"), "--projection")
     }
 
     /// Replaces `[time] duration` by `duration` \[s\] (`pounding simulate --duration`).
