@@ -64,6 +64,10 @@ pub struct Args {
     /// `rigid` or a compliance law (`pounding compare --help` lists them).
     #[arg(long, value_name = "LAW")]
     pub law: Option<String>,
+    /// Project every rigid-law gap back to >= 0 at the end of each step (combined projection;
+    /// `[time] projection = true`): no overlap beyond 1e-11 m, its energy in summary.json.
+    #[arg(long)]
+    pub projection: bool,
     /// Output directory.
     #[arg(long, value_name = "DIR", default_value = "out/simulate")]
     pub out: PathBuf,
@@ -170,6 +174,9 @@ pub(crate) fn with_flags(sc: Scenario, args: &Args) -> Scenario {
     if let Some(d) = args.duration {
         sc = sc.with_duration(d);
     }
+    if args.projection {
+        sc = sc.with_projection();
+    }
     if let Some(l) = &args.law {
         // the file's [contact] keys of its own law stay accepted (not refused as unused)
         let file_law = sc.law().to_string();
@@ -210,6 +217,9 @@ pub(crate) fn flag_list(args: &Args) -> Vec<String> {
     num("--duration", args.duration);
     if let Some(l) = &args.law {
         v.push(format!("--law {l}"));
+    }
+    if args.projection {
+        v.push("--projection".into());
     }
     v
 }

@@ -70,6 +70,8 @@ struct Flags {
     duration: Option<f64>,
     law: Option<String>,
     batch: bool,
+    /// `--projection`.
+    projection: bool,
 }
 
 impl Flags {
@@ -91,6 +93,9 @@ impl Flags {
             sc = sc
                 .with_law_replacing(l)
                 .with_flag(ParamKey::new(Section::Contact, "law"), "--law");
+        }
+        if self.projection {
+            sc = sc.with_projection();
         }
         if self.batch {
             sc = sc.for_batch();
@@ -198,7 +203,7 @@ impl SimRun {
 /// the only component along y. `scale`, `dt`, `duration`, `law`, `csv_units`, `record_dt` are
 /// the CLI's flags.
 #[pyfunction]
-#[pyo3(signature = (path=None, text=None, origin="scenario", record=None, array=None, csv_units=None, record_dt=None, scale=None, dt=None, duration=None, law=None, error_estimate=false, tol=None, max_refinements=None))]
+#[pyo3(signature = (path=None, text=None, origin="scenario", record=None, array=None, csv_units=None, record_dt=None, scale=None, dt=None, duration=None, law=None, error_estimate=false, tol=None, max_refinements=None, projection=false))]
 #[allow(clippy::too_many_arguments)]
 fn simulate_run(
     py: Python<'_>,
@@ -216,6 +221,7 @@ fn simulate_run(
     error_estimate: bool,
     tol: Option<&str>,
     max_refinements: Option<usize>,
+    projection: bool,
 ) -> PyResult<SimRun> {
     let csv_units = units(csv_units)?;
     let accuracy = accuracy_settings(error_estimate, tol, max_refinements)?;
@@ -230,6 +236,7 @@ fn simulate_run(
         duration,
         law,
         batch,
+        projection,
     };
     let sc = flags.apply(sc);
     let rec = match array {
@@ -357,6 +364,7 @@ fn batch_run(
         duration,
         law,
         batch: true,
+        projection: false,
     };
     let sc = flags.apply(load(path, text, origin)?);
     let reading: ReadOptions = sc.override_reading(csv_units).map_err(value_error)?;

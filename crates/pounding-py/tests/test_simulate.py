@@ -259,3 +259,18 @@ def test_tol_picks_a_step_and_bad_tolerances_raise():
         pounding.simulate(duration=0.5, max_refinements=2)
     with pytest.raises(TypeError):
         pounding.simulate(duration=0.5, tol=True)
+
+
+def test_projection_matches_the_cli(tmp_path, cli):
+    """``projection=True`` is ``--projection``: the same summary, the overlap within 1e-10 m."""
+    res = pounding.simulate(duration=20.0, projection=True)
+    out = tmp_path / "proj"
+    cli("simulate", "--duration", "20", "--projection", "--out", str(out))
+    assert res.summary == json.loads((out / "summary.json").read_text())
+    assert res.summary["max_overlap_m"] <= 1e-10
+    assert res.summary["projection"]["corrected_steps"] > 0
+    assert "projection" in res.summary["energy_J"]
+    plain = pounding.simulate(duration=20.0)
+    assert "max_overlap_m" not in plain.summary
+    with pytest.raises(TypeError, match="projection"):
+        pounding.simulate(duration=0.5, projection="yes")

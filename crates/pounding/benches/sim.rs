@@ -35,6 +35,18 @@ fn default_el_centro_history_every_10(bencher: divan::Bencher) {
     bencher.bench(|| simulate(divan::black_box(&p), &s).unwrap().summary.impacts);
 }
 
+/// The default run as the CLI does it, with the position projection (`--projection`).
+#[divan::bench]
+fn default_el_centro_history_every_10_projection(bencher: divan::Bencher) {
+    let p = default_problem();
+    let s = SimSettings {
+        history_stride: 10,
+        projection: true,
+        ..SimSettings::default()
+    };
+    bencher.bench(|| simulate(divan::black_box(&p), &s).unwrap().summary.impacts);
+}
+
 /// Parsing the two embedded AT2 records (not part of the run above).
 #[divan::bench]
 fn parse_el_centro_records() -> usize {

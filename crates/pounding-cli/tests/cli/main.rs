@@ -123,6 +123,7 @@ mod shapes;
 mod sim_report;
 mod simulate;
 mod simulate_flags;
+mod simulate_projection;
 mod small_things;
 mod spectrum;
 mod spectrum_limits;

@@ -206,6 +206,7 @@ def simulate(
     error_estimate: bool = False,
     tol: Any = None,
     max_refinements: Optional[int] = None,
+    projection: bool = False,
 ) -> SimulationResult:
     """Run one seismic time history, as ``pounding simulate`` (no files, no figures).
 
@@ -226,6 +227,9 @@ def simulate(
             ``tol`` (``--tol``): ``"1%"``, ``"0.01"`` or ``0.01``; the result is the run at the
             step that met it (``accuracy["met"]`` says whether one did).
         max_refinements: with ``tol``, the most halvings of dt (default 3, at most 8).
+        projection: project every rigid-law gap back to >= 0 at the end of each step
+            (``--projection``, ``[time] projection``): the summary then has ``max_overlap_m``,
+            ``energy_J["projection"]`` and ``projection``.
 
     Returns:
         A :class:`SimulationResult`; a run ending ``Diverged`` (or another untrustworthy status)
@@ -245,6 +249,8 @@ def simulate(
         raise TypeError(f"tol must be a number or a string such as '1%', not {type(tol).__name__}")
     if isinstance(error_estimate, bool) is False:
         raise TypeError("error_estimate must be True or False")
+    if not isinstance(projection, bool):
+        raise TypeError("projection must be True or False")
     if max_refinements is not None and (
         isinstance(max_refinements, bool) or not isinstance(max_refinements, int)
     ):
@@ -254,7 +260,7 @@ def simulate(
     run = _core.simulate_run(
         error_estimate=error_estimate,
         tol=None if tol is None else (tol if isinstance(tol, str) else repr(float(tol))),
-        max_refinements=max_refinements,
+        max_refinements=max_refinements, projection=projection,
         record=path, array=array, csv_units=csv_units,
         record_dt=optional_float("record_dt", record_dt), scale=optional_float("scale", scale),
         dt=optional_float("dt", dt), duration=optional_float("duration", duration), law=law,

@@ -30,6 +30,7 @@ use super::contact::State;
 use super::excitation::Offsets;
 use super::observer::{Observer, Snapshot};
 use super::peaks::{Observed, Peaks};
+use super::projection::Projector;
 use super::scheme::{Scheme, Winv, Work};
 use super::table::TableSource;
 use super::view::{Bridge, Frame};
@@ -161,6 +162,10 @@ pub(crate) trait Stepper {
     fn step(&mut self, input: &StepInput, log: &mut ImpactLog) -> StepOutput;
     /// Closes what is still open at the end of the run; returns the counters.
     fn finish(&mut self, log: &mut ImpactLog) -> StepperStats;
+    /// The sites whose positions a projection corrects: the rigid-law ones (`None`: none).
+    fn projected_sites(&self) -> Option<super::projection::Sites> {
+        None
+    }
 }
 
 /// The energy bookkeeping: input work, viscous dissipation, balance.
@@ -172,6 +177,8 @@ struct Ledger {
     max_bal: Real,
     /// The step whose load `F_k` the work buffer `f1` holds (the previous step's `F_{k+1}`).
     loaded: Option<usize>,
+    /// The work of the position projection (`None`: no projection, the sums keep their bits).
+    proj: Option<Real>,
 }
 
 impl Ledger {
@@ -183,6 +190,7 @@ impl Ledger {
             max_in: e0.abs(),
             max_bal: 0.0,
             loaded: None,
+            proj: None,
         }
     }
 
@@ -193,7 +201,10 @@ impl Ledger {
             Some(w) => d_cont + w,
             None => d_cont,
         };
-        let bal = self.e0 + self.w_in - (tk + vk + self.d_visc + other);
+        let bal = match self.proj {
+            None => self.e0 + self.w_in - (tk + vk + self.d_visc + other),
+            Some(p) => self.e0 + self.w_in + p - (tk + vk + self.d_visc + other),
+        };
         self.max_bal = max_nan(self.max_bal, bal.abs());
         self.max_in = max_nan(self.max_in, (self.e0 + self.w_in).abs());
         self.energy(tk, vk, d_cont)
@@ -207,6 +218,7 @@ impl Ledger {
             viscous: self.d_visc,
             contact: d_cont,
             elements: 0.0,
+            projection: self.proj.unwrap_or(0.0),
         }
     }
 
@@ -345,6 +357,8 @@ pub(crate) struct RunResult {
     pub max_input_energy: Real,
     /// The observers' tables (or what they are derived from).
     pub tables: Vec<TableSource>,
+    /// What the position projection did (`None`: not asked for).
+    pub projection: Option<super::projection::ProjectionStats>,
 }
 
 /// Runs the time loop with `stepper` from `(q0, u0)` (module doc).
@@ -381,6 +395,15 @@ pub(crate) fn run<S: Stepper>(
         o.reserve(rows);
     }
     let mut log = ImpactLog::default();
+    // a run without rigid sites projects nothing, and says so
+    let mut projector = settings.projection.then(|| {
+        let sites = stepper.projected_sites();
+        let sites = sites.unwrap_or_else(|| super::projection::Sites::none(bridge.joints.len()));
+        Projector::new(sc, sites, settings.projection_tolerance, &settings.lemke)
+    });
+    if projector.is_some() {
+        ledger.proj = Some(0.0);
+    }
     let mut status = SimStatus::Completed;
     let mut steps_done = 0usize;
     let abut_sides: Vec<usize> = bridge.abutments.iter().map(|a| a.side).collect();
@@ -514,6 +537,13 @@ pub(crate) fn run<S: Stepper>(
         if has_elements {
             el.commit(&q, &frame.pose, &bridge.bodies);
         }
+        if let Some(p) = projector.as_mut()
+            && let Some(dq) = p.project(&mut q, &mut frame, bridge)
+        {
+            let (el, f, w) = (&mut el, &mut el_force, &mut work);
+            let wp = super::projection::book(sc, (&q, &dq), &frame, bridge, el, f, w, &yield_body);
+            ledger.proj = ledger.proj.map(|p| p + wp);
+        }
         steps_done = k + 1;
         if !(q.iter().all(|x| x.is_finite()) && u.iter().all(|x| x.is_finite())) {
             status = SimStatus::Diverged;
@@ -524,7 +554,9 @@ pub(crate) fn run<S: Stepper>(
     let mut stats = stepper.finish(&mut log);
     stats.newton_failures += yielding.failures;
     stats.bearing_corrections = yielding.corrections;
-    if status == SimStatus::Completed && stats.lcp_failures > 0 {
+    let projection = projector.map(|p| p.stats);
+    let projection_failures = projection.map_or(0, |p| p.failures);
+    if status == SimStatus::Completed && stats.lcp_failures + projection_failures > 0 {
         status = SimStatus::CompletedWithLcpFailures;
     } else if status == SimStatus::Completed && stats.newton_failures > 0 {
         status = SimStatus::CompletedWithNewtonFailures;
@@ -552,6 +584,7 @@ pub(crate) fn run<S: Stepper>(
         max_input_energy: ledger.max_in,
         log,
         tables: observers.into_iter().map(|o| o.into_source()).collect(),
+        projection,
     }
 }
 

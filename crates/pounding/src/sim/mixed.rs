@@ -148,4 +148,8 @@ impl Stepper for MixedStepper {
             time_step_advice: c.time_step_advice,
         }
     }
+
+    fn projected_sites(&self) -> Option<super::projection::Sites> {
+        self.rigid.projected_sites()
+    }
 }

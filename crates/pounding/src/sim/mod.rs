@@ -83,6 +83,7 @@ pub mod output;
 pub mod param;
 mod peaks;
 pub mod problem;
+pub mod projection;
 mod rigid;
 pub mod scenario;
 mod scheme;
@@ -241,6 +242,11 @@ pub struct Energy {
     /// Work done on the nonlinear elements of a bridge (yielding bearings beyond `½ qᵀ K q`,
     /// restrainers) since t = 0 (`sim::bridge`; 0 without any).
     pub elements: Real,
+    /// Work done on the structure by the position projection since t = 0
+    /// ([`projection`]; 0 without it): the change of `½ qᵀ K q` plus the work done on the
+    /// nonlinear elements over the corrections `Δq`. The balance reads
+    /// `E_0 + W_in + W_proj = T + V + D_viscous + D_contact + W_elements`.
+    pub projection: Real,
 }
 
 /// The two-deck names of the four seated ends ([`output::pair_seat_name`]).
@@ -253,7 +259,9 @@ pub enum SimStatus {
     Completed,
     /// All steps done, but some contact LCPs were not solved by Lemke nor by enumeration (in those
     /// steps the frictionless LCP was used), or a solution failed the post-solve checks of the
-    /// impact laws on the recovered velocities (see [`bridge::BridgeSolution::lcp_failures`]).
+    /// impact laws on the recovered velocities (see [`bridge::BridgeSolution::lcp_failures`]),
+    /// or a step's position projection left a gap below its tolerance
+    /// ([`projection::ProjectionStats::failures`]).
     CompletedWithLcpFailures,
     /// The state or an energy of the bookkeeping became non-finite; the run stopped.
     Diverged,

@@ -500,4 +500,11 @@ impl Stepper for RigidStepper {
     fn finish(&mut self, _log: &mut ImpactLog) -> StepperStats {
         std::mem::take(&mut self.stats)
     }
+
+    fn projected_sites(&self) -> Option<super::projection::Sites> {
+        Some(super::projection::Sites {
+            joints: self.on.0.clone(),
+            abutments: self.on.1,
+        })
+    }
 }

@@ -23,6 +23,12 @@ pub struct SimSettings {
     pub history_stride: usize,
     /// Settings of Lemke's method for the contact LCPs.
     pub lemke: LemkeSettings,
+    /// Project the end position of every Moreau–Jean step onto the rigid sites' admissible set
+    /// (combined projection, [`super::projection`]): every rigid-law gap `≥ −projection_tolerance`
+    /// at every `t_k`. Default `false`.
+    pub projection: bool,
+    /// The gap a projection tolerates \[m\]. Default [`super::projection::DEFAULT_TOLERANCE`].
+    pub projection_tolerance: Real,
     /// An observer of the run's progress (none by default): it sees, never changes, the run.
     pub progress: Progress,
 }
@@ -36,6 +42,8 @@ impl Default for SimSettings {
             impact_velocity: super::defaults::IMPACT_VELOCITY,
             history_stride: super::defaults::HISTORY_STRIDE,
             lemke: LemkeSettings::default(),
+            projection: false,
+            projection_tolerance: super::projection::DEFAULT_TOLERANCE,
             progress: Progress::default(),
         }
     }
@@ -118,6 +126,14 @@ impl SimSettings {
                 "impact_velocity",
                 self.impact_velocity,
                 "must be finite and >= 0",
+            ));
+        }
+        let tol = self.projection_tolerance;
+        if !(tol.is_finite() && tol > 0.0) {
+            return Err(SimError::invalid(
+                "projection_tolerance",
+                tol,
+                "must be finite and > 0",
             ));
         }
         if self.history_stride == 0 {

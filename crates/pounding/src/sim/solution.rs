@@ -182,6 +182,13 @@ pub struct BridgeSummary {
     /// Largest penetration at a joint (rigid: the scheme's overlap; compliance: the law's
     /// deformation) \[m\].
     pub peak_penetration: Real,
+    /// Largest overlap `max(0, −g)` of a rigid-law site (a joint end or an abutment corner) at
+    /// the steps' end states `t_k`, from the peak closings: `max(peak_closing − gap)` \[m\] (0
+    /// without rigid sites). With the position projection ([`Self::projection`]) it is at most
+    /// its tolerance.
+    pub max_overlap: Real,
+    /// What the position projection did (`None`: run without it, [`super::SimSettings::projection`]).
+    pub projection: Option<super::projection::ProjectionStats>,
     /// `max_t |E_0 + W_in − (T + V + D_viscous + D_contact)| / max_t |E_0 + W_in|`.
     pub energy_balance_error: Real,
     /// Energies at the end.
@@ -395,6 +402,23 @@ fn joint_summaries(
         .collect()
 }
 
+/// [`BridgeSummary::max_overlap`]: the largest `peak_closing − gap` of the rigid joints and
+/// abutments (`0` if none overlaps).
+fn rigid_overlap(peaks: &super::peaks::Peaks, br: &Bridge, kinds: &SiteKinds) -> Real {
+    let joints = br
+        .joints
+        .iter()
+        .enumerate()
+        .filter(|(k, _)| !kinds.joints[*k])
+        .map(|(k, jg)| peaks.close[k] - jg.gap);
+    let abutments = br
+        .abutments
+        .iter()
+        .filter(|a| kinds.abutments[a.side] == Some(false))
+        .filter_map(|a| peaks.abut[a.side].map(|c| c - a.gap));
+    joints.chain(abutments).fold(0.0, Real::max)
+}
+
 /// `segment<i>-start` / `segment<i>-end` (1-based) of a seated end.
 pub(crate) fn seat_name(seat: &SeatEnd) -> String {
     let face = if seat.at_end { "end" } else { "start" };
@@ -559,6 +583,8 @@ pub(crate) fn solution(
             .fold(0, |g, (e, s)| if s.ratio > seats[g].ratio { e } else { g }),
         seats,
         peak_penetration: peaks.pen,
+        max_overlap: rigid_overlap(peaks, br, kinds),
+        projection: r.projection,
         energy_balance_error: r.energy_balance_error,
         final_energy: r.final_energy,
         max_input_energy: r.max_input_energy,

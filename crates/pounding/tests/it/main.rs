@@ -69,6 +69,7 @@ mod sim_observers;
 mod sim_outputs;
 mod sim_piers;
 mod sim_progress;
+mod sim_projection;
 mod sim_scenario;
 mod sim_shapes;
 mod sim_support_motion;

@@ -194,6 +194,7 @@ pub(crate) fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> 
             .collect();
     }
     super::add_run_keys(&mut out, &super::RunKeys::of(sol));
+    super::add_projection_keys(&mut out, &sol.summary);
     out["warnings"] =
         super::input_warnings(&setup.problem.ground, sol.dt, sol.time_step_advice.as_ref())
             .into_iter()

@@ -42,14 +42,15 @@ enum Series {
     AbutmentGap(usize),
 }
 
-/// The energy terms in column order.
-const ENERGY: [&str; 6] = [
+/// The energy terms in column order (the last, the projection's work, only with the projection).
+const ENERGY: [&str; 7] = [
     "input_energy",
     "kinetic_energy",
     "strain_energy",
     "viscous_dissipation",
     "contact_dissipation",
     "element_work",
+    "projection_work",
 ];
 
 /// A run's `history.csv`: its columns and where each reads.
@@ -99,10 +100,19 @@ impl<'a> History<'a> {
             let name = format!("abutment_{}_gap", ABUTMENT_SIDES[side]);
             h.push(name, "m", Series::AbutmentGap(side));
         }
-        for (i, e) in ENERGY.iter().enumerate() {
+        for (i, e) in ENERGY[..6].iter().enumerate() {
             h.push(*e, "J", Series::Energy(i));
         }
+        h.projection_work();
         h
+    }
+
+    /// `projection_work_J` (the ledger's projection term), with the projection only: the files
+    /// of a run without it keep their columns.
+    fn projection_work(&mut self) {
+        if self.sol.summary.projection.is_some() {
+            self.push(ENERGY[6], "J", Series::Energy(6));
+        }
     }
 
     /// The two-deck model's layout (the bridge of two segments).
@@ -118,6 +128,7 @@ impl<'a> History<'a> {
         for (i, e) in ENERGY[..5].iter().enumerate() {
             h.push(*e, "J", Series::Energy(i));
         }
+        h.projection_work();
         if !sol.contact_force.is_empty() {
             h.push("contact_force_xplus", "N", Series::EndForce(0));
             h.push("contact_force_xminus", "N", Series::EndForce(1));
@@ -200,6 +211,7 @@ impl<'a> History<'a> {
                         e.viscous,
                         e.contact,
                         e.elements,
+                        e.projection,
                     ][i]
                 }
                 Series::EndForce(k) => sol.contact_force_row(r)[k],

@@ -339,6 +339,7 @@ pub(crate) fn pair_summary_json(setup: &SimSetup, sol: &BridgeSolution) -> serde
         out["abutments"] = serde_json::Value::Object(ab);
     }
     add_run_keys(&mut out, &RunKeys::of(sol));
+    add_projection_keys(&mut out, &sol.summary);
     add_compliance_summary(&mut out, m, sol);
     out["warnings"] = input_warnings(&setup.problem.ground, sol.dt, sol.time_step_advice.as_ref())
         .into_iter()
@@ -418,6 +419,28 @@ pub(crate) fn add_run_keys(v: &mut serde_json::Value, r: &RunKeys) {
     v["lcp_solves"] = json!(r.lcp[0]);
     v["lcp_enumeration_fallbacks"] = json!(r.lcp[1]);
     v["lcp_failures"] = json!(r.lcp[2]);
+}
+
+/// With the position projection on ([`crate::sim::projection`]): `max_overlap_m` (the rigid
+/// sites' largest overlap at the steps' ends), `energy_J.projection` (the work the corrections
+/// did on the structure) and the `projection` object (tolerance, corrected steps, the largest
+/// overlap before a correction and correction, passes, failures). Nothing without it, so that
+/// the files of a run without projection keep their bytes.
+pub(crate) fn add_projection_keys(
+    v: &mut serde_json::Value,
+    s: &crate::sim::bridge::BridgeSummary,
+) {
+    let Some(p) = &s.projection else { return };
+    v["max_overlap_m"] = json_float(s.max_overlap);
+    v["energy_J"]["projection"] = json_float(s.final_energy.projection);
+    v["projection"] = json!({
+        "tolerance_m": json_float(p.tolerance),
+        "corrected_steps": p.corrected_steps,
+        "max_overlap_before_m": json_float(p.max_overlap_before),
+        "max_correction": json_float(p.max_correction),
+        "max_passes": p.max_passes,
+        "failures": p.failures,
+    });
 }
 
 /// `summary.json` as written: [`pair_summary_json`] pretty-printed, with a final newline.

@@ -399,6 +399,7 @@ pub(super) fn build_settings(
         dt: t.dt,
         duration: t.duration,
         history_stride: t.history_every as usize,
+        projection: t.projection,
         ..SimSettings::default()
     };
     settings.validate().map_err(|e| sim_error(src, e))?;

@@ -328,6 +328,13 @@ impl Scenario {
         SimSettings::check_dt(dt).map_err(|e| build::sim_error(&src, e))
     }
 
+    /// Turns on the position projection of the rigid sites (`[time] projection = true`,
+    /// `pounding simulate --projection`; [`crate::sim::projection`]).
+    pub fn with_projection(mut self) -> Self {
+        self.raw.time.0.projection = true;
+        self.with_flag(model_keys::time("projection"), "--projection")
+    }
+
     /// Replaces `[time] duration` by `duration` \[s\] (`pounding simulate --duration`).
     pub fn with_duration(mut self, duration: Real) -> Self {
         self.raw.time.0.duration = Some(duration);

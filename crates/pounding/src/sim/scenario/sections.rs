@@ -295,6 +295,8 @@ pub(crate) struct TimeSec {
     pub(crate) dt: f64,
     pub(crate) duration: Option<f64>,
     pub(crate) history_every: i64,
+    /// Position projection of the rigid sites ([`crate::sim::projection`]).
+    pub(crate) projection: bool,
 }
 impl Default for TimeSec {
     fn default() -> Self {
@@ -302,6 +304,7 @@ impl Default for TimeSec {
             dt: d::DT,
             duration: None,
             history_every: d::HISTORY_EVERY,
+            projection: false,
         }
     }
 }
