@@ -1087,6 +1087,18 @@ fn every_law_is_open_at_non_positive_penetration_whatever_the_rate() {
         BilinearImpact::new(1e9, 2e8, 2e-4).unwrap().into(),
         LinearSpring::new(1e9).unwrap().into(),
     ];
+    // and every registered law as its defaults build it (a law added later is checked too)
+    let none = |_: &str| None;
+    let inputs = pounding::contact_law::registry::LawInputs {
+        values: &none,
+        calibration: "numerical",
+        restitution: 0.6,
+        masses: [1e6, 1.2e6],
+    };
+    let registered = pounding::contact_law::registry::LAWS
+        .iter()
+        .map(|e| (e.build)(&inputs).unwrap_or_else(|err| panic!("{}: {err}", e.name)));
+    let laws: Vec<ContactLaw> = laws.into_iter().chain(registered).collect();
     for law in laws {
         // committed: open, and closed in an impact (approaching, then receding)
         let closed = law.evaluate(&LawState::default(), 1e-4, 0.5).state;
