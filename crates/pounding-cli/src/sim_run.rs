@@ -149,6 +149,11 @@ pub fn run(
     if sol.status != SimStatus::Completed {
         // outputs are written (they show where the run went wrong), but the run did not succeed
         let hint = match sol.status {
+            SimStatus::CompletedWithLcpFailures
+                if sol.summary.projection.is_some_and(|p| p.failures > 0) =>
+            {
+                "summary.json (lcp_failures, projection.failures)"
+            }
             SimStatus::CompletedWithLcpFailures => "summary.json (lcp_failures)",
             _ => "summary.json (energies, peaks)",
         };

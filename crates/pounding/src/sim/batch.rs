@@ -270,6 +270,7 @@ pub fn run_batch<P: Problem>(
     let settings = batch_settings(records, scales, settings)?;
     base.check_model()?;
     check_support_entries(base, records)?;
+    check_batch_memory(base, records, &settings)?;
     Ok(run_pairs(
         records,
         scales,
@@ -291,6 +292,47 @@ pub fn run_batch<P: Problem>(
             });
             (pga, out)
         },
+    ))
+}
+
+/// Refuses, before any run, a batch whose runs held at once (one per thread of the current rayon
+/// pool) would need more than [`crate::sim::options::MAX_RUN_MEMORY_BYTES`]: a run of a batch
+/// keeps no history but its ground motion's samples (its step count: `[time] duration`, or its
+/// record's length) and the first and last step.
+fn check_batch_memory<P: Problem>(
+    base: &P,
+    records: &[BatchRecord],
+    settings: &SimSettings,
+) -> Result<(), SimError> {
+    use crate::sim::options::{MAX_RUN_MEMORY_BYTES, run_memory_bytes};
+    let segments = base.model().segments.len();
+    let mut longest = 0usize;
+    for rec in records {
+        let Ok(r) = &rec.record else { continue };
+        let end = rec
+            .along_x
+            .iter()
+            .chain(rec.supports.iter().map(|s| &s.1))
+            .map(Record::end_time)
+            .fold(r.end_time(), Real::max);
+        let n = settings.step_count(settings.duration.unwrap_or(end))?;
+        longest = longest.max(n);
+    }
+    let at_once = rayon::current_num_threads().min(records.len()).max(1) as u64;
+    let bytes = run_memory_bytes(longest, usize::MAX, segments).saturating_mul(at_once);
+    if bytes <= MAX_RUN_MEMORY_BYTES {
+        return Ok(());
+    }
+    let gib = |b: u64| b as Real / (1u64 << 30) as Real;
+    Err(SimError::argument(
+        super::param::Setting::Duration,
+        format!(
+            "run too large: the batch runs {at_once} runs at once of up to {longest} steps each, \
+             an estimated {:.1} GiB of memory, more than the limit {:.0} GiB; shorten the \
+             duration, use a larger dt or fewer threads",
+            gib(bytes),
+            gib(MAX_RUN_MEMORY_BYTES)
+        ),
     ))
 }
 

@@ -158,36 +158,57 @@ pub fn history_rows(n_steps: usize, history_stride: usize) -> u64 {
 /// counted twice (a growing vector may hold twice its length), and the text of
 /// the largest file, built and written one at a time (`history.csv`: at most `11 + 6N + 3J`
 /// columns, at least the two-deck file's 31; `bearings.csv`: `1 + 4 b N`), 25 bytes a column.
-pub fn history_row_bytes(n_segments: usize) -> u64 {
-    let n = n_segments.max(1) as u64;
+pub fn history_row_bytes(size: impl Into<RunSize>) -> u64 {
+    let size = size.into();
+    let n = size.segments.max(1) as u64;
     let j = n - 1;
+    let b = size.bearings as u64;
     let real = std::mem::size_of::<Real>() as u64;
-    let tables = 3 + 4 * ESTIMATED_BEARINGS * n + 5 * j;
+    let tables = 3 + 4 * b + 5 * j;
     // substructures, counted as if every joint had a pier and both ends a backwall and keys:
     // a cap's q and u (4) and `piers` (4) per joint; a wall's q and u (2) and `backwalls` (3)
     // and a key pair's `shear_keys` (2) per end; the three tables' times
     let substructure = 8 * j + 2 * (2 + 3 + 2) + 3;
     let trace = real * (1 + 6 * n + 9 * j + 2 + tables + substructure)
         + std::mem::size_of::<super::Energy>() as u64;
-    let columns = (11 + 6 * n + 3 * j)
-        .max(31)
-        .max(1 + 4 * ESTIMATED_BEARINGS * n);
+    let columns = (11 + 6 * n + 3 * j).max(31).max(1 + 4 * b);
     (2 * trace).saturating_add(columns.saturating_mul(25))
 }
 
-/// Bearings per segment assumed by [`history_row_bytes`] (four corner bearings, the default).
+/// Bearings per segment assumed by [`history_row_bytes`] when only the number of segments is
+/// given (four corner bearings, the default).
 pub const ESTIMATED_BEARINGS: u64 = 4;
+
+/// The size of a run's bridge for the memory estimate: its bodies (segments, and pier caps
+/// counted as segments) and its bearings. A bare `usize` is that many segments with
+/// [`ESTIMATED_BEARINGS`] each.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RunSize {
+    /// Segments (pier caps counted as segments).
+    pub segments: usize,
+    /// Bearings of the whole bridge.
+    pub bearings: usize,
+}
+
+impl From<usize> for RunSize {
+    fn from(segments: usize) -> Self {
+        RunSize {
+            segments,
+            bearings: segments.saturating_mul(ESTIMATED_BEARINGS as usize),
+        }
+    }
+}
 
 /// Estimated peak memory \[bytes\] of a run of a bridge of `n_segments` segments (the two-deck
 /// model is `n_segments = 2`) over `n_steps` steps keeping every `history_stride`-th step: the
 /// ground motion's samples and the kept rows of [`history_row_bytes`]. Impact records (one per
 /// impact, not bounded by the step count) and allocator slack are not counted.
-pub fn run_memory_bytes(n_steps: usize, history_stride: usize, n_segments: usize) -> u64 {
+pub fn run_memory_bytes(n_steps: usize, history_stride: usize, size: impl Into<RunSize>) -> u64 {
     (n_steps as u64)
         .saturating_add(1)
         .saturating_mul(GROUND_BYTES_PER_STEP)
         .saturating_add(
-            history_rows(n_steps, history_stride).saturating_mul(history_row_bytes(n_segments)),
+            history_rows(n_steps, history_stride).saturating_mul(history_row_bytes(size)),
         )
 }
 
@@ -239,9 +260,10 @@ pub fn runs_history_stride(runs: &[(usize, usize)], from: usize) -> Result<usize
 /// The smallest history stride whose [`run_memory_bytes`] is at most
 /// [`MAX_RUN_MEMORY_BYTES`] (`None` if even keeping only the first and last step is too much;
 /// the estimate does not increase with the stride).
-pub fn min_history_stride(n_steps: usize, n_segments: usize) -> Option<usize> {
+pub fn min_history_stride(n_steps: usize, size: impl Into<RunSize>) -> Option<usize> {
+    let size = size.into();
     smallest_stride(n_steps, |s| {
-        run_memory_bytes(n_steps, s, n_segments) <= MAX_RUN_MEMORY_BYTES
+        run_memory_bytes(n_steps, s, size) <= MAX_RUN_MEMORY_BYTES
     })
 }
 

@@ -357,6 +357,38 @@ impl AccuracyRun {
     }
 }
 
+/// Refuses, before any run, a refinement whose finest level (`dt / 2^last`, its history stride
+/// `2^last` times the given one) would be refused: beyond [`crate::sim::MAX_STEPS`] steps, or
+/// beyond the memory limit.
+fn check_finest(setup: &Setup, last: usize) -> Result<(), SimError> {
+    use crate::sim::options::{MAX_RUN_MEMORY_BYTES, run_memory_bytes};
+    let s = setup.settings();
+    let factor = 1u64.checked_shl(last as u32).unwrap_or(u64::MAX);
+    let mut fine = s.clone();
+    fine.dt = s.dt / factor as Real;
+    let duration = s
+        .duration
+        .unwrap_or_else(|| crate::sim::Problem::ground(setup).end_time());
+    let n = fine.step_count(duration)?;
+    let stride = s.history_stride.saturating_mul(factor as usize);
+    let segments = crate::sim::Problem::model(setup).segments.len();
+    let bytes = run_memory_bytes(n, stride, segments);
+    if bytes > MAX_RUN_MEMORY_BYTES {
+        return Err(SimError::argument(
+            crate::sim::param::Setting::Dt,
+            format!(
+                "the finest run of the estimate (dt / {factor} = {} s, {n} steps) needs an \
+                 estimated {:.1} GiB of memory, more than the limit {:.0} GiB; use fewer \
+                 refinements, a larger dt or a shorter run",
+                crate::output::float_token(fine.dt),
+                bytes as Real / (1u64 << 30) as Real,
+                MAX_RUN_MEMORY_BYTES as Real / (1u64 << 30) as Real
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// Runs `setup` at its step `h`, `h/2` and `h/4` and estimates the error of the run at `h`; with
 /// [`AccuracySettings::tol`], halves `h` (one more run each time) until every governing quantity
 /// is trusted within it, at most [`AccuracySettings::max_refinements`] times. `on_run(dt)` is
@@ -378,6 +410,7 @@ pub fn run_with_estimate(
     } else {
         0
     };
+    check_finest(setup, last_first + 2)?;
     let mut run_level = |k: usize,
                          dts: &mut Vec<Real>,
                          solutions: &mut Vec<Option<BridgeSolution>>,

@@ -363,7 +363,12 @@ pub(super) fn build(sc: &Scenario) -> Result<SimSetup, ScenarioError> {
     let model = build_model(sc)?;
     super::supports::refuse_apart(sc)?;
     let (ground, records, units) = build_ground(sc)?;
-    let settings = build_settings(sc, &ground, &records, 2, || {
+    let bearings = model.bearings1.len() + model.bearings2.len();
+    let size = crate::sim::options::RunSize {
+        segments: 2,
+        bearings,
+    };
+    let settings = build_settings(sc, &ground, &records, size, || {
         model.validate().map_err(|e| scaled_mass_error(src, e))?;
         let sys = model.linear_system().map_err(|e| sim_error(src, e))?;
         check_mechanism(sc, &sys.frequencies)
@@ -383,8 +388,8 @@ pub(super) fn build_settings(
     sc: &Scenario,
     ground: &GroundMotion,
     records: &[String; 2],
-    // bodies of the memory estimate (segments, and piers counted as segments)
-    n_segments: usize,
+    // the memory estimate's bridge (segments, and piers counted as segments; its bearings)
+    size: crate::sim::options::RunSize,
     model_checks: impl FnOnce() -> Result<(), ScenarioError>,
 ) -> Result<SimSettings, ScenarioError> {
     let src = &sc.src;
@@ -430,10 +435,10 @@ pub(super) fn build_settings(
         })?;
         use crate::sim::options::{MAX_RUN_MEMORY_BYTES, min_history_stride, run_memory_bytes};
         let n = settings.step_count(d).unwrap_or(usize::MAX);
-        let bytes = run_memory_bytes(n, settings.history_stride, n_segments);
+        let bytes = run_memory_bytes(n, settings.history_stride, size);
         if !sc.batch && bytes > MAX_RUN_MEMORY_BYTES {
             let gib = |b: u64| b as Real / (1u64 << 30) as Real;
-            let advice = match min_history_stride(n, n_segments) {
+            let advice = match min_history_stride(n, size) {
                 Some(s) => format!("set history_every >= {s} (or shorten the run)"),
                 None => "shorten the run or use a larger dt".into(),
             };

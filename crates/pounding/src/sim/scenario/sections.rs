@@ -62,6 +62,7 @@ csv_units = "g"              # units of .csv records: "g" or "m/s2"
 dt = 1e-3            # time step [s]
 # duration = 53.71   # [s]; default: until the last record sample
 history_every = 10   # write every n-th step to history.csv (peaks use every step)
+# projection = false # rigid law: remove each step's overlap (docs/guide/simulate.md)
 
 # [contact]          # the joint's normal contact law (docs/guide/compare.md, docs/guide/contact-laws.md)
 # law = "rigid"      # rigid (Newton + Coulomb LCP, default) | kelvin | hertz | hertz-damp |

@@ -389,8 +389,11 @@ pub(super) fn build(sc: &Scenario, raw: &BridgeRaw) -> Result<BridgeSetup, Scena
     }
     // a pier's cap holds fewer values a row (2 coordinates, 2 rates, 4 in piers.csv) than a
     // segment: the memory estimate counts each as one more segment
-    let bodies = model.segments.len() + model.piers.len();
-    let settings = build_settings(sc, &ground, &records, bodies, || {
+    let size = crate::sim::options::RunSize {
+        segments: model.segments.len() + model.piers.len(),
+        bearings: model.segments.iter().map(|s| s.bearings.len()).sum(),
+    };
+    let settings = build_settings(sc, &ground, &records, size, || {
         model.validate().map_err(|e| model_error(&v, raw, e))?;
         check_mechanism(&v, raw, &model)
     })?;
