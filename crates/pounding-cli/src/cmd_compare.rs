@@ -24,7 +24,6 @@ use pounding::output::{float_token, write_atomic};
 use pounding::sim::bridge::BridgeSolution;
 use pounding::sim::compare::{CompareFlags, Comparison, LawRun, not_completed};
 use pounding::sim::output::{compare_outputs, compare_tables};
-use pounding::sim::scenario::Setup;
 use serde_json::json;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -129,10 +128,10 @@ pub fn run(args: Args) -> Result<ExitCode> {
     if cmp.bridge {
         write_outputs(&ctx, true, |out| bridge::draw(out, &runs))?;
     } else {
-        let gap0 = match cmp.first_setup() {
-            Some(Setup::TwoDecks(s)) => s.problem.model.gap,
-            _ => 0.0,
-        };
+        let gap0 = cmp
+            .first_setup()
+            .and_then(|s| s.form.two_decks())
+            .map_or(0.0, |m| m.gap);
         write_outputs(&ctx, false, |out| draw(out, &runs, gap0))?;
     }
     // Like `simulate`: a law whose run did not complete is written, then reported with exit 1.

@@ -27,8 +27,9 @@ use crate::plots::sim_lines::{Series, energy_panel, line_panel};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use pounding::analytic::SlipMode;
+use pounding::ground_motion::GroundMotion;
 use pounding::math::Real;
-use pounding::sim::SimProblem;
+use pounding::sim::SimModel;
 use pounding::sim::bridge::BridgeSolution;
 use pounding::sim::dofs::PlanDof;
 use std::path::Path;
@@ -50,8 +51,18 @@ fn save(
 
 const DEG: Real = 180.0 / std::f64::consts::PI;
 
+/// What the two-deck figures read of a run's input: the model as its file gave it and the
+/// ground motion.
+#[derive(Clone, Copy)]
+pub struct TwoDeckRun<'a> {
+    /// The two-deck model's parameters.
+    pub model: &'a SimModel,
+    /// The ground acceleration.
+    pub ground: &'a GroundMotion,
+}
+
 /// Writes all plots into `out`.
-pub fn write_all(out: &Path, problem: &SimProblem, sol: &BridgeSolution) -> R {
+pub fn write_all(out: &Path, problem: &TwoDeckRun, sol: &BridgeSolution) -> R {
     register();
     let c = Hist {
         problem,
@@ -88,7 +99,7 @@ pub fn write_all(out: &Path, problem: &SimProblem, sol: &BridgeSolution) -> R {
 /// What every time-history plot reads.
 #[derive(Clone, Copy)]
 struct Hist<'a> {
-    problem: &'a SimProblem,
+    problem: &'a TwoDeckRun<'a>,
     sol: &'a BridgeSolution,
     /// End of the time axis \[s\].
     t_end: Real,

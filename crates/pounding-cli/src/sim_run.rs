@@ -11,7 +11,7 @@ use pounding::sim::Problem;
 use pounding::sim::SimStatus;
 use pounding::sim::bridge::BridgeSolution;
 use pounding::sim::output::describe_contact;
-use pounding::sim::scenario::Setup;
+use pounding::sim::scenario::{Form, Setup};
 use serde_json::json;
 use std::path::Path;
 use std::process::ExitCode;
@@ -62,11 +62,11 @@ pub fn run(
     wr("impacts.csv", setup.impacts_csv(&sol).as_bytes())?;
     // a bridge with [code_check]: the check of its scenario, in summary.json, on stderr and in
     // the report beside the run's seat demand
-    let check = match &setup {
-        Setup::Bridge(s) => {
-            pounding::assessment::check_summary::scenario_check(&s.problem.model, scenario)
+    let check = match &setup.form {
+        Form::Bridge => {
+            pounding::assessment::check_summary::scenario_check(&setup.run.problem.model, scenario)
         }
-        Setup::TwoDecks(_) => None,
+        Form::TwoDecks(_) => None,
     };
     let summary =
         pounding::assessment::check_summary::run_summary_json_text(&setup, &sol, scenario);
@@ -90,14 +90,17 @@ pub fn run(
     let traj = setup.trajectories_json(&sol);
     wr("trajectories.json", traj.as_bytes())?;
     files.push("trajectories.json".into());
-    let (what, figures) = match &setup {
-        Setup::TwoDecks(s) => {
-            super::sim_plots::write_all(out, &s.problem, &sol)
-                .map_err(|e| anyhow!("plotting: {e}"))?;
+    let (what, figures) = match &setup.form {
+        Form::TwoDecks(model) => {
+            let run = super::sim_plots::TwoDeckRun {
+                model,
+                ground: &setup.run.problem.ground,
+            };
+            super::sim_plots::write_all(out, &run, &sol).map_err(|e| anyhow!("plotting: {e}"))?;
             ("two decks".to_string(), super::sim_plots::FIGURES.to_vec())
         }
-        Setup::Bridge(s) => {
-            let figures = crate::plots::bridge::write_all(out, &s.problem.model, &sol)
+        Form::Bridge => {
+            let figures = crate::plots::bridge::write_all(out, &setup.run.problem.model, &sol)
                 .map_err(|e| anyhow!("plotting: {e}"))?;
             let n = sol.n_segments;
             let what = format!("a bridge of {n} segment{}", if n == 1 { "" } else { "s" });
@@ -175,8 +178,8 @@ pub fn run(
 fn print_summary(setup: &Setup, sol: &BridgeSolution, sim_secs: f64, out: &Path) {
     let s = &sol.summary;
     let duration = float_token(pounding::sim::step_time(sol.steps, sol.dt));
-    match setup {
-        Setup::TwoDecks(pair) => {
+    match &setup.form {
+        Form::TwoDecks(pair) => {
             eprintln!(
                 "simulated {duration} s in {} steps ({:.1} ms): {} impacts, peak closing {} m, \
                  opening {} m, seat displacement {} m{}, energy balance error {:.1e}; outputs in {}",
@@ -196,13 +199,13 @@ fn print_summary(setup: &Setup, sol: &BridgeSolution, sim_secs: f64, out: &Path)
             if let Some(f) = s.joints[0].peak_contact_force {
                 eprintln!(
                     "contact law {}: peak contact force {} MN, peak penetration {} mm",
-                    describe_contact(&pair.problem.model.contact)["law"],
+                    describe_contact(&pair.contact)["law"],
                     bounded(f / 1e6, 4),
                     bounded(s.peak_penetration * 1e3, 4)
                 );
             }
         }
-        Setup::Bridge(_) => {
+        Form::Bridge => {
             // at most the first 8 joints on the line (a 200-segment bridge's 199 joints are in
             // summary.json)
             const SHOWN: usize = 8;

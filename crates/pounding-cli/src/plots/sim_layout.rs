@@ -1,18 +1,18 @@
 //! `layout.png`: plan view of the two decks, bearings, joint, abutments and axes (reference pose).
 
 use crate::plot_style::{BLUE, DrawResult, FAMILY, GREEN, RED, e, series_legend};
+use crate::cmd_simulate::sim_plots::TwoDeckRun;
 use plotters::coord::Shift;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use pounding::math::Real;
-use pounding::sim::SimProblem;
 
 const GREY: RGBColor = RGBColor(120, 120, 120);
 
 /// Plan view of the reference pose (spec §4): deck outlines, bearings, joint, axes.
 pub(crate) fn layout<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
-    problem: &SimProblem,
+    problem: &TwoDeckRun,
 ) -> DrawResult {
     let m = &problem.model;
     let g = m.gap;
@@ -137,7 +137,7 @@ pub(crate) type PlanChart<'a, DB> =
 
 /// Outline of deck `j` (1 or 2) in the plan view: the curved deck's arcs, or the four end-face
 /// corners of a straight/skew deck (closed polygon).
-fn deck_outline(problem: &SimProblem, j: usize) -> Vec<(Real, Real)> {
+fn deck_outline(problem: &TwoDeckRun, j: usize) -> Vec<(Real, Real)> {
     let m = &problem.model;
     let g = m.gap;
     let bodies = m.deck_bodies();
@@ -180,7 +180,7 @@ fn deck_outline(problem: &SimProblem, j: usize) -> Vec<(Real, Real)> {
 }
 
 /// The abutment faces: the far-face line moved by the abutment gap, drawn 1.6 face lengths long.
-fn abutment_polygons(problem: &SimProblem) -> Vec<Vec<(Real, Real)>> {
+fn abutment_polygons(problem: &TwoDeckRun) -> Vec<Vec<(Real, Real)>> {
     let m = &problem.model;
     let bodies = m.deck_bodies();
     m.abutments

@@ -159,8 +159,8 @@ pub fn run_summary_json_text(
     scenario: (&str, &str),
 ) -> String {
     let mut v = setup.summary_json_value(sol);
-    if let (Setup::Bridge(b), Value::Object(o)) = (setup, &mut v)
-        && let Some(c) = scenario_check(&b.problem.model, scenario)
+    if let (crate::sim::scenario::Form::Bridge, Value::Object(o)) = (&setup.form, &mut v)
+        && let Some(c) = scenario_check(&setup.run.problem.model, scenario)
     {
         let entry = match c {
             Ok(r) => summary_json(&r, &sol.summary.seats),

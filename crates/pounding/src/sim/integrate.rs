@@ -294,15 +294,13 @@ impl BridgeModel {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sim::scenario::{Scenario, Setup};
+    use crate::sim::scenario::Scenario;
 
     /// A scenario of `examples/`, cut to `duration` seconds.
     fn example(name: &str, duration: Real) -> (BridgeModel, GroundMotion, SimSettings) {
         let path = format!("{}/../../examples/{name}", env!("CARGO_MANIFEST_DIR"));
         let sc = Scenario::load(std::path::Path::new(&path)).expect("example reads");
-        let Setup::Bridge(b) = sc.build_setup().expect("example builds") else {
-            panic!("a bridge example")
-        };
+        let b = sc.build_bridge().expect("a bridge example builds");
         let mut settings = b.settings.clone();
         settings.duration = Some(duration);
         (b.problem.model, b.problem.ground, settings)

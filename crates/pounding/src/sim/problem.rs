@@ -75,6 +75,16 @@ pub fn simulate<P: Problem + ?Sized>(
     ))
 }
 
+/// The two-deck model's supports all move with its ground motion: the error of a motion per
+/// support given to it.
+pub(crate) fn two_deck_supports_error() -> SimError {
+    SimError::argument(
+        "supports",
+        "a two-deck file's supports all move with its ground motion: a motion per support needs \
+         a bridge file ([[segment]] tables)",
+    )
+}
+
 /// Every support with the run's ground motion.
 pub(crate) static UNIFORM: SupportExcitation = SupportExcitation::Uniform;
 
@@ -166,11 +176,7 @@ impl Problem for SimProblem {
         finite("u0", &self.u0)
     }
     fn with_motion(&self, _: GroundMotion, _: SupportExcitation) -> Result<Self, SimError> {
-        Err(SimError::argument(
-            "supports",
-            "a two-deck file's supports all move with its ground motion: a motion per \
-                     support needs a bridge file ([[segment]] tables)",
-        ))
+        Err(two_deck_supports_error())
     }
     fn with_ground(&self, ground: GroundMotion) -> Self {
         SimProblem {

@@ -251,13 +251,12 @@ fn writers_rows_match_their_headers() {
     let pair = pounding::sim::bridge::BridgeModel::from_pair(&setup.problem.model);
     let i = impacts_csv(Layout::TwoDecks, &pair, &sol);
     assert_eq!(i.lines().count(), sol.impacts.len() + 1);
-    let j =
-        pounding::sim::scenario::Setup::TwoDecks(Box::new(setup.clone())).summary_json_text(&sol);
+    let j = pounding::sim::scenario::Setup::of_two_decks(setup.clone()).summary_json_text(&sol);
     assert!(j.ends_with("}\n"));
     let v: serde_json::Value = serde_json::from_str(&j).unwrap();
     assert_eq!(v["steps"], sol.steps);
     assert!(v["abutments"]["deck1"].is_object());
-    let st = pounding::sim::scenario::Setup::TwoDecks(Box::new(setup.clone()));
+    let st = pounding::sim::scenario::Setup::of_two_decks(setup.clone());
     let ran = pounding::sim::compare::Ran {
         estimates: st.peak_force_estimates(&sol),
         setup: st,

@@ -16,7 +16,7 @@ mod agree;
 pub use agree::{Agreement, Headline, agreement, headline};
 
 use super::output::{InputWarning, PeakEstimate, SiteKey, input_warnings, warnings_message};
-use super::scenario::{Scenario, ScenarioError, Setup};
+use super::scenario::{Form, Scenario, ScenarioError, Setup};
 use super::{Problem, Progress, SimStatus};
 use crate::math::Real;
 use crate::sim::bridge::BridgeSolution;
@@ -272,12 +272,12 @@ impl Comparison {
                 .settings()
                 .duration
                 .unwrap_or_else(|| s.ground().end_time());
-            let n = match s {
-                Setup::TwoDecks(_) => s
+            let n = match s.form {
+                Form::TwoDecks(_) => s
                     .settings()
                     .step_count(d)
                     .map_err(|e| CompareError::Size(e.to_string()))?,
-                Setup::Bridge(_) => s.settings().step_count(d).unwrap_or(usize::MAX),
+                Form::Bridge => s.settings().step_count(d).unwrap_or(usize::MAX),
             };
             sizes.push((n, s.model().segments.len()));
         }

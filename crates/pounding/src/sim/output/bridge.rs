@@ -276,15 +276,6 @@ fn supports_json(setup: &BridgeSetup) -> Option<Value> {
     }))
 }
 
-/// `summary.json` as written: pretty-printed with a final newline.
-pub(crate) fn bridge_summary_json_text(setup: &BridgeSetup, sol: &BridgeSolution) -> String {
-    let mut v = bridge_summary_json(setup, sol);
-    crate::output::json_without_negative_zero(&mut v);
-    let mut s = serde_json::to_string_pretty(&v).unwrap_or_default();
-    s.push('\n');
-    s
-}
-
 /// One seated end's margin in `summary.json`.
 fn seat_json(s: &crate::sim::bridge::SeatSummary) -> serde_json::Value {
     json!({

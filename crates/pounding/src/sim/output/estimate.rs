@@ -95,22 +95,11 @@ pub(crate) fn peak_estimate_json<'a>(
 /// `peak_force_estimate_n`: `None` when no contact site of the run is rigid (the compliance laws
 /// compute their forces), else the rigid sites' estimates (empty without impacts).
 pub(crate) fn setup_estimates(
-    setup: &crate::sim::scenario::Setup,
+    m: &crate::sim::bridge::BridgeModel,
     sol: &crate::sim::bridge::BridgeSolution,
 ) -> Option<BTreeMap<SiteKey, PeakEstimate>> {
-    use crate::sim::scenario::Setup;
-    match setup {
-        Setup::TwoDecks(s) => {
-            let m = &s.problem.model;
-            matches!(m.contact, crate::sim::JointContact::Rigid)
-                .then(|| peak_force_estimates(sol.impacts.iter().map(|r| (r, m.restitution))))
-        }
-        Setup::Bridge(s) => {
-            let m = &s.problem.model;
-            let records = sol.impacts.iter().filter(|r| r.pulse.is_none());
-            super::impacts::site_kinds(m).0.then(|| {
-                peak_force_estimates(records.map(|r| (r, super::impacts::site_restitution(m, r))))
-            })
-        }
-    }
+    let records = sol.impacts.iter().filter(|r| r.pulse.is_none());
+    super::impacts::site_kinds(m)
+        .0
+        .then(|| peak_force_estimates(records.map(|r| (r, super::impacts::site_restitution(m, r)))))
 }

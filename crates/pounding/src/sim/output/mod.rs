@@ -3,7 +3,6 @@
 //! in CSV; [`json_float`]: `null` in JSON), so the bytes are the same for any thread count.
 
 use super::bridge::{BridgeSolution, SeatSummary};
-use super::scenario::SimSetup;
 use super::{JointContact, SimModel};
 
 use crate::ground_motion::Record;
@@ -24,8 +23,8 @@ mod input_warnings;
 mod trajectories;
 mod verdict;
 pub use batch::{BATCH_HEADER, BATCH_TAIL, batch_csv, batch_set_csv, bridge_batch_header};
+pub(crate) use bridge::bridge_summary_json;
 pub use bridge::governing_seat_line;
-pub(crate) use bridge::{bridge_summary_json, bridge_summary_json_text};
 pub use bridge_plan::{
     BridgePlan, CornerPaths, bridge_plan, corner_paths, joint_openings, plan_exaggeration,
     segment_displacements,
@@ -254,10 +253,13 @@ pub fn warnings_message(w: &[RunWarning]) -> Option<String> {
 
 /// The `summary.json` value: peaks, unseating, energies, status and counters, the ground motion
 /// and the model (keys for straight/skewed decks, abutments and compliance laws only when used).
-pub(crate) fn pair_summary_json(setup: &SimSetup, sol: &BridgeSolution) -> serde_json::Value {
+pub(crate) fn pair_summary_json(
+    setup: &crate::sim::scenario::BridgeSetup,
+    m: &SimModel,
+    sol: &BridgeSolution,
+) -> serde_json::Value {
     let s = &sol.summary;
     let e = &s.final_energy;
-    let m = &setup.problem.model;
     let joint = &s.joints[0];
     let seat: serde_json::Map<String, serde_json::Value> = s
         .seats
@@ -441,15 +443,6 @@ pub(crate) fn add_projection_keys(
         "max_passes": p.max_passes,
         "failures": p.failures,
     });
-}
-
-/// `summary.json` as written: [`pair_summary_json`] pretty-printed, with a final newline.
-pub(crate) fn pair_summary_json_text(setup: &SimSetup, sol: &BridgeSolution) -> String {
-    let mut v = pair_summary_json(setup, sol);
-    crate::output::json_without_negative_zero(&mut v);
-    let mut s = serde_json::to_string_pretty(&v).unwrap_or_default();
-    s.push('\n');
-    s
 }
 
 /// Short description of a joint contact for summaries.

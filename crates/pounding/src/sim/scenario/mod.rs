@@ -32,7 +32,7 @@ pub use contact::{
 };
 pub use error::{Key, KeyRef, ParamKey, ScenarioError, Section};
 pub use sections::DEFAULT_SCENARIO_TOML;
-pub use setup::Setup;
+pub use setup::{Form, Setup};
 
 use super::{SimProblem, SimSettings};
 use crate::ground_motion::AccelUnits;

@@ -1,33 +1,86 @@
-//! A built scenario of either form, ready to run: the two-deck model's (`[decks]` …) or a
-//! bridge's (`[[segment]]` …). Both run as a bridge to the one [`BridgeSolution`]; the form only
-//! decides the files' [`Layout`] and the two-deck summary's own keys. Front ends hold a [`Setup`]
-//! and never branch on the form to run or to write.
+//! A built scenario of either form, ready to run: one bridge run ([`BridgeSetup`]) and the
+//! [`Form`] its file was written in. A two-deck file (`[decks]` …) is expanded into its bridge of
+//! two segments ([`BridgeModel::from_pair`]) when it is built, as a solver expands user sugar into
+//! its general form; what is left of the form is how the files name things ([`Layout`]) and the
+//! two-deck summary's own keys. Front ends hold a [`Setup`] and never branch on the form to run.
 
 use super::{BridgeSetup, Scenario, ScenarioError, SimSetup};
 use crate::ground_motion::GroundMotion;
 use crate::math::Real;
-use crate::sim::bridge::{BridgeModel, BridgeSolution};
+use crate::sim::bridge::{BridgeModel, BridgeProblem, BridgeSolution};
 use crate::sim::output::{self, History, Layout, RunWarning};
-use crate::sim::{Problem, SimError, SimSettings};
+use crate::sim::{Problem, SimError, SimModel, SimSettings};
 use std::borrow::Cow;
 
-/// A scenario built for one run.
+/// A scenario built for one run: the bridge that runs and the form of the file it came from.
 #[derive(Debug, Clone)]
-pub enum Setup {
-    /// The two-deck model (the bridge of two segments [`BridgeModel::from_pair`]).
-    TwoDecks(Box<SimSetup>),
+pub struct Setup {
+    /// The run: the bridge (a two-deck file: its bridge of two segments), its ground motion,
+    /// settings and records.
+    pub run: BridgeSetup,
+    /// The scenario's form.
+    pub form: Form,
+}
+
+/// The form of a scenario file: it decides only how the run's files name things.
+#[derive(Debug, Clone)]
+pub enum Form {
     /// A bridge of `[[segment]]`s.
-    Bridge(Box<BridgeSetup>),
+    Bridge,
+    /// The two-deck model (`[decks]`, `[joint]`, `[bearings]`, `[abutments]`): its parameters as
+    /// given, for the keys of its `summary.json` (`mass_kg`, `shape`, `bearings`, …) and its
+    /// figures.
+    TwoDecks(Box<SimModel>),
+}
+
+impl Form {
+    /// The two-deck model's parameters (`None` for a bridge file).
+    pub fn two_decks(&self) -> Option<&SimModel> {
+        match self {
+            Form::TwoDecks(m) => Some(m),
+            Form::Bridge => None,
+        }
+    }
+}
+
+impl Setup {
+    /// The run of a two-deck file: its bridge of two segments ([`BridgeModel::from_pair`]) with
+    /// the same ground motion, initial state, settings and records.
+    pub fn of_two_decks(s: SimSetup) -> Self {
+        let p = s.problem;
+        let problem = BridgeProblem {
+            q0: p.q0.to_vec(),
+            u0: p.u0.to_vec(),
+            ..BridgeProblem::at_rest(BridgeModel::from_pair(&p.model), p.ground)
+        };
+        Setup {
+            run: BridgeSetup {
+                problem,
+                settings: s.settings,
+                records: s.records,
+                units: s.units,
+            },
+            form: Form::TwoDecks(Box::new(p.model)),
+        }
+    }
+
+    /// The run of a bridge file.
+    pub fn of_bridge(run: BridgeSetup) -> Self {
+        Setup {
+            run,
+            form: Form::Bridge,
+        }
+    }
 }
 
 impl Scenario {
     /// Builds the scenario in its form ([`Scenario::is_bridge`]): [`Scenario::build_bridge`] or
-    /// [`Scenario::build`].
+    /// [`Scenario::build`], expanded into the one run.
     pub fn build_setup(&self) -> Result<Setup, ScenarioError> {
         Ok(if self.is_bridge() {
-            Setup::Bridge(Box::new(self.build_bridge()?))
+            Setup::of_bridge(self.build_bridge()?)
         } else {
-            Setup::TwoDecks(Box::new(self.build()?))
+            Setup::of_two_decks(self.build()?)
         })
     }
 }
@@ -35,39 +88,32 @@ impl Scenario {
 impl Setup {
     /// The run's settings.
     pub fn settings(&self) -> &SimSettings {
-        match self {
-            Setup::TwoDecks(s) => &s.settings,
-            Setup::Bridge(s) => &s.settings,
-        }
+        &self.run.settings
     }
 
     /// The run's settings, to change (progress callback, …).
     pub fn settings_mut(&mut self) -> &mut SimSettings {
-        match self {
-            Setup::TwoDecks(s) => &mut s.settings,
-            Setup::Bridge(s) => &mut s.settings,
-        }
+        &mut self.run.settings
     }
 
     /// The names of the records it runs (`[y, x]`, `"none"` for an absent component).
     pub fn records_mut(&mut self) -> &mut [String; 2] {
-        match self {
-            Setup::TwoDecks(s) => &mut s.records,
-            Setup::Bridge(s) => &mut s.records,
-        }
+        &mut self.run.records
     }
 
     /// Whether the abutment of each side (the two-deck model: of each deck) is present.
     pub fn abutments(&self) -> [bool; 2] {
-        match self {
-            Setup::TwoDecks(s) => s.problem.model.abutments.map(|a| a.is_some()),
-            Setup::Bridge(s) => s.problem.model.abutments.map(|a| a.is_some()),
-        }
+        self.run
+            .problem
+            .model
+            .abutments
+            .each_ref()
+            .map(Option::is_some)
     }
 
     /// Runs it with its settings ([`crate::sim::simulate`]).
     pub fn run(&self) -> Result<BridgeSolution, SimError> {
-        crate::sim::simulate(self, self.settings())
+        self.run.run()
     }
 
     /// `history.csv` of a run of it.
@@ -77,7 +123,7 @@ impl Setup {
 
     /// `impacts.csv` of a run of it.
     pub fn impacts_csv(&self, sol: &BridgeSolution) -> String {
-        output::impacts_csv(self.layout(), &self.model(), sol)
+        output::impacts_csv(self.layout(), &self.run.problem.model, sol)
     }
 
     /// The warnings of a run of it about its impacts ([`output::run_warnings`]).
@@ -87,7 +133,7 @@ impl Setup {
 
     /// `trajectories.json` of a run of it (the plan animation's data).
     pub fn trajectories_json(&self, sol: &BridgeSolution) -> String {
-        output::trajectories_json(&self.model(), self.ground(), sol)
+        output::trajectories_json(&self.run.problem.model, self.ground(), sol)
     }
 
     /// The rigid law's peak-force estimates of a run of it, by site (`None` when no contact site
@@ -97,71 +143,55 @@ impl Setup {
         &self,
         sol: &BridgeSolution,
     ) -> Option<std::collections::BTreeMap<output::SiteKey, output::PeakEstimate>> {
-        output::setup_estimates(self, sol)
+        output::setup_estimates(&self.run.problem.model, sol)
     }
 
     /// `summary.json` of a run of it, as written.
     pub fn summary_json_text(&self, sol: &BridgeSolution) -> String {
-        match self {
-            Setup::TwoDecks(s) => output::pair_summary_json_text(s, sol),
-            Setup::Bridge(s) => output::bridge_summary_json_text(s, sol),
-        }
+        let mut v = self.summary_json_value(sol);
+        crate::output::json_without_negative_zero(&mut v);
+        let mut s = serde_json::to_string_pretty(&v).unwrap_or_default();
+        s.push('\n');
+        s
     }
 
     /// `summary.json` as a value (its text is [`Setup::summary_json_text`]); callers that add
     /// a key (the code check of a run) write it with [`crate::output::json_text`].
     pub fn summary_json_value(&self, sol: &BridgeSolution) -> serde_json::Value {
-        match self {
-            Setup::TwoDecks(s) => output::pair_summary_json(s, sol),
-            Setup::Bridge(s) => output::bridge_summary_json(s, sol),
+        match &self.form {
+            Form::TwoDecks(m) => output::pair_summary_json(&self.run, m, sol),
+            Form::Bridge => output::bridge_summary_json(&self.run, sol),
         }
     }
 }
 
-/// Delegates to the problem of its form (a batch over a setup runs its problem).
+/// The bridge that runs; the two-deck form refuses a motion per support.
 impl Problem for Setup {
     fn model(&self) -> Cow<'_, BridgeModel> {
-        match self {
-            Setup::TwoDecks(s) => s.problem.model(),
-            Setup::Bridge(s) => s.problem.model(),
-        }
+        self.run.problem.model()
     }
     fn ground(&self) -> &GroundMotion {
-        match self {
-            Setup::TwoDecks(s) => &s.problem.ground,
-            Setup::Bridge(s) => &s.problem.ground,
-        }
+        &self.run.problem.ground
     }
     fn supports(&self) -> &crate::sim::excitation::SupportExcitation {
-        match self {
-            Setup::TwoDecks(s) => s.problem.supports(),
-            Setup::Bridge(s) => s.problem.supports(),
-        }
+        &self.run.problem.supports
     }
     fn initial(&self) -> (&[Real], &[Real]) {
-        match self {
-            Setup::TwoDecks(s) => s.problem.initial(),
-            Setup::Bridge(s) => s.problem.initial(),
-        }
+        self.run.problem.initial()
     }
     fn check_model(&self) -> Result<(), SimError> {
-        match self {
-            Setup::TwoDecks(s) => s.problem.check_model(),
-            Setup::Bridge(s) => s.problem.check_model(),
+        match &self.form {
+            // the preset's own names (R1, beta2, …) in its errors
+            Form::TwoDecks(m) => m.linear_system().map(|_| ()),
+            Form::Bridge => self.run.problem.check_model(),
         }
     }
     fn check_initial(&self) -> Result<(), SimError> {
-        match self {
-            Setup::TwoDecks(s) => s.problem.check_initial(),
-            Setup::Bridge(s) => s.problem.check_initial(),
-        }
+        self.run.problem.check_initial()
     }
     fn with_ground(&self, ground: GroundMotion) -> Self {
         let mut out = self.clone();
-        match &mut out {
-            Setup::TwoDecks(s) => s.problem.ground = ground,
-            Setup::Bridge(s) => s.problem.ground = ground,
-        }
+        out.run.problem.ground = ground;
         out
     }
     fn with_motion(
@@ -169,22 +199,17 @@ impl Problem for Setup {
         ground: GroundMotion,
         supports: crate::sim::excitation::SupportExcitation,
     ) -> Result<Self, SimError> {
-        Ok(match self {
-            Setup::TwoDecks(s) => {
-                s.problem.with_motion(ground, supports)?;
-                unreachable!("a two-deck problem refuses")
-            }
-            Setup::Bridge(s) => {
-                let mut out = s.clone();
-                out.problem = out.problem.with_motion(ground, supports)?;
-                Setup::Bridge(out)
-            }
-        })
+        if self.form.two_decks().is_some() {
+            return Err(crate::sim::problem::two_deck_supports_error());
+        }
+        let mut out = self.clone();
+        out.run.problem = out.run.problem.with_motion(ground, supports)?;
+        Ok(out)
     }
     fn layout(&self) -> Layout {
-        match self {
-            Setup::TwoDecks(_) => Layout::TwoDecks,
-            Setup::Bridge(_) => Layout::Bridge,
+        match self.form {
+            Form::TwoDecks(_) => Layout::TwoDecks,
+            Form::Bridge => Layout::Bridge,
         }
     }
 }
