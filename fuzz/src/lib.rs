@@ -469,7 +469,7 @@ mod sim_model_impl {
                 })
                 .collect();
         }
-        if model.validate().is_err() || model.linear_system().is_err() {
+        if model.validate().is_err() || model.check().is_err() {
             return;
         }
         let dt_rec = d.p(0.005, 0.05);

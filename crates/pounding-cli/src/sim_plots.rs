@@ -207,7 +207,7 @@ fn joint_gap(c: &Hist, root: &DrawingArea<BitMapBackend, Shift>) -> R {
     } = *c;
     let col = |f: &dyn Fn(usize) -> Real| c.col(f);
     let g = problem.model.gap;
-    let w = problem.model.deck_bodies()[0].half_face;
+    let w = problem.model.deck_bodies()[0].joint_face(1).half;
     line_panel(
         root,
         &format!(

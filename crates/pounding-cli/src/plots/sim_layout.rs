@@ -1,7 +1,7 @@
 //! `layout.png`: plan view of the two decks, bearings, joint, abutments and axes (reference pose).
 
-use crate::plot_style::{BLUE, DrawResult, FAMILY, GREEN, RED, e, series_legend};
 use crate::cmd_simulate::sim_plots::TwoDeckRun;
+use crate::plot_style::{BLUE, DrawResult, FAMILY, GREEN, RED, e, series_legend};
 use plotters::coord::Shift;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
@@ -68,7 +68,7 @@ pub(crate) fn layout<DB: DrawingBackend>(
                 .legend(|(x, y)| Rectangle::new([(x, y - 5), (x + 20, y + 5)], GREY.filled()));
         }
     }
-    let w2 = bodies[0].half_face;
+    let w2 = bodies[0].joint_face(1).half;
     chart
         .draw_series(std::iter::once(PathElement::new(
             vec![(-w2 * 3.0, 0.0), (w2 * 3.0, 0.0)],
@@ -148,13 +148,13 @@ fn deck_outline(problem: &TwoDeckRun, j: usize) -> Vec<(Real, Real)> {
         (Some(_), Some(d)) => *d,
         (Some(_), None) => {
             // straight / skewed: the four end-face corners (joint c0, c1, far c0, c1)
-            let b = &bodies[j - 1];
+            let (joint, far) = (bodies[j - 1].joint_face(j), bodies[j - 1].far_face(j));
             return [
-                b.joint_corners[0],
-                b.joint_corners[1],
-                b.far_corners[0],
-                b.far_corners[1],
-                b.joint_corners[0],
+                joint.corners[0],
+                joint.corners[1],
+                far.corners[0],
+                far.corners[1],
+                joint.corners[0],
             ]
             .iter()
             .map(|p| (p.x, p.y))
@@ -188,11 +188,11 @@ fn abutment_polygons(problem: &TwoDeckRun) -> Vec<Vec<(Real, Real)>> {
         .enumerate()
         .filter_map(|(j, a)| {
             let a = a.as_ref()?;
-            let b = &bodies[j];
-            let n_out = -b.far_inward;
-            let c = b.far_mid() + n_out * a.gap;
-            let dir = (b.far_corners[1] - b.far_corners[0]) * 0.8;
-            let back = n_out * (0.06 * (b.far_corners[1] - b.far_corners[0]).norm());
+            let far = bodies[j].far_face(j + 1);
+            let n_out = -far.inward;
+            let c = far.mid + n_out * a.gap;
+            let dir = (far.corners[1] - far.corners[0]) * 0.8;
+            let back = n_out * (0.06 * (far.corners[1] - far.corners[0]).norm());
             Some(
                 [c - dir, c + dir, c + dir + back, c - dir + back]
                     .iter()

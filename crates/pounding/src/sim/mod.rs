@@ -105,6 +105,7 @@ use thiserror::Error;
 pub use model::Bearing;
 pub use options::{ComplianceContact, DampingModel, JointContact};
 pub use problem::{Problem, simulate};
+pub use scheme::BodySystem;
 pub use settings::{MAX_STEPS, PROGRESS_EVERY, Progress, SimSettings};
 pub use two_deck::{
     SimAbutment, SimContact, SimModel, SimProblem, end_corner_points, shape_corner_points,

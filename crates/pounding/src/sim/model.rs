@@ -1,11 +1,11 @@
-//! The structural model of a simulation: deck bodies in the reference pose, bearings, the linear
-//! mass / stiffness / Rayleigh-damping matrices.
+//! The structural model of a simulation: segment bodies in the reference pose (the two-deck
+//! model's decks among them), bearings, natural frequencies and Rayleigh coefficients.
 
 use super::SimError;
 use crate::geometry::MassProperties;
 use crate::math::{Real, Vector};
 use crate::shape::{Deck, DeckEnd, DeckShape};
-use nalgebra::{Matrix3, Matrix6};
+use nalgebra::Matrix3;
 
 /// One discrete elastic bearing: a linear spring of equal stiffness `k` in x and y, attached to a
 /// body point of a deck and to the ground (pier / abutment).
@@ -35,36 +35,13 @@ pub(crate) fn validate_deck(deck: &Deck, j: usize) -> Result<(), SimError> {
     Ok(())
 }
 
-/// A deck's body-fixed points in the reference pose, global frame of spec §4.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct DeckBody {
-    /// Mass properties (`centroid` in the deck's body frame, see [`crate::shape`]).
-    pub mass: MassProperties,
-    /// Reference centroid `G⁰` (global).
-    pub centroid: Vector,
-    /// Reference face midpoint `M⁰` (global): `(0, g)` for deck 1, `(0, 0)` for deck 2.
-    pub face_mid: Vector,
-    /// Joint-face corners `[inner, outer]` (global, reference pose).
-    pub joint_corners: [Vector; 2],
-    /// Far-end (other end face) corners `[inner, outer]` (global, reference pose).
-    pub far_corners: [Vector; 2],
-    /// Unit vector along the joint face from inner to outer corner, `e_j` (spec §4).
-    pub face_dir: Vector,
-    /// Unit normal of the joint face pointing *into* the deck (the direction in which the end
-    /// moves off its seat).
-    pub joint_inward: Vector,
-    /// Unit normal of the far end face pointing into the deck.
-    pub far_inward: Vector,
-    /// Half the joint-face length (`W/2`; `W/(2 cos θ_s)` for a skewed deck) \[m\]: a corner of
-    /// the other deck lies over this face iff `|σ| ≤ half_face`.
-    pub half_face: Real,
-}
-
-impl DeckBody {
-    /// Reference-pose body of deck `j ∈ {1, 2}` with joint opening `gap` (spec §4):
-    /// deck 1 points `M_1 + (R_1 − r cos φ, r sin φ)`, deck 2 points `M_2 + (−R_2 + r cos φ, −r sin φ)`,
-    /// `r ∈ [R − W/2, R + W/2]`, `φ ∈ [0, β]`.
-    pub fn new(deck: &Deck, j: usize, gap: Real) -> Self {
+impl SegmentBody {
+    /// Reference-pose body of curved deck `j ∈ {1, 2}` of the two-deck model with joint opening
+    /// `gap` (deck 1 points `M_1 + (R_1 − r cos φ, r sin φ)`, deck 2 points
+    /// `M_2 + (−R_2 + r cos φ, −r sin φ)`, `r ∈ [R − W/2, R + W/2]`, `φ ∈ [0, β]`, `M_1 = (0, g)`,
+    /// `M_2 = 0`). Its joint face ([`SegmentBody::joint_face`]) is deck 1's end face and deck 2's
+    /// start face.
+    pub fn of_curved_deck(deck: &Deck, j: usize, gap: Real) -> Self {
         let mp = deck.mass_properties();
         let (r, w, b) = (deck.radius, deck.width, deck.angle);
         let s = if j == 1 { 1.0 } else { -1.0 };
@@ -77,27 +54,27 @@ impl DeckBody {
         let pt = |rho: Real, phi: Real| Vector::new(s * (r - rho * phi.cos()), s * rho * phi.sin());
         let ri = r - w / 2.0;
         let ro = r + w / 2.0;
-        DeckBody {
-            mass: mp,
-            centroid: face_mid + mp.centroid * s,
-            face_mid,
-            joint_corners: [face_mid + pt(ri, 0.0), face_mid + pt(ro, 0.0)],
-            far_corners: [face_mid + pt(ri, b), face_mid + pt(ro, b)],
-            face_dir: Vector::new(-s, 0.0),
-            joint_inward: Vector::new(0.0, s),
-            // d/dφ of the body point: s (ρ sin φ, ρ cos φ) points into the deck at φ = 0 and out
-            // of it at φ = β.
-            far_inward: -Vector::new(s * b.sin(), s * b.cos()),
-            half_face: w / 2.0,
-        }
+        let joint = EndFace {
+            corners: [face_mid + pt(ri, 0.0), face_mid + pt(ro, 0.0)],
+            mid: face_mid,
+            dir: Vector::new(-s, 0.0),
+            inward: Vector::new(0.0, s),
+            half: w / 2.0,
+        };
+        // d/dφ of the body point: s (ρ sin φ, ρ cos φ) points into the deck at φ = 0 and out of
+        // it at φ = β.
+        let far_inward = -Vector::new(s * b.sin(), s * b.cos());
+        let far = far_face([face_mid + pt(ri, b), face_mid + pt(ro, b)], far_inward);
+        Self::of_deck_faces(mp, face_mid + mp.centroid * s, j, joint, far)
     }
 
-    /// Reference-pose body of deck `j ∈ {1, 2}` of any [`DeckShape`] (frames of [`crate::shape`]):
-    /// deck 1 is the body frame translated by `(0, g)`, deck 2 the body frame turned by π about
-    /// the origin, so the two joint faces lie on `y = g` and `y = 0` and the decks meet face to
-    /// face. Corner `k` of the joint face is the shape's `c_k` (curved: `c0` = inner; straight /
-    /// skewed: `c0` = acute corner), so deck 1's `c0` and deck 2's `c1` lie at `x = +b/2`.
-    pub fn from_shape(shape: &DeckShape, j: usize, gap: Real) -> Self {
+    /// Reference-pose body of deck `j ∈ {1, 2}` of any [`DeckShape`] (frames of
+    /// [`crate::shape`]): deck 1 is the body frame translated by `(0, g)`, deck 2 the body frame
+    /// turned by π about the origin, so the two joint faces lie on `y = g` and `y = 0` and the
+    /// decks meet face to face. Corner `k` of the joint face is the shape's `c_k` (curved: `c0` =
+    /// inner; straight / skewed: `c0` = acute corner), so deck 1's `c0` and deck 2's `c1` lie at
+    /// `x = +b/2`.
+    pub fn of_deck_shape(shape: &DeckShape, j: usize, gap: Real) -> Self {
         let mass = shape.mass_properties();
         let jf = shape.end_face(DeckEnd::Joint);
         let ff = shape.end_face(DeckEnd::Far);
@@ -108,45 +85,54 @@ impl DeckBody {
         };
         let w = |p: Vector| off + p * s;
         let jc = [w(jf.corners[0]), w(jf.corners[1])];
-        DeckBody {
+        let joint = EndFace {
+            corners: jc,
+            mid: off,
+            dir: (jc[1] - jc[0]).normalize(),
+            inward: -jf.outward_normal * s,
+            half: 0.5 * jf.length(),
+        };
+        let far = far_face([w(ff.corners[0]), w(ff.corners[1])], -ff.outward_normal * s);
+        Self::of_deck_faces(mass, w(mass.centroid), j, joint, far)
+    }
+
+    /// Deck `j`'s joint face is its end face (deck 1) or its start face (deck 2).
+    fn of_deck_faces(
+        mass: MassProperties,
+        centroid: Vector,
+        j: usize,
+        joint: EndFace,
+        far: EndFace,
+    ) -> Self {
+        let (start, end) = if j == 1 { (far, joint) } else { (joint, far) };
+        SegmentBody {
             mass,
-            centroid: w(mass.centroid),
-            face_mid: off,
-            joint_corners: jc,
-            far_corners: [w(ff.corners[0]), w(ff.corners[1])],
-            face_dir: (jc[1] - jc[0]).normalize(),
-            joint_inward: -jf.outward_normal * s,
-            far_inward: -ff.outward_normal * s,
-            half_face: 0.5 * jf.length(),
+            centroid,
+            start,
+            end,
         }
     }
 
-    /// Midpoint of the far end face (reference pose, global).
-    pub fn far_mid(&self) -> Vector {
-        (self.far_corners[0] + self.far_corners[1]) * 0.5
+    /// The joint face of two-deck deck `j ∈ {1, 2}` (deck 1's end face, deck 2's start face).
+    pub fn joint_face(&self, j: usize) -> &EndFace {
+        if j == 1 { &self.end } else { &self.start }
     }
 
-    /// Position of the body point with reference position `p0` when the deck's centroid is
-    /// displaced by `d` and the deck turned by `θ` (given as `(sin θ, cos θ)`) about it:
-    /// `p = G⁰ + d + Rot(θ)(p0 − G⁰)`.
-    #[inline]
-    pub fn place(&self, p0: &Vector, d: &Vector, sc: (Real, Real)) -> Vector {
-        let r = p0 - self.centroid;
-        let (s, c) = sc;
-        self.centroid + d + Vector::new(c * r.x - s * r.y, s * r.x + c * r.y)
+    /// The far end face of two-deck deck `j ∈ {1, 2}` (the one an abutment faces).
+    pub fn far_face(&self, j: usize) -> &EndFace {
+        if j == 1 { &self.start } else { &self.end }
     }
 }
 
-/// `3 × 3` stiffness of one deck's bearings in `(u_x, u_y, θ)` (linearised kinematics):
-/// `K = Σ_p k_p Bᵀ B`, `B = [[1, 0, −r_y], [0, 1, r_x]]`, `r = p − G⁰`.
-pub fn bearing_stiffness(body: &DeckBody, bearings: &[Bearing]) -> Matrix3<Real> {
-    let mut k = Matrix3::zeros();
-    for b in bearings {
-        let r = body.face_mid + b.point - body.centroid;
-        let bm = nalgebra::Matrix2x3::new(1.0, 0.0, -r.y, 0.0, 1.0, r.x);
-        k += b.stiffness * bm.transpose() * bm;
+/// An end face from its corners and inward normal (midpoint, direction and half length derived).
+fn far_face(corners: [Vector; 2], inward: Vector) -> EndFace {
+    EndFace {
+        corners,
+        mid: (corners[0] + corners[1]) * 0.5,
+        dir: (corners[1] - corners[0]).normalize(),
+        inward,
+        half: 0.5 * (corners[1] - corners[0]).norm(),
     }
-    k
 }
 
 /// Natural circular frequencies `ω_1 ≤ ω_2 ≤ ω_3` \[rad/s\] of `K φ = ω² M φ` for one deck
@@ -205,21 +191,6 @@ pub fn rayleigh_coefficients(zeta: Real, omega: &[Real; 3]) -> Option<(Real, Rea
     }
 }
 
-/// The assembled linear system of both decks in `q = (x1, y1, θ1, x2, y2, θ2)` (spec §5.1).
-#[derive(Debug, Clone, PartialEq)]
-pub struct LinearSystem {
-    /// `M = diag(m1, m1, I1, m2, m2, I2)`.
-    pub mass: Matrix6<Real>,
-    /// Bearing stiffness (block diagonal).
-    pub stiffness: Matrix6<Real>,
-    /// Rayleigh damping (block diagonal), per deck `C_j = a_0j M_j + a_1j K_j`.
-    pub damping: Matrix6<Real>,
-    /// Natural frequencies of each deck \[rad/s\].
-    pub frequencies: [[Real; 3]; 2],
-    /// Rayleigh coefficients `(a_0, a_1)` per deck.
-    pub rayleigh: [(Real, Real); 2],
-}
-
 /// One end face of a segment in the reference pose (global frame).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct EndFace {
@@ -256,33 +227,6 @@ pub struct SegmentBody {
 }
 
 impl SegmentBody {
-    /// The segment of two-deck body `deck` (`j = 1` or `2`, see [`DeckBody`]): deck 1's joint face
-    /// is its end face, deck 2's its start face.
-    pub fn of_deck(deck: &DeckBody, j: usize) -> Self {
-        let joint = EndFace {
-            corners: deck.joint_corners,
-            mid: deck.face_mid,
-            dir: deck.face_dir,
-            inward: deck.joint_inward,
-            half: deck.half_face,
-        };
-        let fc = deck.far_corners;
-        let far = EndFace {
-            corners: fc,
-            mid: deck.far_mid(),
-            dir: (fc[1] - fc[0]).normalize(),
-            inward: deck.far_inward,
-            half: 0.5 * (fc[1] - fc[0]).norm(),
-        };
-        let (start, end) = if j == 1 { (far, joint) } else { (joint, far) };
-        SegmentBody {
-            mass: deck.mass,
-            centroid: deck.centroid,
-            start,
-            end,
-        }
-    }
-
     /// Position of the body point with reference position `p0` when the centroid is displaced by
     /// `d` and the segment turned by `θ` (given as `(sin θ, cos θ)`) about it:
     /// `p = G⁰ + d + Rot(θ)(p0 − G⁰)`.

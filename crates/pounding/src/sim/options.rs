@@ -88,18 +88,6 @@ impl super::SimModel {
         }
         Ok(())
     }
-
-    /// `(C_j, a_0, a_1)` of one deck for the damping model (`a_0`, `a_1` the Rayleigh
-    /// coefficients; zero for dashpots).
-    pub(crate) fn damping_of(
-        &self,
-        mj: &nalgebra::Matrix3<Real>,
-        kj: &nalgebra::Matrix3<Real>,
-        a0: Real,
-        a1: Real,
-    ) -> (nalgebra::Matrix3<Real>, Real, Real) {
-        damping_block(self.damping_model, self.damping_ratio, mj, kj, a0, a1)
-    }
 }
 
 /// `(C_j, a_0, a_1)` of one deck (segment) for the damping model (`a_0`, `a_1` the Rayleigh

@@ -169,7 +169,7 @@ impl Problem for SimProblem {
         (&self.q0, &self.u0)
     }
     fn check_model(&self) -> Result<(), SimError> {
-        self.model.linear_system().map(|_| ())
+        self.model.check().map(|_| ())
     }
     fn check_initial(&self) -> Result<(), SimError> {
         finite("q0", &self.q0)?;

@@ -16,7 +16,7 @@ use nalgebra::{DMatrix, Matrix3, Matrix3x2, Vector2, Vector3};
 /// damping blocks (`M`, `K`, `C` of the bridge are block diagonal: bearings and dashpots tie a
 /// segment to the ground only), natural frequencies and Rayleigh coefficients.
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct BodySystem {
+pub struct BodySystem {
     /// `diag(m, m, I)`.
     pub mass: Matrix3<Real>,
     /// Bearing stiffness.

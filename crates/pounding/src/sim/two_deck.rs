@@ -3,8 +3,7 @@
 //! contact law, optional rigid abutments beyond their far ends, and the problem of a run
 //! ([`SimProblem`]). It runs as the bridge of two segments ([`super::bridge::BridgeModel::from_pair`]).
 
-use super::dofs;
-use super::model::{self, DeckBody, LinearSystem};
+use super::model::{self, SegmentBody};
 use super::options::{DampingModel, JointContact};
 use super::param::{ParamPath, TwoDeckParam};
 use super::{Bearing, SimError};
@@ -13,7 +12,6 @@ use crate::ground_motion::GroundMotion;
 use crate::math::{Real, Vector};
 use crate::pair::SArrangement;
 use crate::shape::DeckShape;
-use nalgebra::{Matrix3, Matrix6};
 
 /// The structural model: decks, joint, bearings, damping, contact law, seats.
 #[derive(Debug, Clone, PartialEq)]
@@ -108,24 +106,23 @@ pub fn end_corner_points(arrangement: &SArrangement, deck: usize) -> [Vector; 4]
     } else {
         &arrangement.deck2
     };
-    let body = DeckBody::new(d, deck, 0.0);
-    [
-        body.joint_corners[0] - body.face_mid,
-        body.joint_corners[1] - body.face_mid,
-        body.far_corners[0] - body.face_mid,
-        body.far_corners[1] - body.face_mid,
-    ]
+    deck_corners(&SegmentBody::of_curved_deck(d, deck, 0.0), deck)
 }
 
 /// The four end-face corners of a deck of any shape relative to its joint-face midpoint `M_j`,
 /// reference pose, global orientation (deck 2 turned by π): `[joint c0, joint c1, far c0, far c1]`.
 pub fn shape_corner_points(shape: &DeckShape, deck: usize) -> [Vector; 4] {
-    let body = DeckBody::from_shape(shape, deck, 0.0);
+    deck_corners(&SegmentBody::of_deck_shape(shape, deck, 0.0), deck)
+}
+
+/// `[joint c0, joint c1, far c0, far c1]` of deck `j` relative to its joint-face midpoint.
+fn deck_corners(body: &SegmentBody, j: usize) -> [Vector; 4] {
+    let (joint, far) = (body.joint_face(j), body.far_face(j));
     [
-        body.joint_corners[0] - body.face_mid,
-        body.joint_corners[1] - body.face_mid,
-        body.far_corners[0] - body.face_mid,
-        body.far_corners[1] - body.face_mid,
+        joint.corners[0] - joint.mid,
+        joint.corners[1] - joint.mid,
+        far.corners[0] - joint.mid,
+        far.corners[1] - joint.mid,
     ]
 }
 
@@ -210,8 +207,9 @@ impl SimModel {
         [b[0].mass.mass, b[1].mass.mass]
     }
 
-    /// The decks' reference-pose bodies (global frame of spec §4).
-    pub fn deck_bodies(&self) -> [DeckBody; 2] {
+    /// The decks' reference-pose bodies (global frame of spec §4): deck `j` is segment `j` of
+    /// its bridge ([`SegmentBody::joint_face`], [`SegmentBody::far_face`]).
+    pub fn deck_bodies(&self) -> [SegmentBody; 2] {
         self.bodies()
     }
 
@@ -265,7 +263,7 @@ impl SimModel {
                     validate_shape(sh, j + 1)?;
                 }
                 let b = self.bodies();
-                let (h1, h2) = (b[0].half_face, b[1].half_face);
+                let (h1, h2) = (b[0].joint_face(1).half, b[1].joint_face(2).half);
                 if (h1 - h2).abs() > 1e-9 * h1.max(h2) {
                     return Err(SimError::invalid(
                         ParamPath::deck(TwoDeckParam::JointFace, 2),
@@ -365,68 +363,61 @@ impl SimModel {
         Ok(())
     }
 
-    pub(crate) fn bodies(&self) -> [DeckBody; 2] {
+    pub(crate) fn bodies(&self) -> [SegmentBody; 2] {
         match &self.shapes {
             None => [
-                DeckBody::new(&self.arrangement.deck1, 1, self.gap),
-                DeckBody::new(&self.arrangement.deck2, 2, self.gap),
+                SegmentBody::of_curved_deck(&self.arrangement.deck1, 1, self.gap),
+                SegmentBody::of_curved_deck(&self.arrangement.deck2, 2, self.gap),
             ],
             Some(sh) => [
-                DeckBody::from_shape(&sh[0], 1, self.gap),
-                DeckBody::from_shape(&sh[1], 2, self.gap),
+                SegmentBody::of_deck_shape(&sh[0], 1, self.gap),
+                SegmentBody::of_deck_shape(&sh[1], 2, self.gap),
             ],
         }
     }
 
-    /// Assembles `M`, `K`, `C` and the natural frequencies (errors if `ζ > 0` and a deck has no
-    /// stiffness at all).
-    pub fn linear_system(&self) -> Result<LinearSystem, SimError> {
+    /// Validates every parameter and the bridge it expands into ([`BridgeModel::from_pair`]):
+    /// each deck's natural frequencies `[deck 1, deck 2]` \[rad/s\] from the bridge's one
+    /// assembly of `M`, `K`, `C` ([`BridgeModel::body_systems`]), with its errors under the
+    /// two-deck names (an overflowing stiffness over mass names `mass<j>`; a deck without bearing
+    /// stiffness under Rayleigh damping names `damping_ratio`).
+    ///
+    /// [`BridgeModel::from_pair`]: super::bridge::BridgeModel::from_pair
+    /// [`BridgeModel::body_systems`]: super::bridge::BridgeModel::body_systems
+    pub fn check(&self) -> Result<[[Real; 3]; 2], SimError> {
+        use super::param::{BridgeKey, BridgeTable};
         self.validate()?;
-        let bodies = self.bodies();
-        let mut mass = Matrix6::zeros();
-        let mut stiffness = Matrix6::zeros();
-        let mut damping = Matrix6::zeros();
-        let mut frequencies = [[0.0; 3]; 2];
-        let mut rayleigh = [(0.0, 0.0); 2];
-        let dofs = dofs::Dofs::plan_rigid(2);
-        for (j, bs) in [&self.bearings1, &self.bearings2].into_iter().enumerate() {
-            let mp = bodies[j].mass;
-            let mj = Matrix3::from_diagonal(&nalgebra::Vector3::new(mp.mass, mp.mass, mp.inertia));
-            let kj = model::bearing_stiffness(&bodies[j], bs);
-            let om = model::deck_frequencies(&mp, &kj);
-            if om.iter().any(|w| !w.is_finite()) {
-                return Err(SimError::invalid(
-                    ParamPath::deck(TwoDeckParam::Mass, j as u8 + 1),
-                    mp.mass,
-                    "the bearing stiffness over this mass (or inertia) overflows; use physical magnitudes",
-                ));
+        let bridge = super::bridge::BridgeModel::from_pair(self);
+        let systems = bridge.body_systems().map_err(|e| {
+            let SimError::InvalidParameter {
+                path:
+                    ParamPath::Bridge(BridgeKey {
+                        table: BridgeTable::Segment(i),
+                        key,
+                    }),
+                value,
+                ..
+            } = &e
+            else {
+                return e;
+            };
+            let j = *i as u8 + 1;
+            match key.as_str() {
+                "mass" => SimError::invalid(
+                    ParamPath::deck(TwoDeckParam::Mass, j),
+                    *value,
+                    "the bearing stiffness over this mass (or inertia) overflows; use physical \
+                     magnitudes",
+                ),
+                "bearings" => SimError::invalid(
+                    ParamPath::pair(TwoDeckParam::DampingRatio),
+                    self.damping_ratio,
+                    &format!("deck {j} has no bearing stiffness, so Rayleigh damping is undefined"),
+                ),
+                _ => e,
             }
-            let (a0, a1) =
-                model::rayleigh_coefficients(self.damping_ratio, &om).ok_or_else(|| {
-                    SimError::invalid(
-                        ParamPath::pair(TwoDeckParam::DampingRatio),
-                        self.damping_ratio,
-                        &format!(
-                            "deck {} has no bearing stiffness, so Rayleigh damping is undefined",
-                            j + 1
-                        ),
-                    )
-                })?;
-            let (cj, a0, a1) = self.damping_of(&mj, &kj, a0, a1);
-            let o = dofs.start(j);
-            mass.fixed_view_mut::<3, 3>(o, o).copy_from(&mj);
-            stiffness.fixed_view_mut::<3, 3>(o, o).copy_from(&kj);
-            damping.fixed_view_mut::<3, 3>(o, o).copy_from(&cj);
-            frequencies[j] = om;
-            rayleigh[j] = (a0, a1);
-        }
-        Ok(LinearSystem {
-            mass,
-            stiffness,
-            damping,
-            frequencies,
-            rayleigh,
-        })
+        })?;
+        Ok([systems[0].frequencies, systems[1].frequencies])
     }
 }
 

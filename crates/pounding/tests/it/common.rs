@@ -43,3 +43,35 @@ pub fn skipped(reason: &str) {
         let _ = writeln!(f, "pounding/it::{name}\t{reason}");
     }
 }
+
+/// The two-deck model's `M`, `K`, `C` in `q = (x1, y1, θ1, x2, y2, θ2)` and each deck's natural
+/// frequencies, from the one assembly of its bridge of two segments
+/// ([`pounding::sim::bridge::BridgeModel::body_systems`]).
+pub struct TwoDeckSystem {
+    pub mass: nalgebra::Matrix6<f64>,
+    pub stiffness: nalgebra::Matrix6<f64>,
+    pub damping: nalgebra::Matrix6<f64>,
+    pub frequencies: [[f64; 3]; 2],
+}
+
+/// [`TwoDeckSystem`] of `model` (which must be valid).
+pub fn two_deck_system(model: &pounding::sim::SimModel) -> TwoDeckSystem {
+    let blocks = pounding::sim::bridge::BridgeModel::from_pair(model)
+        .body_systems()
+        .expect("a valid two-deck model");
+    let mut s = TwoDeckSystem {
+        mass: nalgebra::Matrix6::zeros(),
+        stiffness: nalgebra::Matrix6::zeros(),
+        damping: nalgebra::Matrix6::zeros(),
+        frequencies: [blocks[0].frequencies, blocks[1].frequencies],
+    };
+    for (j, b) in blocks.iter().enumerate() {
+        let o = 3 * j;
+        s.mass.fixed_view_mut::<3, 3>(o, o).copy_from(&b.mass);
+        s.stiffness
+            .fixed_view_mut::<3, 3>(o, o)
+            .copy_from(&b.stiffness);
+        s.damping.fixed_view_mut::<3, 3>(o, o).copy_from(&b.damping);
+    }
+    s
+}

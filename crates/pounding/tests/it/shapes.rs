@@ -764,17 +764,18 @@ fn rotation_condition_uses_the_perpendicular_width() {
 }
 
 /// The curved `DeckShape` placed as deck 1 (shift by `(0, g)`) and deck 2 (turn by π) reproduces
-/// the simulator's reference bodies (`sim::model::DeckBody`): centroid, joint and far corners
-/// (`DeckShape` orders the far face `[outer, inner]`, `DeckBody` `[inner, outer]`) and the
+/// the simulator's reference bodies (`SegmentBody::of_curved_deck`): centroid, joint and far
+/// corners (`DeckShape` orders the far face `[outer, inner]`, the curved body `[inner, outer]`) and the
 /// inward normals — so the simulator can switch to `DeckShape` without changing its frames.
 #[test]
 fn curved_shape_matches_the_simulator_bodies() {
-    use pounding::sim::model::DeckBody;
+    use pounding::sim::model::SegmentBody;
     let deck = Deck::new(150.0, f64::to_radians(75.0), 10.0, 0.5, 2500.0).unwrap();
     let shape = DeckShape::Curved(deck);
     let gap = 0.04;
     for j in [1usize, 2] {
-        let body = DeckBody::new(&deck, j, gap);
+        let body = SegmentBody::of_curved_deck(&deck, j, gap);
+        let (joint, far) = (body.joint_face(j), body.far_face(j));
         let place = |p: Vector| {
             if j == 1 {
                 p + Vector::new(0.0, gap)
@@ -787,16 +788,16 @@ fn curved_shape_matches_the_simulator_bodies() {
         let jf = shape.end_face(DeckEnd::Joint);
         let ff = shape.end_face(DeckEnd::Far);
         for (a, b) in [
-            (jf.corners[0], body.joint_corners[0]),
-            (jf.corners[1], body.joint_corners[1]),
-            (ff.corners[1], body.far_corners[0]),
-            (ff.corners[0], body.far_corners[1]),
+            (jf.corners[0], joint.corners[0]),
+            (jf.corners[1], joint.corners[1]),
+            (ff.corners[1], far.corners[0]),
+            (ff.corners[0], far.corners[1]),
         ] {
             assert!((place(a) - b).norm() < 1e-9, "deck {j}: {a:?} vs {b:?}");
         }
         let turn = |v: Vector| if j == 1 { v } else { rotate(&v, PI) };
-        assert!((turn(-jf.outward_normal) - body.joint_inward).norm() < 1e-12);
-        assert!((turn(-ff.outward_normal) - body.far_inward).norm() < 1e-12);
+        assert!((turn(-jf.outward_normal) - joint.inward).norm() < 1e-12);
+        assert!((turn(-ff.outward_normal) - far.inward).norm() < 1e-12);
     }
 }
 

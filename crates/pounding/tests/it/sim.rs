@@ -80,7 +80,7 @@ fn compare_with_exact(
     assert_eq!(sol.status, SimStatus::Completed);
     assert_eq!(sol.lcp_solves, 0, "the large gap must keep the decks apart");
     assert_eq!(sol.t.len(), n + 1);
-    let sys = model.linear_system().unwrap();
+    let sys = crate::common::two_deck_system(&model);
     let grid: Vec<f64> = (0..=n).map(|i| i as f64 * delta).collect();
     let ax: Vec<f64> = grid.iter().map(|&t| gm.accel(t).x).collect();
     let ay: Vec<f64> = grid.iter().map(|&t| gm.accel(t).y).collect();
@@ -156,7 +156,7 @@ fn default_dt_peaks_within_0p1_percent_of_exact_full_record() {
 #[test]
 fn rayleigh_damping_gives_the_ratio_at_the_two_lowest_modes() {
     let model = SimModel::default_bridge();
-    let sys = model.linear_system().unwrap();
+    let sys = crate::common::two_deck_system(&model);
     for j in 0..2 {
         let m = block(&sys.mass, j);
         let k = block(&sys.stiffness, j);
@@ -186,7 +186,7 @@ fn rayleigh_damping_gives_the_ratio_at_the_two_lowest_modes() {
 fn stiffness_matches_spec_geometry_and_issue_periods() {
     // Spec §3 table (R = 100, β = 60°, W = 10): X_m = 82.768250, Y_m = 47.786272, k = √(I/m) = 29.847763.
     let model = SimModel::default_bridge();
-    let sys = model.linear_system().unwrap();
+    let sys = crate::common::two_deck_system(&model);
     let m = 2500.0 * 0.5 * 1047.197551;
     assert!((sys.mass[(0, 0)] / m - 1.0).abs() < 1e-8);
     assert!((sys.mass[(2, 2)] / (m * 29.847763f64.powi(2)) - 1.0).abs() < 1e-7);
@@ -551,7 +551,7 @@ fn parallel_faces_double_impact_obeys_newton_at_both_ends() {
         );
     }
     // linear momentum along y is conserved (the impulses are internal)
-    let sys = model.linear_system().unwrap();
+    let sys = crate::common::two_deck_system(&model);
     let u = sol.u_rows().last().unwrap();
     let p = sys.mass[(1, 1)] * u[1] + sys.mass[(4, 4)] * u[4];
     assert!((p - sys.mass[(1, 1)] * -v).abs() < 1e-9 * sys.mass[(1, 1)] * v);
@@ -730,7 +730,7 @@ fn energy_terms_agree_with_independent_quadrature_of_the_history() {
     // full-resolution history, T and V from u and q: independent of the stepper's bookkeeping.
     let problem = SimProblem::at_rest(SimModel::default_bridge(), el_centro_1940());
     let sol = simulate(&problem, &SimSettings::default()).unwrap();
-    let sys = problem.model.linear_system().unwrap();
+    let sys = crate::common::two_deck_system(&problem.model);
     let n = sol.t.len();
     assert_eq!(n, sol.steps + 1);
     let power_in = |i: usize| {

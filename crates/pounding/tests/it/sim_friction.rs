@@ -64,7 +64,8 @@ fn sliding_corner_impact_on_the_abutment_matches_the_closed_form() {
         None,
     ];
     let body = model.deck_bodies()[0];
-    let nin = body.far_inward;
+    let far_face = *body.far_face(1);
+    let nin = far_face.inward;
     let (n, t) = ([nin.x, nin.y], [-nin.y, nin.x]);
     let nout = [-n[0], -n[1]];
     // hand mass properties and the first corner to hit after a rotation θ about the centroid
@@ -76,15 +77,15 @@ fn sliding_corner_impact_on_the_abutment_matches_the_closed_form() {
             theta.sin() * v[0] + theta.cos() * v[1],
         ]
     };
-    let arms: Vec<[f64; 2]> = body
-        .far_corners
+    let arms: Vec<[f64; 2]> = far_face
+        .corners
         .iter()
         .map(|c| rot([c.x - body.centroid.x, c.y - body.centroid.y]))
         .collect();
     // distance to the abutment face (reference far face + gap along n_out) after the rotation
     let far = [
-        body.far_mid().x - body.centroid.x,
-        body.far_mid().y - body.centroid.y,
+        far_face.mid.x - body.centroid.x,
+        far_face.mid.y - body.centroid.y,
     ];
     let gaps: Vec<f64> = arms
         .iter()

@@ -89,8 +89,9 @@ impl BridgeModel {
         Ok(self.body_systems()?.iter().map(|b| b.frequencies).collect())
     }
 
-    /// `M`, `K`, `C`, frequencies per segment (errors name the segment).
-    pub(crate) fn body_systems(&self) -> Result<Vec<BodySystem>, SimError> {
+    /// Each segment's `3 × 3` blocks of `M`, `K`, `C`, its natural frequencies and Rayleigh
+    /// coefficients: the one assembly every run and every check uses (errors name the segment).
+    pub fn body_systems(&self) -> Result<Vec<BodySystem>, SimError> {
         let bodies = self.layout();
         let points = self.bearing_points();
         let mut out = Vec::with_capacity(bodies.len());

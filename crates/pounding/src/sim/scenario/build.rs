@@ -370,8 +370,8 @@ pub(super) fn build(sc: &Scenario) -> Result<SimSetup, ScenarioError> {
     };
     let settings = build_settings(sc, &ground, &records, size, || {
         model.validate().map_err(|e| scaled_mass_error(src, e))?;
-        let sys = model.linear_system().map_err(|e| sim_error(src, e))?;
-        check_mechanism(sc, &sys.frequencies)
+        let frequencies = model.check().map_err(|e| sim_error(src, e))?;
+        check_mechanism(sc, &frequencies)
     })?;
     Ok(SimSetup {
         problem: SimProblem::at_rest(model, ground),

@@ -182,7 +182,7 @@ impl Problem for Setup {
     fn check_model(&self) -> Result<(), SimError> {
         match &self.form {
             // the preset's own names (R1, beta2, …) in its errors
-            Form::TwoDecks(m) => m.linear_system().map(|_| ()),
+            Form::TwoDecks(m) => m.check().map(|_| ()),
             Form::Bridge => self.run.problem.check_model(),
         }
     }
