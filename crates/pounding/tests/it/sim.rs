@@ -80,7 +80,7 @@ fn compare_with_exact(
     assert_eq!(sol.status, SimStatus::Completed);
     assert_eq!(sol.lcp_solves, 0, "the large gap must keep the decks apart");
     assert_eq!(sol.t.len(), n + 1);
-    let sys = crate::common::two_deck_system(&model);
+    let sys = crate::common::two_deck_system(model);
     let grid: Vec<f64> = (0..=n).map(|i| i as f64 * delta).collect();
     let ax: Vec<f64> = grid.iter().map(|&t| gm.accel(t).x).collect();
     let ay: Vec<f64> = grid.iter().map(|&t| gm.accel(t).y).collect();
