@@ -3,7 +3,7 @@
 //! writer ([`pounding::sim::table::csv_lines`]).
 
 use crate::value_error;
-use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1};
+use numpy::{PyArray1, PyArray2, PyReadonlyArray1};
 use pounding::sim::table::{Column, ColumnData, Table, TypedTable};
 use pyo3::prelude::*;
 use pyo3::types::PyList;

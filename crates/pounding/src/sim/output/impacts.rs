@@ -73,9 +73,12 @@ pub fn run_warnings(layout: Layout, sol: &BridgeSolution) -> Vec<RunWarning> {
     energy_warnings(&sol.impacts, rigid, |r| contact_name(layout, r))
 }
 
+/// What a numeric column of `impacts.csv` reads from a record.
+type RecordValue = fn(&ImpactRecord) -> Real;
+
 /// The numeric columns of every `impacts.csv` after `mode` (name, unit, value of a record):
 /// relative velocities before and after, impulses, dissipated energy.
-const IMPACT_NUMBERS: [(&str, &str, fn(&ImpactRecord) -> Real); 7] = [
+const IMPACT_NUMBERS: [(&str, &str, RecordValue); 7] = [
     ("gamma_n_pre", "mps", |r| r.gamma_n_pre),
     ("gamma_t_pre", "mps", |r| r.gamma_t_pre),
     ("gamma_n_post", "mps", |r| r.gamma_n_post),
