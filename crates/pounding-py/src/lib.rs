@@ -14,6 +14,7 @@ use pyo3::prelude::*;
 
 mod assess;
 mod campaign;
+mod columns;
 mod compare;
 mod design;
 mod impact;
@@ -111,6 +112,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     impact::register(m)?;
     study::register(m)?;
     sim::register(m)?;
+    columns::register(m)?;
     assess::register(m)?;
     design::register(m)?;
     motion::register(m)?;

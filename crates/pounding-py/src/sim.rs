@@ -113,7 +113,7 @@ struct Run {
 }
 
 /// The result of one simulation, kept in Rust: the summary, tables and histories are made on
-/// demand (`summary_json`, `history`, `impacts_csv`).
+/// demand (`summary_json`, `history`, `impacts`, `tables` and their texts).
 #[pyclass(module = "pounding._core", frozen)]
 pub struct SimRun {
     run: Run,
@@ -139,6 +139,11 @@ impl SimRun {
     fn impacts_csv(&self) -> String {
         self.run.setup.impacts_csv(&self.run.sol)
     }
+    /// `impacts.csv` as columns: a list of `(header, values)`, the values a float64 or int64
+    /// array or a list of str (names), handed over as they are (no text in between).
+    fn impacts<'py>(&self, py: Python<'py>) -> PyResult<Vec<(String, Bound<'py, PyAny>)>> {
+        crate::columns::typed_columns(py, self.run.setup.impacts(&self.run.sol))
+    }
     /// The text of `history.csv`.
     fn history_csv(&self) -> String {
         self.run.setup.history(&self.run.sol).csv()
@@ -146,11 +151,9 @@ impl SimRun {
     /// `history.csv` as `(column names, float64 array of shape (rows, columns))`: the same
     /// numbers, handed over without text in between.
     fn history<'py>(&self, py: Python<'py>) -> PyResult<(Vec<String>, Bound<'py, PyArray2<f64>>)> {
-        let t = self.run.setup.history(&self.run.sol).table();
-        let names: Vec<String> = t.columns.iter().map(|c| c.header()).collect();
-        let a = numpy::ndarray::Array2::from_shape_vec((t.rows(), names.len()), t.values)
-            .map_err(|e| crate::SolverError::new_err(e.to_string()))?;
-        Ok((names, PyArray2::from_owned_array(py, a)))
+        let (_, names, a) =
+            crate::columns::float_table(py, self.run.setup.history(&self.run.sol).table())?;
+        Ok((names, a))
     }
     /// The observers' tables (`bearings`, `restrainers`, `joint_slip`, as the CLI's
     /// `<name>.csv`): a list of `(name, column headers, float64 array (rows, columns))`, the
@@ -164,12 +167,7 @@ impl SimRun {
             .sol
             .tables()
             .into_iter()
-            .map(|t| {
-                let heads: Vec<String> = t.columns.iter().map(|c| c.header()).collect();
-                let a = numpy::ndarray::Array2::from_shape_vec((t.rows(), heads.len()), t.values)
-                    .map_err(|e| crate::SolverError::new_err(e.to_string()))?;
-                Ok((t.name.to_string(), heads, PyArray2::from_owned_array(py, a)))
-            })
+            .map(|t| crate::columns::float_table(py, t))
             .collect()
     }
     /// How the run ended (`Completed`, `Diverged`, ... as in summary.json).

@@ -1,6 +1,6 @@
 """Type stubs of the compiled core ``pounding._core`` (use the documented wrappers instead)."""
 
-from typing import Any, Dict, List, Optional, Tuple
+from typing import Any, Dict, List, Optional, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -41,6 +41,9 @@ class SimRun:
     def status(self) -> str: ...
     def summary_json(self) -> str: ...
     def impacts_csv(self) -> str: ...
+    def impacts(
+        self,
+    ) -> List[Tuple[str, Union[npt.NDArray[np.float64], npt.NDArray[np.int64], List[str]]]]: ...
     def accuracy_json(self) -> Optional[str]: ...
     def history_csv(self) -> str: ...
     def history(self) -> Tuple[List[str], npt.NDArray[np.float64]]: ...
@@ -53,8 +56,12 @@ def simulate_run(
     csv_units: Optional[str] = None, record_dt: Optional[float] = None,
     scale: Optional[float] = None, dt: Optional[float] = None, duration: Optional[float] = None,
     law: Optional[str] = None, error_estimate: bool = False, tol: Optional[str] = None,
-    max_refinements: Optional[int] = None,
+    max_refinements: Optional[int] = None, projection: bool = False,
 ) -> SimRun: ...
+def table_csv(
+    headers: List[str],
+    values: List[Union[npt.NDArray[np.float64], npt.NDArray[np.int64], List[str]]],
+) -> str: ...
 def batch_run(
     path: Optional[str] = None, text: Optional[str] = None, origin: str = "scenario",
     records: List[Optional[str]] = ..., arrays: List[Optional[_ArrayRecord]] = ...,

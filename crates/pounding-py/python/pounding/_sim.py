@@ -6,61 +6,35 @@ import decimal
 import json
 import os
 import warnings
-from typing import Any, Dict, List, Optional, Sequence
+from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
 from . import _core
 from ._common import (csv_table, optional_float, parse_csv, record_arg, scenario_args,
-                      real_number, thread_count)
-
-#: The energy columns of ``history.csv`` (the prefix ``E_``/``energy`` terms), by name.
-_ENERGY_PREFIXES = ("e_", "energy", "w_in", "input_energy")
+                      real_number, table, thread_count)
+from ._stored import _StoredRun, _same
 
 
-class _StoredRun:
-    """A run rebuilt from its texts (an unpickled :class:`SimulationResult`): the same methods
-    as the core's ``SimRun``, answering from ``summary.json``, ``history.csv``, ``impacts.csv``."""
-
-    def __init__(self, summary_json: str, status: str, warnings: List[str], history_csv: str,
-                 impacts_csv: str, tables: Sequence[Any] = (),
-                 accuracy_json: Optional[str] = None) -> None:
-        self._summary, self.status, self._warnings = summary_json, status, list(warnings)
-        self._history, self._impacts = history_csv, impacts_csv
-        self._tables = [(n, list(h), np.array(a, dtype=np.float64)) for n, h, a in tables]
-        self._accuracy = accuracy_json
-
-    def accuracy_json(self) -> Optional[str]:
-        return self._accuracy
-
-    def tables(self):
-        return [(n, list(h), a.copy()) for n, h, a in self._tables]
-
-    def summary_json(self) -> str:
-        return self._summary
-
-    def impacts_csv(self) -> str:
-        return self._impacts
-
-    def history_csv(self) -> str:
-        return self._history
-
-    def warnings(self) -> List[str]:
-        return list(self._warnings)
-
-    def history(self):
-        lines = self._history.splitlines()
-        names = lines[0].split(",")
-        # shortest round-trip tokens parse back to the same bits; empty cells are NaN
-        data = np.array([[float(t) if t else float("nan") for t in l.split(",")]
-                         for l in lines[1:]], dtype=np.float64).reshape(len(lines) - 1, len(names))
-        return names, data
+def _restore_columns(summary_json, status, warnings_, history, impacts, tables=(),
+                     accuracy_json=None) -> "SimulationResult":
+    """A pickled :class:`SimulationResult` again, from its columns."""
+    return SimulationResult(_StoredRun(summary_json, status, warnings_, history, impacts, tables,
+                                       accuracy_json))
 
 
 def _restore(summary_json, status, warnings_, history_csv, impacts_csv,
              tables=(), accuracy_json=None) -> "SimulationResult":
-    return SimulationResult(_StoredRun(summary_json, status, warnings_, history_csv, impacts_csv,
-                                       tables, accuracy_json))
+    """A result pickled by an earlier version (its texts), rebuilt by parsing them once."""
+    names, cols = parse_csv(history_csv)
+    data = np.empty((0, len(names)))
+    if names and len(cols[names[0]]):
+        data = np.column_stack([cols[n].astype(np.float64) for n in names])
+    inames, icols = parse_csv(impacts_csv)
+    impacts = [(n, icols[n].tolist() if icols[n].dtype == object else icols[n]) for n in inames]
+    tables = [(n, list(h), np.array(a, dtype=np.float64)) for n, h, a in tables]
+    return _restore_columns(summary_json, status, warnings_, (names, data), impacts, tables,
+                            accuracy_json)
 
 
 class SimulationResult:
@@ -80,6 +54,7 @@ class SimulationResult:
         self.status: str = run.status
         self.warnings: List[str] = list(run.warnings())
         self._history: Optional[Dict[str, np.ndarray]] = None
+        self._history_data: Optional[Tuple[List[str], np.ndarray]] = None
         self._tables: Optional[Dict[str, Dict[str, np.ndarray]]] = None
         acc = run.accuracy_json()
         #: ``accuracy.json`` as a dict (``error_estimate`` / ``tol``), else ``None``: the step of
@@ -99,10 +74,17 @@ class SimulationResult:
         degrees, velocities, gaps, slip, energies, contact forces...). Built on first access;
         the arrays are read-only views (``.copy()`` one to modify it)."""
         if self._history is None:
-            names, data = self._run.history()
-            data.flags.writeable = False  # shared by every access: read-only views
+            names, data = self._history_columns()
             self._history = {n: data[:, i] for i, n in enumerate(names)}
         return self._history
+
+    def _history_columns(self) -> Tuple[List[str], np.ndarray]:
+        """``(column names, read-only float64 array (rows, columns))`` of the history, made once."""
+        if self._history_data is None:
+            names, data = self._run.history()
+            data.flags.writeable = False  # shared by every access: read-only views
+            self._history_data = (names, data)
+        return self._history_data
 
     @property
     def tables(self) -> Dict[str, Dict[str, np.ndarray]]:
@@ -158,8 +140,14 @@ class SimulationResult:
     @property
     def impacts(self):
         """The rows of ``impacts.csv`` (a ``pandas.DataFrame``, or a numpy structured array
-        without pandas): one row per impacting contact."""
-        return csv_table(self._run.impacts_csv())
+        without pandas): one row per impacting contact, the CSV's columns in order. ``impact`` is
+        int64, the names (``site``, ``contact``, ``mode``) str objects, every other column
+        float64 (``nan`` where a value does not apply). The columns come from the solver as they
+        are (no text in between); each access builds a new table."""
+        cols = self._run.impacts()
+        return table([h for h, _ in cols],
+                     {h: np.array(v, dtype=object) if isinstance(v, list) else v
+                      for h, v in cols})
 
     def history_csv(self) -> str:
         """The text of ``history.csv``, byte for byte the CLI's."""
@@ -174,18 +162,21 @@ class SimulationResult:
         return self._run.summary_json()
 
     def __reduce__(self):
-        """Pickles (and deep-copies) as the run's texts, so a result can be a Dask task's value;
-        the copy answers every attribute with the same values."""
+        """Pickles (and deep-copies) as the run's columns (numpy arrays; text only for the
+        summary and the names), so a result can be a Dask task's value: the copy answers every
+        attribute with the same values, its arrays the same bits, its ``history_csv()`` and
+        ``impacts_csv()`` the same bytes, without parsing any text."""
         r = self._run
-        tables = [(n, h, a.tolist()) for n, h, a in r.tables()]
-        return (_restore, (r.summary_json(), self.status, list(self.warnings), r.history_csv(),
-                           r.impacts_csv(), tables, r.accuracy_json()))
+        return (_restore_columns, (r.summary_json(), self.status, list(self.warnings),
+                                   self._history_columns(), r.impacts(), r.tables(),
+                                   r.accuracy_json()))
 
     def __eq__(self, other: object) -> bool:
-        """Equal when the status, warnings, the three output texts and the tables are equal."""
+        """Equal when the status, warnings, summary, the columns of the history, the impacts and
+        the tables are equal bit for bit (so are then the output texts)."""
         if not isinstance(other, SimulationResult):
             return NotImplemented
-        return self.__reduce__()[1] == other.__reduce__()[1]
+        return _same(self.__reduce__()[1], other.__reduce__()[1])
 
     __hash__ = None  # type: ignore[assignment]
 

@@ -1,13 +1,20 @@
-//! Typed tables of a run: named columns with units, one row per kept step, and the one CSV
-//! writer for them.
+//! Typed tables of a run: named columns with units, and the one CSV writer for them.
 //!
-//! An observer (`sim/observer.rs`) fills a [`Table`] while the driver runs; the run returns its
-//! tables in order, and every front end writes or hands them on without knowing their content:
-//! the CLI writes `<name>.csv`, Python gets numpy columns. A header cell is `<column>_<unit>`
-//! (`t_s`, `segment1_bearing2_fx_N`), the convention of every CSV the library writes.
+//! Two shapes, one writer ([`csv_lines`]):
+//! - [`Table`]: numbers only, row-major, one row per kept step. An observer
+//!   (`sim/observer.rs`) fills one while the driver runs; the run returns its tables in order.
+//! - [`TypedTable`]: one row per event (`impacts.csv`: one per impacting contact), column-major,
+//!   each column of one type ([`ColumnData`]: floats, integers or names), as a data-frame
+//!   library holds a table whose columns are of different kinds.
+//!
+//! Every front end writes or hands them on without knowing their content: the CLI writes
+//! `<name>.csv`, Python gets numpy columns (float64, int64, or str objects) without text in
+//! between. A header cell is `<column>_<unit>` (`t_s`, `segment1_bearing2_fx_N`), the
+//! convention of every CSV the library writes.
 
 use crate::math::Real;
-use crate::output::push_float_token;
+use crate::output::{csv_field, push_float_token};
+use std::fmt::Write;
 
 pub use super::observer::{BearingRecipe, BearingsTable, TableSource};
 
@@ -98,21 +105,17 @@ impl Table {
     }
 }
 
-/// The one CSV writer of the tables of a run: the header cells of `columns`, then `rows` lines,
-/// line `r` the values `row(r, out)` appends to `out` (one per column), as shortest round-trip
-/// floats ([`crate::output::float_token`]). A writer that derives its rows (`history.csv`)
-/// streams them here without holding them all.
+/// The CSV text of the numeric rows of a run's table: the header cells of `columns`, then
+/// `rows` lines, line `r` the values `row(r, out)` appends to `out` (one per column), as shortest
+/// round-trip floats ([`crate::output::float_token`]) through [`csv_lines`]. A writer that
+/// derives its rows (`history.csv`) streams them here without holding them all.
 pub fn csv_rows(
     columns: &[Column],
     rows: usize,
     mut row: impl FnMut(usize, &mut Vec<Real>),
 ) -> String {
-    let head: Vec<String> = columns.iter().map(Column::header).collect();
-    let mut s = String::with_capacity(rows * columns.len() * 20 + 64);
-    s.push_str(&head.join(","));
-    s.push('\n');
     let mut line = Vec::with_capacity(columns.len());
-    for r in 0..rows {
+    csv_lines(columns, rows, 20, |r, s| {
         line.clear();
         row(r, &mut line);
         debug_assert_eq!(line.len(), columns.len());
@@ -120,11 +123,127 @@ pub fn csv_rows(
             if i > 0 {
                 s.push(',');
             }
-            push_float_token(&mut s, *v);
+            push_float_token(s, *v);
         }
+    })
+}
+
+/// The one CSV writer of the tables of a run: the header line of `columns`
+/// ([`Column::header`], comma-separated), then `rows` lines, line `r` the cells `line(r, s)`
+/// appends to `s` (comma-separated, without the line break). `cell_width` is the expected
+/// width of a cell (the capacity reserved).
+pub fn csv_lines(
+    columns: &[Column],
+    rows: usize,
+    cell_width: usize,
+    mut line: impl FnMut(usize, &mut String),
+) -> String {
+    let head: Vec<String> = columns.iter().map(Column::header).collect();
+    let mut s = String::with_capacity(rows * columns.len() * cell_width + 64);
+    s.push_str(&head.join(","));
+    s.push('\n');
+    for r in 0..rows {
+        line(r, &mut s);
         s.push('\n');
     }
     s
+}
+
+/// The values of one column of a [`TypedTable`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum ColumnData {
+    /// Numbers (a value that does not apply is NaN, written `nan`).
+    Real(Vec<Real>),
+    /// Counts and indices.
+    Int(Vec<i64>),
+    /// Names (a contact, a mode): written as CSV fields, quoted only when they must be.
+    Text(Vec<String>),
+}
+
+impl ColumnData {
+    /// The number of values.
+    pub fn len(&self) -> usize {
+        match self {
+            ColumnData::Real(v) => v.len(),
+            ColumnData::Int(v) => v.len(),
+            ColumnData::Text(v) => v.len(),
+        }
+    }
+
+    /// Whether the column has no values.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Appends value `r` to `s` as its CSV cell: a float's shortest round-trip token, an
+    /// integer's digits, a name as a CSV field ([`csv_field`]).
+    fn push_cell(&self, r: usize, s: &mut String) {
+        match self {
+            ColumnData::Real(v) => push_float_token(s, v[r]),
+            ColumnData::Int(v) => {
+                let _ = write!(s, "{}", v[r]);
+            }
+            ColumnData::Text(v) => s.push_str(&csv_field(&v[r])),
+        }
+    }
+}
+
+/// A table whose columns have their own types ([`ColumnData`]), one row per event, column-major
+/// (`impacts.csv`): `columns[i]` holds `data[i]`, every column of the same length.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TypedTable {
+    /// File stem of the table (`impacts` → `impacts.csv`).
+    pub name: &'static str,
+    /// The columns.
+    pub columns: Vec<Column>,
+    /// The values, one entry per column.
+    pub data: Vec<ColumnData>,
+}
+
+impl TypedTable {
+    /// A table without columns.
+    pub fn new(name: &'static str) -> Self {
+        TypedTable {
+            name,
+            columns: Vec::new(),
+            data: Vec::new(),
+        }
+    }
+
+    /// Appends the column `column` holding `data` (as many values as the other columns).
+    pub fn push(&mut self, column: Column, data: ColumnData) {
+        debug_assert!(self.data.first().is_none_or(|d| d.len() == data.len()));
+        self.columns.push(column);
+        self.data.push(data);
+    }
+
+    /// The number of rows.
+    pub fn rows(&self) -> usize {
+        self.data.first().map_or(0, ColumnData::len)
+    }
+
+    /// The values of the column whose header ([`Column::header`]) is `header`, if any.
+    pub fn column(&self, header: &str) -> Option<&ColumnData> {
+        let i = self.columns.iter().position(|c| c.header() == header)?;
+        Some(&self.data[i])
+    }
+
+    /// The file name `<name>.csv`.
+    pub fn file_name(&self) -> String {
+        format!("{}.csv", self.name)
+    }
+
+    /// The CSV text: the header, then one line per row ([`csv_lines`]).
+    pub fn csv(&self) -> String {
+        csv_lines(&self.columns, self.rows(), 14, |r, s| {
+            for (i, d) in self.data.iter().enumerate() {
+                if i > 0 {
+                    s.push(',');
+                }
+                d.push_cell(r, s);
+            }
+        })
+    }
 }
 
 #[cfg(test)]
@@ -140,5 +259,36 @@ mod tests {
         assert_eq!(t.column("a_N"), Some(vec![1.5, -0.0]));
         assert_eq!(t.column("a"), None);
         assert_eq!(t.file_name(), "x.csv");
+    }
+
+    #[test]
+    fn typed_table_writes_each_type_by_the_same_writer() {
+        let mut t = TypedTable::new("events");
+        t.push(Column::new("n", ""), ColumnData::Int(vec![1, -2]));
+        t.push(
+            Column::new("t", "s"),
+            ColumnData::Real(vec![0.25, f64::NAN]),
+        );
+        t.push(
+            Column::new("who", ""),
+            ColumnData::Text(vec!["a-b".into(), "c,d".into()]),
+        );
+        assert_eq!(t.rows(), 2);
+        assert_eq!(t.csv(), "n,t_s,who\n1,0.25,a-b\n-2,nan,\"c,d\"\n");
+        assert!(
+            matches!(t.column("t_s"), Some(ColumnData::Real(v)) if v[0] == 0.25 && v[1].is_nan())
+        );
+        assert!(matches!(t.column("n"), Some(ColumnData::Int(v)) if v == &[1, -2]));
+        assert_eq!(t.column("t"), None);
+        // a float column writes as the numeric tables do
+        let mut f = Table::with_time("x", vec![]);
+        f.values.extend([0.25, f64::NAN]);
+        let mut g = TypedTable::new("x");
+        g.push(
+            Column::new("t", "s"),
+            ColumnData::Real(vec![0.25, f64::NAN]),
+        );
+        assert_eq!(f.csv(), g.csv());
+        assert_eq!(TypedTable::new("e").csv(), "\n");
     }
 }

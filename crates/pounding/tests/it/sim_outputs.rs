@@ -227,3 +227,63 @@ fn a_bearing_layout_that_is_a_mechanism_is_refused_unless_allowed() {
     // the default layout (4 corners) is not a mechanism
     assert!(Scenario::from_toml("", "d").unwrap().build().is_ok());
 }
+
+/// `impacts.csv` is one typed table (issue 22): on a bridge mixing rigid joints and bilinear
+/// abutments, `impact` is an integer column (each record's number), the names are text, every
+/// other column is a float; each row has either the compliance pulse or the rigid estimate (the
+/// other NaN); its CSV is `impacts.csv`'s text, one line per record.
+#[test]
+fn impacts_table_holds_each_column_in_its_own_type() {
+    use pounding::sim::scenario::Scenario;
+    use pounding::sim::table::ColumnData;
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/viaduct-rigid-1d.toml"
+    );
+    let mut text = std::fs::read_to_string(path).unwrap();
+    let law = "law = \"bilinear\"\nk1 = 1.5586e10\nk2 = 3.1328e9\ndelta_y = 2.54e-3\n";
+    for side in ["start", "end"] {
+        let head = format!("[abutment.{side}]\ngap = 0.04\n");
+        assert!(text.contains(&head));
+        text = text.replace(&head, &format!("{head}\n[abutment.{side}.contact]\n{law}"));
+    }
+    let setup = Scenario::from_toml(&text, "mixed.toml")
+        .unwrap()
+        .with_duration(3.0)
+        .build_setup()
+        .unwrap();
+    let sol = setup.run().unwrap();
+    let t = setup.impacts(&sol);
+    let csv = setup.impacts_csv(&sol);
+    assert_eq!(t.csv(), csv);
+    assert_eq!(t.rows(), sol.impacts.len());
+    assert_eq!(csv.lines().count(), 1 + sol.impacts.len());
+    let heads: Vec<String> = t.columns.iter().map(|c| c.header()).collect();
+    assert_eq!(
+        csv.lines().next().unwrap().split(',').collect::<Vec<_>>(),
+        heads
+    );
+    for (h, d) in heads.iter().zip(&t.data) {
+        match (h.as_str(), d) {
+            ("impact", ColumnData::Int(v)) => {
+                let want: Vec<i64> = sol.impacts.iter().map(|r| r.impact as i64).collect();
+                assert_eq!(v, &want);
+            }
+            ("site" | "contact" | "mode", ColumnData::Text(v)) => {
+                assert!(v.iter().all(|s| !s.is_empty()))
+            }
+            (_, ColumnData::Real(_))
+                if !matches!(h.as_str(), "impact" | "site" | "contact" | "mode") => {}
+            _ => panic!("column {h} has the wrong type: {d:?}"),
+        }
+    }
+    let real = |h: &str| match t.column(h) {
+        Some(ColumnData::Real(v)) => v.clone(),
+        other => panic!("{h}: {other:?}"),
+    };
+    let (pulse, estimate) = (real("peak_force_n"), real("peak_force_estimate_n"));
+    assert!(pulse.iter().any(|x| x.is_nan()) && estimate.iter().any(|x| x.is_nan()));
+    for (p, e) in pulse.iter().zip(&estimate) {
+        assert!(p.is_nan() != e.is_nan(), "{p} {e}");
+    }
+}

@@ -1,15 +1,13 @@
-//! `impacts.csv` and the run warnings of a run, in the layout of its scenario ([`Layout`]): a
-//! bridge names each contact by its site (`joint<k>`, `abutment-start`/`-end`) and its corner
-//! in two columns; the two-deck model by its own contact names (`deck1-inner`, …,
-//! `abutment1-c0`, …) in one.
+//! `impacts.csv` (a [`TypedTable`]: numbers, counts and names in columns of their own types)
+//! and the run warnings of a run, in the layout of its scenario ([`Layout`]): a bridge names
+//! each contact by its site (`joint<k>`, `abutment-start`/`-end`) and its corner in two
+//! columns; the two-deck model by its own contact names (`deck1-inner`, …, `abutment1-c0`, …)
+//! in one.
 
-use super::{
-    ESTIMATE_COLUMNS, Layout, PULSE_COLUMNS, RunWarning, energy_warnings, impact_numbers,
-    pulse_cells,
-};
+use super::{ESTIMATE_COLUMNS, Layout, PULSE_COLUMNS, RunWarning, energy_warnings, rigid_estimate};
 use crate::math::Real;
-use crate::output::float_token;
 use crate::sim::bridge::{ABUTMENT_SIDES, BridgeModel, BridgeSolution};
+use crate::sim::table::{Column, ColumnData, TypedTable};
 use crate::sim::{ImpactRecord, JointContact, SimContact};
 
 /// Where a contact is: `joint<k>` (1-based) or `abutment-start` / `abutment-end`.
@@ -75,50 +73,90 @@ pub fn run_warnings(layout: Layout, sol: &BridgeSolution) -> Vec<RunWarning> {
     energy_warnings(&sol.impacts, rigid, |r| contact_name(layout, r))
 }
 
-/// `impacts.csv`: one row per impacting contact (time, where, mode, relative velocities before
-/// and after, impulses, dissipated energy), then [`PULSE_COLUMNS`] (compliance laws) or
-/// [`ESTIMATE_COLUMNS`] (rigid law, with each site's `ε_N`), both for a bridge mixing the two
-/// (`nan` where a record has none). `model` is the bridge that ran (the two-deck model's
-/// [`BridgeModel::from_pair`]).
-pub fn impacts_csv(layout: Layout, model: &BridgeModel, sol: &BridgeSolution) -> String {
+/// What a numeric column of `impacts.csv` reads from a record.
+type RecordValue = fn(&ImpactRecord) -> Real;
+
+/// The numeric columns of every `impacts.csv` after `mode` (name, unit, value of a record):
+/// relative velocities before and after, impulses, dissipated energy.
+const IMPACT_NUMBERS: [(&str, &str, RecordValue); 7] = [
+    ("gamma_n_pre", "mps", |r| r.gamma_n_pre),
+    ("gamma_t_pre", "mps", |r| r.gamma_t_pre),
+    ("gamma_n_post", "mps", |r| r.gamma_n_post),
+    ("gamma_t_post", "mps", |r| r.gamma_t_post),
+    ("impulse_n", "Ns", |r| r.impulse_n),
+    ("impulse_t", "Ns", |r| r.impulse_t),
+    ("energy_dissipated", "J", |r| r.energy_dissipated),
+];
+
+/// `impacts.csv` as a [`TypedTable`]: one row per impacting contact; `impact` (int), `t_s`,
+/// where (text: the two-deck model's `contact`; a bridge's `site` and `contact`), `mode` (text),
+/// relative velocities before and after, impulses, dissipated energy, then [`PULSE_COLUMNS`]
+/// (compliance laws) or [`ESTIMATE_COLUMNS`] (rigid law, with each site's `ε_N`), both for a
+/// bridge mixing the two (NaN where a record has none). `model` is the bridge that ran (the
+/// two-deck model's [`BridgeModel::from_pair`]).
+pub fn impacts_table(layout: Layout, model: &BridgeModel, sol: &BridgeSolution) -> TypedTable {
     let (rigid, compliant) = site_kinds(model);
-    let columns = match (rigid, compliant) {
-        (true, false) => ESTIMATE_COLUMNS.to_string(),
-        (false, true) => PULSE_COLUMNS.to_string(),
-        _ => format!("{PULSE_COLUMNS},{ESTIMATE_COLUMNS}"),
-    };
-    let place = match layout {
-        Layout::TwoDecks => "contact",
-        Layout::Bridge => "site,contact",
-    };
-    let mut s = format!(
-        "impact,t_s,{place},mode,gamma_n_pre_mps,gamma_t_pre_mps,gamma_n_post_mps,\
-         gamma_t_post_mps,impulse_n_Ns,impulse_t_Ns,energy_dissipated_J,{columns}\n"
+    let imp = &sol.impacts;
+    let real = |f: &dyn Fn(&ImpactRecord) -> Real| ColumnData::Real(imp.iter().map(f).collect());
+    let text = |f: &dyn Fn(&ImpactRecord) -> String| ColumnData::Text(imp.iter().map(f).collect());
+    let mut t = TypedTable::new("impacts");
+    // an impact number is a step count: far below 2^63
+    let numbers = imp
+        .iter()
+        .map(|r| i64::try_from(r.impact).unwrap_or(i64::MAX));
+    t.push(
+        Column::new("impact", ""),
+        ColumnData::Int(numbers.collect()),
     );
-    for r in &sol.impacts {
-        let f = impact_numbers(r);
-        let eps = site_restitution(model, r);
-        let p = match (rigid, compliant) {
-            (true, false) => pulse_cells(r, true, eps),
-            (false, true) => pulse_cells(r, false, eps),
-            // a mixed bridge: the pulse of a compliance record, the estimate of a rigid one
-            _ if r.pulse.is_some() => format!("{},nan,nan", pulse_cells(r, false, eps)),
-            _ => format!("nan,nan,nan,{}", pulse_cells(r, true, eps)),
-        };
-        let place = match layout {
-            Layout::TwoDecks => r.contact.name().to_string(),
-            Layout::Bridge => format!(
-                "{},{}",
-                site_name(&r.contact, r.site),
-                corner_name(&r.contact)
-            ),
-        };
-        s.push_str(&format!(
-            "{},{},{place},{},{f},{p}\n",
-            r.impact,
-            float_token(r.time),
-            r.mode.name(),
-        ));
+    t.push(Column::new("t", "s"), real(&|r| r.time));
+    if layout == Layout::Bridge {
+        t.push(
+            Column::new("site", ""),
+            text(&|r| site_name(&r.contact, r.site)),
+        );
+        t.push(
+            Column::new("contact", ""),
+            text(&|r| corner_name(&r.contact).into()),
+        );
+    } else {
+        t.push(
+            Column::new("contact", ""),
+            text(&|r| r.contact.name().into()),
+        );
     }
-    s
+    t.push(Column::new("mode", ""), text(&|r| r.mode.name().into()));
+    for (name, unit, f) in IMPACT_NUMBERS {
+        t.push(Column::new(name, unit), real(&f));
+    }
+    if compliant {
+        let pulse = |r: &ImpactRecord| {
+            r.pulse.map_or([Real::NAN; 3], |p| {
+                [p.peak_force, p.duration, p.max_penetration]
+            })
+        };
+        for (i, (name, unit)) in PULSE_COLUMNS.iter().enumerate() {
+            t.push(Column::new(*name, unit), real(&|r| pulse(r)[i]));
+        }
+    }
+    if rigid {
+        // a mixed bridge: the estimate of a rigid record only (a compliance one has its pulse)
+        let estimate = |r: &ImpactRecord| match r.pulse {
+            Some(_) if compliant => [Real::NAN; 2],
+            _ => {
+                let e = rigid_estimate(r, site_restitution(model, r));
+                [e.peak_force, e.contact_time]
+            }
+        };
+        let values: Vec<[Real; 2]> = imp.iter().map(estimate).collect();
+        for (i, (name, unit)) in ESTIMATE_COLUMNS.iter().enumerate() {
+            let column = ColumnData::Real(values.iter().map(|v| v[i]).collect());
+            t.push(Column::new(*name, unit), column);
+        }
+    }
+    t
+}
+
+/// The text of `impacts.csv` ([`impacts_table`], by the one CSV writer).
+pub fn impacts_csv(layout: Layout, model: &BridgeModel, sol: &BridgeSolution) -> String {
+    impacts_table(layout, model, sol).csv()
 }

@@ -37,7 +37,7 @@ pub use compare_bridge::{
 pub use estimate::{PeakEstimate, SiteKey, peak_force_estimates};
 pub(crate) use estimate::{largest_estimate, peak_estimate_json, rigid_estimate, setup_estimates};
 pub use history::History;
-pub use impacts::{impacts_csv, run_warnings};
+pub use impacts::{impacts_csv, impacts_table, run_warnings};
 pub use input_warnings::{InputWarning, input_warnings, warning_sentence};
 pub use trajectories::{TRAJECTORY_MAX_FRAMES, trajectories_json, trajectory_stride};
 pub(crate) use verdict::n3;
@@ -108,48 +108,19 @@ pub(crate) fn pair_unseated_end(s: &super::bridge::BridgeSummary) -> Option<Stri
     s.seats.iter().find(|e| &e.end == name).map(pair_seat_name)
 }
 
-/// The numbers of an `impacts.csv` row: velocities before and after, impulses, dissipated
-/// energy (shared by the two-deck and the bridge files).
-pub(crate) fn impact_numbers(r: &super::ImpactRecord) -> String {
-    [
-        r.gamma_n_pre,
-        r.gamma_t_pre,
-        r.gamma_n_post,
-        r.gamma_t_post,
-        r.impulse_n,
-        r.impulse_t,
-        r.energy_dissipated,
-    ]
-    .map(float_token)
-    .join(",")
-}
-
-/// Columns appended to `impacts.csv` for a compliance law ([`super::ImpactPulse`]).
-pub const PULSE_COLUMNS: &str = "peak_force_n,duration_s,max_penetration_m";
-/// Columns appended to `impacts.csv` for the rigid law
-/// ([`crate::contact_law::estimate::rigid_peak_force`] with the default `k_h`).
-pub const ESTIMATE_COLUMNS: &str = "peak_force_estimate_n,contact_time_estimate_s";
-
-/// The appended cells of an `impacts.csv` row: the pulse of a compliance law, or (rigid law,
-/// `rigid`) the peak-force estimate from the impulse with restitution `eps`.
-pub(crate) fn pulse_cells(r: &super::ImpactRecord, rigid: bool, eps: Real) -> String {
-    if rigid {
-        let e = rigid_estimate(r, eps);
-        return format!(
-            "{},{}",
-            float_token(e.peak_force),
-            float_token(e.contact_time)
-        );
-    }
-    let p = r.pulse.unwrap_or(super::ImpactPulse {
-        peak_force: Real::NAN,
-        duration: Real::NAN,
-        max_penetration: Real::NAN,
-    });
-    [p.peak_force, p.duration, p.max_penetration]
-        .map(float_token)
-        .join(",")
-}
+/// Columns (name, unit) appended to `impacts.csv` for a compliance law ([`super::ImpactPulse`]):
+/// `peak_force_n` (newtons, spelled `n` in this file's header), `duration_s`,
+/// `max_penetration_m`.
+pub const PULSE_COLUMNS: [(&str, &str); 3] = [
+    ("peak_force", "n"),
+    ("duration", "s"),
+    ("max_penetration", "m"),
+];
+/// Columns (name, unit) appended to `impacts.csv` for the rigid law
+/// ([`crate::contact_law::estimate::rigid_peak_force`] with the default `k_h`):
+/// `peak_force_estimate_n`, `contact_time_estimate_s`.
+pub const ESTIMATE_COLUMNS: [(&str, &str); 2] =
+    [("peak_force_estimate", "n"), ("contact_time_estimate", "s")];
 
 /// Relative tolerance of [`energy_warnings`] for the rigid law: energy created at a contact
 /// counts when it exceeds `1e-6 (|P_N γ_N⁻| + |P_T γ_T⁻|)` of that contact (the energy scale the

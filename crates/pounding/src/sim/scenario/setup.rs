@@ -121,7 +121,12 @@ impl Setup {
         History::new(self.layout(), sol, self.ground(), self.abutments())
     }
 
-    /// `impacts.csv` of a run of it.
+    /// `impacts.csv` of a run of it, as a typed table ([`output::impacts_table`]).
+    pub fn impacts(&self, sol: &BridgeSolution) -> crate::sim::table::TypedTable {
+        output::impacts_table(self.layout(), &self.model(), sol)
+    }
+
+    /// The text of `impacts.csv` of a run of it.
     pub fn impacts_csv(&self, sol: &BridgeSolution) -> String {
         output::impacts_csv(self.layout(), &self.run.problem.model, sol)
     }
