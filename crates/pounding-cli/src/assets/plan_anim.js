@@ -8,7 +8,7 @@
 (function () {
   'use strict';
   var D = JSON.parse(document.getElementById('traj').textContent);
-  var F = D.frames, n = D.segments, $ = function (id) { return document.getElementById(id); };
+  var F = D.frames, n = D.segments, S = D.dof_start, $ = function (id) { return document.getElementById(id); };
   var cv = $('an-plan'), gm = $('an-gm'), sl = $('an-t'), mg = $('an-mag');
   var state = { frame: 0, mag: 1, playing: false, speed: 1, zoom: null, drawn: null, markers: [], seats: [], restrainers: [], offsets: [] };
   var mid = function (a, b) { return [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2]; };
@@ -25,7 +25,7 @@
   var spacing = F.length > 1 ? (F[F.length - 1].t - F[0].t) / (F.length - 1) : 0;
   var decimals = spacing > 0 ? Math.min(6, Math.max(3, Math.ceil(-Math.log10(spacing)))) : 3;
   var peak = 0;
-  F.forEach(function (f) { for (var i = 0; i < n; i++) peak = Math.max(peak, Math.hypot(f.q[3 * i], f.q[3 * i + 1])); });
+  F.forEach(function (f) { for (var i = 0; i < n; i++) peak = Math.max(peak, Math.hypot(f.q[S[i]], f.q[S[i] + 1])); });
   // auto magnification: displacements about 4 % of the plan, a 1-2-5 value, at most 1000
   var auto = 1;
   if (peak > 0) { var want = Math.min(1000, 0.04 * ext0 / peak); if (want > 1) { var d = Math.pow(10, Math.floor(Math.log10(want))); auto = [5, 2, 1].map(function (m) { return m * d; }).filter(function (v) { return v <= want; })[0] || 1; } }
@@ -45,9 +45,9 @@
   }
   // true (unmagnified) position of point p of segment i
   function trueAt(i, p, q) {
-    var c = D.centroids[i], th = q[3 * i + 2] * Math.PI / 180, s = Math.sin(th), co = Math.cos(th);
+    var c = D.centroids[i], th = q[S[i] + 2] * Math.PI / 180, s = Math.sin(th), co = Math.cos(th);
     var rx = p[0] - c[0], ry = p[1] - c[1];
-    return [c[0] + q[3 * i] + co * rx - s * ry, c[1] + q[3 * i + 1] + s * rx + co * ry];
+    return [c[0] + q[S[i]] + co * rx - s * ry, c[1] + q[S[i] + 1] + s * rx + co * ry];
   }
   var off = offsets(state.mag);
   function place(i, p, q) {
@@ -120,7 +120,7 @@
       g.beginPath(); g.fillStyle = 'rgba(70,120,200,0.35)'; g.strokeStyle = '#1f4e99';
       o.forEach(function (p, j) { var s = T(place(i, p, q)); j ? g.lineTo(s[0], s[1]) : g.moveTo(s[0], s[1]); });
       g.fill(); g.stroke();
-      drawn.push({ x: q[3 * i], y: q[3 * i + 1], theta_deg: q[3 * i + 2], centroid: place(i, D.centroids[i], q) });
+      drawn.push({ x: q[S[i]], y: q[S[i] + 1], theta_deg: q[S[i] + 2], centroid: place(i, D.centroids[i], q) });
     });
     // seat gauges: at the middle of each seated end's face, a bar pointing off the seat whose
     // filled part is the seat left (green above half, orange below, red once unseated)

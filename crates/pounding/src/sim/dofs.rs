@@ -122,6 +122,21 @@ impl Dofs {
         self.kinds[b]
     }
 
+    /// The index of plan component `c` (0: x, 1: y, 2: θ) of the plan rigid body `b` (a deck
+    /// segment).
+    ///
+    /// # Panics
+    /// If body `b` is not a plan rigid body or `c > 2`.
+    #[inline]
+    pub fn plan_index(&self, b: usize, c: usize) -> usize {
+        assert!(
+            self.kinds[b] == BodyKind::PlanRigid && c < 3,
+            "plan component {c} of body {b} ({:?})",
+            self.kinds[b]
+        );
+        self.start[b] + c
+    }
+
     /// The first index of body `b`.
     #[inline]
     pub fn start(&self, b: usize) -> usize {

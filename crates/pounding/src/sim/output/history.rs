@@ -166,7 +166,7 @@ impl<'a> History<'a> {
         ] {
             for i in 0..n {
                 for (c, (name, unit)) in names.iter().enumerate() {
-                    let k = self.sol.dofs.start(i) + c;
+                    let k = self.sol.dofs.plan_index(i, c);
                     let s = if rates { Series::U(k) } else { Series::Q(k) };
                     self.push(format!("{name}{}", i + 1), unit, s);
                 }

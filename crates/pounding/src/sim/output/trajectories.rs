@@ -5,8 +5,9 @@
 //!
 //! The frames are the kept times `r = 0, s, 2s, …` of the run and its last kept time (`s` =
 //! `"stride"`, the smallest integer with `⌈(rows − 1) / s⌉ + 1 ≤` [`TRAJECTORY_MAX_FRAMES`]); a
-//! frame's `q` row holds `x_i, y_i, θ_i` of every
-//! segment exactly as `history.csv` writes them (m, m, degrees). A point `p⁰` of segment `i` is at
+//! frame's `q` row holds every coordinate of the run exactly as `history.csv` writes them (m, m,
+//! degrees); segment `i`'s `x_i, y_i, θ_i` start at index `dof_start[i]` (the DOF map's layout:
+//! piers' and backwalls' coordinates follow the segments'). A point `p⁰` of segment `i` is at
 //!
 //! `p(t) = G⁰ᵢ + d + Rot(θ)(p⁰ − G⁰ᵢ)`, `d = (x_i, y_i)`,
 //!
@@ -69,6 +70,11 @@ pub fn trajectories_json(
          \"time\":\"s\",\"angle\":\"deg\",\"acceleration\":\"m/s2\",\"impulse\":\"N s\",\
          \"force\":\"N\"}},\"segments\":{n},\"rows\":{rows},\"stride\":{stride},"
     );
+    // where segment i's x, y, θ sit in a frame's `q` (the DOF map's, not a multiple of 3)
+    let starts: Vec<String> = (0..n)
+        .map(|i| sol.dofs.plan_index(i, 0).to_string())
+        .collect();
+    let _ = writeln!(s, "\"dof_start\":[{}],", starts.join(","));
     let outlines: Vec<String> = plan
         .outlines
         .iter()
