@@ -31,6 +31,7 @@ fn bridge_arrays(
                 "peak_impulse_ns": json_float(j.peak_impulse),
                 "peak_closing_m": json_float(j.peak_closing),
                 "peak_opening_m": json_float(j.peak_opening),
+                "peak_slip_m": json_float(j.peak_slip),
                 "restrainer_engagements": j.restrainer_engagements,
                 "restrainer_peak_force_n": opt(j.restrainer_peak_force),
                 "unseated": j.unseated,
@@ -101,8 +102,12 @@ pub(crate) const BRIDGE_PERIODS: usize = 10;
 
 /// The `summary.json` of a bridge run: `joints`, `abutments` (`[start, end]`, `null` where
 /// absent) and `segments` arrays in bridge order, the whole-bridge figures, status, ground motion
-/// and model.
-pub(crate) fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> Value {
+/// and model; its warnings name the contacts as the files of `layout` do.
+pub(crate) fn bridge_summary_json(
+    setup: &BridgeSetup,
+    layout: super::Layout,
+    sol: &BridgeSolution,
+) -> Value {
     let s = &sol.summary;
     let m = &setup.problem.model;
     let e = &s.final_energy;
@@ -200,7 +205,7 @@ pub(crate) fn bridge_summary_json(setup: &BridgeSetup, sol: &BridgeSolution) -> 
             .into_iter()
             .map(|w| w.json)
             .chain(
-                super::run_warnings(super::Layout::Bridge, sol)
+                super::run_warnings(layout, sol)
                     .iter()
                     .map(super::RunWarning::json),
             )

@@ -222,70 +222,99 @@ pub fn warnings_message(w: &[RunWarning]) -> Option<String> {
     ))
 }
 
-/// The `summary.json` value: peaks, unseating, energies, status and counters, the ground motion
-/// and the model (keys for straight/skewed decks, abutments and compliance laws only when used).
+/// The two-deck file's `summary.json` keys that are the bridge summary's values under another
+/// name: `(two-deck key path, bridge summary JSON pointer)`. A key whose bridge value is absent
+/// is left out (the compliance keys of a rigid run, the estimate of a compliance run).
+const PAIR_KEYS: &[(&str, &str)] = &[
+    ("impacts", "/impacts"),
+    ("impacting_contacts", "/impacting_contacts"),
+    ("peak_joint_closing_m", "/joints/0/peak_closing_m"),
+    ("peak_joint_opening_m", "/joints/0/peak_opening_m"),
+    ("peak_slip_m", "/joints/0/peak_slip_m"),
+    ("peak_contact_force_n", "/joints/0/peak_contact_force_n"),
+    ("peak_seat_displacement_m", "/peak_seat_displacement_m"),
+    ("seat_length_m", "/joints/0/seat_length_m"),
+    ("unseated", "/unseated"),
+    ("unseating_time_s", "/unseating_time_s"),
+    ("max_penetration_m", "/peak_penetration_m"),
+    ("peak_penetration_m", "/peak_penetration_m"),
+    ("energy_balance_error", "/energy_balance_error"),
+    ("energy_J/input", "/energy_J/input"),
+    ("energy_J/kinetic", "/energy_J/kinetic"),
+    ("energy_J/strain", "/energy_J/strain"),
+    (
+        "energy_J/viscous_dissipation",
+        "/energy_J/viscous_dissipation",
+    ),
+    (
+        "energy_J/contact_dissipation",
+        "/energy_J/contact_dissipation",
+    ),
+    ("energy_J/max_input", "/energy_J/max_input"),
+    ("energy_J/projection", "/energy_J/projection"),
+    ("ground_motion", "/ground_motion"),
+    ("model/gap_m", "/joints/0/gap_m"),
+    ("model/mu", "/joints/0/mu"),
+    ("model/eps_n", "/joints/0/eps_n"),
+    ("model/damping_ratio", "/model/damping_ratio"),
+    ("status", "/status"),
+    ("steps", "/steps"),
+    ("dt_s", "/dt_s"),
+    ("duration_s", "/duration_s"),
+    ("lcp_solves", "/lcp_solves"),
+    ("lcp_enumeration_fallbacks", "/lcp_enumeration_fallbacks"),
+    ("lcp_failures", "/lcp_failures"),
+    ("max_overlap_m", "/max_overlap_m"),
+    ("projection", "/projection"),
+    ("warnings", "/warnings"),
+    ("peak_force_estimate_n", "/peak_force_estimate_n"),
+    ("time_step", "/time_step"),
+    ("newton_failures", "/newton_failures"),
+    ("closure_steps", "/closure_steps"),
+];
+
+/// The two-deck file's `summary.json`: the summary of its bridge of two segments
+/// ([`bridge_summary_json`], with the two-deck names in its warnings) translated to the keys of
+/// the two-deck form — [`PAIR_KEYS`], per-deck pairs (`peak_rotation_deg`, `natural_periods_s`,
+/// `model.mass_kg`), the seats by deck end (`deck1-joint`, …), the abutments by deck — plus what
+/// only the form knows: its bearing counts and deck shapes (`m`, the preset's parameters) and
+/// the Rayleigh coefficients per deck.
 pub(crate) fn pair_summary_json(
     setup: &crate::sim::scenario::BridgeSetup,
     m: &SimModel,
     sol: &BridgeSolution,
 ) -> serde_json::Value {
+    use serde_json::Value;
+    let b = bridge::bridge_summary_json(setup, Layout::TwoDecks, sol);
     let s = &sol.summary;
-    let e = &s.final_energy;
-    let joint = &s.joints[0];
-    let seat: serde_json::Map<String, serde_json::Value> = s
+    let mut out = json!({});
+    for (key, pointer) in PAIR_KEYS {
+        if let Some(v) = b.pointer(pointer) {
+            set_path(&mut out, key, v.clone());
+        }
+    }
+    let decks = |key: &str| json!([b["segments"][0][key], b["segments"][1][key]]);
+    out["peak_rotation_deg"] = decks("peak_rotation_deg");
+    out["natural_periods_s"] = decks("natural_periods_s");
+    out["model"]["mass_kg"] = decks("mass_kg");
+    out["rayleigh_a0_a1"] = [0, 1]
+        .map(|j| {
+            let (a0, a1) = s.segments[j].rayleigh;
+            [json_float(a0), json_float(a1)]
+        })
+        .into();
+    out["peak_seat_displacement_by_end_m"] = s
         .seats
         .iter()
         .map(|end| (pair_seat_name(end), json_float(end.peak_displacement)))
-        .collect();
-    let unseated_end = pair_unseated_end(s);
-    let deck = |j: usize| &s.segments[j];
-    let period = |w: Real| json_float(2.0 * std::f64::consts::PI / w);
-    let periods = [0, 1].map(|j| deck(j).frequencies.map(period));
-    let rayleigh = [0, 1].map(|j| {
-        let (a0, a1) = deck(j).rayleigh;
-        [json_float(a0), json_float(a1)]
-    });
-    let mut out = json!({
-        "impacts": s.impacts,
-        "impacting_contacts": sol.impacts.len(),
-        "peak_joint_closing_m": json_float(joint.peak_closing),
-        "peak_joint_opening_m": json_float(joint.peak_opening),
-        "peak_rotation_deg": [json_float(deck(0).peak_rotation * DEG), json_float(deck(1).peak_rotation * DEG)],
-        "peak_slip_m": json_float(joint.peak_slip),
-        "peak_seat_displacement_m": json_float(s.peak_seat_displacement),
-        "peak_seat_displacement_by_end_m": seat,
-        "seat_length_m": json_float(m.seat_length),
-        "unseated": s.unseated,
-        "unseating_time_s": s.unseating_time.map_or(serde_json::Value::Null, json_float),
-        "unseated_end": unseated_end,
-        "max_penetration_m": json_float(s.peak_penetration),
-        "peak_contact_force_n": joint.peak_contact_force.map_or(serde_json::Value::Null, json_float),
-        "peak_penetration_m": json_float(s.peak_penetration),
-        "energy_balance_error": json_float(s.energy_balance_error),
-        "energy_J": {
-            "input": json_float(e.input),
-            "kinetic": json_float(e.kinetic),
-            "strain": json_float(e.potential),
-            "viscous_dissipation": json_float(e.viscous),
-            "contact_dissipation": json_float(e.contact),
-            "max_input": json_float(s.max_input_energy),
-        },
-        "natural_periods_s": periods,
-        "rayleigh_a0_a1": rayleigh,
-        "ground_motion": ground_json(&setup.records, &setup.problem.ground),
-        "model": {
-            "mass_kg": m.masses().map(json_float),
-            "gap_m": json_float(m.gap),
-            "mu": json_float(m.friction),
-            "eps_n": json_float(m.restitution),
-            "damping_ratio": json_float(m.damping_ratio),
-            "bearings": [m.bearings1.len(), m.bearings2.len()],
-        },
-    });
-    // Keys for straight / skewed decks and abutments only when used (the curved default's
-    // summary stays as it was).
+        .collect::<serde_json::Map<_, _>>()
+        .into();
+    out["unseated_end"] = pair_unseated_end(s).into();
+    out["model"]["bearings"] = json!([m.bearings1.len(), m.bearings2.len()]);
+    // keys for straight / skewed decks and abutments only when used (the curved default's
+    // summary stays as it was)
     if let Some(sh) = &m.shapes {
-        let len = |d: &DeckShape| d.length().map_or(serde_json::Value::Null, json_float);
+        let len = |d: &DeckShape| d.length().map_or(Value::Null, json_float);
         let skew = |d: &DeckShape| json_float(d.skew() * DEG);
         out["model"]["shape"] = json!([sh[0].name(), sh[1].name()]);
         out["model"]["length_m"] = json!([len(&sh[0]), len(&sh[1])]);
@@ -293,41 +322,33 @@ pub(crate) fn pair_summary_json(
     }
     if m.abutments.iter().any(Option::is_some) {
         let mut ab = serde_json::Map::new();
-        for (j, a) in m.abutments.iter().enumerate() {
-            if let Some(a) = a {
-                ab.insert(
-                    format!("deck{}", j + 1),
-                    json!({
-                        "gap_m": json_float(a.gap),
-                        "seat_length_m": json_float(a.seat_length),
-                        "peak_closing_m": s.abutments[j].as_ref().map_or(serde_json::Value::Null, |a| json_float(a.peak_closing)),
-                    }),
-                );
+        for (j, a) in b["abutments"].as_array().into_iter().flatten().enumerate() {
+            if a.is_object() {
+                let keys = ["gap_m", "seat_length_m", "peak_closing_m"];
+                let entry = keys.iter().map(|k| (k.to_string(), a[*k].clone()));
+                ab.insert(format!("deck{}", j + 1), Value::Object(entry.collect()));
             }
         }
         ab.insert(
             "impacting_contacts".into(),
             json!(sol.abutment_impacting_contacts()),
         );
-        out["abutments"] = serde_json::Value::Object(ab);
+        out["abutments"] = Value::Object(ab);
     }
-    add_run_keys(&mut out, &RunKeys::of(sol));
-    add_projection_keys(&mut out, &sol.summary);
-    add_compliance_summary(&mut out, m, sol);
-    out["warnings"] = input_warnings(&setup.problem.ground, sol.dt, sol.time_step_advice.as_ref())
-        .into_iter()
-        .map(|w| w.json)
-        .chain(
-            run_warnings(Layout::TwoDecks, sol)
-                .iter()
-                .map(RunWarning::json),
-        )
-        .collect();
-    if matches!(m.contact, JointContact::Rigid) {
-        out["peak_force_estimate_n"] =
-            peak_estimate_json(sol.impacts.iter().map(|r| (r, m.restitution)));
+    if let JointContact::Compliance(_) = m.contact {
+        out["contact_law"] = b["joints"][0]["contact_law"].clone();
+        out["model"]["damping"] = b["model"]["damping"].clone();
     }
     out
+}
+
+/// Sets `v[a][b]…` for the key path `a/b/…`, creating the objects on the way.
+fn set_path(v: &mut serde_json::Value, path: &str, x: serde_json::Value) {
+    let mut cur = v;
+    for part in path.split('/') {
+        cur = &mut cur[part];
+    }
+    *cur = x;
 }
 
 /// The `ground_motion` object of a `summary.json`: the records as written, scales, incidence,
@@ -426,25 +447,4 @@ pub fn describe_contact(c: &JointContact) -> serde_json::Value {
             v
         }
     }
-}
-
-/// Adds the compliance-law fields to a `summary.json` value (nothing for rigid contact, so the
-/// rigid summary keeps its keys): `contact_law` (parameters), `time_step` (contact duration,
-/// steps per contact, adequate), `newton_failures`.
-fn add_compliance_summary(v: &mut serde_json::Value, m: &SimModel, sol: &BridgeSolution) {
-    if matches!(m.contact, JointContact::Rigid) {
-        return;
-    }
-    v["contact_law"] = describe_contact(&m.contact);
-    v["model"]["damping"] = serde_json::json!(format!("{:?}", m.damping_model));
-    if let Some(a) = &sol.time_step_advice {
-        v["time_step"] = serde_json::json!({
-            "contact_duration_s": json_float(a.contact_duration),
-            "steps_per_contact": json_float(a.steps_per_contact),
-            "max_step_s": json_float(a.max_step),
-            "adequate": a.adequate,
-        });
-    }
-    v["newton_failures"] = serde_json::json!(sol.newton_failures);
-    v["closure_steps"] = serde_json::json!(sol.closure_steps);
 }

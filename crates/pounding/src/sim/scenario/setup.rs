@@ -165,7 +165,7 @@ impl Setup {
     pub fn summary_json_value(&self, sol: &BridgeSolution) -> serde_json::Value {
         match &self.form {
             Form::TwoDecks(m) => output::pair_summary_json(&self.run, m, sol),
-            Form::Bridge => output::bridge_summary_json(&self.run, sol),
+            Form::Bridge => output::bridge_summary_json(&self.run, Layout::Bridge, sol),
         }
     }
 }
