@@ -160,6 +160,10 @@ pub(crate) trait Stepper {
     fn adjust_contact_energy(&mut self, delta: Real);
     /// Advances `u_k → u_{k+1}`, logging impacts.
     fn step(&mut self, input: &StepInput, log: &mut ImpactLog) -> StepOutput;
+    /// Takes back `u_k`, no longer needed once `u_{k+1}` is known, as storage for a later
+    /// [`StepOutput::u`] (a stepper that keeps it allocates nothing per step); dropped by
+    /// default.
+    fn recycle(&mut self, _u: State) {}
     /// Closes what is still open at the end of the run; returns the counters.
     fn finish(&mut self, log: &mut ImpactLog) -> StepperStats;
     /// The sites whose positions a projection corrects: the rigid-law ones (`None`: none).
@@ -235,7 +239,10 @@ impl Ledger {
 
     /// Input work and viscous dissipation of step `k`; leaves `ū_θ` in `w.u_th` and `ū` in
     /// `w.u_mid`. `offs`: the supports' offsets over the step, when they move apart (their load
-    /// is input work).
+    /// is input work). Inlined into the time loop, as the other per-step parts (one stretch of
+    /// code per step: the loop's code no longer fitted the instruction cache spread over a dozen
+    /// functions).
+    #[inline(always)]
     fn advance(
         &mut self,
         sc: &Scheme,
@@ -528,7 +535,7 @@ pub(crate) fn run<S: Stepper>(
         for (qi, vi) in q.iter_mut().zip(work.u_th.iter()) {
             *qi += vi * h;
         }
-        u = out.u;
+        stepper.recycle(std::mem::replace(&mut u, out.u));
         bridge.update_frame(&q, &mut frame);
         if let Some(o) = &mut offs {
             o.advance();

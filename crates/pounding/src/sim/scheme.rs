@@ -148,6 +148,7 @@ impl Scheme {
     /// [`Self::apply`] with the blocks from an iterator (no list of blocks is collected: the
     /// energy terms of every step use the blocks of [`Self::bodies`] in place), into `out` (same
     /// length as `v`), allocating nothing.
+    #[inline(always)]
     pub fn apply_blocks_into<'a>(
         dofs: &Dofs,
         blocks: impl Iterator<Item = &'a Matrix3<Real>>,
@@ -162,6 +163,7 @@ impl Scheme {
     }
 
     /// The contact-free velocity `u_free = u + A_u u + A_q q + B_g ā`, into `out`.
+    #[inline(always)]
     pub fn u_free(&self, q: &State, u: &State, abar: &Vector, out: &mut State) {
         if let Some(d) = &self.dense {
             return d.u_free(q, u, abar, out);
@@ -182,6 +184,7 @@ impl Scheme {
     }
 
     /// The effective seismic load `F = −M r a_g`, into `f`.
+    #[inline(always)]
     pub fn load(&self, a: &Vector, f: &mut State) {
         if let Some(d) = &self.dense {
             return d.load(a, f);
@@ -219,6 +222,7 @@ impl Scheme {
     /// The segments with `yielding[j]` are left out of the strain energy: their stiffness is
     /// their yielding bearings' initial stiffness, whose energy the elements book as work
     /// ([`super::elements::Elements::book`]).
+    #[inline(always)]
     pub fn energies(&self, q: &State, u: &State, w: &mut Work, yielding: &[bool]) -> (Real, Real) {
         if let Some(d) = &self.dense {
             return d.energies(q, u, &mut w.mu, &mut w.kq);
@@ -238,6 +242,7 @@ impl Scheme {
     }
 
     /// `vᵀ C v`; `cv` holds `C v`.
+    #[inline(always)]
     pub fn damping_power(&self, v: &State, cv: &mut State) -> Real {
         if let Some(d) = &self.dense {
             return d.damping_power(v, cv);
