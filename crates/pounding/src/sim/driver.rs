@@ -265,10 +265,14 @@ impl Ledger {
             sc.add_support_load(&o.d1, &o.v1, &mut w.f1);
         }
         self.loaded = Some(k + 1);
+        // over slices (no per-entry index checks of the matrix type): the same operations
+        let (u, u_new) = (u.as_slice(), u_new.as_slice());
+        let (u_th, u_mid) = (w.u_th.as_mut_slice(), w.u_mid.as_mut_slice());
+        let (f0, f1, fbar) = (w.f0.as_slice(), w.f1.as_slice(), w.fbar.as_mut_slice());
         for i in 0..u.len() {
-            w.u_th[i] = u[i] * (1.0 - th) + u_new[i] * th;
-            w.u_mid[i] = (u[i] + u_new[i]) * 0.5;
-            w.fbar[i] = w.f0[i] * (1.0 - th) + w.f1[i] * th;
+            u_th[i] = u[i] * (1.0 - th) + u_new[i] * th;
+            u_mid[i] = (u[i] + u_new[i]) * 0.5;
+            fbar[i] = f0[i] * (1.0 - th) + f1[i] * th;
         }
         self.w_in += sc.h * w.u_mid.dot(&w.fbar);
         self.d_visc += sc.h * sc.damping_power(&w.u_th, &mut w.cv);
@@ -330,8 +334,8 @@ impl Trace {
         forces: Option<&[[Real; 2]]>,
     ) {
         self.t.push(t);
-        self.q.extend(q.iter());
-        self.u.extend(u.iter());
+        self.q.extend_from_slice(q.as_slice());
+        self.u.extend_from_slice(u.as_slice());
         for jf in &fr.joints {
             self.gaps.extend(jf.cands.iter().map(|c| c.gap));
         }
@@ -493,7 +497,12 @@ pub(crate) fn run<S: Stepper>(
         if has_elements {
             el.step_force(&q, &u, h, th, &bridge.bodies, &frame.pose, &mut el_force);
             sc.winv_into(&el_force.r, &mut work.wr);
-            for (uf, wr) in work.u_free.iter_mut().zip(work.wr.iter()) {
+            for (uf, wr) in work
+                .u_free
+                .as_mut_slice()
+                .iter_mut()
+                .zip(work.wr.as_slice())
+            {
                 *uf += wr * h;
             }
             if !yielding.is_empty() {
@@ -532,7 +541,7 @@ pub(crate) fn run<S: Stepper>(
             let kq = (&work.kq_th, yield_body.as_slice());
             el.book(h, &work.u_mid, kq, &mut el_force, nb);
         }
-        for (qi, vi) in q.iter_mut().zip(work.u_th.iter()) {
+        for (qi, vi) in q.as_mut_slice().iter_mut().zip(work.u_th.as_slice()) {
             *qi += vi * h;
         }
         stepper.recycle(std::mem::replace(&mut u, out.u));
@@ -552,7 +561,8 @@ pub(crate) fn run<S: Stepper>(
             ledger.proj = ledger.proj.map(|p| p + wp);
         }
         steps_done = k + 1;
-        if !(q.iter().all(|x| x.is_finite()) && u.iter().all(|x| x.is_finite())) {
+        let finite = |v: &State| v.as_slice().iter().all(|x| x.is_finite());
+        if !(finite(&q) && finite(&u)) {
             status = SimStatus::Diverged;
             break;
         }
