@@ -368,7 +368,7 @@ pub(crate) fn candidates(bodies: &[SegmentBody], pose: &Pose, joint: &JointGeom)
 
 /// `Σ_d w_d v_d` over the entries of `w` in order (a left-to-right sum, as the dense 6-entry
 /// sum of the two-deck model).
-#[inline]
+#[inline(always)]
 pub(crate) fn dot_dir(w: &Direction, v: &State, dofs: &Dofs) -> Real {
     let (j0, a0) = w.first;
     let v0 = dofs.plan_of(j0, v.as_slice());

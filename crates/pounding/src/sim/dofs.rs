@@ -163,14 +163,25 @@ impl Dofs {
     }
 
     /// `(x, y, θ)` of plan body `b` in the state `v` (`θ = 0` for a [`BodyKind::PlanPoint`]).
-    #[inline]
+    ///
+    /// Read several times per body and step by the monitors and the contact steppers: the deck
+    /// segment's triple is read in place, the other kinds out of line (the time loop's code
+    /// stays small).
+    #[inline(always)]
     pub fn plan_of(&self, b: usize, v: &[Real]) -> [Real; 3] {
         let s = self.start[b];
+        if self.kinds[b] == BodyKind::PlanRigid {
+            let x = &v[s..s + 3];
+            return [x[0], x[1], x[2]];
+        }
+        self.plan_of_other(b, s, v)
+    }
+
+    /// [`Self::plan_of`] of a body that is not a [`BodyKind::PlanRigid`] (first index `s`).
+    #[inline(never)]
+    fn plan_of_other(&self, b: usize, s: usize, v: &[Real]) -> [Real; 3] {
         match self.kinds[b] {
-            BodyKind::PlanRigid => {
-                let x = &v[s..s + 3];
-                [x[0], x[1], x[2]]
-            }
+            BodyKind::PlanRigid => [v[s], v[s + 1], v[s + 2]],
             BodyKind::PlanPoint => [v[s], v[s + 1], 0.0],
             BodyKind::Axial => {
                 let a = self.axes[b];

@@ -160,6 +160,10 @@ pub(crate) trait Stepper {
     fn adjust_contact_energy(&mut self, delta: Real);
     /// Advances `u_k → u_{k+1}`, logging impacts.
     fn step(&mut self, input: &StepInput, log: &mut ImpactLog) -> StepOutput;
+    /// Takes back `u_k`, no longer needed once `u_{k+1}` is known, as storage for a later
+    /// [`StepOutput::u`] (a stepper that keeps it allocates nothing per step); dropped by
+    /// default.
+    fn recycle(&mut self, _u: State) {}
     /// Closes what is still open at the end of the run; returns the counters.
     fn finish(&mut self, log: &mut ImpactLog) -> StepperStats;
     /// The sites whose positions a projection corrects: the rigid-law ones (`None`: none).
@@ -235,7 +239,10 @@ impl Ledger {
 
     /// Input work and viscous dissipation of step `k`; leaves `ū_θ` in `w.u_th` and `ū` in
     /// `w.u_mid`. `offs`: the supports' offsets over the step, when they move apart (their load
-    /// is input work).
+    /// is input work). Inlined into the time loop, as the other per-step parts (one stretch of
+    /// code per step: the loop's code no longer fitted the instruction cache spread over a dozen
+    /// functions).
+    #[inline(always)]
     fn advance(
         &mut self,
         sc: &Scheme,
@@ -258,10 +265,14 @@ impl Ledger {
             sc.add_support_load(&o.d1, &o.v1, &mut w.f1);
         }
         self.loaded = Some(k + 1);
+        // over slices (no per-entry index checks of the matrix type): the same operations
+        let (u, u_new) = (u.as_slice(), u_new.as_slice());
+        let (u_th, u_mid) = (w.u_th.as_mut_slice(), w.u_mid.as_mut_slice());
+        let (f0, f1, fbar) = (w.f0.as_slice(), w.f1.as_slice(), w.fbar.as_mut_slice());
         for i in 0..u.len() {
-            w.u_th[i] = u[i] * (1.0 - th) + u_new[i] * th;
-            w.u_mid[i] = (u[i] + u_new[i]) * 0.5;
-            w.fbar[i] = w.f0[i] * (1.0 - th) + w.f1[i] * th;
+            u_th[i] = u[i] * (1.0 - th) + u_new[i] * th;
+            u_mid[i] = (u[i] + u_new[i]) * 0.5;
+            fbar[i] = f0[i] * (1.0 - th) + f1[i] * th;
         }
         self.w_in += sc.h * w.u_mid.dot(&w.fbar);
         self.d_visc += sc.h * sc.damping_power(&w.u_th, &mut w.cv);
@@ -323,8 +334,8 @@ impl Trace {
         forces: Option<&[[Real; 2]]>,
     ) {
         self.t.push(t);
-        self.q.extend(q.iter());
-        self.u.extend(u.iter());
+        self.q.extend_from_slice(q.as_slice());
+        self.u.extend_from_slice(u.as_slice());
         for jf in &fr.joints {
             self.gaps.extend(jf.cands.iter().map(|c| c.gap));
         }
@@ -486,7 +497,12 @@ pub(crate) fn run<S: Stepper>(
         if has_elements {
             el.step_force(&q, &u, h, th, &bridge.bodies, &frame.pose, &mut el_force);
             sc.winv_into(&el_force.r, &mut work.wr);
-            for (uf, wr) in work.u_free.iter_mut().zip(work.wr.iter()) {
+            for (uf, wr) in work
+                .u_free
+                .as_mut_slice()
+                .iter_mut()
+                .zip(work.wr.as_slice())
+            {
                 *uf += wr * h;
             }
             if !yielding.is_empty() {
@@ -525,10 +541,10 @@ pub(crate) fn run<S: Stepper>(
             let kq = (&work.kq_th, yield_body.as_slice());
             el.book(h, &work.u_mid, kq, &mut el_force, nb);
         }
-        for (qi, vi) in q.iter_mut().zip(work.u_th.iter()) {
+        for (qi, vi) in q.as_mut_slice().iter_mut().zip(work.u_th.as_slice()) {
             *qi += vi * h;
         }
-        u = out.u;
+        stepper.recycle(std::mem::replace(&mut u, out.u));
         bridge.update_frame(&q, &mut frame);
         if let Some(o) = &mut offs {
             o.advance();
@@ -545,7 +561,8 @@ pub(crate) fn run<S: Stepper>(
             ledger.proj = ledger.proj.map(|p| p + wp);
         }
         steps_done = k + 1;
-        if !(q.iter().all(|x| x.is_finite()) && u.iter().all(|x| x.is_finite())) {
+        let finite = |v: &State| v.as_slice().iter().all(|x| x.is_finite());
+        if !(finite(&q) && finite(&u)) {
             status = SimStatus::Diverged;
             break;
         }

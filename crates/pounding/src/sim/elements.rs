@@ -282,8 +282,10 @@ impl Elements {
         pose: &Pose,
         f: &mut StepForce,
     ) {
-        for i in 0..q.len() {
-            f.pred[i] = q[i] + u[i] * h;
+        // over slices (no per-entry index checks of the matrix type): the same operations
+        let pred = f.pred.as_mut_slice();
+        for (p, (qi, ui)) in pred.iter_mut().zip(q.as_slice().iter().zip(u.as_slice())) {
+            *p = qi + ui * h;
         }
         // `R(q_k)` of the bearings depends on their committed plastic displacements only:
         // formed again when one of them has changed (a member flowed in the last step)
@@ -332,16 +334,23 @@ impl Elements {
             }
         }
         // (1−θ) a + θ b: for θ = ½ the same bits as (a + b)·½ (scaling by ½ is exact)
-        for i in 0..q.len() {
-            f.r[i] = f.r0[i] * (1.0 - th) + f.r1[i] * th;
-            f.rb[i] = f.rb0[i] * (1.0 - th) + f.rb1[i] * th;
+        let (r, rb) = (f.r.as_mut_slice(), f.rb.as_mut_slice());
+        let (r0, r1, rb0, rb1) = (
+            f.r0.as_slice(),
+            f.r1.as_slice(),
+            f.rb0.as_slice(),
+            f.rb1.as_slice(),
+        );
+        for i in 0..r.len() {
+            r[i] = r0[i] * (1.0 - th) + r1[i] * th;
+            rb[i] = rb0[i] * (1.0 - th) + rb1[i] * th;
         }
     }
 
     /// The bearings' `R(q)` into `r`; `trial`: their plastic displacement of the return mapping
     /// to `q` (else the committed one).
     fn bearing_force(&self, q: &State, trial: bool, r: &mut State) {
-        r.fill(0.0);
+        r.as_mut_slice().fill(0.0);
         for b in &self.bearings {
             let u_p = if trial {
                 let u = b.deformation(&self.dofs, q);
@@ -410,8 +419,9 @@ impl Elements {
                 .sum();
             *w += h * s;
         }
-        for i in 0..r.len() {
-            f.rc[i] = r[i] - rb[i];
+        let (r, rb) = (r.as_slice(), rb.as_slice());
+        for (c, (ri, bi)) in f.rc.as_mut_slice().iter_mut().zip(r.iter().zip(rb)) {
+            *c = ri - bi;
         }
         if self.backfills.is_empty() && self.keys.is_empty() {
             self.w_cables -= h * u_mid.dot(&f.rc);

@@ -159,6 +159,7 @@ impl Peaks {
     /// When the supports move apart (`ground` their offsets, else empty), a segment's
     /// displacement is taken relative to the ground under its start support and each bearing's
     /// deformation relative to its own support.
+    #[inline(always)]
     pub(crate) fn observe_segments(&mut self, q: &State, br: &Bridge, ground: &[Vector]) {
         if !ground.is_empty() {
             return self.observe_segments_apart(q, br, ground);
@@ -180,15 +181,27 @@ impl Peaks {
                     m = m.max(ux * ux + uy * uy);
                 }
             }
-            for b in others {
-                let u = b.deformation(&br.dofs, q, &br.bodies);
-                m = m.max(u.x * u.x + u.y * u.y);
+            if !others.is_empty() {
+                m = Self::others_peak(m, others, br, q);
             }
             *peak = m;
         }
     }
 
+    /// `m` and the squared deformations of a segment's bearings that are not on a support
+    /// (on a pier's cap), the larger: out of the time loop's common path.
+    #[inline(never)]
+    fn others_peak(mut m: Real, others: &[BearingAt], br: &Bridge, q: &[Real]) -> Real {
+        for b in others {
+            let u = b.deformation(&br.dofs, q, &br.bodies);
+            m = m.max(u.x * u.x + u.y * u.y);
+        }
+        m
+    }
+
     /// [`Self::observe_segments`] under supports that move apart.
+    #[cold]
+    #[inline(never)]
     fn observe_segments_apart(&mut self, q: &State, br: &Bridge, ground: &[Vector]) {
         let q = q.as_slice();
         for (j, bs) in br.bearings.iter().enumerate() {
@@ -307,7 +320,9 @@ impl Peaks {
         }
     }
 
-    /// Monitors the state at `t`; `obs` receives what the history records.
+    /// Monitors the state at `t`; `obs` receives what the history records. Inlined into the time
+    /// loop (as [`super::driver::run`]'s other per-step parts).
+    #[inline(always)]
     pub(crate) fn observe(
         &mut self,
         t: Real,

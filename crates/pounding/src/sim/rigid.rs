@@ -120,6 +120,8 @@ pub(crate) struct RigidStepper {
     stats: StepperStats,
     /// Per joint and abutment side: handled here (a mixed bridge's compliance sites are not).
     on: (Vec<bool>, [bool; 2]),
+    /// The storage of the next step's `u_{k+1}` ([`Stepper::recycle`]).
+    spare: Option<State>,
 }
 
 impl RigidStepper {
@@ -137,6 +139,7 @@ impl RigidStepper {
             d_cont: 0.0,
             stats: StepperStats::default(),
             on: (Vec::new(), [true; 2]),
+            spare: None,
         }
     }
 
@@ -153,6 +156,7 @@ impl RigidStepper {
 
     /// Contacts whose predicted gap `g + h γ_N(u_k) ≤ 0`: joint ends in joint order, then the
     /// abutment corners.
+    #[inline(always)]
     fn active_set(&self, inp: &StepInput) -> Vec<ActiveContact> {
         let (fr, br, u, h) = (inp.frame, inp.bridge, inp.u, inp.scheme.h);
         let (pose, bodies) = (&fr.pose, &br.bodies);
@@ -429,6 +433,37 @@ impl RigidStepper {
 }
 
 impl RigidStepper {
+    /// The impacts of a step with active contacts: the impact LCP, its impulses added to
+    /// `u_new` (`u_free` on entry), the law check, the contact dissipation and the impact
+    /// records. Out of the time loop's common path (most steps have no active contact).
+    #[inline(never)]
+    fn resolve(
+        &mut self,
+        inp: &StepInput,
+        active: &[ActiveContact],
+        u_new: &mut State,
+        log: &mut ImpactLog,
+    ) {
+        self.stats.lcp_solves += 1;
+        let asm = Self::assemble(inp, active);
+        let nc = 2 * active.len();
+        let (z, ok, any) = self.solve(&asm, active);
+        let p = Self::impulses(&asm, active, &z, u_new);
+        let mut gam_post: Vec<Real> = (0..nc).map(|i| dot_seq(&asm.wcols[i], u_new)).collect();
+        for (i, a) in active
+            .iter()
+            .enumerate()
+            .filter(|(_, a)| a.face != [0.0; 4])
+        {
+            gam_post[i] -= a.face[2];
+            gam_post[active.len() + i] -= a.face[3];
+        }
+        if ok || any {
+            self.check(&asm, active, inp.u_free, &p, &gam_post);
+        }
+        self.account(&asm, active, &p, &gam_post, inp.t_next, log);
+    }
+
     /// The impulses `P = (P_N, P_T)` of the LCP solution `z`, added to `u` as `Ŵ⁻¹ W P`.
     fn impulses(asm: &Assembled, active: &[ActiveContact], z: &[Real], u: &mut State) -> Vec<Real> {
         let laws: Vec<ImpactLaw> = active.iter().map(|a| a.law).collect();
@@ -468,33 +503,27 @@ impl Stepper for RigidStepper {
         self.d_cont += delta;
     }
 
+    #[inline]
     fn step(&mut self, inp: &StepInput, log: &mut ImpactLog) -> StepOutput {
-        let mut u_new = inp.u_free.clone();
+        let mut u_new = match self.spare.take() {
+            Some(mut s) if s.len() == inp.u_free.len() => {
+                s.copy_from(inp.u_free);
+                s
+            }
+            _ => inp.u_free.clone(),
+        };
         let active = self.active_set(inp);
         if !active.is_empty() {
-            self.stats.lcp_solves += 1;
-            let asm = Self::assemble(inp, &active);
-            let nc = 2 * active.len();
-            let (z, ok, any) = self.solve(&asm, &active);
-            let p = Self::impulses(&asm, &active, &z, &mut u_new);
-            let mut gam_post: Vec<Real> = (0..nc).map(|i| dot_seq(&asm.wcols[i], &u_new)).collect();
-            for (i, a) in active
-                .iter()
-                .enumerate()
-                .filter(|(_, a)| a.face != [0.0; 4])
-            {
-                gam_post[i] -= a.face[2];
-                gam_post[active.len() + i] -= a.face[3];
-            }
-            if ok || any {
-                self.check(&asm, &active, inp.u_free, &p, &gam_post);
-            }
-            self.account(&asm, &active, &p, &gam_post, inp.t_next, log);
+            self.resolve(inp, &active, &mut u_new, log);
         }
         StepOutput {
             u: u_new,
             penetration: Real::NEG_INFINITY,
         }
+    }
+
+    fn recycle(&mut self, u: State) {
+        self.spare = Some(u);
     }
 
     fn finish(&mut self, _log: &mut ImpactLog) -> StepperStats {

@@ -148,20 +148,22 @@ impl Scheme {
     /// [`Self::apply`] with the blocks from an iterator (no list of blocks is collected: the
     /// energy terms of every step use the blocks of [`Self::bodies`] in place), into `out` (same
     /// length as `v`), allocating nothing.
+    #[inline(always)]
     pub fn apply_blocks_into<'a>(
         dofs: &Dofs,
         blocks: impl Iterator<Item = &'a Matrix3<Real>>,
         v: &State,
         out: &mut State,
     ) {
+        let (v, out) = (v.as_slice(), out.as_mut_slice());
         for (j, b) in blocks.enumerate() {
             let s = dofs.start(j);
-            let x: Vector3<Real> = v.fixed_rows::<3>(s).into_owned();
-            out.fixed_rows_mut::<3>(s).copy_from(&(b * x));
+            out[s..s + 3].copy_from_slice((b * triple(v, s)).as_slice());
         }
     }
 
     /// The contact-free velocity `u_free = u + A_u u + A_q q + B_g ā`, into `out`.
+    #[inline(always)]
     pub fn u_free(&self, q: &State, u: &State, abar: &Vector, out: &mut State) {
         if let Some(d) = &self.dense {
             return d.u_free(q, u, abar, out);
@@ -169,27 +171,28 @@ impl Scheme {
         // block by block, in place: per entry the same products and the same sums in the same
         // order, ((u + A_u u) + A_q q) + B_g ā, as the whole-vector expression (bit-identical)
         let a = Vector2::new(abar.x, abar.y);
+        let (q, u, out) = (q.as_slice(), u.as_slice(), out.as_mut_slice());
         for j in 0..self.a_u.len() {
             let s = self.dofs.start(j);
-            let uj: Vector3<Real> = u.fixed_rows::<3>(s).into_owned();
-            let qj: Vector3<Real> = q.fixed_rows::<3>(s).into_owned();
+            let (uj, qj) = (triple(u, s), triple(q, s));
             let au = self.a_u[j] * uj;
             let aq = self.a_q[j] * qj;
             let bg = self.b_g[j] * a;
-            out.fixed_rows_mut::<3>(s)
-                .copy_from(&(((uj + au) + aq) + bg));
+            out[s..s + 3].copy_from_slice((((uj + au) + aq) + bg).as_slice());
         }
     }
 
     /// The effective seismic load `F = −M r a_g`, into `f`.
+    #[inline(always)]
     pub fn load(&self, a: &Vector, f: &mut State) {
         if let Some(d) = &self.dense {
             return d.load(a, f);
         }
         let a = Vector2::new(a.x, a.y);
+        let f = f.as_mut_slice();
         for (j, m) in self.mr.iter().enumerate() {
-            f.fixed_rows_mut::<3>(self.dofs.start(j))
-                .copy_from(&(-(m * a)));
+            let s = self.dofs.start(j);
+            f[s..s + 3].copy_from_slice((-(m * a)).as_slice());
         }
     }
 
@@ -219,6 +222,7 @@ impl Scheme {
     /// The segments with `yielding[j]` are left out of the strain energy: their stiffness is
     /// their yielding bearings' initial stiffness, whose energy the elements book as work
     /// ([`super::elements::Elements::book`]).
+    #[inline(always)]
     pub fn energies(&self, q: &State, u: &State, w: &mut Work, yielding: &[bool]) -> (Real, Real) {
         if let Some(d) = &self.dense {
             return d.energies(q, u, &mut w.mu, &mut w.kq);
@@ -238,6 +242,7 @@ impl Scheme {
     }
 
     /// `vᵀ C v`; `cv` holds `C v`.
+    #[inline(always)]
     pub fn damping_power(&self, v: &State, cv: &mut State) -> Real {
         if let Some(d) = &self.dense {
             return d.damping_power(v, cv);
@@ -267,6 +272,13 @@ impl Scheme {
             }
         }
     }
+}
+
+/// `v[s..s + 3]` as a 3-vector (one body's coordinates).
+#[inline(always)]
+fn triple(v: &[Real], s: usize) -> Vector3<Real> {
+    let x = &v[s..s + 3];
+    Vector3::new(x[0], x[1], x[2])
 }
 
 /// An iteration-matrix inverse: the scheme's `Ŵ⁻¹`, or in a step where yielding elements flow,
