@@ -103,6 +103,10 @@ pub(crate) struct StepOutput {
     pub u: State,
     /// Largest contact deformation `δ` seen in the step (`−∞` if the law has none).
     pub penetration: Real,
+    /// The generalised contact impulse of the step on every coordinate (`None`: none): the
+    /// rigid sites' `W P`, the compliance sites' `h ((1−θ) R_k + θ R_{k+1})`. Only reported
+    /// ([`super::segment_forces`]); `u` already holds its effect.
+    pub impulse: Option<State>,
 }
 
 /// The impacts found so far (records and the 1-based count of impacts).
@@ -425,6 +429,7 @@ pub(crate) fn run<S: Stepper>(
         frame.ground.clone_from(&o.d);
     }
     let mut obs = Observed::default();
+    let mut loads = super::segment_forces::StepLoads::new(bridge);
     let clock = TimeGrid::new(h);
     for k in 0..=sc.n_steps {
         if k % super::PROGRESS_EVERY == 0 {
@@ -464,10 +469,12 @@ pub(crate) fn run<S: Stepper>(
                 elements: &el,
                 slip: &obs.slip,
                 q: q.as_slice(),
+                loads: &loads,
             };
             for o in &mut observers {
                 o.observe(&snapshot);
             }
+            loads.clear();
         }
         if !ledger.finite(&energy) {
             status = SimStatus::Diverged;
@@ -525,6 +532,8 @@ pub(crate) fn run<S: Stepper>(
             let kq = (&work.kq_th, yield_body.as_slice());
             el.book(h, &work.u_mid, kq, &mut el_force, nb);
         }
+        let el_step = has_elements.then_some(&el_force);
+        loads.add_step(sc, &q, &work, el_step, out.impulse.as_ref(), offs.as_ref());
         for (qi, vi) in q.iter_mut().zip(work.u_th.iter()) {
             *qi += vi * h;
         }

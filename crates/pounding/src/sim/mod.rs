@@ -87,6 +87,7 @@ pub mod projection;
 mod rigid;
 pub mod scenario;
 mod scheme;
+mod segment_forces;
 mod settings;
 mod solution;
 mod support;

@@ -439,6 +439,15 @@ impl RigidStepper {
         p
     }
 
+    /// The generalised impulse `W P` of the impulses `p` on every coordinate.
+    fn generalised(asm: &Assembled, p: &[Real]) -> State {
+        let mut out = State::zeros(asm.wcols.first().map_or(0, |w| w.len()));
+        for (w, pi) in asm.wcols.iter().zip(p) {
+            out.axpy(*pi, w, 1.0);
+        }
+        out
+    }
+
     /// `u_{k+1}` of the step from `inp`, committing nothing (no impact records, energy or
     /// counters): the inner solve of a mixed bridge's coupling iteration.
     pub(crate) fn solve_step(&mut self, inp: &StepInput) -> State {
@@ -471,6 +480,7 @@ impl Stepper for RigidStepper {
     fn step(&mut self, inp: &StepInput, log: &mut ImpactLog) -> StepOutput {
         let mut u_new = inp.u_free.clone();
         let active = self.active_set(inp);
+        let mut impulse = None;
         if !active.is_empty() {
             self.stats.lcp_solves += 1;
             let asm = Self::assemble(inp, &active);
@@ -490,10 +500,12 @@ impl Stepper for RigidStepper {
                 self.check(&asm, &active, inp.u_free, &p, &gam_post);
             }
             self.account(&asm, &active, &p, &gam_post, inp.t_next, log);
+            impulse = Some(Self::generalised(&asm, &p));
         }
         StepOutput {
             u: u_new,
             penetration: Real::NEG_INFINITY,
+            impulse,
         }
     }
 
