@@ -152,8 +152,8 @@ impl SimRun {
             .map_err(|e| crate::SolverError::new_err(e.to_string()))?;
         Ok((names, PyArray2::from_owned_array(py, a)))
     }
-    /// The observers' tables (`bearings`, `restrainers`, `joint_slip`, as the CLI's
-    /// `<name>.csv`): a list of `(name, column headers, float64 array (rows, columns))`, the
+    /// The observers' tables (`bearings`, `restrainers`, `joint_slip`, `segment_forces`, …, as
+    /// the CLI's `<name>.csv`): a list of `(name, column headers, float64 array (rows, columns))`, the
     /// values handed over as they are (no text in between).
     #[allow(clippy::type_complexity)]
     fn tables<'py>(
