@@ -460,6 +460,7 @@ pub(crate) fn run<S: Stepper>(
         let mut energy = ledger.check(tk, vk, stepper.contact_energy(), w_el);
         energy.elements = w_el.unwrap_or(0.0);
         if k % settings.history_stride == 0 || k == sc.n_steps {
+            loads.close(sc);
             let nj = bridge.joints.len();
             trace.record(t, &q, &frame, &u, &obs, energy, forces.map(|f| &f[..nj]));
             let snapshot = Snapshot {
@@ -474,7 +475,6 @@ pub(crate) fn run<S: Stepper>(
             for o in &mut observers {
                 o.observe(&snapshot);
             }
-            loads.clear();
         }
         if !ledger.finite(&energy) {
             status = SimStatus::Diverged;

@@ -33,7 +33,6 @@
 //! first row (`t = 0`, no step yet) is zero.
 
 use super::contact::State;
-use super::dofs::Dofs;
 use super::elements::StepForce;
 use super::excitation::Offsets;
 use super::observer::{Observer, Snapshot};
@@ -51,20 +50,29 @@ const KINDS: [&str; 5] = [
     "shear_keys",
     "contact",
 ];
+/// Indices into [`KINDS`] (the sums of [`StepLoads`] are laid out in that order).
+const BEARINGS: usize = 0;
 const SHEAR_KEYS: usize = 3;
 
-/// The forces on each segment summed over the steps since the last kept row (the driver adds
-/// every step and clears it after the observers have read it).
+/// The forces on each segment summed over the steps since the last kept row: the driver adds
+/// every step ([`Self::add_step`]: a few additions per coordinate, the linear bearings' `K` is
+/// applied once per row to the summed `q_θ`) and, at a kept row, forms the means
+/// ([`Self::close`]) that the observer reads.
 pub(crate) struct StepLoads {
-    /// The DOF map (segments are the first bodies).
-    dofs: Dofs,
-    segments: usize,
-    /// Per segment and kind: `(F_x, F_y, M_z)` summed over [`Self::steps`] steps.
-    sum: Vec<[Real; 3]>,
+    /// Per coordinate of the segments: its segment and its place in `(x, y, θ)`.
+    owner: Vec<(usize, usize)>,
+    /// The segments' coordinates: `0..m` (the first bodies').
+    m: usize,
+    /// `Σ q_θ` over the steps, every coordinate (`K` couples a segment to the caps under it).
+    q_th: State,
+    /// Per kind, `m` sums over the steps (kind-major): the bearings' held part `R̄_b` and the
+    /// supports' `P_K d̄`, `−C ū_θ` and `P_C v̄`, the cables', the keys', the contact impulse / `h`.
+    sums: Vec<Real>,
     /// Steps summed.
     steps: usize,
-    /// Scratch: `q_θ`, `K q_θ`, a product's second part, `P_K d̄`, `P_C v̄`.
-    q_th: State,
+    /// Per segment and kind: the mean `(F_x, F_y, M_z)` at the last kept row.
+    means: Vec<[Real; 3]>,
+    /// Scratch: `K Σ q_θ`, a product's second part, `P_K d̄`, `P_C v̄`.
     kq: State,
     scratch: State,
     pk: State,
@@ -76,12 +84,22 @@ impl StepLoads {
     pub fn new(bridge: &Bridge) -> Self {
         let n = bridge.dofs.len();
         let segments = bridge.bodies.len();
+        let m = if segments == 0 {
+            0
+        } else {
+            bridge.dofs.range(segments - 1).end
+        };
+        let owner = (0..segments)
+            .flat_map(|j| bridge.dofs.range(j).enumerate().map(move |(d, _)| (j, d)))
+            .collect::<Vec<_>>();
+        debug_assert_eq!(owner.len(), m, "the segments' coordinates come first");
         StepLoads {
-            dofs: bridge.dofs.clone(),
-            segments,
-            sum: vec![[0.0; 3]; segments * KINDS.len()],
-            steps: 0,
+            owner,
+            m,
             q_th: State::zeros(n),
+            sums: vec![0.0; KINDS.len() * m],
+            steps: 0,
+            means: vec![[0.0; 3]; segments * KINDS.len()],
             kq: State::zeros(n),
             scratch: State::zeros(n),
             pk: State::zeros(n),
@@ -102,58 +120,76 @@ impl StepLoads {
         impulse: Option<&State>,
         offs: Option<&Offsets>,
     ) {
-        let (h, th) = (sc.h, sc.th);
-        for i in 0..q.len() {
-            self.q_th[i] = q[i] + w.u_th[i] * (th * h);
+        let (h, c) = (sc.h, sc.th * sc.h);
+        let m = self.m;
+        // plain slices of equal lengths: the loops vectorise (a step adds a few operations per
+        // coordinate)
+        let (q, u) = (q.as_slice(), w.u_th.as_slice());
+        let q_th = self.q_th.as_mut_slice();
+        let n = q_th.len().min(q.len()).min(u.len());
+        let (q_th, q, u) = (&mut q_th[..n], &q[..n], &u[..n]);
+        for i in 0..n {
+            q_th[i] += q[i] + u[i] * c;
         }
-        sc.stiffness_into(&self.q_th, &mut self.kq, &mut self.scratch);
-        let moving = match (offs, &sc.dense) {
-            (Some(o), Some(d)) => {
-                d.support_parts(th, o, (&mut self.pk, &mut self.pc));
-                true
+        let (bear, rest) = self.sums.split_at_mut(m);
+        let (dash, rest) = rest.split_at_mut(m);
+        let (cables, rest) = rest.split_at_mut(m);
+        let (keys, contact) = rest.split_at_mut(m);
+        let cv = &w.cv.as_slice()[..m];
+        for i in 0..m {
+            dash[i] -= cv[i];
+        }
+        if let (Some(o), Some(d)) = (offs, &sc.dense) {
+            d.support_parts(sc.th, o, (&mut self.pk, &mut self.pc));
+            for i in 0..m {
+                bear[i] += self.pk[i];
+                dash[i] += self.pc[i];
             }
-            _ => false,
-        };
-        for j in 0..self.segments {
-            for (d, i) in self.dofs.range(j).enumerate() {
-                let mut f = [0.0; 5];
-                f[0] = -self.kq[i];
-                f[1] = -w.cv[i];
-                if moving {
-                    f[0] += self.pk[i];
-                    f[1] += self.pc[i];
-                }
-                if let Some(el) = el {
-                    let (b, cables, keys) = el.parts(i);
-                    f[0] += b;
-                    f[2] = cables;
-                    f[SHEAR_KEYS] = keys;
-                }
-                if let Some(p) = impulse {
-                    f[4] = p[i] / h;
-                }
-                for (kind, fk) in f.iter().enumerate() {
-                    self.sum[j * KINDS.len() + kind][d] += fk;
-                }
+        }
+        if let Some(el) = el {
+            for i in 0..m {
+                let (b, c, k) = el.parts(i);
+                bear[i] += b;
+                cables[i] += c;
+                keys[i] += k;
+            }
+        }
+        if let Some(p) = impulse {
+            let p = &p.as_slice()[..m];
+            for i in 0..m {
+                contact[i] += p[i] / h;
             }
         }
         self.steps += 1;
     }
 
-    /// The mean force of `kind` on segment `j` over the steps summed (zero before any step).
-    fn mean(&self, j: usize, kind: usize) -> [Real; 3] {
-        let s = self.sum[j * KINDS.len() + kind];
+    /// At a kept row: the means of the steps summed since the previous one (zero before any
+    /// step), then the sums cleared.
+    pub fn close(&mut self, sc: &Scheme) {
         if self.steps == 0 {
-            return [0.0; 3];
+            self.means.fill([0.0; 3]);
+            return;
         }
-        let n = self.steps as Real;
-        [s[0] / n, s[1] / n, s[2] / n]
+        sc.stiffness_into(&self.q_th, &mut self.kq, &mut self.scratch);
+        let (n, m) = (self.steps as Real, self.m);
+        let kq = &self.kq.as_slice()[..m];
+        for (kind, sums) in self.sums.chunks_exact(m.max(1)).enumerate() {
+            for (i, &(j, d)) in self.owner.iter().enumerate() {
+                let mut f = sums[i];
+                if kind == BEARINGS {
+                    f -= kq[i];
+                }
+                self.means[j * KINDS.len() + kind][d] = f / n;
+            }
+        }
+        self.q_th.fill(0.0);
+        self.sums.fill(0.0);
+        self.steps = 0;
     }
 
-    /// Clears the sums (after a kept row).
-    pub fn clear(&mut self) {
-        self.sum.fill([0.0; 3]);
-        self.steps = 0;
+    /// The mean force of `kind` on segment `j` at the last kept row.
+    fn mean(&self, j: usize, kind: usize) -> [Real; 3] {
+        self.means[j * KINDS.len() + kind]
     }
 }
 
@@ -195,7 +231,7 @@ impl Observer for SegmentForces {
     fn observe(&mut self, s: &Snapshot<'_>) {
         let v = &mut self.table.values;
         v.push(s.t);
-        for j in 0..s.loads.segments {
+        for j in 0..s.loads.means.len() / KINDS.len() {
             for &k in &self.kinds {
                 v.extend(s.loads.mean(j, k));
             }
