@@ -30,7 +30,8 @@ pub struct ReportInput<'a> {
     /// The trajectories JSON of a bridge run: the page then shows the plan animation
     /// ([`crate::sim_anim`]).
     pub animation: Option<&'a str>,
-    /// The run's tables (`bearings`, `restrainers`, `joint_slip`): their peaks are shown.
+    /// The run's tables (`bearings`, `restrainers`, `joint_slip`, `segment_forces`, …): their
+    /// peaks are shown.
     pub tables: &'a [Table],
     /// The code-check section of a bridge with `[code_check]` ([`crate::sim_report_check`]).
     pub code_check: Option<crate::sim_report_check::CodeCheckSection>,

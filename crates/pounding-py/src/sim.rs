@@ -155,8 +155,8 @@ impl SimRun {
             crate::columns::float_table(py, self.run.setup.history(&self.run.sol).table())?;
         Ok((names, a))
     }
-    /// The observers' tables (`bearings`, `restrainers`, `joint_slip`, as the CLI's
-    /// `<name>.csv`): a list of `(name, column headers, float64 array (rows, columns))`, the
+    /// The observers' tables (`bearings`, `restrainers`, `joint_slip`, `segment_forces`, …, as
+    /// the CLI's `<name>.csv`): a list of `(name, column headers, float64 array (rows, columns))`, the
     /// values handed over as they are (no text in between).
     #[allow(clippy::type_complexity)]
     fn tables<'py>(

@@ -165,15 +165,15 @@ def test_history_arrays_are_read_only():
 
 
 def test_tables_equal_the_cli_files_and_survive_pickling(cli, root, tmp_path):
-    """bearings.csv, restrainers.csv and joint_slip.csv of a bridge with restrainers and
-    yielding bearings: the same numbers in Python (handed over without text) as in the CLI's
-    files; a pickled copy keeps them."""
+    """bearings.csv, restrainers.csv, joint_slip.csv and segment_forces.csv of a bridge with
+    restrainers and yielding bearings: the same numbers in Python (handed over without text) as
+    in the CLI's files; a pickled copy keeps them."""
     import pickle
 
     path = root / "examples" / "viaduct-1d.toml"
     cli("simulate", path, "--out", tmp_path / "v", "--duration", "6")
     r = pounding.simulate(str(path), duration=6.0)
-    assert set(r.tables) == {"bearings", "restrainers", "joint_slip"}
+    assert set(r.tables) == {"bearings", "restrainers", "joint_slip", "segment_forces"}
     for name, cols in r.tables.items():
         lines = (tmp_path / "v" / f"{name}.csv").read_text().splitlines()
         assert list(cols) == lines[0].split(",")

@@ -197,8 +197,9 @@ fn bad_bridges_name_the_key_and_line_and_write_nothing() {
             "eps_n = 0.6",
             "eps_n = 0.6\nrestrainer_k = 5e7\nrestrainer_offsets = [-2.0, 6.0]",
             &[
-                "joint[0].restrainer_offsets",
+                "invalid bridge.restrainer_offsets = 6 at joint[0]",
                 "beside the joint",
+                "`bridge.restrainer_offsets` (",
                 "bridge.toml:8",
             ],
         ),
@@ -206,7 +207,7 @@ fn bad_bridges_name_the_key_and_line_and_write_nothing() {
             "eps_n = 0.6",
             "eps_n = 0.6\nrestrainer_k = 5e7\nrestrainer_depth = 31.0",
             &[
-                "joint[0].restrainer_depth",
+                "invalid bridge.restrainer_depth = 31 at joint[0]",
                 "outside segment",
                 "bridge.toml:8",
             ],

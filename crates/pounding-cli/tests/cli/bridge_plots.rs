@@ -7,7 +7,7 @@ use std::path::Path;
 
 const CURVED_5: &str = include_str!("../../../../examples/viaduct-curved-5.toml");
 
-const BRIDGE_FILES: [&str; 14] = [
+const BRIDGE_FILES: [&str; 15] = [
     "bearings.csv",
     "displacements.png",
     "energy.png",
@@ -19,6 +19,7 @@ const BRIDGE_FILES: [&str; 14] = [
     "plan.png",
     "report.html",
     "restrainers.csv",
+    "segment_forces.csv",
     "summary.json",
     "timing.json",
     "trajectories.json",

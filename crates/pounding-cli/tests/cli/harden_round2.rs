@@ -106,7 +106,7 @@ fn simulate_refuses_a_history_too_large_for_memory() {
         "`[time] history_every` (mem.toml:5)",
         "`[time] duration` (mem.toml:4)",
         "`[time] dt`",
-        "history_every >= 3",
+        "history_every >= 4",
     ] {
         assert!(err.contains(want), "{want}: {err}");
     }

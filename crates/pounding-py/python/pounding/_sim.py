@@ -93,7 +93,11 @@ class SimulationResult:
         restrainer's elongation and tension), ``"joint_slip"`` (each joint's slip), and for a
         bridge that has them ``"piers"`` (each cap's displacement and its column's force),
         ``"backwalls"`` (each backwall's displacement, backfill and pile forces), ``"shear_keys"``
-        (each abutment's deck-end transverse displacement and key force); name →
+        (each abutment's deck-end transverse displacement and key force), and last
+        ``"segment_forces"`` (every force on each segment by member kind — bearings, dashpots,
+        restrainers, shear keys, contact — ``fx``, ``fy`` [N], ``mz`` [N m] about its centroid:
+        the mean over the steps since the previous row, as the integrator applies it; their sum
+        is the segment's mass times its absolute acceleration); name →
         column name → read-only float64 array of shape ``(steps stored,)``. The values come
         from the solver as they are (no text in between)."""
         if self._tables is None:

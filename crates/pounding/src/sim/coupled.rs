@@ -174,6 +174,31 @@ impl Dense {
     pub fn ky_mul(&self, v: &State, out: &mut State) {
         self.ky_rows.mul_into(v, out);
     }
+
+    /// `out = K v = (K − K_y) v + K_y v` (`scratch` holds `K_y v`).
+    pub fn k_mul(&self, v: &State, out: &mut State, scratch: &mut State) {
+        self.k_elastic_rows.mul_into(v, out);
+        self.ky_rows.mul_into(v, scratch);
+        *out += &*scratch;
+    }
+
+    /// The supports' load over a step split into its stiffness and damping parts,
+    /// `(P_K d̄, P_C v̄)` at the step's θ-point, into `(fk, fc)` (zero without support motions).
+    pub fn support_parts(
+        &self,
+        th: Real,
+        o: &crate::sim::excitation::Offsets,
+        (fk, fc): (&mut State, &mut State),
+    ) {
+        let Some((pk, pc)) = &self.sys.support else {
+            fk.fill(0.0);
+            fc.fill(0.0);
+            return;
+        };
+        let (d, v) = (mean(&o.d, &o.d1, th), mean(&o.v, &o.v1, th));
+        fk.gemv(1.0, pk, &d, 0.0);
+        fc.gemv(1.0, pc, &v, 0.0);
+    }
 }
 
 /// `(d_x, d_y)` per support, flattened.

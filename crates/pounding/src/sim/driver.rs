@@ -103,6 +103,10 @@ pub(crate) struct StepOutput {
     pub u: State,
     /// Largest contact deformation `δ` seen in the step (`−∞` if the law has none).
     pub penetration: Real,
+    /// The generalised contact impulse of the step on every coordinate (`None`: none): the
+    /// rigid sites' `W P`, the compliance sites' `h ((1−θ) R_k + θ R_{k+1})`. Only reported
+    /// ([`super::segment_forces`]); `u` already holds its effect.
+    pub impulse: Option<State>,
 }
 
 /// The impacts found so far (records and the 1-based count of impacts).
@@ -436,6 +440,7 @@ pub(crate) fn run<S: Stepper>(
         frame.ground.clone_from(&o.d);
     }
     let mut obs = Observed::default();
+    let mut loads = super::segment_forces::StepLoads::new(bridge);
     let clock = TimeGrid::new(h);
     for k in 0..=sc.n_steps {
         if k % super::PROGRESS_EVERY == 0 {
@@ -466,6 +471,7 @@ pub(crate) fn run<S: Stepper>(
         let mut energy = ledger.check(tk, vk, stepper.contact_energy(), w_el);
         energy.elements = w_el.unwrap_or(0.0);
         if k % settings.history_stride == 0 || k == sc.n_steps {
+            loads.close(sc);
             let nj = bridge.joints.len();
             trace.record(t, &q, &frame, &u, &obs, energy, forces.map(|f| &f[..nj]));
             let snapshot = Snapshot {
@@ -475,6 +481,7 @@ pub(crate) fn run<S: Stepper>(
                 elements: &el,
                 slip: &obs.slip,
                 q: q.as_slice(),
+                loads: &loads,
             };
             for o in &mut observers {
                 o.observe(&snapshot);
@@ -541,6 +548,8 @@ pub(crate) fn run<S: Stepper>(
             let kq = (&work.kq_th, yield_body.as_slice());
             el.book(h, &work.u_mid, kq, &mut el_force, nb);
         }
+        let el_step = has_elements.then_some(&el_force);
+        loads.add_step(sc, &q, &work, el_step, out.impulse.as_ref(), offs.as_ref());
         for (qi, vi) in q.as_mut_slice().iter_mut().zip(work.u_th.as_slice()) {
             *qi += vi * h;
         }

@@ -69,6 +69,15 @@ pub(crate) struct StepForce {
 }
 
 impl StepForce {
+    /// Coordinate `i` of the step's force `R̄` split by member: `(bearings, restrainers, shear
+    /// keys)` (the yielding bearings' held part `R̄_b`; the cables' `R̄ − R̄_b − R̄_f − R̄_k`, the
+    /// backfills' `R̄_f` acting on walls only).
+    #[inline]
+    pub fn parts(&self, i: usize) -> (Real, Real, Real) {
+        let cables = self.r[i] - self.rb[i] - self.rf[i] - self.rk[i];
+        (self.rb[i], cables, self.rk[i])
+    }
+
     /// Zeroed vectors for a bridge of the segments of `dofs`.
     pub fn new(dofs: &Dofs) -> Self {
         let n_bodies = dofs.n_bodies();

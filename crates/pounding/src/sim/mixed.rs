@@ -129,9 +129,14 @@ impl Stepper for MixedStepper {
             log,
         );
         self.set_forces();
+        let impulse = match (out_c.impulse, out_r.impulse) {
+            (Some(c), Some(r)) => Some(c + r),
+            (c, r) => c.or(r),
+        };
         StepOutput {
             u: out_r.u,
             penetration: out_c.penetration,
+            impulse,
         }
     }
 

@@ -87,6 +87,7 @@ pub mod projection;
 mod rigid;
 pub mod scenario;
 mod scheme;
+mod segment_forces;
 mod settings;
 mod solution;
 mod support;
@@ -173,6 +174,21 @@ impl SimError {
             Self::InvalidParameter { path, .. } | Self::InvalidArgument { path, .. } => Some(path),
             _ => None,
         }
+    }
+}
+
+/// The reason an input check gives for a value that is not finite (NaN, ±inf): the check's own
+/// `reason` (`must be >= 0`, `must lie in [0, 1]`) made to say so first (`must be finite and >=
+/// 0`); a reason that already says it is kept.
+pub(crate) fn finite_reason(reason: &str) -> String {
+    if reason.contains("finite") {
+        reason.to_string()
+    } else if let Some(rest) = reason.strip_prefix("must be ") {
+        format!("must be finite and {rest}")
+    } else if let Some(rest) = reason.strip_prefix("must ") {
+        format!("must be finite and {rest}")
+    } else {
+        format!("must be finite ({reason})")
     }
 }
 

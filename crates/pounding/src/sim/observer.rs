@@ -19,7 +19,12 @@
 //! - [`JointSlip`] (`joint_slip.csv`): each joint's tangential slip, as the two-deck
 //!   `history.csv` reports it;
 //! - [`PierColumns`] (`piers.csv`, only for a bridge with piers): each pier's cap displacement
-//!   and its column's force on the cap (named `pier<k>` by the joint `k` it carries).
+//!   and its column's force on the cap (named `pier<k>` by the joint `k` it carries);
+//! - [`Backwalls`] (`backwalls.csv`) and [`ShearKeys`] (`shear_keys.csv`), for a bridge with
+//!   them;
+//! - [`super::segment_forces::SegmentForces`] (`segment_forces.csv`, last): every force on each
+//!   segment by member kind, as the integrator applies it over the steps (the load path; its
+//!   sum is the segment's mass times its absolute acceleration).
 
 use super::dofs::Dofs;
 use super::elements::Elements;
@@ -41,6 +46,8 @@ pub(crate) struct Snapshot<'a> {
     pub slip: &'a [Real],
     /// The state `q`.
     pub q: &'a [Real],
+    /// The forces on the segments over the steps since the last kept row.
+    pub loads: &'a super::segment_forces::StepLoads,
 }
 
 /// Records one table over a run.
@@ -69,6 +76,7 @@ pub(crate) fn standard(bridge: &Bridge) -> Vec<Box<dyn Observer>> {
     if !bridge.elements.keys.is_empty() {
         out.push(Box::new(ShearKeys::new(bridge)));
     }
+    out.push(Box::new(super::segment_forces::SegmentForces::new(bridge)));
     out
 }
 

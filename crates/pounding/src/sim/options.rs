@@ -141,25 +141,27 @@ pub fn history_rows(n_steps: usize, history_stride: usize) -> u64 {
 /// two end forces per joint, two abutment gaps, the energies) and the observers' tables
 /// (`bearings`: four values per bearing, counted for [`ESTIMATED_BEARINGS`] per segment;
 /// `restrainers`: two per restrainer, counted for two per joint; `joint_slip`: one per joint;
-/// a time each; the substructures' coordinates and tables — `piers`, `backwalls`,
+/// `segment_forces`: three per member kind and segment, shear keys included; a time each; the substructures' coordinates and tables — `piers`, `backwalls`,
 /// `shear_keys` — counted as if every joint had a pier and both ends a backwall and keys),
 /// counted twice (a growing vector may hold twice its length), and the text of
 /// the largest file, built and written one at a time (`history.csv`: at most `11 + 6N + 3J`
-/// columns, at least the two-deck file's 31; `bearings.csv`: `1 + 4 b N`), 25 bytes a column.
+/// columns, at least the two-deck file's 31; `bearings.csv`: `1 + 4 b N`; `segment_forces.csv`:
+/// `1 + 15 N`), 25 bytes a column.
 pub fn history_row_bytes(size: impl Into<RunSize>) -> u64 {
     let size = size.into();
     let n = size.segments.max(1) as u64;
     let j = n - 1;
     let b = size.bearings as u64;
     let real = std::mem::size_of::<Real>() as u64;
-    let tables = 3 + 4 * b + 5 * j;
+    let forces = super::segment_forces::values_per_row(size.segments.max(1), true) as u64;
+    let tables = 4 + 4 * b + 5 * j + forces;
     // substructures, counted as if every joint had a pier and both ends a backwall and keys:
     // a cap's q and u (4) and `piers` (4) per joint; a wall's q and u (2) and `backwalls` (3)
     // and a key pair's `shear_keys` (2) per end; the three tables' times
     let substructure = 8 * j + 2 * (2 + 3 + 2) + 3;
     let trace = real * (1 + 6 * n + 9 * j + 2 + tables + substructure)
         + std::mem::size_of::<super::Energy>() as u64;
-    let columns = (11 + 6 * n + 3 * j).max(31).max(1 + 4 * b);
+    let columns = (11 + 6 * n + 3 * j).max(31).max(1 + 4 * b).max(1 + forces);
     (2 * trace).saturating_add(columns.saturating_mul(25))
 }
 

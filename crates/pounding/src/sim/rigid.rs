@@ -435,7 +435,8 @@ impl RigidStepper {
 impl RigidStepper {
     /// The impacts of a step with active contacts: the impact LCP, its impulses added to
     /// `u_new` (`u_free` on entry), the law check, the contact dissipation and the impact
-    /// records. Out of the time loop's common path (most steps have no active contact).
+    /// records; returns the generalised impulse `W P` (the segments' load path). Out of the time
+    /// loop's common path (most steps have no active contact).
     #[inline(never)]
     fn resolve(
         &mut self,
@@ -443,7 +444,7 @@ impl RigidStepper {
         active: &[ActiveContact],
         u_new: &mut State,
         log: &mut ImpactLog,
-    ) {
+    ) -> State {
         self.stats.lcp_solves += 1;
         let asm = Self::assemble(inp, active);
         let nc = 2 * active.len();
@@ -462,6 +463,7 @@ impl RigidStepper {
             self.check(&asm, active, inp.u_free, &p, &gam_post);
         }
         self.account(&asm, active, &p, &gam_post, inp.t_next, log);
+        Self::generalised(&asm, &p)
     }
 
     /// The impulses `P = (P_N, P_T)` of the LCP solution `z`, added to `u` as `Ŵ⁻¹ W P`.
@@ -472,6 +474,15 @@ impl RigidStepper {
             *u += &asm.wiw[i] * p[i];
         }
         p
+    }
+
+    /// The generalised impulse `W P` of the impulses `p` on every coordinate.
+    fn generalised(asm: &Assembled, p: &[Real]) -> State {
+        let mut out = State::zeros(asm.wcols.first().map_or(0, |w| w.len()));
+        for (w, pi) in asm.wcols.iter().zip(p) {
+            out.axpy(*pi, w, 1.0);
+        }
+        out
     }
 
     /// `u_{k+1}` of the step from `inp`, committing nothing (no impact records, energy or
@@ -513,12 +524,14 @@ impl Stepper for RigidStepper {
             _ => inp.u_free.clone(),
         };
         let active = self.active_set(inp);
+        let mut impulse = None;
         if !active.is_empty() {
-            self.resolve(inp, &active, &mut u_new, log);
+            impulse = Some(self.resolve(inp, &active, &mut u_new, log));
         }
         StepOutput {
             u: u_new,
             penetration: Real::NEG_INFINITY,
+            impulse,
         }
     }
 

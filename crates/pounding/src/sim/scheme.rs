@@ -261,6 +261,18 @@ impl Scheme {
         }
     }
 
+    /// `out = K v`, the whole stiffness (every linear link, the yielding members at their
+    /// initial stiffness); `scratch` of the same length (the dense sum of two parts).
+    pub fn stiffness_into(&self, v: &State, out: &mut State, scratch: &mut State) {
+        match &self.dense {
+            Some(d) => d.k_mul(v, out, scratch),
+            None => {
+                let k_blocks = self.bodies.iter().map(|b| &b.stiffness);
+                Self::apply_blocks_into(&self.dofs, k_blocks, v, out)
+            }
+        }
+    }
+
     /// `out = K_y v`: the linear part of the yielding elements (block diagonal: each yielding
     /// segment's `K`, the energies leave those segments out).
     pub fn yield_stiffness_into(&self, v: &State, out: &mut State) {

@@ -257,7 +257,8 @@ pub struct BridgeSolution {
     pub closure_steps: usize,
     /// Time-step adequacy of the compliance law.
     pub time_step_advice: Option<TimeStepAdvice>,
-    /// The observers' tables at the history steps — `bearings`, `restrainers`, `joint_slip` —,
+    /// The observers' tables at the history steps — `bearings`, `restrainers`, `joint_slip`, the
+    /// substructures', `segment_forces` —,
     /// recorded or derived from the histories when asked for ([`Self::tables`]).
     pub table_sources: Vec<super::table::TableSource>,
 }
@@ -304,7 +305,8 @@ impl BridgeSolution {
 
     /// The observers' tables ([`super::table::Table`]; written as `<name>.csv`), in order:
     /// `bearings` (derived here from `q` and the recorded plastic displacements of yielding
-    /// bearings), `restrainers`, `joint_slip`.
+    /// bearings), `restrainers`, `joint_slip`, with piers, backwalls or shear keys `piers`,
+    /// `backwalls`, `shear_keys`, and last `segment_forces` (every force on each segment).
     pub fn tables(&self) -> Vec<super::table::Table> {
         self.table_sources
             .iter()

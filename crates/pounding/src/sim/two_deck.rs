@@ -298,8 +298,10 @@ impl SimModel {
         let chk = |name: ParamPath, v: Real, ok: bool, reason: &str| {
             if ok && v.is_finite() {
                 Ok(())
-            } else {
+            } else if v.is_finite() {
                 Err(SimError::invalid(name, v, reason))
+            } else {
+                Err(SimError::invalid(name, v, &super::finite_reason(reason)))
             }
         };
         chk(

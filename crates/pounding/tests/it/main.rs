@@ -71,6 +71,8 @@ mod sim_piers;
 mod sim_progress;
 mod sim_projection;
 mod sim_scenario;
+mod sim_scenario_messages;
+mod sim_segment_forces;
 mod sim_shapes;
 mod sim_support_motion;
 mod sim_verdict;

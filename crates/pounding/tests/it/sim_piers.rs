@@ -186,7 +186,11 @@ fn bad_piers_are_refused_with_key_and_line() {
         ),
         ("k0 = 8.0e7", "pier[0].joint", "is required"),
         ("joint = 1\nk0 = -8.0e7", "pier[0].k0", "must be > 0"),
-        ("joint = 1\nk0 = nan", "pier[0].k0", "must be > 0"),
+        (
+            "joint = 1\nk0 = nan",
+            "pier[0].k0",
+            "must be finite and > 0",
+        ),
         (
             "joint = 1\nk0 = 8.0e7\nb = 0.1",
             "pier[0].b",

@@ -304,8 +304,10 @@ pub(super) fn check(
 ) -> Result<(), SimError> {
     if ok && v.is_finite() {
         Ok(())
-    } else {
+    } else if v.is_finite() {
         Err(SimError::invalid(name, v, reason))
+    } else {
+        Err(SimError::invalid(name, v, &super::finite_reason(reason)))
     }
 }
 

@@ -285,9 +285,11 @@ impl ComplianceStepper {
             *m = (a + b) * 0.5;
         }
         // no force at either end of the step (most steps): no contact work
+        let mut impulse = None;
         if !(r_new.iter().all(|r| *r == 0.0) && self.r_k.iter().all(|r| *r == 0.0)) {
             let rbar = &self.r_k * (1.0 - th) + &r_new * th;
             self.d_cont -= h * u_mid.dot(&rbar);
+            impulse = Some(rbar * h);
         }
         self.track_impacts(log, inp.t_next, inp.u, &un, &u_mid, &ev);
         self.u_mid = u_mid;
@@ -299,7 +301,11 @@ impl ComplianceStepper {
             .fold(Real::NEG_INFINITY, Real::max);
         self.ends = ev;
         self.set_forces();
-        StepOutput { u: un, penetration }
+        StepOutput {
+            u: un,
+            penetration,
+            impulse,
+        }
     }
 }
 

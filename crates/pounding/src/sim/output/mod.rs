@@ -72,6 +72,7 @@ pub const SIM_OUTPUTS: &[&str] = &[
     "piers.csv",
     "backwalls.csv",
     "shear_keys.csv",
+    "segment_forces.csv",
     "displacements.png",
     "layout.png",
     "rotations.png",

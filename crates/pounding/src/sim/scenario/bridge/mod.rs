@@ -253,14 +253,18 @@ impl Val<'_> {
             }
         };
         if x.is_finite() && ok(x) {
-            Ok(x)
-        } else {
-            Err(self.err(
-                key.clone(),
-                line,
-                format!("invalid {key} = {}: {reason}", float_token(x)),
-            ))
+            return Ok(x);
         }
+        let reason = if x.is_finite() {
+            reason.to_string()
+        } else {
+            crate::sim::finite_reason(reason)
+        };
+        Err(self.err(
+            key.clone(),
+            line,
+            format!("invalid {key} = {}: {reason}", float_token(x)),
+        ))
     }
 }
 

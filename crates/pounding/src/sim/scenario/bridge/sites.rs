@@ -322,17 +322,23 @@ pub(super) fn model_error(v: &Val, raw: &BridgeRaw, e: crate::sim::SimError) -> 
         }
         BridgeTable::Joint(k) => {
             let (j, b) = (raw.joint.get(k).map(|j| j.get_ref()), &raw.bridge);
-            let own = match key {
-                "restrainer_offsets" => j
-                    .and_then(|j| j.restrainer_offsets.as_ref())
-                    .or(b.restrainer_offsets.as_ref())
-                    .map(|x| v.line(x)),
-                "restrainer_depth" => j
-                    .and_then(|j| j.restrainer_depth.as_ref())
-                    .or(b.restrainer_depth.as_ref())
-                    .map(|x| v.line(x)),
-                _ => None,
+            let (own, default) = match key {
+                "restrainer_offsets" => (
+                    j.and_then(|j| j.restrainer_offsets.as_ref())
+                        .map(|x| v.line(x)),
+                    b.restrainer_offsets.as_ref().map(|x| v.line(x)),
+                ),
+                "restrainer_depth" => (
+                    j.and_then(|j| j.restrainer_depth.as_ref())
+                        .map(|x| v.line(x)),
+                    b.restrainer_depth.as_ref().map(|x| v.line(x)),
+                ),
+                _ => (None, None),
             };
+            // a value the joint inherits from `[bridge]`: named as the user wrote it
+            if let (None, Some(line)) = (own, default) {
+                return inherited_error(v, &e, &format!("bridge.{key}"), k, line);
+            }
             own.or(raw.joint.get(k).map(|t| v.line(t)))
                 .or_else(|| raw.segment.get(k + 1).map(|t| v.line(t)))
         }
@@ -341,6 +347,29 @@ pub(super) fn model_error(v: &Val, raw: &BridgeRaw, e: crate::sim::SimError) -> 
         BridgeTable::Bridge | BridgeTable::Abutment(_) => None,
     };
     v.err(path.to_string(), line, e.to_string())
+}
+
+/// A model error about joint `k`'s parameter whose value is the `[bridge]` default `name`
+/// (written at `line`): the message names that key, and the joint it failed at.
+fn inherited_error(
+    v: &Val,
+    e: &crate::sim::SimError,
+    name: &str,
+    k: usize,
+    line: usize,
+) -> ScenarioError {
+    use crate::sim::SimError;
+    let message = match e {
+        SimError::InvalidParameter { value, reason, .. } => format!(
+            "invalid {name} = {} at joint[{k}]: {reason}",
+            float_token(*value)
+        ),
+        SimError::InvalidArgument { reason, .. } => {
+            format!("invalid {name} at joint[{k}]: {reason}")
+        }
+        other => other.to_string(),
+    };
+    v.err(name.to_string(), Some(line), message)
 }
 
 /// The restrainer of joint `k` from its keys or the `[bridge]` defaults: present when
