@@ -264,13 +264,19 @@ impl Scheme {
     /// `out = K v`, the whole stiffness (every linear link, the yielding members at their
     /// initial stiffness); `scratch` of the same length (the dense sum of two parts).
     pub fn stiffness_into(&self, v: &State, out: &mut State, scratch: &mut State) {
-        match &self.dense {
-            Some(d) => d.k_mul(v, out, scratch),
-            None => {
-                let k_blocks = self.bodies.iter().map(|b| &b.stiffness);
-                Self::apply_blocks_into(&self.dofs, k_blocks, v, out)
+        let Some(d) = &self.dense else {
+            // block by block on plain slices (once per kept row of `segment_forces`)
+            let (v, out) = (v.as_slice(), out.as_mut_slice());
+            for (j, b) in self.bodies.iter().enumerate() {
+                let r = self.dofs.range(j);
+                let (x, o) = (&v[r.clone()], &mut out[r]);
+                for (a, oa) in o.iter_mut().enumerate() {
+                    *oa = (0..x.len()).map(|c| b.stiffness[(a, c)] * x[c]).sum();
+                }
             }
-        }
+            return;
+        };
+        d.k_mul(v, out, scratch)
     }
 
     /// `out = K_y v`: the linear part of the yielding elements (block diagonal: each yielding

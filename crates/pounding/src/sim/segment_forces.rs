@@ -182,7 +182,7 @@ impl StepLoads {
                 self.means[j * KINDS.len() + kind][d] = f / n;
             }
         }
-        self.q_th.fill(0.0);
+        self.q_th.as_mut_slice().fill(0.0);
         self.sums.fill(0.0);
         self.steps = 0;
     }
