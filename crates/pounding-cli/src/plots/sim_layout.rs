@@ -1,24 +1,25 @@
-//! `layout.png`: plan view of the two decks, bearings, joint, abutments and axes (reference pose).
+//! `layout.png`: plan view of the two decks, bearings, joint, abutments and axes (reference pose),
+//! the two-deck form's own figure ([`super::two_deck`]); and the plan chart every plan view
+//! draws on ([`plan_chart`]).
 
-use crate::cmd_simulate::sim_plots::TwoDeckRun;
 use crate::plot_style::{BLUE, DrawResult, FAMILY, GREEN, RED, e, series_legend};
 use plotters::coord::Shift;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use pounding::math::Real;
+use pounding::sim::SimModel;
 
 const GREY: RGBColor = RGBColor(120, 120, 120);
 
 /// Plan view of the reference pose (spec §4): deck outlines, bearings, joint, axes.
 pub(crate) fn layout<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
-    problem: &TwoDeckRun,
+    m: &SimModel,
 ) -> DrawResult {
-    let m = &problem.model;
     let g = m.gap;
     let bodies = m.deck_bodies();
-    let (o1, o2) = (deck_outline(problem, 1), deck_outline(problem, 2));
-    let abut_polys = abutment_polygons(problem);
+    let (o1, o2) = (deck_outline(m, 1), deck_outline(m, 2));
+    let abut_polys = abutment_polygons(m);
     let (mut chart, (cx, cy, half_x, half_y)) = plan_chart(
         root,
         o1.iter().chain(&o2).chain(abut_polys.iter().flatten()),
@@ -137,8 +138,7 @@ pub(crate) type PlanChart<'a, DB> =
 
 /// Outline of deck `j` (1 or 2) in the plan view: the curved deck's arcs, or the four end-face
 /// corners of a straight/skew deck (closed polygon).
-fn deck_outline(problem: &TwoDeckRun, j: usize) -> Vec<(Real, Real)> {
-    let m = &problem.model;
+fn deck_outline(m: &SimModel, j: usize) -> Vec<(Real, Real)> {
     let g = m.gap;
     let bodies = m.deck_bodies();
     let shape = m.shapes.map(|s| s[j - 1]);
@@ -180,8 +180,7 @@ fn deck_outline(problem: &TwoDeckRun, j: usize) -> Vec<(Real, Real)> {
 }
 
 /// The abutment faces: the far-face line moved by the abutment gap, drawn 1.6 face lengths long.
-fn abutment_polygons(problem: &TwoDeckRun) -> Vec<Vec<(Real, Real)>> {
-    let m = &problem.model;
+fn abutment_polygons(m: &SimModel) -> Vec<Vec<(Real, Real)>> {
     let bodies = m.deck_bodies();
     m.abutments
         .iter()
