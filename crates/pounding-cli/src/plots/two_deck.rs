@@ -30,13 +30,15 @@ use crate::plots::sim_panels::{
     AbutmentNames, Hist, abutment_gap_panel, end_gap_panel, ground_panel, impulse_panels,
     rotation_panel, segment_xy_panel,
 };
+use plotters::prelude::SeriesLabelPosition;
 use pounding::ground_motion::GroundMotion;
 use pounding::sim::SimModel;
 use pounding::sim::bridge::{BridgeModel, BridgeSolution};
 use std::path::Path;
 
-/// What the two-deck figures read of a run's input: the model as its file gave it (for the
-/// layout and the names), the two-segment bridge it runs as, and the ground motion.
+/// What the two-deck figures read of a run's input: the two-segment bridge the model runs as
+/// (every geometry drawn or named), the model as its file gave it (only whether it gave the deck
+/// shapes, for the layout's legend place), and the ground motion.
 #[derive(Clone, Copy)]
 pub struct TwoDeckRun<'a> {
     /// The two-deck model's parameters.
@@ -67,8 +69,15 @@ pub fn write_all(out: &Path, run: &TwoDeckRun, sol: &BridgeSolution) -> DrawResu
         }
         Ok(())
     })?;
+    // the legend where the decks leave room: upper left beside the default curved pair, upper
+    // right with the shapes given
+    let legend = if run.model.shapes.is_some() {
+        SeriesLabelPosition::UpperRight
+    } else {
+        SeriesLabelPosition::UpperLeft
+    };
     save_white_png(out, "layout.png", (1000, 900), |root| {
-        layout(root, run.model)
+        layout(root, run.bridge, legend)
     })?;
     save_white_png(out, "rotations.png", (1400, 500), |root| {
         let title = "Plan rotation of each deck about its centroid (counter-clockwise +)";
@@ -81,7 +90,7 @@ pub fn write_all(out: &Path, run: &TwoDeckRun, sol: &BridgeSolution) -> DrawResu
             sol.summary.impacts
         );
         // the joint face's half length: its two ends sit at x = ±w
-        let w = run.model.deck_bodies()[0].joint_face(1).half;
+        let w = run.bridge.layout()[0].end.half;
         let ends = [
             format!("end x = +{w} m (deck1-inner / deck2-outer)"),
             format!("end x = −{w} m (deck1-outer / deck2-inner)"),
