@@ -440,7 +440,7 @@ pub(crate) fn run<S: Stepper>(
         frame.ground.clone_from(&o.d);
     }
     let mut obs = Observed::default();
-    let mut loads = super::segment_forces::StepLoads::new(bridge);
+    let mut loads = super::step_loads::StepLoads::new(bridge);
     let clock = TimeGrid::new(h);
     for k in 0..=sc.n_steps {
         if k % super::PROGRESS_EVERY == 0 {

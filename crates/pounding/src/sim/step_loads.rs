@@ -1,5 +1,6 @@
 //! The load path of each deck segment: every force acting on it, by member, as the integrator
-//! applies it (`segment_forces.csv`).
+//! applies it, summed over the steps between kept rows ([`StepLoads`], which the driver feeds;
+//! the observer `SegmentForces` writes `segment_forces.csv` from it).
 //!
 //! # What a row holds
 //! One step `k → k+1` of the θ-method (θ = ½ by default) is the momentum balance of every
@@ -35,15 +36,13 @@
 use super::contact::State;
 use super::elements::StepForce;
 use super::excitation::Offsets;
-use super::observer::{Observer, Snapshot};
 use super::scheme::Scheme;
-use super::table::{Column, Table, TableSource};
 use super::view::Bridge;
 use crate::math::Real;
 
 /// The kinds of member a segment's forces come from, in column order (shear keys only when the
 /// bridge has some).
-const KINDS: [&str; 5] = [
+pub(crate) const KINDS: [&str; 5] = [
     "bearings",
     "dashpots",
     "restrainers",
@@ -53,7 +52,7 @@ const KINDS: [&str; 5] = [
 /// Indices into [`KINDS`] (the sums of [`StepLoads`] are laid out in that order).
 const BEARINGS: usize = 0;
 const DASHPOTS: usize = 1;
-const SHEAR_KEYS: usize = 3;
+pub(crate) const SHEAR_KEYS: usize = 3;
 
 /// The forces on each segment summed over the steps since the last kept row.
 ///
@@ -212,63 +211,12 @@ impl StepLoads {
     }
 
     /// The mean force of `kind` on segment `j` at the last kept row.
-    fn mean(&self, j: usize, kind: usize) -> [Real; 3] {
+    pub fn mean(&self, j: usize, kind: usize) -> [Real; 3] {
         self.means[j * KINDS.len() + kind]
     }
-}
 
-/// `segment_forces.csv`: per segment and member kind, the mean force `(F_x, F_y, M_z)` over the
-/// steps since the previous row (module doc).
-pub(crate) struct SegmentForces {
-    table: Table,
-    /// The kinds recorded (shear keys only in a bridge with some).
-    kinds: Vec<usize>,
-}
-
-impl SegmentForces {
-    /// The columns of the segments of `bridge`.
-    pub fn new(bridge: &Bridge) -> Self {
-        let kinds: Vec<usize> = (0..KINDS.len())
-            .filter(|&k| k != SHEAR_KEYS || !bridge.elements.keys.is_empty())
-            .collect();
-        let mut columns = Vec::new();
-        for i in 1..=bridge.bodies.len() {
-            for &k in &kinds {
-                let p = format!("segment{i}_{}", KINDS[k]);
-                columns.push(Column::new(format!("{p}_fx"), "N"));
-                columns.push(Column::new(format!("{p}_fy"), "N"));
-                columns.push(Column::new(format!("{p}_mz"), "Nm"));
-            }
-        }
-        SegmentForces {
-            table: Table::with_time("segment_forces", columns),
-            kinds,
-        }
+    /// The segments.
+    pub fn segments(&self) -> usize {
+        self.means.len() / KINDS.len()
     }
-}
-
-impl Observer for SegmentForces {
-    fn reserve(&mut self, rows: usize) {
-        self.table.reserve_rows(rows);
-    }
-
-    fn observe(&mut self, s: &Snapshot<'_>) {
-        let v = &mut self.table.values;
-        v.push(s.t);
-        for j in 0..s.loads.means.len() / KINDS.len() {
-            for &k in &self.kinds {
-                v.extend(s.loads.mean(j, k));
-            }
-        }
-    }
-
-    fn into_source(self: Box<Self>) -> TableSource {
-        TableSource::Recorded(self.table)
-    }
-}
-
-/// The values per kept row of [`SegmentForces`] for a bridge of `segments` segments (with shear
-/// keys or not): for the memory estimate.
-pub(crate) fn values_per_row(segments: usize, shear_keys: bool) -> usize {
-    segments * 3 * (KINDS.len() - usize::from(!shear_keys))
 }
