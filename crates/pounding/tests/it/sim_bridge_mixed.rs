@@ -107,3 +107,25 @@ fn stiffening_compliance_abutments_tend_to_the_all_rigid_run() {
         "relative differences to the rigid run: {errors:?}"
     );
 }
+
+/// The time-step advice of a bridge whose compliance sites differ is that of the site the step
+/// resolves worst, each with its own law and mass: soft Kelvin joints (1e9 N/m between
+/// 1.2e6/0.8e6 kg segments: `T_c` = π √(4.8e5 / 1e9) ≈ 69 ms) and stiff Kelvin abutments
+/// (1e13 N/m against the 1.0e6 and 0.8e6 kg end segments alone): the end abutment's
+/// `T_c = π √(0.8e6 / 1e13)` ≈ 0.89 ms, 8.9 steps of 1e-4 s, not adequate (it once took the
+/// first site's law at the joints' smallest mass pair: 688 steps, "adequate").
+#[test]
+fn the_time_step_advice_is_the_worst_compliance_site() {
+    let text = "[contact]\nlaw = \"kelvin\"\nk = 1e9\nrestitution = 0.6\n";
+    let stiff = abutments("law = \"kelvin\"\nk = 1e13");
+    let sol = run(&viaduct(&format!("{text}{stiff}"), 0.5));
+    let a = sol.time_step_advice.expect("compliance sites give advice");
+    let expected = std::f64::consts::PI * (0.8e6_f64 / 1e13).sqrt();
+    assert!(
+        (a.contact_duration - expected).abs() < 1e-12 * expected,
+        "T_c {} s, expected {expected} s (the end abutment's)",
+        a.contact_duration
+    );
+    assert!((a.steps_per_contact - expected / 1e-4).abs() < 1e-9);
+    assert!(!a.adequate, "{a:?}");
+}
