@@ -5,7 +5,7 @@
 //! by Lemke (fixed-size kernels; enumeration, then the frictionless LCP as fallbacks), the
 //! impulses applied `u_{k+1} = u_free + Ŵ⁻¹ W P`, the post-solve law check
 //! ([`crate::law_check::check_laws`]) and the contact dissipation `−½ (γ_k + γ_{k+1})·P`.
-//! More than [`solve::MAX_FIXED_CONTACTS`] active contacts (permanent contact at several joints) are
+//! More than [`MAX_FIXED_CONTACTS`] active contacts (permanent contact at several joints) are
 //! first given to the block Gauss–Seidel of [`crate::lcp::fc2d`], whose answer is verified
 //! before it is used; Lemke is the fallback.
 //!
@@ -23,6 +23,9 @@ use crate::analytic::ImpactLaw;
 use crate::lcp::LemkeSettings;
 use crate::math::Real;
 
+/// Most contacts solved with the size-specialised Lemke kernels (LCP size ≤ 18); larger
+/// active sets (several joints closing at once) use the dynamic kernel.
+const MAX_FIXED_CONTACTS: usize = 6;
 /// An active contact: what it is, its site (joint index or abutment side), its impact law and
 /// its `w_N`, `w_T`.
 struct ActiveContact {

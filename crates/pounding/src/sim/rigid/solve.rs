@@ -3,14 +3,10 @@
 //! frictionless LCP as the fallbacks.
 #![allow(clippy::needless_range_loop)]
 
-use super::{ActiveContact, Assembled, RigidStepper};
+use super::{ActiveContact, Assembled, MAX_FIXED_CONTACTS, RigidStepper};
 use crate::analytic::ImpactLaw;
 use crate::lcp::{self, LcpStatus, LemkeSettings};
 use crate::math::Real;
-
-/// Most contacts solved with the size-specialised Lemke kernels (LCP size ≤ 18); larger
-/// active sets (several joints closing at once) use the dynamic kernel.
-const MAX_FIXED_CONTACTS: usize = 6;
 
 /// Lemke on the `N × N` row-major `a` (fixed-size kernel).
 fn lemke_block<const N: usize>(

@@ -20,7 +20,7 @@ pub struct JointSummary {
     /// `max_t (largest end gap − g)` \[m\].
     pub peak_opening: Real,
     /// `max_t |slip|`: the relative tangential displacement of the two face midpoints along the
-    /// joint's reference tangent ([`BridgeSolution::slip`]) \[m\].
+    /// joint's reference tangent ([`super::BridgeSolution::slip`]) \[m\].
     pub peak_slip: Real,
     /// Either end at this joint exceeded its seat length.
     pub unseated: bool,
