@@ -481,7 +481,6 @@ pub(crate) fn run<S: Stepper>(
                 elements: &el,
                 slip: &obs.slip,
                 q: q.as_slice(),
-                u: u.as_slice(),
                 loads: &loads,
             };
             for o in &mut observers {

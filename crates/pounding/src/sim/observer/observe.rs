@@ -23,8 +23,6 @@ pub(crate) struct Snapshot<'a> {
     pub slip: &'a [Real],
     /// The state `q`.
     pub q: &'a [Real],
-    /// The velocities `u` (relative to the ground, rotations in rad/s; laid out as `q`).
-    pub u: &'a [Real],
     /// The forces on the segments over the steps since the last kept row.
     pub loads: &'a StepLoads,
 }
