@@ -12,7 +12,7 @@ use std::path::PathBuf;
 
 /// Straight, curved, straight (rigid law), a start abutment only, a restrainer across joint 1,
 /// an oblique incidence so that the segments also rotate.
-const BRIDGE: &str = r#"
+pub(crate) const BRIDGE: &str = r#"
 [bridge]
 damping = "dashpots"
 damping_ratio = 0.05

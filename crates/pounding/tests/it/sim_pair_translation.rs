@@ -224,37 +224,12 @@ fn two_deck_history_is_its_bridge_history_translated_column_by_column() {
     }
 }
 
-/// Straight, curved, straight; oblique incidence: both joints slide.
-const BRIDGE: &str = r#"
-[bridge]
-gap = 0.01
-[[segment]]
-shape = "straight"
-L = 30.0
-mass = 1.0e6
-period_s = 1.2
-[[segment]]
-shape = "curved"
-R = 150.0
-beta_deg = 12.0
-mass = 1.2e6
-period_s = 0.5
-[[segment]]
-shape = "straight"
-L = 30.0
-mass = 0.8e6
-period_s = 1.5
-[ground_motion]
-incidence_deg = 25.0
-[time]
-dt = 2e-3
-duration = 3.0
-"#;
-
 #[test]
 fn bridge_joint_slip_columns_peak_at_the_summary_peak_slip() {
     for every in [1, 4] {
-        let text = format!("{BRIDGE}history_every = {every}\n");
+        // straight, curved, straight; oblique incidence: both joints slide
+        let bridge = crate::sim_bridge_batch::BRIDGE;
+        let text = format!("{bridge}duration = 3.0\nhistory_every = {every}\n");
         let setup = Scenario::from_toml(&text, "b.toml")
             .unwrap()
             .build_bridge()
