@@ -129,3 +129,32 @@ fn the_time_step_advice_is_the_worst_compliance_site() {
     assert!((a.steps_per_contact - expected / 1e-4).abs() < 1e-9);
     assert!(!a.adequate, "{a:?}");
 }
+
+/// Why the bilinear abutments do not tend to the all-rigid run (restitution 0.6) as they
+/// stiffen: the bilinear law dissipates only past its yield penetration `δy`, which the scaled
+/// law keeps, while a stiffer contact penetrates less (`δ_max ≈ v √(m/K1)`), so the impact turns
+/// elastic. The isolated collision of the viaduct's end segment (1.0e6 kg) at 0.5 m/s against
+/// an equal mass with the law of `examples/viaduct-1d.toml` scaled by 1, 10, 100: its
+/// restitution is about 0.92 at ×1 (it barely yields) and rises to 1 (elastic: below `δy`, the
+/// law is one spring), never approaching 0.6.
+#[test]
+fn a_stiffening_bilinear_law_tends_to_an_elastic_impact_not_to_restitution_0_6() {
+    use pounding::contact_law::collision::{CollisionSettings, TwoMassImpact, simulate_collision};
+    use pounding::contact_law::{BilinearImpact, ContactLaw};
+    let e = |s: f64| {
+        let law: ContactLaw = BilinearImpact::new(1.5586e10 * s, 3.1328e9 * s, 2.54e-3)
+            .unwrap()
+            .into();
+        let p = TwoMassImpact::new(1.0e6, 1.0e6, 0.5, 0.0).unwrap();
+        let r = simulate_collision(&law, &p, &CollisionSettings::default()).unwrap();
+        (r.restitution, r.peak_penetration)
+    };
+    let (e1, d1) = e(1.0);
+    let (e10, _) = e(10.0);
+    let (e100, d100) = e(100.0);
+    assert!(d1 > 2.54e-3 && e1 < 0.95, "yields at ×1: e {e1}, δ {d1}");
+    assert!(e1 > 0.9, "far from 0.6 already at ×1: e {e1}");
+    assert!(e10 > e1, "stiffer, less dissipation: {e1} -> {e10}");
+    assert!(d100 < 2.54e-3, "no yield at ×100: δ {d100}");
+    assert!((e100 - 1.0).abs() < 1e-6, "elastic at ×100: e {e100}");
+}
