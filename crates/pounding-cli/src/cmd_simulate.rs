@@ -311,9 +311,10 @@ pub(crate) fn print_run_warnings(
     ground: &pounding::ground_motion::GroundMotion,
     dt: Real,
     advice: Option<&pounding::contact_law::timestep::TimeStepAdvice>,
+    frequencies: &[[Real; 3]],
     impacts: &[pounding::sim::output::RunWarning],
 ) {
-    let input = pounding::sim::output::input_warnings(ground, dt, advice);
+    let input = pounding::sim::output::input_warnings(ground, dt, advice, frequencies);
     for w in input.iter().filter(|w| w.kind != "record_pga_implausible") {
         eprintln!("warning: {}", w.message);
     }

@@ -50,6 +50,7 @@ pub fn run(
         setup.ground(),
         sol.dt,
         sol.time_step_advice.as_ref(),
+        &sol.summary.segment_frequencies(),
         &setup.run_warnings(&sol),
     );
     let out = &args.out;

@@ -197,3 +197,53 @@ fn compare_lists_a_record_warning_once() {
     assert_eq!(section.matches("PGA of 3.000 g").count(), 1, "{section}");
     assert!(section.contains("<h3>Every law</h3>"), "{section}");
 }
+
+/// A segment whose bearings give it a natural period of 1 µs (`period_s = 1e-6`: seconds typed for
+/// milliseconds, say), far below the step (1e-4 s): the run completes, but the summary, stderr and
+/// the report say that segment's mode is not followed; the unmodified example has no such warning.
+#[test]
+fn an_unresolvable_segment_period_is_warned() {
+    let d = scratch_dir("warn", "period");
+    let root = env!("CARGO_MANIFEST_DIR");
+    let text = std::fs::read_to_string(format!("{root}/../../examples/viaduct-rigid-1d.toml"))
+        .unwrap()
+        .replace("history_every = 100", "history_every = 100\nduration = 1.0");
+    assert!(text.contains("period_s = 0.5\n"));
+    std::fs::write(d.join("ok.toml"), &text).unwrap();
+    std::fs::write(
+        d.join("light.toml"),
+        text.replace("period_s = 0.5\n", "period_s = 1e-6\n"),
+    )
+    .unwrap();
+    for (file, dir) in [("ok.toml", "ok"), ("light.toml", "light")] {
+        let out = pounding()
+            .current_dir(&d)
+            .args(["simulate", file, "--out", dir])
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(out.status.success(), "{err}");
+        let s = summary(&d.join(dir));
+        let period: Vec<&Value> = s["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|w| w["kind"] == "segment_period_unresolved")
+            .collect();
+        if dir == "ok" {
+            assert!(period.is_empty(), "{period:?}");
+            continue;
+        }
+        assert_eq!(period.len(), 1, "{period:?}");
+        assert_eq!(period[0]["segment"], 2);
+        let t = period[0]["period_s"].as_f64().unwrap();
+        assert!(t > 0.0 && t <= 1e-6 * (1.0 + 1e-9), "{t}");
+        assert!(err.contains("segment 2's shortest natural period"), "{err}");
+        let html = std::fs::read_to_string(d.join(dir).join("report.html")).unwrap();
+        assert!(
+            html.contains("segment 2&#39;s shortest natural period")
+                || html.contains("segment 2's shortest natural period"),
+            "report.html lists the warning"
+        );
+    }
+}

@@ -249,7 +249,13 @@ pub fn run_one(
                 })
                 .collect();
             let advice = sol.time_step_advice.as_ref();
-            let warnings = crate::sim::output::input_warnings(&p.ground, sol.dt, advice).len()
+            let warnings = crate::sim::output::input_warnings(
+                &p.ground,
+                sol.dt,
+                advice,
+                &sol.summary.segment_frequencies(),
+            )
+            .len()
                 + crate::sim::output::run_warnings(crate::sim::output::Layout::Bridge, &sol).len()
                 + usize::from(refined);
             (format!("{:?}", sol.status), String::new(), lim, warnings)

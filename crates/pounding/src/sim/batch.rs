@@ -247,7 +247,12 @@ fn run_one<P: Problem>(
 /// `o` with its [`BatchOutcome::warnings`]: the input warnings of a run on `ground`
 /// ([`crate::sim::output::input_warnings`]) and `impact_warnings` per-impact ones.
 fn counted(mut o: BatchOutcome, ground: &GroundMotion, impact_warnings: usize) -> BatchOutcome {
-    let input = crate::sim::output::input_warnings(ground, o.dt, o.time_step_advice.as_ref());
+    let input = crate::sim::output::input_warnings(
+        ground,
+        o.dt,
+        o.time_step_advice.as_ref(),
+        &o.summary.segment_frequencies(),
+    );
     o.warnings = input.len() + impact_warnings;
     o
 }

@@ -211,8 +211,12 @@ impl LawRun {
 
 /// The warnings of a run of `setup` (see [`Ran::warnings`]).
 fn law_warnings(setup: &Setup, sol: &BridgeSolution) -> Vec<LawWarning> {
-    let input: Vec<InputWarning> =
-        input_warnings(setup.ground(), sol.dt, sol.time_step_advice.as_ref());
+    let input: Vec<InputWarning> = input_warnings(
+        setup.ground(),
+        sol.dt,
+        sol.time_step_advice.as_ref(),
+        &sol.summary.segment_frequencies(),
+    );
     let mut out: Vec<LawWarning> = input
         .into_iter()
         .map(|w| LawWarning {

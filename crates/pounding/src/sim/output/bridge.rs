@@ -200,16 +200,20 @@ pub(crate) fn bridge_summary_json(
     }
     super::add_run_keys(&mut out, &super::RunKeys::of(sol));
     super::add_projection_keys(&mut out, &sol.summary);
-    out["warnings"] =
-        super::input_warnings(&setup.problem.ground, sol.dt, sol.time_step_advice.as_ref())
-            .into_iter()
-            .map(|w| w.json)
-            .chain(
-                super::run_warnings(layout, sol)
-                    .iter()
-                    .map(super::RunWarning::json),
-            )
-            .collect();
+    out["warnings"] = super::input_warnings(
+        &setup.problem.ground,
+        sol.dt,
+        sol.time_step_advice.as_ref(),
+        &sol.summary.segment_frequencies(),
+    )
+    .into_iter()
+    .map(|w| w.json)
+    .chain(
+        super::run_warnings(layout, sol)
+            .iter()
+            .map(super::RunWarning::json),
+    )
+    .collect();
     if rigid {
         // the rigid sites' impacts (a compliance record has its measured pulse instead)
         let records = sol.impacts.iter().filter(|r| r.pulse.is_none());

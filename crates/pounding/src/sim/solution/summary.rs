@@ -195,3 +195,11 @@ pub struct BridgeSummary {
     /// Work done on the shear keys (stored plus dissipated) \[J\].
     pub shear_key_work: Real,
 }
+
+impl BridgeSummary {
+    /// Per segment, its natural frequencies on its bearings `ω_1 ≤ ω_2 ≤ ω_3` \[rad/s\] (what
+    /// [`crate::sim::output::input_warnings`] checks against the step).
+    pub fn segment_frequencies(&self) -> Vec<[Real; 3]> {
+        self.segments.iter().map(|s| s.frequencies).collect()
+    }
+}
