@@ -75,8 +75,64 @@ fn entries(args: &Args, reading: &ReadOptions) -> Result<(Vec<BatchRecord>, Opti
     Ok((records, None))
 }
 
+/// Refuses, before the batch is announced, support-motion entries that no run of `setup` could
+/// take (a two-deck scenario, a scenario with its own wave passage, a bridge the supports do not
+/// match): the error names the manifest, the entry's `supports` key and its line.
+fn check_supports(setup: &Setup, records: &[BatchRecord], manifest: Option<&Path>) -> Result<()> {
+    let Err(e) = pounding::sim::batch::check_support_entries(setup, records) else {
+        return Ok(());
+    };
+    let named = |r: &BatchRecord| e.to_string().contains(&format!("record {:?}", r.name));
+    let i = records
+        .iter()
+        .position(|r| !r.supports.is_empty() && named(r))
+        .or_else(|| records.iter().position(|r| !r.supports.is_empty()))
+        .unwrap_or(0);
+    let Some(m) = manifest else {
+        return Err(anyhow!("{e}"));
+    };
+    Err(anyhow!(
+        "record set {}: entry {:?} ({}) cannot run on {}: {e}",
+        m.display(),
+        records[i].name,
+        supports_at(m, i),
+        setup_origin(setup)
+    ))
+}
+
+/// `record[i].supports (FILE:LINE)` of a TOML manifest (the line of the key in its `i`-th
+/// `[[record]]` table), or the entry's `supports` column of a CSV manifest.
+fn supports_at(manifest: &Path, i: usize) -> String {
+    let text = std::fs::read_to_string(manifest).unwrap_or_default();
+    let squash = |l: &str| -> String {
+        let l = l.split('#').next().unwrap_or_default();
+        l.chars().filter(|c| !c.is_whitespace()).collect()
+    };
+    let mut table = None;
+    for (n, line) in text.lines().enumerate() {
+        let l = squash(line);
+        if l == "[[record]]" {
+            table = Some(table.map_or(0, |t: usize| t + 1));
+        } else if l.starts_with('[') {
+            table = table.filter(|_| false);
+        } else if table == Some(i) && l.starts_with("supports=") {
+            return format!("`record[{i}].supports` ({}:{})", manifest.display(), n + 1);
+        }
+    }
+    format!("`supports` of entry {} in {}", i + 1, manifest.display())
+}
+
+/// The scenario a batch runs, as its messages name it.
+fn setup_origin(setup: &Setup) -> &'static str {
+    if setup.layout() == pounding::sim::output::Layout::TwoDecks {
+        "a two-deck scenario"
+    } else {
+        "this bridge scenario"
+    }
+}
+
 /// Parses and checks the batch flags, reads the records and prints the plan.
-fn plan(args: &Args, reading: &ReadOptions) -> Result<Plan> {
+fn plan(args: &Args, setup: &Setup, reading: &ReadOptions) -> Result<Plan> {
     let scales = if args.scales.is_empty() {
         vec![1.0]
     } else {
@@ -89,6 +145,7 @@ fn plan(args: &Args, reading: &ReadOptions) -> Result<Plan> {
     pounding::input::check_threads(args.threads).map_err(anyhow::Error::msg)?;
     let (records, set) = entries(args, reading)?;
     pounding::sim::batch::validate_lists(&records, &scales).map_err(|e| anyhow!("{e}"))?;
+    check_supports(setup, &records, args.set.as_deref())?;
     let mut pool = rayon::ThreadPoolBuilder::new();
     if let Some(n) = args.threads {
         pool = pool.num_threads(n);
@@ -179,7 +236,7 @@ pub fn run(
     reading: &ReadOptions,
     t_start: Instant,
 ) -> Result<ExitCode> {
-    let plan = plan(args, reading)?;
+    let plan = plan(args, setup, reading)?;
     let (rows, runs_secs) = execute(&plan, setup, setup.settings())?;
     let curves = curves(&plan.records, plan.set.as_ref(), &rows);
     let model = setup.model();

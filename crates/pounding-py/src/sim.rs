@@ -100,7 +100,7 @@ impl Flags {
         if self.batch {
             sc = sc.for_batch();
         }
-        sc
+        sc.with_keyword_flags()
     }
 }
 

@@ -80,6 +80,7 @@ pub mod model;
 mod observer;
 pub mod options;
 pub mod output;
+mod pair_errors;
 pub mod param;
 mod peaks;
 pub mod problem;
