@@ -166,8 +166,7 @@ fn warnings(h: &mut String, summary: &Value) {
         }));
     }
     if items.is_empty() {
-        h.push_str(&no_warnings(summary));
-        h.push('\n');
+        let _ = writeln!(h, "<p>{}</p>", no_warnings(summary));
     } else {
         h.push_str("<ul>\n");
         for w in items {
