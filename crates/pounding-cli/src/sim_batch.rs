@@ -79,47 +79,16 @@ fn entries(args: &Args, reading: &ReadOptions) -> Result<(Vec<BatchRecord>, Opti
 /// take (a two-deck scenario, a scenario with its own wave passage, a bridge the supports do not
 /// match): the error names the manifest, the entry's `supports` key and its line.
 fn check_supports(setup: &Setup, records: &[BatchRecord], manifest: Option<&Path>) -> Result<()> {
-    let Err(e) = pounding::sim::batch::check_support_entries(setup, records) else {
-        return Ok(());
-    };
-    let named = |r: &BatchRecord| e.to_string().contains(&format!("record {:?}", r.name));
-    let i = records
-        .iter()
-        .position(|r| !r.supports.is_empty() && named(r))
-        .or_else(|| records.iter().position(|r| !r.supports.is_empty()))
-        .unwrap_or(0);
-    let Some(m) = manifest else {
-        return Err(anyhow!("{e}"));
-    };
-    Err(anyhow!(
-        "record set {}: entry {:?} ({}) cannot run on {}: {e}",
-        m.display(),
-        records[i].name,
-        supports_at(m, i),
-        setup_origin(setup)
-    ))
-}
-
-/// `record[i].supports (FILE:LINE)` of a TOML manifest (the line of the key in its `i`-th
-/// `[[record]]` table), or the entry's `supports` column of a CSV manifest.
-fn supports_at(manifest: &Path, i: usize) -> String {
-    let text = std::fs::read_to_string(manifest).unwrap_or_default();
-    let squash = |l: &str| -> String {
-        let l = l.split('#').next().unwrap_or_default();
-        l.chars().filter(|c| !c.is_whitespace()).collect()
-    };
-    let mut table = None;
-    for (n, line) in text.lines().enumerate() {
-        let l = squash(line);
-        if l == "[[record]]" {
-            table = Some(table.map_or(0, |t: usize| t + 1));
-        } else if l.starts_with('[') {
-            table = table.filter(|_| false);
-        } else if table == Some(i) && l.starts_with("supports=") {
-            return format!("`record[{i}].supports` ({}:{})", manifest.display(), n + 1);
-        }
+    match manifest {
+        Some(m) => pounding::sim::batch_supports::check_set_supports(
+            setup,
+            records,
+            m,
+            setup_origin(setup),
+        ),
+        None => pounding::sim::batch::check_support_entries(setup, records),
     }
-    format!("`supports` of entry {} in {}", i + 1, manifest.display())
+    .map_err(|e| anyhow!("{e}"))
 }
 
 /// The scenario a batch runs, as its messages name it.

@@ -182,3 +182,17 @@ def test_an_error_row_keeps_the_column_types(tmp_path):
         assert np.isnan(table["peak_seat_displacement_m"].iloc[-1])
     # the good run's row is the batch's without the failure
     assert rows.iloc[:1].drop(columns="error").equals(ok.drop(columns="error"))
+
+
+def test_a_support_entry_on_a_two_deck_scenario_names_the_manifest_key_and_line(tmp_path):
+    # hostile trial of issue 22 (F8): refused without naming the manifest, key or line
+    sup = tmp_path / "sup.csv"
+    sup.write_text("t,start,joint1,end\n" + "".join(f"{i * 0.01!r},0.1,0.2,0.1\n" for i in range(60)))
+    manifest = tmp_path / "set.toml"
+    manifest.write_text('# supports\n[[record]]\nid = "s1"\nsupports = "sup.csv"\n')
+    decks = {"decks": {"shape": "straight", "L1": 30.0, "L2": 30.0}, "time": {"duration": 0.3}}
+    with pytest.raises(ValueError) as e:
+        pounding.batch(decks, None, [1.0], record_set=manifest)
+    msg = str(e.value)
+    for needle in ("set.toml", "`record[0].supports`", "set.toml:4", '"s1"', "two-deck"):
+        assert needle in msg, (needle, msg)

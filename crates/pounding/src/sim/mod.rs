@@ -63,6 +63,7 @@
 
 pub mod accuracy;
 pub mod batch;
+pub mod batch_supports;
 pub mod bridge;
 pub mod compare;
 pub mod compliance;
