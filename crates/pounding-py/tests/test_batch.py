@@ -192,7 +192,7 @@ def test_a_support_entry_on_a_two_deck_scenario_names_the_manifest_key_and_line(
     manifest.write_text('# supports\n[[record]]\nid = "s1"\nsupports = "sup.csv"\n')
     decks = {"decks": {"shape": "straight", "L1": 30.0, "L2": 30.0}, "time": {"duration": 0.3}}
     with pytest.raises(ValueError) as e:
-        pounding.batch(decks, None, [1.0], record_set=manifest)
+        pounding.batch(decks, scales=[1.0], record_set=manifest)
     msg = str(e.value)
     for needle in ("set.toml", "`record[0].supports`", "set.toml:4", '"s1"', "two-deck"):
         assert needle in msg, (needle, msg)
