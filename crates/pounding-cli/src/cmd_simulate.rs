@@ -17,9 +17,6 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
-#[path = "sim_plots.rs"]
-pub(crate) mod sim_plots;
-
 #[path = "sim_batch.rs"]
 pub(crate) mod sim_batch;
 

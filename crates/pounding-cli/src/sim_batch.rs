@@ -9,8 +9,8 @@
 //! written and also makes the exit code 1.
 
 use super::Args;
-use super::sim_plots::{self, BatchCurve};
 use super::sim_records::count;
+use crate::plots::sim_batch::{BatchCurve, batch_plot};
 use anyhow::{Context, Result, anyhow};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use pounding::ground_motion::set::RecordSet;
@@ -182,7 +182,7 @@ fn write_outputs(
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
     wr("batch.csv", csv.as_bytes())?;
-    sim_plots::batch_plot(out, "batch.png", curves, 1.0).map_err(|e| anyhow!("plotting: {e}"))?;
+    batch_plot(out, "batch.png", curves, 1.0).map_err(|e| anyhow!("plotting: {e}"))?;
     let timing = json!({
         "runs_s": runs_secs,
         "wall_time_s": t_start.elapsed().as_secs_f64(),

@@ -1,10 +1,11 @@
 //! One run of `pounding simulate`, of either scenario form (two decks or a bridge of
 //! `[[segment]]`s; [`pounding::sim::scenario::Setup`]): runs it with the library, writes
 //! `history.csv`, `impacts.csv`, `summary.json`, the force tables, the figures (the two-deck
-//! model's [`super::sim_plots`], a bridge's [`crate::plots::bridge`] and its
+//! model's [`crate::plots::two_deck`], a bridge's [`crate::plots::bridge`] and its
 //! `trajectories.json`), `report.html` and `timing.json` (last), and prints a summary.
 
 use super::{Args, lock_and_clear};
+use crate::plots::two_deck;
 use anyhow::{Context, Result, anyhow};
 use pounding::output::{bounded, float_token, write_atomic};
 use pounding::sim::Problem;
@@ -92,12 +93,13 @@ pub fn run(
     files.push("trajectories.json".into());
     let (what, figures) = match &setup.form {
         Form::TwoDecks(model) => {
-            let run = super::sim_plots::TwoDeckRun {
+            let run = two_deck::TwoDeckRun {
                 model,
+                bridge: &setup.run.problem.model,
                 ground: &setup.run.problem.ground,
             };
-            super::sim_plots::write_all(out, &run, &sol).map_err(|e| anyhow!("plotting: {e}"))?;
-            ("two decks".to_string(), super::sim_plots::FIGURES.to_vec())
+            two_deck::write_all(out, &run, &sol).map_err(|e| anyhow!("plotting: {e}"))?;
+            ("two decks".to_string(), two_deck::FIGURES.to_vec())
         }
         Form::Bridge => {
             let figures = crate::plots::bridge::write_all(out, &setup.run.problem.model, &sol)

@@ -64,7 +64,10 @@ pub(crate) fn compare_run(
     let tables = base.clone();
     let cmp = Comparison::prepare(base, &flags).map_err(|e| err(&e))?;
     if let Some(s) = cmp.first_setup() {
-        crate::sim::check_tables(&tables, Some(pounding::sim::Problem::model(s).segments.len()))?;
+        crate::sim::check_tables(
+            &tables,
+            Some(pounding::sim::Problem::model(s).segments.len()),
+        )?;
     }
     let bridge = cmp.bridge;
     let runs = crate::interruptible(py, move || {

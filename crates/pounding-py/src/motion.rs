@@ -103,16 +103,16 @@ fn motion_synth<'py>(
             let lock = pounding::output::lock_output_dir(&dir).map_err(|e| bad(&e))?;
             let source = synth_source(&p, count, seed, pairs);
             crate::interruptible(py, move || {
-                let r = write_suite(&dir, &p, count, seed, pairs, &source).map_err(|e| {
-                    format!("writing the suite to {}: {e}", dir.display())
-                });
+                let r = write_suite(&dir, &p, count, seed, pairs, &source)
+                    .map_err(|e| format!("writing the suite to {}: {e}", dir.display()));
                 drop(lock);
                 r
             })?
             .map_err(value_error)?
         }
-        None => crate::interruptible(py, move || suite(&p, count, seed, pairs))?
-            .map_err(|e| bad(&e))?,
+        None => {
+            crate::interruptible(py, move || suite(&p, count, seed, pairs))?.map_err(|e| bad(&e))?
+        }
     };
     let mut ids = Vec::with_capacity(records.len());
     let (mut xs, mut ys) = (Vec::new(), Vec::new());

@@ -17,47 +17,20 @@ pub const FIGURES: &[&str] = &[
     "energy.png",
 ];
 
-use crate::plot_style::{
-    BLUE, DARK, DrawResult, FAMILY, GREEN, ORANGE, PURPLE, RED, e, register, save_white_png,
-    series_legend,
-};
+use crate::plot_style::{DrawResult, FAMILY, e, register, save_white_png, series_legend};
 use crate::plots::sim_layout::plan_chart;
-use crate::plots::sim_lines::{Series, energy_panel, line_panel};
+use crate::plots::sim_lines::energy_panel;
+use crate::plots::sim_panels::{
+    AbutmentNames, GREY, Hist, abutment_gap_panel, color, displacement_panel, joint_openings_panel,
+};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use pounding::math::{Real, Vector};
 use pounding::sim::bridge::{ABUTMENT_SIDES, BridgeModel, BridgeSolution};
-use pounding::sim::output::{
-    bridge_plan, corner_paths, joint_openings, plan_exaggeration, segment_displacements,
-};
+use pounding::sim::output::{bridge_plan, corner_paths, plan_exaggeration};
 use std::path::Path;
 
 type R<T = ()> = DrawResult<T>;
-
-const GREY: RGBColor = RGBColor(120, 120, 120);
-
-/// Line colours, cycled for many joints or segments.
-const PALETTE: [RGBColor; 10] = [
-    BLUE,
-    RED,
-    GREEN,
-    ORANGE,
-    PURPLE,
-    RGBColor(23, 190, 207),
-    RGBColor(140, 86, 75),
-    RGBColor(227, 119, 194),
-    RGBColor(188, 189, 34),
-    DARK,
-];
-
-fn color(i: usize) -> RGBColor {
-    PALETTE[i % PALETTE.len()]
-}
-
-/// `(t, v)` pairs of a history.
-fn pts(t: &[Real], v: &[Real]) -> Vec<(Real, Real)> {
-    t.iter().copied().zip(v.iter().copied()).collect()
-}
 
 /// Drawn besides [`FIGURES`] for a bridge with piers, backwalls or shear keys
 /// ([`crate::plots::bridge_loops`]).
@@ -82,39 +55,15 @@ pub fn write_all(out: &Path, model: &BridgeModel, sol: &BridgeSolution) -> R<Vec
 /// The figures of [`FIGURES`].
 fn write_figures(out: &Path, model: &BridgeModel, sol: &BridgeSolution) -> R {
     register();
-    let t_end = sol.t.last().copied().unwrap_or(1.0).max(1e-9);
-    let pts = |v: &[Real]| pts(&sol.t, v);
+    let h = Hist::new(sol);
     save_white_png(out, "joint_openings.png", (1400, 900), |root| {
-        joint_panels(root, model, sol, t_end)
+        joint_panels(root, model, h)
     })?;
     save_white_png(out, "displacements.png", (1400, 600), |root| {
         let labels: Vec<String> = (1..=sol.n_segments)
             .map(|i| format!("segment {i}"))
             .collect();
-        let series: Vec<Series> = segment_displacements(sol)
-            .iter()
-            .enumerate()
-            .map(|(i, d)| Series {
-                label: &labels[i],
-                pts: pts(d),
-                color: color(i),
-            })
-            .collect();
-        let title = if sol.supports_apart {
-            "Centroid displacement of each segment relative to the reference ground motion \
-             (summary.json ground_motion.supports), √(x² + y²)"
-        } else {
-            "Centroid displacement of each segment relative to the ground, √(x² + y²)"
-        };
-        line_panel(
-            root,
-            title,
-            "displacement [m]",
-            t_end,
-            &series,
-            &[],
-            SeriesLabelPosition::UpperRight,
-        )
+        displacement_panel(root, h, &labels)
     })?;
     let plan_size = plan_size(model);
     save_white_png(out, "plan.png", plan_size, |root| plan(root, model, sol))?;
@@ -123,28 +72,25 @@ fn write_figures(out: &Path, model: &BridgeModel, sol: &BridgeSolution) -> R {
         crate::plots::bridge_zoom::draw(root, model, sol)
     })?;
     save_white_png(out, "energy.png", (1400, 600), |root| {
-        energy(root, sol, t_end)
+        let err = sol.summary.energy_balance_error;
+        energy_panel(root, err, h.t_end, &sol.t, &sol.energy, true)
     })
 }
 
 /// `joint_openings.png`: the joints (top) and, with abutments, the abutment gaps (bottom).
-fn joint_panels(
-    root: &DrawingArea<BitMapBackend, Shift>,
-    model: &BridgeModel,
-    sol: &BridgeSolution,
-    t_end: Real,
-) -> R {
-    let sides: Vec<usize> = (0..2).filter(|&s| model.abutments[s].is_some()).collect();
+fn joint_panels(root: &DrawingArea<BitMapBackend, Shift>, model: &BridgeModel, h: Hist) -> R {
+    let sol = h.sol;
+    let abutments = model.abutments.iter().any(Option::is_some);
     let nj = sol.n_segments.saturating_sub(1);
     // joints on top (3/5), abutments below; a single segment has only the abutment panel
-    let (joint_area, abut_area) = match (nj > 0, sides.is_empty()) {
-        (true, false) => {
+    let (joint_area, abut_area) = match (nj > 0, abutments) {
+        (true, true) => {
             let (a, b) = root.split_vertically(root.dim_in_pixel().1 * 3 / 5);
             (Some(a), Some(b))
         }
-        (true, true) => (Some(root.clone()), None),
-        (false, false) => (None, Some(root.clone())),
-        (false, true) => {
+        (true, false) => (Some(root.clone()), None),
+        (false, true) => (None, Some(root.clone())),
+        (false, false) => {
             root.titled(
                 "A single segment without abutments: no joint or abutment gaps",
                 (FAMILY, 22),
@@ -153,56 +99,11 @@ fn joint_panels(
             return Ok(());
         }
     };
-    let openings = joint_openings(model, sol);
-    let labels: Vec<String> = (1..=openings.len()).map(|k| format!("joint {k}")).collect();
-    let series: Vec<Series> = openings
-        .iter()
-        .enumerate()
-        .map(|(k, o)| Series {
-            label: &labels[k],
-            pts: pts(&sol.t, o),
-            color: color(k),
-        })
-        .collect();
-    let title = format!(
-        "Joint opening = smaller end gap − reference gap ({} impacts; < 0 closing, −gap = contact)",
-        sol.summary.joints.iter().map(|j| j.impacts).sum::<usize>()
-    );
-    // the contact line (opening = −gap) when every joint has the same gap
-    let mut hlines = vec![(0.0, "reference gap", GREY)];
-    if let Some(g) = model.joints.first().map(|j| j.gap)
-        && model.joints.iter().all(|j| j.gap == g)
-    {
-        hlines.push((-g, "contact (opening = −gap)", BLACK));
-    }
     if let Some(area) = &joint_area {
-        line_panel(
-            area,
-            &title,
-            "opening [m]",
-            t_end,
-            &series,
-            &hlines,
-            SeriesLabelPosition::UpperRight,
-        )?;
+        let labels: Vec<String> = (1..=nj).map(|k| format!("joint {k}")).collect();
+        joint_openings_panel(area, (model, h), &labels)?;
     }
     if let Some(area) = &abut_area {
-        let labels: Vec<String> = sides
-            .iter()
-            .map(|&s| format!("{} abutment", ABUTMENT_SIDES[s]))
-            .collect();
-        let series: Vec<Series> = sides
-            .iter()
-            .enumerate()
-            .map(|(i, &s)| Series {
-                label: &labels[i],
-                pts: pts(
-                    &sol.t,
-                    &sol.abutment_gaps.iter().map(|g| g[s]).collect::<Vec<_>>(),
-                ),
-                color: color(i + 3),
-            })
-            .collect();
         let impacts: usize = sol
             .summary
             .abutments
@@ -210,17 +111,18 @@ fn joint_panels(
             .flatten()
             .map(|a| a.impacts)
             .sum();
-        line_panel(
-            area,
-            &format!(
-                "Gap of the outer end faces to the abutments (smaller corner gap; {impacts} impacts)"
+        let gaps = ABUTMENT_SIDES.map(|s| format!("{s} abutment"));
+        let initial = ABUTMENT_SIDES.map(|s| format!("initial gap, {s} abutment"));
+        let names = AbutmentNames {
+            title: format!(
+                "Gap of the outer end faces to the abutments (smaller corner gap; {impacts} \
+                 impacts)"
             ),
-            "gap [m]",
-            t_end,
-            &series,
-            &[(0.0, "contact", BLACK)],
-            SeriesLabelPosition::UpperRight,
-        )?;
+            gaps: [&gaps[0], &gaps[1]],
+            initial: [&initial[0], &initial[1]],
+            colors: [color(3), color(4)],
+        };
+        abutment_gap_panel(area, (model, h), &names)?;
     }
     Ok(())
 }
@@ -345,10 +247,4 @@ fn plan(root: &DrawingArea<BitMapBackend, Shift>, model: &BridgeModel, sol: &Bri
         }
     }
     series_legend(&mut chart, SeriesLabelPosition::UpperRight, BLACK, 15)
-}
-
-/// `energy.png`.
-fn energy(root: &DrawingArea<BitMapBackend, Shift>, sol: &BridgeSolution, t_end: Real) -> R {
-    let err = sol.summary.energy_balance_error;
-    energy_panel(root, err, t_end, &sol.t, &sol.energy, true)
 }

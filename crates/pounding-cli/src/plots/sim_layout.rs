@@ -1,38 +1,54 @@
-//! `layout.png`: plan view of the two decks, bearings, joint, abutments and axes (reference pose).
+//! `layout.png`: plan view of the two decks, bearings, joint, abutments and axes (reference pose)
+//! of the two-segment bridge the two-deck model runs as ([`super::two_deck`]), drawn from the
+//! library's plan of it ([`bridge_plan`]); and the plan chart every plan view
+//! draws on ([`plan_chart`]).
 
-use crate::cmd_simulate::sim_plots::TwoDeckRun;
 use crate::plot_style::{BLUE, DrawResult, FAMILY, GREEN, RED, e, series_legend};
 use plotters::coord::Shift;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
-use pounding::math::Real;
+use pounding::math::{Real, Vector};
+use pounding::sim::bridge::BridgeModel;
+use pounding::sim::model::SegmentBody;
+use pounding::sim::output::bridge_plan;
 
 const GREY: RGBColor = RGBColor(120, 120, 120);
 
-/// Plan view of the reference pose (spec §4): deck outlines, bearings, joint, axes.
+/// Plan view of the reference pose of the two-deck model's bridge `m` (two segments; spec §4):
+/// deck outlines, bearings, joint, abutments, axes; the legend at `legend`.
 pub(crate) fn layout<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
-    problem: &TwoDeckRun,
+    m: &BridgeModel,
+    legend: SeriesLabelPosition,
 ) -> DrawResult {
-    let m = &problem.model;
-    let g = m.gap;
-    let bodies = m.deck_bodies();
-    let (o1, o2) = (deck_outline(problem, 1), deck_outline(problem, 2));
-    let abut_polys = abutment_polygons(problem);
+    let g = m.joints.first().map_or(0.0, |j| j.gap);
+    let bodies = m.layout();
+    let plan = bridge_plan(m, 120);
+    let xy = |v: &Vector| (v.x, v.y);
+    let outlines: Vec<Vec<(Real, Real)>> = plan
+        .outlines
+        .iter()
+        .map(|o| o.iter().map(xy).collect())
+        .collect();
+    let abut_polys = abutment_polygons(m, &bodies);
+    let bearings = m.bearing_points();
     let (mut chart, (cx, cy, half_x, half_y)) = plan_chart(
         root,
-        o1.iter().chain(&o2).chain(abut_polys.iter().flatten()),
+        outlines.iter().flatten().chain(abut_polys.iter().flatten()),
         &format!(
-            "Plan view (reference pose): joint opening g = {g} m at y = 0, {} + {} bearings",
-            m.bearings1.len(),
-            m.bearings2.len()
+            "Plan view (reference pose): joint opening g = {g} m at y = 0, {} bearings",
+            bearings
+                .iter()
+                .map(|b| b.len().to_string())
+                .collect::<Vec<_>>()
+                .join(" + ")
         ),
         (
             "x [m] (along the joint)",
             "y [m] (normal to the joint, into deck 1)",
         ),
     )?;
-    for (o, c, name) in [(&o1, BLUE, "deck 1"), (&o2, RED, "deck 2")] {
+    for (o, (c, name)) in outlines.iter().zip([(BLUE, "deck 1"), (RED, "deck 2")]) {
         chart
             .draw_series(std::iter::once(Polygon::new(o.clone(), c.mix(0.15))))
             .map_err(e)?;
@@ -44,17 +60,12 @@ pub(crate) fn layout<DB: DrawingBackend>(
                 Rectangle::new([(x, y - 5), (x + 20, y + 5)], c.mix(0.5).filled())
             });
     }
-    let bearings: Vec<(Real, Real)> = m
-        .bearings1
-        .iter()
-        .map(|b| (b.point.x, b.point.y + g))
-        .chain(m.bearings2.iter().map(|b| (b.point.x, b.point.y)))
-        .collect();
     chart
         .draw_series(
             bearings
                 .iter()
-                .map(|&p| TriangleMarker::new(p, 8, BLACK.filled())),
+                .flatten()
+                .map(|p| TriangleMarker::new(xy(p), 8, BLACK.filled())),
         )
         .map_err(e)?
         .label("bearing (seat)")
@@ -68,7 +79,7 @@ pub(crate) fn layout<DB: DrawingBackend>(
                 .legend(|(x, y)| Rectangle::new([(x, y - 5), (x + 20, y + 5)], GREY.filled()));
         }
     }
-    let w2 = bodies[0].joint_face(1).half;
+    let w2 = bodies[0].end.half;
     chart
         .draw_series(std::iter::once(PathElement::new(
             vec![(-w2 * 3.0, 0.0), (w2 * 3.0, 0.0)],
@@ -90,12 +101,7 @@ pub(crate) fn layout<DB: DrawingBackend>(
             )))
             .map_err(e)?;
     }
-    let position = if m.shapes.is_some() {
-        SeriesLabelPosition::UpperRight
-    } else {
-        SeriesLabelPosition::UpperLeft
-    };
-    series_legend(&mut chart, position, BLACK, 15)
+    series_legend(&mut chart, legend, BLACK, 15)
 }
 
 /// A plan-view chart on `root` with equal scales showing `points` ([`view_box`]), the
@@ -135,60 +141,17 @@ pub(crate) type View = (Real, Real, Real, Real);
 pub(crate) type PlanChart<'a, DB> =
     ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
-/// Outline of deck `j` (1 or 2) in the plan view: the curved deck's arcs, or the four end-face
-/// corners of a straight/skew deck (closed polygon).
-fn deck_outline(problem: &TwoDeckRun, j: usize) -> Vec<(Real, Real)> {
-    let m = &problem.model;
-    let g = m.gap;
-    let bodies = m.deck_bodies();
-    let shape = m.shapes.map(|s| s[j - 1]);
-    let d = match (shape, shape.as_ref().and_then(|s| s.curved())) {
-        (None, _) if j == 1 => m.arrangement.deck1,
-        (None, _) => m.arrangement.deck2,
-        (Some(_), Some(d)) => *d,
-        (Some(_), None) => {
-            // straight / skewed: the four end-face corners (joint c0, c1, far c0, c1)
-            let (joint, far) = (bodies[j - 1].joint_face(j), bodies[j - 1].far_face(j));
-            return [
-                joint.corners[0],
-                joint.corners[1],
-                far.corners[0],
-                far.corners[1],
-                joint.corners[0],
-            ]
-            .iter()
-            .map(|p| (p.x, p.y))
-            .collect();
-        }
+/// The abutments of `m` (laid out as `bodies`): each outer end face moved out by its gap,
+/// drawn 1.6 face lengths long and 6 % of one deep.
+fn abutment_polygons(m: &BridgeModel, bodies: &[SegmentBody]) -> Vec<Vec<(Real, Real)>> {
+    let (Some(first), Some(last)) = (bodies.first(), bodies.last()) else {
+        return Vec::new();
     };
-    let d = &d;
-    let s = if j == 1 { 1.0 } else { -1.0 };
-    let off = if j == 1 { g } else { 0.0 };
-    let pt = |r: Real, phi: Real| (s * (d.radius - r * phi.cos()), off + s * r * phi.sin());
-    let (ri, ro) = (d.radius - d.width / 2.0, d.radius + d.width / 2.0);
-    let n = 120;
-    let mut v: Vec<(Real, Real)> = (0..=n)
-        .map(|k| pt(ri, d.angle * k as Real / n as Real))
-        .collect();
-    v.extend(
-        (0..=n)
-            .rev()
-            .map(|k| pt(ro, d.angle * k as Real / n as Real)),
-    );
-    v.push(v[0]);
-    v
-}
-
-/// The abutment faces: the far-face line moved by the abutment gap, drawn 1.6 face lengths long.
-fn abutment_polygons(problem: &TwoDeckRun) -> Vec<Vec<(Real, Real)>> {
-    let m = &problem.model;
-    let bodies = m.deck_bodies();
-    m.abutments
-        .iter()
-        .enumerate()
-        .filter_map(|(j, a)| {
+    [&first.start, &last.end]
+        .into_iter()
+        .zip(&m.abutments)
+        .filter_map(|(far, a)| {
             let a = a.as_ref()?;
-            let far = bodies[j].far_face(j + 1);
             let n_out = -far.inward;
             let c = far.mid + n_out * a.gap;
             let dir = (far.corners[1] - far.corners[0]) * 0.8;

@@ -84,6 +84,7 @@ fn bridge_run_writes_its_files_with_arrays_in_bridge_order() {
     for col in [
         "y3_m",
         "joint2_gap_c1_m",
+        "joint2_slip_m",
         "abutment_end_gap_m",
         "element_work_J",
     ] {

@@ -440,7 +440,7 @@ pub(crate) fn run<S: Stepper>(
         frame.ground.clone_from(&o.d);
     }
     let mut obs = Observed::default();
-    let mut loads = super::segment_forces::StepLoads::new(bridge);
+    let mut loads = super::step_loads::StepLoads::new(bridge);
     let clock = TimeGrid::new(h);
     for k in 0..=sc.n_steps {
         if k % super::PROGRESS_EVERY == 0 {
@@ -549,7 +549,10 @@ pub(crate) fn run<S: Stepper>(
             el.book(h, &work.u_mid, kq, &mut el_force, nb);
         }
         let el_step = has_elements.then_some(&el_force);
-        loads.add_step(sc, &q, &work, el_step, out.impulse.as_ref(), offs.as_ref());
+        loads.add_step(&q, &work.u_th);
+        if has_elements || out.impulse.is_some() || offs.is_some() {
+            loads.add_members(sc, el_step, out.impulse.as_ref(), offs.as_ref());
+        }
         for (qi, vi) in q.as_mut_slice().iter_mut().zip(work.u_th.as_slice()) {
             *qi += vi * h;
         }

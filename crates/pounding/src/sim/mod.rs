@@ -56,8 +56,8 @@
 //! [`simulate`] checks a [`Problem`] and hands the whole run to an integrator
 //! (`integrate.rs`: the `Integrator` trait, Moreau–Jean today). Its loop (`driver.rs`:
 //! energy bookkeeping, divergence, history; monitors in `peaks.rs`) calls one stepper per step —
-//! `rigid.rs` (the scheme above), [`compliance`] (trapezoid + Newton over the contact sites) or
-//! `mixed.rs` (both) — and hands each kept step to the observers (`observer.rs`), whose typed
+//! `rigid/` (the scheme above), [`compliance`] (trapezoid + Newton over the contact sites) or
+//! `mixed.rs` (both) — and hands each kept step to the observers (`observer/`), whose typed
 //! tables ([`table::Table`]) the front ends write. A new output is an observer; a new integrator
 //! implements the trait; `docs/architecture.md` lists the files each addition touches.
 
@@ -89,9 +89,9 @@ pub mod projection;
 mod rigid;
 pub mod scenario;
 mod scheme;
-mod segment_forces;
 mod settings;
 mod solution;
+mod step_loads;
 mod support;
 pub mod table;
 mod two_deck;

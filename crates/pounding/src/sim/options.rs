@@ -153,7 +153,10 @@ pub fn history_row_bytes(size: impl Into<RunSize>) -> u64 {
     let j = n - 1;
     let b = size.bearings as u64;
     let real = std::mem::size_of::<Real>() as u64;
-    let forces = super::segment_forces::values_per_row(size.segments.max(1), true) as u64;
+    let forces = super::observer::values_per_row(size.segments.max(1), true) as u64;
+    // the observers' tables, values per kept row, one term per table: the times of `bearings`,
+    // `restrainers`, `joint_slip` and `segment_forces` (4); `bearings` (4 per bearing); 5 per
+    // joint: its slip and two restrainers' elongation and force; `segment_forces`
     let tables = 4 + 4 * b + 5 * j + forces;
     // substructures, counted as if every joint had a pier and both ends a backwall and keys:
     // a cap's q and u (4) and `piers` (4) per joint; a wall's q and u (2) and `backwalls` (3)

@@ -265,16 +265,8 @@ impl Scheme {
     /// initial stiffness); `scratch` of the same length (the dense sum of two parts).
     pub fn stiffness_into(&self, v: &State, out: &mut State, scratch: &mut State) {
         let Some(d) = &self.dense else {
-            // block by block on plain slices (once per kept row of `segment_forces`)
-            let (v, out) = (v.as_slice(), out.as_mut_slice());
-            for (j, b) in self.bodies.iter().enumerate() {
-                let r = self.dofs.range(j);
-                let (x, o) = (&v[r.clone()], &mut out[r]);
-                for (a, oa) in o.iter_mut().enumerate() {
-                    *oa = (0..x.len()).map(|c| b.stiffness[(a, c)] * x[c]).sum();
-                }
-            }
-            return;
+            let k_blocks = self.bodies.iter().map(|b| &b.stiffness);
+            return Self::apply_blocks_into(&self.dofs, k_blocks, v, out);
         };
         d.k_mul(v, out, scratch)
     }

@@ -2,7 +2,7 @@
 //!
 //! Two shapes, one writer ([`csv_lines`]):
 //! - [`Table`]: numbers only, row-major, one row per kept step. An observer
-//!   (`sim/observer.rs`) fills one while the driver runs; the run returns its tables in order.
+//!   (`sim/observer/`) fills one while the driver runs; the run returns its tables in order.
 //! - [`TypedTable`]: one row per event (`impacts.csv`: one per impacting contact), column-major,
 //!   each column of one type ([`ColumnData`]: floats, integers or names), as a data-frame
 //!   library holds a table whose columns are of different kinds.

@@ -12,7 +12,7 @@ use std::path::PathBuf;
 
 /// Straight, curved, straight (rigid law), a start abutment only, a restrainer across joint 1,
 /// an oblique incidence so that the segments also rotate.
-const BRIDGE: &str = r#"
+pub(crate) const BRIDGE: &str = r#"
 [bridge]
 damping = "dashpots"
 damping_ratio = 0.05
@@ -155,6 +155,7 @@ fn every_bridge_batch_row_equals_the_single_run_of_its_record_and_scale() {
             assert_eq!(c("peak_impulse_ns"), float_token(j.peak_impulse));
             assert_eq!(c("peak_contact_force_n"), "", "rigid law: no force");
             assert_eq!(c("unseated"), j.unseated.to_string());
+            assert_eq!(c("peak_slip_m"), float_token(j.peak_slip));
         }
         let rp = s.joints[0].restrainer_peak_force.unwrap();
         assert_eq!(

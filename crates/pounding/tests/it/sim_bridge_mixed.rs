@@ -107,3 +107,54 @@ fn stiffening_compliance_abutments_tend_to_the_all_rigid_run() {
         "relative differences to the rigid run: {errors:?}"
     );
 }
+
+/// The time-step advice of a bridge whose compliance sites differ is that of the site the step
+/// resolves worst, each with its own law and mass: soft Kelvin joints (1e9 N/m between
+/// 1.2e6/0.8e6 kg segments: `T_c` = π √(4.8e5 / 1e9) ≈ 69 ms) and stiff Kelvin abutments
+/// (1e13 N/m against the 1.0e6 and 0.8e6 kg end segments alone): the end abutment's
+/// `T_c = π √(0.8e6 / 1e13)` ≈ 0.89 ms, 8.9 steps of 1e-4 s, not adequate (it once took the
+/// first site's law at the joints' smallest mass pair: 688 steps, "adequate").
+#[test]
+fn the_time_step_advice_is_the_worst_compliance_site() {
+    let text = "[contact]\nlaw = \"kelvin\"\nk = 1e9\nrestitution = 0.6\n";
+    let stiff = abutments("law = \"kelvin\"\nk = 1e13");
+    let sol = run(&viaduct(&format!("{text}{stiff}"), 0.5));
+    let a = sol.time_step_advice.expect("compliance sites give advice");
+    let expected = std::f64::consts::PI * (0.8e6_f64 / 1e13).sqrt();
+    assert!(
+        (a.contact_duration - expected).abs() < 1e-12 * expected,
+        "T_c {} s, expected {expected} s (the end abutment's)",
+        a.contact_duration
+    );
+    assert!((a.steps_per_contact - expected / 1e-4).abs() < 1e-9);
+    assert!(!a.adequate, "{a:?}");
+}
+
+/// Why the bilinear abutments do not tend to the all-rigid run (restitution 0.6) as they
+/// stiffen: the bilinear law dissipates only past its yield penetration `δy`, which the scaled
+/// law keeps, while a stiffer contact penetrates less (`δ_max ≈ v √(m/K1)`), so the impact turns
+/// elastic. The isolated collision of the viaduct's end segment (1.0e6 kg) at 0.5 m/s against
+/// an equal mass with the law of `examples/viaduct-1d.toml` scaled by 1, 10, 100: its
+/// restitution is about 0.92 at ×1 (it barely yields) and rises to 1 (elastic: below `δy`, the
+/// law is one spring), never approaching 0.6.
+#[test]
+fn a_stiffening_bilinear_law_tends_to_an_elastic_impact_not_to_restitution_0_6() {
+    use pounding::contact_law::collision::{CollisionSettings, TwoMassImpact, simulate_collision};
+    use pounding::contact_law::{BilinearImpact, ContactLaw};
+    let e = |s: f64| {
+        let law: ContactLaw = BilinearImpact::new(1.5586e10 * s, 3.1328e9 * s, 2.54e-3)
+            .unwrap()
+            .into();
+        let p = TwoMassImpact::new(1.0e6, 1.0e6, 0.5, 0.0).unwrap();
+        let r = simulate_collision(&law, &p, &CollisionSettings::default()).unwrap();
+        (r.restitution, r.peak_penetration)
+    };
+    let (e1, d1) = e(1.0);
+    let (e10, _) = e(10.0);
+    let (e100, d100) = e(100.0);
+    assert!(d1 > 2.54e-3 && e1 < 0.95, "yields at ×1: e {e1}, δ {d1}");
+    assert!(e1 > 0.9, "far from 0.6 already at ×1: e {e1}");
+    assert!(e10 > e1, "stiffer, less dissipation: {e1} -> {e10}");
+    assert!(d100 < 2.54e-3, "no yield at ×100: δ {d100}");
+    assert!((e100 - 1.0).abs() < 1e-6, "elastic at ×100: e {e100}");
+}

@@ -141,13 +141,42 @@ pub(crate) struct ComplianceStepper {
     q_trial: std::cell::RefCell<State>,
 }
 
+/// The time-step advice of a run's compliance sites: per site, its own law at the effective mass
+/// of the two bodies it separates (a joint: its two segments; an abutment: its segment against
+/// its backwall, or alone against the ground), the advice with the fewest steps per contact —
+/// the site whose contact the step resolves worst. `None` without a site (or no valid mass).
+fn site_time_step_advice(
+    sites: &[SiteLaw],
+    (joints, abutments): (&[JointGeom], &[super::view::AbutmentFace]),
+    scheme: &Scheme,
+    bridge: &Bridge,
+) -> Option<crate::contact_law::timestep::TimeStepAdvice> {
+    let segment = |b: usize| bridge.bodies[b].mass.mass;
+    // a backwall's mass: its one coordinate's diagonal entry of the (coupled) mass matrix
+    let wall = |w: usize| {
+        let i = bridge.dofs.range(w).start;
+        scheme.dense.as_ref().map(|d| d.sys.m[(i, i)])
+    };
+    let masses = joints
+        .iter()
+        .map(|j| effective_mass(segment(j.a), segment(j.b)).ok())
+        .chain(abutments.iter().map(|a| match a.wall {
+            Some(w) => effective_mass(segment(a.body), wall(w)?).ok(),
+            None => Some(segment(a.body)),
+        }));
+    sites
+        .iter()
+        .zip(masses)
+        .filter_map(|(site, m)| law_time_step_advice(site.law.law(), scheme.h, m?, 1.0).ok())
+        .min_by(|a, b| a.steps_per_contact.total_cmp(&b.steps_per_contact))
+}
+
 impl ComplianceStepper {
     /// The stepper at the initial state `(q0, u0)`: law states open at the initial gaps
     /// (committed `δ = −g_N(q_0)`). `sites` holds the law of every joint of `joints` and then of
     /// every abutment of `abutments` (subsets of the bridge's, in bridge order: the compliance
-    /// sites; a mixed bridge's rigid sites are the rigid stepper's). The time-step advice
-    /// uses the first joint's law and the smallest two-segment effective mass over the joints
-    /// (with no joint: the first site and the smallest segment mass).
+    /// sites; a mixed bridge's rigid sites are the rigid stepper's). The time-step advice is
+    /// that of the site with the fewest steps per contact ([`site_time_step_advice`]).
     pub fn new(
         q0: &State,
         u0: &State,
@@ -160,18 +189,7 @@ impl ComplianceStepper {
         let (h, th) = (scheme.h, scheme.th);
         let n = bridge.dofs.len();
         let n_ends = 2 * sites.len();
-        let m_eff = bridge
-            .joints
-            .iter()
-            .filter_map(|j| {
-                effective_mass(bridge.bodies[j.a].mass.mass, bridge.bodies[j.b].mass.mass).ok()
-            })
-            .reduce(Real::min)
-            .or_else(|| bridge.bodies.iter().map(|b| b.mass.mass).reduce(Real::min));
-        let advice = match (m_eff, sites.first()) {
-            (Some(m), Some(site)) => law_time_step_advice(site.law.law(), h, m, 1.0).ok(),
-            _ => None,
-        };
+        let advice = site_time_step_advice(&sites, (&joints, &abutments), scheme, bridge);
         let mut posed = vec![false; bridge.bodies.len()];
         for j in &joints {
             (posed[j.a], posed[j.b]) = (true, true);

@@ -1,5 +1,6 @@
-//! `batch.csv` of `pounding simulate --records` (one row per `(record, scale)` run), for the
-//! two-deck model ([`batch_csv`]) and for bridges ([`bridge_batch_csv`]); of a record-set
+//! `batch.csv` of `pounding simulate --records` (one row per `(record, scale)` run), for bridges
+//! ([`bridge_batch_header`]: one writer, [`bridge_cells`]) and for the two-deck model (its columns,
+//! [`BATCH_HEADER`], a translation of the bridge row: [`PAIR_BATCH_COLUMNS`]); of a record-set
 //! manifest (`--set`), with the columns of its entries after `record` ([`batch_set_csv`]).
 
 use super::DEG;
@@ -9,6 +10,10 @@ use crate::math::Real;
 use crate::output::float_token;
 use crate::sim::batch::{BatchOutcome, BatchRow};
 use crate::sim::bridge::{ABUTMENT_SIDES, BridgeSummary};
+
+mod pair;
+use pair::two_deck_batch_csv;
+pub use pair::{PAIR_BATCH_COLUMNS, PairBatchCell};
 
 /// CSV field: quoted when it contains a comma, a quote or a line break.
 pub(super) fn field(s: &str) -> String {
@@ -54,79 +59,61 @@ fn tail_cells(
     c
 }
 
-/// `batch.csv`: [`BATCH_HEADER`], then one row per run (a run that failed has `status = error`
-/// and its message in `error`), with the [`BATCH_TAIL`] columns appended after `error`.
-fn two_deck_batch_csv(rows: &[BatchRow], set: Option<&RecordSet>) -> String {
-    rows_csv(BATCH_HEADER, rows, set, |o, c| {
-        let m = &o.summary;
-        let joint = &m.joints[0];
-        c.push(format!("{:?}", o.status));
-        c.push(m.impacts.to_string());
-        c.push(o.impacting_contacts.to_string());
-        for v in [
-            joint.peak_closing,
-            joint.peak_opening,
-            m.segments[0].peak_rotation * DEG,
-            m.segments[1].peak_rotation * DEG,
-            joint.peak_slip,
-            m.peak_seat_displacement,
-        ] {
-            c.push(float_token(v));
+/// A `batch.csv` as cells: the header's names and each row's CSV fields.
+struct Grid {
+    header: Vec<String>,
+    rows: Vec<Vec<String>>,
+}
+
+impl Grid {
+    /// The index of the column `name` (present: the translations name columns of the layout).
+    fn col(&self, name: &str) -> usize {
+        let i = self.header.iter().position(|h| h == name);
+        i.unwrap_or_else(|| panic!("batch.csv has no column {name}"))
+    }
+
+    /// The CSV text: the header, then one line per row.
+    fn csv(&self) -> String {
+        let mut s = self.header.join(",");
+        s.push('\n');
+        for r in &self.rows {
+            debug_assert_eq!(r.len(), self.header.len());
+            s.push_str(&r.join(","));
+            s.push('\n');
         }
-        c.push(m.unseated.to_string());
-        c.push(m.unseating_time.map_or(String::new(), float_token));
-        c.push(super::pair_unseated_end(m).unwrap_or_default());
-        let e = &m.final_energy;
-        for v in [
-            m.peak_penetration,
-            m.energy_balance_error,
-            e.input,
-            e.viscous,
-            e.contact,
-            crate::sim::step_time(o.steps, o.dt),
-        ] {
-            c.push(float_token(v));
-        }
-        c.push(o.steps.to_string());
-        c.push(o.lcp_solves.to_string());
-        c.push(o.lcp_failures.to_string());
-        let peak = joint.peak_contact_force;
-        c.extend(tail_cells(
-            peak.is_some(),
-            peak,
-            o.time_step_advice,
-            o.newton_failures,
-            o.warnings,
-        ));
-    })
+        s
+    }
+}
+
+/// The columns of `header` with, for a record `set`, its columns after `record`
+/// (`record_y`, `record_x`, `meta_<name>`), and the set's metadata names.
+fn with_set(header: &str, set: Option<&RecordSet>) -> (Vec<String>, Vec<String>) {
+    let mut h: Vec<String> = header.split(',').map(String::from).collect();
+    let Some(set) = set else {
+        return (h, Vec::new());
+    };
+    let meta = set.meta_keys();
+    let cols = ["record_y".to_string(), "record_x".to_string()];
+    let cols = cols
+        .into_iter()
+        .chain(meta.iter().map(|k| format!("meta_{k}")));
+    h.splice(2..2, cols);
+    (h, meta)
 }
 
 /// `header`, then one row per run: `index, record, scale`, then for a run that failed
 /// `, , error`, empty cells and the message in the last column (`error`); else the PGA in g and
 /// m/s², the cells of `cells` and an empty `error`. With a record `set` (the rows' records are
 /// its entries, in its order), its columns ([`set_columns`]) follow `record`.
-fn rows_csv(
+fn grid(
     header: &str,
     rows: &[BatchRow],
     set: Option<&RecordSet>,
     cells: impl Fn(&BatchOutcome, &mut Vec<String>),
-) -> String {
-    let (header, meta) = match set {
-        None => (header.to_string(), Vec::new()),
-        Some(set) => {
-            let meta = set.meta_keys();
-            let mut h: Vec<String> = header.split(',').map(String::from).collect();
-            let cols = ["record_y".to_string(), "record_x".to_string()];
-            let cols = cols
-                .into_iter()
-                .chain(meta.iter().map(|k| format!("meta_{k}")));
-            h.splice(2..2, cols);
-            (h.join(","), meta)
-        }
-    };
-    let ncols = header.split(',').count();
-    let mut s = format!("{header}\n");
-    for r in rows {
+) -> Grid {
+    let (header, meta) = with_set(header, set);
+    let ncols = header.len();
+    let rows = rows.iter().map(|r| {
         let mut c: Vec<String> = vec![r.index.to_string(), field(&r.record)];
         if let Some(set) = set {
             c.extend(set_columns(set, &meta, r.record_index));
@@ -145,11 +132,12 @@ fn rows_csv(
                 c.push(String::new());
             }
         }
-        debug_assert_eq!(c.len(), ncols);
-        s.push_str(&c.join(","));
-        s.push('\n');
+        c
+    });
+    Grid {
+        rows: rows.collect(),
+        header,
     }
-    s
 }
 
 /// The cells of entry `a` of `set` after `record`: `record_y` (the entry's `x` record, which
@@ -183,7 +171,7 @@ viscous_dissipation_J,contact_dissipation_J,hysteretic_dissipation_J,restrainer_
 duration_s,steps,lcp_solves,lcp_failures";
 
 /// Per-joint columns of a bridge's `batch.csv` (after `joint<k>_`, `k` 1-based).
-const BRIDGE_JOINT_COLS: [&str; 8] = [
+const BRIDGE_JOINT_COLS: [&str; 9] = [
     "impacts",
     "peak_closing_m",
     "peak_opening_m",
@@ -192,6 +180,7 @@ const BRIDGE_JOINT_COLS: [&str; 8] = [
     "restrainer_engagements",
     "restrainer_peak_force_n",
     "unseated",
+    "peak_slip_m",
 ];
 /// Per-abutment columns (after `abutment_start_` / `abutment_end_`).
 const BRIDGE_ABUTMENT_COLS: [&str; 4] = [
@@ -331,6 +320,7 @@ fn bridge_cells(o: &BatchOutcome, c: &mut Vec<String>) {
         c.push(j.restrainer_engagements.to_string());
         c.push(opt(j.restrainer_peak_force));
         c.push(j.unseated.to_string());
+        c.push(float_token(j.peak_slip));
     }
     for a in &m.abutments {
         match a {
@@ -394,16 +384,16 @@ fn bridge_cells(o: &BatchOutcome, c: &mut Vec<String>) {
     ));
 }
 
-/// A bridge's `batch.csv` ([`bridge_batch_header`], then one row per run; a run that failed has
+/// A bridge's `batch.csv` as cells ([`bridge_batch_header`], then one row per run; a run that failed has
 /// `status = error`, empty cells and its message in `error`). Absent or not-applicable items
 /// (an abutment the bridge does not have, the contact force of the rigid law, a joint without a
 /// restrainer, no unseating, no joint at all for one segment) are empty fields; a value that is
 /// not a number is `nan` (the project's CSV tokens, [`float_token`]).
-fn bridge_batch_csv(n_segments: usize, rows: &[BatchRow], set: Option<&RecordSet>) -> String {
+fn bridge_grid(n_segments: usize, rows: &[BatchRow], set: Option<&RecordSet>) -> Grid {
     let shape = rows
         .iter()
         .find_map(|r| r.outcome.as_ref().ok().map(|o| &o.summary));
-    rows_csv(&bridge_header(n_segments, shape), rows, set, bridge_cells)
+    grid(&bridge_header(n_segments, shape), rows, set, bridge_cells)
 }
 
 /// `batch.csv` of a batch in `layout`: the two-deck model's columns ([`BATCH_HEADER`]) or a
@@ -412,7 +402,7 @@ fn bridge_batch_csv(n_segments: usize, rows: &[BatchRow], set: Option<&RecordSet
 pub fn batch_csv(layout: super::Layout, n_segments: usize, rows: &[BatchRow]) -> String {
     match layout {
         super::Layout::TwoDecks => two_deck_batch_csv(rows, None),
-        super::Layout::Bridge => bridge_batch_csv(n_segments, rows, None),
+        super::Layout::Bridge => bridge_grid(n_segments, rows, None).csv(),
     }
 }
 
@@ -429,6 +419,6 @@ pub fn batch_set_csv(
 ) -> String {
     match layout {
         super::Layout::TwoDecks => two_deck_batch_csv(rows, Some(set)),
-        super::Layout::Bridge => bridge_batch_csv(n_segments, rows, Some(set)),
+        super::Layout::Bridge => bridge_grid(n_segments, rows, Some(set)).csv(),
     }
 }

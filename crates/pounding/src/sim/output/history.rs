@@ -1,12 +1,13 @@
 //! `history.csv`: the run's histories as one [`Table`]-shaped view, written by the one CSV writer
 //! ([`table::csv_rows`]) and handed to Python as numbers (no text in between).
 //!
-//! One solution ([`BridgeSolution`]) has two layouts: a bridge's (`[[segment]]` files; per segment
-//! `x<i>, y<i>, θ<i>` and their rates, two end gaps per joint, joint forces, abutment gaps, six
-//! energy terms) and the two-deck model's (its file's columns: the four candidate gaps, the two
-//! joint end gaps, the slip, five energy terms, end forces, `abutment_gap<j>`). A layout is a list
-//! of columns, each naming the series of the solution it reads ([`Series`]); one loop writes
-//! every layout.
+//! One solution ([`BridgeSolution`]) has one layout, a bridge's (`[[segment]]` files; per segment
+//! `x<i>, y<i>, θ<i>` and their rates, two end gaps per joint, each joint's slip, joint forces,
+//! abutment gaps, six energy terms), and the two-deck model's file is its translation
+//! ([`PAIR_HISTORY_COLUMNS`]: the bridge's columns under the two-deck names, in the two-deck
+//! order, plus what only the form writes: the four candidate gaps and the two end forces). A layout
+//! is a list of columns, each naming the series of the solution it reads ([`Series`]); one loop
+//! writes every layout.
 
 use super::{DEG, Layout};
 use crate::geometry::ContactCase;
@@ -53,6 +54,57 @@ const ENERGY: [&str; 7] = [
     "projection_work",
 ];
 
+/// A column (or columns) of the two-deck `history.csv`, in its order.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PairHistoryColumn {
+    /// `(two-deck name, bridge name)`: the bridge column under the two-deck name (the two-deck
+    /// model is the bridge of two segments; its joint is joint 1, its abutments of decks 1 and 2
+    /// the start and end abutments).
+    Renamed(&'static str, &'static str),
+    /// Only the form writes: the joint's four candidate gaps `gap_<case>_m`
+    /// ([`ContactCase::ALL`] order).
+    CandidateGaps,
+    /// Only the form writes (compliance laws): the normal force of each joint end,
+    /// `contact_force_xplus_N`, `contact_force_xminus_N` (the bridge writes their sum,
+    /// `joint1_force_N`).
+    EndForces,
+}
+
+/// The two-deck `history.csv` as a translation of the bridge's.
+pub const PAIR_HISTORY_COLUMNS: [PairHistoryColumn; 28] = {
+    use PairHistoryColumn::{CandidateGaps, EndForces, Renamed as R};
+    [
+        R("t", "t"),
+        R("ag_x", "ag_x"),
+        R("ag_y", "ag_y"),
+        R("x1", "x1"),
+        R("y1", "y1"),
+        R("theta1", "theta1"),
+        R("x2", "x2"),
+        R("y2", "y2"),
+        R("theta2", "theta2"),
+        R("vx1", "vx1"),
+        R("vy1", "vy1"),
+        R("omega1", "omega1"),
+        R("vx2", "vx2"),
+        R("vy2", "vy2"),
+        R("omega2", "omega2"),
+        CandidateGaps,
+        R("joint_gap_xplus", "joint1_gap_c0"),
+        R("joint_gap_xminus", "joint1_gap_c1"),
+        R("slip", "joint1_slip"),
+        R("input_energy", "input_energy"),
+        R("kinetic_energy", "kinetic_energy"),
+        R("strain_energy", "strain_energy"),
+        R("viscous_dissipation", "viscous_dissipation"),
+        R("contact_dissipation", "contact_dissipation"),
+        R("projection_work", "projection_work"),
+        EndForces,
+        R("abutment_gap1", "abutment_start_gap"),
+        R("abutment_gap2", "abutment_end_gap"),
+    ]
+};
+
 /// A run's `history.csv`: its columns and where each reads.
 pub struct History<'a> {
     sol: &'a BridgeSolution,
@@ -91,6 +143,9 @@ impl<'a> History<'a> {
                 );
             }
         }
+        for k in 0..nj {
+            h.push(format!("joint{}_slip", k + 1), "m", Series::Slip(k));
+        }
         if !sol.contact_force.is_empty() {
             for k in 0..nj {
                 h.push(format!("joint{}_force", k + 1), "N", Series::JointForce(k));
@@ -115,31 +170,36 @@ impl<'a> History<'a> {
         }
     }
 
-    /// The two-deck model's layout (the bridge of two segments).
+    /// The two-deck model's layout: the bridge layout of its two segments translated by
+    /// [`PAIR_HISTORY_COLUMNS`] (a bridge column the run does not write is left out: the
+    /// projection's work without the projection, an absent abutment's gap).
     fn two_decks(sol: &'a BridgeSolution, ground: &'a GroundMotion, abutments: [bool; 2]) -> Self {
-        let mut h = Self::head(sol, ground);
-        h.states(2);
-        for (k, c) in ContactCase::ALL.iter().enumerate() {
-            h.push(format!("gap_{}", c.name()), "m", Series::CandidateGap(k));
-        }
-        h.push("joint_gap_xplus", "m", Series::EndGap(0));
-        h.push("joint_gap_xminus", "m", Series::EndGap(1));
-        h.push("slip", "m", Series::Slip(0));
-        for (i, e) in ENERGY[..5].iter().enumerate() {
-            h.push(*e, "J", Series::Energy(i));
-        }
-        h.projection_work();
-        if !sol.contact_force.is_empty() {
-            h.push("contact_force_xplus", "N", Series::EndForce(0));
-            h.push("contact_force_xminus", "N", Series::EndForce(1));
-        }
-        // abutment gap columns only when there are abutments (the default's file is unchanged)
-        for j in (0..2).filter(|&j| abutments[j]) {
-            h.push(
-                format!("abutment_gap{}", j + 1),
-                "m",
-                Series::AbutmentGap(j),
-            );
+        let bridge = Self::bridge(sol, ground, abutments);
+        let mut h = History {
+            sol,
+            ground,
+            columns: Vec::new(),
+            series: Vec::new(),
+        };
+        for col in PAIR_HISTORY_COLUMNS {
+            match col {
+                PairHistoryColumn::Renamed(name, from) => {
+                    let i = bridge.columns.iter().position(|c| c.name == from);
+                    if let Some(i) = i {
+                        h.push(name, bridge.columns[i].unit, bridge.series[i]);
+                    }
+                }
+                PairHistoryColumn::CandidateGaps => {
+                    for (k, c) in ContactCase::ALL.iter().enumerate() {
+                        h.push(format!("gap_{}", c.name()), "m", Series::CandidateGap(k));
+                    }
+                }
+                PairHistoryColumn::EndForces if !sol.contact_force.is_empty() => {
+                    h.push("contact_force_xplus", "N", Series::EndForce(0));
+                    h.push("contact_force_xminus", "N", Series::EndForce(1));
+                }
+                PairHistoryColumn::EndForces => {}
+            }
         }
         h
     }

@@ -22,7 +22,10 @@ mod impacts;
 mod input_warnings;
 mod trajectories;
 mod verdict;
-pub use batch::{BATCH_HEADER, BATCH_TAIL, batch_csv, batch_set_csv, bridge_batch_header};
+pub use batch::{
+    BATCH_HEADER, BATCH_TAIL, PAIR_BATCH_COLUMNS, PairBatchCell, batch_csv, batch_set_csv,
+    bridge_batch_header,
+};
 pub(crate) use bridge::bridge_summary_json;
 pub use bridge::governing_seat_line;
 pub use bridge_plan::{
@@ -36,7 +39,7 @@ pub use compare_bridge::{
 };
 pub use estimate::{PeakEstimate, SiteKey, peak_force_estimates};
 pub(crate) use estimate::{largest_estimate, peak_estimate_json, rigid_estimate, setup_estimates};
-pub use history::History;
+pub use history::{History, PAIR_HISTORY_COLUMNS, PairHistoryColumn};
 pub use impacts::{impacts_csv, impacts_table, run_warnings};
 pub use input_warnings::{InputWarning, input_warnings, warning_sentence};
 pub use trajectories::{TRAJECTORY_MAX_FRAMES, trajectories_json, trajectory_stride};

@@ -1,22 +1,17 @@
-//! [`Scenario::build`]: the model, the ground motion and the settings from the sections, every
-//! value validated with errors located at its key.
+//! The two-deck model of a scenario: the deck shapes of `[decks]`, the joint, abutments,
+//! bearings, damping and contact law, every value validated with errors located at its key.
 
-use super::contact::{FileKeys, build_contact};
-use super::error::{ParamKey, ScenarioError, Section};
-pub(super) use super::ground::build_ground;
-pub(super) use super::model_keys::sim_error;
-use super::model_keys::{scaled_mass_error, time};
-use super::sections::{DecksSec, Raw};
-use super::{Scenario, SimSetup, Src};
-use crate::ground_motion::GroundMotion;
-use crate::math::{Real, Vector};
+use crate::math::Vector;
 use crate::output::float_token;
 use crate::pair::SArrangement;
 use crate::shape::Deck;
 use crate::shape::{DeckShape, SkewedDeck, StraightDeck};
-use crate::sim::{
-    Bearing, DampingModel, JointContact, SimAbutment, SimModel, SimProblem, SimSettings,
-};
+use crate::sim::scenario::contact::{FileKeys, build_contact};
+use crate::sim::scenario::error::{ParamKey, ScenarioError, Section};
+use crate::sim::scenario::model_keys::sim_error;
+use crate::sim::scenario::sections::{DecksSec, Raw};
+use crate::sim::scenario::{Scenario, Src};
+use crate::sim::{Bearing, DampingModel, JointContact, SimAbutment, SimModel};
 
 const fn decks(key: &'static str) -> ParamKey {
     ParamKey::new(Section::Decks, key)
@@ -122,7 +117,7 @@ fn deck_shapes(src: &Src, d: &DecksSec) -> Result<Option<[DeckShape; 2]>, Scenar
 }
 
 /// The model of `[decks]`, `[joint]`, `[abutments]`, `[bearings]` and `[contact]`.
-fn build_model(sc: &Scenario) -> Result<SimModel, ScenarioError> {
+pub(super) fn build_model(sc: &Scenario) -> Result<SimModel, ScenarioError> {
     let (src, raw): (&Src, &Raw) = (&sc.src, &sc.raw);
     let d = &raw.decks;
     let deck = |r: f64, b: f64| Deck {
@@ -272,197 +267,6 @@ fn abutments_need_rigid_contact(sc: &Scenario) -> ScenarioError {
         ),
         at,
     }
-}
-
-/// The error of a step `dt` longer than the run `duration`. Without `[time] duration` the
-/// duration is the ground motion's: the record is blamed (its name and length), and `dt` is
-/// named as set (its line, or "the built-in default dt").
-fn dt_beyond_duration(
-    sc: &Scenario,
-    settings: &SimSettings,
-    duration: Real,
-    records: &[String; 2],
-) -> ScenarioError {
-    let src = &sc.src;
-    let dt_at = src.at(time("dt"));
-    if settings.duration.is_some() {
-        return ScenarioError::Invalid {
-            message: format!(
-                "invalid dt = {}: must not exceed the duration {} s",
-                float_token(settings.dt),
-                float_token(duration)
-            ),
-            at: vec![dt_at, src.at(time("duration"))],
-            note: String::new(),
-        };
-    }
-    let names: Vec<&str> = records
-        .iter()
-        .map(String::as_str)
-        .filter(|r| !r.trim().eq_ignore_ascii_case("none"))
-        .collect();
-    let dt_by = match src.builtin && dt_at.flag.is_none() {
-        true => "the built-in default dt".to_string(),
-        false => format!("set by {dt_at}"),
-    };
-    ScenarioError::Key {
-        message: format!(
-            "the ground motion lasts only {} s (the last sample of record {}), less than one time \
-             step dt = {} s ({dt_by}): check the record's sample interval, or set [time] duration",
-            float_token(duration),
-            names.join(" and "),
-            float_token(settings.dt)
-        ),
-        at: vec![dt_at],
-    }
-}
-
-/// A deck whose bearings leave it free to slide or spin (lowest natural frequency zero, or below
-/// `1e-6` of its highest: a singular bearing stiffness) is an error naming the deck and its
-/// bearing key, unless `[bearings] allow_mechanism = true`.
-fn check_mechanism(sc: &Scenario, frequencies: &[[f64; 3]; 2]) -> Result<(), ScenarioError> {
-    let (src, b) = (&sc.src, &sc.raw.bearings);
-    if b.allow_mechanism {
-        return Ok(());
-    }
-    for (j, w) in frequencies.iter().enumerate() {
-        if w[0] > 1e-6 * w[2] {
-            continue;
-        }
-        let deck = j as u8 + 1;
-        let name = if j == 0 { "points1" } else { "points2" };
-        let pts = ParamKey::of_deck(Section::Bearings, name, deck);
-        let key = if src.is_set(pts) {
-            pts
-        } else {
-            ParamKey::of_deck(
-                Section::Bearings,
-                if j == 0 { "stiffness1" } else { "stiffness2" },
-                deck,
-            )
-        };
-        let allow = ParamKey::new(Section::Bearings, "allow_mechanism");
-        return Err(src.key_error(
-            format!(
-                "deck{deck}: its bearings ({}) leave it free to slide or spin (a mechanism: a natural \
-                 frequency of zero, a singular bearing stiffness); give bearings that hold it in x, y \
-                 and rotation (at least two points, not all at one point), or set {} = true to \
-                 simulate it anyway",
-                src.at(key),
-                allow
-            ),
-            &[key],
-        ));
-    }
-    Ok(())
-}
-
-/// [`Scenario::build`].
-pub(super) fn build(sc: &Scenario) -> Result<SimSetup, ScenarioError> {
-    let src = &sc.src;
-    let model = build_model(sc)?;
-    super::supports::refuse_apart(sc)?;
-    let (ground, records, units) = build_ground(sc)?;
-    let bearings = model.bearings1.len() + model.bearings2.len();
-    let size = crate::sim::options::RunSize {
-        segments: 2,
-        bearings,
-    };
-    let settings = build_settings(sc, &ground, &records, size, || {
-        model.validate().map_err(|e| scaled_mass_error(src, e))?;
-        let frequencies = model.check().map_err(|e| sim_error(src, e))?;
-        check_mechanism(sc, &frequencies)
-    })?;
-    Ok(SimSetup {
-        problem: SimProblem::at_rest(model, ground),
-        settings,
-        records,
-        units,
-    })
-}
-
-/// `[time]`: the settings of a run under `ground`, checked against its duration and the memory
-/// limit; `model_checks` runs once the settings themselves are valid (the order of the errors
-/// a file with several mistakes reports).
-pub(super) fn build_settings(
-    sc: &Scenario,
-    ground: &GroundMotion,
-    records: &[String; 2],
-    // the memory estimate's bridge (segments, and piers counted as segments; its bearings)
-    size: crate::sim::options::RunSize,
-    model_checks: impl FnOnce() -> Result<(), ScenarioError>,
-) -> Result<SimSettings, ScenarioError> {
-    let src = &sc.src;
-    let t = &sc.raw.time;
-    if t.history_every < 1 {
-        return Err(src.invalid(
-            format!("invalid history_every = {}: must be >= 1", t.history_every),
-            time("history_every"),
-        ));
-    }
-    let settings = SimSettings {
-        dt: t.dt,
-        duration: t.duration,
-        history_stride: t.history_every as usize,
-        projection: t.projection,
-        ..SimSettings::default()
-    };
-    settings.validate().map_err(|e| sim_error(src, e))?;
-    model_checks()?;
-    if !sc.batch && settings.duration.is_none() && ground.end_time() <= 0.0 {
-        return Err(src.key_error(
-            format!(
-                "no ground motion samples after t = 0: set {}",
-                src.at(time("duration"))
-            ),
-            &[time("duration")],
-        ));
-    }
-    // The duration of the run (batch runs without `duration` use each record's length, checked
-    // there).
-    let duration = settings.duration.or((!sc.batch).then(|| ground.end_time()));
-    if let Some(d) = duration {
-        settings.step_count(d).map_err(|e| {
-            let mut at = vec![src.at(time("dt"))];
-            if src.is_set(time("duration")) {
-                at.push(src.at(time("duration")));
-            }
-            ScenarioError::Invalid {
-                message: e.to_string(),
-                at,
-                note: String::new(),
-            }
-        })?;
-        use crate::sim::options::{MAX_RUN_MEMORY_BYTES, min_history_stride, run_memory_bytes};
-        let n = settings.step_count(d).unwrap_or(usize::MAX);
-        let bytes = run_memory_bytes(n, settings.history_stride, size);
-        if !sc.batch && bytes > MAX_RUN_MEMORY_BYTES {
-            let gib = |b: u64| b as Real / (1u64 << 30) as Real;
-            let advice = match min_history_stride(n, size) {
-                Some(s) => format!("set history_every >= {s} (or shorten the run)"),
-                None => "shorten the run or use a larger dt".into(),
-            };
-            return Err(ScenarioError::Invalid {
-                message: format!(
-                    "run too large: {n} steps with history_every = {} need an estimated {:.1} GiB \
-                     of memory, more than the limit {:.0} GiB; {advice}",
-                    settings.history_stride,
-                    gib(bytes),
-                    gib(MAX_RUN_MEMORY_BYTES)
-                ),
-                at: vec![
-                    src.at(time("history_every")),
-                    src.at(time("duration")),
-                    src.at(time("dt")),
-                ],
-                note: String::new(),
-            });
-        }
-        if settings.dt > d {
-            return Err(dt_beyond_duration(sc, &settings, d, records));
-        }
-    }
-    Ok(settings)
 }
 
 /// `[decks] mass1`, `mass2` (the deck's mass given directly: its density becomes

@@ -1,5 +1,6 @@
 //! The load path of each deck segment: every force acting on it, by member, as the integrator
-//! applies it (`segment_forces.csv`).
+//! applies it, summed over the steps between kept rows ([`StepLoads`], which the driver feeds;
+//! the observer `SegmentForces` writes `segment_forces.csv` from it).
 //!
 //! # What a row holds
 //! One step `k → k+1` of the θ-method (θ = ½ by default) is the momentum balance of every
@@ -35,15 +36,13 @@
 use super::contact::State;
 use super::elements::StepForce;
 use super::excitation::Offsets;
-use super::observer::{Observer, Snapshot};
-use super::scheme::{Scheme, Work};
-use super::table::{Column, Table, TableSource};
+use super::scheme::Scheme;
 use super::view::Bridge;
 use crate::math::Real;
 
 /// The kinds of member a segment's forces come from, in column order (shear keys only when the
 /// bridge has some).
-const KINDS: [&str; 5] = [
+pub(crate) const KINDS: [&str; 5] = [
     "bearings",
     "dashpots",
     "restrainers",
@@ -52,28 +51,40 @@ const KINDS: [&str; 5] = [
 ];
 /// Indices into [`KINDS`] (the sums of [`StepLoads`] are laid out in that order).
 const BEARINGS: usize = 0;
-const SHEAR_KEYS: usize = 3;
+const DASHPOTS: usize = 1;
+pub(crate) const SHEAR_KEYS: usize = 3;
 
-/// The forces on each segment summed over the steps since the last kept row: the driver adds
-/// every step ([`Self::add_step`]: a few additions per coordinate, the linear bearings' `K` is
-/// applied once per row to the summed `q_θ`) and, at a kept row, forms the means
-/// ([`Self::close`]) that the observer reads.
+/// The forces on each segment summed over the steps since the last kept row.
+///
+/// Every step adds only `q_k` and `ū_θ` to two sums ([`Self::add_step`], inlined into the time
+/// loop: two additions per coordinate); the members that only some runs have (elements, moving
+/// supports, a contact impulse) add their parts out of line ([`Self::add_members`]). At a kept row
+/// ([`Self::close`]) the linear operators act once on the sums, since they are linear:
+/// `Σ (−K q_θ) = −K (Σ q_k + θ h Σ ū_θ)` and `Σ (−C ū_θ) = −C Σ ū_θ`; then the means that the
+/// observer reads.
 pub(crate) struct StepLoads {
     /// Per coordinate of the segments: its segment and its place in `(x, y, θ)`.
     owner: Vec<(usize, usize)>,
     /// The segments' coordinates: `0..m` (the first bodies').
     m: usize,
-    /// `Σ q_θ` over the steps, every coordinate (`K` couples a segment to the caps under it).
-    q_th: State,
-    /// Per kind, `m` sums over the steps (kind-major): the bearings' held part `R̄_b` and the
-    /// supports' `P_K d̄`, `−C ū_θ` and `P_C v̄`, the cables', the keys', the contact impulse / `h`.
+    /// `Σ q_k` and `Σ ū_θ` over the steps, every coordinate (`K` and `C` couple a segment to the
+    /// caps under it).
+    q_sum: State,
+    u_sum: State,
+    /// Per kind, `m` sums over the steps (kind-major) of what [`Self::add_members`] adds: the
+    /// bearings' held part `R̄_b` and the supports' `P_K d̄`, their `P_C v̄`, the cables', the
+    /// keys', the contact impulse / `h`.
     sums: Vec<Real>,
+    /// `sums` holds something (cleared at a row only then).
+    members: bool,
     /// Steps summed.
     steps: usize,
     /// Per segment and kind: the mean `(F_x, F_y, M_z)` at the last kept row.
     means: Vec<[Real; 3]>,
-    /// Scratch: `K Σ q_θ`, a product's second part, `P_K d̄`, `P_C v̄`.
+    /// Scratch: `Σ q_θ`, `K Σ q_θ`, `C Σ ū_θ`, a product's second part, `P_K d̄`, `P_C v̄`.
+    q_th: State,
     kq: State,
+    cu: State,
     scratch: State,
     pk: State,
     pc: State,
@@ -96,49 +107,51 @@ impl StepLoads {
         StepLoads {
             owner,
             m,
-            q_th: State::zeros(n),
+            q_sum: State::zeros(n),
+            u_sum: State::zeros(n),
             sums: vec![0.0; KINDS.len() * m],
+            members: false,
             steps: 0,
             means: vec![[0.0; 3]; segments * KINDS.len()],
+            q_th: State::zeros(n),
             kq: State::zeros(n),
+            cu: State::zeros(n),
             scratch: State::zeros(n),
             pk: State::zeros(n),
             pc: State::zeros(n),
         }
     }
 
-    /// Adds the forces of step `k → k+1` (module doc): `q = q_k`, `w` after the ledger's
-    /// update (`ū_θ` in `w.u_th`, `C ū_θ` in `w.cv`), `el` the elements' force of the step
-    /// (`None`: no elements), `impulse` the contact impulse, `offs` the supports' offsets over
-    /// the step when they move apart.
-    pub fn add_step(
+    /// Adds step `k → k+1` (module doc): `q = q_k`, `u_th = ū_θ` (after the ledger's update).
+    #[inline(always)]
+    pub fn add_step(&mut self, q: &State, u_th: &State) {
+        // plain slices (nalgebra's iterators step by strides): the loop vectorises
+        let sums = self.q_sum.as_mut_slice().iter_mut();
+        let sums = sums.zip(self.u_sum.as_mut_slice().iter_mut());
+        for ((qs, us), (q, u)) in sums.zip(q.as_slice().iter().zip(u_th.as_slice())) {
+            *qs += q;
+            *us += u;
+        }
+        self.steps += 1;
+    }
+
+    /// Adds the parts of step `k → k+1` of the members only some runs have: `el` the elements'
+    /// force of the step (`None`: no elements), `impulse` the contact impulse, `offs` the
+    /// supports' offsets over the step when they move apart.
+    #[inline(never)]
+    pub fn add_members(
         &mut self,
         sc: &Scheme,
-        q: &State,
-        w: &Work,
         el: Option<&StepForce>,
         impulse: Option<&State>,
         offs: Option<&Offsets>,
     ) {
-        let (h, c) = (sc.h, sc.th * sc.h);
         let m = self.m;
-        // plain slices of equal lengths: the loops vectorise (a step adds a few operations per
-        // coordinate)
-        let (q, u) = (q.as_slice(), w.u_th.as_slice());
-        let q_th = self.q_th.as_mut_slice();
-        let n = q_th.len().min(q.len()).min(u.len());
-        let (q_th, q, u) = (&mut q_th[..n], &q[..n], &u[..n]);
-        for i in 0..n {
-            q_th[i] += q[i] + u[i] * c;
-        }
+        self.members = true;
         let (bear, rest) = self.sums.split_at_mut(m);
         let (dash, rest) = rest.split_at_mut(m);
         let (cables, rest) = rest.split_at_mut(m);
         let (keys, contact) = rest.split_at_mut(m);
-        let cv = &w.cv.as_slice()[..m];
-        for i in 0..m {
-            dash[i] -= cv[i];
-        }
         if let (Some(o), Some(d)) = (offs, &sc.dense) {
             d.support_parts(sc.th, o, (&mut self.pk, &mut self.pc));
             for i in 0..m {
@@ -157,10 +170,9 @@ impl StepLoads {
         if let Some(p) = impulse {
             let p = &p.as_slice()[..m];
             for i in 0..m {
-                contact[i] += p[i] / h;
+                contact[i] += p[i] / sc.h;
             }
         }
-        self.steps += 1;
     }
 
     /// At a kept row: the means of the steps summed since the previous one (zero before any
@@ -170,81 +182,41 @@ impl StepLoads {
             self.means.fill([0.0; 3]);
             return;
         }
+        let c = sc.th * sc.h;
+        let sums = self.q_sum.as_slice().iter().zip(self.u_sum.as_slice());
+        for (qt, (qs, us)) in self.q_th.as_mut_slice().iter_mut().zip(sums) {
+            *qt = qs + us * c;
+        }
         sc.stiffness_into(&self.q_th, &mut self.kq, &mut self.scratch);
+        sc.damping_power(&self.u_sum, &mut self.cu);
         let (n, m) = (self.steps as Real, self.m);
-        let kq = &self.kq.as_slice()[..m];
+        let (kq, cu) = (&self.kq.as_slice()[..m], &self.cu.as_slice()[..m]);
         for (kind, sums) in self.sums.chunks_exact(m.max(1)).enumerate() {
             for (i, &(j, d)) in self.owner.iter().enumerate() {
-                let mut f = sums[i];
-                if kind == BEARINGS {
-                    f -= kq[i];
-                }
-                self.means[j * KINDS.len() + kind][d] = f / n;
+                let linear = match kind {
+                    BEARINGS => kq[i],
+                    DASHPOTS => cu[i],
+                    _ => 0.0,
+                };
+                self.means[j * KINDS.len() + kind][d] = (sums[i] - linear) / n;
             }
         }
-        self.q_th.as_mut_slice().fill(0.0);
-        self.sums.fill(0.0);
+        self.q_sum.as_mut_slice().fill(0.0);
+        self.u_sum.as_mut_slice().fill(0.0);
+        if self.members {
+            self.sums.fill(0.0);
+            self.members = false;
+        }
         self.steps = 0;
     }
 
     /// The mean force of `kind` on segment `j` at the last kept row.
-    fn mean(&self, j: usize, kind: usize) -> [Real; 3] {
+    pub fn mean(&self, j: usize, kind: usize) -> [Real; 3] {
         self.means[j * KINDS.len() + kind]
     }
-}
 
-/// `segment_forces.csv`: per segment and member kind, the mean force `(F_x, F_y, M_z)` over the
-/// steps since the previous row (module doc).
-pub(crate) struct SegmentForces {
-    table: Table,
-    /// The kinds recorded (shear keys only in a bridge with some).
-    kinds: Vec<usize>,
-}
-
-impl SegmentForces {
-    /// The columns of the segments of `bridge`.
-    pub fn new(bridge: &Bridge) -> Self {
-        let kinds: Vec<usize> = (0..KINDS.len())
-            .filter(|&k| k != SHEAR_KEYS || !bridge.elements.keys.is_empty())
-            .collect();
-        let mut columns = Vec::new();
-        for i in 1..=bridge.bodies.len() {
-            for &k in &kinds {
-                let p = format!("segment{i}_{}", KINDS[k]);
-                columns.push(Column::new(format!("{p}_fx"), "N"));
-                columns.push(Column::new(format!("{p}_fy"), "N"));
-                columns.push(Column::new(format!("{p}_mz"), "Nm"));
-            }
-        }
-        SegmentForces {
-            table: Table::with_time("segment_forces", columns),
-            kinds,
-        }
+    /// The segments.
+    pub fn segments(&self) -> usize {
+        self.means.len() / KINDS.len()
     }
-}
-
-impl Observer for SegmentForces {
-    fn reserve(&mut self, rows: usize) {
-        self.table.reserve_rows(rows);
-    }
-
-    fn observe(&mut self, s: &Snapshot<'_>) {
-        let v = &mut self.table.values;
-        v.push(s.t);
-        for j in 0..s.loads.means.len() / KINDS.len() {
-            for &k in &self.kinds {
-                v.extend(s.loads.mean(j, k));
-            }
-        }
-    }
-
-    fn into_source(self: Box<Self>) -> TableSource {
-        TableSource::Recorded(self.table)
-    }
-}
-
-/// The values per kept row of [`SegmentForces`] for a bridge of `segments` segments (with shear
-/// keys or not): for the memory estimate.
-pub(crate) fn values_per_row(segments: usize, shear_keys: bool) -> usize {
-    segments * 3 * (KINDS.len() - usize::from(!shear_keys))
 }
