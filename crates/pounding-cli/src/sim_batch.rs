@@ -75,8 +75,33 @@ fn entries(args: &Args, reading: &ReadOptions) -> Result<(Vec<BatchRecord>, Opti
     Ok((records, None))
 }
 
+/// Refuses, before the batch is announced, support-motion entries that no run of `setup` could
+/// take (a two-deck scenario, a scenario with its own wave passage, a bridge the supports do not
+/// match): the error names the manifest, the entry's `supports` key and its line.
+fn check_supports(setup: &Setup, records: &[BatchRecord], manifest: Option<&Path>) -> Result<()> {
+    match manifest {
+        Some(m) => pounding::sim::batch_supports::check_set_supports(
+            setup,
+            records,
+            m,
+            setup_origin(setup),
+        ),
+        None => pounding::sim::batch::check_support_entries(setup, records),
+    }
+    .map_err(|e| anyhow!("{e}"))
+}
+
+/// The scenario a batch runs, as its messages name it.
+fn setup_origin(setup: &Setup) -> &'static str {
+    if setup.layout() == pounding::sim::output::Layout::TwoDecks {
+        "a two-deck scenario"
+    } else {
+        "this bridge scenario"
+    }
+}
+
 /// Parses and checks the batch flags, reads the records and prints the plan.
-fn plan(args: &Args, reading: &ReadOptions) -> Result<Plan> {
+fn plan(args: &Args, setup: &Setup, reading: &ReadOptions) -> Result<Plan> {
     let scales = if args.scales.is_empty() {
         vec![1.0]
     } else {
@@ -89,6 +114,7 @@ fn plan(args: &Args, reading: &ReadOptions) -> Result<Plan> {
     pounding::input::check_threads(args.threads).map_err(anyhow::Error::msg)?;
     let (records, set) = entries(args, reading)?;
     pounding::sim::batch::validate_lists(&records, &scales).map_err(|e| anyhow!("{e}"))?;
+    check_supports(setup, &records, args.set.as_deref())?;
     let mut pool = rayon::ThreadPoolBuilder::new();
     if let Some(n) = args.threads {
         pool = pool.num_threads(n);
@@ -179,7 +205,7 @@ pub fn run(
     reading: &ReadOptions,
     t_start: Instant,
 ) -> Result<ExitCode> {
-    let plan = plan(args, reading)?;
+    let plan = plan(args, setup, reading)?;
     let (rows, runs_secs) = execute(&plan, setup, setup.settings())?;
     let curves = curves(&plan.records, plan.set.as_ref(), &rows);
     let model = setup.model();

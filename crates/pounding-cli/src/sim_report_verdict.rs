@@ -37,16 +37,17 @@ pub fn section(
         );
     }
     let n = summary["warnings"].as_array().map_or(0, Vec::len);
+    let completed = summary["status"].as_str() == Some("Completed");
     let _ = writeln!(
         h,
         "<tr><th>warnings</th><td{}>{}</td></tr>",
-        if n > 0 {
+        if n > 0 || !completed {
             " class=\"v-contradicted\""
         } else {
             ""
         },
         if n == 0 {
-            "None.".to_string()
+            crate::sim_report::no_warnings(summary)
         } else {
             format!("{n} (see <a href=\"#warnings\">Warnings</a>).")
         }

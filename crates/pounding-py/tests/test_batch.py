@@ -157,3 +157,42 @@ def test_a_bad_record_set_raises_naming_manifest_key_and_line(tmp_path):
         pounding.batch(None, scales=[1.0], record_set=m, record_dt=0.01)
     with pytest.raises(TypeError, match="record_set"):
         pounding.batch(None, scales=[1.0], record_set=[m])
+
+
+def test_an_error_row_keeps_the_column_types(tmp_path):
+    # a failed run among good ones left `unseated` a str column and the counts float64: its
+    # row now holds -1 counts, False and NaN, and every column has the dtype of a batch
+    # without failures (and of a batch of failures only)
+    good = str(_records(tmp_path)[0])
+    bad = tmp_path / "broken.csv"
+    bad.write_text("0.1\nnot a number\n")
+    ok = pounding.batch(None, [good], [1.0])
+    rows = pounding.batch(None, [good, str(bad)], [1.0], errors="rows")
+    only_bad = pounding.batch(None, [str(bad)], [1.0], errors="rows")
+    assert rows["status"].tolist()[1] == "error" and only_bad["status"].tolist() == ["error"]
+    for table in (rows, only_bad):
+        for c in ok.columns:
+            if c != "error" and not ok[c].isna().all():
+                assert table[c].dtype == ok[c].dtype, (c, table[c].dtype, ok[c].dtype)
+        assert table["unseated"].dtype == bool
+        for c in ("impacts", "steps", "lcp_failures", "warnings"):
+            assert table[c].dtype == np.int64, c
+            assert table[c].iloc[-1] == -1, c
+        assert not table["unseated"].iloc[-1]
+        assert np.isnan(table["peak_seat_displacement_m"].iloc[-1])
+    # the good run's row is the batch's without the failure
+    assert rows.iloc[:1].drop(columns="error").equals(ok.drop(columns="error"))
+
+
+def test_a_support_entry_on_a_two_deck_scenario_names_the_manifest_key_and_line(tmp_path):
+    # hostile trial of issue 22 (F8): refused without naming the manifest, key or line
+    sup = tmp_path / "sup.csv"
+    sup.write_text("t,start,joint1,end\n" + "".join(f"{i * 0.01!r},0.1,0.2,0.1\n" for i in range(60)))
+    manifest = tmp_path / "set.toml"
+    manifest.write_text('# supports\n[[record]]\nid = "s1"\nsupports = "sup.csv"\n')
+    decks = {"decks": {"shape": "straight", "L1": 30.0, "L2": 30.0}, "time": {"duration": 0.3}}
+    with pytest.raises(ValueError) as e:
+        pounding.batch(decks, scales=[1.0], record_set=manifest)
+    msg = str(e.value)
+    for needle in ("set.toml", "`record[0].supports`", "set.toml:4", '"s1"', "two-deck"):
+        assert needle in msg, (needle, msg)

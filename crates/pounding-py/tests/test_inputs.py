@@ -170,3 +170,30 @@ def test_batch_scales_and_threads_are_checked_by_name():
     for t in (0, 2**70):
         with pytest.raises(ValueError, match=r"threads .* must lie in \[1, 1024\]"):
             pounding.batch(_bridge_dict(), rec, [1.0], threads=t)
+
+
+_DECKS = {"decks": {"shape": "straight", "L1": 30.0, "L2": 30.0}, "time": {"duration": 0.1}}
+
+
+def test_keyword_replacements_and_dicts_are_named_as_python_gives_them():
+    """Hostile trial of issue 22 (F11): ``dt=nan`` was "set by --dt (command line, …)", and a
+    dict scenario was "invalid scenario simulate scenario dict"."""
+    with pytest.raises(ValueError) as e:
+        pounding.simulate(_DECKS, dt=float("nan"))
+    msg = str(e.value)
+    assert "`dt=` argument" in msg and "--dt" not in msg and "command line" not in msg, msg
+    with pytest.raises(ValueError) as e:
+        pounding.simulate({**_DECKS, "joint": {"gap": 0.02, "restrainer_k": 1.0}})
+    msg = str(e.value)
+    assert "simulate() dict" in msg and "scenario dict" not in msg, msg
+
+
+def test_a_bearing_outside_its_deck_names_the_key_and_deck():
+    """Hostile trial of issue 22 (F3): named `segment[0].bearing_points`, without key or line."""
+    for key, deck in (("points1", 1), ("points2", 2)):
+        sc = {**_DECKS, "bearings": {key: [[500.0, 0.0], [-5.0, 0.0]]}}
+        with pytest.raises(ValueError) as e:
+            pounding.simulate(sc)
+        msg = str(e.value)
+        assert f"`[bearings] {key}`" in msg and f"deck {deck}" in msg, msg
+        assert "segment[" not in msg, msg

@@ -151,7 +151,7 @@ fn bad_bridges_name_the_key_and_line_and_write_nothing() {
         (
             "[abutment.start]",
             "[decks]\nR1 = 100.0\n\n[abutment.start]",
-            &["unknown field", "decks"],
+            &["[decks] (line ", "refused next to [[segment]]"],
         ),
         (
             "eps_n = 0.6",

@@ -129,6 +129,7 @@ mod spectrum;
 mod spectrum_limits;
 mod study;
 mod study_shapes;
+mod trial_fixes;
 mod vocab;
 mod warnings;
 

@@ -47,10 +47,10 @@ def scenario_args(scenario: Any, what: str) -> Dict[str, Any]:
         return _scenario_path(os.fspath(scenario))
     if isinstance(scenario, dict):
         text = toml_text(scenario)
-        return {"text": text, "origin": f"{what} scenario dict"}
+        return {"text": text, "origin": f"{what}() dict"}
     if isinstance(scenario, str):
         if _is_toml_text(scenario):
-            return {"text": scenario, "origin": f"{what} scenario string"}
+            return {"text": scenario, "origin": f"{what}() string"}
         return _scenario_path(scenario)
     raise TypeError(
         f"scenario must be None, a path, a TOML string or a dict, not {type(scenario).__name__}"
@@ -130,20 +130,34 @@ _TEXT_COLUMNS = frozenset({"record", "status", "error", "unseated_end", "contact
                            "im_unit"})
 
 
-def _column(name: str, tokens: List[str]):
+#: Bool columns (``true``/``false``), whatever their cells in error rows.
+_BOOL_COLUMNS = frozenset({"unseated"})
+
+#: The value of a count (int64) column in an error row (``status == "error"``), whose cell is
+#: empty: a run that failed counted nothing.
+ERROR_COUNT = -1
+
+
+def _column(name: str, tokens: List[str], error_rows=frozenset()):
     """A CSV column as str (the text columns), bool (``true``/``false``), int64 (count and
     index columns without empty cells), float64 (numbers; empty cells NaN), or str values.
 
     The type depends on the column's name and the tokens, so the same column of two tables
-    (e.g. one batch run and the whole batch) has the same dtype."""
+    (e.g. one batch run and the whole batch) has the same dtype. The empty cells of the
+    ``error_rows`` (rows whose ``status`` is ``"error"``: a run that failed) do not change it:
+    there a bool column holds ``False`` and a count column :data:`ERROR_COUNT` (``-1``), a float
+    column NaN."""
     if name in _TEXT_COLUMNS:
         return np.array(tokens, dtype=object)
-    if tokens and all(t in ("true", "false") for t in tokens):
+    blank = [i in error_rows and t == "" for i, t in enumerate(tokens)]
+    given = [t for t, b in zip(tokens, blank) if not b]
+    if (given or name in _BOOL_COLUMNS) and all(t in ("true", "false") for t in given):
         return np.array([t == "true" for t in tokens], dtype=bool)
     integral = name.endswith(_INT_SUFFIXES) or name in _INT_COLUMNS
     try:
-        if integral and tokens and all(t.lstrip("-").isdigit() for t in tokens):
-            return np.array([int(t) for t in tokens], dtype=np.int64)
+        if integral and tokens and all(t.lstrip("-").isdigit() for t in given):
+            return np.array([ERROR_COUNT if b else int(t) for t, b in zip(tokens, blank)],
+                            dtype=np.int64)
         return np.array([float(t) if t else float("nan") for t in tokens], dtype=np.float64)
     except ValueError:
         return np.array(tokens, dtype=object)
@@ -151,10 +165,15 @@ def _column(name: str, tokens: List[str]):
 
 def parse_csv(text: str) -> Tuple[List[str], Dict[str, np.ndarray]]:
     """Column names and typed columns of CSV ``text`` written by the library (floats in
-    shortest round-trip form parse back to the same bits; empty numeric fields are NaN)."""
+    shortest round-trip form parse back to the same bits; empty numeric fields are NaN; the
+    empty cells of error rows as :func:`_column` says)."""
     rows = list(csv.reader(io.StringIO(text)))
     header, body = rows[0], rows[1:]
-    cols = {name: _column(name, [r[i] for r in body]) for i, name in enumerate(header)}
+    errors = frozenset()
+    if "status" in header:
+        s = header.index("status")
+        errors = frozenset(i for i, r in enumerate(body) if r[s] == "error")
+    cols = {name: _column(name, [r[i] for r in body], errors) for i, name in enumerate(header)}
     return header, cols
 
 

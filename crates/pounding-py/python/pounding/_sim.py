@@ -308,7 +308,11 @@ def batch(
     Returns:
         The rows of ``batch.csv`` (same columns, order and numbers): a ``pandas.DataFrame``, or a
         numpy structured array without pandas. Integer columns are int64, floats float64
-        (empty cells NaN), ``unseated`` bool, text columns str.
+        (empty cells NaN), ``unseated`` bool, text columns str. A failed run's row
+        (``errors="rows"``, ``status == "error"``) keeps these types: its counts (``impacts``,
+        ``steps``, ``lcp_failures``, …) are ``-1`` (``pounding._common.ERROR_COUNT``), its
+        ``unseated`` ``False``, its numbers NaN; select ``rows[rows["status"] != "error"]``
+        before aggregating.
 
     Raises:
         ValueError: bad input for the whole batch (no records, no scales, a non-finite scale,

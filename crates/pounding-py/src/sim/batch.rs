@@ -75,6 +75,14 @@ pub(super) fn batch_run(
     let setup = sc.build_setup().map_err(value_error)?;
     let (layout, n) = (setup.layout(), setup.model().segments.len());
     check_tables(&sc, Some(n))?;
+    if let Some(m) = &record_set {
+        let what = match layout {
+            so::Layout::TwoDecks => "a two-deck scenario".to_string(),
+            so::Layout::Bridge => sc.origin().to_string(),
+        };
+        pounding::sim::batch_supports::check_set_supports(&setup, &list, m, &what)
+            .map_err(value_error)?;
+    }
     let settings = setup.settings().clone();
     let rows = batch_rows(py, pool, setup, settings, list, scales)?;
     Ok(match &set {

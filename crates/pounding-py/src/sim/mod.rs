@@ -99,7 +99,7 @@ impl Flags {
         if self.batch {
             sc = sc.for_batch();
         }
-        sc
+        sc.with_keyword_flags()
     }
 }
 

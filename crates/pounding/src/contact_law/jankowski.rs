@@ -117,9 +117,15 @@ pub(crate) const ENTRY: LawEntry = LawEntry {
 /// `restitution` by `calibration` (`numerical`, `jankowski2005`).
 fn build(p: &LawInputs) -> Result<ContactLaw, BuildError> {
     let beta = p.get("beta").or(p.get("k_h")).unwrap_or_else(default_k_h);
+    // the stiffness read from `k_h` (beta not given) is reported under that key
+    let stiffness_key = if p.get("beta").is_none() && p.get("k_h").is_some() {
+        "k_h"
+    } else {
+        "beta"
+    };
     let [m1, m2] = p.masses;
-    Ok(match p.get("xi") {
-        Some(xi) => super::effective_mass(m1, m2).and_then(|m| Jankowski::new(beta, xi, m))?,
+    let law = match p.get("xi") {
+        Some(xi) => super::effective_mass(m1, m2).and_then(|m| Jankowski::new(beta, xi, m)),
         None => {
             let m = match p.calibration {
                 "numerical" => JankowskiCalibration::Numerical,
@@ -130,8 +136,21 @@ fn build(p: &LawInputs) -> Result<ContactLaw, BuildError> {
                     });
                 }
             };
-            Jankowski::from_restitution(beta, p.restitution, m1, m2, m)?
+            Jankowski::from_restitution(beta, p.restitution, m1, m2, m)
         }
-    }
-    .into())
+    };
+    Ok(law
+        .map_err(|e| match e {
+            ContactLawError::InvalidParameter {
+                name,
+                value,
+                reason,
+            } if name == "beta" => ContactLawError::InvalidParameter {
+                name: stiffness_key.to_string(),
+                value,
+                reason,
+            },
+            e => e,
+        })?
+        .into())
 }

@@ -63,6 +63,7 @@
 
 pub mod accuracy;
 pub mod batch;
+pub mod batch_supports;
 pub mod bridge;
 pub mod compare;
 pub mod compliance;
@@ -80,6 +81,7 @@ pub mod model;
 mod observer;
 pub mod options;
 pub mod output;
+mod pair_errors;
 pub mod param;
 mod peaks;
 pub mod problem;

@@ -346,20 +346,33 @@ impl SimModel {
                     b.stiffness >= 0.0,
                     "must be >= 0",
                 )?;
-                // the rotational stiffness k r² must stay finite (1e300 m would overflow it)
-                let kr2 = b.stiffness * (b.point.x * b.point.x + b.point.y * b.point.y);
+                let path = ParamPath::TwoDeck {
+                    param: TwoDeckParam::BearingPoint,
+                    deck: Some(j),
+                    bearing: Some(i + 1),
+                };
+                // each coordinate first, so that the bad one is the value reported
                 for v in [b.point.x, b.point.y] {
                     chk(
-                        ParamPath::TwoDeck {
-                            param: TwoDeckParam::BearingPoint,
-                            deck: Some(j),
-                            bearing: Some(i + 1),
-                        },
+                        path.clone(),
                         v,
-                        kr2.is_finite() && v * v < 1e100,
-                        "must be finite, with |coordinate| < 1e50 m and k r² finite",
+                        v * v < 1e100,
+                        "must be finite, with |coordinate| < 1e50 m",
                     )?;
                 }
+                // the rotational stiffness k r² must stay finite (1e300 m would overflow it)
+                let kr2 = b.stiffness * (b.point.x * b.point.x + b.point.y * b.point.y);
+                let far = if b.point.x.abs() >= b.point.y.abs() {
+                    b.point.x
+                } else {
+                    b.point.y
+                };
+                chk(
+                    path,
+                    far,
+                    kr2.is_finite(),
+                    "too far from the deck: the rotational stiffness k r² overflows",
+                )?;
             }
         }
         Ok(())
@@ -380,45 +393,19 @@ impl SimModel {
 
     /// Validates every parameter and the bridge it expands into ([`BridgeModel::from_pair`]):
     /// each deck's natural frequencies `[deck 1, deck 2]` \[rad/s\] from the bridge's one
-    /// assembly of `M`, `K`, `C` ([`BridgeModel::body_systems`]), with its errors under the
-    /// two-deck names (an overflowing stiffness over mass names `mass<j>`; a deck without bearing
-    /// stiffness under Rayleigh damping names `damping_ratio`).
+    /// assembly of `M`, `K`, `C` ([`BridgeModel::body_systems`]), with the bridge's errors
+    /// under the two-deck names ([`super::pair_errors`]: a bearing point outside its deck names
+    /// the deck and bearing; an overflowing stiffness over mass names `mass<j>`; a deck without
+    /// bearing stiffness under Rayleigh damping names `damping_ratio`).
     ///
     /// [`BridgeModel::from_pair`]: super::bridge::BridgeModel::from_pair
     /// [`BridgeModel::body_systems`]: super::bridge::BridgeModel::body_systems
     pub fn check(&self) -> Result<[[Real; 3]; 2], SimError> {
-        use super::param::{BridgeKey, BridgeTable};
         self.validate()?;
         let bridge = super::bridge::BridgeModel::from_pair(self);
-        let systems = bridge.body_systems().map_err(|e| {
-            let SimError::InvalidParameter {
-                path:
-                    ParamPath::Bridge(BridgeKey {
-                        table: BridgeTable::Segment(i),
-                        key,
-                    }),
-                value,
-                ..
-            } = &e
-            else {
-                return e;
-            };
-            let j = *i as u8 + 1;
-            match key.as_str() {
-                "mass" => SimError::invalid(
-                    ParamPath::deck(TwoDeckParam::Mass, j),
-                    *value,
-                    "the bearing stiffness over this mass (or inertia) overflows; use physical \
-                     magnitudes",
-                ),
-                "bearings" => SimError::invalid(
-                    ParamPath::pair(TwoDeckParam::DampingRatio),
-                    self.damping_ratio,
-                    &format!("deck {j} has no bearing stiffness, so Rayleigh damping is undefined"),
-                ),
-                _ => e,
-            }
-        })?;
+        let pair = |e| super::pair_errors::pair_error(self, &bridge, e);
+        bridge.validate().map_err(pair)?;
+        let systems = bridge.body_systems().map_err(pair)?;
         Ok([systems[0].frequencies, systems[1].frequencies])
     }
 }

@@ -67,6 +67,7 @@ mod sim_compliance;
 mod sim_friction;
 mod sim_observers;
 mod sim_outputs;
+mod sim_pair_messages;
 mod sim_pair_translation;
 mod sim_piers;
 mod sim_progress;

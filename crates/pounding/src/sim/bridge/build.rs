@@ -112,11 +112,20 @@ impl BridgeModel {
                     "the bearing stiffness over this mass (or inertia) overflows",
                 ));
             }
-            let (a0, a1) = rayleigh_coefficients(self.damping_ratio, &om).ok_or_else(|| {
+            // dashpots (c = 2ζmω, zero without stiffness) need no Rayleigh fit
+            let fit = match crate::sim::pair_errors::needs_frequencies(self.damping_model) {
+                true => rayleigh_coefficients(self.damping_ratio, &om),
+                false => Some((0.0, 0.0)),
+            };
+            let (a0, a1) = fit.ok_or_else(|| {
                 SimError::invalid(
                     seg_key(i, "bearings"),
                     0.0,
-                    "this segment has no bearing stiffness, so its damping is undefined",
+                    &format!(
+                        "segment[{i}] has no bearing stiffness, so Rayleigh damping at its natural \
+                         frequencies is undefined; set bridge.damping_ratio = 0 or bridge.damping \
+                         = \"dashpots\", or give it bearing stiffness"
+                    ),
                 )
             })?;
             let (cj, a0, a1) = crate::sim::options::damping_block(

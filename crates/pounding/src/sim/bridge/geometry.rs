@@ -72,20 +72,30 @@ impl BridgeModel {
         self.segments[i].frame_point(i == 0, along, left)
     }
 
+    /// The first bearing (segment, bearing; 0-based) that lies outside its segment's plan
+    /// outline (64 chords per arc), if any.
+    pub(crate) fn bearing_outside(&self) -> Option<(usize, usize)> {
+        let outlines = self.outlines(64);
+        self.bearing_points()
+            .iter()
+            .enumerate()
+            .find_map(|(i, pts)| {
+                let b = pts.iter().position(|p| !on_polygon(*p, &outlines[i]))?;
+                Some((i, b))
+            })
+    }
+
     /// Every bearing and restrainer anchor must lie on its segment (inside or on its plan
     /// outline, with 64 chords per arc): errors name `segment[i].bearing_points`,
     /// `joint[k].restrainer_offsets` or `joint[k].restrainer_depth`.
     pub(super) fn check_points(&self) -> Result<(), SimError> {
         let outlines = self.outlines(64);
         let bodies = self.layout();
-        let points = self.bearing_points();
-        for (i, pts) in points.iter().enumerate() {
-            if let Some(b) = pts.iter().position(|p| !on_polygon(*p, &outlines[i])) {
-                return Err(SimError::argument(
-                    seg_key(i, "bearing_points"),
-                    format!("bearing {} lies outside segment[{i}]", b + 1),
-                ));
-            }
+        if let Some((i, b)) = self.bearing_outside() {
+            return Err(SimError::argument(
+                seg_key(i, "bearing_points"),
+                format!("bearing {} lies outside segment[{i}]", b + 1),
+            ));
         }
         for (k, j) in self.joints.iter().enumerate() {
             for (c, r) in j.restrainers.iter().enumerate() {

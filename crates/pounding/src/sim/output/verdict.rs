@@ -110,11 +110,12 @@ pub fn verdict(layout: Layout, sol: &BridgeSolution) -> Vec<VerdictLine> {
         out.push(VerdictLine {
             topic: "seats",
             text: format!(
-                "Governing seat: {name}, peak {} m of its {} m seat ({:.0} %) at {} s, {} m at \
+                "Governing seat: {name}, peak {} m of its {} m seat ({} %) at {} s, {} m at \
                  the end of the run.",
                 n3(g.peak_displacement.max(0.0)),
                 n3(g.seat_length),
-                100.0 * g.ratio.max(0.0),
+                // a diverged run's 1e290 % in exponent form, not as 290 digits
+                crate::output::bounded(100.0 * g.ratio.max(0.0), 0),
                 n3(g.peak_time),
                 n3(g.residual_displacement)
             ),

@@ -223,6 +223,10 @@ impl fmt::Display for KeyRef {
     /// "`[section] key` (FILE:LINE)" or "`[section] key` (not set in FILE; default)".
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         if let Some(flag) = self.flag {
+            // a keyword argument of a Python call (`dt=`, [`super::Scenario::with_keyword_flags`])
+            if flag.ends_with('=') {
+                return write!(f, "the `{flag}` argument (in place of {})", self.key);
+            }
             return write!(f, "{flag} (command line, in place of {})", self.key);
         }
         match self.line {

@@ -18,6 +18,7 @@ mod bridge;
 mod build;
 mod contact;
 mod error;
+mod forms;
 mod ground;
 mod model_keys;
 mod sections;
@@ -149,45 +150,8 @@ impl Scenario {
             message: crate::input::shorten_lines(&e.to_string(), 200),
         };
         let table = toml::from_str::<toml::Table>(text).map_err(syntax)?;
+        forms::refuse_mixed(text, &table, origin)?;
         let is_bridge = table.contains_key("segment");
-        if !is_bridge && table.contains_key("bridge") {
-            return Err(ScenarioError::Syntax {
-                origin: origin.to_string(),
-                message: "a [bridge] table needs the bridge's [[segment]] tables (one per \
-                          segment, from the start); without them this is a two-deck file, which \
-                          has no [bridge]"
-                    .into(),
-            });
-        }
-        let bridge_only = ["joint", "abutment"]
-            .iter()
-            .find(|k| {
-                // an array of tables (`[[joint]]`), not a list of numbers (a type error below)
-                matches!(table.get(**k), Some(toml::Value::Array(a))
-                    if !a.is_empty() && a.iter().all(toml::Value::is_table))
-            })
-            .or_else(|| {
-                table
-                    .get("abutment")
-                    .and_then(toml::Value::as_table)
-                    .filter(|t| t.contains_key("start") || t.contains_key("end"))
-                    .map(|_| &"abutment")
-            });
-        if !is_bridge && let Some(k) = bridge_only {
-            let form = if *k == "abutment" {
-                "[abutment.start] / [abutment.end]"
-            } else {
-                "[[joint]]"
-            };
-            return Err(ScenarioError::Syntax {
-                origin: origin.to_string(),
-                message: format!(
-                    "{form} tables belong to a bridge file: add the bridge's [[segment]] tables \
-                     (one per segment, from the start); a two-deck file has one [joint] table \
-                     and an [abutments] table"
-                ),
-            });
-        }
         let (raw, bridge) = if is_bridge {
             let b: bridge::BridgeRaw = toml::from_str(text).map_err(syntax)?;
             let raw = sections::Raw {
@@ -345,6 +309,26 @@ impl Scenario {
     /// [`Scenario::with_law`] from `--law`).
     pub fn with_flag(mut self, key: ParamKey, flag: &'static str) -> Self {
         self.src.flags.push((key, flag));
+        self
+    }
+
+    /// Names the replacements as the keyword arguments of a Python call (`dt=`, `duration=`,
+    /// `law=`, …) instead of the command-line flags (`--dt`, …): messages then say "set by the
+    /// `dt=` argument (in place of `[time] dt`)". Call it after the replacements.
+    pub fn with_keyword_flags(mut self) -> Self {
+        for (_, f) in &mut self.src.flags {
+            *f = match *f {
+                "--dt" => "dt=",
+                "--duration" => "duration=",
+                "--scale" => "scale=",
+                "--law" => "law=",
+                "--record" => "record=",
+                "--record-dt" => "record_dt=",
+                "--csv-units" => "csv_units=",
+                "--projection" => "projection=",
+                other => other,
+            };
+        }
         self
     }
 

@@ -35,38 +35,40 @@ fn key_of_error(src: &Src, e: &SimError) -> Option<ParamKey> {
         _ => None,
     };
     match e {
-        SimError::InvalidParameter { path, .. } => match path {
-            ParamPath::Setting(s) => Some(time(match s {
-                Setting::Dt => "dt",
-                Setting::Duration => "duration",
-                Setting::HistoryStride => "history_every",
-            })),
-            &ParamPath::TwoDeck { param, deck, .. } => match param {
-                TwoDeckParam::Gap => Some(ParamKey::new(Joint, "gap")),
-                TwoDeckParam::SeatLength => Some(ParamKey::new(Joint, "seat_length")),
-                TwoDeckParam::Mu => Some(ParamKey::new(Joint, "mu")),
-                TwoDeckParam::EpsN => Some(ParamKey::new(Joint, "eps_n")),
-                TwoDeckParam::DampingRatio => Some(ParamKey::new(Bearings, "damping_ratio")),
-                TwoDeckParam::Width | TwoDeckParam::JointFace => Some(ParamKey {
-                    section: Decks,
-                    key: "width",
-                    deck,
-                }),
-                // a deck's mass is set by `massJ` when given, else derived from its density
-                TwoDeckParam::Mass => deck
-                    .filter(|d| matches!(d, 1 | 2))
-                    .map(|d| mass_key(src, d)),
-                TwoDeckParam::AbutmentGap => per_deck(Abutments, ["gap1", "gap2"], deck),
-                TwoDeckParam::AbutmentSeat => {
-                    per_deck(Abutments, ["seat_length1", "seat_length2"], deck)
-                }
-                TwoDeckParam::BearingStiffness => {
-                    per_deck(Bearings, ["stiffness1", "stiffness2"], deck)
-                }
-                TwoDeckParam::BearingPoint => per_deck(Bearings, ["points1", "points2"], deck),
-            },
-            _ => None,
-        },
+        SimError::InvalidParameter { path, .. } | SimError::InvalidArgument { path, .. } => {
+            match path {
+                ParamPath::Setting(s) => Some(time(match s {
+                    Setting::Dt => "dt",
+                    Setting::Duration => "duration",
+                    Setting::HistoryStride => "history_every",
+                })),
+                &ParamPath::TwoDeck { param, deck, .. } => match param {
+                    TwoDeckParam::Gap => Some(ParamKey::new(Joint, "gap")),
+                    TwoDeckParam::SeatLength => Some(ParamKey::new(Joint, "seat_length")),
+                    TwoDeckParam::Mu => Some(ParamKey::new(Joint, "mu")),
+                    TwoDeckParam::EpsN => Some(ParamKey::new(Joint, "eps_n")),
+                    TwoDeckParam::DampingRatio => Some(ParamKey::new(Bearings, "damping_ratio")),
+                    TwoDeckParam::Width | TwoDeckParam::JointFace => Some(ParamKey {
+                        section: Decks,
+                        key: "width",
+                        deck,
+                    }),
+                    // a deck's mass is set by `massJ` when given, else derived from its density
+                    TwoDeckParam::Mass => deck
+                        .filter(|d| matches!(d, 1 | 2))
+                        .map(|d| mass_key(src, d)),
+                    TwoDeckParam::AbutmentGap => per_deck(Abutments, ["gap1", "gap2"], deck),
+                    TwoDeckParam::AbutmentSeat => {
+                        per_deck(Abutments, ["seat_length1", "seat_length2"], deck)
+                    }
+                    TwoDeckParam::BearingStiffness => {
+                        per_deck(Bearings, ["stiffness1", "stiffness2"], deck)
+                    }
+                    TwoDeckParam::BearingPoint => per_deck(Bearings, ["points1", "points2"], deck),
+                },
+                _ => None,
+            }
+        }
         SimError::Geometry(GeometryError::InvalidParameter { param, deck, .. }) => {
             let deck = deck.and_then(|d| u8::try_from(d).ok());
             match param {

@@ -333,11 +333,13 @@ pub(super) fn segment(
             k
         }
         (None, Some(b)) => {
-            let k = v.pos(sk("bearing_stiffness"), &s.bearing_stiffness, None)?;
-            // `k r²` (lever arms up to kilometres) must stay finite and `k` a normal double:
-            // 1e308 overflowed in the rotational stiffness, 5e-324 gave a segment without
-            // stiffness, both reported under keys the file does not have
-            if !(k.is_normal() && (k * 1e100).is_finite()) {
+            // 0 is a segment without stiffness: a mechanism, refused as one by
+            // `check_mechanism` unless `bridge.allow_mechanism = true` (the two-deck rule)
+            let k = v.nonneg(sk("bearing_stiffness"), &s.bearing_stiffness, None)?;
+            // `k r²` (lever arms up to kilometres) must stay finite and `k` 0 or a normal
+            // double: 1e308 overflowed in the rotational stiffness, 5e-324 gave a segment
+            // without stiffness, both reported under keys the file does not have
+            if !(k == 0.0 || k.is_normal() && (k * 1e100).is_finite()) {
                 let why = if k < f64::MIN_POSITIVE {
                     "below the smallest normal double: the segment would have no stiffness"
                 } else {

@@ -206,6 +206,11 @@ pub(super) fn check_mechanism(
     raw: &BridgeRaw,
     model: &BridgeModel,
 ) -> Result<(), ScenarioError> {
+    // the assembly's own errors (Rayleigh damping of a segment without stiffness) first, with
+    // a mechanism allowed too
+    let freqs = model
+        .segment_frequencies()
+        .map_err(|e| model_error(v, raw, e))?;
     if raw
         .bridge
         .allow_mechanism
@@ -214,9 +219,6 @@ pub(super) fn check_mechanism(
     {
         return Ok(());
     }
-    let freqs = model
-        .segment_frequencies()
-        .map_err(|e| model_error(v, raw, e))?;
     for (i, w) in freqs.iter().enumerate() {
         if w[0] > 1e-6 * w[2] {
             continue;
