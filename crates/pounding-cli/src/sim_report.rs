@@ -142,19 +142,6 @@ pub fn report_html(input: &ReportInput, summary_json: &str) -> String {
     h
 }
 
-/// The text for a run without warnings: `None.`, or, when the run did not complete, that its
-/// status is the warning (a Diverged run lists no other).
-pub(crate) fn no_warnings(summary: &Value) -> String {
-    match summary["status"].as_str().unwrap_or("unknown") {
-        "Completed" => "None.".to_string(),
-        status => format!(
-            "None besides the status: the run ended <strong class=\"v-contradicted\">{}</strong>, \
-             so its results are not trustworthy (summary.json <code>status</code>).",
-            esc(status)
-        ),
-    }
-}
-
 /// `summary.json`'s `warnings` list, one sentence each.
 fn warnings(h: &mut String, summary: &Value) {
     let _ = writeln!(h, "<h2 id=\"warnings\">Warnings</h2>");
@@ -166,7 +153,11 @@ fn warnings(h: &mut String, summary: &Value) {
         }));
     }
     if items.is_empty() {
-        let _ = writeln!(h, "<p>{}</p>", no_warnings(summary));
+        let _ = writeln!(
+            h,
+            "<p>{}</p>",
+            crate::sim_report_verdict::no_warnings(summary)
+        );
     } else {
         h.push_str("<ul>\n");
         for w in items {

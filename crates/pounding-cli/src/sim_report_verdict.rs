@@ -47,7 +47,7 @@ pub fn section(
             ""
         },
         if n == 0 {
-            crate::sim_report::no_warnings(summary)
+            no_warnings(summary)
         } else {
             format!("{n} (see <a href=\"#warnings\">Warnings</a>).")
         }
@@ -65,4 +65,17 @@ pub fn section(
         );
     }
     h.push_str("</table>\n");
+}
+
+/// The text for a run without warnings: `None.`, or, when the run did not complete, that its
+/// status is the warning (a Diverged run lists no other).
+pub(crate) fn no_warnings(summary: &Value) -> String {
+    match summary["status"].as_str().unwrap_or("unknown") {
+        "Completed" => "None.".to_string(),
+        status => format!(
+            "None besides the status: the run ended <strong class=\"v-contradicted\">{}</strong>, \
+             so its results are not trustworthy (summary.json <code>status</code>).",
+            esc(status)
+        ),
+    }
 }

@@ -9,7 +9,7 @@ use super::SimError;
 use super::bridge::BridgeModel;
 use super::options::DampingModel;
 use super::param::{BridgeKey, BridgeTable, ParamPath, TwoDeckParam};
-use super::two_deck::SimModel;
+use crate::math::{Real, Vector};
 
 /// The two-deck parameter of a bridge key of the expansion (`None`: the expansion has no such
 /// key, e.g. a restrainer or a pier).
@@ -60,10 +60,16 @@ pub(crate) fn two_deck_path(key: &BridgeKey) -> Option<ParamPath> {
     })
 }
 
-/// `e`, an error of `bridge` (the expansion of `model`), under the two-deck names: the path
-/// [`two_deck_path`], the message in terms of decks. An error of a key the expansion does not
-/// have is returned as it is.
-pub(crate) fn pair_error(model: &SimModel, bridge: &BridgeModel, e: SimError) -> SimError {
+/// `e`, an error of `bridge` (the expansion of a two-deck model with Rayleigh ratio
+/// `damping_ratio` and bearing `point(deck, b)`, both 0-based), under the two-deck names: the
+/// path [`two_deck_path`], the message in terms of decks. An error of a key the expansion does
+/// not have is returned as it is.
+pub(crate) fn pair_error(
+    damping_ratio: Real,
+    point: &dyn Fn(usize, usize) -> Option<Vector>,
+    bridge: &BridgeModel,
+    e: SimError,
+) -> SimError {
     let Some(ParamPath::Bridge(key)) = e.path().cloned() else {
         return e;
     };
@@ -82,7 +88,7 @@ pub(crate) fn pair_error(model: &SimModel, bridge: &BridgeModel, e: SimError) ->
         ),
         ("bearings", _) => SimError::invalid(
             path,
-            model.damping_ratio,
+            damping_ratio,
             &format!(
                 "deck {deck} has no bearing stiffness (every bearing's stiffness is 0), so Rayleigh \
                  damping at its natural frequencies is undefined; set damping_ratio = 0 or damping \
@@ -91,12 +97,7 @@ pub(crate) fn pair_error(model: &SimModel, bridge: &BridgeModel, e: SimError) ->
         ),
         ("bearing_points", _) => {
             let (seg, b) = bridge.bearing_outside().unwrap_or((deck - 1, 0));
-            let pts = if seg == 0 {
-                &model.bearings1
-            } else {
-                &model.bearings2
-            };
-            let p = pts.get(b).map(|b| b.point).unwrap_or_default();
+            let p = point(seg, b).unwrap_or_default();
             SimError::argument(
                 ParamPath::TwoDeck {
                     param: TwoDeckParam::BearingPoint,

@@ -52,7 +52,15 @@ pub(crate) const KINDS: [&str; 5] = [
 /// Indices into [`KINDS`] (the sums of [`StepLoads`] are laid out in that order).
 const BEARINGS: usize = 0;
 const DASHPOTS: usize = 1;
-pub(crate) const SHEAR_KEYS: usize = 3;
+const SHEAR_KEYS: usize = 3;
+
+/// The kinds `segment_forces.csv` records for `bridge`, indices into [`KINDS`]: every kind, shear
+/// keys only in a bridge with some.
+pub(crate) fn recorded_kinds(bridge: &Bridge) -> Vec<usize> {
+    (0..KINDS.len())
+        .filter(|&k| k != SHEAR_KEYS || !bridge.elements.keys.is_empty())
+        .collect()
+}
 
 /// The forces on each segment summed over the steps since the last kept row.
 ///
@@ -63,8 +71,6 @@ pub(crate) const SHEAR_KEYS: usize = 3;
 /// `Σ (−K q_θ) = −K (Σ q_k + θ h Σ ū_θ)` and `Σ (−C ū_θ) = −C Σ ū_θ`; then the means that the
 /// observer reads.
 pub(crate) struct StepLoads {
-    /// Per coordinate of the segments: its segment and its place in `(x, y, θ)`.
-    owner: Vec<(usize, usize)>,
     /// The segments' coordinates: `0..m` (the first bodies').
     m: usize,
     /// `Σ q_k` and `Σ ū_θ` over the steps, every coordinate (`K` and `C` couple a segment to the
@@ -79,8 +85,13 @@ pub(crate) struct StepLoads {
     members: bool,
     /// Steps summed.
     steps: usize,
-    /// Per segment and kind: the mean `(F_x, F_y, M_z)` at the last kept row.
-    means: Vec<[Real; 3]>,
+    /// The means at the last kept row, in `segment_forces.csv`'s column order: per segment, per
+    /// kind recorded ([`recorded_kinds`]), `(F_x, F_y, M_z)`.
+    row: Vec<Real>,
+    /// Per entry of `row`: its sum's index in `sums` and its linear part's in `lin`.
+    src: Vec<(u32, u32)>,
+    /// `[K Σ q_θ (m), C Σ ū_θ (m), 0]`: the linear parts a row entry subtracts.
+    lin: Vec<Real>,
     /// Scratch: `Σ q_θ`, `K Σ q_θ`, `C Σ ū_θ`, a product's second part, `P_K d̄`, `P_C v̄`.
     q_th: State,
     kq: State,
@@ -100,19 +111,31 @@ impl StepLoads {
         } else {
             bridge.dofs.range(segments - 1).end
         };
-        let owner = (0..segments)
-            .flat_map(|j| bridge.dofs.range(j).enumerate().map(move |(d, _)| (j, d)))
-            .collect::<Vec<_>>();
-        debug_assert_eq!(owner.len(), m, "the segments' coordinates come first");
+        let kinds = recorded_kinds(bridge);
+        // per segment, kind, coordinate: the sum and the linear part its mean takes
+        let mut src = Vec::new();
+        for j in 0..segments {
+            for &kind in &kinds {
+                for i in bridge.dofs.range(j) {
+                    let lin = match kind {
+                        BEARINGS => i,
+                        DASHPOTS => m + i,
+                        _ => 2 * m,
+                    };
+                    src.push(((kind * m + i) as u32, lin as u32));
+                }
+            }
+        }
         StepLoads {
-            owner,
             m,
             q_sum: State::zeros(n),
             u_sum: State::zeros(n),
             sums: vec![0.0; KINDS.len() * m],
             members: false,
             steps: 0,
-            means: vec![[0.0; 3]; segments * KINDS.len()],
+            row: vec![0.0; src.len()],
+            src,
+            lin: vec![0.0; 2 * m + 1],
             q_th: State::zeros(n),
             kq: State::zeros(n),
             cu: State::zeros(n),
@@ -179,7 +202,7 @@ impl StepLoads {
     /// step), then the sums cleared.
     pub fn close(&mut self, sc: &Scheme) {
         if self.steps == 0 {
-            self.means.fill([0.0; 3]);
+            self.row.fill(0.0);
             return;
         }
         let c = sc.th * sc.h;
@@ -190,16 +213,11 @@ impl StepLoads {
         sc.stiffness_into(&self.q_th, &mut self.kq, &mut self.scratch);
         sc.damping_power(&self.u_sum, &mut self.cu);
         let (n, m) = (self.steps as Real, self.m);
-        let (kq, cu) = (&self.kq.as_slice()[..m], &self.cu.as_slice()[..m]);
-        for (kind, sums) in self.sums.chunks_exact(m.max(1)).enumerate() {
-            for (i, &(j, d)) in self.owner.iter().enumerate() {
-                let linear = match kind {
-                    BEARINGS => kq[i],
-                    DASHPOTS => cu[i],
-                    _ => 0.0,
-                };
-                self.means[j * KINDS.len() + kind][d] = (sums[i] - linear) / n;
-            }
+        self.lin[..m].copy_from_slice(&self.kq.as_slice()[..m]);
+        self.lin[m..2 * m].copy_from_slice(&self.cu.as_slice()[..m]);
+        let (sums, lin) = (&self.sums, &self.lin);
+        for (out, &(s, l)) in self.row.iter_mut().zip(&self.src) {
+            *out = (sums[s as usize] - lin[l as usize]) / n;
         }
         self.q_sum.as_mut_slice().fill(0.0);
         self.u_sum.as_mut_slice().fill(0.0);
@@ -210,13 +228,9 @@ impl StepLoads {
         self.steps = 0;
     }
 
-    /// The mean force of `kind` on segment `j` at the last kept row.
-    pub fn mean(&self, j: usize, kind: usize) -> [Real; 3] {
-        self.means[j * KINDS.len() + kind]
-    }
-
-    /// The segments.
-    pub fn segments(&self) -> usize {
-        self.means.len() / KINDS.len()
+    /// The means at the last kept row, in `segment_forces.csv`'s column order (per segment, per
+    /// kind of [`recorded_kinds`], `(F_x, F_y, M_z)`).
+    pub fn row(&self) -> &[Real] {
+        &self.row
     }
 }

@@ -403,7 +403,15 @@ impl SimModel {
     pub fn check(&self) -> Result<[[Real; 3]; 2], SimError> {
         self.validate()?;
         let bridge = super::bridge::BridgeModel::from_pair(self);
-        let pair = |e| super::pair_errors::pair_error(self, &bridge, e);
+        let point = |deck: usize, b: usize| {
+            let pts = if deck == 0 {
+                &self.bearings1
+            } else {
+                &self.bearings2
+            };
+            pts.get(b).map(|b| b.point)
+        };
+        let pair = |e| super::pair_errors::pair_error(self.damping_ratio, &point, &bridge, e);
         bridge.validate().map_err(pair)?;
         let systems = bridge.body_systems().map_err(pair)?;
         Ok([systems[0].frequencies, systems[1].frequencies])

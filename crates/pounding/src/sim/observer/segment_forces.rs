@@ -1,9 +1,9 @@
 //! [`SegmentForces`] (`segment_forces.csv`): per segment and member kind, the mean force over the
-//! steps since the previous row, from the driver's [`StepLoads`] (whose doc gives each force and
+//! steps since the previous row, from the driver's [`StepLoads`](crate::sim::step_loads::StepLoads) (whose doc gives each force and
 //! the balance they close).
 
 use super::observe::{Observer, Snapshot, TableSource};
-use crate::sim::step_loads::{KINDS, SHEAR_KEYS};
+use crate::sim::step_loads::{KINDS, recorded_kinds};
 use crate::sim::table::{Column, Table};
 use crate::sim::view::Bridge;
 
@@ -11,19 +11,15 @@ use crate::sim::view::Bridge;
 /// steps since the previous row (module doc).
 pub(crate) struct SegmentForces {
     table: Table,
-    /// The kinds recorded (shear keys only in a bridge with some).
-    kinds: Vec<usize>,
 }
 
 impl SegmentForces {
-    /// The columns of the segments of `bridge`.
+    /// The columns of the segments of `bridge`, for the kinds its `StepLoads` records (the
+    /// order of `StepLoads::row`).
     pub fn new(bridge: &Bridge) -> Self {
-        let kinds: Vec<usize> = (0..KINDS.len())
-            .filter(|&k| k != SHEAR_KEYS || !bridge.elements.keys.is_empty())
-            .collect();
         let mut columns = Vec::new();
         for i in 1..=bridge.bodies.len() {
-            for &k in &kinds {
+            for &k in &recorded_kinds(bridge) {
                 let p = format!("segment{i}_{}", KINDS[k]);
                 columns.push(Column::new(format!("{p}_fx"), "N"));
                 columns.push(Column::new(format!("{p}_fy"), "N"));
@@ -32,7 +28,6 @@ impl SegmentForces {
         }
         SegmentForces {
             table: Table::with_time("segment_forces", columns),
-            kinds,
         }
     }
 }
@@ -45,11 +40,7 @@ impl Observer for SegmentForces {
     fn observe(&mut self, s: &Snapshot<'_>) {
         let v = &mut self.table.values;
         v.push(s.t);
-        for j in 0..s.loads.segments() {
-            for &k in &self.kinds {
-                v.extend(s.loads.mean(j, k));
-            }
-        }
+        v.extend_from_slice(s.loads.row());
     }
 
     fn into_source(self: Box<Self>) -> TableSource {
