@@ -75,3 +75,17 @@ pub fn two_deck_system(model: &pounding::sim::SimModel) -> TwoDeckSystem {
     }
     s
 }
+
+/// The error of building `text` (file `f.toml`), in its form (`[[segment]]`: a bridge).
+pub fn scenario_error(text: &str) -> String {
+    let e = match pounding::sim::scenario::Scenario::from_toml(text, "f.toml") {
+        Err(e) => return e.to_string(),
+        Ok(s) => s,
+    };
+    let e = if text.contains("[[segment]]") {
+        e.build_bridge().err()
+    } else {
+        e.build().err()
+    };
+    e.expect("the scenario must be refused").to_string()
+}

@@ -5,6 +5,7 @@
 //! without bearing stiffness follows one rule in both forms; the summary's joint peaks skip the
 //! end gaps that are NaN in the history.
 
+use crate::common::scenario_error as error;
 use pounding::sim::scenario::Scenario;
 
 const HDR: &str = "[decks]\nshape = \"straight\"\nL1 = 30.0\nL2 = 30.0\n";
@@ -12,20 +13,6 @@ const SKEW: &str = "[decks]\nshape = \"skew\"\nL1 = 30.0\nL2 = 30.0\nskew_deg = 
 const TWO_SEGMENTS: &str = "[[segment]]\nshape = \"straight\"\nL = 30.0\nperiod_s = 1.0\n\
                             [[segment]]\nshape = \"straight\"\nL = 30.0\nperiod_s = 1.0\n";
 const TIME: &str = "[time]\nduration = 0.2\n";
-
-/// The error of reading and building `text` (file `f.toml`), in its form.
-fn error(text: &str) -> String {
-    let e = match Scenario::from_toml(text, "f.toml") {
-        Err(e) => return e.to_string(),
-        Ok(s) => s,
-    };
-    let e = if text.contains("[[segment]]") {
-        e.build_bridge().err()
-    } else {
-        e.build().err()
-    };
-    e.expect("the scenario must be refused").to_string()
-}
 
 fn builds(text: &str) -> bool {
     let sc = Scenario::from_toml(text, "f.toml").unwrap();

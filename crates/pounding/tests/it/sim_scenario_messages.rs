@@ -3,7 +3,7 @@
 //! own key; a value that is not a number (`nan`, `inf`) is said to have to be finite, in both
 //! scenario forms.
 
-use pounding::sim::scenario::Scenario;
+use crate::common::scenario_error as error;
 
 const TWO_SEGMENTS: &str = r#"
 [[segment]]
@@ -16,20 +16,6 @@ shape = "straight"
 L = 30.0
 period_s = 1.0
 "#;
-
-/// The error of building `text` (file `f.toml`).
-fn error(text: &str) -> String {
-    let e = match Scenario::from_toml(text, "f.toml") {
-        Err(e) => return e.to_string(),
-        Ok(s) => s,
-    };
-    let e = if text.contains("[[segment]]") {
-        e.build_bridge().err()
-    } else {
-        e.build().err()
-    };
-    e.expect("the scenario must be refused").to_string()
-}
 
 #[test]
 fn restrainer_placement_errors_name_the_key_as_written() {
